@@ -1,0 +1,40 @@
+// patchwork: entry point. Parses the command line and runs one command; every error about input
+// or output is reported as one line naming the file and exits 2.
+#include <cstdio>
+#include <exception>
+#include <iostream>
+
+#include "commands.hpp"
+#include "errors.hpp"
+
+int main(int argc, char** argv) {
+    CLI::App app{"Patchwork — a Bézier/spline patch editor on the GPU tessellation pipeline"};
+    app.require_subcommand(0, 1);
+    std::string file;
+    app.add_option("file", file, "Document to open (.patchwork, .bpt, .gltf, .glb); default: the built-in teapot");
+
+    pw::app::Action run;
+    pw::app::registerInfoCommand(app, run);
+    pw::app::registerExportCommand(app, run);
+    pw::app::registerConvertCommand(app, run);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int rc = app.exit(e);
+        return rc == 0 ? 0 : 2;
+    }
+    try {
+        if (run) return run();
+        return pw::app::runDefault(file);
+    } catch (const pw::InputError& e) {
+        std::cerr << "patchwork: " << e.what() << "\n";
+        return 2;
+    } catch (const pw::OutputError& e) {
+        std::cerr << "patchwork: " << e.what() << "\n";
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "patchwork: internal error: " << e.what() << "\n";
+        return 1;
+    }
+}

@@ -1,0 +1,160 @@
+// The Patchwork document: a pool of control points, bicubic patches and spline nets that index it,
+// joins between patch edges, and the tessellation, display and camera settings (DESIGN §1).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "basis.hpp"
+#include "math_types.hpp"
+
+namespace pw {
+
+// Edges of a 4x4 window, numbered like the quad domain's outer levels (DESIGN §3):
+// U0 = column j=0 (u=0), V0 = row i=0 (v=0), U1 = column j=3 (u=1), V1 = row i=3 (v=1).
+enum class Edge : uint8_t { U0 = 0, V0 = 1, U1 = 2, V1 = 3 };
+std::string_view edgeName(Edge e);  // "u0", "v0", "u1", "v1"
+std::optional<Edge> parseEdge(std::string_view name);
+
+// Net slot (0..15) of the k-th point along edge e (k in increasing parameter), and of the point
+// `depth` rows inward from it (depth 0 = on the edge, 1 = the tangent row).
+int edgeSlot(Edge e, int k, int depth = 0);
+
+enum class Continuity : uint8_t { C0, C1, G1 };
+std::string_view continuityName(Continuity c);  // "C0", "C1", "G1"
+std::optional<Continuity> parseContinuity(std::string_view name);
+
+// A bicubic patch: 16 indices into the pool, row-major (i = v row, j = u column).
+struct Patch {
+    std::array<uint32_t, 16> idx{};
+    Basis basis = Basis::Bezier;
+    double tension = 0.5;  // Catmull-Rom τ
+    std::string name;
+    // Per-patch tessellation override: four outer and two inner levels.
+    std::optional<std::array<float, 6>> tessOverride;
+    bool operator==(const Patch&) const = default;
+};
+
+// A larger control net (rows x cols) under one basis; every 4x4 window is a patch. Bézier windows
+// step by 3, spline windows by 1. A closed direction wraps around (tubes and rings).
+struct Surface {
+    uint32_t rows = 4, cols = 4;
+    std::vector<uint32_t> idx;  // rows*cols pool indices, row-major
+    Basis basis = Basis::BSpline;
+    double tension = 0.5;
+    bool closedU = false;  // columns wrap
+    bool closedV = false;  // rows wrap
+    std::string name;
+    bool operator==(const Surface&) const = default;
+};
+
+// Edge `edgeA` of patch A meets edge `edgeB` of patch B. They share the four pool entries; point k
+// along A's edge is point k (or 3-k when `reversed`) along B's edge. For C1/G1:
+//   B1k - B0k = alpha * (A0k - A1k)   (0 = boundary row, 1 = tangent row; alpha = 1 for C1).
+struct Join {
+    uint32_t patchA = 0;
+    Edge edgeA = Edge::U0;
+    uint32_t patchB = 0;
+    Edge edgeB = Edge::U0;
+    bool reversed = false;
+    Continuity continuity = Continuity::C0;
+    double alpha = 1.0;
+    bool operator==(const Join&) const = default;
+};
+
+enum class Spacing : uint8_t { Equal, FractionalOdd, FractionalEven, Pow2 };
+std::string_view spacingName(Spacing s);  // "equal", "fractional_odd", "fractional_even", "pow2"
+std::optional<Spacing> parseSpacing(std::string_view name);
+
+enum class AdaptiveMode : uint8_t { None, Distance, ScreenSpace, Orientation };
+std::string_view adaptiveName(AdaptiveMode m);  // "none", "distance", "screen", "orientation"
+std::optional<AdaptiveMode> parseAdaptive(std::string_view name);
+
+struct TessSettings {
+    std::array<float, 4> outer{16, 16, 16, 16};
+    std::array<float, 2> inner{16, 16};
+    bool linked = true;  // UI: one slider drives all six
+    Spacing spacing = Spacing::Equal;
+    AdaptiveMode adaptive = AdaptiveMode::None;
+    float distanceNear = 2.0f;   // d0: full level at or below this distance
+    float distanceFar = 30.0f;   // d1: level 1 at or beyond this distance
+    float targetPixels = 8.0f;   // screen-space mode: pixels per segment
+    float maxLevel = 64.0f;
+    bool cullBackfaces = false;
+    bool cullOffscreen = true;
+    bool operator==(const TessSettings&) const = default;
+};
+
+enum class ShadingMode : uint8_t { Lit, Normal, PatchId, UvChecker, Zebra, GaussCurvature, MeanCurvature };
+std::string_view shadingName(ShadingMode m);  // "lit", "normal", "patch", "uv", "zebra", "gauss", "mean"
+std::optional<ShadingMode> parseShading(std::string_view name);
+
+struct DisplaySettings {
+    ShadingMode shading = ShadingMode::Lit;
+    bool showGrid = true;       // control-net lines and points
+    bool showWireframe = false;
+    bool showNormals = false;
+    bool showBoundaries = false;  // patch boundaries and joins coloured by continuity
+    float normalLength = 0.1f;
+    std::array<float, 3> lightDir{0.4f, 0.5f, 0.75f};
+    std::array<float, 3> background{0.16f, 0.17f, 0.19f};
+    bool operator==(const DisplaySettings&) const = default;
+};
+
+struct Camera {
+    std::array<double, 3> target{0, 0, 0};
+    double distance = 10.0;
+    double yawDeg = 30.0;
+    double pitchDeg = 25.0;
+    double fovYDeg = 40.0;
+    bool orthographic = false;
+    bool zUp = true;  // the teapot is +z up
+    bool operator==(const Camera&) const = default;
+};
+
+struct Document {
+    static constexpr int kFormatVersion = 1;
+
+    std::string name;
+    std::vector<Vec3> points;
+    std::vector<Patch> patches;
+    std::vector<Surface> surfaces;
+    std::vector<Join> joins;
+    TessSettings tess;
+    DisplaySettings display;
+    Camera camera;
+
+    bool operator==(const Document&) const = default;
+};
+
+// One 4x4 window to evaluate or draw: a patch, or a window of a surface's net.
+struct PatchInstance {
+    std::array<uint32_t, 16> idx{};
+    Basis basis = Basis::Bezier;
+    double tension = 0.5;
+    int32_t patch = -1;    // index into Document::patches, or -1
+    int32_t surface = -1;  // index into Document::surfaces, or -1
+    uint32_t windowRow = 0, windowCol = 0;
+};
+
+// Every patch followed by every window of every surface, in a stable order.
+std::vector<PatchInstance> expandPatches(const Document& doc);
+
+// Control points of one window.
+Net16 gatherNet(const Document& doc, const std::array<uint32_t, 16>& idx);
+
+struct Bounds {
+    Vec3 min{0.0}, max{0.0};
+    bool empty = true;
+    double diagonal() const { return empty ? 0.0 : glm::length(max - min); }
+};
+Bounds computeBounds(const std::vector<Vec3>& points);
+
+// The model's size for relative tolerances: the bounding-box diagonal, at least 1e-12.
+double modelSize(const Document& doc);
+
+}  // namespace pw

@@ -1,0 +1,8 @@
+// Files compiled into the binary (see data/CMakeLists.txt).
+#pragma once
+
+#include <string_view>
+
+namespace pw::embedded {
+extern const std::string_view teapotBpt;  // data/teapot.bpt, the default document
+}

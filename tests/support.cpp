@@ -1,0 +1,47 @@
+#include "support.hpp"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+
+namespace pw::test {
+
+namespace {
+std::filesystem::path envPath(const char* name) {
+    const char* v = std::getenv(name);
+    if (!v || !*v) throw std::runtime_error(std::string("environment variable ") + name + " is not set (run through ctest)");
+    return v;
+}
+}  // namespace
+
+std::filesystem::path dataDir() { return envPath("PATCHWORK_DATA_DIR"); }
+std::filesystem::path testsDir() { return envPath("PATCHWORK_TESTS_DIR"); }
+std::filesystem::path patchworkBinary() { return envPath("PATCHWORK_BIN"); }
+
+std::filesystem::path freshTempDir(const std::string& tag) {
+    static std::atomic<int> counter{0};
+    auto dir = std::filesystem::temp_directory_path() /
+               ("patchwork-test-" + tag + "-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+RunResult runCommand(const std::string& shellCommand) {
+    RunResult r;
+    FILE* pipe = ::popen((shellCommand + " 2>&1").c_str(), "r");
+    if (!pipe) return r;
+    std::array<char, 4096> buf;
+    size_t n;
+    while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.output.append(buf.data(), n);
+    const int status = ::pclose(pipe);
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+}  // namespace pw::test
