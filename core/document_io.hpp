@@ -1,0 +1,18 @@
+// Load and save by file extension: .patchwork (native), .bpt (tea set), .gltf/.glb (export, and
+// import of Patchwork glTF files whose extras carry the patches). Saves are atomic.
+#pragma once
+
+#include <filesystem>
+
+#include "document.hpp"
+#include "gltf_export.hpp"
+
+namespace pw {
+
+Document loadDocument(const std::filesystem::path& path);
+void saveDocument(const Document& doc, const std::filesystem::path& path, const GltfExportOptions& gltf = {});
+
+// The built-in teapot (data/teapot.bpt compiled into the binary), joins detected.
+Document builtinTeapot();
+
+}  // namespace pw

@@ -1,0 +1,24 @@
+// glTF 2.0 export (.gltf with an embedded buffer, or .glb) through tinygltf (DESIGN §5).
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "document.hpp"
+
+namespace pw {
+
+struct GltfExportOptions {
+    int level = 0;       // tessellation level; 0 = the document's (max of its uniform levels, rounded up)
+    bool merge = false;  // one mesh primitive for everything instead of one per patch
+    bool cage = false;   // add the control cage as a LINES primitive
+};
+
+// The file's bytes: binary (.glb) or JSON (.gltf, buffer as a data URI). The editable document
+// (documentToJson) is stored in the asset's extras under "patchwork".
+std::string exportGltfBytes(const Document& doc, bool binary, const GltfExportOptions& options);
+
+// Atomic write; the format from the extension (.glb or .gltf). Throws OutputError / InputError.
+void exportGltf(const Document& doc, const std::filesystem::path& path, const GltfExportOptions& options);
+
+}  // namespace pw

@@ -1,0 +1,37 @@
+// CPU tessellation of a document into a welded triangle mesh (DESIGN §5): each window as a grid at
+// the chosen level, vertices on shared boundaries welded through the pool (bit-identical positions),
+// normals shared across C1/G1 seams and split at C0 creases, collapsed edges fanned (no degenerate
+// triangles), UVs per patch.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "document.hpp"
+
+namespace pw {
+
+struct MeshRange {
+    uint32_t firstIndex = 0, indexCount = 0;  // triangles of one window in `indices`
+};
+
+struct TriangleMesh {
+    std::vector<std::array<float, 3>> positions;
+    std::vector<std::array<float, 3>> normals;
+    std::vector<std::array<float, 2>> uvs;
+    std::vector<uint32_t> indices;     // triangles, counter-clockwise seen from the normal side
+    std::vector<MeshRange> perWindow;  // one per expandPatches() entry
+};
+
+// level >= 1 (limits::kMaxExportLevel at most).
+TriangleMesh tessellateDocument(const Document& doc, int level);
+
+// The control cage: pool points and the line segments of every window's 4x4 net (deduplicated).
+struct CageLines {
+    std::vector<std::array<float, 3>> positions;
+    std::vector<uint32_t> indices;  // pairs
+};
+CageLines controlCage(const Document& doc);
+
+}  // namespace pw
