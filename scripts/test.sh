@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Installs what is missing (build and test packages, the Khronos glTF validator from npm), builds in
+# Release and runs the whole test suite through ctest, ending with ctest's summary.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${PATCHWORK_BUILD_DIR:-$root/build}
+"$root/scripts/install_deps.sh" --tests
+
+# The glTF validator, pinned by tests/gltf/package-lock.json; reinstalled only when the lock changes.
+validator_dir="$root/tests/gltf"
+stamp="$validator_dir/node_modules/.patchwork-lock"
+if ! cmp -s "$validator_dir/package-lock.json" "$stamp" 2>/dev/null; then
+  (cd "$validator_dir" && npm ci --silent --no-audit --no-fund >/dev/null)
+  cp "$validator_dir/package-lock.json" "$stamp"
+  echo "test: glTF validator installed"
+fi
+
+"$root/scripts/build.sh"
+cd "$build"
+exec ctest --output-on-failure -j "${PATCHWORK_JOBS:-$(nproc)}" --timeout 600
