@@ -1,0 +1,105 @@
+// Undo/redo: random edit sequences undone completely give back the original document bit for bit,
+// and redone completely give the final one; labels, redo truncation and the modified flag.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <random>
+
+#include "edit_history.hpp"
+#include "model_builders.hpp"
+
+using namespace pw;
+
+namespace {
+
+// One random edit of the kinds the editor makes: move points, change a setting, add or delete a
+// patch, add a join.
+void randomEdit(Document& doc, std::mt19937& rng) {
+    std::uniform_int_distribution<int> kind(0, 9);
+    std::uniform_real_distribution<double> delta(-0.5, 0.5);
+    const int k = kind(rng);
+    if (k <= 5 && !doc.points.empty()) {
+        std::uniform_int_distribution<size_t> pick(0, doc.points.size() - 1);
+        const int n = 1 + static_cast<int>(rng() % 4);
+        for (int i = 0; i < n; ++i) doc.points[pick(rng)] += Vec3(delta(rng), delta(rng), delta(rng));
+    } else if (k == 6) {
+        doc.tess.outer[rng() % 4] = static_cast<float>(1 + rng() % 64);
+        doc.tess.spacing = static_cast<Spacing>(rng() % 4);
+    } else if (k == 7) {
+        Patch p;
+        const uint32_t base = static_cast<uint32_t>(doc.points.size());
+        for (int i = 0; i < 16; ++i) {
+            doc.points.push_back(Vec3(i % 4, i / 4, delta(rng)));
+            p.idx[i] = base + i;
+        }
+        p.name = "added";
+        doc.patches.push_back(p);
+    } else if (k == 8 && doc.patches.size() > 1) {
+        // delete the last patch and any join that names it
+        const uint32_t last = static_cast<uint32_t>(doc.patches.size() - 1);
+        doc.patches.pop_back();
+        std::erase_if(doc.joins, [&](const Join& j) { return j.patchA == last || j.patchB == last; });
+    } else {
+        doc.camera.yawDeg += 10;
+        doc.display.showWireframe = !doc.display.showWireframe;
+    }
+}
+
+}  // namespace
+
+TEST(EditHistory, TenThousandRandomEditsUndoAndRedoBitIdentical) {
+    Document doc = makePatchGrid(3, 3);
+    const Document original = doc;
+    EditHistory history(20000);
+    std::mt19937 rng(1234);
+    for (int i = 0; i < 10000; ++i) {
+        const Document before = doc;
+        randomEdit(doc, rng);
+        history.commit(before, doc, "edit " + std::to_string(i));
+    }
+    const Document final = doc;
+    ASSERT_NE(final, original);
+    while (history.canUndo()) history.undo(doc);
+    EXPECT_EQ(doc, original);
+    EXPECT_EQ(std::memcmp(doc.points.data(), original.points.data(), original.points.size() * sizeof(Vec3)), 0);
+    while (history.canRedo()) history.redo(doc);
+    EXPECT_EQ(doc, final);
+}
+
+TEST(EditHistory, NewEditDropsRedoAndLabelsFollow) {
+    Document doc = makePatchGrid(1, 1);
+    EditHistory history;
+    Document before = doc;
+    doc.points[5] += Vec3(1, 0, 0);
+    history.commit(before, doc, "Move point");
+    before = doc;
+    doc.tess.spacing = Spacing::Pow2;
+    history.commit(before, doc, "Spacing");
+    EXPECT_EQ(history.undoLabel(), "Spacing");
+    history.undo(doc);
+    EXPECT_EQ(doc.tess.spacing, Spacing::Equal);
+    EXPECT_EQ(history.redoLabel(), "Spacing");
+    before = doc;
+    doc.points[0] += Vec3(0, 1, 0);
+    history.commit(before, doc, "Move again");
+    EXPECT_FALSE(history.canRedo());
+    EXPECT_EQ(history.size(), 2u);
+}
+
+TEST(EditHistory, NoOpEditIsNotRecordedAndModifiedFlagTracksSave) {
+    Document doc = makePatchGrid(1, 1);
+    EditHistory history;
+    history.commit(doc, doc, "nothing");
+    EXPECT_FALSE(history.canUndo());
+    EXPECT_FALSE(history.isModified());
+    Document before = doc;
+    doc.points[3].z += 0.25;
+    history.commit(before, doc, "Move");
+    EXPECT_TRUE(history.isModified());
+    history.markSaved();
+    EXPECT_FALSE(history.isModified());
+    history.undo(doc);
+    EXPECT_TRUE(history.isModified());
+    history.redo(doc);
+    EXPECT_FALSE(history.isModified());
+}
