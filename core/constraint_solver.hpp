@@ -17,8 +17,11 @@
 namespace pw {
 
 struct SolverOptions {
-    double boundaryWeight = 100.0;  // weight of points on a joined boundary
+    double boundaryWeight = 1e4;  // weight of points on a joined boundary (tangent drags mirror to 0.9996)
     double tangentWeight = 1.0;     // weight of every other point
+    // Independent groups of constraints are factorised separately; groups of at most this many
+    // constraints use a dense LDLT, larger ones a sparse one (0: sparse everywhere).
+    int denseComponentLimit = 48;
 };
 
 // Factorised once for a set of fixed (dragged) points; each project() call is then a cheap solve.

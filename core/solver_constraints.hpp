@@ -1,0 +1,36 @@
+// Private to the solver and the continuity report: the linear join constraints of a document as
+// sparse rows over pool indices (DESIGN §1). Not part of the public interface.
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "document.hpp"
+
+namespace pw::solver_detail {
+
+// One scalar constraint Σ coef·p[idx] = 0, applied identically to x, y and z.
+struct ConstraintRow {
+    std::vector<std::pair<uint32_t, double>> terms;  // sorted by pool index, no zero coefficients
+    uint32_t join = 0;                                // the join it comes from
+};
+
+// The pool indices along one join, point k of A's edge against the matching point of B's edge.
+struct JoinPoints {
+    uint32_t a0[4], a1[4], b0[4], b1[4];
+};
+
+// False when the join names a patch that does not exist.
+bool joinPoints(const Document& doc, const Join& join, JoinPoints& out);
+
+// Every constraint the joins impose: for each edge point k, a0k − b0k = 0 when the two sides do
+// not share the pool entry, and for C1/G1 b1k − (1+α)·a0k + α·a1k = 0. Constraints of a collapsed
+// edge (all four edge points one pool entry), and rows whose tangent point is the boundary point
+// itself on only one side, are left out: there the control-point condition says nothing useful.
+std::vector<ConstraintRow> buildConstraintRows(const Document& doc);
+
+// Points that lie on a joined edge (boundary points), as a flag per pool entry.
+std::vector<char> joinedBoundaryPoints(const Document& doc);
+
+}  // namespace pw::solver_detail

@@ -1,0 +1,144 @@
+// Continuity report: a C1 grid measures ~0 on every join; breaking one tangent point shows up on
+// that join only; reversed and mirrored parameterisations, G1 ratios and C0 gaps are measured right.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "constraint_solver.hpp"
+#include "continuity_report.hpp"
+#include "document.hpp"
+#include "model_builders.hpp"
+
+using namespace pw;
+
+namespace {
+
+uint32_t lat(int cols, int r, int c) { return static_cast<uint32_t>(r * (3 * cols + 1) + c); }
+
+void expectSmooth(const JoinContinuity& jc) {
+    EXPECT_LE(jc.c0Gap, 1e-12) << "join " << jc.join;
+    EXPECT_LE(jc.c1Residual, 1e-12) << "join " << jc.join;
+    EXPECT_LE(jc.normalAngleDeg, 1e-6) << "join " << jc.join;
+}
+
+// Index of the join between patches a and b.
+size_t findJoin(const Document& doc, uint32_t a, uint32_t b) {
+    for (size_t j = 0; j < doc.joins.size(); ++j)
+        if (doc.joins[j].patchA == a && doc.joins[j].patchB == b) return j;
+    ADD_FAILURE() << "no join " << a << "-" << b;
+    return 0;
+}
+
+}  // namespace
+
+TEST(Continuity, GridJoinsAreSmooth) {
+    const Document doc = makePatchGrid(4, 4);
+    const auto report = continuityReport(doc);
+    ASSERT_EQ(report.size(), doc.joins.size());
+    for (size_t j = 0; j < report.size(); ++j) {
+        EXPECT_EQ(report[j].join, j);
+        expectSmooth(report[j]);
+    }
+}
+
+TEST(Continuity, BrokenTangentShowsOnItsJoinOnly) {
+    Document doc = makePatchGrid(4, 4);
+    // Lattice (1,5): the tangent point of patch (0,1) next to the seam with patch (0,2), row k=1.
+    // Lattice row 1 is far from every v seam, so no other join involves it.
+    const uint32_t p = lat(4, 1, 5);
+    ASSERT_EQ(doc.patches[1].idx[edgeSlot(Edge::U1, 1, 1)], p);
+    doc.points[p].z += 0.2;
+    const size_t broken = findJoin(doc, 1, 2);
+    const auto report = continuityReport(doc, 32);
+    for (const JoinContinuity& jc : report) {
+        if (jc.join == broken) {
+            EXPECT_LE(jc.c0Gap, 1e-12);  // still C0: the boundary is untouched
+            EXPECT_NEAR(jc.c1Residual, 0.2, 1e-12);
+            // The tangent across the seam tilts by roughly atan(0.2 / (1/3)) at k=1; the seam
+            // samples between see a good part of it.
+            EXPECT_GT(jc.normalAngleDeg, 5.0);
+            EXPECT_LT(jc.normalAngleDeg, 60.0);
+        } else {
+            expectSmooth(jc);
+        }
+    }
+    EXPECT_NEAR(maxConstraintResidual(doc), 0.2, 1e-12);
+
+    // Projecting with the broken point held mends the join (the partner mirrors).
+    projectConstraints(doc, {p});
+    for (const JoinContinuity& jc : continuityReport(doc)) {
+        EXPECT_LE(jc.c1Residual, 1e-9);
+        EXPECT_LE(jc.normalAngleDeg, 1e-5);
+    }
+}
+
+TEST(Continuity, ReversedAndMirroredParameterisations) {
+    // Patch 1 of a 1x2 grid with its rows flipped: its u0 edge runs backwards (reversed join) and
+    // its normal points the other way; the report must still see a smooth seam.
+    Document doc = makePatchGrid(1, 2);
+    Patch& b = doc.patches[1];
+    const auto orig = b.idx;
+    for (int a = 0; a < 4; ++a)
+        for (int c = 0; c < 4; ++c) b.idx[a * 4 + c] = orig[(3 - a) * 4 + c];
+    doc.joins[0].reversed = true;
+    EXPECT_LE(maxConstraintResidual(doc), 1e-14);
+    expectSmooth(continuityReport(doc)[0]);
+
+    // The same seam recorded without `reversed` is wrong: a C0 gap and a residual appear.
+    doc.joins[0].reversed = false;
+    const JoinContinuity wrong = continuityReport(doc)[0];
+    EXPECT_GT(wrong.c0Gap, 0.5);
+    EXPECT_GT(wrong.c1Residual, 0.005);  // the tangents are compared at the wrong points
+
+    // Columns mirrored instead: B's u1 edge meets A's u1 edge.
+    doc = makePatchGrid(1, 2);
+    for (int a = 0; a < 4; ++a)
+        for (int c = 0; c < 4; ++c) doc.patches[1].idx[a * 4 + c] = makePatchGrid(1, 2).patches[1].idx[a * 4 + 3 - c];
+    doc.joins[0].edgeB = Edge::U1;
+    EXPECT_LE(maxConstraintResidual(doc), 1e-14);
+    expectSmooth(continuityReport(doc)[0]);
+
+    // A v-seam: patch (0,0) over (1,0) of a 2x1 grid, B flipped in v so that v1 meets v1.
+    doc = makePatchGrid(2, 1);
+    const Patch copy = doc.patches[1];
+    for (int a = 0; a < 4; ++a)
+        for (int c = 0; c < 4; ++c) doc.patches[1].idx[a * 4 + c] = copy.idx[(3 - a) * 4 + c];
+    doc.joins[0].edgeB = Edge::V1;
+    EXPECT_LE(maxConstraintResidual(doc), 1e-14);
+    expectSmooth(continuityReport(doc)[0]);
+}
+
+TEST(Continuity, CreaseAndGap) {
+    // A C0 join with a real crease: fold patch 1 of a flat-ish 1x2 grid up along the seam.
+    Document doc = makePatchGrid(1, 2, Continuity::C0);
+    for (int k = 0; k < 4; ++k)
+        for (int c = 4; c <= 6; ++c) doc.points[lat(2, k, c)].z += (c - 3) * 1.0 / 3.0;  // slope 1 more
+    const JoinContinuity jc = continuityReport(doc)[0];
+    EXPECT_LE(jc.c0Gap, 1e-12);
+    EXPECT_GT(jc.c1Residual, 0.3);
+    EXPECT_GT(jc.normalAngleDeg, 30.0);
+    EXPECT_LT(jc.normalAngleDeg, 60.0);
+
+    // Unshared edge points pulled apart: the gap is the largest seam distance.
+    doc = makePatchGrid(1, 2);
+    Patch& b = doc.patches[1];
+    for (int k = 0; k < 4; ++k) {
+        const int slot = edgeSlot(Edge::U0, k);
+        doc.points.push_back(doc.points[b.idx[slot]] + Vec3(0, 0, 0.25));
+        b.idx[slot] = static_cast<uint32_t>(doc.points.size() - 1);
+    }
+    const JoinContinuity gap = continuityReport(doc)[0];
+    EXPECT_NEAR(gap.c0Gap, 0.25, 1e-12);
+    EXPECT_NEAR(gap.c1Residual, 0.25, 1e-12);  // B1 − B0 changed by −0.25 in z
+}
+
+TEST(Continuity, G1RatioIsMeasuredWithAlpha) {
+    Document doc = makePatchGrid(1, 2, Continuity::G1);
+    doc.joins[0].alpha = 2.0;
+    EXPECT_GT(continuityReport(doc)[0].c1Residual, 0.01);
+    projectConstraints(doc, {});
+    const JoinContinuity jc = continuityReport(doc)[0];
+    EXPECT_LE(jc.c1Residual, 1e-12);
+    EXPECT_LE(jc.c0Gap, 1e-12);
+    EXPECT_LE(jc.normalAngleDeg, 1e-6);  // G1: tangent planes agree
+}
