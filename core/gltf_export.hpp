@@ -1,6 +1,7 @@
 // glTF 2.0 export (.gltf with an embedded buffer, or .glb) through tinygltf (DESIGN §5).
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 
@@ -20,5 +21,22 @@ std::string exportGltfBytes(const Document& doc, bool binary, const GltfExportOp
 
 // Atomic write; the format from the extension (.glb or .gltf). Throws OutputError / InputError.
 void exportGltf(const Document& doc, const std::filesystem::path& path, const GltfExportOptions& options);
+
+// What an export wrote (for the command line and the benchmark).
+struct GltfExportStats {
+    int level = 0;            // the tessellation level used
+    size_t triangles = 0;
+    size_t vertices = 0;      // of the surface mesh (welded)
+    size_t cageSegments = 0;  // 0 without the cage
+    size_t bytes = 0;         // size of the file
+};
+
+// The level an export uses: `requested` if > 0, else the document's max(outer, inner) rounded
+// up; clamped to [1, limits::kMaxExportLevel].
+int resolveExportLevel(const Document& doc, int requested);
+
+// Same as above, also reporting what was written.
+std::string exportGltfBytes(const Document& doc, bool binary, const GltfExportOptions& options, GltfExportStats* stats);
+GltfExportStats exportGltfWithStats(const Document& doc, const std::filesystem::path& path, const GltfExportOptions& options);
 
 }  // namespace pw

@@ -1,0 +1,277 @@
+// glTF 2.0 export through tinygltf (DESIGN §5): the welded mesh in one buffer (POSITION, NORMAL,
+// TEXCOORD_0, indices; optional control cage as LINES), one scene, one node, one mesh, one
+// material, and the editable document in asset.extras.patchwork.
+#include "gltf_export.hpp"
+
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+
+#include "errors.hpp"
+#include "file_io.hpp"
+#include "limits.hpp"
+#include "mesh_tessellate.hpp"
+#include "patchwork_format.hpp"
+
+namespace pw {
+
+namespace {
+
+// nlohmann::json → tinygltf::Value. tinygltf has no 64-bit integers: integers that fit in an int
+// stay ints, larger ones become doubles (exact up to 2^53). Doubles are kept as doubles and written
+// round-trip exact by tinygltf's JSON writer.
+tinygltf::Value toValue(const nlohmann::json& j) {
+    using T = nlohmann::json::value_t;
+    switch (j.type()) {
+        case T::boolean: return tinygltf::Value(j.get<bool>());
+        case T::number_integer: {
+            const int64_t v = j.get<int64_t>();
+            if (v >= std::numeric_limits<int>::min() && v <= std::numeric_limits<int>::max())
+                return tinygltf::Value(static_cast<int>(v));
+            return tinygltf::Value(static_cast<double>(v));
+        }
+        case T::number_unsigned: {
+            const uint64_t v = j.get<uint64_t>();
+            if (v <= static_cast<uint64_t>(std::numeric_limits<int>::max())) return tinygltf::Value(static_cast<int>(v));
+            return tinygltf::Value(static_cast<double>(v));
+        }
+        case T::number_float: return tinygltf::Value(j.get<double>());
+        case T::string: return tinygltf::Value(j.get<std::string>());
+        case T::array: {
+            tinygltf::Value::Array a;
+            a.reserve(j.size());
+            for (const auto& e : j) a.push_back(toValue(e));
+            return tinygltf::Value(std::move(a));
+        }
+        case T::object: {
+            tinygltf::Value::Object o;
+            for (auto it = j.begin(); it != j.end(); ++it) o.emplace(it.key(), toValue(it.value()));
+            return tinygltf::Value(std::move(o));
+        }
+        default: return tinygltf::Value();  // null, binary, discarded
+    }
+}
+
+size_t align4(size_t n) { return (n + 3) & ~size_t{3}; }
+
+// Appends a block to the buffer (4-byte aligned) and a bufferView over it; returns the view index.
+int addView(tinygltf::Model& model, const void* data, size_t bytes, int target) {
+    std::vector<unsigned char>& buf = model.buffers[0].data;
+    const size_t offset = align4(buf.size());
+    buf.resize(offset, 0);
+    const auto* bytesIn = static_cast<const unsigned char*>(data);
+    buf.insert(buf.end(), bytesIn, bytesIn + bytes);  // no zero-fill of the large blocks
+    tinygltf::BufferView view;
+    view.buffer = 0;
+    view.byteOffset = offset;
+    view.byteLength = bytes;
+    view.target = target;
+    model.bufferViews.push_back(view);
+    return static_cast<int>(model.bufferViews.size()) - 1;
+}
+
+int addAccessor(tinygltf::Model& model, int view, size_t byteOffset, int componentType, int type, size_t count) {
+    tinygltf::Accessor acc;
+    acc.bufferView = view;
+    acc.byteOffset = byteOffset;
+    acc.componentType = componentType;
+    acc.type = type;
+    acc.count = count;
+    model.accessors.push_back(acc);
+    return static_cast<int>(model.accessors.size()) - 1;
+}
+
+// POSITION needs min and max; they are computed from the stored floats, so they match exactly.
+void setMinMax(tinygltf::Accessor& acc, const std::vector<std::array<float, 3>>& positions) {
+    std::array<float, 3> lo = positions.front(), hi = positions.front();
+    for (const auto& p : positions)
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = std::min(lo[k], p[k]);
+            hi[k] = std::max(hi[k], p[k]);
+        }
+    acc.minValues = {lo[0], lo[1], lo[2]};
+    acc.maxValues = {hi[0], hi[1], hi[2]};
+}
+
+// Index data as the smallest component type that holds every index (65535 is avoided: it is the
+// primitive-restart value).
+int addIndexView(tinygltf::Model& model, const std::vector<uint32_t>& indices, size_t vertexCount, int& componentType,
+                 size_t& componentSize) {
+    if (vertexCount <= 65535) {
+        std::vector<uint16_t> small(indices.begin(), indices.end());
+        componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+        componentSize = 2;
+        return addView(model, small.data(), small.size() * 2, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+    }
+    componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
+    componentSize = 4;
+    return addView(model, indices.data(), indices.size() * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+}
+
+std::string documentName(const Document& doc) { return doc.name.empty() ? std::string("Patchwork") : doc.name; }
+
+}  // namespace
+
+int resolveExportLevel(const Document& doc, int requested) {
+    double level = requested;
+    if (requested <= 0) {
+        float m = doc.tess.inner[0];
+        for (float f : doc.tess.outer) m = std::max(m, f);
+        m = std::max(m, doc.tess.inner[1]);
+        level = std::isfinite(m) ? std::ceil(static_cast<double>(m)) : 1.0;
+    }
+    return static_cast<int>(std::clamp(level, 1.0, static_cast<double>(limits::kMaxExportLevel)));
+}
+
+std::string exportGltfBytes(const Document& doc, bool binary, const GltfExportOptions& options, GltfExportStats* stats) {
+    const int level = resolveExportLevel(doc, options.level);
+    GltfExportStats st;
+    st.level = level;
+
+    tinygltf::Model model;
+    model.asset.version = "2.0";
+    model.asset.generator = "Patchwork";
+    {
+        tinygltf::Value::Object extras;
+        extras.emplace("patchwork", toValue(documentToJson(doc)));
+        model.asset.extras = tinygltf::Value(std::move(extras));
+    }
+    model.buffers.emplace_back();
+
+    tinygltf::Mesh gmesh;
+    gmesh.name = documentName(doc);
+    const CageLines cage = options.cage ? controlCage(doc) : CageLines{};
+    const size_t cageBytes = cage.positions.size() * 12 + cage.indices.size() * 4 + 16;
+
+    // The surface: shared POSITION / NORMAL / TEXCOORD_0, and per window (or merged) triangle lists.
+    {
+        TriangleMesh mesh = tessellateDocument(doc, level);
+        st.triangles = mesh.indices.size() / 3;
+        st.vertices = mesh.positions.size();
+        if (!mesh.indices.empty()) {
+            const size_t nv = mesh.positions.size();
+            model.buffers[0].data.reserve(nv * 32 + mesh.indices.size() * 4 + cageBytes + 64);
+            const int posView = addView(model, mesh.positions.data(), nv * 12, TINYGLTF_TARGET_ARRAY_BUFFER);
+            const int nrmView = addView(model, mesh.normals.data(), nv * 12, TINYGLTF_TARGET_ARRAY_BUFFER);
+            const int uvView = addView(model, mesh.uvs.data(), nv * 8, TINYGLTF_TARGET_ARRAY_BUFFER);
+            const int posAcc = addAccessor(model, posView, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, nv);
+            setMinMax(model.accessors[posAcc], mesh.positions);
+            const int nrmAcc = addAccessor(model, nrmView, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, nv);
+            const int uvAcc = addAccessor(model, uvView, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, nv);
+            int componentType = 0;
+            size_t componentSize = 0;
+            const int idxView = addIndexView(model, mesh.indices, nv, componentType, componentSize);
+
+            tinygltf::Material material;
+            material.name = "Patchwork surface";
+            material.pbrMetallicRoughness.baseColorFactor = {0.8, 0.8, 0.8, 1.0};
+            material.pbrMetallicRoughness.metallicFactor = 0.0;
+            material.pbrMetallicRoughness.roughnessFactor = 0.5;
+            material.doubleSided = false;
+            model.materials.push_back(material);
+
+            auto addPrimitive = [&](size_t firstIndex, size_t count) {
+                tinygltf::Primitive prim;
+                prim.attributes["POSITION"] = posAcc;
+                prim.attributes["NORMAL"] = nrmAcc;
+                prim.attributes["TEXCOORD_0"] = uvAcc;
+                prim.indices = addAccessor(model, idxView, firstIndex * componentSize, componentType, TINYGLTF_TYPE_SCALAR, count);
+                prim.material = 0;
+                prim.mode = TINYGLTF_MODE_TRIANGLES;
+                gmesh.primitives.push_back(std::move(prim));
+            };
+            if (options.merge) {
+                addPrimitive(0, mesh.indices.size());
+            } else {
+                for (const MeshRange& r : mesh.perWindow)
+                    if (r.indexCount > 0) addPrimitive(r.firstIndex, r.indexCount);
+            }
+        }
+    }  // the mesh's memory is released here, before serialising
+
+    // The control cage: a LINES primitive with its own positions and no material.
+    if (options.cage) {
+        st.cageSegments = cage.indices.size() / 2;
+        if (!cage.indices.empty()) {
+            const size_t nv = cage.positions.size();
+            const int posView = addView(model, cage.positions.data(), nv * 12, TINYGLTF_TARGET_ARRAY_BUFFER);
+            const int posAcc = addAccessor(model, posView, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, nv);
+            setMinMax(model.accessors[posAcc], cage.positions);
+            int componentType = 0;
+            size_t componentSize = 0;
+            const int idxView = addIndexView(model, cage.indices, nv, componentType, componentSize);
+            tinygltf::Primitive prim;
+            prim.attributes["POSITION"] = posAcc;
+            prim.indices = addAccessor(model, idxView, 0, componentType, TINYGLTF_TYPE_SCALAR, cage.indices.size());
+            prim.mode = TINYGLTF_MODE_LINE;
+            gmesh.primitives.push_back(std::move(prim));
+        }
+    }
+
+    // The buffer's length is a multiple of 4 (GLB chunk alignment); an empty buffer is left out.
+    std::vector<unsigned char>& buf = model.buffers[0].data;
+    buf.resize(align4(buf.size()), 0);
+    if (buf.empty()) model.buffers.clear();
+
+    tinygltf::Node node;
+    node.name = documentName(doc);
+    if (!gmesh.primitives.empty()) {
+        model.meshes.push_back(std::move(gmesh));
+        node.mesh = 0;
+    }
+    model.nodes.push_back(std::move(node));
+    tinygltf::Scene scene;
+    scene.name = documentName(doc);
+    scene.nodes = {0};
+    model.scenes.push_back(std::move(scene));
+    model.defaultScene = 0;
+
+    // Serialise into a string whose capacity is reserved up front (no repeated regrowth).
+    const size_t bufferBytes = model.buffers.empty() ? 0 : model.buffers[0].data.size();
+    if (bufferBytes > (binary ? size_t{0xF0000000u} : size_t{0xB0000000u}))  // GLB lengths and tinygltf sizes are 32-bit
+        throw std::length_error("the mesh would be " + std::to_string(bufferBytes >> 20) +
+                                " MiB, more than a glTF file can hold; use a lower level");
+    std::string initial;
+    initial.reserve((binary ? bufferBytes : bufferBytes / 3 * 4 + 8) + (1u << 20));
+    std::ostringstream out(std::move(initial), std::ios::out | std::ios::binary);
+    tinygltf::TinyGLTF writer;
+    if (!writer.WriteGltfSceneToStream(&model, out, /*prettyPrint=*/!binary, /*writeBinary=*/binary) || !out)
+        throw OutputError(binary ? "(glb)" : "(gltf)", "tinygltf could not serialise the model");
+    std::string bytes = std::move(out).str();
+    st.bytes = bytes.size();
+    if (stats) *stats = st;
+    return bytes;
+}
+
+std::string exportGltfBytes(const Document& doc, bool binary, const GltfExportOptions& options) {
+    return exportGltfBytes(doc, binary, options, nullptr);
+}
+
+GltfExportStats exportGltfWithStats(const Document& doc, const std::filesystem::path& path, const GltfExportOptions& options) {
+    const std::string ext = lowerExtension(path);
+    if (ext != ".glb" && ext != ".gltf")
+        throw OutputError(path.string(), "unknown glTF extension '" + ext + "' (use .gltf or .glb)");
+    GltfExportStats stats;
+    std::string bytes;
+    try {
+        bytes = exportGltfBytes(doc, ext == ".glb", options, &stats);
+    } catch (const std::length_error& e) {
+        throw OutputError(path.string(), e.what());
+    } catch (const std::bad_alloc&) {
+        throw OutputError(path.string(), "not enough memory for the mesh at level " +
+                                             std::to_string(resolveExportLevel(doc, options.level)) + "; use a lower level");
+    }
+    writeFileAtomic(path, bytes);
+    return stats;
+}
+
+void exportGltf(const Document& doc, const std::filesystem::path& path, const GltfExportOptions& options) {
+    exportGltfWithStats(doc, path, options);
+}
+
+}  // namespace pw

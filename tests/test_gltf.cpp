@@ -1,0 +1,410 @@
+// glTF 2.0 export and import (DESIGN §5): the tea set at several levels, .glb and .gltf, per-patch or
+// merged, with or without the control cage, passes the Khronos validator with no errors and no
+// warnings; the file carries the editable document; import restores it; the command line refuses
+// bad levels and unwritable paths.
+#include <gtest/gtest.h>
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "bpt_format.hpp"
+#include "errors.hpp"
+#include "gltf_export.hpp"
+#include "gltf_import.hpp"
+#include "support.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string quote(const fs::path& p) { return "'" + p.string() + "'"; }
+
+// The validator script, or an empty path after reporting a failure that says how to install it.
+// Never skips: a missing validator is a failure of the test set-up.
+fs::path validatorScript() {
+    const char* env = std::getenv("PATCHWORK_GLTF_VALIDATOR");
+    if (!env || !*env) {
+        ADD_FAILURE() << "PATCHWORK_GLTF_VALIDATOR is not set: run the tests through ctest (scripts/test.sh)";
+        return {};
+    }
+    const fs::path script = env;
+    if (!fs::exists(script)) {
+        ADD_FAILURE() << script << " does not exist";
+        return {};
+    }
+    const auto node = pw::test::runCommand("node --version");
+    if (node.exitCode != 0) {
+        ADD_FAILURE() << "node is not available (" << node.output << "): run scripts/test.sh, which installs the glTF "
+                         "validator (npm install --prefix tests/gltf)";
+        return {};
+    }
+    if (!fs::exists(script.parent_path() / "node_modules" / "gltf-validator" / "package.json")) {
+        ADD_FAILURE() << "the npm package gltf-validator is not installed in " << script.parent_path()
+                      << ": run scripts/test.sh (it runs npm install --prefix tests/gltf)";
+        return {};
+    }
+    return script;
+}
+
+// Runs the validator on the files (one node process for all); expects 0 errors and 0 warnings each.
+void expectValid(const std::vector<fs::path>& files) {
+    const fs::path script = validatorScript();
+    if (script.empty()) return;
+    std::string cmd = "node " + quote(script);
+    for (const fs::path& f : files) cmd += " " + quote(f);
+    const auto r = pw::test::runCommand(cmd);
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    size_t okErrors = 0, okWarnings = 0;
+    for (size_t pos = 0; (pos = r.output.find("numErrors: 0\n", pos)) != std::string::npos; ++pos) ++okErrors;
+    for (size_t pos = 0; (pos = r.output.find("numWarnings: 0\n", pos)) != std::string::npos; ++pos) ++okWarnings;
+    EXPECT_EQ(okErrors, files.size()) << r.output;
+    EXPECT_EQ(okWarnings, files.size()) << r.output;
+}
+
+pw::Document loadModel(const std::string& name) { return pw::loadBpt(pw::test::dataDir() / (name + ".bpt")); }
+
+tinygltf::Model loadWithTinygltf(const fs::path& path) {
+    tinygltf::TinyGLTF loader;
+    tinygltf::Model model;
+    std::string err, warn;
+    const bool ok = path.extension() == ".glb" ? loader.LoadBinaryFromFile(&model, &err, &warn, path.string())
+                                               : loader.LoadASCIIFromFile(&model, &err, &warn, path.string());
+    EXPECT_TRUE(ok) << path << ": " << err;
+    return model;
+}
+
+// The float array behind an accessor (tightly packed VEC3 float data).
+std::vector<std::array<float, 3>> readVec3(const tinygltf::Model& model, int accessor) {
+    const tinygltf::Accessor& acc = model.accessors[accessor];
+    const tinygltf::BufferView& view = model.bufferViews[acc.bufferView];
+    const unsigned char* base = model.buffers[view.buffer].data.data() + view.byteOffset + acc.byteOffset;
+    std::vector<std::array<float, 3>> out(acc.count);
+    std::memcpy(out.data(), base, acc.count * 12);
+    return out;
+}
+
+void checkStructure(const fs::path& path, bool merge, bool cage, size_t patches) {
+    SCOPED_TRACE(path.string());
+    const tinygltf::Model model = loadWithTinygltf(path);
+    EXPECT_EQ(model.asset.generator, "Patchwork");
+    EXPECT_EQ(model.asset.version, "2.0");
+    ASSERT_EQ(model.scenes.size(), 1u);
+    ASSERT_EQ(model.nodes.size(), 1u);
+    ASSERT_EQ(model.meshes.size(), 1u);
+    ASSERT_EQ(model.materials.size(), 1u);
+    EXPECT_FALSE(model.materials[0].doubleSided);
+    EXPECT_TRUE(model.asset.extras.Has("patchwork"));
+    const auto& prims = model.meshes[0].primitives;
+    ASSERT_EQ(prims.size(), (merge ? 1 : patches) + (cage ? 1 : 0));
+    size_t lines = 0;
+    for (const tinygltf::Primitive& p : prims) {
+        ASSERT_TRUE(p.mode == TINYGLTF_MODE_TRIANGLES || p.mode == TINYGLTF_MODE_LINE);
+        if (p.mode == TINYGLTF_MODE_LINE) {
+            ++lines;
+            EXPECT_EQ(p.attributes.count("NORMAL"), 0u);
+        } else {
+            EXPECT_EQ(p.material, 0);
+            EXPECT_EQ(p.attributes.count("NORMAL"), 1u);
+            EXPECT_EQ(p.attributes.count("TEXCOORD_0"), 1u);
+        }
+        const tinygltf::Accessor& idx = model.accessors[p.indices];
+        EXPECT_TRUE(idx.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT ||
+                    idx.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+        // POSITION min/max are exactly the extremes of the stored floats.
+        const int posAcc = p.attributes.at("POSITION");
+        const auto pos = readVec3(model, posAcc);
+        std::array<float, 3> lo = pos.front(), hi = pos.front();
+        for (const auto& q : pos)
+            for (int k = 0; k < 3; ++k) {
+                lo[k] = std::min(lo[k], q[k]);
+                hi[k] = std::max(hi[k], q[k]);
+            }
+        const tinygltf::Accessor& pa = model.accessors[posAcc];
+        ASSERT_EQ(pa.minValues.size(), 3u);
+        ASSERT_EQ(pa.maxValues.size(), 3u);
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_EQ(pa.minValues[k], static_cast<double>(lo[k]));
+            EXPECT_EQ(pa.maxValues[k], static_cast<double>(hi[k]));
+        }
+    }
+    EXPECT_EQ(lines, cage ? 1u : 0u);
+}
+
+TEST(Gltf, ValidatorIsInstalled) { EXPECT_FALSE(validatorScript().empty()); }
+
+TEST(Gltf, TeaSetExportsAreValidAndRoundTrip) {
+    const fs::path dir = pw::test::freshTempDir("gltf-teaset");
+    for (const std::string name : {"teapot", "teacup", "teaspoon"}) {
+        const pw::Document doc = loadModel(name);
+        std::vector<fs::path> files;
+        for (int level : {1, 4, 16}) {
+            for (const std::string ext : {".glb", ".gltf"}) {
+                for (bool merge : {false, true}) {
+                    for (bool cage : {false, true}) {
+                        const fs::path out = dir / (name + "-L" + std::to_string(level) + (merge ? "-merge" : "") +
+                                                    (cage ? "-cage" : "") + ext);
+                        pw::GltfExportOptions options;
+                        options.level = level;
+                        options.merge = merge;
+                        options.cage = cage;
+                        pw::exportGltf(doc, out, options);
+                        ASSERT_TRUE(fs::exists(out));
+                        files.push_back(out);
+                        checkStructure(out, merge, cage, doc.patches.size());
+                        // The editable document comes back unchanged.
+                        const pw::Document back = pw::importPatchworkGltf(out);
+                        EXPECT_TRUE(back == doc) << out << ": imported document differs";
+                    }
+                }
+            }
+        }
+        SCOPED_TRACE(name);
+        expectValid(files);
+    }
+    fs::remove_all(dir);
+}
+
+TEST(Gltf, SingleFileValidationAndTheDocumentsLevel) {
+    // The validator's plain one-file use, on an export at the document's own level (16 by default).
+    const fs::path dir = pw::test::freshTempDir("gltf-single");
+    pw::Document doc = loadModel("teapot");
+    EXPECT_EQ(pw::resolveExportLevel(doc, 0), 16);
+    doc.tess.outer[2] = 7.5f;
+    doc.tess.inner = {3, 3};
+    doc.tess.outer = {2, 5, 7.5f, 1};
+    EXPECT_EQ(pw::resolveExportLevel(doc, 0), 8);
+    EXPECT_EQ(pw::resolveExportLevel(doc, 3), 3);
+    EXPECT_EQ(pw::resolveExportLevel(doc, 100000), 256);
+    const fs::path out = dir / "teapot.glb";
+    pw::GltfExportStats stats = pw::exportGltfWithStats(doc, out, {});
+    EXPECT_EQ(stats.level, 8);
+    EXPECT_EQ(stats.triangles, static_cast<size_t>(32 * 2 * 8 * 8 - 8 * 8));
+    EXPECT_EQ(stats.bytes, fs::file_size(out));
+    const fs::path script = validatorScript();
+    if (!script.empty()) {
+        const auto r = pw::test::runCommand("node " + quote(script) + " " + quote(out));
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        EXPECT_NE(r.output.find("numErrors: 0"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("numWarnings: 0"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("numInfos:"), std::string::npos) << r.output;
+    }
+    EXPECT_TRUE(pw::importPatchworkGltf(out) == doc);
+    fs::remove_all(dir);
+}
+
+// A document with every kind of surface: a closed B-spline tube, an open Catmull-Rom sheet, a
+// 2x2-window Bézier surface, plus one loose patch.
+pw::Document surfacesDocument() {
+    pw::Document doc;
+    doc.name = "surfaces";
+    auto add = [&](double x, double y, double z) {
+        doc.points.push_back(pw::Vec3(x, y, z));
+        return static_cast<uint32_t>(doc.points.size() - 1);
+    };
+    pw::Surface tube;
+    tube.basis = pw::Basis::BSpline;
+    tube.rows = 5;
+    tube.cols = 8;
+    tube.closedU = true;
+    for (uint32_t i = 0; i < tube.rows; ++i)
+        for (uint32_t j = 0; j < tube.cols; ++j) {
+            const double a = 2 * 3.14159265358979 * j / tube.cols;
+            tube.idx.push_back(add(std::cos(a), std::sin(a), 0.5 * i));
+        }
+    pw::Surface sheet;
+    sheet.basis = pw::Basis::CatmullRom;
+    sheet.tension = 0.4;
+    sheet.rows = 5;
+    sheet.cols = 6;
+    for (uint32_t i = 0; i < sheet.rows; ++i)
+        for (uint32_t j = 0; j < sheet.cols; ++j) sheet.idx.push_back(add(4.0 + j, i, 0.2 * std::sin(double(i * j))));
+    pw::Surface bez;
+    bez.basis = pw::Basis::Bezier;
+    bez.rows = 7;
+    bez.cols = 7;
+    for (uint32_t i = 0; i < bez.rows; ++i)
+        for (uint32_t j = 0; j < bez.cols; ++j) bez.idx.push_back(add(-8.0 + j, i, 0.1 * (i + j)));
+    doc.surfaces = {tube, sheet, bez};
+    pw::Patch patch;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) patch.idx[i * 4 + j] = add(j, i, 5.0 + 0.1 * i * j);
+    patch.name = "loose";
+    doc.patches = {patch};
+    return doc;
+}
+
+TEST(Gltf, SurfacesAndAnEmptyDocumentExportValid) {
+    const fs::path dir = pw::test::freshTempDir("gltf-surfaces");
+    const pw::Document doc = surfacesDocument();
+    const pw::Document empty;
+    std::vector<fs::path> files;
+    for (bool cage : {false, true}) {
+        pw::GltfExportOptions options;
+        options.level = 6;
+        options.cage = cage;
+        const fs::path out = dir / (cage ? "surfaces-cage.glb" : "surfaces.gltf");
+        pw::exportGltf(doc, out, options);
+        files.push_back(out);
+        EXPECT_TRUE(pw::importPatchworkGltf(out) == doc) << out;
+        const fs::path none = dir / (cage ? "empty-cage.glb" : "empty.gltf");
+        pw::exportGltf(empty, none, options);
+        files.push_back(none);
+        EXPECT_TRUE(pw::importPatchworkGltf(none) == empty) << none;
+    }
+    expectValid(files);
+    fs::remove_all(dir);
+}
+
+TEST(Gltf, ValidatorReportsAnInvalidFile) {
+    // The wrapper really fails on errors: a primitive with mode -1 and no POSITION min/max.
+    const fs::path dir = pw::test::freshTempDir("gltf-invalid");
+    const fs::path bad = dir / "bad.gltf";
+    std::ofstream(bad) << R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":36,)"
+                          R"("uri":"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],)"
+                          R"("bufferViews":[{"buffer":0,"byteLength":36}],)"
+                          R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"}],)"
+                          R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"mode":-1}]}],)"
+                          R"("nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0})";
+    const fs::path script = validatorScript();
+    if (!script.empty()) {
+        const auto r = pw::test::runCommand("node " + quote(script) + " " + quote(bad));
+        EXPECT_NE(r.exitCode, 0) << r.output;
+        EXPECT_EQ(r.output.find("numErrors: 0\n"), std::string::npos) << r.output;
+    }
+    fs::remove_all(dir);
+}
+
+TEST(Gltf, ImportOfAForeignGltfIsRefused) {
+    const fs::path dir = pw::test::freshTempDir("gltf-foreign");
+    const std::string expected =
+        "not a Patchwork glTF: it has no patchwork extras (only files exported by Patchwork can be imported as patches)";
+    // A JSON glTF and a binary one, written by tinygltf without any extras.
+    tinygltf::Model model;
+    model.asset.version = "2.0";
+    model.asset.generator = "someone else";
+    tinygltf::Node node;
+    node.name = "empty";  // (tinygltf writes a node with no property as null)
+    model.nodes.push_back(node);
+    tinygltf::Scene scene;
+    scene.nodes = {0};
+    model.scenes.push_back(scene);
+    model.defaultScene = 0;
+    for (bool binary : {false, true}) {
+        const fs::path path = dir / (binary ? "foreign.glb" : "foreign.gltf");
+        std::ostringstream out;
+        tinygltf::TinyGLTF writer;
+        ASSERT_TRUE(writer.WriteGltfSceneToStream(&model, out, true, binary));
+        std::ofstream(path, std::ios::binary) << out.str();
+        try {
+            pw::importPatchworkGltf(path);
+            ADD_FAILURE() << "no error for " << path;
+        } catch (const pw::InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find(path.string()), std::string::npos) << e.what();
+        }
+    }
+    // Not glTF at all, and a missing file: InputError naming the file.
+    const fs::path junk = dir / "junk.gltf";
+    std::ofstream(junk) << "this is not json";
+    for (const fs::path& p : {junk, dir / "missing.glb"}) {
+        try {
+            pw::importPatchworkGltf(p);
+            ADD_FAILURE() << "no error for " << p;
+        } catch (const pw::InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(p.string()), std::string::npos) << e.what();
+        }
+    }
+    fs::remove_all(dir);
+}
+
+TEST(Gltf, ExportErrorsNameThePathAndLeaveNoFile) {
+    const pw::Document doc = loadModel("teacup");
+    const fs::path dir = pw::test::freshTempDir("gltf-errors");
+    EXPECT_THROW(pw::exportGltf(doc, dir / "missing-dir" / "cup.glb", {}), pw::OutputError);
+    EXPECT_THROW(pw::exportGltf(doc, dir / "cup.obj", {}), pw::OutputError);
+    EXPECT_FALSE(fs::exists(dir / "missing-dir"));
+    EXPECT_FALSE(fs::exists(dir / "cup.obj"));
+    EXPECT_TRUE(fs::is_empty(dir));
+    fs::remove_all(dir);
+}
+
+// ---- the command line ----
+
+TEST(GltfCli, ExportWritesAValidFileThatImportsBack) {
+    const fs::path dir = pw::test::freshTempDir("gltf-cli");
+    const fs::path bin = pw::test::patchworkBinary();
+    ASSERT_TRUE(fs::exists(bin)) << bin << " is not built (build the patchwork target, or run scripts/test.sh)";
+    const fs::path input = pw::test::dataDir() / "teapot.bpt";
+    const fs::path glb = dir / "pot.glb", gltf = dir / "pot.gltf";
+    auto r = pw::test::runCommand(quote(bin) + " export " + quote(input) + " -o " + quote(glb) + " --tess 4 --merge --cage");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("992 triangles"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("vertices"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(std::to_string(fs::file_size(glb)) + " bytes"), std::string::npos) << r.output;
+    r = pw::test::runCommand(quote(bin) + " export " + quote(input) + " -o " + quote(gltf));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("level 16"), std::string::npos) << r.output;
+    checkStructure(glb, true, true, 32);
+    checkStructure(gltf, false, false, 32);
+    expectValid({glb, gltf});
+    const pw::Document original = pw::loadBpt(input);
+    EXPECT_TRUE(pw::importPatchworkGltf(glb) == original);
+    EXPECT_TRUE(pw::importPatchworkGltf(gltf) == original);
+    // Re-exporting the imported glTF gives the same document again.
+    const fs::path again = dir / "again.glb";
+    r = pw::test::runCommand(quote(bin) + " export " + quote(glb) + " -o " + quote(again) + " --tess 2");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(pw::importPatchworkGltf(again) == original);
+    fs::remove_all(dir);
+}
+
+TEST(GltfCli, UnwritablePathExitsTwoAndLeavesNoFile) {
+    const fs::path dir = pw::test::freshTempDir("gltf-cli-unwritable");
+    const fs::path bin = pw::test::patchworkBinary();
+    ASSERT_TRUE(fs::exists(bin)) << bin << " is not built";
+    const fs::path input = pw::test::dataDir() / "teapot.bpt";
+    // A missing directory, and a "directory" that is a regular file.
+    std::ofstream(dir / "plainfile") << "x";
+    for (const fs::path& out : {dir / "no-such-dir" / "pot.glb", dir / "plainfile" / "pot.gltf"}) {
+        const auto r = pw::test::runCommand(quote(bin) + " export " + quote(input) + " -o " + quote(out) + " --tess 2");
+        EXPECT_EQ(r.exitCode, 2) << r.output;
+        EXPECT_NE(r.output.find(out.string()), std::string::npos) << "the message names the path: " << r.output;
+        EXPECT_FALSE(fs::exists(out));
+    }
+    // Only the plain file is left: no partial or temporary file.
+    size_t entries = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++entries;
+    EXPECT_EQ(entries, 1u);
+    fs::remove_all(dir);
+}
+
+TEST(GltfCli, BadTessExitsTwo) {
+    const fs::path dir = pw::test::freshTempDir("gltf-cli-tess");
+    const fs::path bin = pw::test::patchworkBinary();
+    ASSERT_TRUE(fs::exists(bin)) << bin << " is not built";
+    const fs::path input = pw::test::dataDir() / "teapot.bpt";
+    const fs::path out = dir / "pot.glb";
+    for (const std::string tess : {"0", "-3", "257", "100000", "abc", "2.5"}) {
+        const auto r = pw::test::runCommand(quote(bin) + " export " + quote(input) + " -o " + quote(out) + " --tess " + tess);
+        EXPECT_EQ(r.exitCode, 2) << "--tess " << tess << ": " << r.output;
+        EXPECT_NE(r.output.find("--tess"), std::string::npos) << "--tess " << tess << ": " << r.output;
+        EXPECT_FALSE(fs::exists(out));
+    }
+    // A missing input file: exit 2 naming it.
+    const auto r = pw::test::runCommand(quote(bin) + " export " + quote(dir / "nothing.bpt") + " -o " + quote(out));
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("nothing.bpt"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+    fs::remove_all(dir);
+}
+
+}  // namespace
