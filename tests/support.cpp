@@ -12,6 +12,23 @@
 namespace pw::test {
 
 namespace {
+
+// The paths compiled in by tests/CMakeLists.txt become environment variables (unless already set),
+// so the test and every `patchwork` it starts see the same ones. Render tests also turn the Vulkan
+// validation layer on, failing on any message.
+struct ExportCompiledDefaults {
+    ExportCompiledDefaults() {
+        ::setenv("PATCHWORK_DATA_DIR", PATCHWORK_DATA_DIR, 0);
+        ::setenv("PATCHWORK_TESTS_DIR", PATCHWORK_TESTS_DIR, 0);
+        ::setenv("PATCHWORK_BIN", PATCHWORK_BIN, 0);
+        ::setenv("PATCHWORK_GLTF_VALIDATOR", PATCHWORK_GLTF_VALIDATOR, 0);
+#ifdef PATCHWORK_RENDER_TESTS
+        ::setenv("PATCHWORK_VALIDATION", "1", 1);
+        ::setenv("XDG_CACHE_HOME", PATCHWORK_TEST_CACHE_DIR, 0);
+#endif
+    }
+} const exportCompiledDefaults;
+
 std::filesystem::path envPath(const char* name) {
     const char* v = std::getenv(name);
     if (!v || !*v) throw std::runtime_error(std::string("environment variable ") + name + " is not set (run through ctest)");
