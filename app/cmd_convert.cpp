@@ -1,5 +1,46 @@
-// PLACEHOLDER until the convert command is written.
+// `patchwork convert IN OUT`: any loadable document to any savable one, by extension (.patchwork,
+// .bpt, .gltf, .glb). glTF output uses the default export options. The output is written
+// atomically: on any error nothing is left at OUT (an existing file there stays as it was).
+#include <iostream>
+#include <memory>
+#include <string>
+
 #include "commands.hpp"
+#include "document_io.hpp"
+#include "errors.hpp"
+#include "file_io.hpp"
+
 namespace pw::app {
-void registerConvertCommand(CLI::App& app, Action& run) { (void)app; (void)run; }
+
+namespace {
+
+struct ConvertOptions {
+    std::string input, output;
+    bool quiet = false;
+};
+
+int runConvert(const ConvertOptions& opt) {
+    // Refuse an unknown output type before doing any work.
+    const std::string ext = lowerExtension(opt.output);
+    if (ext != ".patchwork" && ext != ".bpt" && ext != ".gltf" && ext != ".glb")
+        throw OutputError(opt.output, "unknown file type '" + ext + "'; Patchwork writes .patchwork, .bpt, .gltf or .glb");
+    const Document doc = loadDocument(opt.input);
+    saveDocument(doc, opt.output);
+    if (!opt.quiet)
+        std::cout << "wrote " << opt.output << " (" << doc.patches.size() << " patches, " << doc.surfaces.size()
+                  << " surfaces, " << doc.points.size() << " points, " << doc.joins.size() << " joins)\n";
+    return 0;
 }
+
+}  // namespace
+
+void registerConvertCommand(CLI::App& app, Action& run) {
+    auto opt = std::make_shared<ConvertOptions>();
+    CLI::App* cmd = app.add_subcommand("convert", "Convert a document between formats, chosen by the file extensions");
+    cmd->add_option("input", opt->input, "Input (.patchwork, .bpt, .gltf, .glb)")->required();
+    cmd->add_option("output", opt->output, "Output (.patchwork, .bpt, .gltf, .glb); replaced atomically")->required();
+    cmd->add_flag("-q,--quiet", opt->quiet, "Print nothing on success");
+    cmd->callback([opt, &run] { run = [opt] { return runConvert(*opt); }; });
+}
+
+}  // namespace pw::app

@@ -9,14 +9,16 @@
 
 namespace pw {
 
+// Defaults absorb coordinates rounded to ~4-6 significant decimals (the tea set); see join_detect.cpp.
 struct JoinDetectOptions {
-    double relativeTolerance = 1e-6;  // × model size: collinearity and ratio tolerance
-    double c1RatioTolerance = 1e-6;   // |alpha - 1| below this is C1
+    double relativeTolerance = 1e-4;  // × model size: largest |b_k - alpha·a_k| (collinearity, constant ratio)
+    double c1RatioTolerance = 1e-4;   // |alpha - 1| at most this (and |b_k - a_k| within tolerance) is C1
 };
 
 std::vector<Join> detectJoins(const Document& doc, JoinDetectOptions options = {});
 
-// Pool entries with bit-identical coordinates merged into one; patch and surface indices rewritten.
+// Pool entries with bit-identical coordinates (-0.0 counting as +0.0) merged into one, keeping the
+// first; patch and surface indices rewritten.
 void mergeCoincidentPoints(Document& doc);
 
 }  // namespace pw

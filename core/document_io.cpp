@@ -1,0 +1,51 @@
+// Loading and saving documents by file extension.
+#include "document_io.hpp"
+
+#include "bpt_format.hpp"
+#include "embedded_data.hpp"
+#include "errors.hpp"
+#include "file_io.hpp"
+#include "gltf_import.hpp"
+#include "patchwork_format.hpp"
+
+namespace pw {
+
+namespace {
+constexpr const char* kLoadable = ".patchwork, .bpt, .gltf or .glb";
+}
+
+Document loadDocument(const std::filesystem::path& path) {
+    const std::string ext = lowerExtension(path);
+    if (ext == ".patchwork") return parseDocument(readFileLimited(path), path.string());
+    if (ext == ".bpt") return loadBpt(path);
+    if (ext == ".gltf" || ext == ".glb") return importPatchworkGltf(path);
+    throw InputError(path.string(), "unknown file type '" + ext + "'; Patchwork reads " + kLoadable);
+}
+
+void saveDocument(const Document& doc, const std::filesystem::path& path, const GltfExportOptions& gltf) {
+    const std::string ext = lowerExtension(path);
+    if (ext == ".patchwork") {
+        writeFileAtomic(path, serializeDocument(doc));
+    } else if (ext == ".bpt") {
+        std::string text;
+        try {
+            text = formatBpt(doc);
+        } catch (const InputError& e) {
+            // Not representable in the format: a problem with the output the user asked for.
+            throw OutputError(path.string(), (e.field().empty() ? "" : e.field() + ": ") + e.reason());
+        }
+        writeFileAtomic(path, text);
+    } else if (ext == ".gltf" || ext == ".glb") {
+        exportGltf(doc, path, gltf);
+    } else {
+        throw OutputError(path.string(), "unknown file type '" + ext + "'; Patchwork writes " + kLoadable);
+    }
+}
+
+Document builtinTeapot() {
+    Document doc = parseBpt(embedded::teapotBpt, "teapot.bpt (built in)");
+    doc.name = "teapot";
+    return doc;
+}
+
+}  // namespace pw

@@ -1,0 +1,552 @@
+// The native .patchwork JSON format (docs/FILE_FORMAT.md): writing with round-trip exact numbers
+// and reading with full validation; every error names the source and the JSON field path.
+#include "patchwork_format.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "errors.hpp"
+#include "limits.hpp"
+
+namespace pw {
+
+using nlohmann::json;
+
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// Writing
+
+// A float as the double with the shortest decimal form that still reads back as the same float
+// (0.4f is written "0.4", not "0.4000000059604645"); the float's exact double value otherwise.
+json floatJson(float f) {
+    char buf[32];
+    auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, f);
+    if (ec == std::errc()) {
+        double d = 0;
+        auto r = std::from_chars(buf, ptr, d);
+        if (r.ec == std::errc() && static_cast<float>(d) == f) return d;
+    }
+    return static_cast<double>(f);
+}
+
+template <size_t N>
+json floatArray(const std::array<float, N>& a) {
+    json out = json::array();
+    for (float f : a) out.push_back(floatJson(f));
+    return out;
+}
+
+json tessJson(const TessSettings& t) {
+    return json{{"outer", floatArray(t.outer)},
+                {"inner", floatArray(t.inner)},
+                {"linked", t.linked},
+                {"spacing", spacingName(t.spacing)},
+                {"adaptive", adaptiveName(t.adaptive)},
+                {"distanceNear", floatJson(t.distanceNear)},
+                {"distanceFar", floatJson(t.distanceFar)},
+                {"targetPixels", floatJson(t.targetPixels)},
+                {"maxLevel", floatJson(t.maxLevel)},
+                {"cullBackfaces", t.cullBackfaces},
+                {"cullOffscreen", t.cullOffscreen}};
+}
+
+json displayJson(const DisplaySettings& d) {
+    return json{{"shading", shadingName(d.shading)},
+                {"showGrid", d.showGrid},
+                {"showWireframe", d.showWireframe},
+                {"showNormals", d.showNormals},
+                {"showBoundaries", d.showBoundaries},
+                {"normalLength", floatJson(d.normalLength)},
+                {"lightDir", floatArray(d.lightDir)},
+                {"background", floatArray(d.background)}};
+}
+
+json cameraJson(const Camera& c) {
+    return json{{"target", {c.target[0], c.target[1], c.target[2]}},
+                {"distance", c.distance},
+                {"yawDeg", c.yawDeg},
+                {"pitchDeg", c.pitchDeg},
+                {"fovYDeg", c.fovYDeg},
+                {"orthographic", c.orthographic},
+                {"zUp", c.zUp}};
+}
+
+// ---------------------------------------------------------------------------------------------
+// Reading
+
+std::string at(const std::string& path, const char* key) { return path.empty() ? key : path + "." + key; }
+std::string at(const std::string& path, size_t i) { return path + "[" + std::to_string(i) + "]"; }
+
+class Reader {
+public:
+    explicit Reader(const std::string& source) : source_(source) {}
+
+    [[noreturn]] void fail(const std::string& path, const std::string& why) const {
+        throw InputError(source_, why, 0, path);
+    }
+
+    [[noreturn]] void wrongType(const json& v, const std::string& path, const char* expected) const {
+        fail(path, std::string("expected ") + expected + ", found " + describe(v));
+    }
+
+    static std::string describe(const json& v) {
+        if (v.is_number_float()) return "a fractional number";
+        if (v.is_number_integer()) return "an integer";
+        if (v.is_null()) return "null";
+        if (v.is_array()) return "an array";
+        if (v.is_object()) return "an object";
+        if (v.is_boolean()) return "a boolean";
+        if (v.is_string()) return "a string";
+        return v.type_name();
+    }
+
+    const json& object(const json& v, const std::string& path) const {
+        if (!v.is_object()) wrongType(v, path, "an object");
+        return v;
+    }
+
+    // Member `key` of object `obj` (at `path`), or nullptr when absent and optional.
+    const json* member(const json& obj, const std::string& path, const char* key, bool required) const {
+        auto it = obj.find(key);
+        if (it == obj.end()) {
+            if (required) fail(at(path, key), "required field is missing");
+            return nullptr;
+        }
+        return &*it;
+    }
+
+    const json& array(const json& v, const std::string& path, size_t maxSize, const char* what) const {
+        if (!v.is_array()) wrongType(v, path, "an array");
+        if (v.size() > maxSize)
+            fail(path, std::to_string(v.size()) + " " + what + "; the limit is " + std::to_string(maxSize));
+        return v;
+    }
+
+    const json& fixedArray(const json& v, const std::string& path, size_t n) const {
+        if (!v.is_array()) wrongType(v, path, ("an array of " + std::to_string(n)).c_str());
+        if (v.size() != n)
+            fail(path, "expected an array of " + std::to_string(n) + " elements, found " + std::to_string(v.size()));
+        return v;
+    }
+
+    double number(const json& v, const std::string& path) const {
+        if (!v.is_number()) wrongType(v, path, "a number");
+        const double d = v.get<double>();
+        if (!std::isfinite(d)) fail(path, "number is not finite");
+        return d;
+    }
+
+    double numberInRange(const json& v, const std::string& path, double lo, double hi, bool openLo = false) const {
+        const double d = number(v, path);
+        if (d < lo || d > hi || (openLo && d == lo))
+            fail(path, "value " + shortNumber(d) + " is outside " + (openLo ? "(" : "[") + shortNumber(lo) + ", " +
+                           shortNumber(hi) + "]");
+        return d;
+    }
+
+    double coordinate(const json& v, const std::string& path) const {
+        const double d = number(v, path);
+        if (std::abs(d) > limits::kMaxCoordinate)
+            fail(path, "coordinate " + shortNumber(d) + " is too large (the limit is ±1e9)");
+        return d;
+    }
+
+    float floatValue(const json& v, const std::string& path, double lo = -std::numeric_limits<float>::max(),
+                     double hi = std::numeric_limits<float>::max()) const {
+        return static_cast<float>(numberInRange(v, path, lo, hi));
+    }
+
+    bool boolean(const json& v, const std::string& path) const {
+        if (!v.is_boolean()) wrongType(v, path, "true or false");
+        return v.get<bool>();
+    }
+
+    std::string string(const json& v, const std::string& path) const {
+        if (!v.is_string()) wrongType(v, path, "a string");
+        return v.get<std::string>();
+    }
+
+    // A non-negative integer below `limit`.
+    uint64_t index(const json& v, const std::string& path, uint64_t limit, const char* what) const {
+        if (!v.is_number_integer()) wrongType(v, path, "a non-negative integer");
+        if (!v.is_number_unsigned() && v.get<int64_t>() < 0)
+            fail(path, "negative " + std::string(what) + " " + std::to_string(v.get<int64_t>()));
+        const uint64_t i = v.is_number_unsigned() ? v.get<uint64_t>() : static_cast<uint64_t>(v.get<int64_t>());
+        if (i >= limit)
+            fail(path, std::string(what) + " " + std::to_string(i) + " is out of range (" +
+                           (limit == 0 ? std::string("there are none") : "0.." + std::to_string(limit - 1)) + ")");
+        return i;
+    }
+
+    template <typename E>
+    E named(const json& v, const std::string& path, std::optional<E> (*parse)(std::string_view), const char* choices) const {
+        const std::string s = string(v, path);
+        if (auto e = parse(s)) return *e;
+        fail(path, "unknown value '" + s + "'; expected one of " + choices);
+    }
+
+    // Optional field helpers: assign when present.
+    template <typename F>
+    void optional(const json& obj, const std::string& path, const char* key, F&& read) const {
+        if (const json* v = member(obj, path, key, false)) read(*v, at(path, key));
+    }
+
+    static std::string shortNumber(double d) {
+        char buf[32];
+        auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, d);
+        return ec == std::errc() ? std::string(buf, ptr) : std::string("?");
+    }
+
+private:
+    const std::string& source_;
+};
+
+constexpr double kMinLevel = limits::kMinTessLevel, kMaxLevel = limits::kMaxTessLevel;
+
+template <size_t N>
+void readFloats(const Reader& r, const json& v, const std::string& path, std::array<float, N>& out, double lo,
+                double hi) {
+    r.fixedArray(v, path, N);
+    for (size_t i = 0; i < N; ++i) out[i] = r.floatValue(v[i], at(path, i), lo, hi);
+}
+
+TessSettings readTess(const Reader& r, const json& v, const std::string& path) {
+    r.object(v, path);
+    TessSettings t;
+    const double big = 1e9;
+    r.optional(v, path, "outer", [&](const json& x, const std::string& p) { readFloats(r, x, p, t.outer, kMinLevel, kMaxLevel); });
+    r.optional(v, path, "inner", [&](const json& x, const std::string& p) { readFloats(r, x, p, t.inner, kMinLevel, kMaxLevel); });
+    r.optional(v, path, "linked", [&](const json& x, const std::string& p) { t.linked = r.boolean(x, p); });
+    r.optional(v, path, "spacing", [&](const json& x, const std::string& p) {
+        t.spacing = r.named<Spacing>(x, p, parseSpacing, "equal, fractional_odd, fractional_even, pow2");
+    });
+    r.optional(v, path, "adaptive", [&](const json& x, const std::string& p) {
+        t.adaptive = r.named<AdaptiveMode>(x, p, parseAdaptive, "none, distance, screen, orientation");
+    });
+    r.optional(v, path, "distanceNear", [&](const json& x, const std::string& p) { t.distanceNear = r.floatValue(x, p, 0, big); });
+    r.optional(v, path, "distanceFar", [&](const json& x, const std::string& p) { t.distanceFar = r.floatValue(x, p, 0, big); });
+    r.optional(v, path, "targetPixels", [&](const json& x, const std::string& p) { t.targetPixels = r.floatValue(x, p, 0, big); });
+    r.optional(v, path, "maxLevel", [&](const json& x, const std::string& p) { t.maxLevel = r.floatValue(x, p, kMinLevel, kMaxLevel); });
+    r.optional(v, path, "cullBackfaces", [&](const json& x, const std::string& p) { t.cullBackfaces = r.boolean(x, p); });
+    r.optional(v, path, "cullOffscreen", [&](const json& x, const std::string& p) { t.cullOffscreen = r.boolean(x, p); });
+    return t;
+}
+
+DisplaySettings readDisplay(const Reader& r, const json& v, const std::string& path) {
+    r.object(v, path);
+    DisplaySettings d;
+    r.optional(v, path, "shading", [&](const json& x, const std::string& p) {
+        d.shading = r.named<ShadingMode>(x, p, parseShading, "lit, normal, patch, uv, zebra, gauss, mean");
+    });
+    r.optional(v, path, "showGrid", [&](const json& x, const std::string& p) { d.showGrid = r.boolean(x, p); });
+    r.optional(v, path, "showWireframe", [&](const json& x, const std::string& p) { d.showWireframe = r.boolean(x, p); });
+    r.optional(v, path, "showNormals", [&](const json& x, const std::string& p) { d.showNormals = r.boolean(x, p); });
+    r.optional(v, path, "showBoundaries", [&](const json& x, const std::string& p) { d.showBoundaries = r.boolean(x, p); });
+    r.optional(v, path, "normalLength", [&](const json& x, const std::string& p) { d.normalLength = r.floatValue(x, p, 0, 1e9); });
+    r.optional(v, path, "lightDir", [&](const json& x, const std::string& p) { readFloats(r, x, p, d.lightDir, -1e9, 1e9); });
+    r.optional(v, path, "background", [&](const json& x, const std::string& p) { readFloats(r, x, p, d.background, -1e9, 1e9); });
+    return d;
+}
+
+Camera readCamera(const Reader& r, const json& v, const std::string& path) {
+    r.object(v, path);
+    Camera c;
+    r.optional(v, path, "target", [&](const json& x, const std::string& p) {
+        r.fixedArray(x, p, 3);
+        for (size_t i = 0; i < 3; ++i) c.target[i] = r.coordinate(x[i], at(p, i));
+    });
+    r.optional(v, path, "distance", [&](const json& x, const std::string& p) { c.distance = r.numberInRange(x, p, 0, 1e12, true); });
+    r.optional(v, path, "yawDeg", [&](const json& x, const std::string& p) { c.yawDeg = r.numberInRange(x, p, -1e6, 1e6); });
+    r.optional(v, path, "pitchDeg", [&](const json& x, const std::string& p) { c.pitchDeg = r.numberInRange(x, p, -1e6, 1e6); });
+    r.optional(v, path, "fovYDeg", [&](const json& x, const std::string& p) { c.fovYDeg = r.numberInRange(x, p, 0, 180, true); });
+    r.optional(v, path, "orthographic", [&](const json& x, const std::string& p) { c.orthographic = r.boolean(x, p); });
+    r.optional(v, path, "zUp", [&](const json& x, const std::string& p) { c.zUp = r.boolean(x, p); });
+    return c;
+}
+
+constexpr const char* kBases = "bezier, bspline, catmull-rom";
+
+// Number of 4x4 windows along one direction of a net (document.cpp's expandPatches).
+uint64_t windowCount(uint32_t n, bool closed, uint32_t step) {
+    if (closed) return (n + step - 1) / step;
+    return n >= 4 ? (n - 4) / step + 1 : 0;
+}
+
+// Byte offset → 1-based line number.
+int lineAt(std::string_view text, size_t byte) {
+    byte = std::min(byte, text.size());
+    int line = 1;
+    for (size_t i = 0; i < byte; ++i)
+        if (text[i] == '\n') ++line;
+    return line;
+}
+
+// nlohmann's message without its "[json.exception.parse_error.101] parse error at line 3, column 5: "
+// prefix (we report the line ourselves).
+std::string parseErrorReason(const std::string& what) {
+    std::string s = what;
+    if (s.rfind("[json.exception.", 0) == 0) {
+        const size_t close = s.find("] ");
+        if (close != std::string::npos) s = s.substr(close + 2);
+    }
+    if (s.rfind("parse error", 0) == 0) {
+        const size_t colon = s.find(": ");
+        if (colon != std::string::npos) s = s.substr(colon + 2);
+    }
+    return "JSON syntax error: " + s;
+}
+
+// A Patchwork document nests 4 deep; refuse absurd nesting before building the DOM, so that a file
+// of millions of '[' cannot exhaust memory. Returns the byte offset of the first bracket too deep.
+constexpr int kMaxJsonDepth = 64;
+size_t excessiveNesting(std::string_view text) {
+    int depth = 0;
+    bool inString = false, escaped = false;
+    for (size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (inString) {
+            if (escaped) escaped = false;
+            else if (c == '\\') escaped = true;
+            else if (c == '"') inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > kMaxJsonDepth) return i;
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+    return std::string_view::npos;
+}
+
+}  // namespace
+
+json documentToJson(const Document& doc) {
+    json j = json::object();
+    j["format"] = "patchwork";
+    j["version"] = Document::kFormatVersion;
+    j["name"] = doc.name;
+
+    json points = json::array();
+    for (const Vec3& p : doc.points) points.push_back(json::array({p.x, p.y, p.z}));
+    j["points"] = std::move(points);
+
+    json patches = json::array();
+    for (const Patch& p : doc.patches) {
+        json o{{"idx", p.idx}, {"basis", basisName(p.basis)}, {"tension", p.tension}, {"name", p.name}};
+        if (p.tessOverride) o["tess"] = floatArray(*p.tessOverride);
+        patches.push_back(std::move(o));
+    }
+    j["patches"] = std::move(patches);
+
+    json surfaces = json::array();
+    for (const Surface& s : doc.surfaces) {
+        surfaces.push_back(json{{"rows", s.rows},
+                                {"cols", s.cols},
+                                {"idx", s.idx},
+                                {"basis", basisName(s.basis)},
+                                {"tension", s.tension},
+                                {"closedU", s.closedU},
+                                {"closedV", s.closedV},
+                                {"name", s.name}});
+    }
+    j["surfaces"] = std::move(surfaces);
+
+    json joins = json::array();
+    for (const Join& jn : doc.joins) {
+        joins.push_back(json{{"a", jn.patchA},
+                             {"edgeA", edgeName(jn.edgeA)},
+                             {"b", jn.patchB},
+                             {"edgeB", edgeName(jn.edgeB)},
+                             {"reversed", jn.reversed},
+                             {"continuity", continuityName(jn.continuity)},
+                             {"alpha", jn.alpha}});
+    }
+    j["joins"] = std::move(joins);
+
+    j["tess"] = tessJson(doc.tess);
+    j["display"] = displayJson(doc.display);
+    j["camera"] = cameraJson(doc.camera);
+    return j;
+}
+
+Document documentFromJson(const json& j, const std::string& sourceName) {
+    const Reader r(sourceName);
+    if (!j.is_object()) r.fail("", "a Patchwork document must be a JSON object, found " + Reader::describe(j));
+
+    // Identification and version come first, so that a newer file gets the version message.
+    const json& format = *r.member(j, "", "format", true);
+    if (!format.is_string() || format.get<std::string>() != "patchwork")
+        r.fail("format", "not a Patchwork document (expected \"format\": \"patchwork\")");
+    const json& version = *r.member(j, "", "version", true);
+    if (!version.is_number_integer()) r.wrongType(version, "version", "an integer");
+    const bool negative = !version.is_number_unsigned() && version.get<int64_t>() < 0;
+    const uint64_t v = negative ? 0 : version.get<uint64_t>();
+    if (v > static_cast<uint64_t>(Document::kFormatVersion))
+        r.fail("version", "was written by a newer Patchwork (format version " + std::to_string(v) +
+                              "); this build reads version " + std::to_string(Document::kFormatVersion));
+    if (negative || v < 1)
+        r.fail("version", "format version " + version.dump() + " is not valid (this build reads version " +
+                              std::to_string(Document::kFormatVersion) + ")");
+
+    Document doc;
+    r.optional(j, "", "name", [&](const json& x, const std::string& p) { doc.name = r.string(x, p); });
+
+    // Pool.
+    const json& points = r.array(*r.member(j, "", "points", true), "points", limits::kMaxPoints, "points");
+    doc.points.resize(points.size());
+    for (size_t i = 0; i < points.size(); ++i) {
+        const std::string p = at("points", i);
+        const json& xyz = r.fixedArray(points[i], p, 3);
+        for (int c = 0; c < 3; ++c) doc.points[i][c] = r.coordinate(xyz[c], at(p, c));
+    }
+    const uint64_t nPoints = doc.points.size();
+
+    // Patches.
+    const json& patches = r.array(*r.member(j, "", "patches", true), "patches", limits::kMaxPatches, "patches");
+    doc.patches.resize(patches.size());
+    for (size_t i = 0; i < patches.size(); ++i) {
+        const std::string path = at("patches", i);
+        const json& o = r.object(patches[i], path);
+        Patch& patch = doc.patches[i];
+        const json& idx = r.fixedArray(*r.member(o, path, "idx", true), at(path, "idx"), 16);
+        for (size_t k = 0; k < 16; ++k)
+            patch.idx[k] = static_cast<uint32_t>(r.index(idx[k], at(at(path, "idx"), k), nPoints, "point index"));
+        r.optional(o, path, "basis", [&](const json& x, const std::string& p) { patch.basis = r.named<Basis>(x, p, parseBasis, kBases); });
+        r.optional(o, path, "tension", [&](const json& x, const std::string& p) { patch.tension = r.numberInRange(x, p, -1e3, 1e3); });
+        r.optional(o, path, "name", [&](const json& x, const std::string& p) { patch.name = r.string(x, p); });
+        r.optional(o, path, "tess", [&](const json& x, const std::string& p) {
+            if (x.is_null()) return;
+            std::array<float, 6> levels{};
+            readFloats(r, x, p, levels, kMinLevel, kMaxLevel);
+            patch.tessOverride = levels;
+        });
+    }
+
+    // Surfaces.
+    uint64_t windows = doc.patches.size();
+    if (const json* sv = r.member(j, "", "surfaces", false)) {
+        const json& surfaces = r.array(*sv, "surfaces", limits::kMaxPatches, "surfaces");
+        doc.surfaces.resize(surfaces.size());
+        for (size_t i = 0; i < surfaces.size(); ++i) {
+            const std::string path = at("surfaces", i);
+            const json& o = r.object(surfaces[i], path);
+            Surface& s = doc.surfaces[i];
+            s.rows = static_cast<uint32_t>(r.index(*r.member(o, path, "rows", true), at(path, "rows"), limits::kMaxNetSide + 1, "row count"));
+            s.cols = static_cast<uint32_t>(r.index(*r.member(o, path, "cols", true), at(path, "cols"), limits::kMaxNetSide + 1, "column count"));
+            if (s.rows < 1) r.fail(at(path, "rows"), "a net needs at least 1 row");
+            if (s.cols < 1) r.fail(at(path, "cols"), "a net needs at least 1 column");
+            r.optional(o, path, "basis", [&](const json& x, const std::string& p) { s.basis = r.named<Basis>(x, p, parseBasis, kBases); });
+            r.optional(o, path, "tension", [&](const json& x, const std::string& p) { s.tension = r.numberInRange(x, p, -1e3, 1e3); });
+            r.optional(o, path, "closedU", [&](const json& x, const std::string& p) { s.closedU = r.boolean(x, p); });
+            r.optional(o, path, "closedV", [&](const json& x, const std::string& p) { s.closedV = r.boolean(x, p); });
+            r.optional(o, path, "name", [&](const json& x, const std::string& p) { s.name = r.string(x, p); });
+            const size_t n = static_cast<size_t>(s.rows) * s.cols;
+            const std::string ip = at(path, "idx");
+            const json& idx = r.fixedArray(*r.member(o, path, "idx", true), ip, n);
+            s.idx.resize(n);
+            for (size_t k = 0; k < n; ++k) s.idx[k] = static_cast<uint32_t>(r.index(idx[k], at(ip, k), nPoints, "point index"));
+            const uint32_t step = s.basis == Basis::Bezier ? 3 : 1;
+            windows += windowCount(s.rows, s.closedV, step) * windowCount(s.cols, s.closedU, step);
+            if (windows > limits::kMaxPatches)
+                r.fail(path, "patches and surface windows exceed the limit of " + std::to_string(limits::kMaxPatches));
+        }
+    }
+
+    // Joins.
+    if (const json* jv = r.member(j, "", "joins", false)) {
+        const json& joins = r.array(*jv, "joins", limits::kMaxJoins, "joins");
+        doc.joins.resize(joins.size());
+        for (size_t i = 0; i < joins.size(); ++i) {
+            const std::string path = at("joins", i);
+            const json& o = r.object(joins[i], path);
+            Join& jn = doc.joins[i];
+            constexpr const char* kEdges = "u0, v0, u1, v1";
+            jn.patchA = static_cast<uint32_t>(r.index(*r.member(o, path, "a", true), at(path, "a"), doc.patches.size(), "patch index"));
+            jn.edgeA = r.named<Edge>(*r.member(o, path, "edgeA", true), at(path, "edgeA"), parseEdge, kEdges);
+            jn.patchB = static_cast<uint32_t>(r.index(*r.member(o, path, "b", true), at(path, "b"), doc.patches.size(), "patch index"));
+            jn.edgeB = r.named<Edge>(*r.member(o, path, "edgeB", true), at(path, "edgeB"), parseEdge, kEdges);
+            r.optional(o, path, "reversed", [&](const json& x, const std::string& p) { jn.reversed = r.boolean(x, p); });
+            r.optional(o, path, "continuity", [&](const json& x, const std::string& p) {
+                jn.continuity = r.named<Continuity>(x, p, parseContinuity, "C0, C1, G1");
+            });
+            r.optional(o, path, "alpha", [&](const json& x, const std::string& p) { jn.alpha = r.numberInRange(x, p, 0, 1e6, true); });
+            if (jn.patchA == jn.patchB && jn.edgeA == jn.edgeB) r.fail(path, "a join cannot connect an edge to itself");
+        }
+    }
+
+    if (const json* v = r.member(j, "", "tess", false)) doc.tess = readTess(r, *v, "tess");
+    if (const json* v = r.member(j, "", "display", false)) doc.display = readDisplay(r, *v, "display");
+    if (const json* v = r.member(j, "", "camera", false)) doc.camera = readCamera(r, *v, "camera");
+    return doc;
+}
+
+std::string serializeDocument(const Document& doc) {
+    // Readable layout: one top-level field per line, one pool point / patch / join per line.
+    const json j = documentToJson(doc);
+    auto dump = [](const json& v) { return v.dump(-1, ' ', false, json::error_handler_t::replace); };
+    std::string out = "{\n";
+    bool first = true;
+    for (const char* key : {"format", "version", "name", "points", "patches", "surfaces", "joins", "tess", "display", "camera"}) {
+        auto it = j.find(key);
+        if (it == j.end()) continue;
+        if (!first) out += ",\n";
+        first = false;
+        out += "  \"";
+        out += key;
+        out += "\": ";
+        if (it->is_array() && !it->empty()) {
+            out += "[\n";
+            for (size_t i = 0; i < it->size(); ++i) {
+                out += "    ";
+                out += dump((*it)[i]);
+                out += i + 1 < it->size() ? ",\n" : "\n";
+            }
+            out += "  ]";
+        } else {
+            out += dump(*it);
+        }
+    }
+    out += "\n}\n";
+    return out;
+}
+
+Document parseDocument(std::string_view text, const std::string& sourceName) {
+    if (const size_t at = excessiveNesting(text); at != std::string_view::npos)
+        throw InputError(sourceName, "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels",
+                         lineAt(text, at));
+    json j;
+    try {
+        j = json::parse(text.begin(), text.end());
+    } catch (const json::parse_error& e) {
+        // e.byte is the 1-based position of the offending character (past the end when truncated).
+        const size_t byte = e.byte > 0 ? e.byte - 1 : 0;
+        throw InputError(sourceName, parseErrorReason(e.what()), lineAt(text, byte));
+    } catch (const json::exception& e) {
+        // E.g. "number overflow parsing '1e400'" (out_of_range.406), which carries no position:
+        // locate the quoted token in the text.
+        std::string what = e.what();
+        if (what.rfind("[json.exception.", 0) == 0 && what.find("] ") != std::string::npos)
+            what = what.substr(what.find("] ") + 2);
+        int line = 0;
+        const size_t q0 = what.find('\''), q1 = q0 == std::string::npos ? q0 : what.find('\'', q0 + 1);
+        if (q1 != std::string::npos && q1 > q0 + 1) {
+            const size_t at = text.find(what.substr(q0 + 1, q1 - q0 - 1));
+            if (at != std::string_view::npos) line = lineAt(text, at);
+        }
+        throw InputError(sourceName, "JSON error: " + what, line);
+    }
+    if (!j.is_object()) {
+        // Locate the offending top-level value: its first character.
+        const size_t first = text.find_first_not_of(" \t\r\n");
+        throw InputError(sourceName, "a Patchwork document must be a JSON object, found " + Reader::describe(j),
+                         lineAt(text, first == std::string_view::npos ? 0 : first));
+    }
+    return documentFromJson(j, sourceName);
+}
+
+}  // namespace pw
