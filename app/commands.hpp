@@ -12,6 +12,8 @@ using Action = std::function<int()>;
 void registerInfoCommand(CLI::App& app, Action& run);
 void registerExportCommand(CLI::App& app, Action& run);
 void registerConvertCommand(CLI::App& app, Action& run);
+void registerRenderCommand(CLI::App& app, Action& run);
+void registerBenchCommand(CLI::App& app, Action& run);
 
 // The default job when no sub-command is given (until the editor window exists: summary + export).
 int runDefault(const std::string& file);

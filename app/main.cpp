@@ -17,6 +17,8 @@ int main(int argc, char** argv) {
     pw::app::registerInfoCommand(app, run);
     pw::app::registerExportCommand(app, run);
     pw::app::registerConvertCommand(app, run);
+    pw::app::registerRenderCommand(app, run);
+    pw::app::registerBenchCommand(app, run);
 
     try {
         app.parse(argc, argv);

@@ -1,0 +1,198 @@
+// `patchwork bench`: fixed scenes rendered offscreen at 1280x720 (submit and wait per frame) on the
+// tessellation pipeline and, in the same run, as the same triangles pre-tessellated on the CPU and
+// drawn as a plain mesh. Reports medians of wall, submit+wait and GPU times, triangles per frame,
+// million triangles per second and the tessellated/plain throughput ratio.
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "camera_math.hpp"
+#include "commands.hpp"
+#include "device.hpp"
+#include "document_io.hpp"
+#include "errors.hpp"
+#include "mesh_tessellate.hpp"
+#include "model_builders.hpp"
+#include "offscreen_target.hpp"
+#include "renderer.hpp"
+
+namespace pw::app {
+
+namespace {
+
+struct BenchArgs {
+    int frames = 20;
+    std::vector<std::string> scenes;
+    std::string json, device;
+    bool validation = false;
+    bool msaa = false;
+};
+
+struct Scene {
+    std::string name;
+    std::function<Document()> make;
+    float level = 16;
+    bool adaptive = false;
+    bool grid = false;
+    bool bigOnly = false;  // only on real GPUs unless named
+    std::string comparedTo;  // adaptive: the uniform scene with the same view
+};
+
+std::vector<Scene> allScenes() {
+    return {
+        {"teapot16", [] { return builtinTeapot(); }, 16, false, true, false, ""},
+        {"teapot64", [] { return builtinTeapot(); }, 64, false, false, false, ""},
+        {"grid32", [] { return makePatchGrid(32, 32); }, 16, false, false, false, ""},
+        {"grid32-adaptive8px", [] { return makePatchGrid(32, 32); }, 16, true, false, false, "grid32"},
+        {"grid128", [] { return makePatchGrid(128, 128); }, 16, false, false, true, ""},
+    };
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+struct Measure {
+    double wall = 0, submit = 0, gpu = 0;
+    uint64_t triangles = 0;
+    uint32_t draws = 0;
+};
+
+Measure measure(render::Renderer& r, const render::RenderOptions& o, int frames) {
+    r.render(o);  // first frame after a switch
+    std::vector<double> wall, submit, gpu;
+    Measure m;
+    for (int i = 0; i < frames; ++i) {
+        const render::FrameStats s = r.render(o);
+        wall.push_back(s.wallMs);
+        submit.push_back(s.submitMs);
+        gpu.push_back(s.gpuMs);
+        m.triangles = s.triangles();
+        m.draws = s.draws;
+    }
+    m.wall = median(wall);
+    m.submit = median(submit);
+    m.gpu = median(gpu);
+    return m;
+}
+
+int runBench(const BenchArgs& a) {
+    if (a.frames < 1 || a.frames > 100000) throw InputError("bench", "--frames: must be from 1 to 100000");
+    std::vector<Scene> scenes = allScenes();
+    for (const std::string& n : a.scenes)
+        if (std::none_of(scenes.begin(), scenes.end(), [&](const Scene& s) { return s.name == n; })) {
+            std::string names;
+            for (auto& s : scenes) names += " " + s.name;
+            throw InputError("bench", "--scene: unknown scene '" + n + "' (scenes:" + names + ")");
+        }
+
+    render::DeviceOptions dopt;
+    dopt.name = a.device;
+    dopt.validation = a.validation;
+    render::Device dev(dopt);
+    const bool cpuDevice = dev.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    constexpr uint32_t W = 1280, H = 720;
+    render::OffscreenTarget target(dev, W, H, a.msaa);
+    target.setReadback(false);
+    render::Renderer renderer(dev, target);
+    std::cout << "device: " << dev.name() << ", 1280x720" << (target.samples() > 1 ? " 4x MSAA" : " 1 sample") << ", " << a.frames << " frames per scene, medians; pipelines created in "
+              << renderer.pipelines().createMs << " ms\n";
+    std::printf("%-20s %9s %9s %9s %11s %8s %7s | %9s %8s %7s\n", "scene", "wall ms", "submit", "gpu ms", "triangles",
+                "Mtri/s", "draws", "plain ms", "Mtri/s", "ratio");
+
+    bool warmed = false;
+    nlohmann::json out = nlohmann::json::array();
+    std::map<std::string, uint64_t> trianglesByScene;
+    for (const Scene& sc : scenes) {
+        const bool named = std::find(a.scenes.begin(), a.scenes.end(), sc.name) != a.scenes.end();
+        if (!a.scenes.empty() && !named) continue;
+        if (a.scenes.empty() && sc.bigOnly && cpuDevice) continue;
+        const Document doc = sc.make();
+        renderer.setDocument(doc);
+        if (!warmed) {  // every pipeline variant once, so no measured frame pays for shader JIT
+            renderer.warmUp();
+            warmed = true;
+        }
+        render::RenderOptions o = render::optionsFromDocument(doc);
+        o.display.showGrid = sc.grid;
+        o.display.showWireframe = o.display.showNormals = o.display.showBoundaries = false;
+        o.display.shading = ShadingMode::Lit;
+        o.tess.outer = {sc.level, sc.level, sc.level, sc.level};
+        o.tess.inner = {sc.level, sc.level};
+        o.tess.spacing = Spacing::Equal;
+        o.tess.adaptive = sc.adaptive ? AdaptiveMode::ScreenSpace : AdaptiveMode::None;
+        o.tess.targetPixels = 8.0f;
+        o.tess.cullBackfaces = false;
+        o.camera = frameBounds(doc.camera, computeBounds(doc.points), double(W) / H);
+
+        const Measure t = measure(renderer, o, a.frames);
+        trianglesByScene[sc.name] = t.triangles;
+        const double mtri = t.gpu > 0 ? double(t.triangles) / (t.gpu * 1000.0) : 0.0;
+        nlohmann::json j{{"scene", sc.name}, {"patches", expandPatches(doc).size()}, {"wall_ms", t.wall},
+                         {"submit_wait_ms", t.submit}, {"gpu_ms", t.gpu}, {"triangles", t.triangles},
+                         {"mtri_per_s", mtri}, {"draws", t.draws}};
+        double plainMs = 0, plainMtri = 0, ratio = 0;
+        if (!sc.adaptive) {
+            renderer.setPlainMesh(tessellateDocument(doc, int(sc.level)));
+            render::RenderOptions p = o;
+            p.plainMesh = true;
+            const Measure pm = measure(renderer, p, a.frames);
+            plainMs = pm.gpu;
+            plainMtri = pm.gpu > 0 ? double(pm.triangles) / (pm.gpu * 1000.0) : 0.0;
+            ratio = plainMtri > 0 ? mtri / plainMtri : 0.0;
+            j["plain"] = {{"wall_ms", pm.wall}, {"submit_wait_ms", pm.submit}, {"gpu_ms", pm.gpu},
+                          {"triangles", pm.triangles}, {"mtri_per_s", plainMtri}};
+            j["throughput_ratio_tess_over_plain"] = ratio;
+            renderer.setPlainMesh(TriangleMesh{});
+        } else if (trianglesByScene.count(sc.comparedTo) && t.triangles > 0) {
+            j["fewer_triangles_than_" + sc.comparedTo] = double(trianglesByScene[sc.comparedTo]) / double(t.triangles);
+        }
+        out.push_back(j);
+        if (sc.adaptive)
+            std::printf("%-20s %9.2f %9.2f %9.2f %11llu %8.2f %7u | %9s %8s %7s  (%.1fx fewer triangles than %s)\n",
+                        sc.name.c_str(), t.wall, t.submit, t.gpu, (unsigned long long)t.triangles, mtri, t.draws, "-", "-",
+                        "-", trianglesByScene.count(sc.comparedTo) && t.triangles ? double(trianglesByScene[sc.comparedTo]) / t.triangles : 0.0,
+                        sc.comparedTo.c_str());
+        else
+            std::printf("%-20s %9.2f %9.2f %9.2f %11llu %8.2f %7u | %9.2f %8.2f %7.2f\n", sc.name.c_str(), t.wall, t.submit,
+                        t.gpu, (unsigned long long)t.triangles, mtri, t.draws, plainMs, plainMtri, ratio);
+        std::fflush(stdout);
+    }
+    if (!a.json.empty()) {
+        std::ofstream f(a.json);
+        if (!f) throw OutputError(a.json, "cannot open for writing");
+        f << nlohmann::json{{"device", dev.name()}, {"width", W}, {"height", H}, {"frames", a.frames}, {"scenes", out}}.dump(2)
+          << "\n";
+        if (!f) throw OutputError(a.json, "write failed");
+    }
+    if (dev.validationEnabled() && render::Device::validationMessageCount() > 0) {
+        std::cerr << "patchwork bench: " << render::Device::validationMessageCount() << " Vulkan validation message(s)\n";
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace
+
+void registerBenchCommand(CLI::App& app, Action& run) {
+    auto a = std::make_shared<BenchArgs>();
+    CLI::App* cmd = app.add_subcommand("bench", "Benchmark the GPU tessellation pipeline against a plain pre-tessellated mesh");
+    cmd->add_option("--frames", a->frames, "Measured frames per scene (default 20)");
+    cmd->add_option("--scene", a->scenes, "Scene(s) to run: teapot16, teapot64, grid32, grid32-adaptive8px, grid128");
+    cmd->add_option("--json", a->json, "Write the results as JSON");
+    cmd->add_option("--device", a->device, "Vulkan device: substring of its name");
+    cmd->add_flag("--validation", a->validation, "Enable the Vulkan validation layer");
+    cmd->add_flag("--msaa", a->msaa, "Render with 4x MSAA (default: one sample per pixel)");
+    cmd->callback([a, &run] { run = [a] { return runBench(*a); }; });
+}
+
+}  // namespace pw::app

@@ -1,0 +1,19 @@
+// CPU bound of the segments each window gets this frame under adaptive tessellation, mirroring
+// the control shader's per-edge formulas (shaders/surface.tesc), so that draws can be batched by
+// the levels actually produced rather than by the worst case (64 -> one window per draw).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "camera_math.hpp"
+#include "document.hpp"
+#include "surface_scene.hpp"
+
+namespace pw::render {
+
+// Per window: an upper bound of its outer and inner segments (1..64), +1 for float differences.
+std::vector<uint8_t> adaptiveLevelBounds(const SurfaceScene& s, const TessSettings& tess, const ViewMatrices& vm,
+                                         float viewportW, float viewportH, float maxLevel);
+
+}  // namespace pw::render

@@ -1,0 +1,94 @@
+#include "overlays.hpp"
+
+#include <algorithm>
+#include <set>
+
+#include "patch_eval.hpp"
+
+namespace pw::render {
+
+std::vector<uint32_t> controlGridLines(const Document& doc) {
+    std::set<std::pair<uint32_t, uint32_t>> seen;
+    std::vector<uint32_t> out;
+    auto add = [&](uint32_t a, uint32_t b) {
+        if (a == b) return;
+        auto key = std::minmax(a, b);
+        if (seen.insert({key.first, key.second}).second) {
+            out.push_back(a);
+            out.push_back(b);
+        }
+    };
+    for (const PatchInstance& pi : expandPatches(doc))
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 3; ++j) {
+                add(pi.idx[i * 4 + j], pi.idx[i * 4 + j + 1]);
+                add(pi.idx[j * 4 + i], pi.idx[(j + 1) * 4 + i]);
+            }
+    return out;
+}
+
+std::array<float, 4> continuityColor(const Continuity* c) {
+    if (!c) return {0.75f, 0.75f, 0.75f, 1.0f};
+    switch (*c) {
+        case Continuity::C0: return {0.95f, 0.25f, 0.2f, 1.0f};
+        case Continuity::C1: return {0.2f, 0.85f, 0.3f, 1.0f};
+        case Continuity::G1: return {0.3f, 0.5f, 1.0f, 1.0f};
+    }
+    return {1, 1, 1, 1};
+}
+
+OverlayScene uploadOverlayScene(Device& dev, const Document& doc) {
+    OverlayScene s;
+    const std::vector<uint32_t> lines = controlGridLines(doc);
+    s.gridIndexCount = uint32_t(lines.size());
+    s.gridIndices = uploadBuffer(dev, lines, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+
+    // Boundary curves: 16 segments per window edge.
+    std::vector<float> verts;
+    const std::vector<PatchInstance> inst = expandPatches(doc);
+    constexpr int kSeg = 16;
+    for (const PatchInstance& pi : inst) {
+        const Net16 net = gatherNet(doc, pi.idx);
+        for (int e = 0; e < 4; ++e) {
+            const Edge edge = Edge(e);
+            const Continuity* cont = nullptr;
+            std::array<float, 4> col;
+            if (pi.patch >= 0) {
+                for (const Join& j : doc.joins)
+                    if ((j.patchA == uint32_t(pi.patch) && j.edgeA == edge) || (j.patchB == uint32_t(pi.patch) && j.edgeB == edge)) {
+                        cont = &j.continuity;
+                        break;
+                    }
+                col = continuityColor(cont);
+            } else {
+                col = {0.2f, 0.85f, 0.9f, 1.0f};
+            }
+            auto at = [&](int k) {
+                const double t = double(k) / kSeg;
+                const double u = (edge == Edge::U0) ? 0.0 : (edge == Edge::U1) ? 1.0 : t;
+                const double v = (edge == Edge::V0) ? 0.0 : (edge == Edge::V1) ? 1.0 : t;
+                return evaluateNet(net, pi.basis, pi.tension, u, v).p;
+            };
+            Vec3 prev = at(0);
+            for (int k = 1; k <= kSeg; ++k) {
+                const Vec3 cur = at(k);
+                for (const Vec3& p : {prev, cur}) {
+                    verts.insert(verts.end(), {float(p.x), float(p.y), float(p.z)});
+                    verts.insert(verts.end(), col.begin(), col.end());
+                }
+                prev = cur;
+            }
+        }
+    }
+    s.boundaryVertexCount = uint32_t(verts.size() / 7);
+    s.boundaryVerts = uploadBuffer(dev, verts, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    return s;
+}
+
+void destroyOverlayScene(Device& dev, OverlayScene& s) {
+    destroyBuffer(dev, s.gridIndices);
+    destroyBuffer(dev, s.boundaryVerts);
+    s = OverlayScene{};
+}
+
+}  // namespace pw::render

@@ -1,0 +1,19 @@
+// A CPU-tessellated mesh (core tessellateDocument) on the GPU, drawn as plain indexed triangles
+// with the surface's shading: the reference for tests and the tessellated/plain benchmark ratio.
+#pragma once
+
+#include "buffers.hpp"
+#include "mesh_tessellate.hpp"
+
+namespace pw::render {
+
+struct PlainMesh {
+    Buffer positions, normals, uvs, indices;
+    uint32_t indexCount = 0;
+};
+
+PlainMesh uploadPlainMesh(Device& dev, const TriangleMesh& mesh);
+void destroyPlainMesh(Device& dev, PlainMesh& m);
+void recordPlainMesh(VkCommandBuffer cmd, const PlainMesh& m);
+
+}  // namespace pw::render

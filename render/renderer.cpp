@@ -1,0 +1,286 @@
+#include "renderer.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+
+#include "adaptive_bounds.hpp"
+#include "buffers.hpp"
+#include "camera_math.hpp"
+#include "gpu_types.hpp"
+#include "overlays.hpp"
+#include "plain_mesh.hpp"
+#include "surface_scene.hpp"
+#include "tess_levels.hpp"
+
+namespace pw::render {
+
+RenderOptions optionsFromDocument(const Document& doc) {
+    RenderOptions o;
+    o.tess = doc.tess;
+    o.display = doc.display;
+    o.camera = doc.camera;
+    return o;
+}
+
+struct Renderer::Impl {
+    SurfaceScene scene;
+    OverlayScene overlays;
+    PlainMesh mesh;
+    Buffer frameUbo, counters;
+    VkDescriptorPool descPool = VK_NULL_HANDLE;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+    std::unique_ptr<FrameQueries> queries;
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    VkFence fence = VK_NULL_HANDLE;
+};
+
+namespace {
+
+int spacingVariant(Spacing s) {
+    switch (s) {
+        case Spacing::FractionalOdd: return 1;
+        case Spacing::FractionalEven: return 2;
+        default: return 0;  // equal and pow2 (rounded in the control shader)
+    }
+}
+
+void writeDescriptors(Device& dev, VkDescriptorSet set, const Buffer& ubo, const Buffer& patches, const Buffer& counters) {
+    VkDescriptorBufferInfo infos[3] = {{ubo.buffer, 0, VK_WHOLE_SIZE},
+                                       {patches.buffer, 0, VK_WHOLE_SIZE},
+                                       {counters.buffer, 0, VK_WHOLE_SIZE}};
+    VkWriteDescriptorSet w[3];
+    for (uint32_t i = 0; i < 3; ++i) {
+        w[i] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        w[i].dstSet = set;
+        w[i].dstBinding = i;
+        w[i].descriptorCount = 1;
+        w[i].descriptorType = i == 0 ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        w[i].pBufferInfo = &infos[i];
+    }
+    vkUpdateDescriptorSets(dev.device(), 3, w, 0, nullptr);
+}
+
+}  // namespace
+
+Renderer::Renderer(Device& dev, RenderTarget& target)
+    : dev_(dev), target_(target), impl_(std::make_unique<Impl>()) {
+    pipes_ = createPipelines(dev, target.colorFormat(), target.depthFormat(), target.samples());
+    Impl& m = *impl_;
+    m.frameUbo = createBuffer(dev, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    m.counters = createBuffer(dev, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    std::memset(m.counters.mapped, 0, 16);
+    m.scene.patchData = createBuffer(dev, 32, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+
+    VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2}};
+    VkDescriptorPoolCreateInfo dp{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    dp.maxSets = 1;
+    dp.poolSizeCount = 2;
+    dp.pPoolSizes = sizes;
+    VK_CHECK(vkCreateDescriptorPool(dev.device(), &dp, nullptr, &m.descPool));
+    VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    ai.descriptorPool = m.descPool;
+    ai.descriptorSetCount = 1;
+    ai.pSetLayouts = &pipes_.setLayout;
+    VK_CHECK(vkAllocateDescriptorSets(dev.device(), &ai, &m.set));
+    writeDescriptors(dev, m.set, m.frameUbo, m.scene.patchData, m.counters);
+
+    m.queries = std::make_unique<FrameQueries>(dev);
+    VkCommandBufferAllocateInfo ci{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    ci.commandPool = dev.commandPool();
+    ci.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    ci.commandBufferCount = 1;
+    VK_CHECK(vkAllocateCommandBuffers(dev.device(), &ci, &m.cmd));
+    VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VK_CHECK(vkCreateFence(dev.device(), &fci, nullptr, &m.fence));
+}
+
+Renderer::~Renderer() {
+    vkDeviceWaitIdle(dev_.device());
+    Impl& m = *impl_;
+    destroySurfaceScene(dev_, m.scene);
+    destroyOverlayScene(dev_, m.overlays);
+    destroyPlainMesh(dev_, m.mesh);
+    destroyBuffer(dev_, m.frameUbo);
+    destroyBuffer(dev_, m.counters);
+    m.queries.reset();
+    vkDestroyFence(dev_.device(), m.fence, nullptr);
+    vkFreeCommandBuffers(dev_.device(), dev_.commandPool(), 1, &m.cmd);
+    vkDestroyDescriptorPool(dev_.device(), m.descPool, nullptr);
+    destroyPipelines(dev_, pipes_);
+}
+
+void Renderer::setDocument(const Document& doc) {
+    vkDeviceWaitIdle(dev_.device());
+    Impl& m = *impl_;
+    destroySurfaceScene(dev_, m.scene);
+    destroyOverlayScene(dev_, m.overlays);
+    m.scene = uploadSurfaceScene(dev_, doc);
+    m.overlays = uploadOverlayScene(dev_, doc);
+    writeDescriptors(dev_, m.set, m.frameUbo, m.scene.patchData, m.counters);
+    modelSize_ = pw::modelSize(doc);
+}
+
+void Renderer::setPlainMesh(const TriangleMesh& mesh) {
+    vkDeviceWaitIdle(dev_.device());
+    destroyPlainMesh(dev_, impl_->mesh);
+    impl_->mesh = uploadPlainMesh(dev_, mesh);
+}
+
+FrameStats Renderer::render(const RenderOptions& opt) {
+    Impl& m = *impl_;
+    FrameStats stats;
+    const auto t0 = std::chrono::steady_clock::now();
+    const VkExtent2D ext = target_.extent();
+    const TessSettings& ts = opt.tess;
+    const DisplaySettings& ds = opt.display;
+
+    // Step 1: frame uniforms.
+    const ViewMatrices vm = viewMatrices(opt.camera, double(ext.width) / double(ext.height));
+    FrameUniforms fu{};
+    fu.viewProj = vm.viewProj;
+    fu.view = vm.view;
+    fu.eye = glm::vec4(vm.eye, 1.0f);
+    fu.lightDir = {ds.lightDir[0], ds.lightDir[1], ds.lightDir[2], ds.normalLength};
+    fu.viewport = {float(ext.width), float(ext.height), 0.0f, 0.0f};
+    fu.outer = {ts.outer[0], ts.outer[1], ts.outer[2], ts.outer[3]};
+    const float maxLevel = std::clamp(std::min(ts.maxLevel, float(dev_.caps().maxTessLevel)), 1.0f, 64.0f);
+    fu.inner = {ts.inner[0], ts.inner[1], maxLevel, ts.targetPixels};
+    fu.dist = {ts.distanceNear, ts.distanceFar, float(4.0 / std::max(modelSize_, 1e-9)), 12.0f};
+    fu.dist.z = float(std::max(modelSize_, 1e-9) / 4.0);
+    fu.modes = {uint32_t(ts.spacing), uint32_t(ts.adaptive),
+                (ts.cullBackfaces ? 1u : 0u) | (ts.cullOffscreen ? 2u : 0u), uint32_t(ds.shading)};
+    fu.sel = {opt.hoveredPoint >= 0 ? uint32_t(opt.hoveredPoint) : kNoPoint,
+              opt.selectedPoint >= 0 ? uint32_t(opt.selectedPoint) : kNoPoint, m.scene.pointCount, 0u};
+    std::memcpy(m.frameUbo.mapped, &fu, sizeof(fu));
+
+    // Step 2: record.
+    VkCommandBuffer cmd = m.cmd;
+    VK_CHECK(vkResetCommandBuffer(cmd, 0));
+    VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    VK_CHECK(vkBeginCommandBuffer(cmd, &bi));
+    m.queries->reset(cmd);
+    vkCmdFillBuffer(cmd, m.counters.buffer, 0, 16, 0);
+    VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    mb.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    mb.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT, 0, 1, &mb, 0,
+                         nullptr, 0, nullptr);
+    m.queries->timestampBegin(cmd);
+    m.queries->statsBegin(cmd);
+    target_.beginRendering(cmd, {ds.background[0], ds.background[1], ds.background[2], 1.0f});
+    VkViewport viewport{0.0f, 0.0f, float(ext.width), float(ext.height), 0.0f, 1.0f};
+    VkRect2D scissor{{0, 0}, ext};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.layout, 0, 1, &m.set, 0, nullptr);
+
+    const int variant = spacingVariant(ts.spacing);
+    const uint32_t perDraw = patchesPerDraw(maxSegments(ts, m.scene.overrideMax, maxLevel));
+    std::vector<uint8_t> levelBounds;  // adaptive: batch by this frame's levels, not by the worst case
+    if (ts.adaptive == AdaptiveMode::Distance || ts.adaptive == AdaptiveMode::ScreenSpace)
+        levelBounds = adaptiveLevelBounds(m.scene, ts, vm, float(ext.width), float(ext.height), maxLevel);
+    const std::vector<uint8_t>* bounds = levelBounds.empty() ? nullptr : &levelBounds;
+    DrawPush push;
+
+    // Step 3: the surface (statistics cover this pass only).
+    if (opt.plainMesh) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.mesh);
+        push.drawMode = 2;
+        vkCmdPushConstants(cmd, pipes_.layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
+        recordPlainMesh(cmd, m.mesh);
+        stats.draws = m.mesh.indexCount ? 1 : 0;
+    } else {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.surface[size_t(variant)]);
+        stats.draws = recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, push, bounds);
+        stats.patches = m.scene.windowCount;
+    }
+    // Step 4: overlays, after the statistics query ends (outside rendering, see stats.hpp).
+    const bool anyOverlay = ds.showWireframe || ds.showNormals || ds.showBoundaries || ds.showGrid;
+    if (anyOverlay) {
+        target_.pauseRendering(cmd);
+        m.queries->statsEnd(cmd);
+        target_.resumeRendering(cmd);
+        vkCmdSetViewport(cmd, 0, 1, &viewport);
+        vkCmdSetScissor(cmd, 0, 1, &scissor);
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.layout, 0, 1, &m.set, 0, nullptr);
+    }
+    if (ds.showWireframe && !opt.plainMesh) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.wire[size_t(variant)]);
+        DrawPush wp;
+        wp.drawMode = 1;
+        wp.color = {0.08f, 0.09f, 0.12f, 1.0f};
+        stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, wp, bounds);
+    }
+    if (ds.showNormals && !opt.plainMesh && pipes_.normals[size_t(variant)]) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.normals[size_t(variant)]);
+        DrawPush np;
+        np.color = {0.2f, 0.9f, 1.0f, 1.0f};
+        stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, np, bounds);
+    }
+    const VkDeviceSize zero = 0;
+    if (ds.showBoundaries && m.overlays.boundaryVertexCount) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.colorLines);
+        vkCmdPushConstants(cmd, pipes_.layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
+        vkCmdBindVertexBuffers(cmd, 0, 1, &m.overlays.boundaryVerts.buffer, &zero);
+        vkCmdDraw(cmd, m.overlays.boundaryVertexCount, 1, 0, 0);
+        ++stats.draws;
+    }
+    if (ds.showGrid && m.scene.pointCount) {
+        DrawPush gp;
+        gp.color = {0.95f, 0.75f, 0.2f, 1.0f};
+        vkCmdBindVertexBuffers(cmd, 0, 1, &m.scene.pool.buffer, &zero);
+        if (m.overlays.gridIndexCount) {
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.gridLines);
+            vkCmdPushConstants(cmd, pipes_.layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(gp), &gp);
+            vkCmdBindIndexBuffer(cmd, m.overlays.gridIndices.buffer, 0, VK_INDEX_TYPE_UINT32);
+            vkCmdDrawIndexed(cmd, m.overlays.gridIndexCount, 1, 0, 0, 0);
+        }
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.gridPoints);
+        gp.drawMode = 3;
+        gp.color = {0.1f, 0.1f, 0.1f, 1.0f};
+        vkCmdPushConstants(cmd, pipes_.layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(gp), &gp);
+        vkCmdDraw(cmd, m.scene.pointCount, 1, 0, 0);
+        stats.draws += 2;
+    }
+    target_.endRendering(cmd);
+    if (!anyOverlay) m.queries->statsEnd(cmd);
+    m.queries->timestampEnd(cmd);
+    VK_CHECK(vkEndCommandBuffer(cmd));
+
+    // Step 5: submit and wait.
+    const auto t1 = std::chrono::steady_clock::now();
+    VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    si.commandBufferCount = 1;
+    si.pCommandBuffers = &cmd;
+    VK_CHECK(vkResetFences(dev_.device(), 1, &m.fence));
+    VK_CHECK(vkQueueSubmit(dev_.queue(), 1, &si, m.fence));
+    VK_CHECK(vkWaitForFences(dev_.device(), 1, &m.fence, VK_TRUE, UINT64_MAX));
+    const auto t2 = std::chrono::steady_clock::now();
+    stats.wallMs = std::chrono::duration<double, std::milli>(t2 - t0).count();
+    stats.submitMs = std::chrono::duration<double, std::milli>(t2 - t1).count();
+
+    // Step 6: results.
+    m.queries->read(stats);
+    if (dev_.caps().storesAndAtomics) stats.patchesCulled = static_cast<const uint32_t*>(m.counters.mapped)[0];
+    return stats;
+}
+
+void Renderer::warmUp() {
+    RenderOptions o;
+    o.tess.outer = {2, 2, 2, 2};
+    o.tess.inner = {2, 2};
+    o.display.showGrid = o.display.showWireframe = o.display.showNormals = o.display.showBoundaries = true;
+    for (Spacing s : {Spacing::Equal, Spacing::FractionalOdd, Spacing::FractionalEven}) {
+        o.tess.spacing = s;
+        render(o);
+    }
+    if (impl_->mesh.indexCount) {
+        o.plainMesh = true;
+        render(o);
+    }
+}
+
+}  // namespace pw::render

@@ -1,0 +1,54 @@
+// The surface renderer: owns the pipelines, the document's GPU buffers, the frame uniforms, the
+// queries and a command buffer; renders one frame into a RenderTarget (submit and wait) and
+// returns its statistics.
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "device.hpp"
+#include "document.hpp"
+#include "mesh_tessellate.hpp"
+#include "pipelines.hpp"
+#include "render_target.hpp"
+#include "stats.hpp"
+
+namespace pw::render {
+
+struct RenderOptions {
+    TessSettings tess;
+    DisplaySettings display;  // shading, overlays (showGrid, showWireframe, showNormals, showBoundaries)
+    Camera camera;
+    int hoveredPoint = -1;
+    int selectedPoint = -1;
+    bool plainMesh = false;  // draw the uploaded CPU mesh instead of tessellating
+};
+
+RenderOptions optionsFromDocument(const Document& doc);
+
+class Renderer {
+public:
+    Renderer(Device& dev, RenderTarget& target);
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    void setDocument(const Document& doc);
+    void setPlainMesh(const TriangleMesh& mesh);
+    FrameStats render(const RenderOptions& opt);
+    // Draws one frame with every pipeline variant so the first real frame does not pay for shader JIT.
+    void warmUp();
+
+    const PipelineSet& pipelines() const { return pipes_; }
+    double modelSize() const { return modelSize_; }
+
+private:
+    struct Impl;
+    Device& dev_;
+    RenderTarget& target_;
+    PipelineSet pipes_;
+    std::unique_ptr<Impl> impl_;
+    double modelSize_ = 1.0;
+};
+
+}  // namespace pw::render

@@ -1,0 +1,54 @@
+// Per-frame statistics: GPU time (timestamp queries), pipeline statistics of the surface pass
+// (tessellation evaluation invocations, clipping invocations/primitives), patches culled (atomic
+// counter written by the control shader), draws and wall-clock times.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <string>
+
+#include "device.hpp"
+
+namespace pw::render {
+
+struct FrameStats {
+    double wallMs = 0.0;    // record + submit + wait
+    double submitMs = 0.0;  // submit + wait
+    double gpuMs = -1.0;    // timestamps; -1 when unsupported
+    bool pipelineStatsValid = false;
+    uint64_t inputPrimitives = 0;       // patches (or plain triangles) fed to the surface pass
+    uint64_t tcsPatches = 0;            // control shader patches
+    uint64_t tesInvocations = 0;        // evaluation shader invocations
+    uint64_t clippingInvocations = 0;   // triangles reaching the clipper = triangles drawn
+    uint64_t clippingPrimitives = 0;    // primitives leaving the clipper
+    uint32_t patchesCulled = 0;
+    uint32_t patches = 0;
+    uint32_t draws = 0;
+    uint64_t triangles() const { return clippingInvocations; }
+};
+
+std::string statsToJson(const FrameStats& s, int indent = 2);
+
+class FrameQueries {
+public:
+    explicit FrameQueries(Device& dev);
+    ~FrameQueries();
+    FrameQueries(const FrameQueries&) = delete;
+    FrameQueries& operator=(const FrameQueries&) = delete;
+
+    void reset(VkCommandBuffer cmd);  // outside rendering
+    void timestampBegin(VkCommandBuffer cmd);
+    void timestampEnd(VkCommandBuffer cmd);
+    // Around the surface pass, outside dynamic rendering (lavapipe 22.3 crashes on pipeline
+    // statistics queries begun inside a rendering instance).
+    void statsBegin(VkCommandBuffer cmd);
+    void statsEnd(VkCommandBuffer cmd);
+    void read(FrameStats& out);  // after the frame completed
+
+private:
+    Device& dev_;
+    VkQueryPool ts_ = VK_NULL_HANDLE, stats_ = VK_NULL_HANDLE;
+};
+
+}  // namespace pw::render

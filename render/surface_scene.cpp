@@ -1,0 +1,104 @@
+#include "surface_scene.hpp"
+
+#include <algorithm>
+
+namespace pw::render {
+
+glm::mat4 basisPushMatrix(Basis basis, double tension) {
+    const Mat4 m = basisMatrix(basis, tension);
+    glm::mat4 g(1.0f);
+    // Column i of the GLSL matrix = row i of M, so (basis * T)[j] = sum_i T_i M[i][j].
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) g[i][j] = float(m[i][j]);
+    return g;
+}
+
+SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc) {
+    SurfaceScene s;
+    std::vector<float> pts;
+    pts.reserve(doc.points.size() * 3);
+    for (const Vec3& p : doc.points) {
+        pts.push_back(float(p.x));
+        pts.push_back(float(p.y));
+        pts.push_back(float(p.z));
+    }
+    const std::vector<PatchInstance> inst = expandPatches(doc);
+    std::vector<uint32_t> idx;
+    idx.reserve(inst.size() * 16);
+    std::vector<PatchData> pd(inst.size());
+    s.overrideLevel.assign(inst.size(), 0.0f);
+    for (size_t w = 0; w < inst.size(); ++w) {
+        const PatchInstance& pi = inst[w];
+        idx.insert(idx.end(), pi.idx.begin(), pi.idx.end());
+        if (pi.patch >= 0) {
+            const auto& ov = doc.patches[size_t(pi.patch)].tessOverride;
+            if (ov) {
+                const auto& o = *ov;
+                pd[w].outer = {o[0], o[1], o[2], o[3]};
+                pd[w].inner = {o[4], o[5], 1.0f, 0.0f};
+                for (float f : o) {
+                    s.overrideMax = std::max(s.overrideMax, f);
+                    s.overrideLevel[w] = std::max(s.overrideLevel[w], f);
+                }
+            }
+        }
+        const uint32_t kind = pi.basis == Basis::Bezier ? 0u : pi.basis == Basis::BSpline ? 1u : 2u;
+        if (s.runs.empty() || s.runs.back().basisKind != kind ||
+            (kind == 2u && inst[s.runs.back().first].tension != pi.tension)) {
+            s.runs.push_back({uint32_t(w), 0, kind, basisPushMatrix(pi.basis, pi.tension)});
+        }
+        ++s.runs.back().count;
+    }
+    s.cpuPoints.reserve(doc.points.size());
+    for (const Vec3& p : doc.points) s.cpuPoints.emplace_back(float(p.x), float(p.y), float(p.z));
+    s.cpuIndices = idx;
+    s.pointCount = uint32_t(doc.points.size());
+    s.windowCount = uint32_t(inst.size());
+    s.pool = uploadBuffer(dev, pts, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    s.indices = uploadBuffer(dev, idx, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    s.patchData = uploadBuffer(dev, pd, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    return s;
+}
+
+void destroySurfaceScene(Device& dev, SurfaceScene& s) {
+    destroyBuffer(dev, s.pool);
+    destroyBuffer(dev, s.indices);
+    destroyBuffer(dev, s.patchData);
+    s = SurfaceScene{};
+}
+
+uint32_t recordSurfaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t perDraw,
+                            DrawPush push, const std::vector<uint8_t>* levels) {
+    if (s.windowCount == 0) return 0;
+    const VkDeviceSize zero = 0;
+    vkCmdBindVertexBuffers(cmd, 0, 1, &s.pool.buffer, &zero);
+    vkCmdBindIndexBuffer(cmd, s.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
+    uint32_t draws = 0;
+    perDraw = std::max(perDraw, 1u);
+    for (const BasisRun& run : s.runs) {
+        const uint32_t end = run.first + run.count;
+        for (uint32_t first = run.first, n = 0; first < end; first += n) {
+            if (levels) {  // grow the batch while it stays within the evaluation-vertex budget
+                uint32_t maxL = 0;
+                n = 0;
+                while (first + n < end) {
+                    const uint32_t l = std::max<uint32_t>(maxL, (*levels)[first + n]);
+                    if (n > 0 && (n + 1) * (l + 2) * (l + 2) > 4096u) break;
+                    maxL = l;
+                    ++n;
+                }
+            } else {
+                n = std::min(perDraw, end - first);
+            }
+            push.basis = run.matrix;
+            push.basisKind = run.basisKind;
+            push.patchBase = first;
+            vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(DrawPush), &push);
+            vkCmdDrawIndexed(cmd, 16 * n, 1, 16 * first, 0, 0);
+            ++draws;
+        }
+    }
+    return draws;
+}
+
+}  // namespace pw::render

@@ -1,0 +1,46 @@
+// GPU copy of a document for the tessellated surface: the pool as a vec3 vertex buffer, 16 pool
+// indices per window as the index buffer, per-patch level overrides, and runs of windows sharing
+// a basis (one push-constant matrix per run). Records the batched surface draws.
+#pragma once
+
+#include <vector>
+
+#include "buffers.hpp"
+#include "document.hpp"
+#include "gpu_types.hpp"
+
+namespace pw::render {
+
+struct BasisRun {
+    uint32_t first = 0, count = 0;  // windows [first, first + count)
+    uint32_t basisKind = 0;
+    glm::mat4 matrix{1.0f};
+};
+
+struct SurfaceScene {
+    Buffer pool;       // vec3 float per pool point
+    Buffer indices;    // 16 uint32 per window
+    Buffer patchData;  // PatchData per window
+    uint32_t pointCount = 0;
+    uint32_t windowCount = 0;
+    float overrideMax = 0.0f;  // largest override level (0 = none)
+    std::vector<BasisRun> runs;
+    // CPU copies for per-frame level bounds (adaptive batching).
+    std::vector<glm::vec3> cpuPoints;
+    std::vector<uint32_t> cpuIndices;         // 16 per window
+    std::vector<float> overrideLevel;          // per window: largest override level, 0 = none
+};
+
+SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc);
+void destroySurfaceScene(Device& dev, SurfaceScene& s);
+
+// Binds pool + index buffers and issues the draws, at most `perDraw` windows per vkCmdDrawIndexed,
+// or, with `levels` (per-window segment bounds), as many windows as keep
+// windows x (max level + 2)^2 <= 4096. Returns the number of draws. `push` supplies
+// drawMode/colour; basis fields are filled per run.
+uint32_t recordSurfaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t perDraw,
+                            DrawPush push, const std::vector<uint8_t>* levels = nullptr);
+
+glm::mat4 basisPushMatrix(Basis basis, double tension);
+
+}  // namespace pw::render

@@ -1,0 +1,303 @@
+#include "swapchain_target.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+namespace pw::render {
+
+SwapchainTarget::SwapchainTarget(Device& dev, VkSurfaceKHR surface, VkExtent2D framebufferSize)
+    : dev_(dev), surface_(surface) {
+    // Step 1: the queue must be able to present to this surface.
+    VkBool32 present = VK_FALSE;
+    VK_CHECK(vkGetPhysicalDeviceSurfaceSupportKHR(dev.physical(), dev.queueFamily(), surface, &present));
+    if (!present) throw VulkanError("the Vulkan device's graphics queue cannot present to the window surface");
+
+    // Step 2: surface format (UNORM like the offscreen target, so colours match `patchwork render`).
+    uint32_t n = 0;
+    VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(dev.physical(), surface, &n, nullptr));
+    std::vector<VkSurfaceFormatKHR> formats(n);
+    VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(dev.physical(), surface, &n, formats.data()));
+    if (formats.empty()) throw VulkanError("the window surface reports no formats");
+    format_ = formats[0].format;
+    colorSpace_ = formats[0].colorSpace;
+    for (const VkSurfaceFormatKHR& f : formats)
+        if (f.format == VK_FORMAT_B8G8R8A8_UNORM || f.format == VK_FORMAT_R8G8B8A8_UNORM) {
+            format_ = f.format;
+            colorSpace_ = f.colorSpace;
+            break;
+        }
+
+    // Step 3: overlay render pass (ImGui): load what the renderer drew, end ready to present.
+    VkAttachmentDescription att{};
+    att.format = format_;
+    att.samples = VK_SAMPLE_COUNT_1_BIT;
+    att.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    att.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    att.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    att.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    att.initialLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    att.finalLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+    VkAttachmentReference ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+    VkSubpassDescription sub{};
+    sub.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+    sub.colorAttachmentCount = 1;
+    sub.pColorAttachments = &ref;
+    VkSubpassDependency dep{};
+    dep.srcSubpass = VK_SUBPASS_EXTERNAL;
+    dep.dstSubpass = 0;
+    dep.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    dep.dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    dep.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    dep.dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    VkRenderPassCreateInfo rp{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+    rp.attachmentCount = 1;
+    rp.pAttachments = &att;
+    rp.subpassCount = 1;
+    rp.pSubpasses = &sub;
+    rp.dependencyCount = 1;
+    rp.pDependencies = &dep;
+    VK_CHECK(vkCreateRenderPass(dev.device(), &rp, nullptr, &overlayPass_));
+
+    // Step 4: fences (acquire waits on the host; the renderer's own submit then owns the image).
+    VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VK_CHECK(vkCreateFence(dev.device(), &fci, nullptr, &acquireFence_));
+    VK_CHECK(vkCreateFence(dev.device(), &fci, nullptr, &submitFence_));
+
+    createSwapchain(framebufferSize);
+}
+
+SwapchainTarget::~SwapchainTarget() {
+    vkDeviceWaitIdle(dev_.device());
+    destroySwapchainResources();
+    if (swapchain_) vkDestroySwapchainKHR(dev_.device(), swapchain_, nullptr);
+    vkDestroyRenderPass(dev_.device(), overlayPass_, nullptr);
+    vkDestroyFence(dev_.device(), acquireFence_, nullptr);
+    vkDestroyFence(dev_.device(), submitFence_, nullptr);
+}
+
+void SwapchainTarget::destroySwapchainResources() {
+    for (VkFramebuffer f : framebuffers_) vkDestroyFramebuffer(dev_.device(), f, nullptr);
+    for (VkImageView v : views_) vkDestroyImageView(dev_.device(), v, nullptr);
+    for (VkSemaphore s : renderDone_) vkDestroySemaphore(dev_.device(), s, nullptr);
+    framebuffers_.clear();
+    views_.clear();
+    renderDone_.clear();
+    images_.clear();
+    destroyImage(dev_, depth_);
+    depth_ = Image{};
+}
+
+void SwapchainTarget::recreate(VkExtent2D size) {
+    if (size.width == 0 || size.height == 0) return;
+    vkDeviceWaitIdle(dev_.device());
+    createSwapchain(size);
+}
+
+void SwapchainTarget::createSwapchain(VkExtent2D size) {
+    VkSurfaceCapabilitiesKHR caps;
+    VK_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(dev_.physical(), surface_, &caps));
+    VkExtent2D ext = caps.currentExtent;
+    if (ext.width == 0xFFFFFFFFu) {
+        ext.width = std::clamp(size.width, caps.minImageExtent.width, caps.maxImageExtent.width);
+        ext.height = std::clamp(size.height, caps.minImageExtent.height, caps.maxImageExtent.height);
+    }
+    if (ext.width == 0 || ext.height == 0) return;  // minimised: keep the old one until a real size
+
+    // Step 1: the swapchain (FIFO is always available; the editor paces frames itself).
+    minImageCount_ = std::max(2u, caps.minImageCount);
+    uint32_t count = minImageCount_ + 1;
+    if (caps.maxImageCount > 0) count = std::min(count, caps.maxImageCount);
+    transferSrc_ = (caps.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT) != 0;
+    VkSwapchainCreateInfoKHR ci{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
+    ci.surface = surface_;
+    ci.minImageCount = count;
+    ci.imageFormat = format_;
+    ci.imageColorSpace = colorSpace_;
+    ci.imageExtent = ext;
+    ci.imageArrayLayers = 1;
+    ci.imageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | (transferSrc_ ? uint32_t(VK_IMAGE_USAGE_TRANSFER_SRC_BIT) : 0u);
+    ci.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    ci.preTransform = caps.currentTransform;
+    ci.compositeAlpha = (caps.supportedCompositeAlpha & VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR) ? VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR
+                                                                                            : VK_COMPOSITE_ALPHA_INHERIT_BIT_KHR;
+    ci.presentMode = VK_PRESENT_MODE_FIFO_KHR;
+    ci.clipped = VK_TRUE;
+    ci.oldSwapchain = swapchain_;
+    VkSwapchainKHR fresh = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateSwapchainKHR(dev_.device(), &ci, nullptr, &fresh));
+    destroySwapchainResources();
+    if (swapchain_) vkDestroySwapchainKHR(dev_.device(), swapchain_, nullptr);
+    swapchain_ = fresh;
+    extent_ = ext;
+
+    // Step 2: images, views, overlay framebuffers and per-image semaphores.
+    uint32_t n = 0;
+    VK_CHECK(vkGetSwapchainImagesKHR(dev_.device(), swapchain_, &n, nullptr));
+    images_.resize(n);
+    VK_CHECK(vkGetSwapchainImagesKHR(dev_.device(), swapchain_, &n, images_.data()));
+    for (VkImage img : images_) {
+        VkImageViewCreateInfo vi{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+        vi.image = img;
+        vi.viewType = VK_IMAGE_VIEW_TYPE_2D;
+        vi.format = format_;
+        vi.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        VkImageView view = VK_NULL_HANDLE;
+        VK_CHECK(vkCreateImageView(dev_.device(), &vi, nullptr, &view));
+        views_.push_back(view);
+        VkFramebufferCreateInfo fi{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+        fi.renderPass = overlayPass_;
+        fi.attachmentCount = 1;
+        fi.pAttachments = &view;
+        fi.width = ext.width;
+        fi.height = ext.height;
+        fi.layers = 1;
+        VkFramebuffer fb = VK_NULL_HANDLE;
+        VK_CHECK(vkCreateFramebuffer(dev_.device(), &fi, nullptr, &fb));
+        framebuffers_.push_back(fb);
+        VkSemaphoreCreateInfo si{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+        VkSemaphore s = VK_NULL_HANDLE;
+        VK_CHECK(vkCreateSemaphore(dev_.device(), &si, nullptr, &s));
+        renderDone_.push_back(s);
+    }
+    // Step 3: depth buffer of the new size.
+    depth_ = createImage(dev_, ext, depthFormat(), VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                         VK_IMAGE_ASPECT_DEPTH_BIT);
+    current_ = 0;
+}
+
+bool SwapchainTarget::acquire() {
+    if (!swapchain_) return false;
+    VK_CHECK(vkResetFences(dev_.device(), 1, &acquireFence_));
+    const VkResult r = vkAcquireNextImageKHR(dev_.device(), swapchain_, UINT64_MAX, VK_NULL_HANDLE, acquireFence_, &current_);
+    if (r == VK_ERROR_OUT_OF_DATE_KHR) return false;
+    if (r != VK_SUCCESS && r != VK_SUBOPTIMAL_KHR) VK_CHECK(r);
+    // A suboptimal image was still acquired (and signals the fence): use it, recreate after present.
+    VK_CHECK(vkWaitForFences(dev_.device(), 1, &acquireFence_, VK_TRUE, UINT64_MAX));
+    return true;
+}
+
+bool SwapchainTarget::submitAndPresent(VkCommandBuffer cmd) {
+    VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    si.commandBufferCount = 1;
+    si.pCommandBuffers = &cmd;
+    si.signalSemaphoreCount = 1;
+    si.pSignalSemaphores = &renderDone_[current_];
+    VK_CHECK(vkResetFences(dev_.device(), 1, &submitFence_));
+    VK_CHECK(vkQueueSubmit(dev_.queue(), 1, &si, submitFence_));
+    VkPresentInfoKHR pi{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
+    pi.waitSemaphoreCount = 1;
+    pi.pWaitSemaphores = &renderDone_[current_];
+    pi.swapchainCount = 1;
+    pi.pSwapchains = &swapchain_;
+    pi.pImageIndices = &current_;
+    const VkResult r = vkQueuePresentKHR(dev_.queue(), &pi);
+    VK_CHECK(vkWaitForFences(dev_.device(), 1, &submitFence_, VK_TRUE, UINT64_MAX));
+    if (r == VK_ERROR_OUT_OF_DATE_KHR || r == VK_SUBOPTIMAL_KHR) return false;
+    VK_CHECK(r);
+    return true;
+}
+
+void SwapchainTarget::beginRendering(VkCommandBuffer cmd, const std::array<float, 4>& clear) {
+    // Previous contents are discarded (UNDEFINED): every frame clears.
+    imageBarrier(cmd, images_[current_], VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                 VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, 0,
+                 VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                 VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT);
+    imageBarrier(cmd, depth_.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                 VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+                 VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                 VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+                 VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT);
+    VkRenderingAttachmentInfo ca{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    ca.imageView = views_[current_];
+    ca.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    ca.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    ca.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    ca.clearValue.color = {{clear[0], clear[1], clear[2], clear[3]}};
+    VkRenderingAttachmentInfo da{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    da.imageView = depth_.view;
+    da.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    da.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+    da.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    da.clearValue.depthStencil = {1.0f, 0};
+    VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    ri.renderArea = {{0, 0}, extent_};
+    ri.layerCount = 1;
+    ri.colorAttachmentCount = 1;
+    ri.pColorAttachments = &ca;
+    ri.pDepthAttachment = &da;
+    vkCmdBeginRendering(cmd, &ri);
+}
+
+void SwapchainTarget::pauseRendering(VkCommandBuffer cmd) {
+    vkCmdEndRendering(cmd);
+    VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    mb.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    mb.dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT |
+                       VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+    const VkPipelineStageFlags stages = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
+                                        VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+    vkCmdPipelineBarrier(cmd, stages, stages, 0, 1, &mb, 0, nullptr, 0, nullptr);
+}
+
+void SwapchainTarget::resumeRendering(VkCommandBuffer cmd) {
+    VkRenderingAttachmentInfo ca{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    ca.imageView = views_[current_];
+    ca.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    ca.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    ca.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    VkRenderingAttachmentInfo da{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+    da.imageView = depth_.view;
+    da.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+    da.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    da.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
+    ri.renderArea = {{0, 0}, extent_};
+    ri.layerCount = 1;
+    ri.colorAttachmentCount = 1;
+    ri.pColorAttachments = &ca;
+    ri.pDepthAttachment = &da;
+    vkCmdBeginRendering(cmd, &ri);
+}
+
+void SwapchainTarget::endRendering(VkCommandBuffer cmd) {
+    // The image stays in COLOR_ATTACHMENT_OPTIMAL for the overlay pass, which ends in PRESENT_SRC.
+    vkCmdEndRendering(cmd);
+}
+
+std::vector<uint8_t> SwapchainTarget::readCurrentImage() {
+    if (!transferSrc_ || !swapchain_) return {};
+    const VkDeviceSize bytes = VkDeviceSize(extent_.width) * extent_.height * 4;
+    Buffer buf = createBuffer(dev_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+    VkImage img = images_[current_];
+    dev_.submitAndWait([&](VkCommandBuffer cmd) {
+        imageBarrier(cmd, img, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                     VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+                     VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {extent_.width, extent_.height, 1};
+        vkCmdCopyImageToBuffer(cmd, img, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buf.buffer, 1, &region);
+        imageBarrier(cmd, img, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                     VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                     VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT);
+        VkBufferMemoryBarrier bb{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
+        bb.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        bb.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+        bb.srcQueueFamilyIndex = bb.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        bb.buffer = buf.buffer;
+        bb.size = VK_WHOLE_SIZE;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &bb, 0, nullptr);
+    });
+    std::vector<uint8_t> out(bytes);
+    std::memcpy(out.data(), buf.mapped, bytes);
+    destroyBuffer(dev_, buf);
+    const bool bgra = format_ == VK_FORMAT_B8G8R8A8_UNORM || format_ == VK_FORMAT_B8G8R8A8_SRGB;
+    for (size_t i = 0; i < out.size(); i += 4) {
+        if (bgra) std::swap(out[i], out[i + 2]);
+        out[i + 3] = 255;
+    }
+    return out;
+}
+
+}  // namespace pw::render

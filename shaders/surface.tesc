@@ -1,0 +1,143 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Tessellation levels of one 4x4 window: uniform, per-patch override or adaptive (distance, screen,
+// orientation); crack-free (an edge's level depends on that edge's control points only, taken in a
+// canonical order); back-face and off-screen culling by zero outer levels; DESIGN §3 rounding.
+#include "common.glsl"
+
+layout(vertices = 16) out;
+layout(location = 0) in int inIdx[];
+layout(location = 0) out int outIdx[];
+layout(location = 1) patch out float netScalePatch;  // largest extent of the net, for the evaluation shader
+
+// Net slot of the k-th point of the row/column that represents edge e (quad-domain order u0,v0,u1,v1).
+// Bézier: the boundary row itself; splines (step 1): the row the neighbouring window shares.
+int edgeSlot(int e, int k) {
+    int near = draw.basisKind == 0u ? 0 : 1;
+    int far = 3 - near;
+    if (e == 0) return k * 4 + near;
+    if (e == 1) return near * 4 + k;
+    if (e == 2) return k * 4 + far;
+    return far * 4 + k;
+}
+
+vec3 cp(int s) { return gl_in[s].gl_Position.xyz; }
+
+// The edge's four points in canonical order (lower pool index first).
+void edgePoints(int e, out vec3 p[4]) {
+    bool rev = inIdx[edgeSlot(e, 0)] > inIdx[edgeSlot(e, 3)];
+    for (int k = 0; k < 4; ++k) p[k] = cp(edgeSlot(e, rev ? 3 - k : k));
+}
+
+vec2 toPixels(vec3 p, out bool behind) {
+    vec4 c = frame.viewProj * vec4(p, 1.0);
+    behind = c.w <= 1e-6;
+    return (c.xy / max(c.w, 1e-6) * 0.5 + 0.5) * frame.viewport.xy;
+}
+
+float adaptiveLevel(int e) {
+    vec3 p[4];
+    edgePoints(e, p);
+    float maxL = frame.inner.z;
+    uint mode = frame.modes.y;
+    if (mode == 1u) {  // distance to the eye
+        precise vec3 mid = 0.5 * (p[0] + p[3]);
+        float d = distance(frame.eye.xyz, mid);
+        float d0 = frame.dist.x, d1 = frame.dist.y;
+        return maxL * clamp((d1 - d) / max(d1 - d0, 1e-6), 0.0, 1.0);
+    }
+    if (mode == 2u) {  // screen-space length of the control polygon, target pixels per segment
+        bool b0, b1, b2, b3;
+        vec2 s0 = toPixels(p[0], b0), s1 = toPixels(p[1], b1), s2 = toPixels(p[2], b2), s3 = toPixels(p[3], b3);
+        if (b0 || b1 || b2 || b3) return maxL;
+        precise float len = length(s1 - s0) + length(s2 - s1) + length(s3 - s2);
+        return len / max(frame.inner.w, 0.5);
+    }
+    // orientation: edges whose bend is seen side-on (silhouette-like) get more segments
+    vec3 mid = 0.5 * (p[0] + p[3]);
+    vec3 vdir = normalize(mid - frame.eye.xyz);
+    vec3 bend = (p[1] + p[2]) - (p[0] + p[3]);
+    vec3 side = bend - dot(bend, vdir) * vdir;
+    float chord = max(distance(p[0], p[3]), 1e-6);
+    return maxL * clamp(2.0 * length(side) / chord, 0.0, 1.0);
+}
+
+// DESIGN §3: equal -> ceil in [1,64]; odd -> [1,63]; even -> [2,64]; pow2 -> next power of two.
+float roundLevel(float f) {
+    uint s = frame.modes.x;
+    if (!(f == f)) f = 1.0;  // NaN never reaches the tessellator
+    if (s == 0u) return clamp(ceil(f), 1.0, 64.0);
+    if (s == 1u) return clamp(f, 1.0, 63.0);
+    if (s == 2u) return clamp(f, 2.0, 64.0);
+    float c = clamp(ceil(f), 1.0, 64.0);
+    return clamp(exp2(ceil(log2(c) - 1e-4)), 1.0, 64.0);
+}
+
+bool offscreen() {
+    bvec4 allOut = bvec4(true);
+    bool allNear = true, allFar = true;
+    for (int i = 0; i < 16; ++i) {
+        vec4 c = frame.viewProj * vec4(cp(i), 1.0);
+        allOut = bvec4(allOut.x && c.x < -c.w, allOut.y && c.x > c.w, allOut.z && c.y < -c.w, allOut.w && c.y > c.w);
+        allNear = allNear && c.z < 0.0;
+        allFar = allFar && c.z > c.w;
+    }
+    return any(allOut) || allNear || allFar;
+}
+
+// Conservative normal cone: du x dv is a non-negative combination of the products of the u- and
+// v-differences of the net (Bézier and B-spline weights are non-negative). If every such product
+// faces away from the eye at every control point (hence over the convex hull), the patch is back-facing.
+bool backfacing() {
+    if (draw.basisKind == 2u) return false;  // Catmull-Rom weights change sign
+    vec3 du[12], dv[12];
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 3; ++j) {
+            du[i * 3 + j] = cp(i * 4 + j + 1) - cp(i * 4 + j);
+            dv[j * 4 + i] = cp((j + 1) * 4 + i) - cp(j * 4 + i);
+        }
+    for (int a = 0; a < 12; ++a)
+        for (int b = 0; b < 12; ++b) {
+            vec3 c = cross(du[a], dv[b]);
+            if (dot(c, c) == 0.0) continue;
+            for (int q = 0; q < 16; ++q)
+                if (dot(c, frame.eye.xyz - cp(q)) >= 0.0) return false;
+        }
+    return true;
+}
+
+void main() {
+    gl_out[gl_InvocationID].gl_Position = gl_in[gl_InvocationID].gl_Position;
+    outIdx[gl_InvocationID] = inIdx[gl_InvocationID];
+    if (gl_InvocationID != 0) return;
+
+    vec3 lo = cp(0), hi = cp(0);
+    for (int i = 1; i < 16; ++i) { lo = min(lo, cp(i)); hi = max(hi, cp(i)); }
+    netScalePatch = max(max(hi.x - lo.x, hi.y - lo.y), max(hi.z - lo.z, 1e-20));
+
+    PatchData pd = patches[draw.patchBase + uint(gl_PrimitiveID)];
+    float o[4];
+    float in0, in1;
+    if (pd.inner.z > 0.5) {
+        o[0] = pd.outer.x; o[1] = pd.outer.y; o[2] = pd.outer.z; o[3] = pd.outer.w;
+        in0 = pd.inner.x; in1 = pd.inner.y;
+    } else if (frame.modes.y == 0u) {
+        o[0] = frame.outer.x; o[1] = frame.outer.y; o[2] = frame.outer.z; o[3] = frame.outer.w;
+        in0 = frame.inner.x; in1 = frame.inner.y;
+    } else {
+        for (int e = 0; e < 4; ++e) o[e] = clamp(adaptiveLevel(e), 1.0, frame.inner.z);
+        in0 = max(o[1], o[3]);  // inner[0] subdivides along u, like the v0 and v1 edges
+        in1 = max(o[0], o[2]);
+    }
+    for (int e = 0; e < 4; ++e) gl_TessLevelOuter[e] = roundLevel(o[e]);
+    gl_TessLevelInner[0] = roundLevel(in0);
+    gl_TessLevelInner[1] = roundLevel(in1);
+
+    bool cull = ((frame.modes.z & 2u) != 0u && offscreen()) || ((frame.modes.z & 1u) != 0u && backfacing());
+    if (cull) {
+        for (int e = 0; e < 4; ++e) gl_TessLevelOuter[e] = 0.0;
+        gl_TessLevelInner[0] = 0.0;
+        gl_TessLevelInner[1] = 0.0;
+        atomicAdd(counters.culled, 1u);
+    }
+}

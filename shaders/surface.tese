@@ -1,0 +1,133 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Evaluates a 4x4 window at gl_TessCoord for any basis (matrix M per draw), with analytic normals
+// (degenerate-edge fallback like core/patch_eval.cpp normalAt), Bézier boundary points from the
+// boundary's four points in canonical order (bit-identical seams), and curvatures.
+// Built once per partitioning: -DSPACING=equal_spacing|fractional_odd_spacing|fractional_even_spacing,
+// and with -DPOINT_MODE for the normal-vector overlay.
+#include "common.glsl"
+
+#ifdef POINT_MODE
+layout(quads, SPACING, ccw, point_mode) in;
+#else
+layout(quads, SPACING, ccw) in;
+#endif
+
+layout(location = 0) in int inIdx[];
+layout(location = 1) patch in float netScalePatch;  // largest extent of the net (control shader)
+layout(location = 0) out vec3 outPos;
+layout(location = 1) out vec3 outNormal;
+layout(location = 2) out vec2 outUV;
+layout(location = 3) flat out uint outPatch;
+layout(location = 4) out vec2 outCurv;  // Gaussian, mean
+
+vec3 cp(int s) { return gl_in[s].gl_Position.xyz; }
+
+void weights(float t, out vec4 w, out vec4 dw, out vec4 ddw) {
+    if (draw.basisKind == 0u) {  // Bernstein from t and s = 1 - t
+        float s = 1.0 - t;
+        w = vec4(s * s * s, 3.0 * s * s * t, 3.0 * s * t * t, t * t * t);
+    } else {
+        w = draw.basis * vec4(t * t * t, t * t, t, 1.0);
+    }
+    dw = draw.basis * vec4(3.0 * t * t, 2.0 * t, 1.0, 0.0);
+    ddw = draw.basis * vec4(6.0 * t, 2.0, 0.0, 0.0);
+}
+
+struct Derivs { vec3 p, du, dv, duu, dvv, duv; };
+
+// Position, first derivatives and the mixed derivative; duu and dvv only when `second` (curvature).
+// (lavapipe runs both sides of divergent branches, so the common path stays branch-free.)
+Derivs evalAt(float u, float v, bool second) {
+    vec4 wu, dwu, ddwu, wv, dwv, ddwv;
+    weights(u, wu, dwu, ddwu);
+    weights(v, wv, dwv, ddwv);
+    Derivs d;
+    d.p = d.du = d.dv = d.duu = d.dvv = d.duv = vec3(0.0);
+    for (int i = 0; i < 4; ++i) {
+        vec3 P0 = cp(i * 4), P1 = cp(i * 4 + 1), P2 = cp(i * 4 + 2), P3 = cp(i * 4 + 3);
+        vec3 r = wu.x * P0 + wu.y * P1 + wu.z * P2 + wu.w * P3;
+        vec3 ru = dwu.x * P0 + dwu.y * P1 + dwu.z * P2 + dwu.w * P3;
+        d.p += wv[i] * r;
+        d.du += wv[i] * ru;
+        d.dv += dwv[i] * r;
+        d.duv += dwv[i] * ru;
+        if (second) {
+            vec3 ruu = ddwu.x * P0 + ddwu.y * P1 + ddwu.z * P2 + ddwu.w * P3;
+            d.duu += wv[i] * ruu;
+            d.dvv += ddwv[i] * r;
+        }
+    }
+    return d;
+}
+
+int slotOnEdge(int e, int k) {  // quad-domain edge order u0, v0, u1, v1
+    if (e == 0) return k * 4;
+    if (e == 1) return k;
+    if (e == 2) return k * 4 + 3;
+    return 12 + k;
+}
+
+// A Bézier boundary point from that boundary's four points only, lower pool index first.
+vec3 boundaryPoint(int e, float t) {
+    bool rev = inIdx[slotOnEdge(e, 0)] > inIdx[slotOnEdge(e, 3)];
+    precise float tc = rev ? 1.0 - t : t;
+    precise float sc = 1.0 - tc;
+    vec3 p0 = cp(slotOnEdge(e, rev ? 3 : 0)), p1 = cp(slotOnEdge(e, rev ? 2 : 1));
+    vec3 p2 = cp(slotOnEdge(e, rev ? 1 : 2)), p3 = cp(slotOnEdge(e, rev ? 0 : 3));
+    precise float w0 = sc * sc * sc;
+    precise float w1 = 3.0 * sc * sc * tc;
+    precise float w2 = 3.0 * sc * tc * tc;
+    precise float w3 = tc * tc * tc;
+    precise vec3 r = w0 * p0 + w1 * p1 + w2 * p2 + w3 * p3;
+    return r;
+}
+
+vec3 normalAt(float u, float v, Derivs d) {
+    float scale = netScalePatch;
+    float s2 = scale * scale;
+    // A collapsed row or column (teapot lid top, bottom centre): the derivative along it is float
+    // noise, so test it first and use the limit from inside through the mixed derivative.
+    bool duZero = length(d.du) <= 1e-4 * scale;
+    bool dvZero = length(d.dv) <= 1e-4 * scale;
+    vec3 nu = cross(d.duv, d.dv) * (v < 0.5 ? 1.0 : -1.0);
+    vec3 nv = cross(d.du, d.duv) * (u < 0.5 ? 1.0 : -1.0);
+    vec3 n = duZero == dvZero ? cross(d.du, d.dv) : (duZero ? nu : nv);
+    if (duZero && dvZero) n = vec3(0.0);
+    float len = length(n);
+    if (len > 1e-6 * s2) return n / len;
+    // last resort (both derivatives vanish, e.g. a corner collapsed in both directions): the
+    // normal of the net's diagonals, oriented like du x dv
+    n = cross(cp(15) - cp(0), cp(12) - cp(3));
+    len = length(n);
+    return len > 0.0 ? n / len : vec3(0.0, 0.0, 1.0);
+}
+
+void main() {
+    float u = gl_TessCoord.x, v = gl_TessCoord.y;
+    bool curvature = frame.modes.w == 5u || frame.modes.w == 6u;
+    Derivs d = evalAt(u, v, curvature);
+    vec3 p = d.p;
+    bool onV = v == 0.0 || v == 1.0, onU = u == 0.0 || u == 1.0;
+    if (draw.basisKind == 0u && (onU || onV)) {
+        int e = onV ? (v == 0.0 ? 1 : 3) : (u == 0.0 ? 0 : 2);
+        p = boundaryPoint(e, onV ? u : v);
+    }
+    vec3 n = normalAt(u, v, d);
+
+    // curvatures from the fundamental forms (curvature shading only)
+    vec2 curv = vec2(0.0);
+    if (curvature) {
+    float E = dot(d.du, d.du), F = dot(d.du, d.dv), G = dot(d.dv, d.dv);
+    float L = dot(d.duu, n), M = dot(d.duv, n), N = dot(d.dvv, n);
+    float den = E * G - F * F;
+    if (den > 1e-12 * (E * G + 1e-30)) curv = vec2((L * N - M * M) / den, (E * N - 2.0 * F * M + G * L) / (2.0 * den));
+    }
+
+    outPos = p;
+    outNormal = n;
+    outUV = vec2(u, v);
+    outPatch = draw.patchBase + uint(gl_PrimitiveID);
+    outCurv = curv;
+    gl_Position = frame.viewProj * vec4(p, 1.0);
+}

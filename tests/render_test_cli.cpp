@@ -1,0 +1,65 @@
+// `patchwork render`: option validation (exit 2 naming the option), stats JSON, device choice.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "support.hpp"
+
+namespace pw::test {
+namespace {
+
+std::string bin() { return patchworkBinary().string(); }
+
+TEST(RenderCli, WritesPngAndStats) {
+    const auto dir = freshTempDir("render-cli");
+    const auto png = dir / "teapot.png", stats = dir / "stats.json";
+    const RunResult r = runCommand("PATCHWORK_VALIDATION=1 " + bin() + " render -o " + png.string() +
+                                   " --size 320x240 --tess 16 --overlay grid,wire --stats " + stats.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(r.output.find("validation"), std::string::npos) << r.output;
+    ASSERT_TRUE(std::filesystem::exists(png));
+    EXPECT_GT(std::filesystem::file_size(png), 1000u);
+    std::ifstream in(stats);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    EXPECT_EQ(j["triangles"].get<uint64_t>(), 32u * 2 * 16 * 16);
+    EXPECT_GT(j["tess_eval_invocations"].get<uint64_t>(), 0u);
+    EXPECT_GE(j["gpu_ms"].get<double>(), 0.0);
+}
+
+TEST(RenderCli, RejectsBadOptionsNamingThem) {
+    const auto dir = freshTempDir("render-cli-bad");
+    const std::string out = " -o " + (dir / "x.png").string() + " --size 64x64";
+    struct Case {
+        std::string args, option;
+    };
+    const Case cases[] = {
+        {"--tess 0", "--tess"},           {"--tess 65", "--tess"},         {"--tess nan", "--tess"},
+        {"--tess abc", "--tess"},         {"--outer 1,2,3", "--outer"},    {"--outer 1,2,3,nan --inner 2,2", "--outer"},
+        {"--inner 0,4", "--inner"},       {"--spacing odd", "--spacing"},  {"--adaptive far", "--adaptive"},
+        {"--shading glossy", "--shading"}, {"--overlay grid,foo", "--overlay"}, {"--view diagonal", "--view"},
+        {"--size 0x10", "--size"},        {"--tess 4 --outer 1,1,1,1", "--tess"},
+    };
+    for (const Case& c : cases) {
+        const RunResult r = runCommand(bin() + " render" + out + " " + c.args);
+        EXPECT_EQ(r.exitCode, 2) << c.args << "\n" << r.output;
+        EXPECT_NE(r.output.find(c.option), std::string::npos) << c.args << "\n" << r.output;
+        EXPECT_EQ(r.output.find("internal error"), std::string::npos) << r.output;
+    }
+}
+
+TEST(RenderCli, UnknownDeviceIsAClearError) {
+    const auto dir = freshTempDir("render-cli-dev");
+    const RunResult r = runCommand(bin() + " render -o " + (dir / "x.png").string() + " --device no-such-gpu-xyz");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("no-such-gpu-xyz"), std::string::npos) << r.output;
+}
+
+TEST(RenderCli, MissingInputFileIsAnInputError) {
+    const auto dir = freshTempDir("render-cli-missing");
+    const RunResult r = runCommand(bin() + " render " + (dir / "nope.patchwork").string() + " -o " + (dir / "x.png").string());
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+}
+
+}  // namespace
+}  // namespace pw::test

@@ -1,0 +1,153 @@
+// Rendered images: the lit teapot has no black or background pixels where the collapsed lid top
+// and bottom centre project; overlays change pixels; pow2 at 5 equals equal spacing at 8;
+// fractional_odd 4.5 differs from 5; every shading mode renders.
+#include <gtest/gtest.h>
+
+#include "document_io.hpp"
+#include "render_support.hpp"
+
+namespace pw::test {
+namespace {
+
+constexpr uint32_t W = 480, H = 360;
+
+class RenderImage : public RenderTest {};
+
+// The 5x5 pixels around the projection of `p` are surface (not background) and not dark.
+void expectLitSurfaceAt(const Rendered& r, const render::RenderOptions& o, const Document& doc, glm::dvec3 p, const char* what) {
+    const ViewMatrices vm = viewMatrices(o.camera, double(W) / H);
+    const auto px = projectToPixel(vm, p, int(W), int(H));
+    ASSERT_TRUE(px.has_value()) << what;
+    const int cx = int(px->x), cy = int(px->y);
+    ASSERT_TRUE(cx > 3 && cy > 3 && cx < int(W) - 3 && cy < int(H) - 3) << what;
+    for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) {
+            const uint8_t* c = r.image.at(cx + dx, cy + dy);
+            EXPECT_FALSE(sameColor(c, doc.display.background, 3)) << what << ": background at " << cx + dx << "," << cy + dy;
+            EXPECT_GT(int(c[0]) + c[1] + c[2], 150) << what << ": dark pixel at " << cx + dx << "," << cy + dy;
+        }
+}
+
+TEST_F(RenderImage, LitTeapotLidTopAndBottomHaveNoBlackPixels) {
+    const Document doc = builtinTeapot();
+    Offscreen off(W, H);
+    off.setDocument(doc);
+    for (int level : {8, 16, 64}) {
+        render::RenderOptions top = plainOptions(doc, float(level), double(W) / H, "top");
+        const Rendered rt = off.render(top);
+        expectLitSurfaceAt(rt, top, doc, {0, 0, 3.15}, "lid top");
+        render::RenderOptions bottom = plainOptions(doc, float(level), double(W) / H, "bottom");
+        const Rendered rb = off.render(bottom);
+        expectLitSurfaceAt(rb, bottom, doc, {0, 0, 0}, "bottom centre");
+    }
+}
+
+TEST_F(RenderImage, OverlaysChangePixels) {
+    const Document doc = builtinTeapot();
+    Offscreen off(W, H);
+    off.setDocument(doc);
+    const render::RenderOptions base = plainOptions(doc, 8, double(W) / H, "iso");
+    const Rendered plain = off.render(base);
+    auto with = [&](auto set) {
+        render::RenderOptions o = base;
+        set(o);
+        return off.render(o);
+    };
+    const Rendered grid = with([](render::RenderOptions& o) { o.display.showGrid = true; });
+    const Rendered wire = with([](render::RenderOptions& o) { o.display.showWireframe = true; });
+    const Rendered normals = with([](render::RenderOptions& o) {
+        o.display.showNormals = true;
+        o.display.normalLength = 0.2f;
+    });
+    const Rendered bounds = with([](render::RenderOptions& o) { o.display.showBoundaries = true; });
+    EXPECT_GT(countDifferent(plain.image, grid.image, 8), 500u);
+    EXPECT_GT(countDifferent(plain.image, wire.image, 8), 2000u);
+    EXPECT_GT(countDifferent(plain.image, normals.image, 8), 1000u);
+    EXPECT_GT(countDifferent(plain.image, bounds.image, 8), 300u);
+    // Overlays leave the surface statistics alone.
+    EXPECT_EQ(plain.stats.triangles(), wire.stats.triangles());
+
+    // The grid draws every control point: the pixel of pool point 0 changes, and highlighting it
+    // (hovered, selected) changes it again.
+    const ViewMatrices vm = viewMatrices(base.camera, double(W) / H);
+    const auto p0 = projectToPixel(vm, doc.points[0], int(W), int(H));
+    ASSERT_TRUE(p0);
+    const int x = int(p0->x), y = int(p0->y);
+    render::RenderOptions sel = base;
+    sel.display.showGrid = true;
+    sel.selectedPoint = 0;
+    const Rendered selected = off.render(sel);
+    sel.selectedPoint = -1;
+    sel.hoveredPoint = 0;
+    const Rendered hovered = off.render(sel);
+    auto differs = [&](const Image& a, const Image& b) {
+        return std::abs(int(a.at(x, y)[0]) - int(b.at(x, y)[0])) + std::abs(int(a.at(x, y)[1]) - int(b.at(x, y)[1])) +
+                   std::abs(int(a.at(x, y)[2]) - int(b.at(x, y)[2])) > 30;
+    };
+    EXPECT_TRUE(differs(plain.image, grid.image));
+    EXPECT_TRUE(differs(grid.image, selected.image));
+    EXPECT_TRUE(differs(selected.image, hovered.image));
+}
+
+TEST_F(RenderImage, Pow2AtFiveEqualsEqualAtEight) {
+    const Document doc = builtinTeapot();
+    Offscreen off(W, H);
+    off.setDocument(doc);
+    render::RenderOptions a = plainOptions(doc, 5, double(W) / H);
+    a.tess.spacing = Spacing::Pow2;
+    render::RenderOptions b = plainOptions(doc, 8, double(W) / H);
+    const Rendered ra = off.render(a), rb = off.render(b);
+    EXPECT_EQ(countDifferent(ra.image, rb.image, 0), 0u);
+    EXPECT_EQ(ra.stats.triangles(), 32u * 2 * 8 * 8);
+    EXPECT_EQ(rb.stats.triangles(), 32u * 2 * 8 * 8);
+}
+
+TEST_F(RenderImage, FractionalOddFourAndAHalfDiffersFromFive) {
+    const Document doc = builtinTeapot();
+    Offscreen off(W, H);
+    off.setDocument(doc);
+    render::RenderOptions a = plainOptions(doc, 4.5f, double(W) / H);
+    a.tess.spacing = Spacing::FractionalOdd;
+    render::RenderOptions b = a;
+    b.tess.outer = {5, 5, 5, 5};
+    b.tess.inner = {5, 5};
+    const Rendered ra = off.render(a), rb = off.render(b);
+    EXPECT_GT(countDifferent(ra.image, rb.image, 2), 50u);
+    // Same number of segments (5), different vertex positions.
+    EXPECT_EQ(ra.stats.triangles(), rb.stats.triangles());
+}
+
+TEST_F(RenderImage, EveryShadingModeRenders) {
+    const Document doc = builtinTeapot();
+    Offscreen off(W, H);
+    off.setDocument(doc);
+    const render::RenderOptions base = plainOptions(doc, 8, double(W) / H);
+    const Rendered lit = off.render(base);
+    for (ShadingMode m : {ShadingMode::Normal, ShadingMode::PatchId, ShadingMode::UvChecker, ShadingMode::Zebra,
+                          ShadingMode::GaussCurvature, ShadingMode::MeanCurvature}) {
+        render::RenderOptions o = base;
+        o.display.shading = m;
+        const Rendered r = off.render(o);
+        EXPECT_GT(countDifferent(lit.image, r.image, 8), 2000u) << shadingName(m);
+    }
+}
+
+TEST_F(RenderImage, EverySpacingAndAdaptiveModeRenders) {
+    const Document doc = builtinTeapot();
+    Offscreen off(W, H);
+    off.setDocument(doc);
+    for (Spacing s : {Spacing::Equal, Spacing::FractionalOdd, Spacing::FractionalEven, Spacing::Pow2})
+        for (AdaptiveMode a : {AdaptiveMode::None, AdaptiveMode::Distance, AdaptiveMode::ScreenSpace, AdaptiveMode::Orientation}) {
+            render::RenderOptions o = plainOptions(doc, 6, double(W) / H);
+            o.tess.spacing = s;
+            o.tess.adaptive = a;
+            o.tess.distanceNear = 5;
+            o.tess.distanceFar = 40;
+            const Rendered r = off.render(o);
+            EXPECT_GT(r.stats.triangles(), 32u) << spacingName(s) << " " << adaptiveName(a);
+            EXPECT_EQ(r.stats.patchesCulled, 0u);
+        }
+}
+
+}  // namespace
+}  // namespace pw::test
