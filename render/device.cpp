@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <iostream>
+
+#include "tess_levels.hpp"
 #include <sstream>
 
 #include "errors.hpp"
@@ -276,6 +278,10 @@ Device::~Device() {
         vkDestroyInstance(instance_, nullptr);
         instance_ = VK_NULL_HANDLE;
     }
+}
+
+uint32_t Device::drawVertexBudget() const {
+    return props_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? kCpuDrawVertexBudget : 0u;
 }
 
 uint32_t Device::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags flags) const {

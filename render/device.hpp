@@ -55,6 +55,9 @@ public:
     const DeviceCaps& caps() const { return caps_; }
     const VkPhysicalDeviceProperties& properties() const { return props_; }
     std::string name() const { return props_.deviceName; }
+    // Evaluation vertices per draw: kCpuDrawVertexBudget on CPU implementations (lavapipe), 0 =
+    // unlimited on GPUs, where one draw per basis is fastest.
+    uint32_t drawVertexBudget() const;
     bool validationEnabled() const { return messenger_ != VK_NULL_HANDLE; }
 
     uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags flags) const;

@@ -178,7 +178,8 @@ FrameStats Renderer::render(const RenderOptions& opt) {
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.layout, 0, 1, &m.set, 0, nullptr);
 
     const int variant = spacingVariant(ts.spacing);
-    const uint32_t perDraw = patchesPerDraw(maxSegments(ts, m.scene.overrideMax, maxLevel));
+    const uint32_t budget = dev_.drawVertexBudget();
+    const uint32_t perDraw = patchesPerDraw(maxSegments(ts, m.scene.overrideMax, maxLevel), budget);
     std::vector<uint8_t> levelBounds;  // adaptive: batch by this frame's levels, not by the worst case
     if (ts.adaptive == AdaptiveMode::Distance || ts.adaptive == AdaptiveMode::ScreenSpace)
         levelBounds = adaptiveLevelBounds(m.scene, ts, vm, float(ext.width), float(ext.height), maxLevel);
@@ -194,7 +195,7 @@ FrameStats Renderer::render(const RenderOptions& opt) {
         stats.draws = m.mesh.indexCount ? 1 : 0;
     } else {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.surface[size_t(variant)]);
-        stats.draws = recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, push, bounds);
+        stats.draws = recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, push, bounds, budget);
         stats.patches = m.scene.windowCount;
     }
     // Step 4: overlays, after the statistics query ends (outside rendering, see stats.hpp).
@@ -212,13 +213,13 @@ FrameStats Renderer::render(const RenderOptions& opt) {
         DrawPush wp;
         wp.drawMode = 1;
         wp.color = {0.08f, 0.09f, 0.12f, 1.0f};
-        stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, wp, bounds);
+        stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, wp, bounds, budget);
     }
     if (ds.showNormals && !opt.plainMesh && pipes_.normals[size_t(variant)]) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.normals[size_t(variant)]);
         DrawPush np;
         np.color = {0.2f, 0.9f, 1.0f, 1.0f};
-        stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, np, bounds);
+        stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, np, bounds, budget);
     }
     const VkDeviceSize zero = 0;
     if (ds.showBoundaries && m.overlays.boundaryVertexCount) {

@@ -68,7 +68,7 @@ void destroySurfaceScene(Device& dev, SurfaceScene& s) {
 }
 
 uint32_t recordSurfaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t perDraw,
-                            DrawPush push, const std::vector<uint8_t>* levels) {
+                            DrawPush push, const std::vector<uint8_t>* levels, uint32_t vertexBudget) {
     if (s.windowCount == 0) return 0;
     const VkDeviceSize zero = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &s.pool.buffer, &zero);
@@ -78,12 +78,12 @@ uint32_t recordSurfaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const 
     for (const BasisRun& run : s.runs) {
         const uint32_t end = run.first + run.count;
         for (uint32_t first = run.first, n = 0; first < end; first += n) {
-            if (levels) {  // grow the batch while it stays within the evaluation-vertex budget
+            if (levels && vertexBudget != 0) {  // grow the batch while it stays within the evaluation-vertex budget
                 uint32_t maxL = 0;
                 n = 0;
                 while (first + n < end) {
                     const uint32_t l = std::max<uint32_t>(maxL, (*levels)[first + n]);
-                    if (n > 0 && (n + 1) * (l + 2) * (l + 2) > 4096u) break;
+                    if (n > 0 && (n + 1) * (l + 2) * (l + 2) > vertexBudget) break;
                     maxL = l;
                     ++n;
                 }

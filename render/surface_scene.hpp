@@ -8,6 +8,7 @@
 #include "buffers.hpp"
 #include "document.hpp"
 #include "gpu_types.hpp"
+#include "tess_levels.hpp"
 
 namespace pw::render {
 
@@ -35,11 +36,12 @@ SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc);
 void destroySurfaceScene(Device& dev, SurfaceScene& s);
 
 // Binds pool + index buffers and issues the draws, at most `perDraw` windows per vkCmdDrawIndexed,
-// or, with `levels` (per-window segment bounds), as many windows as keep
-// windows x (max level + 2)^2 <= 4096. Returns the number of draws. `push` supplies
+// or, with `levels` (per-window segment bounds) and a non-zero `vertexBudget`, as many windows as
+// keep windows x (max level + 2)^2 <= vertexBudget. Returns the number of draws. `push` supplies
 // drawMode/colour; basis fields are filled per run.
 uint32_t recordSurfaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t perDraw,
-                            DrawPush push, const std::vector<uint8_t>* levels = nullptr);
+                            DrawPush push, const std::vector<uint8_t>* levels = nullptr,
+                            uint32_t vertexBudget = kCpuDrawVertexBudget);
 
 glm::mat4 basisPushMatrix(Basis basis, double tension);
 

@@ -41,9 +41,10 @@ int maxSegments(const TessSettings& tess, float overrideMax, float deviceMax) {
     return roundedSegments(m, tess.spacing);
 }
 
-uint32_t patchesPerDraw(int maxLevel) {
+uint32_t patchesPerDraw(int maxLevel, uint32_t vertexBudget) {
+    if (vertexBudget == 0) return UINT32_MAX;
     const int l = std::max(maxLevel, 1);
-    return std::max<uint32_t>(1u, 4096u / uint32_t((l + 2) * (l + 2)));
+    return std::max<uint32_t>(1u, vertexBudget / uint32_t((l + 2) * (l + 2)));
 }
 
 }  // namespace pw::render

@@ -16,8 +16,12 @@ int roundedSegments(float f, Spacing spacing);
 // (adaptive: bounded by the max level).
 int maxSegments(const TessSettings& tess, float overrideMax, float deviceMax = 64.0f);
 
-// Patches per vkCmdDraw so that patches x (L+2)^2 <= 4096 evaluation vertices (lavapipe's
-// tessellator slows down past a few thousand and breaks past 65 535).
-uint32_t patchesPerDraw(int maxLevel);
+// Evaluation vertices per vkCmdDraw on CPU implementations: lavapipe's tessellator slows down past
+// a few thousand and renders wrong pixels past 65 535 (DESIGN §4). GPUs get no limit (0).
+inline constexpr uint32_t kCpuDrawVertexBudget = 4096;
+
+// Patches per vkCmdDraw so that patches x (L+2)^2 <= vertexBudget evaluation vertices;
+// vertexBudget 0 = unlimited (one draw per basis run).
+uint32_t patchesPerDraw(int maxLevel, uint32_t vertexBudget = kCpuDrawVertexBudget);
 
 }  // namespace pw::render
