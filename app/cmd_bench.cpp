@@ -18,6 +18,7 @@
 #include "device.hpp"
 #include "document_io.hpp"
 #include "errors.hpp"
+#include "file_io.hpp"
 #include "mesh_tessellate.hpp"
 #include "model_builders.hpp"
 #include "offscreen_target.hpp"
@@ -67,21 +68,27 @@ struct Measure {
     uint32_t draws = 0;
 };
 
-Measure measure(render::Renderer& r, const render::RenderOptions& o, int frames) {
-    r.render(o);  // first frame after a switch
-    std::vector<double> wall, submit, gpu;
-    Measure m;
+// Renders each option set `frames` times, alternating between them frame by frame, so that the
+// load of a shared machine (±30 % between runs) falls on every variant alike; medians per variant.
+std::vector<Measure> measureInterleaved(render::Renderer& r, const std::vector<render::RenderOptions>& variants, int frames) {
+    for (const auto& o : variants) r.render(o);  // first frame after a switch
+    std::vector<std::vector<double>> wall(variants.size()), submit(variants.size()), gpu(variants.size());
+    std::vector<Measure> m(variants.size());
     for (int i = 0; i < frames; ++i) {
-        const render::FrameStats s = r.render(o);
-        wall.push_back(s.wallMs);
-        submit.push_back(s.submitMs);
-        gpu.push_back(s.gpuMs);
-        m.triangles = s.triangles();
-        m.draws = s.draws;
+        for (size_t v = 0; v < variants.size(); ++v) {
+            const render::FrameStats s = r.render(variants[v]);
+            wall[v].push_back(s.wallMs);
+            submit[v].push_back(s.submitMs);
+            gpu[v].push_back(s.gpuMs);
+            m[v].triangles = s.triangles();
+            m[v].draws = s.draws;
+        }
     }
-    m.wall = median(wall);
-    m.submit = median(submit);
-    m.gpu = median(gpu);
+    for (size_t v = 0; v < variants.size(); ++v) {
+        m[v].wall = median(wall[v]);
+        m[v].submit = median(submit[v]);
+        m[v].gpu = median(gpu[v]);
+    }
     return m;
 }
 
@@ -134,7 +141,15 @@ int runBench(const BenchArgs& a) {
         o.tess.cullBackfaces = false;
         o.camera = frameBounds(doc.camera, computeBounds(doc.points), double(W) / H);
 
-        const Measure t = measure(renderer, o, a.frames);
+        // The same triangles as a plain pre-tessellated mesh, measured frame by frame alongside.
+        std::vector<render::RenderOptions> variants{o};
+        if (!sc.adaptive) {
+            renderer.setPlainMesh(tessellateDocument(doc, int(sc.level)));
+            variants.push_back(o);
+            variants.back().plainMesh = true;
+        }
+        const std::vector<Measure> measured = measureInterleaved(renderer, variants, a.frames);
+        const Measure& t = measured[0];
         trianglesByScene[sc.name] = t.triangles;
         const double mtri = t.gpu > 0 ? double(t.triangles) / (t.gpu * 1000.0) : 0.0;
         nlohmann::json j{{"scene", sc.name}, {"patches", expandPatches(doc).size()}, {"wall_ms", t.wall},
@@ -142,10 +157,7 @@ int runBench(const BenchArgs& a) {
                          {"mtri_per_s", mtri}, {"draws", t.draws}};
         double plainMs = 0, plainMtri = 0, ratio = 0;
         if (!sc.adaptive) {
-            renderer.setPlainMesh(tessellateDocument(doc, int(sc.level)));
-            render::RenderOptions p = o;
-            p.plainMesh = true;
-            const Measure pm = measure(renderer, p, a.frames);
+            const Measure& pm = measured[1];
             plainMs = pm.gpu;
             plainMtri = pm.gpu > 0 ? double(pm.triangles) / (pm.gpu * 1000.0) : 0.0;
             ratio = plainMtri > 0 ? mtri / plainMtri : 0.0;
@@ -168,11 +180,8 @@ int runBench(const BenchArgs& a) {
         std::fflush(stdout);
     }
     if (!a.json.empty()) {
-        std::ofstream f(a.json);
-        if (!f) throw OutputError(a.json, "cannot open for writing");
-        f << nlohmann::json{{"device", dev.name()}, {"width", W}, {"height", H}, {"frames", a.frames}, {"scenes", out}}.dump(2)
-          << "\n";
-        if (!f) throw OutputError(a.json, "write failed");
+        writeFileAtomic(a.json, nlohmann::json{{"device", dev.name()}, {"width", W}, {"height", H}, {"frames", a.frames},
+                                               {"scenes", out}}.dump(2) + "\n");
     }
     if (dev.validationEnabled() && render::Device::validationMessageCount() > 0) {
         std::cerr << "patchwork bench: " << render::Device::validationMessageCount() << " Vulkan validation message(s)\n";

@@ -7,8 +7,10 @@
 
 layout(vertices = 16) out;
 layout(location = 0) in int inIdx[];
-layout(location = 0) out int outIdx[];
 layout(location = 1) patch out float netScalePatch;  // largest extent of the net, for the evaluation shader
+// Bit e set: boundary e (quad-domain order u0, v0, u1, v1) runs from the higher pool index to the
+// lower, so the evaluation shader evaluates it reversed (canonical direction, bit-identical seams).
+layout(location = 2) patch out uint edgeFlipPatch;
 
 // Net slot of the k-th point of the row/column that represents edge e (quad-domain order u0,v0,u1,v1).
 // Bézier: the boundary row itself; splines (step 1): the row the neighbouring window shares.
@@ -22,6 +24,13 @@ int edgeSlot(int e, int k) {
 }
 
 vec3 cp(int s) { return gl_in[s].gl_Position.xyz; }
+
+// True when the boundary through net slots a, b, c, d is reversed against its canonical direction:
+// the pool indices read backwards are lexicographically smaller (as core/patch_eval.cpp decides).
+bool reversedEdge(int a, int b, int c, int d) {
+    if (inIdx[a] != inIdx[d]) return inIdx[a] > inIdx[d];
+    return inIdx[b] > inIdx[c];
+}
 
 // The edge's four points in canonical order (lower pool index first).
 void edgePoints(int e, out vec3 p[4]) {
@@ -108,12 +117,13 @@ bool backfacing() {
 
 void main() {
     gl_out[gl_InvocationID].gl_Position = gl_in[gl_InvocationID].gl_Position;
-    outIdx[gl_InvocationID] = inIdx[gl_InvocationID];
     if (gl_InvocationID != 0) return;
 
     vec3 lo = cp(0), hi = cp(0);
     for (int i = 1; i < 16; ++i) { lo = min(lo, cp(i)); hi = max(hi, cp(i)); }
     netScalePatch = max(max(hi.x - lo.x, hi.y - lo.y), max(hi.z - lo.z, 1e-20));
+    edgeFlipPatch = (reversedEdge(0, 4, 8, 12) ? 1u : 0u) | (reversedEdge(0, 1, 2, 3) ? 2u : 0u) |
+                    (reversedEdge(3, 7, 11, 15) ? 4u : 0u) | (reversedEdge(12, 13, 14, 15) ? 8u : 0u);
 
     PatchData pd = patches[draw.patchBase + uint(gl_PrimitiveID)];
     float o[4];

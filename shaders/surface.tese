@@ -13,8 +13,8 @@ layout(quads, SPACING, ccw, point_mode) in;
 layout(quads, SPACING, ccw) in;
 #endif
 
-layout(location = 0) in int inIdx[];
 layout(location = 1) patch in float netScalePatch;  // largest extent of the net (control shader)
+layout(location = 2) patch in uint edgeFlipPatch;    // bit e: evaluate boundary e reversed (control shader)
 layout(location = 0) out vec3 outPos;
 layout(location = 1) out vec3 outNormal;
 layout(location = 2) out vec2 outUV;
@@ -70,7 +70,7 @@ int slotOnEdge(int e, int k) {  // quad-domain edge order u0, v0, u1, v1
 
 // A Bézier boundary point from that boundary's four points only, lower pool index first.
 vec3 boundaryPoint(int e, float t) {
-    bool rev = inIdx[slotOnEdge(e, 0)] > inIdx[slotOnEdge(e, 3)];
+    bool rev = (edgeFlipPatch & (1u << uint(e))) != 0u;
     precise float tc = rev ? 1.0 - t : t;
     precise float sc = 1.0 - tc;
     vec3 p0 = cp(slotOnEdge(e, rev ? 3 : 0)), p1 = cp(slotOnEdge(e, rev ? 2 : 1));
@@ -86,18 +86,20 @@ vec3 boundaryPoint(int e, float t) {
 vec3 normalAt(float u, float v, Derivs d) {
     float scale = netScalePatch;
     float s2 = scale * scale;
-    // A collapsed row or column (teapot lid top, bottom centre): the derivative along it is float
-    // noise, so test it first and use the limit from inside through the mixed derivative.
+    // Common case first: du x dv is well defined away from collapsed edges.
+    vec3 n = cross(d.du, d.dv);
+    float len2 = dot(n, n);
     bool duZero = length(d.du) <= 1e-4 * scale;
     bool dvZero = length(d.dv) <= 1e-4 * scale;
+    if (!duZero && !dvZero && len2 > 1e-12 * s2 * s2) return n * inversesqrt(len2);
+    // A collapsed row or column (teapot lid top, bottom centre): the derivative along it is float
+    // noise, so use the limit from inside through the mixed derivative.
     vec3 nu = cross(d.duv, d.dv) * (v < 0.5 ? 1.0 : -1.0);
     vec3 nv = cross(d.du, d.duv) * (u < 0.5 ? 1.0 : -1.0);
-    vec3 n = duZero == dvZero ? cross(d.du, d.dv) : (duZero ? nu : nv);
+    n = duZero == dvZero ? n : (duZero ? nu : nv);
     if (duZero && dvZero) n = vec3(0.0);
     float len = length(n);
     if (len > 1e-6 * s2) return n / len;
-    // last resort (both derivatives vanish, e.g. a corner collapsed in both directions): the
-    // normal of the net's diagonals, oriented like du x dv
     n = cross(cp(15) - cp(0), cp(12) - cp(3));
     len = length(n);
     return len > 0.0 ? n / len : vec3(0.0, 0.0, 1.0);
