@@ -87,21 +87,39 @@ const tinygltf::Value* findPatchworkExtras(const tinygltf::Model& model) {
     return look(model.extras);
 }
 
+// Import needs only the extras: external buffers and images are refused, images not decoded.
+bool refuseExternalFile(std::vector<unsigned char>*, std::string* err, const std::string& path, void*) {
+    if (err) *err += "external file '" + path + "' not read (Patchwork glTF files are self-contained)";
+    return false;
+}
+bool fileNeverExists(const std::string&, void*) { return false; }
+std::string keepPath(const std::string& path, void*) { return path; }
+bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+    return true;
+}
+
 }  // namespace
 
 Document importPatchworkGltf(const std::filesystem::path& path) {
-    const std::string name = path.string();
-    const std::string data = readFileLimited(path);
-    const std::string baseDir = path.has_parent_path() ? path.parent_path().string() : std::string(".");
+    return parsePatchworkGltf(readFileLimited(path), path.string());
+}
 
+Document parsePatchworkGltf(std::string_view data, const std::string& name) {
     tinygltf::TinyGLTF loader;
+    tinygltf::FsCallbacks fs{};
+    fs.FileExists = fileNeverExists;
+    fs.ExpandFilePath = keepPath;
+    fs.ReadWholeFile = refuseExternalFile;
+    fs.WriteWholeFile = nullptr;
+    loader.SetFsCallbacks(fs);
+    loader.SetImageLoader(skipImage, nullptr);
     tinygltf::Model model;
     std::string err, warn;
     const bool binary = data.size() >= 4 && std::memcmp(data.data(), "glTF", 4) == 0;
     const bool ok =
         binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(data.data()),
-                                             static_cast<unsigned int>(data.size()), baseDir)
-               : loader.LoadASCIIFromString(&model, &err, &warn, data.data(), static_cast<unsigned int>(data.size()), baseDir);
+                                             static_cast<unsigned int>(data.size()), "")
+               : loader.LoadASCIIFromString(&model, &err, &warn, data.data(), static_cast<unsigned int>(data.size()), "");
     if (!ok) {
         while (!err.empty() && (err.back() == '\n' || err.back() == '\r')) err.pop_back();
         for (char& c : err)
