@@ -128,6 +128,19 @@ void Renderer::setPlainMesh(const TriangleMesh& mesh) {
     impl_->mesh = uploadPlainMesh(dev_, mesh);
 }
 
+void Renderer::updatePoints(const std::vector<Vec3>& points, const std::vector<uint32_t>& changed) {
+    SurfaceScene& s = impl_->scene;
+    auto* dst = static_cast<float*>(s.pool.mapped);
+    for (uint32_t i : changed) {
+        if (i >= s.pointCount || i >= points.size()) continue;
+        const glm::vec3 v(points[i]);
+        dst[3 * size_t(i) + 0] = v.x;
+        dst[3 * size_t(i) + 1] = v.y;
+        dst[3 * size_t(i) + 2] = v.z;
+        if (i < s.cpuPoints.size()) s.cpuPoints[i] = v;
+    }
+}
+
 FrameStats Renderer::render(const RenderOptions& opt) {
     Impl& m = *impl_;
     FrameStats stats;

@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "device.hpp"
 #include "document.hpp"
@@ -35,6 +36,10 @@ public:
 
     void setDocument(const Document& doc);
     void setPlainMesh(const TriangleMesh& mesh);
+    // Editor drags: rewrites only the pool entries `changed` of the uploaded document in place (the
+    // pool buffer is host-visible and the previous frame has completed). The topology must be the
+    // one given to setDocument; boundary overlays refresh at the next setDocument.
+    void updatePoints(const std::vector<Vec3>& points, const std::vector<uint32_t>& changed);
     FrameStats render(const RenderOptions& opt);
     // Draws one frame with every pipeline variant so the first real frame does not pay for shader JIT.
     void warmUp();

@@ -1,0 +1,280 @@
+#include "patch_ops.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "constraint_solver.hpp"
+#include "patch_eval.hpp"
+
+namespace pw {
+
+namespace {
+
+void checkPatch(const Document& doc, uint32_t p) {
+    if (p >= doc.patches.size()) throw EditError("no patch " + std::to_string(p) + " (the document has " +
+                                                 std::to_string(doc.patches.size()) + ")");
+}
+
+void checkBezier(const Document& doc, uint32_t p, const char* what) {
+    checkPatch(doc, p);
+    if (doc.patches[p].basis != Basis::Bezier)
+        throw EditError(std::string(what) + " needs a Bézier patch; patch " + std::to_string(p) + " uses another basis");
+}
+
+uint32_t addPoint(Document& doc, const Vec3& v) {
+    doc.points.push_back(v);
+    return uint32_t(doc.points.size() - 1);
+}
+
+Edge opposite(Edge e) {
+    switch (e) {
+        case Edge::U0: return Edge::U1;
+        case Edge::U1: return Edge::U0;
+        case Edge::V0: return Edge::V1;
+        default: return Edge::V0;
+    }
+}
+
+// Joins touching patch p removed; indices above p shifted down.
+void dropPatchFromJoins(Document& doc, uint32_t p) {
+    std::erase_if(doc.joins, [&](const Join& j) { return j.patchA == p || j.patchB == p; });
+    for (Join& j : doc.joins) {
+        if (j.patchA > p) --j.patchA;
+        if (j.patchB > p) --j.patchB;
+    }
+}
+
+}  // namespace
+
+Edge nearestEdge(double u, double v) {
+    const double d[4] = {u, v, 1.0 - u, 1.0 - v};
+    return Edge(std::min_element(d, d + 4) - d);
+}
+
+int findJoin(const Document& doc, uint32_t p, Edge e) {
+    for (size_t i = 0; i < doc.joins.size(); ++i) {
+        const Join& j = doc.joins[i];
+        if ((j.patchA == p && j.edgeA == e) || (j.patchB == p && j.edgeB == e)) return int(i);
+    }
+    return -1;
+}
+
+uint32_t addFlatPatch(Document& doc, const Vec3& center, double size, bool zUp) {
+    Patch patch;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            const double a = (j / 3.0 - 0.5) * size, b = (i / 3.0 - 0.5) * size;
+            const Vec3 off = zUp ? Vec3(a, b, 0.0) : Vec3(a, 0.0, -b);
+            patch.idx[size_t(i * 4 + j)] = addPoint(doc, center + off);
+        }
+    patch.name = "patch " + std::to_string(doc.patches.size());
+    doc.patches.push_back(patch);
+    return uint32_t(doc.patches.size() - 1);
+}
+
+uint32_t duplicatePatch(Document& doc, uint32_t p, const Vec3& offset) {
+    checkPatch(doc, p);
+    Patch copy = doc.patches[p];
+    for (uint32_t& i : copy.idx) i = addPoint(doc, doc.points[i] + offset);
+    copy.name = (copy.name.empty() ? "patch " + std::to_string(p) : copy.name) + " copy";
+    doc.patches.push_back(copy);
+    return uint32_t(doc.patches.size() - 1);
+}
+
+void deletePatch(Document& doc, uint32_t p) {
+    checkPatch(doc, p);
+    dropPatchFromJoins(doc, p);
+    doc.patches.erase(doc.patches.begin() + p);
+    compactPool(doc);
+}
+
+void flipPatch(Document& doc, uint32_t p) {
+    checkPatch(doc, p);
+    Patch& pt = doc.patches[p];
+    for (int i = 0; i < 4; ++i) {
+        std::swap(pt.idx[size_t(i * 4 + 0)], pt.idx[size_t(i * 4 + 3)]);
+        std::swap(pt.idx[size_t(i * 4 + 1)], pt.idx[size_t(i * 4 + 2)]);
+    }
+    if (pt.tessOverride) {
+        auto& o = *pt.tessOverride;
+        std::swap(o[0], o[2]);  // outer u=0 <-> u=1
+    }
+    // Edge U0 <-> U1 (k along v unchanged); on V0/V1 the parameter k runs the other way.
+    for (Join& j : doc.joins) {
+        for (int side = 0; side < 2; ++side) {
+            const bool isA = side == 0;
+            if ((isA ? j.patchA : j.patchB) != p) continue;
+            Edge& e = isA ? j.edgeA : j.edgeB;
+            if (e == Edge::U0 || e == Edge::U1)
+                e = opposite(e);
+            else
+                j.reversed = !j.reversed;
+        }
+    }
+}
+
+uint32_t extrudeEdge(Document& doc, uint32_t p, Edge e) {
+    checkBezier(doc, p, "extrude");
+    if (findJoin(doc, p, e) >= 0) throw EditError("edge " + std::string(edgeName(e)) + " of patch " + std::to_string(p) +
+                                                  " is already joined; extrude an open boundary edge");
+    const Patch src = doc.patches[p];
+    const Edge ne = opposite(e);  // the new patch's edge on the seam keeps both parameter directions
+    Patch np;
+    np.name = "patch " + std::to_string(doc.patches.size());
+    for (int k = 0; k < 4; ++k) {
+        const uint32_t b0 = src.idx[size_t(edgeSlot(e, k, 0))];
+        const Vec3 a1 = doc.points[src.idx[size_t(edgeSlot(e, k, 1))]];
+        const Vec3 d = doc.points[b0] - a1;  // C1: B1 - B0 = A0 - A1
+        np.idx[size_t(edgeSlot(ne, k, 0))] = b0;
+        for (int depth = 1; depth < 4; ++depth) np.idx[size_t(edgeSlot(ne, k, depth))] = addPoint(doc, doc.points[b0] + double(depth) * d);
+    }
+    doc.patches.push_back(np);
+    const uint32_t q = uint32_t(doc.patches.size() - 1);
+    doc.joins.push_back(Join{p, e, q, ne, false, Continuity::C1, 1.0});
+    return q;
+}
+
+std::pair<uint32_t, uint32_t> splitPatch(Document& doc, uint32_t p, bool alongU, double t) {
+    checkBezier(doc, p, "split");
+    if (!(t > 1e-6 && t < 1.0 - 1e-6)) throw EditError("split parameter must lie strictly between 0 and 1");
+    const Patch src = doc.patches[p];
+    const Net16 net = gatherNet(doc, src.idx);
+    const auto [first, second] = alongU ? splitBezierU(net, t) : splitBezierV(net, t);
+    // Edges of the first half: the low edge is kept, the far edge is the new seam.
+    const Edge low = alongU ? Edge::U0 : Edge::V0, high = alongU ? Edge::U1 : Edge::V1;
+    const Edge side0 = alongU ? Edge::V0 : Edge::U0, side1 = alongU ? Edge::V1 : Edge::U1;
+    Patch a = src, b = src;
+    a.tessOverride = b.tessOverride = src.tessOverride;
+    b.name = (src.name.empty() ? "patch " + std::to_string(p) : src.name) + " b";
+    // Slots on the low edge of a and the high edge of b keep the original pool entries; the shared
+    // seam gets new points used by both; all other slots get fresh points.
+    std::array<bool, 16> keepA{}, keepB{};
+    for (int k = 0; k < 4; ++k) {
+        keepA[size_t(edgeSlot(low, k, 0))] = true;
+        keepB[size_t(edgeSlot(high, k, 0))] = true;
+    }
+    for (size_t s = 0; s < 16; ++s) {
+        if (!keepA[s]) a.idx[s] = addPoint(doc, first[s]);
+        if (!keepB[s]) b.idx[s] = addPoint(doc, second[s]);
+    }
+    for (int k = 0; k < 4; ++k) b.idx[size_t(edgeSlot(low, k, 0))] = a.idx[size_t(edgeSlot(high, k, 0))];
+    // The split curve's end points coincide with the original corners: keep those shared.
+    const uint32_t corner[4] = {src.idx[0], src.idx[3], src.idx[12], src.idx[15]};
+    const int cornerSlot[4] = {0, 3, 12, 15};
+    for (int c = 0; c < 4; ++c) {
+        const size_t s = size_t(cornerSlot[c]);
+        if (doc.points[a.idx[s]] == doc.points[corner[c]]) a.idx[s] = corner[c];
+        if (doc.points[b.idx[s]] == doc.points[corner[c]]) b.idx[s] = corner[c];
+    }
+    doc.patches[p] = a;
+    doc.patches.push_back(b);
+    const uint32_t q = uint32_t(doc.patches.size() - 1);
+    // Joins: the cut sides are dropped, the far edge moves to the second half.
+    std::vector<Join> kept;
+    for (Join j : doc.joins) {
+        bool drop = false;
+        for (int side = 0; side < 2; ++side) {
+            uint32_t& pt = side == 0 ? j.patchA : j.patchB;
+            const Edge e = side == 0 ? j.edgeA : j.edgeB;
+            if (pt != p) continue;
+            if (e == side0 || e == side1) {
+                drop = true;
+                continue;
+            }
+            // The halves' tangent rows at the old edges shrink by t (low) or 1 - t (high): the
+            // join's ratio changes with them (B1 - B0 = alpha (A0 - A1)).
+            const double scale = e == low ? t : 1.0 - t;
+            if (e == high) pt = q;
+            if (j.continuity != Continuity::C0) {
+                j.alpha = side == 1 ? j.alpha * scale : j.alpha / scale;
+                if (std::abs(j.alpha - 1.0) > 1e-12) j.continuity = Continuity::G1;
+            }
+        }
+        if (!drop) kept.push_back(j);
+    }
+    doc.joins = std::move(kept);
+    const double alpha = (1.0 - t) / t;
+    const bool c1 = std::abs(alpha - 1.0) < 1e-12;
+    doc.joins.push_back(Join{p, high, q, low, false, c1 ? Continuity::C1 : Continuity::G1, c1 ? 1.0 : alpha});
+    compactPool(doc);
+    return {p, q};
+}
+
+size_t joinEdges(Document& doc, uint32_t a, Edge ea, uint32_t b, Edge eb, Continuity continuity) {
+    checkBezier(doc, a, "join");
+    checkBezier(doc, b, "join");
+    if (a == b) throw EditError("join needs two different patches");
+    if (findJoin(doc, a, ea) >= 0 || findJoin(doc, b, eb) >= 0) throw EditError("one of the edges is already joined; unjoin it first");
+    const Patch& A = doc.patches[a];
+    const Patch& B = doc.patches[b];
+    auto pa = [&](int k, int d) { return doc.points[A.idx[size_t(edgeSlot(ea, k, d))]]; };
+    auto pb = [&](int k, int d) { return doc.points[B.idx[size_t(edgeSlot(eb, k, d))]]; };
+    // Direction: pair the end points the nearer way.
+    const double straight = glm::length(pa(0, 0) - pb(0, 0)) + glm::length(pa(3, 0) - pb(3, 0));
+    const double crossed = glm::length(pa(0, 0) - pb(3, 0)) + glm::length(pa(3, 0) - pb(0, 0));
+    const bool reversed = crossed < straight;
+    // Merge: B's edge entries become A's, both at the midpoint.
+    std::vector<std::pair<uint32_t, uint32_t>> remap;
+    for (int k = 0; k < 4; ++k) {
+        const uint32_t ia = A.idx[size_t(edgeSlot(ea, k, 0))];
+        const uint32_t ib = B.idx[size_t(edgeSlot(eb, reversed ? 3 - k : k, 0))];
+        if (ia == ib) continue;
+        doc.points[ia] = 0.5 * (doc.points[ia] + doc.points[ib]);
+        remap.emplace_back(ib, ia);
+    }
+    for (auto [from, to] : remap) {
+        for (Patch& pt : doc.patches)
+            for (uint32_t& i : pt.idx)
+                if (i == from) i = to;
+        for (Surface& s : doc.surfaces)
+            for (uint32_t& i : s.idx)
+                if (i == from) i = to;
+    }
+    double alpha = 1.0;
+    if (continuity == Continuity::G1) {
+        double sa = 0.0, sb = 0.0;
+        for (int k = 0; k < 4; ++k) {
+            sa += glm::length(pa(k, 0) - pa(k, 1));
+            sb += glm::length(pb(reversed ? 3 - k : k, 1) - pb(reversed ? 3 - k : k, 0));
+        }
+        alpha = sa > 1e-12 && sb > 1e-12 ? sb / sa : 1.0;
+    }
+    doc.joins.push_back(Join{a, ea, b, eb, reversed, continuity, alpha});
+    projectConstraints(doc, {});
+    compactPool(doc);
+    return doc.joins.size() - 1;
+}
+
+void unjoin(Document& doc, size_t j) {
+    if (j >= doc.joins.size()) throw EditError("no join " + std::to_string(j));
+    const Join jn = doc.joins[j];
+    doc.joins.erase(doc.joins.begin() + long(j));
+    Patch& B = doc.patches[jn.patchB];
+    for (int k = 0; k < 4; ++k) {
+        const size_t s = size_t(edgeSlot(jn.edgeB, k, 0));
+        B.idx[s] = addPoint(doc, doc.points[B.idx[s]]);
+    }
+}
+
+void compactPool(Document& doc) {
+    std::vector<uint32_t> remap(doc.points.size(), UINT32_MAX);
+    for (const Patch& p : doc.patches)
+        for (uint32_t i : p.idx) remap[i] = 0;
+    for (const Surface& s : doc.surfaces)
+        for (uint32_t i : s.idx) remap[i] = 0;
+    std::vector<Vec3> pts;
+    pts.reserve(doc.points.size());
+    for (size_t i = 0; i < doc.points.size(); ++i)
+        if (remap[i] == 0) {
+            remap[i] = uint32_t(pts.size());
+            pts.push_back(doc.points[i]);
+        }
+    if (pts.size() == doc.points.size()) return;
+    doc.points = std::move(pts);
+    for (Patch& p : doc.patches)
+        for (uint32_t& i : p.idx) i = remap[i];
+    for (Surface& s : doc.surfaces)
+        for (uint32_t& i : s.idx) i = remap[i];
+}
+
+}  // namespace pw

@@ -1,0 +1,67 @@
+// Editor picking maths, pure (no Vulkan): the ray under the mouse, the nearest projected control
+// point within a pixel radius, box selection, ray–surface picking of patches (CPU tessellation),
+// and the drag helpers (move in the view plane, along an axis, grid snapping).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "camera_math.hpp"
+#include "document.hpp"
+
+namespace pw {
+
+struct Ray {
+    glm::dvec3 origin{0.0};
+    glm::dvec3 dir{0.0, 0.0, -1.0};  // unit length
+};
+
+// The ray through pixel (x, y) (origin top-left, y down) of a width x height viewport. Perspective:
+// from the eye; orthographic: from the near plane, along the view direction.
+Ray rayThroughPixel(const Camera& cam, double x, double y, int width, int height);
+
+// Projected pixel positions of every pool point (nullopt behind the camera).
+std::vector<std::optional<glm::dvec2>> projectPoints(const Camera& cam, const std::vector<Vec3>& points, int width, int height);
+
+// Nearest pool point whose projection lies within `radiusPx` of (x, y); ties go to the point
+// nearer the eye. -1 when none. Only points used by some patch or surface count when `used` is
+// given (a mask the size of the pool).
+int pickPoint(const Camera& cam, const std::vector<Vec3>& points, double x, double y, int width, int height,
+              double radiusPx, const std::vector<bool>* used = nullptr);
+
+// Pool points whose projections fall inside the pixel rectangle spanned by a and b.
+std::vector<uint32_t> pointsInBox(const Camera& cam, const std::vector<Vec3>& points, glm::dvec2 a, glm::dvec2 b, int width,
+                                  int height, const std::vector<bool>* used = nullptr);
+
+// Mask of pool points referenced by a patch or a surface.
+std::vector<bool> usedPointMask(const Document& doc);
+
+// Ray–triangle (Möller–Trumbore); the distance along the ray, or nullopt.
+std::optional<double> intersectTriangle(const Ray& ray, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c);
+
+struct SurfaceHit {
+    int instance = -1;  // index into expandPatches(doc)
+    int patch = -1;     // Document::patches index or -1 (surface window)
+    int surface = -1;
+    double t = 0.0;     // distance along the ray
+    double u = 0.0, v = 0.0;
+};
+// Nearest hit of the ray with the surface, each window tessellated as a `level` x `level` grid.
+std::optional<SurfaceHit> pickSurface(const Document& doc, const Ray& ray, int level = 12);
+
+// Where the ray meets the plane through `point` with normal `normal` (nullopt when parallel or behind).
+std::optional<glm::dvec3> intersectPlane(const Ray& ray, const glm::dvec3& point, const glm::dvec3& normal);
+
+// Point on the line (origin, axis) closest to the ray.
+glm::dvec3 closestPointOnAxis(const Ray& ray, const glm::dvec3& origin, const glm::dvec3& axis);
+
+// Rounds each component of v to a multiple of step (step <= 0: unchanged).
+glm::dvec3 snapToGrid(const glm::dvec3& v, double step);
+
+// A "nice" grid step (1, 2 or 5 × 10^k) about a tenth of the model size.
+double niceGridStep(double modelSize);
+
+}  // namespace pw

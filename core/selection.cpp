@@ -1,0 +1,92 @@
+#include "selection.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "camera_math.hpp"
+
+namespace pw {
+
+bool Selection::contains(uint32_t p) const { return std::binary_search(points.begin(), points.end(), p); }
+
+void applyClick(Selection& sel, int picked, bool shift) {
+    if (!shift) {
+        sel.points.clear();
+        if (picked >= 0) sel.points.push_back(uint32_t(picked));
+        return;
+    }
+    if (picked < 0) return;
+    const auto it = std::lower_bound(sel.points.begin(), sel.points.end(), uint32_t(picked));
+    if (it != sel.points.end() && *it == uint32_t(picked))
+        sel.points.erase(it);
+    else
+        sel.points.insert(it, uint32_t(picked));
+}
+
+void applyBox(Selection& sel, const std::vector<uint32_t>& boxed, bool shift) {
+    if (!shift) sel.points.clear();
+    sel.points.insert(sel.points.end(), boxed.begin(), boxed.end());
+    std::sort(sel.points.begin(), sel.points.end());
+    sel.points.erase(std::unique(sel.points.begin(), sel.points.end()), sel.points.end());
+}
+
+void clampSelection(Selection& sel, const Document& doc) {
+    std::erase_if(sel.points, [&](uint32_t p) { return p >= doc.points.size(); });
+    if (sel.patch >= int(doc.patches.size())) sel.patch = -1;
+}
+
+Vec3 selectionCentroid(const Document& doc, const Selection& sel) {
+    Vec3 c(0.0);
+    size_t n = 0;
+    for (uint32_t p : sel.points)
+        if (p < doc.points.size()) c += doc.points[p], ++n;
+    if (n == 0 && sel.patch >= 0 && sel.patch < int(doc.patches.size()))
+        for (uint32_t p : doc.patches[size_t(sel.patch)].idx)
+            if (p < doc.points.size()) c += doc.points[p], ++n;
+    return n ? c / double(n) : c;
+}
+
+Bounds frameTargetBounds(const Document& doc, const Selection& sel) {
+    std::vector<Vec3> pts;
+    for (uint32_t p : sel.points)
+        if (p < doc.points.size()) pts.push_back(doc.points[p]);
+    if (pts.empty() && sel.patch >= 0 && sel.patch < int(doc.patches.size()))
+        for (uint32_t p : doc.patches[size_t(sel.patch)].idx)
+            if (p < doc.points.size()) pts.push_back(doc.points[p]);
+    if (pts.empty()) return computeBounds(doc.points);
+    Bounds b = computeBounds(pts);
+    // A single point (or a flat set) still gets a sensible view: pad to 5 % of the model.
+    const double pad = 0.05 * modelSize(doc);
+    if (b.diagonal() < pad) {
+        b.min -= Vec3(pad);
+        b.max += Vec3(pad);
+    }
+    return b;
+}
+
+void cameraAxes(const Camera& cam, Vec3& right, Vec3& up, Vec3& forward) {
+    const ViewMatrices vm = viewMatrices(cam, 1.0);
+    right = glm::normalize(Vec3(vm.view[0][0], vm.view[1][0], vm.view[2][0]));
+    up = glm::normalize(Vec3(vm.view[0][1], vm.view[1][1], vm.view[2][1]));
+    forward = glm::normalize(Vec3(vm.forward));
+}
+
+void orbitCamera(Camera& cam, double dxPx, double dyPx, double degPerPixel) {
+    cam.yawDeg = std::fmod(cam.yawDeg - dxPx * degPerPixel, 360.0);
+    cam.pitchDeg = std::clamp(cam.pitchDeg + dyPx * degPerPixel, -90.0, 90.0);
+}
+
+void panCamera(Camera& cam, double dxPx, double dyPx, int viewportHeightPx) {
+    Vec3 right, up, fwd;
+    cameraAxes(cam, right, up, fwd);
+    const double worldPerPx = 2.0 * cam.distance * std::tan(cam.fovYDeg * 3.14159265358979323846 / 360.0) /
+                              double(std::max(viewportHeightPx, 1));
+    const Vec3 t = Vec3(cam.target[0], cam.target[1], cam.target[2]) - right * (dxPx * worldPerPx) + up * (dyPx * worldPerPx);
+    cam.target = {t.x, t.y, t.z};
+}
+
+void zoomCamera(Camera& cam, double steps, double factor) {
+    cam.distance = std::clamp(cam.distance * std::pow(factor, steps), 1e-6, 1e9);
+}
+
+}  // namespace pw

@@ -1,0 +1,253 @@
+#!/usr/bin/env bash
+# End-to-end test of the editor under Xvfb, driven by xdotool, with the Vulkan validation layer on
+# (any validation message fails). Opens a file, drags a known control point with the mouse, saves
+# with Ctrl+S and checks the saved file (`patchwork info --json` + the JSON itself): the point moved
+# where the mouse put it and every join still holds; Ctrl+Z restores it; a window resize during a
+# drag does not crash; kill -9 and a restart offers the autosaved document, which recovers.
+# Usage: editor_e2e.sh PATCHWORK_BINARY DATA_DIR WORK_DIR
+set -euo pipefail
+BIN=$1
+DATA=$2
+WORK=$3
+rm -rf "$WORK"
+mkdir -p "$WORK"
+LOG=$WORK/log.txt
+: > "$LOG"
+say() { echo "e2e: $*" | tee -a "$LOG"; }
+fail() {
+    say "FAIL: $*"
+    [ -f "$WORK/editor.err" ] && tail -20 "$WORK/editor.err"
+    [ -f "$WORK/trace.json" ] && python3 -c "import json; t=json.load(open('$WORK/trace.json')); print({k: t[k] for k in t if k not in ('points', 'world')})"
+    exit 1
+}
+for tool in Xvfb xdotool python3; do command -v $tool >/dev/null || { echo "e2e: $tool missing"; exit 77; }; done
+
+# Xvfb picks a free display number itself (-displayfd) so parallel runs cannot collide.
+Xvfb -displayfd 3 -screen 0 1280x800x24 -nolisten tcp 3>"$WORK/display" >"$WORK/xvfb.log" 2>&1 &
+XVFB=$!
+for i in $(seq 100); do [ -s "$WORK/display" ] && break; sleep 0.1; done
+DNUM=$(head -1 "$WORK/display" | tr -d '[:space:]')
+[ -n "$DNUM" ] || { kill "$XVFB" 2>/dev/null; echo "e2e: Xvfb did not start"; cat "$WORK/xvfb.log"; exit 1; }
+EDITOR_PID=""
+cleanup() {
+    [ -n "$EDITOR_PID" ] && kill -9 "$EDITOR_PID" 2>/dev/null || true
+    kill "$XVFB" 2>/dev/null || true
+}
+trap cleanup EXIT
+export DISPLAY=:$DNUM
+for i in $(seq 50); do xdotool getmouselocation >/dev/null 2>&1 && break; sleep 0.1; done
+
+export XDG_STATE_HOME=$WORK/state
+export PATCHWORK_VALIDATION=1
+export PATCHWORK_EDITOR_TRACE=$WORK/trace.json
+export PATCHWORK_WINDOW_SIZE=1200x760
+export PATCHWORK_EDITOR_VIEW=front
+export PATCHWORK_AUTOSAVE_SECONDS=1.5
+
+MODEL=$WORK/model.patchwork
+"$BIN" convert -q "$DATA/teapot.bpt" "$MODEL"
+cp "$MODEL" "$WORK/original.patchwork"
+
+trace() { python3 -c "import json,sys; t=json.load(open('$WORK/trace.json')); print(eval(sys.argv[1]))" "$1"; }
+# wait_for EXPR [seconds]: polls the trace until the Python expression over t is true.
+wait_for() {
+    local expr=$1 secs=${2:-30}
+    for i in $(seq $((secs * 10))); do
+        if [ -f "$WORK/trace.json" ] && python3 - "$expr" "$WORK/trace.json" <<'PY' 2>/dev/null; then return 0; fi
+import json, sys
+t = json.load(open(sys.argv[2]))
+sys.exit(0 if eval(sys.argv[1]) else 1)
+PY
+        kill -0 "$EDITOR_PID" 2>/dev/null || fail "editor exited while waiting for: $expr"
+        sleep 0.1
+    done
+    fail "timed out waiting for: $expr"
+}
+start_editor() {
+    rm -f "$WORK/trace.json"
+    "$BIN" "$@" >>"$WORK/editor.out" 2>>"$WORK/editor.err" &
+    EDITOR_PID=$!
+    wait_for "t['frame'] >= 2" 90
+    WID=$(xdotool search --sync --pid "$EDITOR_PID" --name Patchwork | head -1)
+}
+check_validation() {
+    [ "$(trace "t['validationMessages']")" = "0" ] || fail "validation messages reported"
+    if grep -qi "validation" "$WORK/editor.err"; then fail "validation output on stderr"; fi
+}
+
+# --- 1. open a file -----------------------------------------------------------------------------
+say "open $MODEL"
+start_editor "$MODEL"
+check_validation
+
+# A control point on a joined boundary, isolated on screen (no other point within 14 px), in the
+# middle of the viewport.
+read -r IDX PX PY < <(python3 - "$WORK/trace.json" "$MODEL" <<'PY'
+import json, math, sys
+t = json.load(open(sys.argv[1])); d = json.load(open(sys.argv[2]))
+pts, world = t['points'], t['world']
+count = {}
+for p in d['patches']:
+    for i in set(p['idx'] if isinstance(p, dict) else p):
+        count[i] = count.get(i, 0) + 1
+W, H = t['window']
+best = None
+for i, p in enumerate(pts):
+    if p is None or count.get(i, 0) < 2: continue
+    if not (0.35 * W < p[0] < 0.65 * W and 0.3 * H < p[1] < 0.7 * H): continue
+    near = min((math.hypot(p[0] - q[0], p[1] - q[1]) for j, q in enumerate(pts) if q is not None and j != i), default=1e9)
+    if near > 14 and (best is None or near > best[0]): best = (near, i, p)
+assert best, "no isolated shared point"
+print(best[1], round(best[2][0]), round(best[2][1]))
+PY
+)
+say "dragging point $IDX at ($PX, $PY)"
+ORIG=$(trace "t['world'][$IDX]")
+
+# --- 2. drag it with the mouse ----------------------------------------------------------------
+DX=40; DY=-30
+xdotool mousemove --sync $PX $PY
+wait_for "t['hovered'] == $IDX"
+xdotool mousedown 1
+for s in 1 2 3 4 5 6 7 8; do xdotool mousemove --sync $((PX + DX * s / 8)) $((PY + DY * s / 8)); sleep 0.05; done
+sleep 0.3
+xdotool mouseup 1
+wait_for "t['mode'] == 0 and t['undoSteps'] == 1 and t['modified']"
+python3 - "$WORK/trace.json" $IDX $((PX + DX)) $((PY + DY)) <<'PY' || fail "the point is not under the mouse after the drag"
+import json, sys
+t = json.load(open(sys.argv[1])); i = int(sys.argv[2]); x, y = float(sys.argv[3]), float(sys.argv[4])
+p = t['points'][i]
+print("e2e: point now at", p, "mouse at", (x, y))
+sys.exit(0 if abs(p[0] - x) <= 1.5 and abs(p[1] - y) <= 1.5 else 1)
+PY
+MOVED=$(trace "t['world'][$IDX]")
+check_validation
+
+# --- 3. Ctrl+S, then check the saved file -----------------------------------------------------
+xdotool key ctrl+s
+wait_for "not t['modified']"
+"$BIN" info --json "$MODEL" > "$WORK/info.json"
+python3 - "$WORK/info.json" "$MODEL" "$WORK/original.patchwork" $IDX "$MOVED" <<'PY' || fail "saved file check"
+import json, sys
+info = json.load(open(sys.argv[1])); saved = json.load(open(sys.argv[2])); orig = json.load(open(sys.argv[3]))
+i = int(sys.argv[4]); moved = json.loads(sys.argv[5])
+tol = 1e-6 * info['modelSize']
+assert info['maxConstraintResidual'] <= tol, ("joins broken", info['maxConstraintResidual'])
+assert info['joins']['total'] == len(orig['joins']), "join count changed"
+assert all(abs(a - b) <= 1e-9 for a, b in zip(saved['points'][i], moved)), ("saved point differs", saved['points'][i], moved)
+assert max(abs(a - b) for a, b in zip(saved['points'][i], orig['points'][i])) > 1e-3, "point did not move"
+changed = sum(1 for a, b in zip(saved['points'], orig['points']) if a != b)
+print("e2e: saved; residual %.3g (tol %.3g); %d points changed (dragged + solver)" % (info['maxConstraintResidual'], tol, changed))
+PY
+say "saved file checked"
+
+# --- 4. Ctrl+Z restores -----------------------------------------------------------------------
+xdotool key ctrl+z
+wait_for "t['modified'] and t['world'][$IDX] == $ORIG"
+say "undo restored point $IDX"
+
+# --- 4b. Esc cancels a G grab, right click cancels a mouse drag (no undo step, point restored) ----
+STEPS=$(trace "t['undoSteps']")
+read -r QX QY < <(trace "' '.join(str(round(v)) for v in t['points'][$IDX])")
+xdotool mousemove --sync $QX $QY
+wait_for "t['hovered'] == $IDX"
+xdotool click 1
+wait_for "t['selection'] == [$IDX]"
+xdotool key g
+wait_for "t['mode'] == 6"
+xdotool mousemove --sync $((QX + 30)) $((QY + 20))
+wait_for "t['world'][$IDX] != $ORIG"
+xdotool key x
+sleep 0.2
+xdotool key Escape
+wait_for "t['mode'] == 0 and t['world'][$IDX] == $ORIG and t['undoSteps'] == $STEPS"
+xdotool mousemove --sync $QX $QY
+wait_for "t['hovered'] == $IDX"
+xdotool mousedown 1
+for s in 1 2 3 4; do xdotool mousemove --sync $((QX + 8 * s)) $((QY - 5 * s)); sleep 0.05; done
+wait_for "t['mode'] == 5 and t['world'][$IDX] != $ORIG"
+xdotool click 3
+xdotool mouseup 1
+wait_for "t['mode'] == 0 and t['world'][$IDX] == $ORIG and t['undoSteps'] == $STEPS"
+say "Esc and right click cancel and restore"
+
+# --- 5. resize during a drag ------------------------------------------------------------------
+read -r QX QY < <(trace "' '.join(str(round(v)) for v in t['points'][$IDX])")
+xdotool mousemove --sync $QX $QY
+wait_for "t['hovered'] >= 0"
+xdotool mousedown 1
+xdotool mousemove --sync $((QX + 10)) $((QY + 10))
+sleep 0.2
+xdotool windowsize "$WID" 900 600
+for s in 1 2 3 4 5; do xdotool mousemove --sync $((QX + 10 + s * 4)) $((QY + 10)); sleep 0.1; done
+xdotool mouseup 1
+wait_for "t['framebuffer'] == [900, 600] and t['mode'] == 0" 30
+kill -0 "$EDITOR_PID" || fail "editor died during resize"
+check_validation
+say "resize during drag survived"
+xdotool key ctrl+z
+wait_for "t['world'][$IDX] == $ORIG"
+
+# --- 6. kill -9, restart, recover --------------------------------------------------------------
+# The document is modified (undone drag vs the saved file): wait for an autosave.
+wait_for "True" 1
+for i in $(seq 100); do ls "$XDG_STATE_HOME"/patchwork/autosave-*.patchwork >/dev/null 2>&1 && break; sleep 0.1; done
+ls "$XDG_STATE_HOME"/patchwork/autosave-*.patchwork >/dev/null 2>&1 || fail "no autosave written"
+sleep 2  # let one more autosave land after the undo
+kill -9 "$EDITOR_PID"
+wait "$EDITOR_PID" 2>/dev/null || true
+say "killed; restarting"
+start_editor
+wait_for "t['modal'] == 'recover' and t['recoverable'] >= 1"
+read -r RX RY < <(trace "' '.join(str(round(v)) for v in t['items']['recover'])")
+xdotool mousemove --sync $RX $RY
+sleep 0.2
+xdotool click 1
+wait_for "t['modal'] == '' and t['modified'] and t['file'].endswith('model.patchwork') and t['world'][$IDX] == $ORIG"
+check_validation
+say "recovered the autosaved document"
+
+# --- 6b. opening a broken file shows an error naming it; the document is untouched ----------------
+printf '{"format": "patchwork", "version": 1, "points": [[0, 0' > "$WORK/broken.patchwork"
+xdotool mousemove --sync 600 380
+xdotool key ctrl+o
+wait_for "t['modal'] == 'unsaved'"
+read -r DXP DYP < <(trace "' '.join(str(round(v)) for v in t['items']['unsaved.discard'])")
+xdotool mousemove --sync $DXP $DYP
+sleep 0.2
+xdotool click 1
+wait_for "t['modal'] == 'file'"
+read -r FX FY < <(trace "' '.join(str(round(v)) for v in t['items']['file.name'])")
+xdotool mousemove --sync $FX $FY
+sleep 0.2
+xdotool click 1
+sleep 0.3
+xdotool type --delay 20 "$WORK/broken.patchwork"
+sleep 0.3
+read -r OX OY < <(trace "' '.join(str(round(v)) for v in t['items']['file.ok'])")
+xdotool mousemove --sync $OX $OY
+sleep 0.2
+xdotool click 1
+wait_for "t['modal'] == 'error' and 'broken.patchwork' in t['error'] and t['patches'] == 32 and t['world'][$IDX] == $ORIG and t['modified']"
+say "error dialog: $(trace "t['error'].splitlines()[-1]")"
+read -r EX EY < <(trace "' '.join(str(round(v)) for v in t['items']['error.ok'])")
+xdotool mousemove --sync $EX $EY
+sleep 0.2
+xdotool click 1
+wait_for "t['modal'] == ''"
+
+# --- 7. quit asks about unsaved changes -------------------------------------------------------
+xdotool key ctrl+q
+wait_for "t['modal'] == 'unsaved'"
+read -r DXP DYP < <(trace "' '.join(str(round(v)) for v in t['items']['unsaved.discard'])")
+xdotool mousemove --sync $DXP $DYP
+sleep 0.2
+xdotool click 1
+for i in $(seq 100); do kill -0 "$EDITOR_PID" 2>/dev/null || break; sleep 0.1; done
+if kill -0 "$EDITOR_PID" 2>/dev/null; then fail "editor did not quit"; fi
+wait "$EDITOR_PID" && RC=0 || RC=$?
+EDITOR_PID=""
+[ "$RC" = "0" ] || fail "editor exit code $RC"
+if grep -qi "validation" "$WORK/editor.err"; then fail "validation output on stderr"; fi
+ls "$XDG_STATE_HOME"/patchwork/autosave-*.patchwork >/dev/null 2>&1 && fail "clean exit left an autosave"
+say "PASS"

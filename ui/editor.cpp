@@ -1,0 +1,546 @@
+// Editor window, frame loop, files, undo/redo, autosave and the test trace.
+#include "editor.hpp"
+
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include <imgui.h>
+
+#include "camera_math.hpp"
+#include "device.hpp"
+#include "document_io.hpp"
+#include "errors.hpp"
+#include "file_io.hpp"
+#include "imgui_layer.hpp"
+#include "join_detect.hpp"
+#include "patch_ops.hpp"
+#include "png_writer.hpp"
+#include "renderer.hpp"
+#include "swapchain_target.hpp"
+
+namespace pw::ui {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+Editor* g_editor = nullptr;
+
+// Our callbacks only wake the loop; the ImGui backend (installed after) chains to them.
+// Cursor position as of the last motion event (event order, unlike glfwGetCursorPos on X11).
+double g_cursorX = 0, g_cursorY = 0;
+void onCursor(GLFWwindow*, double x, double y) {
+    g_cursorX = x, g_cursorY = y;
+    if (g_editor) g_editor->wake();
+}
+void onButton(GLFWwindow* w, int button, int action, int) {
+    if (!g_editor) return;
+    if (button == GLFW_MOUSE_BUTTON_LEFT && action == GLFW_PRESS) {
+        (void)w;
+        g_editor->leftPress(g_cursorX, g_cursorY);
+    }
+    g_editor->wake();
+}
+void onScroll(GLFWwindow*, double, double) { if (g_editor) g_editor->wake(); }
+void onKey(GLFWwindow*, int key, int, int action, int mods) {
+    if (!g_editor) return;
+    if (action != GLFW_RELEASE) g_editor->keyEvent(key, mods);
+    g_editor->wake();
+}
+void onChar(GLFWwindow*, unsigned int) { if (g_editor) g_editor->wake(); }
+void onSize(GLFWwindow*, int, int) { if (g_editor) g_editor->wake(); }
+void onRefresh(GLFWwindow*) { if (g_editor) g_editor->wake(); }
+void onFocus(GLFWwindow*, int) { if (g_editor) g_editor->wake(); }
+void onEnter(GLFWwindow*, int) { if (g_editor) g_editor->wake(); }
+
+const char* kNoDisplay =
+    "patchwork: no display (DISPLAY/WAYLAND_DISPLAY unset or unreachable); use `patchwork render FILE -o out.png` for "
+    "headless images\n";
+
+fs::path recentFile() { return autosaveDirectory() / "recent.txt"; }
+
+}  // namespace
+
+int runEditor(const std::string& file) {
+    const char* d = std::getenv("DISPLAY");
+    const char* w = std::getenv("WAYLAND_DISPLAY");
+    if ((!d || !*d) && (!w || !*w)) {
+        std::cerr << kNoDisplay;
+        return 2;
+    }
+    glfwSetErrorCallback([](int, const char* msg) { std::fprintf(stderr, "patchwork: glfw: %s\n", msg); });
+    if (!glfwInit()) {
+        std::cerr << kNoDisplay;
+        return 2;
+    }
+    if (!glfwVulkanSupported()) {
+        glfwTerminate();
+        throw InputError("editor", "GLFW found no Vulkan loader/driver with window-system support");
+    }
+    // 1600x900, or 90 % of the monitor's work area where that is smaller (the size is scaled by
+    // the content scale below, GLFW_SCALE_TO_MONITOR).
+    int width = 1600, height = 900;
+    if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
+        int wx = 0, wy = 0, ww = 0, wh = 0;
+        float sx = 1.0f, sy = 1.0f;
+        glfwGetMonitorWorkarea(monitor, &wx, &wy, &ww, &wh);
+        glfwGetMonitorContentScale(monitor, &sx, &sy);
+        if (ww > 0 && wh > 0 && sx > 0.0f && sy > 0.0f) {
+            width = std::max(640, std::min(width, int(0.9f * float(ww) / sx)));
+            height = std::max(400, std::min(height, int(0.9f * float(wh) / sy)));
+        }
+    }
+    if (const char* ws = std::getenv("PATCHWORK_WINDOW_SIZE"); ws && *ws) {
+        if (std::sscanf(ws, "%dx%d", &width, &height) != 2 || width < 64 || height < 64 || width > 16384 || height > 16384) {
+            glfwTerminate();
+            throw InputError("PATCHWORK_WINDOW_SIZE", std::string("expected WIDTHxHEIGHT (64..16384), got '") + ws + "'");
+        }
+    }
+    glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
+    glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
+    GLFWwindow* window = glfwCreateWindow(width, height, "Patchwork", nullptr, nullptr);
+    if (!window) {
+        glfwTerminate();
+        std::cerr << kNoDisplay;
+        return 2;
+    }
+    int rc = 0;
+    try {
+        Editor editor(window, file);
+        rc = editor.run();
+    } catch (...) {
+        glfwDestroyWindow(window);
+        glfwTerminate();
+        throw;
+    }
+    glfwDestroyWindow(window);
+    glfwTerminate();
+    return rc;
+}
+
+Editor::Editor(GLFWwindow* window, const std::string& file) : window_(window) {
+    g_editor = this;
+    if (const char* t = std::getenv("PATCHWORK_EDITOR_TRACE"); t && *t) tracePath_ = t;
+    if (const char* a = std::getenv("PATCHWORK_AUTOSAVE_SECONDS"); a && *a) autosaveSeconds_ = std::max(0.5, std::atof(a));
+
+    // Step 1: device with the window-system extensions, surface, swapchain target.
+    render::DeviceOptions opt;
+    uint32_t n = 0;
+    const char** exts = glfwGetRequiredInstanceExtensions(&n);
+    for (uint32_t i = 0; i < n; ++i) opt.instanceExtensions.push_back(exts[i]);
+    opt.deviceExtensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+    dev_ = std::make_unique<render::Device>(opt);
+    if (glfwCreateWindowSurface(dev_->instance(), window_, nullptr, &surface_) != VK_SUCCESS)
+        throw render::VulkanError("cannot create a Vulkan surface for the window");
+    int fbw = 0, fbh = 0;
+    glfwGetFramebufferSize(window_, &fbw, &fbh);
+    target_ = std::make_unique<render::SwapchainTarget>(*dev_, surface_, VkExtent2D{uint32_t(fbw), uint32_t(fbh)});
+    renderer_ = std::make_unique<render::Renderer>(*dev_, *target_);
+
+    // Step 2: input callbacks (before ImGui so it chains to them), then ImGui.
+    glfwSetCursorPosCallback(window_, onCursor);
+    glfwSetMouseButtonCallback(window_, onButton);
+    glfwSetScrollCallback(window_, onScroll);
+    glfwSetKeyCallback(window_, onKey);
+    glfwSetCharCallback(window_, onChar);
+    glfwSetWindowSizeCallback(window_, onSize);
+    glfwSetFramebufferSizeCallback(window_, onSize);
+    glfwSetWindowRefreshCallback(window_, onRefresh);
+    glfwSetWindowFocusCallback(window_, onFocus);
+    glfwSetCursorEnterCallback(window_, onEnter);
+    float sx = 1.0f, sy = 1.0f;
+    glfwGetWindowContentScale(window_, &sx, &sy);
+    uiScale_ = std::max(1.0f, std::max(sx, sy));
+    imgui_ = std::make_unique<ImGuiLayer>(*dev_, window_, *target_, uiScale_);
+
+    // Step 3: the document, recent files, crash recovery.
+    browseDir_ = fs::current_path();
+    {
+        std::ifstream in(recentFile());
+        for (std::string line; std::getline(in, line);)
+            if (!line.empty()) recent_.push_back(line);
+    }
+    recoverable_ = findRecoverableAutosaves();
+    offerRecovery_ = !recoverable_.empty();
+    try {
+        if (file.empty())
+            setDocument(builtinTeapot(), "");
+        else
+            setDocument(loadDocument(file), file);
+    } catch (const InputError&) {
+        throw;  // a bad file on the command line: report and exit 2 like the other commands
+    }
+    // Warm the pipelines on the first acquired image (the first real frame then pays no JIT).
+    if (target_->acquire()) {
+        renderer_->warmUp();
+        swapchainDirty_ = false;
+        // Present it through the normal path on the first frame.
+        imgui_->newFrame();
+        ImGui::Render();
+        target_->submitAndPresent(imgui_->record());
+    }
+    lastAutosave_ = std::chrono::steady_clock::now();
+}
+
+Editor::~Editor() {
+    if (dev_) vkDeviceWaitIdle(dev_->device());
+    imgui_.reset();
+    renderer_.reset();
+    target_.reset();
+    if (surface_) vkDestroySurfaceKHR(dev_->instance(), surface_, nullptr);
+    g_editor = nullptr;
+}
+
+void Editor::setDocument(Document doc, const std::string& path) {
+    doc_ = std::move(doc);
+    committed_ = doc_;
+    history_.clear();
+    history_.markSaved();
+    forceModified_ = false;
+    path_ = path;
+    sel_.clear();
+    hovered_ = -1;
+    cam_ = doc_.camera;
+    // Files without a stored view (or the teapot) are framed; PATCHWORK_EDITOR_VIEW (tests) names a view.
+    const char* fixed = std::getenv("PATCHWORK_EDITOR_VIEW");
+    if (fixed && *fixed)
+        if (auto c = applyNamedView(cam_, fixed)) cam_ = *c;
+    if (cam_ == Camera{} || (fixed && *fixed)) frameBox(computeBounds(doc_.points));
+    documentChanged(true);
+    glfwSetWindowTitle(window_, ("Patchwork — " + (path_.empty() ? std::string(doc_.name.empty() ? "untitled" : doc_.name) : path_)).c_str());
+}
+
+void Editor::documentChanged(bool topology) {
+    renderer_->setDocument(doc_);
+    if (topology) usedMask_ = usedPointMask(doc_);
+    clampSelection(sel_, doc_);
+    ++docVersion_;
+    wake();
+}
+
+void Editor::commit(const std::string& label) {
+    history_.commit(committed_, doc_, label);
+    committed_ = doc_;
+    ++docVersion_;
+}
+
+void Editor::undo() {
+    if (mode_ != Interaction::None || !history_.canUndo()) return;
+    history_.undo(doc_);
+    committed_ = doc_;
+    documentChanged(true);
+    status_ = "Undone";
+    statusTime_ = std::chrono::steady_clock::now();
+}
+
+void Editor::redo() {
+    if (mode_ != Interaction::None || !history_.canRedo()) return;
+    history_.redo(doc_);
+    committed_ = doc_;
+    documentChanged(true);
+    status_ = "Redone";
+    statusTime_ = std::chrono::steady_clock::now();
+}
+
+void Editor::showError(const std::string& message) {
+    errorMessage_ = message;
+    openError_ = true;
+    wake();
+}
+
+void Editor::loadFile(const std::string& path, bool import) {
+    try {
+        Document d = loadDocument(path);
+        if (import) {
+            // Import: append the file's patches (own points, joins renumbered) to this document.
+            const uint32_t base = uint32_t(doc_.points.size()), pbase = uint32_t(doc_.patches.size());
+            doc_.points.insert(doc_.points.end(), d.points.begin(), d.points.end());
+            for (Patch p : d.patches) {
+                for (uint32_t& i : p.idx) i += base;
+                doc_.patches.push_back(p);
+            }
+            for (Surface s : d.surfaces) {
+                for (uint32_t& i : s.idx) i += base;
+                doc_.surfaces.push_back(s);
+            }
+            for (Join j : d.joins) {
+                j.patchA += pbase;
+                j.patchB += pbase;
+                doc_.joins.push_back(j);
+            }
+            commit("Import " + fs::path(path).filename().string());
+            documentChanged(true);
+        } else {
+            setDocument(std::move(d), path);
+            addRecent(path);
+        }
+    } catch (const std::exception& e) {
+        showError(std::string("Could not open the file; the document is unchanged.\n\n") + e.what());
+    }
+}
+
+bool Editor::saveTo(const std::string& path) {
+    try {
+        Document out = doc_;
+        out.camera = cam_;
+        saveDocument(out, path, exportOptions_);
+        const std::string ext = lowerExtension(path);
+        if (ext == ".patchwork" || ext == ".bpt" || ext == ".gltf" || ext == ".glb") {
+            path_ = path;
+            history_.markSaved();
+            forceModified_ = false;
+            autosaver_.discard();
+            addRecent(path);
+            glfwSetWindowTitle(window_, ("Patchwork — " + path_).c_str());
+        }
+        status_ = "Saved " + path;
+        statusTime_ = std::chrono::steady_clock::now();
+        return true;
+    } catch (const std::exception& e) {
+        showError(std::string("Could not save; the document is unchanged.\n\n") + e.what());
+        return false;
+    }
+}
+
+void Editor::newDocument() {
+    Document d;
+    d.name = "untitled";
+    addFlatPatch(d, Vec3(0.0), 2.0, true);
+    setDocument(std::move(d), "");
+}
+
+void Editor::addRecent(const std::string& path) {
+    std::string abs = path;
+    std::error_code ec;
+    const fs::path a = fs::absolute(path, ec);
+    if (!ec) abs = a.string();
+    std::erase(recent_, abs);
+    recent_.insert(recent_.begin(), abs);
+    if (recent_.size() > 10) recent_.resize(10);
+    try {
+        fs::create_directories(recentFile().parent_path(), ec);
+        std::string text;
+        for (const std::string& r : recent_) text += r + "\n";
+        writeFileAtomic(recentFile(), text);
+    } catch (...) {
+        // Recent files are a convenience: an unwritable state directory is not an error.
+    }
+}
+
+void Editor::requestAction(PendingAction a, const std::string& path) {
+    pending_ = a;
+    pendingPath_ = path;
+    if (isModified() && a != PendingAction::None) {
+        openUnsavedPrompt_ = true;
+        wake();
+        return;
+    }
+    performAction(a);
+}
+
+void Editor::performAction(PendingAction a) {
+    pending_ = PendingAction::None;
+    switch (a) {
+        case PendingAction::Quit: quit_ = true; break;
+        case PendingAction::New: newDocument(); break;
+        case PendingAction::Open:
+            fileMode_ = FileDialogMode::Open;
+            fileName_[0] = 0;
+            break;
+        case PendingAction::OpenRecent: loadFile(pendingPath_, false); break;
+        case PendingAction::Recover:
+            if (!recoverable_.empty()) {
+                const AutosaveEntry e = recoverable_.front();
+                try {
+                    Document d = loadDocument(e.document);
+                    setDocument(std::move(d), e.originalPath);
+                    forceModified_ = true;  // the recovered state differs from the file on disk
+                    removeAutosave(e);
+                    recoverable_.erase(recoverable_.begin());
+                    status_ = "Recovered autosave of " + (e.originalPath.empty() ? std::string("untitled") : e.originalPath);
+                    statusTime_ = std::chrono::steady_clock::now();
+                } catch (const std::exception& ex) {
+                    showError(std::string("Could not recover the autosave.\n\n") + ex.what());
+                }
+            }
+            break;
+        default: break;
+    }
+}
+
+void Editor::autosaveTick() {
+    const auto now = std::chrono::steady_clock::now();
+    if (std::chrono::duration<double>(now - lastAutosave_).count() < autosaveSeconds_) return;
+    lastAutosave_ = now;
+    if (!isModified() || mode_ == Interaction::DragPoints || mode_ == Interaction::Grab) return;
+    try {
+        Document out = doc_;
+        out.camera = cam_;
+        autosaver_.save(out, path_);
+    } catch (const std::exception& e) {
+        status_ = std::string("Autosave failed: ") + e.what();
+        statusTime_ = now;
+    }
+}
+
+void Editor::takeScreenshot(const std::string& path) {
+    screenshotRequested_ = true;
+    screenshotPath_ = path;
+    wake();
+}
+
+int Editor::run() {
+    using clock = std::chrono::steady_clock;
+    while (!quit_) {
+        // Step 1: events. Idle (nothing to redraw): block until an event or the autosave tick.
+        if (wakeFrames_ > 0)
+            glfwPollEvents();
+        else
+            glfwWaitEventsTimeout(0.5);
+        autosaveTick();
+        if (glfwWindowShouldClose(window_)) {
+            glfwSetWindowShouldClose(window_, GLFW_FALSE);
+            requestAction(PendingAction::Quit);
+            if (quit_) break;
+        }
+        // Step 2: size changes; a minimised (zero-size) window waits.
+        int fbw = 0, fbh = 0;
+        glfwGetFramebufferSize(window_, &fbw, &fbh);
+        if (fbw == 0 || fbh == 0) {
+            glfwWaitEventsTimeout(0.5);
+            continue;
+        }
+        const VkExtent2D ext = target_->extent();
+        if (swapchainDirty_ || !target_->valid() || ext.width != uint32_t(fbw) || ext.height != uint32_t(fbh)) {
+            target_->recreate({uint32_t(fbw), uint32_t(fbh)});
+            imgui_->swapchainRecreated();
+            swapchainDirty_ = false;
+            wake();
+        }
+        if (wakeFrames_ <= 0 && !screenshotRequested_) continue;  // nothing changed: draw nothing
+        // Step 3: pace (FIFO is not paced under Xvfb): at most ~60 frames per second.
+        const auto next = lastFrame_ + std::chrono::microseconds(16667);
+        if (clock::now() < next) std::this_thread::sleep_until(next);
+        const auto t0 = clock::now();
+        frameMs_ = std::chrono::duration<double, std::milli>(t0 - lastFrame_).count();
+        lastFrame_ = t0;
+        frame();
+        if (wakeFrames_ > 0) --wakeFrames_;
+    }
+    autosaver_.discard();
+    return 0;
+}
+
+void Editor::frame() {
+    // Step 1: UI and viewport input. ImGui 1.86 only sees key *state*: a key pressed and released
+    // between two frames (fast typing, xdotool) is held down for this one frame so it is not lost.
+    ImGuiIO& io = ImGui::GetIO();
+    std::vector<int> forced;
+    for (const auto& [key, mods] : keyQueue_) {
+        if (key < 0 || key >= int(IM_ARRAYSIZE(io.KeysDown)) || io.KeysDown[key]) continue;
+        io.KeysDown[key] = true;
+        forced.push_back(key);
+        io.KeyCtrl = io.KeyCtrl || (mods & GLFW_MOD_CONTROL);
+        io.KeyShift = io.KeyShift || (mods & GLFW_MOD_SHIFT);
+        io.KeyAlt = io.KeyAlt || (mods & GLFW_MOD_ALT);
+    }
+    imgui_->newFrame();
+    viewportInput();
+    drawViewportOverlays();
+    drawUi();
+    ImGui::Render();
+    keyQueue_.clear();
+    if (!forced.empty()) {
+        for (int key : forced) io.KeysDown[key] = glfwGetKey(window_, key) == GLFW_PRESS;
+        io.KeyCtrl = glfwGetKey(window_, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS || glfwGetKey(window_, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
+        io.KeyShift = glfwGetKey(window_, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS || glfwGetKey(window_, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
+        io.KeyAlt = glfwGetKey(window_, GLFW_KEY_LEFT_ALT) == GLFW_PRESS || glfwGetKey(window_, GLFW_KEY_RIGHT_ALT) == GLFW_PRESS;
+        wake();  // one more frame sees the release
+    }
+    leftPressed_ = false;
+
+    // Step 2: the 3D view into the swapchain image.
+    if (!target_->acquire()) {
+        swapchainDirty_ = true;
+        return;
+    }
+    render::RenderOptions o = render::optionsFromDocument(doc_);
+    o.camera = cam_;
+    o.hoveredPoint = hovered_;
+    o.selectedPoint = sel_.points.empty() ? -1 : int(sel_.points.front());
+    stats_ = renderer_->render(o);
+    if (screenshotRequested_) {
+        screenshotRequested_ = false;
+        try {
+            const std::vector<uint8_t> px = target_->readCurrentImage();
+            if (px.empty()) throw OutputError(screenshotPath_, "the swapchain images cannot be read back on this device");
+            render::writePng(screenshotPath_, target_->extent().width, target_->extent().height, px);
+            status_ = "Screenshot saved to " + screenshotPath_;
+            statusTime_ = std::chrono::steady_clock::now();
+        } catch (const std::exception& e) {
+            showError(std::string("Could not save the screenshot.\n\n") + e.what());
+        }
+    }
+    // Step 3: ImGui on top, present.
+    if (!target_->submitAndPresent(imgui_->record())) swapchainDirty_ = true;
+    ++frameCount_;
+    if (!tracePath_.empty()) writeTrace();
+}
+
+void Editor::writeTrace() {
+    nlohmann::json j;
+    int ww = 0, wh = 0, fw = 0, fh = 0;
+    glfwGetWindowSize(window_, &ww, &wh);
+    glfwGetFramebufferSize(window_, &fw, &fh);
+    j["frame"] = frameCount_;
+    j["window"] = {ww, wh};
+    j["framebuffer"] = {fw, fh};
+    j["file"] = path_;
+    j["modified"] = isModified();
+    j["mode"] = int(mode_);
+    j["undoSteps"] = history_.size();
+    j["canUndo"] = history_.canUndo();
+    j["hovered"] = hovered_;
+    j["selection"] = sel_.points;
+    j["selectedPatch"] = sel_.patch;
+    j["recoverable"] = recoverable_.size();
+    j["modal"] = openModal_;
+    j["items"] = traceItems_;
+    j["unsavedPrompt"] = pending_ != PendingAction::None;
+    j["error"] = errorMessage_;
+    j["frameMs"] = frameMs_;
+    j["renderMs"] = stats_.wallMs;
+    j["gpuMs"] = stats_.gpuMs;
+    j["triangles"] = stats_.triangles();
+    j["validationMessages"] = render::Device::validationMessageCount();
+    j["patches"] = doc_.patches.size();
+    j["joins"] = doc_.joins.size();
+    j["maxConstraintResidual"] = mode_ == Interaction::None ? maxConstraintResidual(doc_) : -1.0;
+    const auto proj = projectPoints(cam_, doc_.points, ww, wh);
+    nlohmann::json pts = nlohmann::json::array();
+    for (size_t i = 0; i < proj.size(); ++i) {
+        if (proj[i] && i < usedMask_.size() && usedMask_[i])
+            pts.push_back({proj[i]->x, proj[i]->y});
+        else
+            pts.push_back(nullptr);
+    }
+    j["points"] = std::move(pts);
+    nlohmann::json world = nlohmann::json::array();
+    for (const Vec3& p : doc_.points) world.push_back({p.x, p.y, p.z});
+    j["world"] = std::move(world);
+    try {
+        writeFileAtomic(tracePath_, j.dump());
+    } catch (...) {
+    }
+}
+
+}  // namespace pw::ui

@@ -1,0 +1,191 @@
+// The interactive editor: one GLFW window, the Vulkan renderer drawing the document into the
+// swapchain, Dear ImGui panels on top. Blender-style navigation and editing (DESIGN §6).
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <chrono>
+#include <functional>
+#include <map>
+#include <array>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "autosave.hpp"
+#include "constraint_solver.hpp"
+#include "continuity_report.hpp"
+#include "document.hpp"
+#include "edit_history.hpp"
+#include "gltf_export.hpp"
+#include "picking.hpp"
+#include "selection.hpp"
+#include "stats.hpp"
+
+struct GLFWwindow;
+
+namespace pw::render {
+class Device;
+class SwapchainTarget;
+class Renderer;
+}  // namespace pw::render
+
+namespace pw::ui {
+
+class ImGuiLayer;
+
+// Opens the editor on `file` (empty: the built-in teapot). Returns the exit code; 2 when there is
+// no display.
+int runEditor(const std::string& file);
+
+enum class Interaction { None, Orbit, Pan, BoxSelect, PendingDrag, DragPoints, Grab };
+enum class FileDialogMode { None, Open, SaveAs, Import, ExportGltf, Screenshot };
+enum class PendingAction { None, Quit, Open, New, OpenRecent, Recover };
+
+struct DragState {
+    std::vector<Vec3> start;       // the whole pool at drag start
+    std::vector<uint32_t> moved;   // the points the user moves (fixed in the solver)
+    std::unique_ptr<DragSolver> solver;
+    Vec3 anchor{0.0};              // centroid of the moved points at start
+    Vec3 planeNormal{0.0, 0.0, 1.0};
+    Vec3 startHit{0.0};            // where the start ray met the drag plane
+    int axis = -1;                 // -1 free (view plane); 0/1/2 = X/Y/Z
+    double startX = 0, startY = 0; // mouse at start (window coordinates)
+    bool grab = false;             // G key (no button held)
+    std::vector<Vec3> uploaded;    // pool as last written to the GPU (partial updates)
+    std::vector<uint32_t> changed;
+};
+
+class Editor {
+public:
+    Editor(GLFWwindow* window, const std::string& file);
+    ~Editor();
+    int run();
+
+    // Called by GLFW callbacks.
+    void wake() { wakeFrames_ = 8; }  // ImGui popups and hover states settle over a few frames
+    // Key presses since the last frame with their modifiers (ImGui 1.86 keeps only key state, so a
+    // press and release between two frames would be lost).
+    void keyEvent(int key, int mods) { keyQueue_.emplace_back(key, mods); }
+    // Where the left button went down (a press and a move can arrive in one frame).
+    void leftPress(double x, double y) { leftPressX_ = x, leftPressY_ = y, leftPressed_ = true; }
+
+private:
+    // editor.cpp: frame loop and files
+    void frame();
+    void loadFile(const std::string& path, bool import);
+    bool saveTo(const std::string& path);
+    void newDocument();
+    void setDocument(Document doc, const std::string& path);
+    void documentChanged(bool topology);  // re-upload
+    void commit(const std::string& label);
+    void undo();
+    void redo();
+    void requestAction(PendingAction a, const std::string& path = {});
+    void performAction(PendingAction a);
+    void autosaveTick();
+    void writeTrace();
+    void takeScreenshot(const std::string& path);
+    void addRecent(const std::string& path);
+    void showError(const std::string& message);
+    bool isModified() const { return history_.isModified() || forceModified_; }
+
+    // editor_view.cpp: viewport interaction and overlays
+    void viewportInput();
+    void beginDrag(bool grab);
+    void updateDrag(double mx, double my);
+    void finishDrag();
+    void cancelDrag();
+    void drawViewportOverlays();
+    void frameSelection();
+    void frameBox(const Bounds& box);
+    Camera viewCamera() const { return cam_; }
+
+    // editor_panels.cpp: menus, panels, dialogs
+    void drawUi();
+    void drawMenuBar();
+    void drawLeftPanel();
+    void drawRightPanel();
+    void drawFileDialog();
+    void drawModals();
+    void drawHelp();
+    void patchOp(const std::string& label, const std::function<void(Document&)>& op, bool topology = true);
+
+    GLFWwindow* window_;
+    std::unique_ptr<render::Device> dev_;
+    VkSurfaceKHR surface_ = VK_NULL_HANDLE;
+    std::unique_ptr<render::SwapchainTarget> target_;
+    std::unique_ptr<render::Renderer> renderer_;
+    std::unique_ptr<ImGuiLayer> imgui_;
+
+    Document doc_, committed_;
+    EditHistory history_;
+    std::string path_;  // current file ("" = untitled)
+    Camera cam_;
+    Selection sel_;
+    int hovered_ = -1;
+    int hoveredEdgePatch_ = -1;
+    Edge lastEdge_ = Edge::U1;  // edge nearest the last surface click (extrude/join)
+    std::vector<bool> usedMask_;
+    uint64_t docVersion_ = 0;
+
+    Interaction mode_ = Interaction::None;
+    DragState drag_;
+    double pressX_ = 0, pressY_ = 0;
+    bool pressShift_ = false;
+    double lastX_ = 0, lastY_ = 0;
+
+    // frame pacing and stats
+    int wakeFrames_ = 3;
+    uint64_t frameCount_ = 0;
+    std::chrono::steady_clock::time_point lastFrame_{};
+    double frameMs_ = 0.0;
+    render::FrameStats stats_;
+    bool swapchainDirty_ = false;
+
+    // autosave
+    Autosaver autosaver_;
+    std::chrono::steady_clock::time_point lastAutosave_;
+    double autosaveSeconds_ = 30.0;
+    std::vector<AutosaveEntry> recoverable_;
+    bool offerRecovery_ = false;
+
+    // UI state
+    bool showHelp_ = false;
+    bool quit_ = false;
+    PendingAction pending_ = PendingAction::None;
+    std::string pendingPath_;
+    bool openUnsavedPrompt_ = false;
+    std::string errorMessage_;
+    bool openError_ = false;
+    FileDialogMode fileMode_ = FileDialogMode::None;
+    std::filesystem::path browseDir_;
+    char fileName_[512] = {};
+    std::vector<std::string> recent_;
+    GltfExportOptions exportOptions_;
+    std::string status_;
+    std::chrono::steady_clock::time_point statusTime_;
+    std::vector<JoinContinuity> continuity_;
+    uint64_t continuityVersion_ = ~0ull;
+    bool screenshotRequested_ = false;
+    std::string screenshotPath_;
+    float splitT_ = 0.5f;
+    int joinA_ = 0, joinB_ = 1, joinEdgeA_ = 2, joinEdgeB_ = 0, joinKind_ = 1;
+    std::string tracePath_;
+    std::vector<std::pair<int, int>> keyQueue_;
+    double leftPressX_ = 0, leftPressY_ = 0;
+    bool leftPressed_ = false;
+    bool keyPressed(int key, int mods) const;
+    bool forceModified_ = false;
+    bool showGround_ = true;
+    // Test trace: window-coordinate centres of a few dialog buttons, and which modal is open.
+    std::map<std::string, std::array<float, 2>> traceItems_;
+    std::string openModal_;
+    void traceItem(const std::string& name);
+    float leftPanelWidth_ = 0.0f;
+    float uiScale_ = 1.0f;  // monitor content scale (HiDPI)
+};
+
+}  // namespace pw::ui

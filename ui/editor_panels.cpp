@@ -1,0 +1,727 @@
+// Menus, panels (Outliner, Inspector, Tessellation, Display, Stats, Continuity), the file
+// browser, modal dialogs and the help overlay. Every control has a tooltip.
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include <imgui.h>
+
+#include "camera_math.hpp"
+#include "device.hpp"
+#include "editor.hpp"
+#include "limits.hpp"
+#include "patch_ops.hpp"
+#include "renderer.hpp"
+
+namespace pw::ui {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+void tip(const char* text) {
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+}
+
+struct KeyHelp {
+    const char* keys;
+    const char* what;
+};
+const KeyHelp kKeys[] = {
+    {"Middle drag", "Orbit the view"},
+    {"Shift + middle drag", "Pan the view"},
+    {"Wheel", "Zoom"},
+    {"Alt + left drag", "Orbit (laptops)"},
+    {"Numpad 1 / 3 / 7 (or 1 / 3 / 7)", "Front / right / top view (Ctrl: back / left / bottom)"},
+    {"Numpad 5 (or 5)", "Toggle perspective / orthographic"},
+    {"F", "Frame the selection (or everything)"},
+    {"Left click", "Select a control point; on the surface: select the patch (nearest edge highlighted)"},
+    {"Shift + left click", "Add / remove a point from the selection"},
+    {"Left drag on empty space", "Box select (Shift adds)"},
+    {"Left drag on a point", "Move the selected points in the view plane; joins are held"},
+    {"G", "Grab the selected points (move the mouse, click or Enter confirms)"},
+    {"X / Y / Z (while moving)", "Constrain to that axis (again: free)"},
+    {"Ctrl (while moving)", "Snap to the grid"},
+    {"Esc / right click (while moving)", "Cancel the move and restore"},
+    {"A / Alt+A", "Select all points / deselect"},
+    {"Shift + D", "Duplicate the selected patch"},
+    {"Delete", "Delete the selected patch"},
+    {"Ctrl + Z / Ctrl + Shift + Z (Ctrl + Y)", "Undo / redo"},
+    {"Ctrl + N / Ctrl + O", "New / open"},
+    {"Ctrl + S / Ctrl + Shift + S", "Save / save as"},
+    {"Ctrl + Q", "Quit"},
+    {"F12", "Save a viewport screenshot (PNG)"},
+    {"F1 or ?", "This help"},
+};
+
+const char* kEdgeNames[] = {"u0", "v0", "u1", "v1"};
+
+}  // namespace
+
+void Editor::patchOp(const std::string& label, const std::function<void(Document&)>& op, bool topology) {
+    Document d = doc_;
+    try {
+        op(d);
+    } catch (const std::exception& e) {
+        showError(label + " failed: " + e.what());
+        return;
+    }
+    doc_ = std::move(d);
+    commit(label);
+    documentChanged(topology);
+}
+
+void Editor::traceItem(const std::string& name) {
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    traceItems_[name] = {0.5f * (a.x + b.x), 0.5f * (a.y + b.y)};
+}
+
+void Editor::drawUi() {
+    traceItems_.clear();
+    openModal_.clear();
+    drawMenuBar();
+    drawLeftPanel();
+    drawRightPanel();
+    drawFileDialog();
+    drawModals();
+    if (showHelp_) drawHelp();
+    // Status line.
+    const ImGuiIO& io = ImGui::GetIO();
+    if (!status_.empty() && std::chrono::steady_clock::now() - statusTime_ < std::chrono::seconds(6))
+        ImGui::GetForegroundDrawList()->AddText(ImVec2(leftPanelWidth_ + 12.0f, io.DisplaySize.y - 24.0f), IM_COL32(220, 220, 220, 255),
+                                                status_.c_str());
+}
+
+void Editor::drawMenuBar() {
+    if (!ImGui::BeginMainMenuBar()) return;
+    if (ImGui::BeginMenu("File")) {
+        if (ImGui::MenuItem("New", "Ctrl+N")) requestAction(PendingAction::New);
+        tip("Start a new document with one flat patch");
+        if (ImGui::MenuItem("Open...", "Ctrl+O")) requestAction(PendingAction::Open);
+        tip("Open a .patchwork, .bpt or Patchwork glTF file");
+        if (ImGui::BeginMenu("Open Recent", !recent_.empty())) {
+            for (const std::string& r : recent_)
+                if (ImGui::MenuItem(r.c_str())) requestAction(PendingAction::OpenRecent, r);
+            ImGui::EndMenu();
+        }
+        tip("Recently opened or saved files");
+        if (ImGui::MenuItem("Save", "Ctrl+S")) {
+            if (path_.empty() || fs::path(path_).extension() == ".bpt") {
+                fileMode_ = FileDialogMode::SaveAs;
+                std::snprintf(fileName_, sizeof fileName_, "%s.patchwork", doc_.name.empty() ? "untitled" : doc_.name.c_str());
+            } else {
+                saveTo(path_);
+            }
+        }
+        tip("Save to the current file (atomic write)");
+        if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) {
+            fileMode_ = FileDialogMode::SaveAs;
+            std::snprintf(fileName_, sizeof fileName_, "%s.patchwork", doc_.name.empty() ? "untitled" : doc_.name.c_str());
+        }
+        tip("Save under a new name (.patchwork, .bpt, .gltf, .glb)");
+        if (ImGui::MenuItem("Import...")) {
+            fileMode_ = FileDialogMode::Import;
+            fileName_[0] = 0;
+        }
+        traceItem("menu.import");
+        tip("Add the patches of a .bpt or Patchwork glTF file to this document");
+        if (ImGui::MenuItem("Export glTF...")) {
+            fileMode_ = FileDialogMode::ExportGltf;
+            std::snprintf(fileName_, sizeof fileName_, "%s.glb", doc_.name.empty() ? "untitled" : doc_.name.c_str());
+        }
+        traceItem("menu.export");
+        tip("Tessellate and write a glTF 2.0 mesh (patches kept in extras)");
+        if (ImGui::MenuItem("Save Screenshot...", "F12")) {
+            fileMode_ = FileDialogMode::Screenshot;
+            std::snprintf(fileName_, sizeof fileName_, "screenshot.png");
+        }
+        tip("Save the 3D viewport (without panels) as a PNG");
+        ImGui::Separator();
+        if (ImGui::MenuItem("Quit", "Ctrl+Q")) requestAction(PendingAction::Quit);
+        tip("Close the editor (asks about unsaved changes)");
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Edit")) {
+        const std::string u = "Undo " + history_.undoLabel(), r = "Redo " + history_.redoLabel();
+        if (ImGui::MenuItem(u.c_str(), "Ctrl+Z", false, history_.canUndo())) undo();
+        tip("Undo the last edit (one drag is one step)");
+        if (ImGui::MenuItem(r.c_str(), "Ctrl+Shift+Z", false, history_.canRedo())) redo();
+        tip("Redo the undone edit");
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("View")) {
+        if (ImGui::MenuItem("Front", "1")) cam_ = *applyNamedView(cam_, "front");
+        tip("Look along +Y (numpad 1)");
+        if (ImGui::MenuItem("Right", "3")) cam_ = *applyNamedView(cam_, "right");
+        tip("Look along -X (numpad 3)");
+        if (ImGui::MenuItem("Top", "7")) cam_ = *applyNamedView(cam_, "top");
+        tip("Look down (numpad 7)");
+        if (ImGui::MenuItem("Orthographic", "5", cam_.orthographic)) cam_.orthographic = !cam_.orthographic;
+        tip("Toggle perspective / orthographic projection");
+        if (ImGui::MenuItem("Frame Selection", "F")) frameSelection();
+        tip("Fit the selection (or the model) in the view");
+        ImGui::MenuItem("Ground Grid", nullptr, &showGround_);
+        tip("Show the ground-plane grid");
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Help")) {
+        if (ImGui::MenuItem("Keys", "F1")) showHelp_ = true;
+        tip("List every key and mouse action");
+        ImGui::EndMenu();
+    }
+    ImGui::TextDisabled("%s%s", path_.empty() ? (doc_.name.empty() ? "untitled" : doc_.name.c_str()) : path_.c_str(),
+                        isModified() ? "  (modified)" : "");
+    ImGui::EndMainMenuBar();
+}
+
+void Editor::drawLeftPanel() {
+    const ImGuiIO& io = ImGui::GetIO();
+    const float top = ImGui::GetFrameHeight();
+    const float w = std::min(300.0f * uiScale_, io.DisplaySize.x * 0.3f);
+    leftPanelWidth_ = w;
+    ImGui::SetNextWindowPos(ImVec2(0, top));
+    ImGui::SetNextWindowSize(ImVec2(w, io.DisplaySize.y - top));
+    ImGui::Begin("Scene", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+
+    // Outliner.
+    if (ImGui::CollapsingHeader("Outliner", ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::BeginChild("outliner", ImVec2(0, 200), true);
+        for (size_t i = 0; i < doc_.patches.size(); ++i) {
+            const Patch& p = doc_.patches[i];
+            char label[160];
+            std::snprintf(label, sizeof label, "%zu  %s", i, p.name.empty() ? "patch" : p.name.c_str());
+            if (ImGui::Selectable(label, sel_.patch == int(i))) {
+                sel_.patch = int(i);
+                sel_.points.clear();
+            }
+        }
+        for (size_t i = 0; i < doc_.surfaces.size(); ++i) {
+            char label[160];
+            std::snprintf(label, sizeof label, "surface %zu  %s (%ux%u)", i, doc_.surfaces[i].name.c_str(), doc_.surfaces[i].rows,
+                          doc_.surfaces[i].cols);
+            ImGui::TextDisabled("%s", label);
+        }
+        ImGui::EndChild();
+        tip("Patches of the document; click to select one");
+        ImGui::Text("%zu points, %zu patches, %zu joins", doc_.points.size(), doc_.patches.size(), doc_.joins.size());
+    }
+
+    // Inspector.
+    if (ImGui::CollapsingHeader("Inspector", ImGuiTreeNodeFlags_DefaultOpen)) {
+        if (sel_.points.size() == 1 && mode_ == Interaction::None) {
+            const uint32_t p = sel_.points.front();
+            ImGui::Text("Point %u", p);
+            double v[3] = {doc_.points[p].x, doc_.points[p].y, doc_.points[p].z};
+            const double step = 0.001 * modelSize(doc_);
+            if (ImGui::DragScalarN("Position", ImGuiDataType_Double, v, 3, float(step), nullptr, nullptr, "%.4f")) {
+                // Numeric edits go through the solver like a drag, with this point held.
+                std::vector<Vec3> pts = committed_.points;
+                pts[p] = Vec3(v[0], v[1], v[2]);
+                DragSolver s(committed_, {p});
+                s.project(pts);
+                doc_.points = pts;
+                documentChanged(false);
+            }
+            traceItem("inspector.position");
+            if (ImGui::IsItemDeactivatedAfterEdit()) commit("Edit point");
+            tip("Drag to change; joins are held (the solver moves the neighbours)");
+            // Exact entry: applied when Enter is pressed.
+            double typed[3] = {doc_.points[p].x, doc_.points[p].y, doc_.points[p].z};
+            if (ImGui::InputScalarN("Set", ImGuiDataType_Double, typed, 3, nullptr, nullptr, "%.6g",
+                                    ImGuiInputTextFlags_EnterReturnsTrue)) {
+                std::vector<Vec3> pts = committed_.points;
+                pts[p] = Vec3(typed[0], typed[1], typed[2]);
+                DragSolver s(committed_, {p});
+                s.project(pts);
+                doc_.points = pts;
+                documentChanged(false);
+                commit("Set point");
+            }
+            traceItem("inspector.set");
+            tip("Type exact coordinates and press Enter; joins are held");
+        } else if (sel_.points.size() > 1) {
+            const Vec3 c = selectionCentroid(doc_, sel_);
+            ImGui::Text("%zu points selected", sel_.points.size());
+            ImGui::Text("Centre %.4f %.4f %.4f", c.x, c.y, c.z);
+        } else if (sel_.points.empty()) {
+            ImGui::TextDisabled("No point selected");
+        }
+        if (sel_.patch >= 0 && sel_.patch < int(doc_.patches.size())) {
+            ImGui::Separator();
+            Patch& pt = doc_.patches[size_t(sel_.patch)];
+            ImGui::Text("Patch %d  (%s)", sel_.patch, basisName(pt.basis).data());
+            char name[128];
+            std::snprintf(name, sizeof name, "%s", pt.name.c_str());
+            if (ImGui::InputText("Name", name, sizeof name)) pt.name = name;
+            if (ImGui::IsItemDeactivatedAfterEdit()) commit("Rename patch");
+            tip("Name shown in the outliner");
+            bool ov = pt.tessOverride.has_value();
+            if (ImGui::Checkbox("Override tessellation", &ov)) {
+                if (ov) pt.tessOverride = std::array<float, 6>{8, 8, 8, 8, 8, 8};
+                else pt.tessOverride.reset();
+                commit("Patch tessellation override");
+                documentChanged(false);
+            }
+            tip("Give this patch its own outer/inner levels");
+            if (pt.tessOverride) {
+                if (ImGui::SliderFloat4("Outer##ov", pt.tessOverride->data(), 1.0f, 64.0f, "%.0f")) documentChanged(false);
+                if (ImGui::IsItemDeactivatedAfterEdit()) commit("Patch tessellation override");
+                tip("Outer levels of edges u0, v0, u1, v1");
+                if (ImGui::SliderFloat2("Inner##ov", pt.tessOverride->data() + 4, 1.0f, 64.0f, "%.0f")) documentChanged(false);
+                if (ImGui::IsItemDeactivatedAfterEdit()) commit("Patch tessellation override");
+                tip("Inner levels along u and v");
+            }
+        }
+    }
+
+    // Patch operations.
+    if (ImGui::CollapsingHeader("Patch operations", ImGuiTreeNodeFlags_DefaultOpen)) {
+        const bool hasPatch = sel_.patch >= 0 && sel_.patch < int(doc_.patches.size());
+        const uint32_t p = hasPatch ? uint32_t(sel_.patch) : 0;
+        if (ImGui::Button("Add flat patch")) {
+            const Vec3 c(cam_.target[0], cam_.target[1], cam_.target[2]);
+            const double size = std::max(0.2 * modelSize(doc_), 1.0);
+            int created = -1;
+            patchOp("Add patch", [&](Document& d) { created = int(addFlatPatch(d, c, size, cam_.zUp)); });
+            if (created >= 0) sel_.patch = created;
+        }
+        tip("Add a flat 1x1 Bézier patch at the view target");
+        ImGui::BeginDisabled(!hasPatch);
+        ImGui::SameLine();
+        if (ImGui::Button("Duplicate")) {
+            int created = -1;
+            const Vec3 off(0.1 * modelSize(doc_), 0, 0);
+            patchOp("Duplicate patch", [&](Document& d) { created = int(duplicatePatch(d, p, off)); });
+            if (created >= 0) sel_.patch = created;
+        }
+        tip("Copy the selected patch with its own points (Shift+D)");
+        ImGui::SameLine();
+        if (ImGui::Button("Delete")) {
+            patchOp("Delete patch", [&](Document& d) { deletePatch(d, p); });
+            sel_.clear();
+        }
+        tip("Delete the selected patch and its joins (Delete)");
+        if (ImGui::Button("Flip")) patchOp("Flip patch", [&](Document& d) { flipPatch(d, p); });
+        tip("Reverse the u direction so the normal points the other way");
+        ImGui::SameLine();
+        std::string ex = std::string("Extrude edge ") + kEdgeNames[int(lastEdge_)];
+        const bool extrude = ImGui::Button(ex.c_str());
+        traceItem("op.extrude");
+        if (extrude) {
+            int created = -1;
+            const Edge e = lastEdge_;
+            patchOp("Extrude edge", [&](Document& d) { created = int(extrudeEdge(d, p, e)); });
+            if (created >= 0) sel_.patch = created;
+        }
+        tip("Add a C1 patch continuing the highlighted edge (click the surface near an edge to choose it)");
+        ImGui::SliderFloat("t", &splitT_, 0.05f, 0.95f, "%.2f");
+        tip("Split parameter");
+        if (ImGui::Button("Split at u")) patchOp("Split patch", [&](Document& d) { splitPatch(d, p, true, splitT_); });
+        tip("Exact de Casteljau split along u at t (new shared curve, C1/G1 join)");
+        ImGui::SameLine();
+        if (ImGui::Button("Split at v")) patchOp("Split patch", [&](Document& d) { splitPatch(d, p, false, splitT_); });
+        tip("Exact de Casteljau split along v at t");
+        const int j = hasPatch ? findJoin(doc_, p, lastEdge_) : -1;
+        ImGui::BeginDisabled(j < 0);
+        if (ImGui::Button("Unjoin highlighted edge")) patchOp("Unjoin", [&](Document& d) { unjoin(d, size_t(j)); });
+        tip("Remove the join on the highlighted edge; the other patch gets its own edge points");
+        ImGui::EndDisabled();
+        ImGui::EndDisabled();
+        ImGui::Separator();
+        ImGui::TextUnformatted("Join two boundary edges");
+        const int np = int(doc_.patches.size());
+        ImGui::SetNextItemWidth(60);
+        ImGui::InputInt("##ja", &joinA_, 0);
+        tip("Patch A");
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(60);
+        ImGui::Combo("##jea", &joinEdgeA_, kEdgeNames, 4);
+        tip("Edge of patch A");
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(60);
+        ImGui::InputInt("##jb", &joinB_, 0);
+        tip("Patch B");
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(60);
+        ImGui::Combo("##jeb", &joinEdgeB_, kEdgeNames, 4);
+        tip("Edge of patch B");
+        joinA_ = std::clamp(joinA_, 0, std::max(np - 1, 0));
+        joinB_ = std::clamp(joinB_, 0, std::max(np - 1, 0));
+        const char* kinds[] = {"C0", "C1", "G1"};
+        ImGui::SetNextItemWidth(80);
+        ImGui::Combo("Continuity", &joinKind_, kinds, 3);
+        tip("C0: shared edge; C1: equal tangents; G1: tangents in a fixed ratio");
+        ImGui::SameLine();
+        if (ImGui::Button("Join")) {
+            const uint32_t a = uint32_t(joinA_), b = uint32_t(joinB_);
+            const Edge ea = Edge(joinEdgeA_), eb = Edge(joinEdgeB_);
+            const Continuity c = Continuity(joinKind_);
+            patchOp("Join edges", [&](Document& d) { joinEdges(d, a, ea, b, eb, c); });
+        }
+        tip("Merge the two edges' points in the pool and record the join (constraints projected)");
+    }
+    ImGui::End();
+}
+
+void Editor::drawRightPanel() {
+    const ImGuiIO& io = ImGui::GetIO();
+    const float top = ImGui::GetFrameHeight();
+    const float w = std::min(330.0f * uiScale_, io.DisplaySize.x * 0.3f);
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - w, top));
+    ImGui::SetNextWindowSize(ImVec2(w, io.DisplaySize.y - top));
+    ImGui::Begin("Properties", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    TessSettings& ts = doc_.tess;
+    DisplaySettings& ds = doc_.display;
+    auto edited = [&](bool changed, const char* label) {
+        if (changed) ++docVersion_;  // settings travel in the render options: nothing to upload
+        if (ImGui::IsItemDeactivatedAfterEdit() || (changed && !ImGui::IsItemActive())) commit(label);
+    };
+
+    if (ImGui::CollapsingHeader("Tessellation", ImGuiTreeNodeFlags_DefaultOpen)) {
+        bool linked = ts.linked;
+        if (ImGui::Checkbox("Link levels", &linked)) {
+            ts.linked = linked;
+            commit("Link levels");
+        }
+        tip("One slider drives all four outer and both inner levels");
+        if (ts.linked) {
+            float l = ts.outer[0];
+            const bool c = ImGui::SliderFloat("Level", &l, 1.0f, 64.0f, "%.1f");
+            if (c) {
+                ts.outer = {l, l, l, l};
+                ts.inner = {l, l};
+            }
+            edited(c, "Tessellation level");
+            tip("Outer and inner tessellation level (1-64)");
+        } else {
+            edited(ImGui::SliderFloat4("Outer", ts.outer.data(), 1.0f, 64.0f, "%.1f"), "Outer levels");
+            tip("Outer levels: edge u=0, v=0, u=1, v=1");
+            edited(ImGui::SliderFloat2("Inner", ts.inner.data(), 1.0f, 64.0f, "%.1f"), "Inner levels");
+            tip("Inner levels along u and v");
+        }
+        const char* spacings[] = {"equal", "fractional odd", "fractional even", "pow2"};
+        int sp = int(ts.spacing);
+        if (ImGui::Combo("Partitioning", &sp, spacings, 4)) {
+            ts.spacing = Spacing(sp);
+            commit("Partitioning");
+        }
+        tip("Spacing of the tessellator: equal, fractional odd/even (smooth level changes), pow2 (rounded up)");
+        const char* modes[] = {"none", "distance", "screen space", "orientation"};
+        int am = int(ts.adaptive);
+        if (ImGui::Combo("Adaptive", &am, modes, 4)) {
+            ts.adaptive = AdaptiveMode(am);
+            commit("Adaptive mode");
+        }
+        tip("Per-edge levels from the distance to the eye, the projected edge length, or the silhouette");
+        if (ts.adaptive == AdaptiveMode::Distance) {
+            edited(ImGui::DragFloat("Near", &ts.distanceNear, 0.05f, 0.0f, 1e6f), "Adaptive near");
+            tip("Full level at or below this distance");
+            edited(ImGui::DragFloat("Far", &ts.distanceFar, 0.1f, 0.0f, 1e6f), "Adaptive far");
+            tip("Level 1 at or beyond this distance");
+        }
+        if (ts.adaptive == AdaptiveMode::ScreenSpace) {
+            edited(ImGui::SliderFloat("Pixels/segment", &ts.targetPixels, 1.0f, 64.0f, "%.1f"), "Target pixels");
+            tip("Target length of one segment on screen (about 8 px is the lecture advice)");
+        }
+        edited(ImGui::SliderFloat("Max level", &ts.maxLevel, 1.0f, 64.0f, "%.0f"), "Max level");
+        tip("Upper clamp of every level");
+        bool cb = ts.cullBackfaces, co = ts.cullOffscreen;
+        if (ImGui::Checkbox("Cull back faces", &cb)) {
+            ts.cullBackfaces = cb;
+            commit("Culling");
+        }
+        tip("Skip patches whose control net faces away from the eye");
+        ImGui::SameLine();
+        if (ImGui::Checkbox("Cull off-screen", &co)) {
+            ts.cullOffscreen = co;
+            commit("Culling");
+        }
+        tip("Skip patches outside the view frustum");
+    }
+
+    if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) {
+        const char* shadings[] = {"lit", "normal", "patch id", "uv checker", "zebra", "gaussian curvature", "mean curvature"};
+        int sh = int(ds.shading);
+        if (ImGui::Combo("Shading", &sh, shadings, 7)) {
+            ds.shading = ShadingMode(sh);
+            commit("Shading");
+        }
+        tip("How the surface is coloured");
+        auto flag = [&](const char* label, bool& v, const char* help) {
+            bool b = v;
+            if (ImGui::Checkbox(label, &b)) {
+                v = b;
+                commit(label);
+            }
+            tip(help);
+        };
+        flag("Control net", ds.showGrid, "Show the control points and net lines");
+        ImGui::SameLine();
+        flag("Wireframe", ds.showWireframe, "Show the tessellated triangles");
+        flag("Normals", ds.showNormals, "Show surface normals");
+        ImGui::SameLine();
+        flag("Boundaries", ds.showBoundaries, "Patch boundaries coloured by continuity (grey open, red C0, green C1, blue G1)");
+        traceItem("display.boundaries");
+        edited(ImGui::SliderFloat("Normal length", &ds.normalLength, 0.001f, 1.0f, "%.3f", ImGuiSliderFlags_Logarithmic), "Normal length");
+        tip("Length of the drawn normals");
+        edited(ImGui::SliderFloat3("Light", ds.lightDir.data(), -1.0f, 1.0f, "%.2f"), "Light direction");
+        tip("Direction towards the light");
+        edited(ImGui::ColorEdit3("Background", ds.background.data()), "Background");
+        tip("Viewport clear colour");
+    }
+
+    if (ImGui::CollapsingHeader("Stats", ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::Text("Frame       %.2f ms", frameMs_);
+        tip("Time between the last two frames (paced to at most 60 fps; idle when nothing changes)");
+        ImGui::Text("Render      %.2f ms (CPU wall)", stats_.wallMs);
+        tip("Record + submit + wait of the 3D view");
+        if (stats_.gpuMs >= 0) ImGui::Text("GPU         %.2f ms", stats_.gpuMs);
+        else ImGui::TextDisabled("GPU         (no timestamps)");
+        tip("Timestamp queries around the frame");
+        ImGui::Text("Triangles   %llu", (unsigned long long)stats_.triangles());
+        tip("Triangles reaching the clipper in the surface pass");
+        ImGui::Text("Evaluations %llu", (unsigned long long)stats_.tesInvocations);
+        tip("Tessellation evaluation shader invocations");
+        ImGui::Text("Patches     %u (culled %u)", stats_.patches, stats_.patchesCulled);
+        tip("Patches drawn and patches culled by the control shader");
+        ImGui::Text("Draws       %u", stats_.draws);
+        tip("vkCmdDraw calls this frame");
+    }
+
+    const bool continuityOpen = ImGui::CollapsingHeader("Continuity");
+    traceItem("panel.continuity");
+    if (continuityOpen) {
+        if (continuityVersion_ != docVersion_ && mode_ == Interaction::None) {
+            continuity_ = continuityReport(doc_, 16);
+            continuityVersion_ = docVersion_;
+        }
+        ImGui::Text("Max constraint residual %.3g", mode_ == Interaction::None ? maxConstraintResidual(doc_) : 0.0);
+        tip("Largest violation of the join constraints (should be <= 1e-6 x model size)");
+        if (ImGui::BeginTable("cont", 5, ImGuiTableFlags_Borders | ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg, ImVec2(0, 220))) {
+            ImGui::TableSetupColumn("join", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("00.u0-00.u0").x);
+            ImGui::TableSetupColumn("kind", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("kind").x);
+            ImGui::TableSetupColumn("C0 gap");
+            ImGui::TableSetupColumn("C1 res");
+            ImGui::TableSetupColumn("angle");
+            ImGui::TableHeadersRow();
+            for (const JoinContinuity& c : continuity_) {
+                if (c.join >= doc_.joins.size()) continue;
+                const Join& jn = doc_.joins[c.join];
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::Text("%u.%s-%u.%s", jn.patchA, kEdgeNames[int(jn.edgeA)], jn.patchB, kEdgeNames[int(jn.edgeB)]);
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(continuityName(jn.continuity).data());
+                ImGui::TableNextColumn();
+                ImGui::Text("%.2g", c.c0Gap);
+                ImGui::TableNextColumn();
+                ImGui::Text("%.2g", c.c1Residual);
+                ImGui::TableNextColumn();
+                ImGui::Text("%.2f°", c.normalAngleDeg);
+            }
+            ImGui::EndTable();
+        }
+        tip("Measured continuity of every join (continuityReport)");
+    }
+    ImGui::End();
+}
+
+void Editor::drawFileDialog() {
+    if (fileMode_ == FileDialogMode::None) return;
+    const char* titles[] = {"", "Open", "Save As", "Import", "Export glTF", "Save Screenshot"};
+    const char* title = titles[int(fileMode_)];
+    ImGui::OpenPopup("File browser");
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowSize(ImVec2(std::min(640.0f, io.DisplaySize.x - 40), std::min(480.0f, io.DisplaySize.y - 40)), ImGuiCond_Always);
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    if (!ImGui::BeginPopupModal("File browser", nullptr, ImGuiWindowFlags_NoResize)) return;
+    openModal_ = "file";
+    bool doubleClicked = false;
+    ImGui::Text("%s: %s", title, browseDir_.string().c_str());
+    if (ImGui::Button("Up")) browseDir_ = browseDir_.parent_path();
+    tip("Parent directory");
+    ImGui::BeginChild("entries", ImVec2(0, -90), true);
+    std::vector<fs::directory_entry> entries;
+    std::error_code ec;
+    for (const fs::directory_entry& e : fs::directory_iterator(browseDir_, ec)) entries.push_back(e);
+    std::sort(entries.begin(), entries.end(), [](const fs::directory_entry& a, const fs::directory_entry& b) {
+        if (a.is_directory() != b.is_directory()) return a.is_directory();
+        return a.path().filename() < b.path().filename();
+    });
+    for (const fs::directory_entry& e : entries) {
+        const std::string name = e.path().filename().string();
+        if (!name.empty() && name[0] == '.') continue;
+        if (e.is_directory(ec)) {
+            if (ImGui::Selectable((name + "/").c_str(), false, ImGuiSelectableFlags_AllowDoubleClick)) browseDir_ = e.path();
+        } else if (ImGui::Selectable(name.c_str(), name == fileName_, ImGuiSelectableFlags_AllowDoubleClick)) {
+            std::snprintf(fileName_, sizeof fileName_, "%s", name.c_str());
+            doubleClicked = ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left);
+        }
+    }
+    if (ec) ImGui::TextDisabled("(cannot list: %s)", ec.message().c_str());
+    ImGui::EndChild();
+    ImGui::InputText("File name", fileName_, sizeof fileName_);
+    traceItem("file.name");
+    tip("Name in the directory above, or an absolute path");
+    if (fileMode_ == FileDialogMode::ExportGltf || fileMode_ == FileDialogMode::SaveAs) {
+        ImGui::SetNextItemWidth(120);
+        ImGui::SliderInt("Export level", &exportOptions_.level, 0, limits::kMaxExportLevel);
+        tip("glTF tessellation level (0: the document's level)");
+        ImGui::SameLine();
+        ImGui::Checkbox("Merge", &exportOptions_.merge);
+        tip("One mesh primitive for everything");
+        ImGui::SameLine();
+        ImGui::Checkbox("Cage", &exportOptions_.cage);
+        tip("Also export the control cage as lines");
+    }
+    const bool ok = ImGui::Button("OK", ImVec2(100, 0)) || doubleClicked;
+    traceItem("file.ok");
+    tip("Confirm");
+    ImGui::SameLine();
+    const bool cancel = ImGui::Button("Cancel", ImVec2(100, 0)) || keyPressed(GLFW_KEY_ESCAPE, 0);
+    tip("Close without doing anything");
+    if (ok && fileName_[0]) {
+        fs::path p = fileName_;
+        if (p.is_relative()) p = browseDir_ / p;
+        const FileDialogMode m = fileMode_;
+        fileMode_ = FileDialogMode::None;
+        ImGui::CloseCurrentPopup();
+        if (m == FileDialogMode::Open) loadFile(p.string(), false);
+        else if (m == FileDialogMode::Import) loadFile(p.string(), true);
+        else if (m == FileDialogMode::SaveAs) saveTo(p.string());
+        else if (m == FileDialogMode::ExportGltf) {
+            try {
+                Document out = doc_;
+                out.camera = cam_;
+                exportGltf(out, p, exportOptions_);
+                status_ = "Exported " + p.string();
+                statusTime_ = std::chrono::steady_clock::now();
+            } catch (const std::exception& e) {
+                showError(std::string("Export failed.\n\n") + e.what());
+            }
+        } else if (m == FileDialogMode::Screenshot) {
+            takeScreenshot(p.string());
+        }
+    } else if (cancel) {
+        fileMode_ = FileDialogMode::None;
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
+void Editor::drawModals() {
+    const ImGuiIO& io = ImGui::GetIO();
+    const ImVec2 centre(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f);
+    if (openError_) {
+        ImGui::OpenPopup("Error");
+        openError_ = false;
+    }
+    ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    if (ImGui::BeginPopupModal("Error", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        openModal_ = "error";
+        ImGui::PushTextWrapPos(560.0f);
+        ImGui::TextUnformatted(errorMessage_.c_str());
+        ImGui::PopTextWrapPos();
+        const bool ok = ImGui::Button("OK", ImVec2(120, 0));
+        traceItem("error.ok");
+        if (ok || keyPressed(GLFW_KEY_ENTER, 0)) {
+            errorMessage_.clear();
+            ImGui::CloseCurrentPopup();
+        }
+        tip("Close this message");
+        ImGui::EndPopup();
+    }
+
+    if (openUnsavedPrompt_) {
+        ImGui::OpenPopup("Unsaved changes");
+        openUnsavedPrompt_ = false;
+    }
+    ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        openModal_ = "unsaved";
+        ImGui::Text("Save changes to %s?", path_.empty() ? "the untitled document" : path_.c_str());
+        if (ImGui::Button("Save", ImVec2(100, 0))) {
+            ImGui::CloseCurrentPopup();
+            const std::string ext = path_.empty() ? "" : fs::path(path_).extension().string();
+            if (!path_.empty() && ext != ".bpt" && saveTo(path_)) performAction(pending_);
+            else if (path_.empty() || ext == ".bpt") {
+                pending_ = PendingAction::None;
+                fileMode_ = FileDialogMode::SaveAs;
+                std::snprintf(fileName_, sizeof fileName_, "%s.patchwork", doc_.name.empty() ? "untitled" : doc_.name.c_str());
+            }
+        }
+        tip("Save, then continue");
+        ImGui::SameLine();
+        const bool discard = ImGui::Button("Discard", ImVec2(100, 0));
+        traceItem("unsaved.discard");
+        if (discard) {
+            ImGui::CloseCurrentPopup();
+            performAction(pending_);
+        }
+        tip("Continue and lose the changes");
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel", ImVec2(100, 0)) || keyPressed(GLFW_KEY_ESCAPE, 0)) {
+            pending_ = PendingAction::None;
+            ImGui::CloseCurrentPopup();
+        }
+        tip("Keep editing");
+        ImGui::EndPopup();
+    }
+
+    if (offerRecovery_) {
+        ImGui::OpenPopup("Recover autosave");
+        offerRecovery_ = false;
+    }
+    ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    if (ImGui::BeginPopupModal("Recover autosave", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        if (!recoverable_.empty()) {
+            const AutosaveEntry& e = recoverable_.front();
+            ImGui::Text("Patchwork did not exit cleanly. An autosave of %s exists.",
+                        e.originalPath.empty() ? "an untitled document" : e.originalPath.c_str());
+            ImGui::TextDisabled("%s", e.document.string().c_str());
+        }
+        openModal_ = "recover";
+        const bool recover = ImGui::Button("Recover", ImVec2(120, 0));
+        traceItem("recover");
+        if (recover) {
+            ImGui::CloseCurrentPopup();
+            performAction(PendingAction::Recover);
+        }
+        tip("Open the autosaved document (marked modified; save it to keep it)");
+        ImGui::SameLine();
+        if (ImGui::Button("Discard", ImVec2(120, 0))) {
+            for (const AutosaveEntry& e : recoverable_) removeAutosave(e);
+            recoverable_.clear();
+            ImGui::CloseCurrentPopup();
+        }
+        tip("Delete the autosave");
+        ImGui::SameLine();
+        if (ImGui::Button("Later", ImVec2(120, 0))) ImGui::CloseCurrentPopup();
+        tip("Keep the autosave for the next start");
+        ImGui::EndPopup();
+    }
+}
+
+void Editor::drawHelp() {
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowBgAlpha(0.92f);
+    if (ImGui::Begin("Keys (F1)", &showHelp_, ImGuiWindowFlags_AlwaysAutoResize)) {
+        if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders)) {
+            for (const KeyHelp& k : kKeys) {
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(k.keys);
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(k.what);
+            }
+            ImGui::EndTable();
+        }
+    }
+    ImGui::End();
+}
+
+}  // namespace pw::ui

@@ -1,0 +1,405 @@
+// Viewport interaction (Blender conventions, DESIGN §6) and the overlays drawn with ImGui's
+// background draw list: ground grid, axis gizmo, selection, box, axis-constraint line.
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+
+#include <imgui.h>
+
+#include "camera_math.hpp"
+#include "editor.hpp"
+#include "patch_eval.hpp"
+#include "patch_ops.hpp"
+#include "point_upload.hpp"
+#include "renderer.hpp"
+
+namespace pw::ui {
+
+namespace {
+
+constexpr double kPickRadiusPx = 9.0;
+constexpr double kDragThresholdPx = 3.0;
+
+Vec3 axisVector(int axis) {
+    Vec3 a(0.0);
+    a[axis] = 1.0;
+    return a;
+}
+
+
+}  // namespace
+
+bool Editor::keyPressed(int key, int mods) const {
+    constexpr int kMask = GLFW_MOD_CONTROL | GLFW_MOD_SHIFT | GLFW_MOD_ALT | GLFW_MOD_SUPER;
+    for (const auto& [k, m] : keyQueue_)
+        if (k == key && (m & kMask) == mods) return true;
+    return false;
+}
+
+void Editor::frameBox(const Bounds& box) {
+    int W = 0, H = 0;
+    glfwGetWindowSize(window_, &W, &H);
+    W = std::max(W, 1), H = std::max(H, 1);
+    // Fit the box into the part of the window between the side panels, then shift it there.
+    const double left = std::min(300.0 * uiScale_, W * 0.3), right = std::min(330.0 * uiScale_, W * 0.3);
+    const double visible = std::max(W - left - right, W * 0.25);
+    cam_ = frameBounds(cam_, box, visible / H);
+    panCamera(cam_, 0.5 * (left - right), 0.0, H);
+}
+
+void Editor::frameSelection() { frameBox(frameTargetBounds(doc_, sel_)); }
+
+void Editor::viewportInput() {
+    ImGuiIO& io = ImGui::GetIO();
+    const double mx = io.MousePos.x, my = io.MousePos.y;
+    const int W = int(io.DisplaySize.x), H = int(io.DisplaySize.y);
+    const bool overUi = io.WantCaptureMouse && mode_ == Interaction::None;
+    const bool mouseValid = ImGui::IsMousePosValid();
+
+    // Step 1: keyboard (unless a text field has focus). Shortcuts use the queued key events with
+    // their own modifiers; held modifiers during a drag (Ctrl snap) use the live state.
+    if (!io.WantCaptureKeyboard) {
+        constexpr int C = GLFW_MOD_CONTROL, S = GLFW_MOD_SHIFT, A = GLFW_MOD_ALT;
+        const bool dragging = mode_ == Interaction::DragPoints || mode_ == Interaction::Grab;
+        if (keyPressed(GLFW_KEY_Z, C)) undo();
+        if (keyPressed(GLFW_KEY_Z, C | S) || keyPressed(GLFW_KEY_Y, C)) redo();
+        const bool save = keyPressed(GLFW_KEY_S, C), saveAs = keyPressed(GLFW_KEY_S, C | S);
+        if (save || saveAs) {
+            const std::string ext = path_.empty() ? "" : std::filesystem::path(path_).extension().string();
+            if (saveAs || path_.empty() || (ext != ".patchwork" && ext != ".gltf" && ext != ".glb")) {
+                fileMode_ = FileDialogMode::SaveAs;
+                std::snprintf(fileName_, sizeof fileName_, "%s.patchwork", doc_.name.empty() ? "untitled" : doc_.name.c_str());
+            } else {
+                saveTo(path_);
+            }
+        }
+        if (keyPressed(GLFW_KEY_O, C)) requestAction(PendingAction::Open);
+        if (keyPressed(GLFW_KEY_N, C)) requestAction(PendingAction::New);
+        if (keyPressed(GLFW_KEY_Q, C)) requestAction(PendingAction::Quit);
+        if (keyPressed(GLFW_KEY_F1, 0) || keyPressed(GLFW_KEY_SLASH, S)) showHelp_ = !showHelp_;
+        if (keyPressed(GLFW_KEY_F12, 0)) {
+            char name[64];
+            const std::time_t t = std::time(nullptr);
+            std::strftime(name, sizeof name, "patchwork-%Y%m%d-%H%M%S.png", std::localtime(&t));
+            takeScreenshot(name);
+        }
+        if (!dragging) {
+            if (keyPressed(GLFW_KEY_F, 0)) frameSelection();
+            auto view = [&](int a, int b, const char* name, const char* ctrlName) {
+                if (keyPressed(a, 0) || keyPressed(b, 0))
+                    if (auto c = applyNamedView(cam_, name)) cam_ = *c;
+                if (keyPressed(a, C) || keyPressed(b, C))
+                    if (auto c = applyNamedView(cam_, ctrlName)) cam_ = *c;
+            };
+            view(GLFW_KEY_KP_1, GLFW_KEY_1, "front", "back");
+            view(GLFW_KEY_KP_3, GLFW_KEY_3, "right", "left");
+            view(GLFW_KEY_KP_7, GLFW_KEY_7, "top", "bottom");
+            if (keyPressed(GLFW_KEY_KP_5, 0) || keyPressed(GLFW_KEY_5, 0)) cam_.orthographic = !cam_.orthographic;
+            if (keyPressed(GLFW_KEY_G, 0) && !sel_.points.empty() && mode_ == Interaction::None) {
+                pressX_ = mx;
+                pressY_ = my;
+                beginDrag(true);
+            }
+            if (mode_ == Interaction::None) {
+                if (keyPressed(GLFW_KEY_A, A)) {
+                    sel_.clear();
+                } else if (keyPressed(GLFW_KEY_A, 0)) {
+                    sel_.points.clear();
+                    for (size_t i = 0; i < usedMask_.size(); ++i)
+                        if (usedMask_[i]) sel_.points.push_back(uint32_t(i));
+                }
+                if (keyPressed(GLFW_KEY_DELETE, 0) && sel_.patch >= 0) {
+                    const uint32_t p = uint32_t(sel_.patch);
+                    patchOp("Delete patch", [p](Document& d) { deletePatch(d, p); });
+                    sel_.clear();
+                }
+                if (keyPressed(GLFW_KEY_D, S) && sel_.patch >= 0) {
+                    const uint32_t p = uint32_t(sel_.patch);
+                    const Vec3 off(0.1 * modelSize(doc_), 0.0, 0.0);
+                    int created = -1;
+                    patchOp("Duplicate patch", [p, off, &created](Document& d) { created = int(duplicatePatch(d, p, off)); });
+                    if (created >= 0) sel_.patch = created;
+                }
+                if (keyPressed(GLFW_KEY_ESCAPE, 0)) sel_.clear();
+            }
+        } else {
+            for (int a = 0; a < 3; ++a)
+                if (keyPressed(GLFW_KEY_X + a, 0)) {
+                    drag_.axis = drag_.axis == a ? -1 : a;
+                    updateDrag(mx, my);
+                }
+            if (keyPressed(GLFW_KEY_ESCAPE, 0)) cancelDrag();
+            if (mode_ == Interaction::Grab && (keyPressed(GLFW_KEY_ENTER, 0) || keyPressed(GLFW_KEY_KP_ENTER, 0))) finishDrag();
+        }
+    }
+
+    // Step 2: hover highlight.
+    if (mode_ == Interaction::None && !overUi && mouseValid)
+        hovered_ = pickPoint(cam_, doc_.points, mx, my, W, H, kPickRadiusPx, &usedMask_);
+    else if (mode_ == Interaction::None)
+        hovered_ = -1;
+
+    // Step 3: navigation — wheel zoom, middle orbit / Shift+middle pan, Alt+left orbit.
+    if (!overUi && mouseValid && io.MouseWheel != 0.0f) zoomCamera(cam_, io.MouseWheel);
+    if (mode_ == Interaction::None && !overUi && mouseValid) {
+        if (ImGui::IsMouseClicked(ImGuiMouseButton_Middle)) mode_ = io.KeyShift ? Interaction::Pan : Interaction::Orbit;
+        else if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && io.KeyAlt) mode_ = Interaction::Orbit;
+        if (mode_ != Interaction::None) lastX_ = mx, lastY_ = my;
+    }
+    if (mode_ == Interaction::Orbit || mode_ == Interaction::Pan) {
+        const double dx = mx - lastX_, dy = my - lastY_;
+        if (mode_ == Interaction::Orbit)
+            orbitCamera(cam_, dx, dy);
+        else
+            panCamera(cam_, dx, dy, H);
+        lastX_ = mx, lastY_ = my;
+        if (!ImGui::IsMouseDown(ImGuiMouseButton_Middle) && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) mode_ = Interaction::None;
+        return;
+    }
+
+    // Step 4: selection and point drags.
+    switch (mode_) {
+        case Interaction::None:
+            if (!overUi && mouseValid && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+                pressX_ = leftPressed_ ? leftPressX_ : mx;
+                pressY_ = leftPressed_ ? leftPressY_ : my;
+                pressShift_ = io.KeyShift;
+                hovered_ = pickPoint(cam_, doc_.points, pressX_, pressY_, W, H, kPickRadiusPx, &usedMask_);
+                if (hovered_ >= 0) {
+                    const bool was = sel_.contains(uint32_t(hovered_));
+                    if (pressShift_ || !was) applyClick(sel_, hovered_, pressShift_);
+                    mode_ = sel_.contains(uint32_t(hovered_)) ? Interaction::PendingDrag : Interaction::None;
+                    if (!pressShift_ && !was) sel_.patch = -1;
+                } else {
+                    mode_ = Interaction::BoxSelect;
+                }
+            }
+            break;
+        case Interaction::PendingDrag:
+            if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+                // A plain click on an already selected point selects just that point.
+                if (!pressShift_ && hovered_ >= 0) applyClick(sel_, hovered_, false);
+                mode_ = Interaction::None;
+            } else if (std::hypot(mx - pressX_, my - pressY_) > kDragThresholdPx) {
+                beginDrag(false);
+                updateDrag(mx, my);
+            }
+            break;
+        case Interaction::DragPoints:
+            if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) {
+                cancelDrag();
+            } else if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+                updateDrag(mx, my);
+                finishDrag();
+            } else if (mx != lastX_ || my != lastY_ || io.KeyCtrl != drag_.grab) {
+                updateDrag(mx, my);
+            }
+            break;
+        case Interaction::Grab:
+            if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) cancelDrag();
+            else if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) finishDrag();
+            else updateDrag(mx, my);
+            break;
+        case Interaction::BoxSelect:
+            if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+                mode_ = Interaction::None;
+                if (std::hypot(mx - pressX_, my - pressY_) <= kDragThresholdPx) {
+                    // A click on empty space: pick a patch by its surface, else clear.
+                    const auto hit = pickSurface(doc_, rayThroughPixel(cam_, mx, my, W, H));
+                    if (!pressShift_) sel_.points.clear();
+                    if (hit && hit->patch >= 0) {
+                        sel_.patch = hit->patch;
+                        lastEdge_ = nearestEdge(hit->u, hit->v);
+                    } else if (!pressShift_) {
+                        sel_.patch = -1;
+                    }
+                } else {
+                    applyBox(sel_, pointsInBox(cam_, doc_.points, {pressX_, pressY_}, {mx, my}, W, H, &usedMask_), pressShift_);
+                }
+            }
+            break;
+        default: break;
+    }
+    lastX_ = mx, lastY_ = my;
+}
+
+void Editor::beginDrag(bool grab) {
+    if (sel_.points.empty()) return;
+    const ImGuiIO& io = ImGui::GetIO();
+    drag_ = DragState{};
+    drag_.grab = grab;
+    drag_.start = doc_.points;
+    drag_.uploaded = doc_.points;
+    drag_.moved = sel_.points;
+    drag_.solver = std::make_unique<DragSolver>(doc_, drag_.moved);  // factorised once per drag
+    Vec3 c(0.0);
+    for (uint32_t p : drag_.moved) c += doc_.points[p];
+    drag_.anchor = c / double(drag_.moved.size());
+    Vec3 r, u, f;
+    cameraAxes(cam_, r, u, f);
+    drag_.planeNormal = f;
+    drag_.startX = pressX_;
+    drag_.startY = pressY_;
+    const Ray ray = rayThroughPixel(cam_, pressX_, pressY_, int(io.DisplaySize.x), int(io.DisplaySize.y));
+    drag_.startHit = intersectPlane(ray, drag_.anchor, f).value_or(drag_.anchor);
+    mode_ = grab ? Interaction::Grab : Interaction::DragPoints;
+}
+
+void Editor::updateDrag(double mx, double my) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const int W = int(io.DisplaySize.x), H = int(io.DisplaySize.y);
+    const Ray ray = rayThroughPixel(cam_, mx, my, W, H);
+    Vec3 delta(0.0);
+    if (drag_.axis < 0) {
+        const auto hit = intersectPlane(ray, drag_.anchor, drag_.planeNormal);
+        if (!hit) return;
+        delta = *hit - drag_.startHit;
+    } else {
+        const Vec3 a = axisVector(drag_.axis);
+        const Ray r0 = rayThroughPixel(cam_, drag_.startX, drag_.startY, W, H);
+        delta = closestPointOnAxis(ray, drag_.anchor, a) - closestPointOnAxis(r0, drag_.anchor, a);
+    }
+    if (io.KeyCtrl) {  // snap the moved centre to the grid
+        const Vec3 snapped = snapToGrid(drag_.anchor + delta, niceGridStep(modelSize(doc_)) / 5.0);
+        if (drag_.axis < 0)
+            delta = snapped - drag_.anchor;
+        else
+            delta[drag_.axis] = snapped[drag_.axis] - drag_.anchor[drag_.axis];
+    }
+    doc_.points = drag_.start;
+    for (uint32_t p : drag_.moved) doc_.points[p] = drag_.start[p] + delta;
+    drag_.solver->project(doc_.points);
+    // Partial upload: only the points that moved since the last frame.
+    takeChangedPoints(drag_.uploaded, doc_.points, drag_.changed);
+    renderer_->updatePoints(doc_.points, drag_.changed);
+    wake();
+}
+
+void Editor::finishDrag() {
+    mode_ = Interaction::None;
+    const size_t n = drag_.moved.size();
+    drag_ = DragState{};
+    if (doc_.points != committed_.points) commit(n == 1 ? "Move point" : "Move " + std::to_string(n) + " points");
+    documentChanged(false);
+}
+
+void Editor::cancelDrag() {
+    mode_ = Interaction::None;
+    doc_.points = drag_.start;
+    drag_ = DragState{};
+    documentChanged(false);
+}
+
+void Editor::drawViewportOverlays() {
+    ImDrawList* dl = ImGui::GetBackgroundDrawList();
+    const ImGuiIO& io = ImGui::GetIO();
+    const int W = int(io.DisplaySize.x), H = int(io.DisplaySize.y);
+    const ViewMatrices vm = viewMatrices(cam_, double(W) / std::max(H, 1));
+    auto proj = [&](const Vec3& p) { return projectToPixel(vm, p, W, H); };
+    auto line = [&](const Vec3& a, const Vec3& b, ImU32 col, float th) {
+        const auto pa = proj(a), pb = proj(b);
+        if (pa && pb) dl->AddLine(ImVec2(float(pa->x), float(pa->y)), ImVec2(float(pb->x), float(pb->y)), col, th);
+    };
+
+    // Ground grid in the z = 0 (or y = 0) plane, split into segments so lines behind the eye clip.
+    if (showGround_) {
+        const double step = niceGridStep(modelSize(doc_));
+        const int n = 10;
+        for (int i = -n; i <= n; ++i)
+            for (int dir = 0; dir < 2; ++dir) {
+                const ImU32 col = i == 0 ? (dir == 0 ? IM_COL32(200, 70, 70, 140) : IM_COL32(70, 180, 70, 140))
+                                         : IM_COL32(150, 150, 150, 45);
+                for (int s = -n; s < n; ++s) {
+                    Vec3 a, b;
+                    if (dir == 0) a = Vec3(s * step, i * step, 0), b = Vec3((s + 1) * step, i * step, 0);
+                    else a = Vec3(i * step, s * step, 0), b = Vec3(i * step, (s + 1) * step, 0);
+                    if (!cam_.zUp) a = Vec3(a.x, 0, -a.y), b = Vec3(b.x, 0, -b.y);
+                    line(a, b, col, 1.0f);
+                }
+            }
+    }
+
+    // Selected patch: its boundary curves.
+    if (sel_.patch >= 0 && sel_.patch < int(doc_.patches.size())) {
+        const Patch& pt = doc_.patches[size_t(sel_.patch)];
+        const Net16 net = gatherNet(doc_, pt.idx);
+        const int n = 24;
+        for (int e = 0; e < 4; ++e) {
+            const bool hl = e == int(lastEdge_);
+            for (int k = 0; k < n; ++k) {
+                auto uv = [&](int s, double& u, double& v) {
+                    const double t = double(s) / n;
+                    switch (e) {
+                        case 0: u = 0, v = t; break;
+                        case 1: u = t, v = 0; break;
+                        case 2: u = 1, v = t; break;
+                        default: u = t, v = 1; break;
+                    }
+                };
+                double u0, v0, u1, v1;
+                uv(k, u0, v0);
+                uv(k + 1, u1, v1);
+                line(evaluateNet(net, pt.basis, pt.tension, u0, v0).p, evaluateNet(net, pt.basis, pt.tension, u1, v1).p,
+                     hl ? IM_COL32(255, 120, 255, 255) : IM_COL32(80, 220, 255, 255), hl ? 4.0f : 2.5f);
+            }
+        }
+    }
+
+    // Selected and hovered points.
+    for (uint32_t p : sel_.points)
+        if (p < doc_.points.size())
+            if (auto s = proj(doc_.points[p])) dl->AddCircleFilled(ImVec2(float(s->x), float(s->y)), 5.0f, IM_COL32(255, 140, 30, 255));
+    if (hovered_ >= 0 && hovered_ < int(doc_.points.size()))
+        if (auto s = proj(doc_.points[size_t(hovered_)]))
+            dl->AddCircle(ImVec2(float(s->x), float(s->y)), 8.0f, IM_COL32(255, 255, 255, 255), 16, 2.0f);
+
+    // Axis constraint line during a drag.
+    if ((mode_ == Interaction::DragPoints || mode_ == Interaction::Grab) && drag_.axis >= 0) {
+        const Vec3 a = axisVector(drag_.axis) * (2.0 * modelSize(doc_));
+        const ImU32 col = drag_.axis == 0 ? IM_COL32(230, 60, 60, 220) : drag_.axis == 1 ? IM_COL32(60, 210, 60, 220) : IM_COL32(70, 120, 255, 220);
+        line(drag_.anchor - a, drag_.anchor + a, col, 1.5f);
+    }
+
+    // Box selection rectangle.
+    if (mode_ == Interaction::BoxSelect) {
+        const ImVec2 a{float(pressX_), float(pressY_)}, b = io.MousePos;
+        dl->AddRectFilled(ImVec2(std::min(a.x, b.x), std::min(a.y, b.y)), ImVec2(std::max(a.x, b.x), std::max(a.y, b.y)),
+                          IM_COL32(100, 150, 255, 40));
+        dl->AddRect(ImVec2(std::min(a.x, b.x), std::min(a.y, b.y)), ImVec2(std::max(a.x, b.x), std::max(a.y, b.y)),
+                    IM_COL32(120, 170, 255, 200));
+    }
+
+    // Axis gizmo (bottom left of the viewport, right of the left panel).
+    {
+        const ImVec2 c(float(leftPanelWidth_) + 60.0f, float(H) - 60.0f);
+        const float len = 40.0f;
+        struct Ax { glm::vec3 v; ImU32 col; const char* name; };
+        Ax axes[3] = {{glm::vec3(vm.view * glm::vec4(1, 0, 0, 0)), IM_COL32(230, 70, 70, 255), "X"},
+                      {glm::vec3(vm.view * glm::vec4(0, 1, 0, 0)), IM_COL32(80, 200, 80, 255), "Y"},
+                      {glm::vec3(vm.view * glm::vec4(0, 0, 1, 0)), IM_COL32(80, 130, 255, 255), "Z"}};
+        std::sort(axes, axes + 3, [](const Ax& a, const Ax& b) { return a.v.z < b.v.z; });
+        dl->AddCircleFilled(c, len + 12.0f, IM_COL32(0, 0, 0, 60));
+        for (const Ax& a : axes) {
+            const ImVec2 e(c.x + a.v.x * len, c.y - a.v.y * len);
+            dl->AddLine(c, e, a.col, 2.5f);
+            dl->AddText(ImVec2(e.x - 3.0f, e.y - 7.0f), a.col, a.name);
+        }
+    }
+
+    // Mode line.
+    const char* modeText = nullptr;
+    char buf[160];
+    if (mode_ == Interaction::Grab || mode_ == Interaction::DragPoints) {
+        std::snprintf(buf, sizeof buf, "%s %zu point(s)%s   X/Y/Z axis · Ctrl snap · Esc/right click cancel%s",
+                      mode_ == Interaction::Grab ? "Grab" : "Drag", drag_.moved.size(),
+                      drag_.axis < 0 ? " in the view plane" : drag_.axis == 0 ? " along X" : drag_.axis == 1 ? " along Y" : " along Z",
+                      mode_ == Interaction::Grab ? " · click/Enter confirm" : "");
+        modeText = buf;
+    }
+    if (modeText) dl->AddText(ImVec2(float(leftPanelWidth_) + 12.0f, 30.0f), IM_COL32(255, 230, 120, 255), modeText);
+}
+
+}  // namespace pw::ui

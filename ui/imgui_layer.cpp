@@ -1,0 +1,103 @@
+#include "imgui_layer.hpp"
+
+#include <cstdio>
+
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_vulkan.h>
+
+#include "device.hpp"
+#include "swapchain_target.hpp"
+
+namespace pw::ui {
+
+namespace {
+void checkVk(VkResult r) {
+    if (r != VK_SUCCESS) std::fprintf(stderr, "patchwork: imgui vulkan backend: VkResult %d\n", int(r));
+}
+}  // namespace
+
+ImGuiLayer::ImGuiLayer(render::Device& dev, GLFWwindow* window, render::SwapchainTarget& target, float contentScale)
+    : dev_(dev), target_(target) {
+    // Step 1: context, style and a font scaled for the monitor's content scale (HiDPI).
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;  // layout is fixed by the editor
+    ImGui::StyleColorsDark();
+    const float scale = contentScale > 0.5f ? contentScale : 1.0f;
+    ImGui::GetStyle().ScaleAllSizes(scale);
+    ImFontConfig cfg;
+    cfg.SizePixels = 13.0f * scale;
+    io.Fonts->AddFontDefault(&cfg);
+
+    // Step 2: descriptor pool for the font texture (and nothing else).
+    VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 8};
+    VkDescriptorPoolCreateInfo dp{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    dp.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
+    dp.maxSets = 8;
+    dp.poolSizeCount = 1;
+    dp.pPoolSizes = &size;
+    VK_CHECK(vkCreateDescriptorPool(dev.device(), &dp, nullptr, &pool_));
+
+    // Step 3: backends.
+    ImGui_ImplGlfw_InitForVulkan(window, true);
+    ImGui_ImplVulkan_InitInfo ii{};
+    ii.Instance = dev.instance();
+    ii.PhysicalDevice = dev.physical();
+    ii.Device = dev.device();
+    ii.QueueFamily = dev.queueFamily();
+    ii.Queue = dev.queue();
+    ii.DescriptorPool = pool_;
+    ii.Subpass = 0;
+    ii.MinImageCount = target.minImageCount();
+    ii.ImageCount = target.imageCount() < target.minImageCount() ? target.minImageCount() : target.imageCount();
+    ii.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
+    ii.CheckVkResultFn = checkVk;
+    ImGui_ImplVulkan_Init(&ii, target.overlayRenderPass());
+
+    // Step 4: font texture upload (1.86: with a caller's command buffer).
+    dev.submitAndWait([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
+    ImGui_ImplVulkan_DestroyFontUploadObjects();
+
+    VkCommandBufferAllocateInfo ci{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    ci.commandPool = dev.commandPool();
+    ci.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    ci.commandBufferCount = 1;
+    VK_CHECK(vkAllocateCommandBuffers(dev.device(), &ci, &cmd_));
+}
+
+ImGuiLayer::~ImGuiLayer() {
+    vkDeviceWaitIdle(dev_.device());
+    ImGui_ImplVulkan_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    vkFreeCommandBuffers(dev_.device(), dev_.commandPool(), 1, &cmd_);
+    vkDestroyDescriptorPool(dev_.device(), pool_, nullptr);
+}
+
+void ImGuiLayer::newFrame() {
+    ImGui_ImplVulkan_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+}
+
+VkCommandBuffer ImGuiLayer::record() {
+    VK_CHECK(vkResetCommandBuffer(cmd_, 0));
+    VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    VK_CHECK(vkBeginCommandBuffer(cmd_, &bi));
+    VkRenderPassBeginInfo rp{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+    rp.renderPass = target_.overlayRenderPass();
+    rp.framebuffer = target_.overlayFramebuffer();
+    rp.renderArea = {{0, 0}, target_.extent()};
+    vkCmdBeginRenderPass(cmd_, &rp, VK_SUBPASS_CONTENTS_INLINE);
+    ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd_);
+    vkCmdEndRenderPass(cmd_);
+    VK_CHECK(vkEndCommandBuffer(cmd_));
+    return cmd_;
+}
+
+void ImGuiLayer::swapchainRecreated() { ImGui_ImplVulkan_SetMinImageCount(target_.minImageCount()); }
+
+}  // namespace pw::ui

@@ -1,0 +1,36 @@
+// Dear ImGui 1.86 on the editor window: GLFW platform backend + Vulkan renderer backend drawing in
+// the swapchain target's overlay render pass, HiDPI-scaled font and style.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+struct GLFWwindow;
+
+namespace pw::render {
+class Device;
+class SwapchainTarget;
+}  // namespace pw::render
+
+namespace pw::ui {
+
+class ImGuiLayer {
+public:
+    // Call after the window's own GLFW callbacks are installed (the backend chains to them).
+    ImGuiLayer(render::Device& dev, GLFWwindow* window, render::SwapchainTarget& target, float contentScale);
+    ~ImGuiLayer();
+    ImGuiLayer(const ImGuiLayer&) = delete;
+    ImGuiLayer& operator=(const ImGuiLayer&) = delete;
+
+    void newFrame();
+    // Records the overlay pass (ImGui draw data from ImGui::Render()) into `cmd` and ends it.
+    VkCommandBuffer record();
+    void swapchainRecreated();
+
+private:
+    render::Device& dev_;
+    render::SwapchainTarget& target_;
+    VkDescriptorPool pool_ = VK_NULL_HANDLE;
+    VkCommandBuffer cmd_ = VK_NULL_HANDLE;
+};
+
+}  // namespace pw::ui
