@@ -11,6 +11,7 @@
 #include "errors.hpp"
 #include "file_io.hpp"
 #include "join_detect.hpp"
+#include "orientation.hpp"
 #include "limits.hpp"
 
 namespace pw {
@@ -135,6 +136,13 @@ public:
             fail(0, std::to_string(doc.points.size()) + " distinct points; the limit is " +
                         std::to_string(limits::kMaxPoints));
         doc.joins = detectJoins(doc);
+        // The format has no orientation convention: the teacup comes inside out. After a flip the
+        // pool is renumbered by first use and the joins detected afresh, so that writing and
+        // reading the file back gives the same document.
+        if (orientOutward(doc)) {
+            renumberPoolByFirstUse(doc);
+            doc.joins = detectJoins(doc);
+        }
         frameCamera(doc);
         return doc;
     }
@@ -174,12 +182,31 @@ private:
         return v;
     }
 
+    static void renumberPoolByFirstUse(Document& doc) {
+        std::vector<uint32_t> newIndex(doc.points.size(), UINT32_MAX);
+        std::vector<Vec3> points;
+        points.reserve(doc.points.size());
+        for (Patch& p : doc.patches)
+            for (uint32_t& i : p.idx) {
+                if (newIndex[i] == UINT32_MAX) {
+                    newIndex[i] = static_cast<uint32_t>(points.size());
+                    points.push_back(doc.points[i]);
+                }
+                i = newIndex[i];
+            }
+        doc.points = std::move(points);
+    }
+
     static void frameCamera(Document& doc) {
         const Bounds b = computeBounds(doc.points);
         if (b.empty) return;
         const Vec3 c = 0.5 * (b.min + b.max);
         doc.camera.target = {c.x, c.y, c.z};
         doc.camera.distance = std::max(2.2 * b.diagonal(), 1e-3);
+        // .bpt carries no up axis. Objects stand on their flattest side, so take the axis of the
+        // smallest extent as up when that is y (the teacup); z otherwise (teapot; the teaspoon lies flat).
+        const Vec3 ext = b.max - b.min;
+        doc.camera.zUp = !(ext.y < ext.x && ext.y < ext.z);
     }
 
     LineReader reader_;
