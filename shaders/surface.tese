@@ -61,20 +61,20 @@ Derivs evalAt(float u, float v, bool second) {
     return d;
 }
 
-int slotOnEdge(int e, int k) {  // quad-domain edge order u0, v0, u1, v1
-    if (e == 0) return k * 4;
-    if (e == 1) return k;
-    if (e == 2) return k * 4 + 3;
-    return 12 + k;
-}
-
 // A Bézier boundary point from that boundary's four points only, lower pool index first.
+// e in quad-domain order (u0, v0, u1, v1). The points are picked with constant indices and
+// selects: indexing gl_in[] by a per-vertex edge number is very slow on lavapipe.
 vec3 boundaryPoint(int e, float t) {
     bool rev = (edgeFlipPatch & (1u << uint(e))) != 0u;
+    bool alongU = (e & 1) == 1;  // v0, v1: a row of the net; u0, u1: a column
+    bool far = e >= 2;           // u1 (column 3) or v1 (row 3)
+    vec3 q0 = alongU ? (far ? cp(12) : cp(0)) : (far ? cp(3) : cp(0));
+    vec3 q1 = alongU ? (far ? cp(13) : cp(1)) : (far ? cp(7) : cp(4));
+    vec3 q2 = alongU ? (far ? cp(14) : cp(2)) : (far ? cp(11) : cp(8));
+    vec3 q3 = alongU ? (far ? cp(15) : cp(3)) : (far ? cp(15) : cp(12));
+    vec3 p0 = rev ? q3 : q0, p1 = rev ? q2 : q1, p2 = rev ? q1 : q2, p3 = rev ? q0 : q3;
     precise float tc = rev ? 1.0 - t : t;
     precise float sc = 1.0 - tc;
-    vec3 p0 = cp(slotOnEdge(e, rev ? 3 : 0)), p1 = cp(slotOnEdge(e, rev ? 2 : 1));
-    vec3 p2 = cp(slotOnEdge(e, rev ? 1 : 2)), p3 = cp(slotOnEdge(e, rev ? 0 : 3));
     precise float w0 = sc * sc * sc;
     precise float w1 = 3.0 * sc * sc * tc;
     precise float w2 = 3.0 * sc * tc * tc;
