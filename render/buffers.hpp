@@ -43,6 +43,11 @@ Image createImage(Device& dev, VkExtent2D extent, VkFormat format, VkSampleCount
 void destroyImage(Device& dev, Image& img);
 
 // Image layout transition with a full (conservative) barrier.
+// Records the copy of a colour attachment (COLOR_ATTACHMENT_OPTIMAL, left in TRANSFER_SRC_OPTIMAL)
+// into a host-visible buffer as tightly packed 4-byte pixels, with the barrier that makes the
+// bytes visible to the host after the submission completes.
+void copyColorAttachmentToHost(VkCommandBuffer cmd, VkImage image, VkExtent2D extent, VkBuffer dst);
+
 void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
                   VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess);
 
