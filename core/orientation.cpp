@@ -1,6 +1,5 @@
 #include "orientation.hpp"
 
-#include <algorithm>
 
 #include "patch_eval.hpp"
 #include "patch_ops.hpp"
@@ -27,17 +26,14 @@ double positionFlux(const Document& doc, int n) {
 double openBoundaryShare(const Document& doc) {
     size_t curves = 0, open = 0;
     for (uint32_t p = 0; p < doc.patches.size(); ++p) {
+        const Patch& pt = doc.patches[p];
         for (Edge e : {Edge::U0, Edge::V0, Edge::U1, Edge::V1}) {
-            const Patch& pt = doc.patches[p];
             bool collapsed = true;
             for (int k = 1; k < 4; ++k)
                 collapsed = collapsed && doc.points[pt.idx[edgeSlot(e, k)]] == doc.points[pt.idx[edgeSlot(e, 0)]];
             if (collapsed) continue;
             ++curves;
-            const bool joined = std::any_of(doc.joins.begin(), doc.joins.end(), [&](const Join& j) {
-                return (j.patchA == p && j.edgeA == e) || (j.patchB == p && j.edgeB == e);
-            });
-            if (!joined) ++open;
+            if (findJoin(doc, p, e) < 0) ++open;
         }
     }
     return curves ? double(open) / double(curves) : 1.0;

@@ -190,7 +190,7 @@ void evaluateGrid(const Net16& net, const std::array<uint32_t, 16>& poolIdx, con
                   std::vector<SurfacePoint>& out) {
     const int nu = gw.nu, nv = gw.nv, stride = nu + 1;
     out.resize(static_cast<size_t>(stride) * (nv + 1));
-    const double scale2 = netScale(net) * netScale(net);
+    const double scale = netScale(net), scale2 = scale * scale;
     for (int r = 0; r <= nv; ++r) {
         const BasisWeights& wv = gw.v[r];
         Vec3 q[4], dq[4];  // the net collapsed along v: four points and their v-derivatives
@@ -205,8 +205,7 @@ void evaluateGrid(const Net16& net, const std::array<uint32_t, 16>& poolIdx, con
             sp.du = wu.dw[0] * q[0] + wu.dw[1] * q[1] + wu.dw[2] * q[2] + wu.dw[3] * q[3];
             sp.dv = wu.w[0] * dq[0] + wu.w[1] * dq[1] + wu.w[2] * dq[2] + wu.w[3] * dq[3];
             const Vec3 n = glm::cross(sp.du, sp.dv);
-            const double len = glm::length(n);
-            if (len > 1e-12 * scale2) sp.n = n / len;
+            if (!degenerateCross(n, scale2)) sp.n = n / glm::length(n);
             else sp.n = normalAt(net, gw.basis, gw.tension, static_cast<double>(c) / nu, static_cast<double>(r) / nv, sp.du, sp.dv);
         }
     }

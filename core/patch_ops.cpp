@@ -144,7 +144,6 @@ std::pair<uint32_t, uint32_t> splitPatch(Document& doc, uint32_t p, bool alongU,
     const Edge low = alongU ? Edge::U0 : Edge::V0, high = alongU ? Edge::U1 : Edge::V1;
     const Edge side0 = alongU ? Edge::V0 : Edge::U0, side1 = alongU ? Edge::V1 : Edge::U1;
     Patch a = src, b = src;
-    a.tessOverride = b.tessOverride = src.tessOverride;
     b.name = (src.name.empty() ? "patch " + std::to_string(p) : src.name) + " b";
     // Slots on the low edge of a and the high edge of b keep the original pool entries; the shared
     // seam gets new points used by both; all other slots get fresh points.
