@@ -1,7 +1,6 @@
 // `patchwork render [FILE] -o out.png ...`: renders a document headlessly on the GPU tessellation
 // pipeline (offscreen Vulkan target) and writes a PNG, optionally with frame statistics as JSON.
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -13,6 +12,7 @@
 #include "device.hpp"
 #include "document_io.hpp"
 #include "errors.hpp"
+#include "file_io.hpp"
 #include "limits.hpp"
 #include "offscreen_target.hpp"
 #include "png_writer.hpp"
@@ -155,10 +155,7 @@ int runRender(const RenderArgs& a) {
                   << " triangles, " << st.patches << " patches (" << st.patchesCulled << " culled), " << st.draws
                   << " draws, GPU " << st.gpuMs << " ms\n";
         if (!a.stats.empty()) {
-            std::ofstream out(a.stats);
-            if (!out) throw OutputError(a.stats, "cannot open for writing");
-            out << render::statsToJson(st) << "\n";
-            if (!out) throw OutputError(a.stats, "write failed");
+            writeFileAtomic(a.stats, render::statsToJson(st) + "\n");
         }
         if (dev.validationEnabled() && render::Device::validationMessageCount() > 0) {
             std::cerr << "patchwork render: " << render::Device::validationMessageCount() << " Vulkan validation message(s)\n";

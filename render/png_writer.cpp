@@ -1,10 +1,11 @@
 #include "png_writer.hpp"
 
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#define STBI_WRITE_NO_STDIO_UNUSED
-#include <stb/stb_image_write.h>
+#include <stb/stb_image_write.h>  // Debian's libstb (linked through pkg-config `stb`)
+
+#include <string>
 
 #include "errors.hpp"
+#include "file_io.hpp"
 
 namespace pw::render {
 
@@ -12,8 +13,12 @@ void writePng(const std::filesystem::path& path, uint32_t width, uint32_t height
     if (rgba.size() < size_t(width) * height * 4) throw OutputError(path.string(), "image buffer too small");
     std::vector<uint8_t> opaque(rgba.begin(), rgba.begin() + size_t(width) * height * 4);
     for (size_t i = 3; i < opaque.size(); i += 4) opaque[i] = 255;
-    if (!stbi_write_png(path.string().c_str(), int(width), int(height), 4, opaque.data(), int(width * 4)))
-        throw OutputError(path.string(), "cannot write PNG (missing directory or no permission?)");
+    // Encode in memory, then write atomically: a failed write leaves no partial PNG behind.
+    std::string png;
+    const auto append = [](void* out, void* data, int size) { static_cast<std::string*>(out)->append(static_cast<char*>(data), size_t(size)); };
+    if (!stbi_write_png_to_func(append, &png, int(width), int(height), 4, opaque.data(), int(width * 4)))
+        throw OutputError(path.string(), "PNG encoding failed");
+    writeFileAtomic(path, png);
 }
 
 }  // namespace pw::render
