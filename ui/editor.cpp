@@ -171,14 +171,11 @@ Editor::Editor(GLFWwindow* window, const std::string& file) : window_(window) {
     }
     recoverable_ = findRecoverableAutosaves();
     offerRecovery_ = !recoverable_.empty();
-    try {
-        if (file.empty())
-            setDocument(builtinTeapot(), "");
-        else
-            setDocument(loadDocument(file), file);
-    } catch (const InputError&) {
-        throw;  // a bad file on the command line: report and exit 2 like the other commands
-    }
+    // A bad file on the command line throws InputError: reported with exit 2 like the other commands.
+    if (file.empty())
+        setDocument(builtinTeapot(), "");
+    else
+        setDocument(loadDocument(file), file);
     // Warm the pipelines on the first acquired image (the first real frame then pays no JIT).
     if (target_->acquire()) {
         renderer_->warmUp();
@@ -202,7 +199,7 @@ Editor::~Editor() {
 
 void Editor::setDocument(Document doc, const std::string& path) {
     doc_ = std::move(doc);
-    committed_ = doc_;
+    markCommitted();
     history_.clear();
     history_.markSaved();
     forceModified_ = false;
@@ -227,16 +224,37 @@ void Editor::documentChanged(bool topology) {
     wake();
 }
 
+void Editor::markCommitted() {
+    committed_ = doc_;
+    ++committedGeneration_;
+    inspectorSolver_.reset();
+}
+
+void Editor::setPointHeld(uint32_t p, const Vec3& position) {
+    // Numeric edits go through the solver like a drag, with this point held; the factorisation is
+    // kept while the same point is edited against the same committed document.
+    if (!inspectorSolver_ || inspectorPoint_ != p || inspectorGeneration_ != committedGeneration_) {
+        inspectorSolver_ = std::make_unique<DragSolver>(committed_, std::vector<uint32_t>{p});
+        inspectorPoint_ = p;
+        inspectorGeneration_ = committedGeneration_;
+    }
+    std::vector<Vec3> pts = committed_.points;
+    pts[p] = position;
+    inspectorSolver_->project(pts);
+    doc_.points = std::move(pts);
+    documentChanged(false);
+}
+
 void Editor::commit(const std::string& label) {
     history_.commit(committed_, doc_, label);
-    committed_ = doc_;
+    markCommitted();
     ++docVersion_;
 }
 
 void Editor::undo() {
     if (mode_ != Interaction::None || !history_.canUndo()) return;
     history_.undo(doc_);
-    committed_ = doc_;
+    markCommitted();
     documentChanged(true);
     status_ = "Undone";
     statusTime_ = std::chrono::steady_clock::now();
@@ -245,7 +263,7 @@ void Editor::undo() {
 void Editor::redo() {
     if (mode_ != Interaction::None || !history_.canRedo()) return;
     history_.redo(doc_);
-    committed_ = doc_;
+    markCommitted();
     documentChanged(true);
     status_ = "Redone";
     statusTime_ = std::chrono::steady_clock::now();

@@ -81,6 +81,8 @@ private:
     void setDocument(Document doc, const std::string& path);
     void documentChanged(bool topology);  // re-upload
     void commit(const std::string& label);
+    void markCommitted();  // committed_ = doc_ (the state undo steps start from)
+    void setPointHeld(uint32_t p, const Vec3& position);  // inspector edit, joins held
     void undo();
     void redo();
     void requestAction(PendingAction a, const std::string& path = {});
@@ -121,6 +123,10 @@ private:
     std::unique_ptr<ImGuiLayer> imgui_;
 
     Document doc_, committed_;
+    uint64_t committedGeneration_ = 0;              // bumped by markCommitted()
+    std::unique_ptr<DragSolver> inspectorSolver_;   // factorised for inspectorPoint_ held
+    uint32_t inspectorPoint_ = 0;
+    uint64_t inspectorGeneration_ = 0;
     EditHistory history_;
     std::string path_;  // current file ("" = untitled)
     Camera cam_;
@@ -168,6 +174,7 @@ private:
     std::string status_;
     std::chrono::steady_clock::time_point statusTime_;
     std::vector<JoinContinuity> continuity_;
+    double continuityResidual_ = 0.0;  // maxConstraintResidual at continuityVersion_
     uint64_t continuityVersion_ = ~0ull;
     bool screenshotRequested_ = false;
     std::string screenshotPath_;

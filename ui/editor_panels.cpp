@@ -217,13 +217,7 @@ void Editor::drawLeftPanel() {
             double v[3] = {doc_.points[p].x, doc_.points[p].y, doc_.points[p].z};
             const double step = 0.001 * modelSize(doc_);
             if (ImGui::DragScalarN("Position", ImGuiDataType_Double, v, 3, float(step), nullptr, nullptr, "%.4f")) {
-                // Numeric edits go through the solver like a drag, with this point held.
-                std::vector<Vec3> pts = committed_.points;
-                pts[p] = Vec3(v[0], v[1], v[2]);
-                DragSolver s(committed_, {p});
-                s.project(pts);
-                doc_.points = pts;
-                documentChanged(false);
+                setPointHeld(p, Vec3(v[0], v[1], v[2]));
             }
             traceItem("inspector.position");
             if (ImGui::IsItemDeactivatedAfterEdit()) commit("Edit point");
@@ -232,12 +226,7 @@ void Editor::drawLeftPanel() {
             double typed[3] = {doc_.points[p].x, doc_.points[p].y, doc_.points[p].z};
             if (ImGui::InputScalarN("Set", ImGuiDataType_Double, typed, 3, nullptr, nullptr, "%.6g",
                                     ImGuiInputTextFlags_EnterReturnsTrue)) {
-                std::vector<Vec3> pts = committed_.points;
-                pts[p] = Vec3(typed[0], typed[1], typed[2]);
-                DragSolver s(committed_, {p});
-                s.project(pts);
-                doc_.points = pts;
-                documentChanged(false);
+                setPointHeld(p, Vec3(typed[0], typed[1], typed[2]));
                 commit("Set point");
             }
             traceItem("inspector.set");
@@ -496,9 +485,10 @@ void Editor::drawRightPanel() {
     if (continuityOpen) {
         if (continuityVersion_ != docVersion_ && mode_ == Interaction::None) {
             continuity_ = continuityReport(doc_, 16);
+            continuityResidual_ = maxConstraintResidual(doc_);
             continuityVersion_ = docVersion_;
         }
-        ImGui::Text("Max constraint residual %.3g", mode_ == Interaction::None ? maxConstraintResidual(doc_) : 0.0);
+        ImGui::Text("Max constraint residual %.3g", mode_ == Interaction::None ? continuityResidual_ : 0.0);
         tip("Largest violation of the join constraints (should be <= 1e-6 x model size)");
         if (ImGui::BeginTable("cont", 5, ImGuiTableFlags_Borders | ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg, ImVec2(0, 220))) {
             ImGui::TableSetupColumn("join", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("00.u0-00.u0").x);

@@ -235,9 +235,7 @@ void Editor::beginDrag(bool grab) {
     drag_.uploaded = doc_.points;
     drag_.moved = sel_.points;
     drag_.solver = std::make_unique<DragSolver>(doc_, drag_.moved);  // factorised once per drag
-    Vec3 c(0.0);
-    for (uint32_t p : drag_.moved) c += doc_.points[p];
-    drag_.anchor = c / double(drag_.moved.size());
+    drag_.anchor = selectionCentroid(doc_, sel_);
     Vec3 r, u, f;
     cameraAxes(cam_, r, u, f);
     drag_.planeNormal = f;
