@@ -19,8 +19,11 @@ struct FrameUniforms {
     glm::vec4 dist;       // x d0, y d1, z curvature scale, w zebra stripes
     glm::uvec4 modes;     // x spacing, y adaptive, z cull bits (1 back, 2 offscreen), w shading
     glm::uvec4 sel;       // x hovered point, y selected point
+    // View rays: the direction from the eye through NDC (x, y) is rayZ + x rayX + y rayY (the
+    // fragment shader's view vector, so no world position travels as a varying).
+    glm::vec4 rayX, rayY, rayZ;
 };
-static_assert(sizeof(FrameUniforms) == 2 * 64 + 8 * 16);
+static_assert(sizeof(FrameUniforms) == 2 * 64 + 11 * 16);
 
 struct PatchData {
     glm::vec4 outer{0.0f};

@@ -26,7 +26,8 @@ struct PipelineDesc {
     bool tess = false;
     VkPolygonMode polygon = VK_POLYGON_MODE_FILL;
     bool depthTest = true, depthWrite = true, depthBias = false;
-    int vertexLayout = 0;  // 0: vec3 position; 1: position, normal, uv (mesh); 2: position + rgba colour
+    int vertexLayout = 0;  // 0: vec3 position; 1: position, normal, uv (mesh); 2: position + rgba colour;
+                           // 3: position, normal (mesh, lean varyings)
 };
 
 VkPipeline buildPipeline(Device& dev, const PipelineSet& set, const PipelineDesc& d, VkFormat color, VkFormat depth,
@@ -44,13 +45,15 @@ VkPipeline buildPipeline(Device& dev, const PipelineSet& set, const PipelineDesc
     if (d.vertexLayout == 0) {
         bindings.push_back({0, 12, VK_VERTEX_INPUT_RATE_VERTEX});
         attrs.push_back({0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0});
-    } else if (d.vertexLayout == 1) {
+    } else if (d.vertexLayout == 1 || d.vertexLayout == 3) {
         bindings.push_back({0, 12, VK_VERTEX_INPUT_RATE_VERTEX});
         bindings.push_back({1, 12, VK_VERTEX_INPUT_RATE_VERTEX});
-        bindings.push_back({2, 8, VK_VERTEX_INPUT_RATE_VERTEX});
         attrs.push_back({0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0});
         attrs.push_back({1, 1, VK_FORMAT_R32G32B32_SFLOAT, 0});
-        attrs.push_back({2, 2, VK_FORMAT_R32G32_SFLOAT, 0});
+        if (d.vertexLayout == 1) {
+            bindings.push_back({2, 8, VK_VERTEX_INPUT_RATE_VERTEX});
+            attrs.push_back({2, 2, VK_FORMAT_R32G32_SFLOAT, 0});
+        }
     } else {
         bindings.push_back({0, 28, VK_VERTEX_INPUT_RATE_VERTEX});
         attrs.push_back({0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0});
@@ -173,39 +176,52 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
         modules.push_back(makeModule(dev, blob));
         return modules.back();
     };
-    VkShaderModule vert = mod(spirv::surface_vert), tesc = mod(spirv::surface_tesc), frag = mod(spirv::surface_frag);
-    const spirv::Blob* tese[3] = {&spirv::surface_tese_equal, &spirv::surface_tese_odd, &spirv::surface_tese_even};
-    const spirv::Blob* ptese[3] = {&spirv::points_tese_equal, &spirv::points_tese_odd, &spirv::points_tese_even};
+    VkShaderModule vert = mod(spirv::surface_vert);
+    const VkShaderModule tesc[kLevelsVariants] = {mod(spirv::surface_tesc_fixed), mod(spirv::surface_tesc_full)};
+    const VkShaderModule frag[kVaryingsVariants] = {mod(spirv::surface_frag), mod(spirv::surface_frag_full)};
+    const spirv::Blob* tese[kSpacingVariants][kVaryingsVariants] = {
+        {&spirv::surface_tese_equal, &spirv::surface_tese_equal_full},
+        {&spirv::surface_tese_odd, &spirv::surface_tese_odd_full},
+        {&spirv::surface_tese_even, &spirv::surface_tese_even_full}};
+    const spirv::Blob* ptese[kSpacingVariants] = {&spirv::points_tese_equal, &spirv::points_tese_odd, &spirv::points_tese_even};
     VkShaderModule lineFrag = mod(spirv::line_frag);
     VkShaderModule geom = dev.caps().geometryShader ? mod(spirv::normals_geom) : VK_NULL_HANDLE;
 
     for (int s = 0; s < kSpacingVariants; ++s) {
-        VkShaderModule te = mod(*tese[s]);
-        PipelineDesc pd;
-        pd.tess = true;
-        pd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc},
-                     {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, te}, {VK_SHADER_STAGE_FRAGMENT_BIT, frag}};
-        set.surface[s] = buildPipeline(dev, set, pd, color, depth, samples);
-        pd.polygon = VK_POLYGON_MODE_LINE;
-        pd.depthWrite = false;
-        pd.depthBias = true;
-        set.wire[s] = buildPipeline(dev, set, pd, color, depth, samples);
-        if (geom) {
-            PipelineDesc nd;
-            nd.tess = true;
-            nd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc},
-                         {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(*ptese[s])},
-                         {VK_SHADER_STAGE_GEOMETRY_BIT, geom}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
-            nd.depthWrite = false;
-            set.normals[s] = buildPipeline(dev, set, nd, color, depth, samples);
+        const VkShaderModule te[kVaryingsVariants] = {mod(*tese[s][0]), mod(*tese[s][1])};
+        const VkShaderModule pte = geom ? mod(*ptese[s]) : VK_NULL_HANDLE;
+        for (int l = 0; l < kLevelsVariants; ++l) {
+            const auto lv = LevelsVariant(l);
+            for (int v = 0; v < kVaryingsVariants; ++v) {
+                PipelineDesc pd;
+                pd.tess = true;
+                pd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc[l]},
+                             {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, te[v]}, {VK_SHADER_STAGE_FRAGMENT_BIT, frag[v]}};
+                set.surface[surfaceIndex(s, lv, VaryingsVariant(v))] = buildPipeline(dev, set, pd, color, depth, samples);
+                if (v != int(VaryingsVariant::Lean)) continue;
+                pd.polygon = VK_POLYGON_MODE_LINE;
+                pd.depthWrite = false;
+                pd.depthBias = true;
+                set.wire[overlayIndex(s, lv)] = buildPipeline(dev, set, pd, color, depth, samples);
+            }
+            if (geom) {
+                PipelineDesc nd;
+                nd.tess = true;
+                nd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc[l]},
+                             {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, pte},
+                             {VK_SHADER_STAGE_GEOMETRY_BIT, geom}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
+                nd.depthWrite = false;
+                set.normals[overlayIndex(s, lv)] = buildPipeline(dev, set, nd, color, depth, samples);
+            }
         }
     }
-    {
+    const spirv::Blob* meshVert[kVaryingsVariants] = {&spirv::mesh_vert, &spirv::mesh_vert_full};
+    for (int v = 0; v < kVaryingsVariants; ++v) {
         PipelineDesc md;
         md.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-        md.vertexLayout = 1;
-        md.stages = {{VK_SHADER_STAGE_VERTEX_BIT, mod(spirv::mesh_vert)}, {VK_SHADER_STAGE_FRAGMENT_BIT, frag}};
-        set.mesh = buildPipeline(dev, set, md, color, depth, samples);
+        md.vertexLayout = v == int(VaryingsVariant::Full) ? 1 : 3;
+        md.stages = {{VK_SHADER_STAGE_VERTEX_BIT, mod(*meshVert[v])}, {VK_SHADER_STAGE_FRAGMENT_BIT, frag[v]}};
+        set.mesh[v] = buildPipeline(dev, set, md, color, depth, samples);
     }
     {
         VkShaderModule gv = mod(spirv::grid_vert);
@@ -255,7 +271,7 @@ void destroyPipelines(Device& dev, PipelineSet& set) {
     for (auto& p : set.surface) kill(p);
     for (auto& p : set.wire) kill(p);
     for (auto& p : set.normals) kill(p);
-    kill(set.mesh);
+    for (auto& p : set.mesh) kill(p);
     kill(set.gridLines);
     kill(set.gridPoints);
     kill(set.colorLines);

@@ -16,14 +16,33 @@ namespace pw::render {
 // Tessellation-evaluation variants: one per partitioning (pow2 uses equal spacing).
 enum class SpacingVariant { Equal = 0, FractionalOdd = 1, FractionalEven = 2 };
 constexpr int kSpacingVariants = 3;
+// Control-shader variants: Fixed computes uniform levels and per-patch overrides only; Full adds
+// adaptive levels and culling. lavapipe executes both sides of every branch, so code that is
+// switched off still costs (1 024 patches at 16: ~25 ms a frame); GPUs lose nothing either way.
+enum class LevelsVariant { Fixed = 0, Full = 1 };
+constexpr int kLevelsVariants = 2;
+// Varying sets: Lean passes position and normal (lit, normal, zebra, wireframe); Full adds UV,
+// patch id and curvatures (patch, uv, curvature shading). Each varying costs per-vertex work in
+// lavapipe's draw module and attribute bandwidth on GPUs.
+enum class VaryingsVariant { Lean = 0, Full = 1 };
+constexpr int kVaryingsVariants = 2;
+
+// Index of the shaded surface pipeline for a spacing, levels and varyings variant.
+constexpr size_t surfaceIndex(int spacing, LevelsVariant l, VaryingsVariant v) {
+    return (size_t(spacing) * kLevelsVariants + size_t(l)) * kVaryingsVariants + size_t(v);
+}
+// Index of the wireframe or normal-overlay pipeline (lean varyings) for a spacing and levels variant.
+constexpr size_t overlayIndex(int spacing, LevelsVariant l) { return size_t(spacing) * kLevelsVariants + size_t(l); }
 
 struct PipelineSet {
     VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;  // 0: frame UBO, 1: patch data, 2: counters
     VkPipelineLayout layout = VK_NULL_HANDLE;          // + DrawPush push constants
-    std::array<VkPipeline, kSpacingVariants> surface{};   // shaded tessellated surface
-    std::array<VkPipeline, kSpacingVariants> wire{};      // same, polygonMode LINE + depth bias
-    std::array<VkPipeline, kSpacingVariants> normals{};   // point-mode TES + geometry shader (if supported)
-    VkPipeline mesh = VK_NULL_HANDLE;        // plain pre-tessellated triangles
+    // shaded tessellated surface, by surfaceIndex
+    std::array<VkPipeline, kSpacingVariants * kLevelsVariants * kVaryingsVariants> surface{};
+    // by overlayIndex: the surface as polygonMode LINE + depth bias; point-mode evaluation +
+    // geometry shader for normal vectors (if supported)
+    std::array<VkPipeline, kSpacingVariants * kLevelsVariants> wire{}, normals{};
+    std::array<VkPipeline, kVaryingsVariants> mesh{};  // plain pre-tessellated triangles
     VkPipeline gridLines = VK_NULL_HANDLE;   // control net lines (over everything)
     VkPipeline gridPoints = VK_NULL_HANDLE;  // control points
     VkPipeline colorLines = VK_NULL_HANDLE;  // coloured lines, depth-tested (boundaries)

@@ -1,9 +1,12 @@
 #include "renderer.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 
 #include "adaptive_bounds.hpp"
 #include "buffers.hpp"
@@ -43,6 +46,23 @@ int spacingVariant(Spacing s) {
         case Spacing::FractionalOdd: return 1;
         case Spacing::FractionalEven: return 2;
         default: return 0;  // equal and pow2 (rounded in the control shader)
+    }
+}
+
+// Adaptive levels or culling need the full control shader; uniform levels and overrides do not.
+LevelsVariant levelsVariant(const TessSettings& ts) {
+    const bool adaptive = ts.adaptive != AdaptiveMode::None;
+    return adaptive || ts.cullBackfaces || ts.cullOffscreen ? LevelsVariant::Full : LevelsVariant::Fixed;
+}
+
+// Patch-id, UV and curvature shading need the full varying set; the others position and normal only.
+VaryingsVariant varyingsVariant(ShadingMode m) {
+    switch (m) {
+        case ShadingMode::PatchId:
+        case ShadingMode::UvChecker:
+        case ShadingMode::GaussCurvature:
+        case ShadingMode::MeanCurvature: return VaryingsVariant::Full;
+        default: return VaryingsVariant::Lean;
     }
 }
 
@@ -155,7 +175,22 @@ FrameStats Renderer::render(const RenderOptions& opt) {
     fu.viewProj = vm.viewProj;
     fu.view = vm.view;
     fu.eye = glm::vec4(vm.eye, 1.0f);
-    fu.lightDir = {ds.lightDir[0], ds.lightDir[1], ds.lightDir[2], ds.normalLength};
+    const glm::vec3 light(ds.lightDir[0], ds.lightDir[1], ds.lightDir[2]);
+    const float lightLen = glm::length(light);
+    const glm::vec3 lightUnit = lightLen > 1e-12f && std::isfinite(lightLen) ? light / lightLen : glm::vec3(0.0f, 0.0f, 1.0f);
+    fu.lightDir = glm::vec4(lightUnit, ds.normalLength);
+    // View rays: inverse(viewProj) * (x, y, 1, 1) is linear in the NDC x and y, and so is its
+    // direction from the eye, h.xyz - eye * h.w. Orthographic rays are all the view direction.
+    if (opt.camera.orthographic) {
+        fu.rayX = fu.rayY = glm::vec4(0.0f);
+        fu.rayZ = glm::vec4(vm.forward, 0.0f);
+    } else {
+        const glm::mat4 inv = glm::inverse(vm.viewProj);
+        auto ray = [&](const glm::vec4& h) { return glm::vec4(glm::vec3(h) - vm.eye * h.w, 0.0f); };
+        fu.rayX = ray(inv[0]);
+        fu.rayY = ray(inv[1]);
+        fu.rayZ = ray(inv[2] + inv[3]);
+    }
     fu.viewport = {float(ext.width), float(ext.height), 0.0f, 0.0f};
     fu.outer = {ts.outer[0], ts.outer[1], ts.outer[2], ts.outer[3]};
     const float maxLevel = std::clamp(std::min(ts.maxLevel, float(dev_.caps().maxTessLevel)), 1.0f, 64.0f);
@@ -191,6 +226,8 @@ FrameStats Renderer::render(const RenderOptions& opt) {
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.layout, 0, 1, &m.set, 0, nullptr);
 
     const int variant = spacingVariant(ts.spacing);
+    const LevelsVariant levels = levelsVariant(ts);
+    const VaryingsVariant varyings = varyingsVariant(ds.shading);
     const uint32_t budget = dev_.drawVertexBudget();
     const uint32_t perDraw = patchesPerDraw(maxSegments(ts, m.scene.overrideMax, maxLevel), budget);
     std::vector<uint8_t> levelBounds;  // adaptive: batch by this frame's levels, not by the worst case
@@ -201,13 +238,13 @@ FrameStats Renderer::render(const RenderOptions& opt) {
 
     // Step 3: the surface (statistics cover this pass only).
     if (opt.plainMesh) {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.mesh);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.mesh[size_t(varyings)]);
         push.drawMode = 2;
         vkCmdPushConstants(cmd, pipes_.layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
         recordPlainMesh(cmd, m.mesh);
         stats.draws = m.mesh.indexCount ? 1 : 0;
     } else {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.surface[size_t(variant)]);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.surface[surfaceIndex(variant, levels, varyings)]);
         stats.draws = recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, push, bounds, budget);
         stats.patches = m.scene.windowCount;
     }
@@ -222,14 +259,14 @@ FrameStats Renderer::render(const RenderOptions& opt) {
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.layout, 0, 1, &m.set, 0, nullptr);
     }
     if (ds.showWireframe && !opt.plainMesh) {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.wire[size_t(variant)]);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.wire[overlayIndex(variant, levels)]);
         DrawPush wp;
         wp.drawMode = 1;
         wp.color = {0.08f, 0.09f, 0.12f, 1.0f};
         stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, wp, bounds, budget);
     }
-    if (ds.showNormals && !opt.plainMesh && pipes_.normals[size_t(variant)]) {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.normals[size_t(variant)]);
+    if (ds.showNormals && !opt.plainMesh && pipes_.normals[overlayIndex(variant, levels)]) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.normals[overlayIndex(variant, levels)]);
         DrawPush np;
         np.color = {0.2f, 0.9f, 1.0f, 1.0f};
         stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, np, bounds, budget);
@@ -287,13 +324,20 @@ void Renderer::warmUp() {
     o.tess.outer = {2, 2, 2, 2};
     o.tess.inner = {2, 2};
     o.display.showGrid = o.display.showWireframe = o.display.showNormals = o.display.showBoundaries = true;
-    for (Spacing s : {Spacing::Equal, Spacing::FractionalOdd, Spacing::FractionalEven}) {
-        o.tess.spacing = s;
-        render(o);
-    }
+    for (Spacing s : {Spacing::Equal, Spacing::FractionalOdd, Spacing::FractionalEven})
+        for (bool culling : {false, true})                                      // both levels variants
+            for (ShadingMode shading : {ShadingMode::Lit, ShadingMode::PatchId}) {  // both varying sets
+                o.tess.spacing = s;
+                o.tess.cullBackfaces = o.tess.cullOffscreen = culling;
+                o.display.shading = shading;
+                render(o);
+            }
     if (impl_->mesh.indexCount) {
         o.plainMesh = true;
-        render(o);
+        for (ShadingMode shading : {ShadingMode::Lit, ShadingMode::PatchId}) {
+            o.display.shading = shading;
+            render(o);
+        }
     }
 }
 

@@ -13,6 +13,7 @@ layout(set = 0, binding = 0, std140) uniform Frame {
     vec4 dist;       // x d0 (full level), y d1 (level 1), z curvature colour scale, w zebra stripes
     uvec4 modes;     // x spacing (0 equal, 1 odd, 2 even, 3 pow2), y adaptive, z cull bits, w shading
     uvec4 sel;       // x hovered point, y selected point (0xffffffff = none)
+    vec4 rayX, rayY, rayZ;  // direction from the eye through NDC (x, y): rayZ + x rayX + y rayY
 } frame;
 
 // binding 1: per-patch tessellation overrides, indexed by patchBase + gl_PrimitiveID.

@@ -1,21 +1,23 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // A CPU-tessellated mesh drawn as plain triangles with the surface's fragment shading (reference
-// for tests and the benchmark).
+// for tests and the benchmark). Varyings as the evaluation shader's (-DFULL_VARYINGS or lean).
 #include "common.glsl"
 layout(location = 0) in vec3 inPos;
 layout(location = 1) in vec3 inNormal;
-layout(location = 2) in vec2 inUV;
-layout(location = 0) out vec3 outPos;
 layout(location = 1) out vec3 outNormal;
+#ifdef FULL_VARYINGS
+layout(location = 2) in vec2 inUV;
 layout(location = 2) out vec2 outUV;
 layout(location = 3) flat out uint outPatch;
 layout(location = 4) out vec2 outCurv;
+#endif
 void main() {
-    outPos = inPos;
     outNormal = inNormal;
+#ifdef FULL_VARYINGS
     outUV = inUV;
     outPatch = draw.patchBase;
     outCurv = vec2(0.0);
+#endif
     gl_Position = frame.viewProj * vec4(inPos, 1.0);
 }

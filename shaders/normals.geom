@@ -6,9 +6,6 @@ layout(points) in;
 layout(line_strip, max_vertices = 2) out;
 layout(location = 0) in vec3 inPos[];
 layout(location = 1) in vec3 inNormal[];
-layout(location = 2) in vec2 inUV[];      // unused, declared to match the evaluation shader
-layout(location = 3) flat in uint inPatch[];
-layout(location = 4) in vec2 inCurv[];
 layout(location = 0) out vec4 outColor;
 void main() {
     vec3 p = inPos[0];

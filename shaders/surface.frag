@@ -2,12 +2,14 @@
 #extension GL_GOOGLE_include_directive : require
 // Shading modes: lit (two-sided, back faces tinted), normal as colour, patch id, UV checker, zebra
 // stripes, Gaussian and mean curvature maps. drawMode 1 draws a flat colour (wireframe pass).
+// Without -DFULL_VARYINGS only position and normal come in (lit, normal, zebra, flat colour).
 #include "common.glsl"
-layout(location = 0) in vec3 inPos;
 layout(location = 1) in vec3 inNormal;
+#ifdef FULL_VARYINGS
 layout(location = 2) in vec2 inUV;
 layout(location = 3) flat in uint inPatch;
 layout(location = 4) in vec2 inCurv;
+#endif
 layout(location = 0) out vec4 outColor;
 
 vec3 hashColor(uint id) {
@@ -25,28 +27,35 @@ vec3 diverging(float x) {  // blue (negative) - white - red (positive)
 void main() {
     if (draw.drawMode == 1u) { outColor = draw.color; return; }
     vec3 n = normalize(inNormal);
-    vec3 v = normalize(frame.eye.xyz - inPos);
+    vec2 ndc = gl_FragCoord.xy / frame.viewport.xy * 2.0 - 1.0;
+    vec3 v = -normalize(frame.rayZ.xyz + ndc.x * frame.rayX.xyz + ndc.y * frame.rayY.xyz);  // towards the eye
     bool back = dot(n, v) < 0.0;
     vec3 nf = back ? -n : n;
-    vec3 l = normalize(frame.lightDir.xyz);
+    vec3 l = frame.lightDir.xyz;  // unit length (renderer)
     float diff = abs(dot(nf, l));
     float spec = pow(max(dot(nf, normalize(l + v)), 0.0), 48.0);
     float light = 0.25 + 0.75 * diff;
     uint mode = frame.modes.w;
     vec3 base;
     if (mode == 1u) { outColor = vec4(n * 0.5 + 0.5, 1.0); return; }
+#ifdef FULL_VARYINGS
     else if (mode == 2u) base = hashColor(inPatch);
     else if (mode == 3u) {
         ivec2 c = ivec2(floor(clamp(inUV, 0.0, 0.9999) * 8.0));
         base = ((c.x + c.y) & 1) == 0 ? vec3(0.92) : vec3(0.25, 0.3, 0.4);
         base = mix(base, vec3(inUV, 0.4), 0.25);
-    } else if (mode == 4u) {
+    }
+#endif
+    else if (mode == 4u) {
         vec3 r = reflect(-v, nf);
         float stripe = fract(frame.dist.w * (r.z * 0.5 + 0.5));
         outColor = vec4(vec3(stripe < 0.5 ? 0.05 : 0.95), 1.0);
         return;
-    } else if (mode == 5u) base = diverging(inCurv.x * frame.dist.z * frame.dist.z);
+    }
+#ifdef FULL_VARYINGS
+    else if (mode == 5u) base = diverging(inCurv.x * frame.dist.z * frame.dist.z);
     else if (mode == 6u) base = diverging(inCurv.y * frame.dist.z);
+#endif
     else base = vec3(0.72, 0.74, 0.78);
     if (back) base *= vec3(1.0, 0.55, 0.5);  // back faces tinted
     vec3 c = base * light + (mode == 0u ? vec3(0.35) * spec : vec3(0.0));

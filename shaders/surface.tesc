@@ -3,6 +3,9 @@
 // Tessellation levels of one 4x4 window: uniform, per-patch override or adaptive (distance, screen,
 // orientation); crack-free (an edge's level depends on that edge's control points only, taken in a
 // canonical order); back-face and off-screen culling by zero outer levels; DESIGN §3 rounding.
+// Built twice: with -DADAPTIVE_AND_CULLING for adaptive levels and culling, and without for uniform
+// levels and per-patch overrides only. lavapipe runs every branch whether taken or not, so the
+// adaptive and culling code would otherwise cost ~25 ms a frame on 1 024 patches when switched off.
 #include "common.glsl"
 
 layout(vertices = 16) out;
@@ -38,6 +41,7 @@ void edgePoints(int e, out vec3 p[4]) {
     for (int k = 0; k < 4; ++k) p[k] = cp(edgeSlot(e, rev ? 3 - k : k));
 }
 
+#ifdef ADAPTIVE_AND_CULLING
 vec2 toPixels(vec3 p, out bool behind) {
     vec4 c = frame.viewProj * vec4(p, 1.0);
     behind = c.w <= 1e-6;
@@ -71,6 +75,8 @@ float adaptiveLevel(int e) {
     return maxL * clamp(2.0 * length(side) / chord, 0.0, 1.0);
 }
 
+#endif
+
 // DESIGN §3: equal -> ceil in [1,64]; odd -> [1,63]; even -> [2,64]; pow2 -> next power of two.
 float roundLevel(float f) {
     uint s = frame.modes.x;
@@ -82,6 +88,7 @@ float roundLevel(float f) {
     return clamp(exp2(ceil(log2(c) - 1e-4)), 1.0, 64.0);
 }
 
+#ifdef ADAPTIVE_AND_CULLING
 bool offscreen() {
     bvec4 allOut = bvec4(true);
     bool allNear = true, allFar = true;
@@ -115,6 +122,8 @@ bool backfacing() {
     return true;
 }
 
+#endif
+
 void main() {
     gl_out[gl_InvocationID].gl_Position = gl_in[gl_InvocationID].gl_Position;
     if (gl_InvocationID != 0) return;
@@ -131,18 +140,26 @@ void main() {
     if (pd.inner.z > 0.5) {
         o[0] = pd.outer.x; o[1] = pd.outer.y; o[2] = pd.outer.z; o[3] = pd.outer.w;
         in0 = pd.inner.x; in1 = pd.inner.y;
-    } else if (frame.modes.y == 0u) {
+    } else
+#ifdef ADAPTIVE_AND_CULLING
+    if (frame.modes.y == 0u)
+#endif
+    {
         o[0] = frame.outer.x; o[1] = frame.outer.y; o[2] = frame.outer.z; o[3] = frame.outer.w;
         in0 = frame.inner.x; in1 = frame.inner.y;
-    } else {
+    }
+#ifdef ADAPTIVE_AND_CULLING
+    else {
         for (int e = 0; e < 4; ++e) o[e] = clamp(adaptiveLevel(e), 1.0, frame.inner.z);
         in0 = max(o[1], o[3]);  // inner[0] subdivides along u, like the v0 and v1 edges
         in1 = max(o[0], o[2]);
     }
+#endif
     for (int e = 0; e < 4; ++e) gl_TessLevelOuter[e] = roundLevel(o[e]);
     gl_TessLevelInner[0] = roundLevel(in0);
     gl_TessLevelInner[1] = roundLevel(in1);
 
+#ifdef ADAPTIVE_AND_CULLING
     bool cull = ((frame.modes.z & 2u) != 0u && offscreen()) || ((frame.modes.z & 1u) != 0u && backfacing());
     if (cull) {
         for (int e = 0; e < 4; ++e) gl_TessLevelOuter[e] = 0.0;
@@ -150,4 +167,5 @@ void main() {
         gl_TessLevelInner[1] = 0.0;
         atomicAdd(counters.culled, 1u);
     }
+#endif
 }

@@ -4,7 +4,9 @@
 // (degenerate-edge fallback like core/patch_eval.cpp normalAt), Bézier boundary points from the
 // boundary's four points in canonical order (bit-identical seams), and curvatures.
 // Built once per partitioning: -DSPACING=equal_spacing|fractional_odd_spacing|fractional_even_spacing,
-// and with -DPOINT_MODE for the normal-vector overlay.
+// with -DPOINT_MODE for the normal-vector overlay, and with -DFULL_VARYINGS for the shading modes
+// that need UV, patch id or curvatures (lit, normal, zebra and wireframe pass position and normal
+// only: every varying costs per-vertex work in lavapipe's draw module and attribute bandwidth on GPUs).
 #include "common.glsl"
 
 #ifdef POINT_MODE
@@ -15,11 +17,15 @@ layout(quads, SPACING, ccw) in;
 
 layout(location = 1) patch in float netScalePatch;  // largest extent of the net (control shader)
 layout(location = 2) patch in uint edgeFlipPatch;    // bit e: evaluate boundary e reversed (control shader)
-layout(location = 0) out vec3 outPos;
+#ifdef POINT_MODE
+layout(location = 0) out vec3 outPos;  // the normal-vector overlay's base point
+#endif
 layout(location = 1) out vec3 outNormal;
+#ifdef FULL_VARYINGS
 layout(location = 2) out vec2 outUV;
 layout(location = 3) flat out uint outPatch;
 layout(location = 4) out vec2 outCurv;  // Gaussian, mean
+#endif
 
 vec3 cp(int s) { return gl_in[s].gl_Position.xyz; }
 
@@ -107,7 +113,11 @@ vec3 normalAt(float u, float v, Derivs d) {
 
 void main() {
     float u = gl_TessCoord.x, v = gl_TessCoord.y;
+#ifdef FULL_VARYINGS
     bool curvature = frame.modes.w == 5u || frame.modes.w == 6u;
+#else
+    const bool curvature = false;
+#endif
     Derivs d = evalAt(u, v, curvature);
     vec3 p = d.p;
     bool onV = v == 0.0 || v == 1.0, onU = u == 0.0 || u == 1.0;
@@ -117,19 +127,22 @@ void main() {
     }
     vec3 n = normalAt(u, v, d);
 
+#ifdef POINT_MODE
+    outPos = p;
+#endif
+    outNormal = n;
+#ifdef FULL_VARYINGS
     // curvatures from the fundamental forms (curvature shading only)
     vec2 curv = vec2(0.0);
     if (curvature) {
-    float E = dot(d.du, d.du), F = dot(d.du, d.dv), G = dot(d.dv, d.dv);
-    float L = dot(d.duu, n), M = dot(d.duv, n), N = dot(d.dvv, n);
-    float den = E * G - F * F;
-    if (den > 1e-12 * (E * G + 1e-30)) curv = vec2((L * N - M * M) / den, (E * N - 2.0 * F * M + G * L) / (2.0 * den));
+        float E = dot(d.du, d.du), F = dot(d.du, d.dv), G = dot(d.dv, d.dv);
+        float L = dot(d.duu, n), M = dot(d.duv, n), N = dot(d.dvv, n);
+        float den = E * G - F * F;
+        if (den > 1e-12 * (E * G + 1e-30)) curv = vec2((L * N - M * M) / den, (E * N - 2.0 * F * M + G * L) / (2.0 * den));
     }
-
-    outPos = p;
-    outNormal = n;
     outUV = vec2(u, v);
     outPatch = draw.patchBase + uint(gl_PrimitiveID);
     outCurv = curv;
+#endif
     gl_Position = frame.viewProj * vec4(p, 1.0);
 }
