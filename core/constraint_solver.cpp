@@ -10,6 +10,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "net_ops.hpp"
 #include "solver_constraints.hpp"
 
 namespace pw {
@@ -77,6 +78,12 @@ std::vector<ConstraintRow> buildConstraintRows(const Document& doc) {
             if (!row.terms.empty()) rows.push_back(std::move(row));
         }
     }
+    // Bézier nets that keep C1: each seam point midway between its neighbours across the seam.
+    for (const auto& [before, seam, after] : netC1Triples(doc)) {
+        if (before >= n || seam >= n || after >= n) continue;
+        ConstraintRow row = makeRow({{before, 1.0}, {seam, -2.0}, {after, 1.0}}, kNetSeamRow);
+        if (!row.terms.empty()) rows.push_back(std::move(row));
+    }
     return rows;
 }
 
@@ -90,6 +97,8 @@ std::vector<char> joinedBoundaryPoints(const Document& doc) {
             if (jp.b0[k] < flag.size()) flag[jp.b0[k]] = 1;
         }
     }
+    for (const auto& t : netC1Triples(doc))
+        if (t[1] < flag.size()) flag[t[1]] = 1;
     return flag;
 }
 

@@ -57,15 +57,10 @@ std::vector<PatchInstance> expandPatches(const Document& doc) {
     }
     for (size_t s = 0; s < doc.surfaces.size(); ++s) {
         const Surface& surf = doc.surfaces[s];
-        const uint32_t step = surf.basis == Basis::Bezier ? 3 : 1;
-        // Window starts: open directions stop 3 before the end; closed ones wrap around.
+        const uint32_t step = netStep(surf.basis);
         auto starts = [&](uint32_t n, bool closed) {
-            std::vector<uint32_t> v;
-            if (closed) {
-                for (uint32_t s0 = 0; s0 < n; s0 += step) v.push_back(s0);
-            } else if (n >= 4) {
-                for (uint32_t s0 = 0; s0 + 3 < n; s0 += step) v.push_back(s0);
-            }
+            std::vector<uint32_t> v(netWindowCount(n, closed, step));
+            for (size_t k = 0; k < v.size(); ++k) v[k] = uint32_t(k) * step;
             return v;
         };
         for (uint32_t r0 : starts(surf.rows, surf.closedV)) {

@@ -48,6 +48,9 @@ struct Surface {
     double tension = 0.5;
     bool closedU = false;  // columns wrap
     bool closedV = false;  // rows wrap
+    // Bézier nets only: keep C1 across the window seams (the solver holds each seam point midway
+    // between its neighbours); otherwise the windows meet C0.
+    bool keepC1 = false;
     std::string name;
     bool operator==(const Surface&) const = default;
 };
@@ -143,6 +146,15 @@ struct PatchInstance {
 
 // Every patch followed by every window of every surface, in a stable order.
 std::vector<PatchInstance> expandPatches(const Document& doc);
+
+// Window step along a net: 3 for Bézier (windows share their boundary rows), 1 for splines.
+inline uint32_t netStep(Basis b) { return b == Basis::Bezier ? 3u : 1u; }
+// Number of 4x4 windows along one direction of n net rows or columns: open directions stop 3
+// before the end, closed ones wrap around (window k starts at k * step).
+inline uint64_t netWindowCount(uint32_t n, bool closed, uint32_t step) {
+    if (closed) return (uint64_t(n) + step - 1) / step;
+    return n >= 4 ? (n - 4) / step + 1 : 0;
+}
 
 // Control points of one window.
 Net16 gatherNet(const Document& doc, const std::array<uint32_t, 16>& idx);

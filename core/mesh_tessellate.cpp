@@ -10,9 +10,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 #include "limits.hpp"
 #include "patch_eval.hpp"
@@ -109,8 +111,26 @@ TriangleMesh tessellateDocument(const Document& doc, int level) {
     }
 
     // C1/G1 joins between Bézier windows whose edges share the same four pool entries: one vertex
-    // (and an averaged normal) along the seam and at its end corners.
-    for (const Join& j : doc.joins) {
+    // (and an averaged normal) along the seam and at its end corners. Bézier nets that keep C1
+    // join their neighbouring windows the same way (window indices: patches come first).
+    std::vector<Join> welds = doc.joins;
+    {
+        std::map<std::tuple<int32_t, uint32_t, uint32_t>, uint32_t> netWindow;
+        for (size_t w = 0; w < W; ++w)
+            if (windows[w].surface >= 0) netWindow[{windows[w].surface, windows[w].windowRow, windows[w].windowCol}] = uint32_t(w);
+        for (const auto& [key, w] : netWindow) {
+            const auto [s, r, c] = key;
+            const Surface& surf = doc.surfaces[size_t(s)];
+            if (surf.basis != Basis::Bezier || !surf.keepC1) continue;
+            auto next = [&](uint32_t rr, uint32_t cc) {
+                auto it = netWindow.find({s, rr, cc});
+                return it == netWindow.end() || it->second == w ? -1 : int64_t(it->second);
+            };
+            if (const int64_t b = next(r, (c + 3) % surf.cols); b >= 0) welds.push_back(Join{w, Edge::U1, uint32_t(b), Edge::U0, false, Continuity::C1, 1.0});
+            if (const int64_t b = next((r + 3) % surf.rows, c); b >= 0) welds.push_back(Join{w, Edge::V1, uint32_t(b), Edge::V0, false, Continuity::C1, 1.0});
+        }
+    }
+    for (const Join& j : welds) {
         if (j.continuity == Continuity::C0) continue;
         if (j.patchA >= W || j.patchB >= W) continue;
         const PatchInstance& a = windows[j.patchA];
@@ -137,17 +157,13 @@ TriangleMesh tessellateDocument(const Document& doc, int level) {
     std::vector<SurfaceGridInfo> surfGrid(doc.surfaces.size());
     size_t surfIdsTotal = 0;
     {
-        std::vector<uint32_t> maxRow(doc.surfaces.size(), 0), maxCol(doc.surfaces.size(), 0);
-        for (const PatchInstance& inst : windows) {
-            if (inst.surface < 0 || inst.basis == Basis::Bezier) continue;
-            maxRow[inst.surface] = std::max(maxRow[inst.surface], inst.windowRow);
-            maxCol[inst.surface] = std::max(maxCol[inst.surface], inst.windowCol);
-        }
         for (size_t s = 0; s < doc.surfaces.size(); ++s) {
             const Surface& surf = doc.surfaces[s];
             if (surf.basis == Basis::Bezier) continue;
             SurfaceGridInfo& g = surfGrid[s];
-            const uint32_t nWR = maxRow[s] + 1, nWC = maxCol[s] + 1;
+            const uint32_t nWR = uint32_t(netWindowCount(surf.rows, surf.closedV, 1));
+            const uint32_t nWC = uint32_t(netWindowCount(surf.cols, surf.closedU, 1));
+            if (nWR == 0 || nWC == 0) continue;
             g.gridRows = surf.closedV ? nWR * L : nWR * L + 1;
             g.gridCols = surf.closedU ? nWC * L : nWC * L + 1;
             g.base = surfIdsTotal;

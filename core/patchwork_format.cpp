@@ -270,12 +270,6 @@ Camera readCamera(const Reader& r, const json& v, const std::string& path) {
 
 constexpr const char* kBases = "bezier, bspline, catmull-rom";
 
-// Number of 4x4 windows along one direction of a net (document.cpp's expandPatches).
-uint64_t windowCount(uint32_t n, bool closed, uint32_t step) {
-    if (closed) return (n + step - 1) / step;
-    return n >= 4 ? (n - 4) / step + 1 : 0;
-}
-
 // Byte offset → 1-based line number.
 int lineAt(std::string_view text, size_t byte) {
     byte = std::min(byte, text.size());
@@ -352,6 +346,7 @@ json documentToJson(const Document& doc) {
                                 {"tension", s.tension},
                                 {"closedU", s.closedU},
                                 {"closedV", s.closedV},
+                                {"keepC1", s.keepC1},
                                 {"name", s.name}});
     }
     j["surfaces"] = std::move(surfaces);
@@ -450,8 +445,9 @@ Document documentFromJson(const json& j, const std::string& sourceName) {
             const json& idx = r.fixedArray(*r.member(o, path, "idx", true), ip, n);
             s.idx.resize(n);
             for (size_t k = 0; k < n; ++k) s.idx[k] = static_cast<uint32_t>(r.index(idx[k], at(ip, k), nPoints, "point index"));
-            const uint32_t step = s.basis == Basis::Bezier ? 3 : 1;
-            windows += windowCount(s.rows, s.closedV, step) * windowCount(s.cols, s.closedU, step);
+            r.optional(o, path, "keepC1", [&](const json& x, const std::string& p) { s.keepC1 = r.boolean(x, p); });
+            const uint32_t step = netStep(s.basis);
+            windows += netWindowCount(s.rows, s.closedV, step) * netWindowCount(s.cols, s.closedU, step);
             if (windows > limits::kMaxPatches)
                 r.fail(path, "patches and surface windows exceed the limit of " + std::to_string(limits::kMaxPatches));
         }

@@ -13,8 +13,9 @@ namespace pw::solver_detail {
 // One scalar constraint Σ coef·p[idx] = 0, applied identically to x, y and z.
 struct ConstraintRow {
     std::vector<std::pair<uint32_t, double>> terms;  // sorted by pool index, no zero coefficients
-    uint32_t join = 0;                                // the join it comes from
+    uint32_t join = 0;                                // the join it comes from (kNetSeamRow: a net seam)
 };
+inline constexpr uint32_t kNetSeamRow = 0xffffffffu;
 
 // The pool indices along one join, point k of A's edge against the matching point of B's edge.
 struct JoinPoints {

@@ -19,6 +19,7 @@
 #include "bpt_format.hpp"
 #include "errors.hpp"
 #include "gltf_export.hpp"
+#include "net_ops.hpp"
 #include "gltf_import.hpp"
 #include "support.hpp"
 
@@ -233,7 +234,9 @@ pw::Document surfacesDocument() {
     bez.cols = 7;
     for (uint32_t i = 0; i < bez.rows; ++i)
         for (uint32_t j = 0; j < bez.cols; ++j) bez.idx.push_back(add(-8.0 + j, i, 0.1 * (i + j)));
+    bez.keepC1 = true;  // seams welded in the mesh, flag kept in the extras
     doc.surfaces = {tube, sheet, bez};
+    pw::addNetSurface(doc, 6, 9, pw::NetShape::Torus, pw::Basis::BSpline, pw::Vec3(0.0, -6.0, 0.0), 3.0);  // closed both ways
     pw::Patch patch;
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j) patch.idx[i * 4 + j] = add(j, i, 5.0 + 0.1 * i * j);

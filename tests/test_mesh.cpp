@@ -13,6 +13,7 @@
 #include "bpt_format.hpp"
 #include "document.hpp"
 #include "mesh_tessellate.hpp"
+#include "net_ops.hpp"
 #include "model_builders.hpp"
 #include "support.hpp"
 
@@ -410,3 +411,25 @@ TEST(Mesh, ControlCageOfTheTeapot) {
 }
 
 }  // namespace
+
+TEST(Mesh, ClosedNetsAreWatertightAndKeptC1BezierSeamsShareVertices) {
+    for (pw::Basis basis : {pw::Basis::BSpline, pw::Basis::CatmullRom, pw::Basis::Bezier}) {
+        SCOPED_TRACE(std::string(pw::basisName(basis)));
+        pw::Document doc;
+        pw::addNetSurface(doc, 6, 9, pw::NetShape::Torus, basis, pw::Vec3(0.0), 2.0);
+        pw::addNetSurface(doc, basis == pw::Basis::Bezier ? 7 : 5, 9, pw::NetShape::Tube, basis, pw::Vec3(3.0, 0.0, 0.0), 2.0);
+        doc.surfaces[0].keepC1 = doc.surfaces[1].keepC1 = true;
+        for (int level : {3, 8}) {
+            const TriangleMesh mesh = pw::tessellateDocument(doc, level);
+            const EdgeStats st = edgeStats(mesh);
+            const size_t around = basis == pw::Basis::Bezier ? 3 : 9;  // windows around the tube
+            EXPECT_EQ(st.boundaryEdges, 2 * around * level);          // the tube's two open ends only
+            EXPECT_EQ(st.overusedEdges, 0u);
+            EXPECT_EQ(st.inconsistentEdges, 0u);
+            EXPECT_EQ(st.degenerateTriangles, 0u);
+            size_t distinct = 0;
+            weldByPosition(mesh, &distinct);
+            EXPECT_EQ(mesh.positions.size(), distinct);  // every seam welded: one vertex per position
+        }
+    }
+}
