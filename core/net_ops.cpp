@@ -128,6 +128,12 @@ uint32_t addNetSurface(Document& doc, uint32_t rows, uint32_t cols, NetShape sha
     return uint32_t(doc.surfaces.size() - 1);
 }
 
+void deleteNetSurface(Document& doc, uint32_t s) {
+    netAt(doc, s);
+    doc.surfaces.erase(doc.surfaces.begin() + s);
+    compactPool(doc);
+}
+
 void insertNetRow(Document& doc, uint32_t si, uint32_t at) {
     Surface s = netAt(doc, si);
     if (at > s.rows) throw EditError("row " + std::to_string(at) + " is outside the net (0.." + std::to_string(s.rows) + ")");

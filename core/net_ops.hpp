@@ -22,6 +22,9 @@ enum class NetShape { Flat, Tube, Torus };
 uint32_t addNetSurface(Document& doc, uint32_t rows, uint32_t cols, NetShape shape, Basis basis, const Vec3& center,
                        double size, bool zUp = true);
 
+// Removes net s and the points nobody else uses.
+void deleteNetSurface(Document& doc, uint32_t s);
+
 // A new row of points before row `at` (0..rows): midway between its neighbours, or continuing the
 // last spacing at an open end. Columns likewise.
 void insertNetRow(Document& doc, uint32_t s, uint32_t at);

@@ -33,26 +33,34 @@ void applyBox(Selection& sel, const std::vector<uint32_t>& boxed, bool shift) {
 void clampSelection(Selection& sel, const Document& doc) {
     std::erase_if(sel.points, [&](uint32_t p) { return p >= doc.points.size(); });
     if (sel.patch >= int(doc.patches.size())) sel.patch = -1;
+    if (sel.surface >= int(doc.surfaces.size())) sel.surface = -1;
 }
+
+namespace {
+// The selected points, else the points of the selected patch or net.
+std::vector<Vec3> selectedPositions(const Document& doc, const Selection& sel) {
+    std::vector<Vec3> pts;
+    auto add = [&](uint32_t p) {
+        if (p < doc.points.size()) pts.push_back(doc.points[p]);
+    };
+    for (uint32_t p : sel.points) add(p);
+    if (pts.empty() && sel.patch >= 0 && sel.patch < int(doc.patches.size()))
+        for (uint32_t p : doc.patches[size_t(sel.patch)].idx) add(p);
+    if (pts.empty() && sel.surface >= 0 && sel.surface < int(doc.surfaces.size()))
+        for (uint32_t p : doc.surfaces[size_t(sel.surface)].idx) add(p);
+    return pts;
+}
+}  // namespace
 
 Vec3 selectionCentroid(const Document& doc, const Selection& sel) {
     Vec3 c(0.0);
-    size_t n = 0;
-    for (uint32_t p : sel.points)
-        if (p < doc.points.size()) c += doc.points[p], ++n;
-    if (n == 0 && sel.patch >= 0 && sel.patch < int(doc.patches.size()))
-        for (uint32_t p : doc.patches[size_t(sel.patch)].idx)
-            if (p < doc.points.size()) c += doc.points[p], ++n;
-    return n ? c / double(n) : c;
+    const std::vector<Vec3> pts = selectedPositions(doc, sel);
+    for (const Vec3& p : pts) c += p;
+    return pts.empty() ? c : c / double(pts.size());
 }
 
 Bounds frameTargetBounds(const Document& doc, const Selection& sel) {
-    std::vector<Vec3> pts;
-    for (uint32_t p : sel.points)
-        if (p < doc.points.size()) pts.push_back(doc.points[p]);
-    if (pts.empty() && sel.patch >= 0 && sel.patch < int(doc.patches.size()))
-        for (uint32_t p : doc.patches[size_t(sel.patch)].idx)
-            if (p < doc.points.size()) pts.push_back(doc.points[p]);
+    const std::vector<Vec3> pts = selectedPositions(doc, sel);
     if (pts.empty()) return computeBounds(doc.points);
     Bounds b = computeBounds(pts);
     // A single point (or a flat set) still gets a sensible view: pad to 5 % of the model.

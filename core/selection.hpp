@@ -12,10 +12,11 @@ namespace pw {
 struct Selection {
     std::vector<uint32_t> points;  // sorted, unique pool indices
     int patch = -1;                // Document::patches index, -1 = none
+    int surface = -1;              // Document::surfaces index (a net), -1 = none
 
     bool contains(uint32_t p) const;
-    bool empty() const { return points.empty() && patch < 0; }
-    void clear() { points.clear(); patch = -1; }
+    bool empty() const { return points.empty() && patch < 0 && surface < 0; }
+    void clear() { points.clear(); patch = -1; surface = -1; }
     bool operator==(const Selection&) const = default;
 };
 
@@ -27,9 +28,9 @@ void applyBox(Selection& sel, const std::vector<uint32_t>& boxed, bool shift);
 // Drops indices that no longer exist (after an edit shrank the pool or the patch list).
 void clampSelection(Selection& sel, const Document& doc);
 
-// Mean of the selected points (or of the selected patch's points); the origin when empty.
+// Mean of the selected points (or of the selected patch's or net's points); the origin when empty.
 Vec3 selectionCentroid(const Document& doc, const Selection& sel);
-// Bounds of what F frames: the selected points, else the selected patch, else the whole model.
+// Bounds of what F frames: the selected points, else the selected patch or net, else the whole model.
 Bounds frameTargetBounds(const Document& doc, const Selection& sel);
 
 // --- Camera navigation (pixel deltas, y down) ---

@@ -251,3 +251,13 @@ TEST(NetOps, NetsRoundTripThroughPatchworkFiles) {
     EXPECT_NE(text.find("\"keepC1\":true"), std::string::npos);
     EXPECT_TRUE(pw::parseDocument(text, "nets.patchwork") == doc);
 }
+
+TEST(NetOps, DeletingANetDropsItsPointsOnly) {
+    Document doc;
+    pw::addFlatPatch(doc, Vec3(0.0), 1.0);
+    pw::addNetSurface(doc, 4, 5, pw::NetShape::Flat, Basis::BSpline, Vec3(3.0), 1.0);
+    pw::deleteNetSurface(doc, 0);
+    EXPECT_TRUE(doc.surfaces.empty());
+    EXPECT_EQ(doc.points.size(), 16u);
+    EXPECT_THROW(pw::deleteNetSurface(doc, 0), pw::EditError);
+}

@@ -542,6 +542,7 @@ void Editor::writeTrace() {
     j["validationMessages"] = render::Device::validationMessageCount();
     j["patches"] = doc_.patches.size();
     j["joins"] = doc_.joins.size();
+    j["surfaces"] = doc_.surfaces.size();
     j["maxConstraintResidual"] = mode_ == Interaction::None ? maxConstraintResidual(doc_) : -1.0;
     const auto proj = projectPoints(cam_, doc_.points, ww, wh);
     nlohmann::json pts = nlohmann::json::array();

@@ -114,6 +114,9 @@ private:
     void drawModals();
     void drawHelp();
     void patchOp(const std::string& label, const std::function<void(Document&)>& op, bool topology = true);
+    // editor_net_panel.cpp: net surfaces (create, rows/columns, closing, basis, conversion)
+    void drawNetPanel();
+    int activeNet() const;  // the selected net, or the net of the selected point; -1 when none
 
     GLFWwindow* window_;
     std::unique_ptr<render::Device> dev_;
@@ -179,6 +182,7 @@ private:
     bool screenshotRequested_ = false;
     std::string screenshotPath_;
     float splitT_ = 0.5f;
+    int netRows_ = 7, netCols_ = 7, netShape_ = 0, netBasis_ = 1;  // "Add net" inputs
     int joinA_ = 0, joinB_ = 1, joinEdgeA_ = 2, joinEdgeB_ = 0, joinKind_ = 1;
     std::string tracePath_;
     std::vector<std::pair<int, int>> keyQueue_;

@@ -13,6 +13,7 @@
 #include "device.hpp"
 #include "editor.hpp"
 #include "limits.hpp"
+#include "imgui_tip.hpp"
 #include "patch_ops.hpp"
 #include "renderer.hpp"
 
@@ -21,10 +22,6 @@ namespace pw::ui {
 namespace fs = std::filesystem;
 
 namespace {
-
-void tip(const char* text) {
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
-}
 
 struct KeyHelp {
     const char* keys;
@@ -48,7 +45,7 @@ const KeyHelp kKeys[] = {
     {"Esc / right click (while moving)", "Cancel the move and restore"},
     {"A / Alt+A", "Select all points / deselect"},
     {"Shift + D", "Duplicate the selected patch"},
-    {"Delete", "Delete the selected patch"},
+    {"Delete", "Delete the selected patch or net"},
     {"Ctrl + Z / Ctrl + Shift + Z (Ctrl + Y)", "Undo / redo"},
     {"Ctrl + N / Ctrl + O", "New / open"},
     {"Ctrl + S / Ctrl + Shift + S", "Save / save as"},
@@ -195,17 +192,22 @@ void Editor::drawLeftPanel() {
             std::snprintf(label, sizeof label, "%zu  %s", i, p.name.empty() ? "patch" : p.name.c_str());
             if (ImGui::Selectable(label, sel_.patch == int(i))) {
                 sel_.patch = int(i);
+                sel_.surface = -1;
                 sel_.points.clear();
             }
         }
         for (size_t i = 0; i < doc_.surfaces.size(); ++i) {
             char label[160];
-            std::snprintf(label, sizeof label, "surface %zu  %s (%ux%u)", i, doc_.surfaces[i].name.c_str(), doc_.surfaces[i].rows,
-                          doc_.surfaces[i].cols);
-            ImGui::TextDisabled("%s", label);
+            std::snprintf(label, sizeof label, "net %zu  %s (%ux%u, %s)", i, doc_.surfaces[i].name.c_str(), doc_.surfaces[i].rows,
+                          doc_.surfaces[i].cols, basisName(doc_.surfaces[i].basis).data());
+            if (ImGui::Selectable(label, sel_.surface == int(i))) {
+                sel_.surface = int(i);
+                sel_.patch = -1;
+                sel_.points.clear();
+            }
         }
         ImGui::EndChild();
-        tip("Patches of the document; click to select one");
+        tip("Patches and net surfaces of the document; click to select one");
         ImGui::Text("%zu points, %zu patches, %zu joins", doc_.points.size(), doc_.patches.size(), doc_.joins.size());
     }
 
@@ -352,6 +354,7 @@ void Editor::drawLeftPanel() {
         }
         tip("Merge the two edges' points in the pool and record the join (constraints projected)");
     }
+    drawNetPanel();
     ImGui::End();
 }
 

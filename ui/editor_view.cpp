@@ -12,6 +12,7 @@
 #include "camera_math.hpp"
 #include "editor.hpp"
 #include "patch_eval.hpp"
+#include "net_ops.hpp"
 #include "patch_ops.hpp"
 #include "point_upload.hpp"
 #include "renderer.hpp"
@@ -115,6 +116,10 @@ void Editor::viewportInput() {
                     const uint32_t p = uint32_t(sel_.patch);
                     patchOp("Delete patch", [p](Document& d) { deletePatch(d, p); });
                     sel_.clear();
+                } else if (keyPressed(GLFW_KEY_DELETE, 0) && sel_.surface >= 0) {
+                    const uint32_t s = uint32_t(sel_.surface);
+                    patchOp("Delete net", [s](Document& d) { deleteNetSurface(d, s); });
+                    sel_.clear();
                 }
                 if (keyPressed(GLFW_KEY_D, S) && sel_.patch >= 0) {
                     const uint32_t p = uint32_t(sel_.patch);
@@ -212,9 +217,13 @@ void Editor::viewportInput() {
                     if (!pressShift_) sel_.points.clear();
                     if (hit && hit->patch >= 0) {
                         sel_.patch = hit->patch;
+                        sel_.surface = -1;
                         lastEdge_ = nearestEdge(hit->u, hit->v);
-                    } else if (!pressShift_) {
+                    } else if (hit && hit->surface >= 0) {
+                        sel_.surface = hit->surface;
                         sel_.patch = -1;
+                    } else if (!pressShift_) {
+                        sel_.patch = sel_.surface = -1;
                     }
                 } else {
                     applyBox(sel_, pointsInBox(cam_, doc_.points, {pressX_, pressY_}, {mx, my}, W, H, &usedMask_), pressShift_);

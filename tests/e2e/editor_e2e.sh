@@ -236,6 +236,23 @@ sleep 0.2
 xdotool click 1
 wait_for "t['modal'] == ''"
 
+# --- 6c. a net: add it, switch nothing, convert it to Bézier patches, undo ----------------------
+click_item() {
+    read -r CX CY < <(trace "' '.join(str(round(v)) for v in t['items']['$1'])")
+    xdotool mousemove --sync $CX $CY
+    sleep 0.2
+    xdotool click 1
+}
+click_item net.add
+wait_for "t['surfaces'] == 1 and t['patches'] == 32 and 'net.toPatches' in t['items']"
+click_item net.toPatches
+# a 7 x 7 B-spline net has 4 x 4 windows: 16 Bézier patches, 24 C1 joins that hold
+wait_for "t['surfaces'] == 0 and t['patches'] == 48 and t['joins'] == 76 and t['maxConstraintResidual'] < 1e-9"
+xdotool key ctrl+z
+wait_for "t['surfaces'] == 1 and t['patches'] == 32 and t['joins'] == 52"
+check_validation
+say "net added, converted to 16 Bézier patches with C1 joins, undone"
+
 # --- 7. quit asks about unsaved changes -------------------------------------------------------
 xdotool key ctrl+q
 wait_for "t['modal'] == 'unsaved'"
