@@ -6,117 +6,11 @@
 #include <vector>
 
 #include "gpu_types.hpp"
+#include "pipeline_builder.hpp"
 #include "spirv.hpp"
 
 namespace pw::render {
 namespace {
-
-VkShaderModule makeModule(Device& dev, const spirv::Blob& blob) {
-    VkShaderModuleCreateInfo ci{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-    ci.codeSize = blob.words * sizeof(uint32_t);
-    ci.pCode = blob.code;
-    VkShaderModule m;
-    VK_CHECK(vkCreateShaderModule(dev.device(), &ci, nullptr, &m));
-    return m;
-}
-
-struct PipelineDesc {
-    std::vector<std::pair<VkShaderStageFlagBits, VkShaderModule>> stages;
-    VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_PATCH_LIST;
-    bool tess = false;
-    VkPolygonMode polygon = VK_POLYGON_MODE_FILL;
-    bool depthTest = true, depthWrite = true, depthBias = false;
-    int vertexLayout = 0;  // 0: vec3 position; 1: position, normal, uv (mesh); 2: position + rgba colour;
-                           // 3: position, normal (mesh, lean varyings)
-};
-
-VkPipeline buildPipeline(Device& dev, const PipelineSet& set, const PipelineDesc& d, VkFormat color, VkFormat depth,
-                         VkSampleCountFlagBits samples) {
-    std::vector<VkPipelineShaderStageCreateInfo> stages;
-    for (auto& [stage, module] : d.stages) {
-        VkPipelineShaderStageCreateInfo s{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-        s.stage = stage;
-        s.module = module;
-        s.pName = "main";
-        stages.push_back(s);
-    }
-    std::vector<VkVertexInputBindingDescription> bindings;
-    std::vector<VkVertexInputAttributeDescription> attrs;
-    if (d.vertexLayout == 0) {
-        bindings.push_back({0, 12, VK_VERTEX_INPUT_RATE_VERTEX});
-        attrs.push_back({0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0});
-    } else if (d.vertexLayout == 1 || d.vertexLayout == 3) {
-        bindings.push_back({0, 12, VK_VERTEX_INPUT_RATE_VERTEX});
-        bindings.push_back({1, 12, VK_VERTEX_INPUT_RATE_VERTEX});
-        attrs.push_back({0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0});
-        attrs.push_back({1, 1, VK_FORMAT_R32G32B32_SFLOAT, 0});
-        if (d.vertexLayout == 1) {
-            bindings.push_back({2, 8, VK_VERTEX_INPUT_RATE_VERTEX});
-            attrs.push_back({2, 2, VK_FORMAT_R32G32_SFLOAT, 0});
-        }
-    } else {
-        bindings.push_back({0, 28, VK_VERTEX_INPUT_RATE_VERTEX});
-        attrs.push_back({0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0});
-        attrs.push_back({1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 12});
-    }
-    VkPipelineVertexInputStateCreateInfo vi{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-    vi.vertexBindingDescriptionCount = uint32_t(bindings.size());
-    vi.pVertexBindingDescriptions = bindings.data();
-    vi.vertexAttributeDescriptionCount = uint32_t(attrs.size());
-    vi.pVertexAttributeDescriptions = attrs.data();
-    VkPipelineInputAssemblyStateCreateInfo ia{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-    ia.topology = d.topology;
-    VkPipelineTessellationStateCreateInfo ts{VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO};
-    ts.patchControlPoints = 16;
-    VkPipelineViewportStateCreateInfo vp{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-    vp.viewportCount = 1;
-    vp.scissorCount = 1;
-    VkPipelineRasterizationStateCreateInfo rs{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-    rs.polygonMode = d.polygon;
-    rs.cullMode = VK_CULL_MODE_NONE;
-    rs.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
-    rs.lineWidth = 1.0f;
-    rs.depthBiasEnable = d.depthBias;
-    rs.depthBiasConstantFactor = -2.0f;
-    rs.depthBiasSlopeFactor = -1.5f;
-    VkPipelineMultisampleStateCreateInfo ms{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-    ms.rasterizationSamples = samples;
-    VkPipelineDepthStencilStateCreateInfo ds{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-    ds.depthTestEnable = d.depthTest;
-    ds.depthWriteEnable = d.depthWrite;
-    ds.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
-    VkPipelineColorBlendAttachmentState cb{};
-    cb.colorWriteMask = 0xf;
-    VkPipelineColorBlendStateCreateInfo cbs{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-    cbs.attachmentCount = 1;
-    cbs.pAttachments = &cb;
-    const VkDynamicState dyn[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-    VkPipelineDynamicStateCreateInfo dy{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-    dy.dynamicStateCount = 2;
-    dy.pDynamicStates = dyn;
-    VkPipelineRenderingCreateInfo rci{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
-    rci.colorAttachmentCount = 1;
-    rci.pColorAttachmentFormats = &color;
-    rci.depthAttachmentFormat = depth;
-
-    VkGraphicsPipelineCreateInfo ci{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-    ci.pNext = &rci;
-    ci.stageCount = uint32_t(stages.size());
-    ci.pStages = stages.data();
-    ci.pVertexInputState = &vi;
-    ci.pInputAssemblyState = &ia;
-    ci.pTessellationState = d.tess ? &ts : nullptr;
-    ci.pViewportState = &vp;
-    ci.pRasterizationState = &rs;
-    ci.pMultisampleState = &ms;
-    ci.pDepthStencilState = &ds;
-    ci.pColorBlendState = &cbs;
-    ci.pDynamicState = &dy;
-    ci.layout = set.layout;
-    VkPipeline p;
-    VK_CHECK(vkCreateGraphicsPipelines(dev.device(), set.cache, 1, &ci, nullptr, &p));
-    return p;
-}
 
 std::vector<char> readFile(const std::filesystem::path& p) {
     std::ifstream in(p, std::ios::binary);
@@ -197,12 +91,12 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
                 pd.tess = true;
                 pd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc[l]},
                              {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, te[v]}, {VK_SHADER_STAGE_FRAGMENT_BIT, frag[v]}};
-                set.surface[surfaceIndex(s, lv, VaryingsVariant(v))] = buildPipeline(dev, set, pd, color, depth, samples);
+                set.surface[surfaceIndex(s, lv, VaryingsVariant(v))] = buildPipeline(dev, set.layout, set.cache, pd, color, depth, samples);
                 if (v != int(VaryingsVariant::Lean)) continue;
                 pd.polygon = VK_POLYGON_MODE_LINE;
                 pd.depthWrite = false;
                 pd.depthBias = true;
-                set.wire[overlayIndex(s, lv)] = buildPipeline(dev, set, pd, color, depth, samples);
+                set.wire[overlayIndex(s, lv)] = buildPipeline(dev, set.layout, set.cache, pd, color, depth, samples);
             }
             if (geom) {
                 PipelineDesc nd;
@@ -211,7 +105,7 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
                              {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, pte},
                              {VK_SHADER_STAGE_GEOMETRY_BIT, geom}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
                 nd.depthWrite = false;
-                set.normals[overlayIndex(s, lv)] = buildPipeline(dev, set, nd, color, depth, samples);
+                set.normals[overlayIndex(s, lv)] = buildPipeline(dev, set.layout, set.cache, nd, color, depth, samples);
             }
         }
     }
@@ -221,7 +115,7 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
         md.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
         md.vertexLayout = v == int(VaryingsVariant::Full) ? 1 : 3;
         md.stages = {{VK_SHADER_STAGE_VERTEX_BIT, mod(*meshVert[v])}, {VK_SHADER_STAGE_FRAGMENT_BIT, frag[v]}};
-        set.mesh[v] = buildPipeline(dev, set, md, color, depth, samples);
+        set.mesh[v] = buildPipeline(dev, set.layout, set.cache, md, color, depth, samples);
     }
     {
         VkShaderModule gv = mod(spirv::grid_vert);
@@ -230,15 +124,15 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
         gd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, gv}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
         gd.depthTest = false;
         gd.depthWrite = false;
-        set.gridLines = buildPipeline(dev, set, gd, color, depth, samples);
+        set.gridLines = buildPipeline(dev, set.layout, set.cache, gd, color, depth, samples);
         gd.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
-        set.gridPoints = buildPipeline(dev, set, gd, color, depth, samples);
+        set.gridPoints = buildPipeline(dev, set.layout, set.cache, gd, color, depth, samples);
         PipelineDesc cd;
         cd.topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST;
         cd.vertexLayout = 2;
         cd.depthWrite = false;
         cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, mod(spirv::colorline_vert)}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
-        set.colorLines = buildPipeline(dev, set, cd, color, depth, samples);
+        set.colorLines = buildPipeline(dev, set.layout, set.cache, cd, color, depth, samples);
     }
     for (VkShaderModule m : modules) vkDestroyShaderModule(d, m, nullptr);
     set.createMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
