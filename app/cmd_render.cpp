@@ -146,6 +146,12 @@ int runRender(const RenderArgs& a) {
     int rc = 0;
     {
         render::Device dev(dopt);
+        // Levels above what this device's tessellator generates are clamped there; say so.
+        float highest = 0.0f;
+        for (float l : opt.tess.outer) highest = std::max(highest, l);
+        for (float l : opt.tess.inner) highest = std::max(highest, l);
+        if (highest > float(dev.caps().maxTessLevel))
+            std::cerr << "patchwork render: level " << highest << " clamped to the device maximum " << dev.caps().maxTessLevel << "\n";
         render::OffscreenTarget target(dev, w, h, !a.noMsaa);
         render::Renderer renderer(dev, target);
         renderer.setDocument(doc);

@@ -108,6 +108,20 @@ VkInstance createInstance(bool validation, const std::vector<const char*>& extra
 
 }  // namespace
 
+std::string missingRequiredFeatures(VkPhysicalDeviceFeatures f, const VkPhysicalDeviceVulkan13Features& f13,
+                                    const VkPhysicalDeviceLimits& limits) {
+    // Test hook: PATCHWORK_PRETEND_MISSING=tessellationShader makes a capable device look like one
+    // without it, so the refusal can be tested end to end on any machine.
+    if (const char* p = std::getenv("PATCHWORK_PRETEND_MISSING"); p && std::strcmp(p, "tessellationShader") == 0)
+        f.tessellationShader = VK_FALSE;
+    std::string missing;
+    if (!f.tessellationShader) missing += " tessellationShader";
+    if (!f.fillModeNonSolid) missing += " fillModeNonSolid";
+    if (!f13.dynamicRendering) missing += " dynamicRendering";
+    if (limits.maxTessellationPatchSize < 16) missing += " maxTessellationPatchSize>=16";
+    return missing;
+}
+
 bool validationRequestedByEnv() {
     const char* v = std::getenv("PATCHWORK_VALIDATION");
     return v && *v && std::strcmp(v, "0") != 0;
@@ -182,13 +196,11 @@ Device::Device(const DeviceOptions& options) {
         f2.pNext = &f13;
         vkGetPhysicalDeviceFeatures2(physical_, &f2);
         const VkPhysicalDeviceFeatures& f = f2.features;
-        std::string missing;
-        if (!f.tessellationShader) missing += " tessellationShader";
-        if (!f.fillModeNonSolid) missing += " fillModeNonSolid";
-        if (!f13.dynamicRendering) missing += " dynamicRendering";
-        if (props_.limits.maxTessellationPatchSize < 16) missing += " maxTessellationPatchSize>=16";
+        std::string missing = missingRequiredFeatures(f, f13, props_.limits);
         if (!missing.empty())
-            deviceError(std::string("device '") + props_.deviceName + "' lacks required features:" + missing);
+            deviceError(std::string("device '") + props_.deviceName + "' lacks required features:" + missing +
+                        " (Patchwork draws surfaces with the tessellation stages; use a device that has them, e.g. "
+                        "lavapipe from mesa-vulkan-drivers)");
 
         caps_.geometryShader = f.geometryShader;
         caps_.pipelineStatistics = f.pipelineStatisticsQuery;

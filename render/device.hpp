@@ -39,6 +39,11 @@ struct DeviceCaps {
 // True when PATCHWORK_VALIDATION is set to a non-empty value other than "0".
 bool validationRequestedByEnv();
 
+// The features and limits Patchwork needs that a device lacks, each preceded by a space ("" when
+// none): tessellationShader, fillModeNonSolid, dynamicRendering, maxTessellationPatchSize>=16.
+std::string missingRequiredFeatures(VkPhysicalDeviceFeatures features, const VkPhysicalDeviceVulkan13Features& f13,
+                                    const VkPhysicalDeviceLimits& limits);
+
 class Device {
 public:
     explicit Device(const DeviceOptions& options);
