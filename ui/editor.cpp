@@ -4,6 +4,7 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -22,6 +23,7 @@
 #include "file_io.hpp"
 #include "imgui_layer.hpp"
 #include "join_detect.hpp"
+#include "limits.hpp"
 #include "patch_ops.hpp"
 #include "png_writer.hpp"
 #include "renderer.hpp"
@@ -231,6 +233,14 @@ void Editor::markCommitted() {
 }
 
 void Editor::setPointHeld(uint32_t p, const Vec3& position) {
+    for (int k = 0; k < 3; ++k)
+        if (!std::isfinite(position[k]) || std::abs(position[k]) > limits::kMaxCoordinate) {
+            char msg[160];
+            std::snprintf(msg, sizeof msg, "A point coordinate must be a finite number within ±%g; %g was not applied.",
+                          limits::kMaxCoordinate, position[k]);
+            showError(msg);
+            return;
+        }
     // Numeric edits go through the solver like a drag, with this point held; the factorisation is
     // kept while the same point is edited against the same committed document.
     if (!inspectorSolver_ || inspectorPoint_ != p || inspectorGeneration_ != committedGeneration_) {
@@ -430,10 +440,10 @@ int Editor::run() {
             requestAction(PendingAction::Quit);
             if (quit_) break;
         }
-        // Step 2: size changes; a minimised (zero-size) window waits.
+        // Step 2: size changes; a minimised (iconified or zero-size) window waits and draws nothing.
         int fbw = 0, fbh = 0;
         glfwGetFramebufferSize(window_, &fbw, &fbh);
-        if (fbw == 0 || fbh == 0) {
+        if (fbw == 0 || fbh == 0 || glfwGetWindowAttrib(window_, GLFW_ICONIFIED)) {
             glfwWaitEventsTimeout(0.5);
             continue;
         }
@@ -532,6 +542,7 @@ void Editor::writeTrace() {
     j["selectedPatch"] = sel_.patch;
     j["recoverable"] = recoverable_.size();
     j["modal"] = openModal_;
+    j["textInput"] = ImGui::GetIO().WantTextInput;  // a text field has the keyboard
     j["items"] = traceItems_;
     j["unsavedPrompt"] = pending_ != PendingAction::None;
     j["error"] = errorMessage_;

@@ -227,7 +227,7 @@ void Editor::drawLeftPanel() {
             // Exact entry: applied when Enter is pressed.
             double typed[3] = {doc_.points[p].x, doc_.points[p].y, doc_.points[p].z};
             if (ImGui::InputScalarN("Set", ImGuiDataType_Double, typed, 3, nullptr, nullptr, "%.6g",
-                                    ImGuiInputTextFlags_EnterReturnsTrue)) {
+                                    ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CharsScientific)) {
                 setPointHeld(p, Vec3(typed[0], typed[1], typed[2]));
                 commit("Set point");
             }
@@ -620,7 +620,8 @@ void Editor::drawModals() {
         ImGui::PopTextWrapPos();
         const bool ok = ImGui::Button("OK", ImVec2(120, 0));
         traceItem("error.ok");
-        if (ok || keyPressed(GLFW_KEY_ENTER, 0)) {
+        // Enter closes it, but not the Enter that caused it (a numeric field submitted this frame).
+        if (ok || (keyPressed(GLFW_KEY_ENTER, 0) && !ImGui::IsWindowAppearing())) {
             errorMessage_.clear();
             ImGui::CloseCurrentPopup();
         }
