@@ -11,69 +11,11 @@ DATA=$2
 WORK=$3
 rm -rf "$WORK"
 mkdir -p "$WORK"
-LOG=$WORK/log.txt
-: > "$LOG"
-say() { echo "e2e: $*" | tee -a "$LOG"; }
-fail() {
-    say "FAIL: $*"
-    [ -f "$WORK/editor.err" ] && tail -20 "$WORK/editor.err"
-    [ -f "$WORK/trace.json" ] && python3 -c "import json; t=json.load(open('$WORK/trace.json')); print({k: t[k] for k in t if k not in ('points', 'world')})"
-    exit 1
-}
-for tool in Xvfb xdotool python3; do command -v $tool >/dev/null || { echo "e2e: $tool missing"; exit 77; }; done
-
-# Xvfb picks a free display number itself (-displayfd) so parallel runs cannot collide.
-Xvfb -displayfd 3 -screen 0 1280x800x24 -nolisten tcp 3>"$WORK/display" >"$WORK/xvfb.log" 2>&1 &
-XVFB=$!
-for i in $(seq 100); do [ -s "$WORK/display" ] && break; sleep 0.1; done
-DNUM=$(head -1 "$WORK/display" | tr -d '[:space:]')
-[ -n "$DNUM" ] || { kill "$XVFB" 2>/dev/null; echo "e2e: Xvfb did not start"; cat "$WORK/xvfb.log"; exit 1; }
-EDITOR_PID=""
-cleanup() {
-    [ -n "$EDITOR_PID" ] && kill -9 "$EDITOR_PID" 2>/dev/null || true
-    kill "$XVFB" 2>/dev/null || true
-}
-trap cleanup EXIT
-export DISPLAY=:$DNUM
-for i in $(seq 50); do xdotool getmouselocation >/dev/null 2>&1 && break; sleep 0.1; done
-
-export XDG_STATE_HOME=$WORK/state
-export PATCHWORK_VALIDATION=1
-export PATCHWORK_EDITOR_TRACE=$WORK/trace.json
-export PATCHWORK_WINDOW_SIZE=1200x760
-export PATCHWORK_EDITOR_VIEW=front
-export PATCHWORK_AUTOSAVE_SECONDS=1.5
+source "$(dirname "$0")/e2e_lib.sh"
 
 MODEL=$WORK/model.patchwork
 "$BIN" convert -q "$DATA/teapot.bpt" "$MODEL"
 cp "$MODEL" "$WORK/original.patchwork"
-
-trace() { python3 -c "import json,sys; t=json.load(open('$WORK/trace.json')); print(eval(sys.argv[1]))" "$1"; }
-# wait_for EXPR [seconds]: polls the trace until the Python expression over t is true.
-wait_for() {
-    local expr=$1 secs=${2:-30}
-    for i in $(seq $((secs * 10))); do
-        if [ -f "$WORK/trace.json" ] && python3 - "$expr" "$WORK/trace.json" <<'PY' 2>/dev/null; then return 0; fi
-import json, sys
-t = json.load(open(sys.argv[2]))
-sys.exit(0 if eval(sys.argv[1]) else 1)
-PY
-        kill -0 "$EDITOR_PID" 2>/dev/null || fail "editor exited while waiting for: $expr"
-        sleep 0.1
-    done
-    fail "timed out waiting for: $expr"
-}
-start_editor() {
-    rm -f "$WORK/trace.json"
-    "$BIN" "$@" >>"$WORK/editor.out" 2>>"$WORK/editor.err" &
-    EDITOR_PID=$!
-    wait_for "t['frame'] >= 2" 90
-    WID=$(xdotool search --sync --pid "$EDITOR_PID" --name Patchwork | head -1)
-}
-check_validation() {
-    [ "$(trace "t['validationMessages']")" = "0" ] || fail "validation messages reported"
-    if grep -qi "validation" "$WORK/editor.err"; then fail "validation output on stderr"; fi
-}
 
 # --- 1. open a file -----------------------------------------------------------------------------
 say "open $MODEL"
@@ -145,6 +87,28 @@ say "saved file checked"
 xdotool key ctrl+z
 wait_for "t['modified'] and t['world'][$IDX] == $ORIG"
 say "undo restored point $IDX"
+
+# --- 4a. an out-of-range number typed into the inspector is refused with a message; nothing changes --------------
+wait_for "'inspector.set' in t['items'] and t['selection'] == [$IDX]"
+read -r IX IY < <(trace "' '.join(str(round(v)) for v in t['items']['inspector.set'])")
+xdotool mousemove --sync $IX $IY
+sleep 0.2
+xdotool click 1
+wait_for "t['textInput']"
+xdotool key ctrl+a
+sleep 0.3
+# The field takes scientific notation; 5e10 is past the ±1e9 coordinate limit. The Enter that
+# submits it must not also close the error dialog it opens.
+xdotool type --delay 40 "5e10"
+sleep 0.3
+xdotool key Return
+wait_for "t['modal'] == 'error' and '5e+10 was not applied' in t['error'] and t['world'][$IDX] == $ORIG"
+say "inspector: $(trace "t['error']")"
+read -r EX EY < <(trace "' '.join(str(round(v)) for v in t['items']['error.ok'])")
+xdotool mousemove --sync $EX $EY
+sleep 0.2
+xdotool click 1
+wait_for "t['modal'] == '' and t['world'][$IDX] == $ORIG"
 
 # --- 4b. Esc cancels a G grab, right click cancels a mouse drag (no undo step, point restored) ----
 STEPS=$(trace "t['undoSteps']")
@@ -237,12 +201,6 @@ xdotool click 1
 wait_for "t['modal'] == ''"
 
 # --- 6c. a net: add it, switch nothing, convert it to Bézier patches, undo ----------------------
-click_item() {
-    read -r CX CY < <(trace "' '.join(str(round(v)) for v in t['items']['$1'])")
-    xdotool mousemove --sync $CX $CY
-    sleep 0.2
-    xdotool click 1
-}
 click_item net.add
 wait_for "t['surfaces'] == 1 and t['patches'] == 32 and 'net.toPatches' in t['items']"
 click_item net.toPatches
