@@ -7,15 +7,49 @@
 
 #include "edit_history.hpp"
 #include "model_builders.hpp"
+#include "net_ops.hpp"
+#include "patch_ops.hpp"
 
 using namespace pw;
 
 namespace {
 
+// One of the editor's patch or net operations on a random target; a refused one (EditError)
+// leaves the document as it was, like in the editor.
+void randomOperation(Document& doc, std::mt19937& rng) {
+    Document d = doc;
+    const uint32_t np = static_cast<uint32_t>(d.patches.size()), ns = static_cast<uint32_t>(d.surfaces.size());
+    const uint32_t p = np ? static_cast<uint32_t>(rng() % np) : 0, s = ns ? static_cast<uint32_t>(rng() % ns) : 0;
+    const Edge e = static_cast<Edge>(rng() % 4);
+    try {
+        if (np > 40 || ns > 4) {  // keep the document small: 10 000 steps keep whole documents
+            if (ns > 4) deleteNetSurface(d, s);
+            else deletePatch(d, p);
+            doc = std::move(d);
+            return;
+        }
+        switch (rng() % 10) {
+            case 0: if (np) splitPatch(d, p, rng() % 2 == 0, 0.25 + 0.5 * double(rng() % 3) / 2.0); break;
+            case 1: if (np) extrudeEdge(d, p, e); break;
+            case 2: if (np) flipPatch(d, p); break;
+            case 3: if (np > 1) joinEdges(d, p, e, static_cast<uint32_t>(rng() % np), static_cast<Edge>(rng() % 4), Continuity(rng() % 3)); break;
+            case 4: if (!d.joins.empty()) unjoin(d, rng() % d.joins.size()); break;
+            case 5: addNetSurface(d, 4 + rng() % 4, 4 + rng() % 4, NetShape(rng() % 3), Basis::BSpline, Vec3(double(rng() % 5)), 2.0); break;
+            case 6: if (ns) insertNetRow(d, s, static_cast<uint32_t>(rng() % (d.surfaces[s].rows + 1))); break;
+            case 7: if (ns) deleteNetColumn(d, s, static_cast<uint32_t>(rng() % d.surfaces[s].cols)); break;
+            case 8: if (ns) setNetBasis(d, s, Basis(rng() % 3), 0.5); break;
+            default: if (ns && rng() % 4 == 0) convertNetToPatches(d, s); else if (np) duplicatePatch(d, p, Vec3(1.0, 0.0, 0.0)); break;
+        }
+    } catch (const EditError&) {
+        return;
+    }
+    doc = std::move(d);
+}
+
 // One random edit of the kinds the editor makes: move points, change a setting, add or delete a
-// patch, add a join.
+// patch, add a join, or a patch or net operation.
 void randomEdit(Document& doc, std::mt19937& rng) {
-    std::uniform_int_distribution<int> kind(0, 9);
+    std::uniform_int_distribution<int> kind(0, 11);
     std::uniform_real_distribution<double> delta(-0.5, 0.5);
     const int k = kind(rng);
     if (k <= 5 && !doc.points.empty()) {
@@ -34,6 +68,8 @@ void randomEdit(Document& doc, std::mt19937& rng) {
         }
         p.name = "added";
         doc.patches.push_back(p);
+    } else if (k >= 10) {
+        randomOperation(doc, rng);
     } else if (k == 8 && doc.patches.size() > 1) {
         // delete the last patch and any join that names it
         const uint32_t last = static_cast<uint32_t>(doc.patches.size() - 1);

@@ -1,0 +1,89 @@
+// Fault injection for saves: a child process writes a large file over an existing one with
+// writeFileAtomic (what every save and export uses) and is killed with SIGKILL at random moments
+// during the save. Afterwards the file must hold either the old bytes or the complete new bytes,
+// never a mix or a truncation; the kills must really land inside the save (temporary file seen).
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+
+#include "file_io.hpp"
+#include "support.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// Leftover temporary files of interrupted saves in dir (".<name>.tmp<n>").
+int temporaries(const fs::path& dir) {
+    int n = 0;
+    for (const auto& e : fs::directory_iterator(dir))
+        if (e.path().filename().string().rfind(".doc.patchwork.tmp", 0) == 0) ++n;
+    return n;
+}
+
+}  // namespace
+
+TEST(AtomicSave, KilledInTheMiddleOfASaveLeavesTheOldFileIntact) {
+    const fs::path dir = pw::test::freshTempDir("atomic-save");
+    const fs::path target = dir / "doc.patchwork";
+    // Two contents of the same size that differ everywhere, large enough that a save takes a while.
+    const size_t size = 24u << 20;
+    std::string oldData(size, 'o'), newData(size, 'n');
+    for (size_t i = 0; i < size; i += 4096) oldData[i] = '\n', newData[i] = '\n';
+
+    // How long one whole save takes here.
+    pw::writeFileAtomic(target, newData);
+    const auto t0 = std::chrono::steady_clock::now();
+    pw::writeFileAtomic(target, oldData);
+    const double saveUs = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
+    ASSERT_EQ(slurp(target), oldData);
+
+    std::mt19937 rng(42);
+    std::uniform_real_distribution<double> when(0.0, 1.2 * saveUs);
+    int intact = 0, replaced = 0, interrupted = 0;
+    for (int trial = 0; trial < 16; ++trial) {
+        const pid_t child = fork();
+        ASSERT_GE(child, 0);
+        if (child == 0) {
+            try {
+                pw::writeFileAtomic(target, newData);
+            } catch (...) {
+                _exit(3);
+            }
+            _exit(0);
+        }
+        usleep(useconds_t(when(rng)));
+        kill(child, SIGKILL);
+        int status = 0;
+        waitpid(child, &status, 0);
+        const std::string now = slurp(target);
+        ASSERT_TRUE(now == oldData || now == newData) << "trial " << trial << ": the file holds " << now.size()
+                                                      << " bytes of neither version";
+        const bool killed = WIFSIGNALED(status);
+        if (now == oldData) ++intact;
+        if (now == newData) ++replaced;
+        if (killed && temporaries(dir) > 0) ++interrupted;
+        // Back to the old version for the next trial, and no leftovers.
+        for (const auto& e : fs::directory_iterator(dir))
+            if (e.path() != target) fs::remove(e.path());
+        if (now != oldData) pw::writeFileAtomic(target, oldData);
+    }
+    EXPECT_GT(interrupted, 0) << "no kill landed inside a save (one save takes " << saveUs << " µs)";
+    EXPECT_GT(intact, 0);
+    std::printf("atomic save: %.0f ms per save; 16 kills: %d left the old file, %d the new one, %d interrupted a save\n",
+                saveUs / 1000.0, intact, replaced, interrupted);
+    fs::remove_all(dir);
+}
