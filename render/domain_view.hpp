@@ -1,0 +1,85 @@
+// The domain view (DESIGN §3): the parametric domain (quad, triangle or isoline) tessellated by the
+// GPU's fixed tessellator with the given levels and partitioning. An evaluation shader outputs the
+// tessellation coordinate as the position, so the picture is exactly the pattern the hardware made;
+// pipeline statistics count its vertices (evaluation invocations) and primitives.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <array>
+#include <vector>
+
+#include "device.hpp"
+#include "render_target.hpp"
+#include "tess_domain.hpp"
+
+namespace pw::render {
+
+struct DomainViewOptions {
+    DomainKind kind = DomainKind::Quad;
+    DomainLevels levels;
+    Spacing spacing = Spacing::Equal;
+    // Where the domain goes, in target pixels (x, y, width, height); the domain keeps its aspect and
+    // is centred with `margin` pixels free on every side (for labels).
+    std::array<float, 4> rect{0, 0, 0, 0};
+    float margin = 40.0f;
+    bool clearRect = true;  // clear the rectangle to `background` first
+    std::array<float, 4> background{0.97f, 0.97f, 0.95f, 1.0f};
+    std::array<float, 4> fillColor{0.80f, 0.87f, 0.97f, 1.0f};
+    std::array<float, 4> lineColor{0.10f, 0.14f, 0.22f, 1.0f};
+    std::array<float, 4> pointColor{0.85f, 0.20f, 0.12f, 1.0f};
+    float pointSize = 5.0f;  // pixels, where the device can size points from the evaluation stage
+};
+
+struct DomainStats {
+    bool valid = false;       // pipeline statistics available
+    uint64_t vertices = 0;    // tessellation evaluation invocations
+    uint64_t primitives = 0;  // primitives reaching the clipper (triangles, or line segments)
+};
+
+// Where the domain's corners land: the square (quad, isoline) or equilateral triangle fitted into
+// the options' rectangle. Domain coordinates (x right, y up, [0,1]^2) map to target pixels as
+// px = origin + (x * size, -y * size).
+struct DomainPlacement {
+    float originX = 0, originY = 0;  // pixel position of domain (0, 0)
+    float size = 0;                  // pixels per domain unit
+    std::array<float, 2> toPixels(float x, float y) const { return {originX + x * size, originY - y * size}; }
+};
+DomainPlacement placeDomain(const DomainViewOptions& o);
+
+class DomainView {
+public:
+    // Pipelines for rendering into attachments of these formats and sample count.
+    DomainView(Device& dev, VkFormat color, VkFormat depth, VkSampleCountFlagBits samples);
+    ~DomainView();
+    DomainView(const DomainView&) = delete;
+    DomainView& operator=(const DomainView&) = delete;
+
+    // Draws the domain into `target` (submit and wait). With `clearTarget` the whole target is
+    // cleared first (beginRendering); otherwise what it holds stays (resumeRendering) and only the
+    // rectangle is cleared. Statistics cover the fill pass (triangles, or the lines of isolines).
+    DomainStats draw(RenderTarget& target, const DomainViewOptions& o, bool clearTarget);
+
+    bool pointsSupported() const { return pointsSupported_; }
+
+private:
+    struct Push;
+    VkPipeline pipeline(DomainKind kind, Spacing spacing, int pass) const;  // pass 0 fill, 1 lines, 2 points
+    void recordPass(VkCommandBuffer cmd, const DomainViewOptions& o, int pass, const DomainPlacement& at,
+                    const std::array<float, 4>& color, VkExtent2D extent) const;
+
+    Device& dev_;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    // [domain][spacing][pass]
+    std::array<std::array<std::array<VkPipeline, 3>, 3>, 3> pipes_{};
+    VkFormat color_, depth_;
+    VkSampleCountFlagBits samples_;
+    bool pointsSupported_ = false;
+    friend std::vector<DomainStats> countDomain(Device&, DomainKind, Spacing, const std::vector<DomainLevels>&);
+};
+
+// Counts for many level sets in one submission (tests, sweeps): each set is tessellated once into a
+// small offscreen target and measured with its own pipeline-statistics query.
+std::vector<DomainStats> countDomain(Device& dev, DomainKind kind, Spacing spacing, const std::vector<DomainLevels>& levels);
+
+}  // namespace pw::render
