@@ -1,0 +1,55 @@
+// The teaching presets: the notes' factor sets with their ids, the notes' Bézier patch and their
+// distance formula.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "patch_eval.hpp"
+#include "tess_presets.hpp"
+
+using namespace pw;
+
+TEST(TessPresets, EveryFactorSetOfTheNotesWithAUniqueId) {
+    const auto& ps = tessPresets();
+    EXPECT_EQ(ps.size(), 13u);  // 5 quad, 6 triangle, the fractional example twice
+    std::set<std::string> ids;
+    for (const TessPreset& p : ps) {
+        EXPECT_TRUE(ids.insert(p.name).second) << p.name;
+        EXPECT_EQ(findTessPreset(p.name), &p);
+        EXPECT_EQ(p.name.find(' '), std::string::npos) << "ids are used unquoted on the command line: " << p.name;
+    }
+    const TessPreset* q = findTessPreset("quad-2_2_4_4-2_4");
+    ASSERT_NE(q, nullptr);
+    EXPECT_EQ(q->label, "quad {2,2,4,4 | 2,4}");
+    EXPECT_EQ(q->levels.inner, (std::array<float, 2>{2, 4}));
+    const TessPreset* f = findTessPreset("tri-4.9_4.5_4.1-4.4-fractional_odd");
+    ASSERT_NE(f, nullptr);
+    EXPECT_EQ(f->spacing, Spacing::FractionalOdd);
+    EXPECT_EQ(f->levels.outer[1], 4.5f);
+    EXPECT_EQ(findTessPreset("quad-9"), nullptr);
+    // The notes' uniform quad: 25 vertices, 32 triangles.
+    const DomainCounts c = expectedDomainCounts(ps[0].kind, ps[0].levels, ps[0].spacing);
+    EXPECT_EQ(c.vertices, 25u);
+    EXPECT_EQ(c.primitives, 32u);
+}
+
+TEST(TessPresets, NotesBezierPatchAndDistanceFormula) {
+    const Document d = notesBezierPatch();
+    ASSERT_EQ(d.points.size(), 16u);
+    ASSERT_EQ(d.patches.size(), 1u);
+    EXPECT_EQ(d.points[6], Vec3(5, 20, 5));      // the raised inner point
+    EXPECT_EQ(d.points[15], Vec3(25, 10, -15));  // the pulled corner
+    EXPECT_EQ(d.tess.outer[0], 25.0f);
+    // A Bézier patch interpolates its corners.
+    const Net16 net = gatherNet(d, d.patches[0].idx);
+    EXPECT_NEAR(evaluateNet(net, Basis::Bezier, 0.5, 0.0, 0.0).p.x, -10.0, 1e-12);
+    EXPECT_FLOAT_EQ(notesDistanceLevel(20.0f), 64.0f);
+    EXPECT_FLOAT_EQ(notesDistanceLevel(100.0f), 0.0f);
+    EXPECT_FLOAT_EQ(notesDistanceLevel(60.0f), 32.0f);
+    EXPECT_FLOAT_EQ(notesDistanceLevel(5.0f), 64.0f);
+    TessSettings t;
+    applyNotesDistanceFormula(t);
+    EXPECT_EQ(t.adaptive, AdaptiveMode::Distance);
+    EXPECT_EQ(t.distanceNear, 20.0f);
+    EXPECT_EQ(t.distanceFar, 100.0f);
+}
