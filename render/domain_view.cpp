@@ -143,13 +143,18 @@ void DomainView::recordPass(VkCommandBuffer cmd, const DomainViewOptions& o, int
 }
 
 DomainStats DomainView::draw(RenderTarget& target, const DomainViewOptions& o, bool clearTarget) {
+    return draw(target, std::vector<DomainViewOptions>{o}, clearTarget)[0];
+}
+
+std::vector<DomainStats> DomainView::draw(RenderTarget& target, const std::vector<DomainViewOptions>& panes, bool clearTarget) {
     const VkExtent2D ext = target.extent();
-    const DomainPlacement at = placeDomain(o);
-    VkQueryPool pool = makeStatsPool(dev_, 1);
-    const auto viewportAndScissor = [&](VkCommandBuffer cmd) {
+    const uint32_t n = uint32_t(panes.size());
+    if (n == 0) return {};
+    VkQueryPool pool = makeStatsPool(dev_, n);
+    // Viewport the whole target; scissor the pane's rectangle, so nothing lands outside it.
+    const auto viewportAndScissor = [&](VkCommandBuffer cmd, const DomainViewOptions& o) {
         const VkViewport vp{0, 0, float(ext.width), float(ext.height), 0, 1};
         vkCmdSetViewport(cmd, 0, 1, &vp);
-        // Nothing drawn outside the rectangle (the editor's panel).
         const int x0 = std::clamp(int(std::floor(o.rect[0])), 0, int(ext.width)), y0 = std::clamp(int(std::floor(o.rect[1])), 0, int(ext.height));
         const int x1 = std::clamp(int(std::ceil(o.rect[0] + o.rect[2])), x0, int(ext.width));
         const int y1 = std::clamp(int(std::ceil(o.rect[1] + o.rect[3])), y0, int(ext.height));
@@ -158,32 +163,36 @@ DomainStats DomainView::draw(RenderTarget& target, const DomainViewOptions& o, b
         return sc;
     };
     dev_.submitAndWait([&](VkCommandBuffer cmd) {
-        if (pool) {
-            vkCmdResetQueryPool(cmd, pool, 0, 1);
-            vkCmdBeginQuery(cmd, pool, 0, 0);  // outside rendering (render/stats.hpp: lavapipe)
-        }
-        if (clearTarget) target.beginRendering(cmd, o.background);
-        else target.resumeRendering(cmd);
-        const VkRect2D sc = viewportAndScissor(cmd);
-        if (o.clearRect && !clearTarget && sc.extent.width > 0 && sc.extent.height > 0) {
-            VkClearAttachment ca{VK_IMAGE_ASPECT_COLOR_BIT, 0, {}};
-            ca.clearValue.color = {{o.background[0], o.background[1], o.background[2], o.background[3]}};
-            const VkClearRect cr{sc, 0, 1};
-            vkCmdClearAttachments(cmd, 1, &ca, 1, &cr);
-        }
-        if (sc.extent.width > 0 && sc.extent.height > 0)
-            recordPass(cmd, o, 0, at, o.kind == DomainKind::Isoline ? o.lineColor : o.fillColor, ext);
-        target.pauseRendering(cmd);
-        if (pool) vkCmdEndQuery(cmd, pool, 0);
-        target.resumeRendering(cmd);
-        viewportAndScissor(cmd);
-        if (sc.extent.width > 0 && sc.extent.height > 0) {
-            recordPass(cmd, o, 1, at, o.lineColor, ext);
-            recordPass(cmd, o, 2, at, o.pointColor, ext);
+        if (pool) vkCmdResetQueryPool(cmd, pool, 0, n);
+        for (uint32_t i = 0; i < n; ++i) {
+            const DomainViewOptions& o = panes[i];
+            const DomainPlacement at = placeDomain(o);
+            // The statistics query of each fill pass sits outside rendering (render/stats.hpp: lavapipe).
+            if (pool) vkCmdBeginQuery(cmd, pool, i, 0);
+            if (i == 0 && clearTarget) target.beginRendering(cmd, o.background);
+            else target.resumeRendering(cmd);
+            const VkRect2D sc = viewportAndScissor(cmd, o);
+            const bool visible = sc.extent.width > 0 && sc.extent.height > 0;
+            if (o.clearRect && !(i == 0 && clearTarget) && visible) {
+                VkClearAttachment ca{VK_IMAGE_ASPECT_COLOR_BIT, 0, {}};
+                ca.clearValue.color = {{o.background[0], o.background[1], o.background[2], o.background[3]}};
+                const VkClearRect cr{sc, 0, 1};
+                vkCmdClearAttachments(cmd, 1, &ca, 1, &cr);
+            }
+            if (visible) recordPass(cmd, o, 0, at, o.kind == DomainKind::Isoline ? o.lineColor : o.fillColor, ext);
+            target.pauseRendering(cmd);
+            if (pool) vkCmdEndQuery(cmd, pool, i);
+            target.resumeRendering(cmd);
+            viewportAndScissor(cmd, o);
+            if (visible) {
+                recordPass(cmd, o, 1, at, o.lineColor, ext);
+                recordPass(cmd, o, 2, at, o.pointColor, ext);
+            }
+            if (i + 1 < n) target.pauseRendering(cmd);
         }
         target.endRendering(cmd);
     });
-    DomainStats s = readStats(dev_, pool, 1)[0];
+    std::vector<DomainStats> s = readStats(dev_, pool, n);
     if (pool) vkDestroyQueryPool(dev_.device(), pool, nullptr);
     return s;
 }

@@ -59,6 +59,8 @@ public:
     // cleared first (beginRendering); otherwise what it holds stays (resumeRendering) and only the
     // rectangle is cleared. Statistics cover the fill pass (triangles, or the lines of isolines).
     DomainStats draw(RenderTarget& target, const DomainViewOptions& o, bool clearTarget);
+    // Several panes in one submission (comparison views), each with its own statistics.
+    std::vector<DomainStats> draw(RenderTarget& target, const std::vector<DomainViewOptions>& panes, bool clearTarget);
 
     bool pointsSupported() const { return pointsSupported_; }
 

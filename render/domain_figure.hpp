@@ -1,0 +1,37 @@
+// Domain-view figures as a lecturer needs them: one domain, or 2 or 4 panes side by side (each with
+// its own levels or partitioning), tessellated by the GPU, with every edge labelled and a caption
+// of the counts (render/domain_labels). Used by `patchwork render --domain` and `patchwork sweep`.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "domain_view.hpp"
+#include "label_raster.hpp"
+#include "offscreen_target.hpp"
+
+namespace pw::render {
+
+struct DomainPane {
+    DomainKind kind = DomainKind::Quad;
+    DomainLevels levels;
+    Spacing spacing = Spacing::Equal;
+};
+
+// The rectangles (x, y, width, height) of `count` panes (1, 2: side by side, 3 or 4: a 2 x 2 grid)
+// filling `area`.
+std::vector<std::array<float, 4>> splitPanes(int count, const std::array<float, 4>& area);
+
+// The vertices and primitives to show for a pane: the GPU's statistics where valid, else the
+// rules' prediction.
+std::array<uint64_t, 2> shownCounts(const DomainStats& gpu, const DomainPane& pane);
+
+// Draws the panes into `target` (which must read back), labels them with `labels` at `textPixels`
+// line height (0: from the pane size), and returns the statistics per pane; the labelled image is
+// in `rgba` (target-sized).
+std::vector<DomainStats> renderDomainFigure(DomainView& view, OffscreenTarget& target, const LabelRaster& labels,
+                                            const std::vector<DomainPane>& panes, float textPixels,
+                                            std::vector<uint8_t>& rgba);
+
+}  // namespace pw::render
