@@ -1,6 +1,8 @@
 // `patchwork render [FILE] -o out.png ...`: renders a document headlessly on the GPU tessellation
 // pipeline (offscreen Vulkan target) and writes a PNG, optionally with frame statistics as JSON.
+#include <array>
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -11,8 +13,12 @@
 #include "commands.hpp"
 #include "device.hpp"
 #include "document_io.hpp"
+#include "domain_args.hpp"
+#include "render_args.hpp"
+#include "domain_figure.hpp"
 #include "errors.hpp"
 #include "file_io.hpp"
+#include "level_args.hpp"
 #include "limits.hpp"
 #include "offscreen_target.hpp"
 #include "png_writer.hpp"
@@ -22,50 +28,17 @@ namespace pw::app {
 
 namespace {
 
-struct RenderArgs {
-    std::string input, output = "", size = "1280x720", tess, outer, inner, spacing, adaptive, shading, overlay, view, stats,
-                device, targetPx, maxLevel;
-    bool cull = false, validation = false, noMsaa = false;
-};
 
-[[noreturn]] void bad(const std::string& option, const std::string& what) {
-    throw InputError("render", option + ": " + what);
-}
-
-float parseLevel(const std::string& option, const std::string& text) {
-    float v = 0.0f;
-    try {
-        size_t used = 0;
-        v = std::stof(text, &used);
-        if (used != text.size()) throw std::invalid_argument("trailing");
-    } catch (const std::exception&) {
-        bad(option, "'" + text + "' is not a number");
-    }
-    if (!std::isfinite(v) || v < limits::kMinTessLevel || v > limits::kMaxTessLevel)
-        bad(option, "tessellation level '" + text + "' must be from 1 to 64");
-    return v;
-}
-
+[[noreturn]] void bad(const std::string& option, const std::string& what) { badOption("render", option, what); }
+float parseLevel(const std::string& option, const std::string& text) { return app::parseLevel("render", option, text); }
 std::vector<float> parseLevels(const std::string& option, const std::string& text, size_t count) {
-    std::vector<float> out;
-    std::stringstream ss(text);
-    std::string item;
-    while (std::getline(ss, item, ',')) out.push_back(parseLevel(option, item));
-    if (out.size() != count) bad(option, "expected " + std::to_string(count) + " comma-separated levels, got '" + text + "'");
-    return out;
-}
-
-std::vector<std::string> splitList(const std::string& text) {
-    std::vector<std::string> out;
-    std::stringstream ss(text);
-    std::string item;
-    while (std::getline(ss, item, ','))
-        if (!item.empty()) out.push_back(item);
-    return out;
+    return app::parseLevels("render", option, text, count);
 }
 
 // Applies the command-line settings on top of the document's (validating everything first).
-render::RenderOptions buildOptions(const RenderArgs& a, const Document& doc, uint32_t width, uint32_t height) {
+}  // namespace
+
+render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& doc, uint32_t width, uint32_t height) {
     render::RenderOptions o = render::optionsFromDocument(doc);
     o.display.showGrid = o.display.showWireframe = o.display.showNormals = o.display.showBoundaries = false;
     if (!a.tess.empty()) {
@@ -87,9 +60,7 @@ render::RenderOptions buildOptions(const RenderArgs& a, const Document& doc, uin
         o.tess.adaptive = AdaptiveMode::None;
     }
     if (!a.spacing.empty()) {
-        auto s = parseSpacing(a.spacing);
-        if (!s) bad("--spacing", "'" + a.spacing + "' is not one of equal, fractional_odd, fractional_even, pow2");
-        o.tess.spacing = *s;
+        o.tess.spacing = parseSpacingOption("render", "--spacing", a.spacing);
     }
     if (!a.adaptive.empty()) {
         auto m = parseAdaptive(a.adaptive);
@@ -128,17 +99,58 @@ render::RenderOptions buildOptions(const RenderArgs& a, const Document& doc, uin
     return o;
 }
 
+namespace {
+
+// `render --domain/--preset`: the parametric domain tessellated by the GPU, labelled.
+int runDomainRender(const RenderArgs& a, const std::vector<render::DomainPane>& panes, unsigned w, unsigned h) {
+    render::DeviceOptions dopt;
+    dopt.name = a.device;
+    dopt.validation = a.validation;
+    int rc = 0;
+    {
+        render::Device dev(dopt);
+        render::OffscreenTarget target(dev, w, h, !a.noMsaa);
+        render::DomainView view(dev, target.colorFormat(), target.depthFormat(), target.samples());
+        const render::LabelRaster labels;
+        std::vector<uint8_t> rgba;
+        const auto stats = render::renderDomainFigure(view, target, labels, panes, 0.0f, rgba);
+        render::writePng(a.output, w, h, rgba);
+        nlohmann::json j;
+        j["device"] = dev.name();
+        for (size_t i = 0; i < panes.size(); ++i) {
+            const auto& p = panes[i];
+            const DomainCounts want = expectedDomainCounts(p.kind, p.levels, p.spacing, float(dev.caps().maxTessLevel));
+            const auto shown = render::shownCounts(stats[i], p);
+            std::cout << "wrote " << a.output << " pane " << i + 1 << ": " << domainName(p.kind) << " " << spacingName(p.spacing)
+                      << ", " << shown[0] << " vertices, " << shown[1] << " primitives"
+                      << (stats[i].valid ? " (pipeline statistics)" : " (rules; no pipeline statistics)") << "\n";
+            j["panes"].push_back({{"domain", domainName(p.kind)},
+                                  {"spacing", spacingName(p.spacing)},
+                                  {"outer", p.levels.outer},
+                                  {"inner", p.levels.inner},
+                                  {"statisticsValid", stats[i].valid},
+                                  {"vertices", stats[i].vertices},
+                                  {"primitives", stats[i].primitives},
+                                  {"expectedVertices", want.vertices},
+                                  {"expectedPrimitives", want.primitives}});
+        }
+        if (!a.stats.empty()) writeFileAtomic(a.stats, j.dump(2) + "\n");
+        rc = validationExitCode(dev, "render");
+    }
+    return rc;
+}
+
 int runRender(const RenderArgs& a) {
     if (a.output.empty()) bad("-o", "an output .png file is required");
-    unsigned w = 0, h = 0;
-    {
-        char x = 0;
-        std::stringstream ss(a.size);
-        if (!(ss >> w >> x >> h) || x != 'x' || !ss.eof() || w < 1 || h < 1 || w > 8192 || h > 8192)
-            bad("--size", "'" + a.size + "' must be WIDTHxHEIGHT with sides from 1 to 8192");
+    const auto [w, h] = parseImageSize("render", a.size);
+    const DomainArgs dargs = domainArgs(a);
+    if (wantsDomain(dargs)) {
+        if (!a.input.empty()) bad("--domain", "a domain figure draws no document; leave out the file");
+        return runDomainRender(a, domainPanes("render", dargs), w, h);
     }
+    if (!a.compare.empty()) bad("--compare", "comparison panes are for domain figures (--domain or --preset)");
     const Document doc = a.input.empty() ? builtinTeapot() : loadDocument(a.input);
-    const render::RenderOptions opt = buildOptions(a, doc, w, h);
+    const render::RenderOptions opt = buildRenderOptions(a, doc, w, h);
 
     render::DeviceOptions dopt;
     dopt.name = a.device;
@@ -163,37 +175,49 @@ int runRender(const RenderArgs& a) {
         if (!a.stats.empty()) {
             writeFileAtomic(a.stats, render::statsToJson(st) + "\n");
         }
-        if (dev.validationEnabled() && render::Device::validationMessageCount() > 0) {
-            std::cerr << "patchwork render: " << render::Device::validationMessageCount() << " Vulkan validation message(s)\n";
-            rc = 1;
-        }
+        rc = validationExitCode(dev, "render");
     }
     return rc;
 }
 
 }  // namespace
 
+int validationExitCode(const render::Device& dev, const std::string& command) {
+    if (!dev.validationEnabled() || render::Device::validationMessageCount() == 0) return 0;
+    std::cerr << "patchwork " << command << ": " << render::Device::validationMessageCount() << " Vulkan validation message(s)\n";
+    return 1;
+}
+
+DomainArgs domainArgs(const RenderArgs& a) { return {a.domain, a.preset, a.compare, a.tess, a.outer, a.inner, a.spacing}; }
+
+void addRenderOptions(CLI::App* cmd, RenderArgs& a) {
+    cmd->add_option("file", a.input, "Document (.patchwork, .bpt, .gltf, .glb); default: the built-in teapot");
+    cmd->add_option("--size", a.size, "Image size WIDTHxHEIGHT (default 1280x720)");
+    cmd->add_option("--tess", a.tess, "Uniform tessellation level 1..64 (all outer and inner levels)");
+    cmd->add_option("--outer", a.outer, "Four outer levels a,b,c,d (edges u0, v0, u1, v1), 1..64; with --domain tri three, isoline two (lines, segments)");
+    cmd->add_option("--inner", a.inner, "Two inner levels a,b (along u, along v), 1..64; with --domain tri one");
+    cmd->add_option("--spacing", a.spacing, "equal | fractional_odd | fractional_even | pow2");
+    cmd->add_option("--adaptive", a.adaptive, "none | distance | screen | orientation");
+    cmd->add_option("--target-px", a.targetPx, "Screen-space adaptive: pixels per segment (default 8)");
+    cmd->add_option("--max-level", a.maxLevel, "Adaptive: largest level, 1..64");
+    cmd->add_option("--shading", a.shading, "lit | normal | patch | uv | zebra | curvature | gauss | mean");
+    cmd->add_option("--overlay", a.overlay, "Comma-separated overlays: grid, wire, normals, boundaries");
+    cmd->add_option("--view", a.view, "front | back | left | right | top | bottom | iso (framed to the model)");
+    cmd->add_option("--stats", a.stats, "Write frame statistics (triangles, GPU time, ...) as JSON to this file");
+    cmd->add_option("--domain", a.domain, "Draw the parametric domain instead: quad | tri | isoline (levels from --tess/--outer/--inner)");
+    cmd->add_option("--preset", a.preset, "Domain figure of the notes' factor sets: preset id(s), comma-separated (see `patchwork presets`)");
+    cmd->add_option("--compare", a.compare, "Domain figure: 2-4 partitionings side by side, e.g. equal,fractional_odd");
+    cmd->add_option("--device", a.device, "Vulkan device: substring of its name");
+    cmd->add_flag("--cull", a.cull, "Cull back-facing patches (conservative normal-cone test)");
+    cmd->add_flag("--validation", a.validation, "Enable the Vulkan validation layer (also PATCHWORK_VALIDATION=1)");
+    cmd->add_flag("--no-msaa", a.noMsaa, "Single-sample rendering");
+}
+
 void registerRenderCommand(CLI::App& app, Action& run) {
     auto a = std::make_shared<RenderArgs>();
     CLI::App* cmd = app.add_subcommand("render", "Render a document offscreen on the GPU tessellation pipeline to a PNG");
-    cmd->add_option("file", a->input, "Document (.patchwork, .bpt, .gltf, .glb); default: the built-in teapot");
+    addRenderOptions(cmd, *a);
     cmd->add_option("-o,--output", a->output, "Output PNG")->required();
-    cmd->add_option("--size", a->size, "Image size WIDTHxHEIGHT (default 1280x720)");
-    cmd->add_option("--tess", a->tess, "Uniform tessellation level 1..64 (all outer and inner levels)");
-    cmd->add_option("--outer", a->outer, "Four outer levels a,b,c,d (edges u0, v0, u1, v1), 1..64");
-    cmd->add_option("--inner", a->inner, "Two inner levels a,b (along u, along v), 1..64");
-    cmd->add_option("--spacing", a->spacing, "equal | fractional_odd | fractional_even | pow2");
-    cmd->add_option("--adaptive", a->adaptive, "none | distance | screen | orientation");
-    cmd->add_option("--target-px", a->targetPx, "Screen-space adaptive: pixels per segment (default 8)");
-    cmd->add_option("--max-level", a->maxLevel, "Adaptive: largest level, 1..64");
-    cmd->add_option("--shading", a->shading, "lit | normal | patch | uv | zebra | curvature | gauss | mean");
-    cmd->add_option("--overlay", a->overlay, "Comma-separated overlays: grid, wire, normals, boundaries");
-    cmd->add_option("--view", a->view, "front | back | left | right | top | bottom | iso (framed to the model)");
-    cmd->add_option("--stats", a->stats, "Write frame statistics (triangles, GPU time, ...) as JSON to this file");
-    cmd->add_option("--device", a->device, "Vulkan device: substring of its name");
-    cmd->add_flag("--cull", a->cull, "Cull back-facing patches (conservative normal-cone test)");
-    cmd->add_flag("--validation", a->validation, "Enable the Vulkan validation layer (also PATCHWORK_VALIDATION=1)");
-    cmd->add_flag("--no-msaa", a->noMsaa, "Single-sample rendering");
     cmd->callback([a, &run] { run = [a] { return runRender(*a); }; });
 }
 

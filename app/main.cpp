@@ -19,6 +19,8 @@ int main(int argc, char** argv) {
     pw::app::registerConvertCommand(app, run);
     pw::app::registerRenderCommand(app, run);
     pw::app::registerBenchCommand(app, run);
+    pw::app::registerPresetsCommand(app, run);
+    pw::app::registerSweepCommand(app, run);
 
     try {
         app.parse(argc, argv);

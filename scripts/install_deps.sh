@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian/Ubuntu packages Patchwork needs that are not installed yet. Idempotent and
 # quiet: prints one line when everything is present. Usage: scripts/install_deps.sh [--tests]
-#   --tests  also what the test suite needs (validation layers, Xvfb, xdotool, ImageMagick, Node.js
+#   --tests  also what the test suite needs (validation layers, Xvfb, xdotool, ImageMagick, a window
+#            manager (openbox) for minimise tests, clang with libFuzzer, Node.js
 #            for the Khronos glTF validator).
 set -euo pipefail
 
@@ -9,10 +10,10 @@ build_packages=(
   cmake g++ make pkg-config
   libvulkan-dev mesa-vulkan-drivers glslc
   libglfw3-dev libimgui-dev libglm-dev libeigen3-dev libtinygltf-dev
-  nlohmann-json3-dev libstb-dev libcli11-dev
+  nlohmann-json3-dev libstb-dev libcli11-dev fonts-dejavu-core
   libgtest-dev libbenchmark-dev
 )
-test_packages=(vulkan-validationlayers vulkan-tools xvfb xdotool imagemagick)
+test_packages=(vulkan-validationlayers vulkan-tools xvfb xdotool imagemagick openbox clang libclang-rt-dev)
 
 wanted=("${build_packages[@]}")
 if [[ "${1:-}" == "--tests" ]]; then

@@ -1,0 +1,27 @@
+// `patchwork presets`: the teaching presets (factor sets of the lecture notes) with their ids for
+// `render --preset` and `sweep --preset`, and the expected vertex and primitive counts.
+#include <iomanip>
+#include <iostream>
+
+#include "commands.hpp"
+#include "tess_presets.hpp"
+
+namespace pw::app {
+
+void registerPresetsCommand(CLI::App& app, Action& run) {
+    CLI::App* cmd = app.add_subcommand("presets", "List the tessellation presets of the lecture notes (ids for render/sweep --preset)");
+    cmd->callback([&run] {
+        run = [] {
+            for (const TessPreset& p : tessPresets()) {
+                const DomainCounts c = expectedDomainCounts(p.kind, p.levels, p.spacing);
+                std::cout << std::left << std::setw(36) << p.name << std::setw(34) << p.label << std::right << std::setw(4)
+                          << c.vertices << " vertices " << std::setw(4) << c.primitives << " primitives  " << p.note << "\n";
+            }
+            std::cout << "Model presets in the editor: the notes' Bézier patch (16 control points, level 25) and the notes' "
+                         "distance formula 64*saturate((d1-d)/(d1-d0)), d0 = 20, d1 = 100.\n";
+            return 0;
+        };
+    });
+}
+
+}  // namespace pw::app

@@ -1,0 +1,157 @@
+// `patchwork sweep [FILE] -o PATTERN --from A --to B`: animates a uniform tessellation level from A
+// to B and writes the frames as a numbered PNG sequence, headless: the model (with its wireframe,
+// so vertices popping in under integer spacing and sliding in under fractional spacing show), or a
+// domain figure (--domain / --preset, with --compare for panes side by side). Each frame is
+// captioned with its level and triangle count.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <regex>
+
+#include "commands.hpp"
+#include "document_io.hpp"
+#include "domain_labels.hpp"
+#include "errors.hpp"
+#include "level_args.hpp"
+#include "model_builders.hpp"
+#include "offscreen_target.hpp"
+#include "png_writer.hpp"
+#include "render_args.hpp"
+
+namespace pw::app {
+
+namespace {
+
+struct SweepArgs {
+    RenderArgs render;
+    std::string output, from = "1", to = "16";
+    double seconds = 3.0, fps = 10.0;
+    int frames = 0;
+};
+
+// File name of frame k: PATTERN with one printf integer conversion (%d, %04d), or DIR/frame_%04d.png.
+class FrameNames {
+public:
+    explicit FrameNames(const std::string& pattern) {
+        static const std::regex oneConversion(R"(^[^%]*%0?[1-9]?d[^%]*$)");
+        if (pattern.find('%') != std::string::npos) {
+            if (!std::regex_match(pattern, oneConversion))
+                badOption("sweep", "-o", "'" + pattern + "' needs exactly one %d or %0Nd (N 1-9) for the frame number");
+            pattern_ = pattern;
+        } else {
+            pattern_ = (std::filesystem::path(pattern) / "frame_%04d.png").string();
+        }
+        const std::filesystem::path dir = std::filesystem::path(pattern_).parent_path();
+        std::error_code ec;
+        if (!dir.empty()) std::filesystem::create_directories(dir, ec);
+        if (!dir.empty() && !std::filesystem::is_directory(dir))
+            throw OutputError(dir.string(), "cannot create the frame directory" + (ec ? ": " + ec.message() : std::string()));
+    }
+    std::string operator()(int k) const {
+        char buf[4096];
+        std::snprintf(buf, sizeof buf, pattern_.c_str(), k);
+        return buf;
+    }
+
+private:
+    std::string pattern_;
+};
+
+void caption(const render::LabelRaster& labels, std::vector<uint8_t>& rgba, unsigned w, unsigned h, const std::string& text) {
+    render::TextStyle st;
+    st.pixels = std::clamp(float(h) / 24.0f, 12.0f, 40.0f);
+    st.box = true;
+    labels.draw({w, h, rgba}, st.pixels * 0.6f, st.pixels * 0.6f, text, st);
+}
+
+int runSweep(const SweepArgs& a) {
+    const std::string cmd = "sweep";
+    if (!a.render.tess.empty() || !a.render.outer.empty() || !a.render.inner.empty())
+        badOption(cmd, "--tess", "a sweep sets the levels itself (--from, --to)");
+    if (!a.render.stats.empty()) badOption(cmd, "--stats", "sweep writes no statistics; each frame's caption has its count");
+    const float from = parseLevel(cmd, "--from", a.from), to = parseLevel(cmd, "--to", a.to);
+    if (!(a.seconds > 0.0 && a.seconds <= 600.0)) badOption(cmd, "--seconds", "must be from 0 to 600");
+    if (!(a.fps > 0.0 && a.fps <= 120.0)) badOption(cmd, "--fps", "must be from 0 to 120");
+    const int frames = a.frames > 0 ? a.frames : std::max(2, int(std::lround(a.seconds * a.fps)) + 1);
+    if (frames < 2 || frames > 10000) badOption(cmd, "--frames", "must be from 2 to 10000");
+    const auto [w, h] = parseImageSize(cmd, a.render.size);
+    const DomainArgs dargs = domainArgs(a.render);
+    const bool domain = wantsDomain(dargs);
+    std::vector<render::DomainPane> panes;
+    if (domain) {
+        if (!a.render.input.empty()) badOption(cmd, "--domain", "a domain sweep draws no document; leave out the file");
+        panes = domainPanes(cmd, dargs);
+    }
+    const Document doc = domain ? Document{} : a.render.input.empty() ? builtinTeapot() : loadDocument(a.render.input);
+    render::RenderOptions opt;
+    if (!domain) {
+        opt = buildRenderOptions(a.render, doc, w, h);
+        if (a.render.overlay.empty()) opt.display.showWireframe = true;  // popping and sliding show in the wireframe
+        opt.tess.adaptive = AdaptiveMode::None;
+    }
+    const FrameNames names(a.output);
+
+    render::DeviceOptions dopt;
+    dopt.name = a.render.device;
+    dopt.validation = a.render.validation;
+    int rc = 0;
+    {
+        render::Device dev(dopt);
+        render::OffscreenTarget target(dev, w, h, !a.render.noMsaa);
+        const render::LabelRaster labels;
+        std::unique_ptr<render::DomainView> view;
+        std::unique_ptr<render::Renderer> renderer;
+        if (domain) {
+            view = std::make_unique<render::DomainView>(dev, target.colorFormat(), target.depthFormat(), target.samples());
+        } else {
+            renderer = std::make_unique<render::Renderer>(dev, target);
+            renderer->setDocument(doc);
+            renderer->warmUp();
+        }
+        std::vector<uint8_t> rgba;
+        for (int k = 0; k < frames; ++k) {
+            const float level = from + (to - from) * float(k) / float(frames - 1);
+            std::string text = "level " + render::formatLevel(level);
+            if (domain) {
+                std::vector<render::DomainPane> now = panes;
+                for (auto& p : now) {
+                    for (float& l : p.levels.outer) l = l > 0.0f ? level : 0.0f;
+                    for (float& l : p.levels.inner) l = l > 0.0f ? level : 0.0f;
+                }
+                render::renderDomainFigure(*view, target, labels, now, 0.0f, rgba);
+            } else {
+                opt.tess.outer = {level, level, level, level};
+                opt.tess.inner = {level, level};
+                const render::FrameStats st = renderer->render(opt);
+                rgba = target.pixels();
+                text += "  \u00b7  " + std::string(spacingName(opt.tess.spacing)) + "  \u00b7  " + std::to_string(st.triangles()) +
+                        " triangles";
+            }
+            caption(labels, rgba, w, h, text);
+            render::writePng(names(k), w, h, rgba);
+        }
+        std::cout << "wrote " << frames << " frames (" << w << "x" << h << ", level " << render::formatLevel(from) << " to "
+                  << render::formatLevel(to) << "): " << names(0) << " .. " << names(frames - 1) << "\n";
+        rc = validationExitCode(dev, cmd);
+    }
+    return rc;
+}
+
+}  // namespace
+
+void registerSweepCommand(CLI::App& app, Action& run) {
+    auto a = std::make_shared<SweepArgs>();
+    CLI::App* cmd = app.add_subcommand("sweep", "Animate a tessellation level from --from to --to and write the frames as numbered PNGs");
+    addRenderOptions(cmd, a->render);
+    cmd->add_option("-o,--output", a->output, "Frame file pattern with one %d or %04d, or a directory (frame_0000.png ...)")->required();
+    cmd->add_option("--from", a->from, "First level, 1..64 (default 1)");
+    cmd->add_option("--to", a->to, "Last level, 1..64 (default 16)");
+    cmd->add_option("--seconds", a->seconds, "Length of the animation (default 3)");
+    cmd->add_option("--fps", a->fps, "Frames per second (default 10)");
+    cmd->add_option("--frames", a->frames, "Number of frames (overrides --seconds x --fps)");
+    cmd->callback([a, &run] { run = [a] { return runSweep(*a); }; });
+}
+
+}  // namespace pw::app

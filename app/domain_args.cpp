@@ -1,0 +1,68 @@
+#include "domain_args.hpp"
+
+#include "level_args.hpp"
+#include "tess_presets.hpp"
+
+namespace pw::app {
+
+bool wantsDomain(const DomainArgs& a) { return !a.domain.empty() || !a.preset.empty(); }
+
+DomainLevels domainLevelsFromArgs(const std::string& command, DomainKind kind, const DomainArgs& a) {
+    const size_t nOuter = kind == DomainKind::Quad ? 4 : kind == DomainKind::Triangle ? 3 : 2;
+    const size_t nInner = kind == DomainKind::Quad ? 2 : kind == DomainKind::Triangle ? 1 : 0;
+    const std::string name(domainName(kind));
+    DomainLevels l;
+    if (!a.tess.empty()) {
+        if (!a.outer.empty() || !a.inner.empty()) badOption(command, "--tess", "use either --tess or --outer/--inner");
+        const float v = parseLevel(command, "--tess", a.tess);
+        l.outer = {v, v, v, v};
+        l.inner = {v, v};
+    }
+    if (!a.outer.empty()) {
+        const auto v = parseLevels(command, "--outer", a.outer, nOuter);
+        for (size_t i = 0; i < nOuter; ++i) l.outer[i] = v[i];
+    }
+    if (!a.inner.empty()) {
+        if (nInner == 0) badOption(command, "--inner", "the isoline domain has no inner levels");
+        const auto v = parseLevels(command, "--inner", a.inner, nInner);
+        for (size_t i = 0; i < nInner; ++i) l.inner[i] = v[i];
+    }
+    for (size_t i = nOuter; i < 4; ++i) l.outer[i] = 0.0f;  // unused by this domain
+    for (size_t i = nInner; i < 2; ++i) l.inner[i] = 0.0f;
+    return l;
+}
+
+std::vector<render::DomainPane> domainPanes(const std::string& command, const DomainArgs& a) {
+    std::vector<render::DomainPane> panes;
+    if (!a.preset.empty()) {
+        if (!a.domain.empty() || !a.tess.empty() || !a.outer.empty() || !a.inner.empty())
+            badOption(command, "--preset", "a preset sets the domain and levels; leave out --domain, --tess, --outer, --inner");
+        for (const std::string& id : splitList(a.preset)) {
+            const TessPreset* p = findTessPreset(id);
+            if (!p) badOption(command, "--preset", "'" + id + "' is not a preset (`patchwork presets` lists them)");
+            panes.push_back({p->kind, p->levels, p->spacing});
+        }
+    } else {
+        const auto kind = parseDomain(a.domain);
+        if (!kind) badOption(command, "--domain", "'" + a.domain + "' is not one of quad, tri, isoline");
+        panes.push_back({*kind, domainLevelsFromArgs(command, *kind, a), Spacing::Equal});
+    }
+    if (!a.spacing.empty()) {
+        const Spacing s = parseSpacingOption(command, "--spacing", a.spacing);
+        for (auto& p : panes) p.spacing = s;
+    }
+    if (!a.compare.empty()) {
+        if (panes.size() != 1) badOption(command, "--compare", "compare partitionings of one level set (one preset)");
+        const render::DomainPane base = panes.front();
+        panes.clear();
+        for (const std::string& s : splitList(a.compare)) {
+            render::DomainPane p = base;
+            p.spacing = parseSpacingOption(command, "--compare", s);
+            panes.push_back(p);
+        }
+    }
+    if (panes.empty() || panes.size() > 4) badOption(command, a.compare.empty() ? "--preset" : "--compare", "give 1 to 4 panes");
+    return panes;
+}
+
+}  // namespace pw::app

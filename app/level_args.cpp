@@ -1,0 +1,63 @@
+#include "level_args.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "errors.hpp"
+#include "limits.hpp"
+
+namespace pw::app {
+
+void badOption(const std::string& command, const std::string& option, const std::string& what) {
+    throw InputError(command, option + ": " + what);
+}
+
+float parseLevel(const std::string& command, const std::string& option, const std::string& text) {
+    float v = 0.0f;
+    try {
+        size_t used = 0;
+        v = std::stof(text, &used);
+        if (used != text.size()) throw std::invalid_argument("trailing");
+    } catch (const std::exception&) {
+        badOption(command, option, "'" + text + "' is not a number");
+    }
+    if (!std::isfinite(v) || v < limits::kMinTessLevel || v > limits::kMaxTessLevel)
+        badOption(command, option, "tessellation level '" + text + "' must be from 1 to 64");
+    return v;
+}
+
+std::vector<float> parseLevels(const std::string& command, const std::string& option, const std::string& text, size_t count) {
+    std::vector<float> out;
+    std::stringstream ss(text);
+    std::string item;
+    while (std::getline(ss, item, ',')) out.push_back(parseLevel(command, option, item));
+    if (out.size() != count)
+        badOption(command, option, "expected " + std::to_string(count) + " comma-separated levels, got '" + text + "'");
+    return out;
+}
+
+std::vector<std::string> splitList(const std::string& text) {
+    std::vector<std::string> out;
+    std::stringstream ss(text);
+    std::string item;
+    while (std::getline(ss, item, ','))
+        if (!item.empty()) out.push_back(item);
+    return out;
+}
+
+std::array<unsigned, 2> parseImageSize(const std::string& command, const std::string& text) {
+    unsigned w = 0, h = 0;
+    char x = 0;
+    std::stringstream ss(text);
+    if (!(ss >> w >> x >> h) || x != 'x' || !ss.eof() || w < 1 || h < 1 || w > 8192 || h > 8192)
+        badOption(command, "--size", "'" + text + "' must be WIDTHxHEIGHT with sides from 1 to 8192");
+    return {w, h};
+}
+
+Spacing parseSpacingOption(const std::string& command, const std::string& option, const std::string& text) {
+    auto s = parseSpacing(text);
+    if (!s) badOption(command, option, "'" + text + "' is not one of equal, fractional_odd, fractional_even, pow2");
+    return *s;
+}
+
+}  // namespace pw::app

@@ -1,0 +1,24 @@
+// Command-line parsing shared by render and sweep: tessellation levels (finite, 1..64) and lists,
+// each error a pw::InputError naming the command and option.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "document.hpp"
+
+namespace pw::app {
+
+[[noreturn]] void badOption(const std::string& command, const std::string& option, const std::string& what);
+
+float parseLevel(const std::string& command, const std::string& option, const std::string& text);
+// Exactly `count` comma-separated levels.
+std::vector<float> parseLevels(const std::string& command, const std::string& option, const std::string& text, size_t count);
+// Non-empty comma-separated items.
+std::vector<std::string> splitList(const std::string& text);
+// "WIDTHxHEIGHT", sides 1..8192 (--size).
+std::array<unsigned, 2> parseImageSize(const std::string& command, const std::string& text);
+Spacing parseSpacingOption(const std::string& command, const std::string& option, const std::string& text);
+
+}  // namespace pw::app

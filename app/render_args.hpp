@@ -1,0 +1,28 @@
+// The options `patchwork render` and `patchwork sweep` share (document, levels, spacing, adaptive,
+// shading, overlays, view, domain figures, device), parsed into renderer settings.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "document.hpp"
+#include "domain_args.hpp"
+#include "renderer.hpp"
+
+namespace pw::app {
+
+struct RenderArgs {
+    std::string input, output = "", size = "1280x720", tess, outer, inner, spacing, adaptive, shading, overlay, view, stats,
+                device, targetPx, maxLevel, domain, preset, compare;
+    bool cull = false, validation = false, noMsaa = false;
+};
+
+// Registers every shared option on `cmd` (not -o: each command says what it writes).
+void addRenderOptions(CLI::App* cmd, RenderArgs& a);
+// The document's settings with the command-line ones on top, all validated (InputError on bad ones).
+render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& doc, uint32_t width, uint32_t height);
+DomainArgs domainArgs(const RenderArgs& a);
+// 1 (after saying so on stderr) when the validation layer reported anything, else 0.
+int validationExitCode(const render::Device& dev, const std::string& command);
+
+}  // namespace pw::app

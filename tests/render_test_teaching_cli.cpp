@@ -1,0 +1,205 @@
+// Teaching figures from the command line: `render --domain/--preset/--compare` (GPU counts against
+// the rounding rules, labels drawn), `sweep` (numbered frames), `presets`; bad options are exit 2
+// naming the option, and write nothing. Validation layer on (non-zero exit on any message).
+#include <gtest/gtest.h>
+#include <stb_image.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "domain_figure.hpp"
+#include "domain_labels.hpp"
+#include "support.hpp"
+#include "tess_presets.hpp"
+
+namespace pw::test {
+namespace {
+
+std::string bin() { return "PATCHWORK_VALIDATION=1 " + patchworkBinary().string(); }
+
+struct Png {
+    int w = 0, h = 0;
+    std::vector<uint8_t> rgba;
+    const uint8_t* at(int x, int y) const { return &rgba[(size_t(y) * size_t(w) + size_t(x)) * 4]; }
+};
+
+Png loadPng(const std::filesystem::path& p) {
+    Png img;
+    int n = 0;
+    unsigned char* data = stbi_load(p.c_str(), &img.w, &img.h, &n, 4);
+    if (data) img.rgba.assign(data, data + size_t(img.w) * size_t(img.h) * 4);
+    stbi_image_free(data);
+    return img;
+}
+
+// Pixels of the edge-label colour (render/domain_figure.cpp: dark red text) inside a rectangle.
+size_t labelPixels(const Png& img, int x0, int y0, int x1, int y1) {
+    size_t n = 0;
+    for (int y = std::max(0, y0); y < std::min(img.h, y1); ++y)
+        for (int x = std::max(0, x0); x < std::min(img.w, x1); ++x) {
+            const uint8_t* p = img.at(x, y);
+            n += p[0] > 120 && p[1] < 110 && p[2] < 100 && p[0] > p[1] + 50;
+        }
+    return n;
+}
+
+nlohmann::json readJson(const std::filesystem::path& p) {
+    std::ifstream in(p);
+    return nlohmann::json::parse(in);
+}
+
+}  // namespace
+
+TEST(TeachingCli, PresetFigureCountsFollowTheRulesAndIsLabelled) {
+    const auto dir = freshTempDir("teach-preset");
+    const auto png = dir / "d.png", stats = dir / "d.json";
+    const RunResult r = runCommand(bin() + " render --preset quad-1_2_3_4-4_4 --size 400x400 -o " + png.string() + " --stats " +
+                                   stats.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const nlohmann::json j = readJson(stats);
+    ASSERT_EQ(j["panes"].size(), 1u);
+    const auto& p = j["panes"][0];
+    EXPECT_TRUE(p["statisticsValid"].get<bool>());
+    EXPECT_EQ(p["vertices"].get<uint64_t>(), 19u);  // 1+2+3+4 boundary vertices + 3x3 interior
+    EXPECT_EQ(p["primitives"].get<uint64_t>(), 26u);
+    EXPECT_EQ(p["vertices"], p["expectedVertices"]);
+    const Png img = loadPng(png);
+    ASSERT_EQ(img.w, 400);
+    // The four edge labels sit in the margins beside the middle of each edge; nothing red elsewhere
+    // in the corners.
+    render::DomainViewOptions o;
+    o.rect = {0, 0, 400, 400};
+    o.margin = render::domainLabelMargin(std::clamp(400.0f / 26.0f, 11.0f, 40.0f));
+    const render::DomainPlacement at = render::placeDomain(o);
+    const int left = int(at.originX), right = int(at.originX + at.size), top = int(at.originY - at.size), bottom = int(at.originY);
+    const int mid = (top + bottom) / 2, cx = (left + right) / 2;
+    EXPECT_GT(labelPixels(img, 0, mid - 12, left, mid + 12), 10u) << "outer[0] label (u = 0, left)";
+    EXPECT_GT(labelPixels(img, right, mid - 12, 400, mid + 12), 10u) << "outer[2] label (u = 1, right)";
+    EXPECT_GT(labelPixels(img, cx - 20, bottom, cx + 20, bottom + 30), 10u) << "outer[1] label (v = 0, bottom)";
+    EXPECT_GT(labelPixels(img, cx - 20, top - 30, cx + 20, top), 10u) << "outer[3] label (v = 1, top)";
+    EXPECT_EQ(labelPixels(img, 0, 0, left - 2, top - 2), 0u);
+}
+
+TEST(TeachingCli, ComparisonPanesEachHaveTheirPartitioning) {
+    const auto dir = freshTempDir("teach-compare");
+    const auto png = dir / "c.png", stats = dir / "c.json";
+    const RunResult r = runCommand(bin() + " render --domain tri --outer 4.9,4.5,4.1 --inner 4.4 --compare "
+                                           "equal,fractional_odd,fractional_even,pow2 --size 600x500 -o " +
+                                   png.string() + " --stats " + stats.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const nlohmann::json j = readJson(stats);
+    ASSERT_EQ(j["panes"].size(), 4u);
+    const char* spacings[] = {"equal", "fractional_odd", "fractional_even", "pow2"};
+    for (size_t i = 0; i < 4; ++i) {
+        EXPECT_EQ(j["panes"][i]["spacing"], spacings[i]);
+        EXPECT_EQ(j["panes"][i]["vertices"], j["panes"][i]["expectedVertices"]) << spacings[i];
+        EXPECT_EQ(j["panes"][i]["primitives"], j["panes"][i]["expectedPrimitives"]) << spacings[i];
+    }
+    // Integer and fractional_odd both give 5 segments per edge here; pow2 rounds 5 up to 8.
+    EXPECT_EQ(j["panes"][0]["vertices"], j["panes"][1]["vertices"]);
+    EXPECT_GT(j["panes"][3]["vertices"].get<uint64_t>(), j["panes"][0]["vertices"].get<uint64_t>());
+    const Png img = loadPng(png);
+    EXPECT_EQ(img.w, 600);
+    EXPECT_EQ(img.h, 500);
+}
+
+TEST(TeachingCli, IsolineDomainCountsLinesTimesSegments) {
+    const auto dir = freshTempDir("teach-iso");
+    const auto stats = dir / "i.json";
+    const RunResult r = runCommand(bin() + " render --domain isoline --outer 3,5 --size 200x200 -o " + (dir / "i.png").string() +
+                                   " --stats " + stats.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const nlohmann::json j = readJson(stats);
+    EXPECT_EQ(j["panes"][0]["primitives"].get<uint64_t>(), 15u);
+    EXPECT_EQ(j["panes"][0]["vertices"].get<uint64_t>(), 18u);
+}
+
+TEST(TeachingCli, SweepWritesNumberedFramesThatChange) {
+    const auto dir = freshTempDir("teach-sweep");
+    const RunResult r = runCommand(bin() + " sweep --domain quad --spacing fractional_odd --from 3 --to 5 --frames 3 --size 240x240 -o " +
+                                   (dir / "f%02d.png").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const Png a = loadPng(dir / "f00.png"), b = loadPng(dir / "f01.png"), c = loadPng(dir / "f02.png");
+    ASSERT_EQ(a.w, 240);
+    ASSERT_EQ(c.w, 240);
+    EXPECT_FALSE(std::filesystem::exists(dir / "f03.png"));
+    EXPECT_NE(a.rgba, b.rgba);
+    EXPECT_NE(b.rgba, c.rgba);
+    // The model: two frames into a new directory, each captioned.
+    const RunResult m = runCommand(bin() + " sweep --from 1 --to 8 --frames 2 --size 200x120 -o " + (dir / "model").string());
+    ASSERT_EQ(m.exitCode, 0) << m.output;
+    EXPECT_TRUE(std::filesystem::exists(dir / "model" / "frame_0000.png"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "model" / "frame_0001.png"));
+}
+
+TEST(TeachingCli, BadOptionsNameTheProblemAndWriteNothing) {
+    const auto dir = freshTempDir("teach-bad");
+    const auto png = dir / "x.png";
+    struct Case {
+        std::string args, says;
+    };
+    const Case cases[] = {
+        {"render --domain hex", "--domain"},
+        {"render --domain tri --outer 1,2", "--outer"},
+        {"render --domain isoline --inner 2", "--inner"},
+        {"render --domain quad --tess 65", "--tess"},
+        {"render --preset quad-9", "--preset"},
+        {"render --preset quad-4_4_4_4-4_4 --tess 3", "--preset"},
+        {"render --domain quad --compare equal,odd", "--compare"},
+        {"render --domain quad --compare equal,equal,equal,equal,equal", "--compare"},
+        {"render --compare equal,pow2", "--compare"},
+        {"sweep --from 0", "--from"},
+        {"sweep --to 1e9", "--to"},
+        {"sweep --frames 1", "--frames"},
+        {"sweep --tess 4", "--tess"},
+    };
+    for (const Case& c : cases) {
+        const bool sweep = c.args.rfind("sweep", 0) == 0;
+        const std::string out = sweep ? (dir / "s%d.png").string() : png.string();
+        const RunResult r = runCommand(bin() + " " + c.args + " -o " + out);
+        EXPECT_EQ(r.exitCode, 2) << c.args << "\n" << r.output;
+        EXPECT_NE(r.output.find(c.says), std::string::npos) << c.args << "\n" << r.output;
+        EXPECT_EQ(r.output.find("internal error"), std::string::npos) << r.output;
+    }
+    const RunResult p = runCommand(bin() + " sweep --frames 2 -o " + (dir / "x%d%d.png").string());
+    EXPECT_EQ(p.exitCode, 2);
+    EXPECT_NE(p.output.find("exactly one %d"), std::string::npos) << p.output;
+    EXPECT_TRUE(std::filesystem::is_empty(dir));
+}
+
+TEST(TeachingCli, PresetsListsEveryFactorSetOfTheNotes) {
+    const RunResult r = runCommand(bin() + " presets");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const TessPreset& p : tessPresets()) EXPECT_NE(r.output.find(p.name), std::string::npos) << p.name;
+}
+
+TEST(TeachingLabels, EdgesLabelledWithLevelAndRounding) {
+    render::DomainViewOptions o;
+    o.kind = DomainKind::Triangle;
+    o.levels = {{4.5f, 4.0f, 1.0f, 0.0f}, {3.0f, 0.0f}};
+    o.spacing = Spacing::FractionalOdd;
+    o.rect = {0, 0, 300, 300};
+    const auto labels = render::domainLabels(o, 10, 12, 16);
+    std::vector<std::string> edges;
+    std::string caption;
+    for (const auto& l : labels) {
+        if (l.role == render::DomainLabel::Role::Edge) edges.push_back(l.text);
+        if (l.role == render::DomainLabel::Role::Caption) caption = l.text;
+    }
+    ASSERT_EQ(edges.size(), 3u);
+    EXPECT_EQ(edges[0], "4.5 \u2192 5");  // fractional_odd: next odd
+    EXPECT_EQ(edges[1], "4 \u2192 5");
+    EXPECT_EQ(edges[2], "1");
+    EXPECT_NE(caption.find("inner 3"), std::string::npos);
+    EXPECT_NE(caption.find("10 vertices, 12 triangles"), std::string::npos);
+    EXPECT_EQ(render::formatLevel(4.25f), "4.25");
+    EXPECT_EQ(render::formatLevel(16.0f), "16");
+    // Two and four panes tile the area.
+    const auto two = render::splitPanes(2, {0, 0, 200, 100});
+    ASSERT_EQ(two.size(), 2u);
+    EXPECT_EQ(two[1][0], 100.0f);
+    const auto four = render::splitPanes(4, {0, 0, 200, 100});
+    EXPECT_EQ(four[3][1], 50.0f);
+}
+
+}  // namespace pw::test
