@@ -118,8 +118,10 @@ TriangleMesh tessellateDocument(const Document& doc, int level) {
         std::map<std::tuple<int32_t, uint32_t, uint32_t>, uint32_t> netWindow;
         for (size_t w = 0; w < W; ++w)
             if (windows[w].surface >= 0) netWindow[{windows[w].surface, windows[w].windowRow, windows[w].windowCol}] = uint32_t(w);
-        for (const auto& [key, w] : netWindow) {
-            const auto [s, r, c] = key;
+        for (const auto& entry : netWindow) {
+            const uint32_t w = entry.second;
+            const int32_t s = std::get<0>(entry.first);
+            const uint32_t r = std::get<1>(entry.first), c = std::get<2>(entry.first);
             const Surface& surf = doc.surfaces[size_t(s)];
             if (surf.basis != Basis::Bezier || !surf.keepC1) continue;
             auto next = [&](uint32_t rr, uint32_t cc) {

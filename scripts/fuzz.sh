@@ -1,22 +1,18 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (clang, ASan + UBSan) into build-fuzz/ and runs each for a bounded
-# time on its seed corpus (tests/corpus and data/). Usage: scripts/fuzz.sh [SECONDS_PER_TARGET]
-# Crashes are written to build-fuzz/crashes/; a crash makes the script exit non-zero.
+# Runs the libFuzzer targets (.bpt, .patchwork and glTF loaders, with round-trip checks) of the
+# clang sanitizer build (scripts/sanitize.sh builds it if needed) for a bounded time each on their
+# seed corpora (tests/corpus and data/). Usage: scripts/fuzz.sh [SECONDS_PER_TARGET]
+# Crashes are written to build-asan/crashes/; a crash makes the script exit non-zero. Every crash
+# found so far is a file in tests/corpus/bad, replayed by the test suite.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 seconds=${1:-60}
-build=${PATCHWORK_FUZZ_BUILD_DIR:-$root/build-fuzz}
-log="$build/build.log"
+build=${PATCHWORK_ASAN_BUILD_DIR:-$root/build-asan}
+"$root/scripts/sanitize.sh" --build-only
 mkdir -p "$build/crashes"
-if ! { CXX=clang++ cmake -S "$root" -B "$build" -DPATCHWORK_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo &&
-       cmake --build "$build" -j "$(nproc)"; } >"$log" 2>&1; then
-  tail -n 40 "$log" >&2
-  echo "fuzz: build failed (full log: $log)" >&2
-  exit 1
-fi
 
 # Seed corpora: the good files we ship plus the bad-input corpus; a working copy per target, so
-# what a run learns is kept between runs in build-fuzz/corpus-*.
+# what a run learns is kept between runs in build-asan/corpus-*.
 seed() {  # target, file globs...
   local dir="$build/corpus-$1"; shift
   mkdir -p "$dir"
@@ -25,7 +21,6 @@ seed() {  # target, file globs...
 seed bpt "$root"/data/*.bpt "$root"/tests/corpus/bad/*.bpt
 seed patchwork "$root"/tests/corpus/bad/*.patchwork "$root"/tests/corpus/good/*.patchwork
 seed gltf "$root"/tests/corpus/good/*.gltf "$root"/tests/corpus/good/*.glb "$root"/tests/corpus/bad/*.gltf "$root"/tests/corpus/bad/*.glb
-[[ -n "$(ls -A "$build/corpus-patchwork")" ]] || "$root/build/app/patchwork" convert "$root/data/teacup.bpt" "$build/corpus-patchwork/teacup.patchwork" 2>/dev/null || true
 
 status=0
 for t in bpt patchwork gltf; do

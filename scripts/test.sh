@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs what is missing (build and test packages, the Khronos glTF validator from npm), builds in
-# Release and runs the whole test suite through ctest, ending with ctest's summary.
+# Release and runs the whole test suite through ctest; then builds it again with clang, ASan and
+# UBSan and runs it there (scripts/sanitize.sh), and fuzzes each file loader for a bounded time
+# (scripts/fuzz.sh, PATCHWORK_FUZZ_SECONDS per target, default 20). Fails if any step fails.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${PATCHWORK_BUILD_DIR:-$root/build}
@@ -16,5 +18,9 @@ if ! cmp -s "$validator_dir/package-lock.json" "$stamp" 2>/dev/null; then
 fi
 
 "$root/scripts/build.sh"
-cd "$build"
-exec ctest --output-on-failure -j "${PATCHWORK_JOBS:-$(nproc)}" --timeout 600
+(cd "$build" && ctest --output-on-failure -j "${PATCHWORK_JOBS:-$(nproc)}" --timeout 600)
+echo "test: the suite again under AddressSanitizer + UndefinedBehaviorSanitizer"
+"$root/scripts/sanitize.sh"
+echo "test: fuzzing the loaders"
+"$root/scripts/fuzz.sh" "${PATCHWORK_FUZZ_SECONDS:-20}"
+echo "test: all passed"
