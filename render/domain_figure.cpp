@@ -28,6 +28,7 @@ std::vector<DomainStats> renderDomainFigure(DomainView& view, OffscreenTarget& t
     const VkExtent2D ext = target.extent();
     const auto rects = splitPanes(int(panes.size()), {0.0f, 0.0f, float(ext.width), float(ext.height)});
     std::vector<DomainViewOptions> opts;
+    std::vector<float> textSizes;
     std::vector<DomainStats> stats;
     for (size_t i = 0; i < rects.size(); ++i) {
         DomainViewOptions o;
@@ -37,6 +38,7 @@ std::vector<DomainStats> renderDomainFigure(DomainView& view, OffscreenTarget& t
         o.rect = rects[i];
         const float px = textPixels > 0.0f ? textPixels : std::clamp(std::min(o.rect[2], o.rect[3]) / 26.0f, 11.0f, 40.0f);
         o.margin = domainLabelMargin(px);
+        textSizes.push_back(px);
         o.pointSize = std::clamp(px * 0.3f, 3.0f, 9.0f);
         opts.push_back(o);
     }
@@ -44,7 +46,7 @@ std::vector<DomainStats> renderDomainFigure(DomainView& view, OffscreenTarget& t
     rgba = target.pixels();
     PixelImage img{ext.width, ext.height, rgba};
     for (size_t i = 0; i < opts.size(); ++i) {
-        const float px = opts[i].margin / 3.4f;
+        const float px = textSizes[i];
         const auto counts = shownCounts(stats[i], panes[i]);
         for (const DomainLabel& l : domainLabels(opts[i], counts[0], counts[1], px)) {
             TextStyle st;

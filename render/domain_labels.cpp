@@ -15,7 +15,7 @@ std::string formatLevel(float level) {
     return s;
 }
 
-float domainLabelMargin(float textPixels) { return std::ceil(textPixels * 3.4f); }
+float domainLabelMargin(float textPixels) { return std::ceil(textPixels * 4.5f); }
 
 namespace {
 

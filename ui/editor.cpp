@@ -25,6 +25,7 @@
 #include "join_detect.hpp"
 #include "limits.hpp"
 #include "patch_ops.hpp"
+#include "tess_presets.hpp"
 #include "png_writer.hpp"
 #include "renderer.hpp"
 #include "swapchain_target.hpp"
@@ -380,6 +381,7 @@ void Editor::performAction(PendingAction a) {
     switch (a) {
         case PendingAction::Quit: quit_ = true; break;
         case PendingAction::New: newDocument(); break;
+        case PendingAction::NotesPatch: setDocument(notesBezierPatch(), ""); break;
         case PendingAction::Open:
             fileMode_ = FileDialogMode::Open;
             fileName_[0] = 0;
@@ -483,7 +485,8 @@ void Editor::frame() {
     }
     imgui_->newFrame();
     viewportInput();
-    drawViewportOverlays();
+    teachingInput();
+    if (!presentation_) drawViewportOverlays();
     drawUi();
     ImGui::Render();
     keyQueue_.clear();
@@ -506,6 +509,7 @@ void Editor::frame() {
     o.hoveredPoint = hovered_;
     o.selectedPoint = sel_.points.empty() ? -1 : int(sel_.points.front());
     stats_ = renderer_->render(o);
+    drawDomainPanes();
     if (screenshotRequested_) {
         screenshotRequested_ = false;
         try {
@@ -542,7 +546,18 @@ void Editor::writeTrace() {
     j["selectedPatch"] = sel_.patch;
     j["recoverable"] = recoverable_.size();
     j["modal"] = openModal_;
-    j["textInput"] = ImGui::GetIO().WantTextInput;  // a text field has the keyboard
+    j["textInput"] = ImGui::GetIO().WantTextInput;
+    j["presentation"] = presentation_;
+    j["tessOuter"] = doc_.tess.outer;
+    j["sweep"] = {{"playing", sweep_.playing}, {"level", sweep_.level}};
+    j["domain"] = nlohmann::json::array();
+    for (size_t i = 0; i < domainPanes_.size() && i < domainStats_.size(); ++i) {
+        const auto& o = domainPanes_[i];
+        const DomainCounts want = expectedDomainCounts(o.kind, o.levels, o.spacing);
+        j["domain"].push_back({{"spacing", spacingName(o.spacing)}, {"kind", domainName(o.kind)}, {"vertices", domainStats_[i].vertices},
+                               {"primitives", domainStats_[i].primitives}, {"expectedVertices", want.vertices},
+                               {"expectedPrimitives", want.primitives}});
+    }  // a text field has the keyboard
     j["items"] = traceItems_;
     j["unsavedPrompt"] = pending_ != PendingAction::None;
     j["error"] = errorMessage_;

@@ -18,6 +18,7 @@
 #include "constraint_solver.hpp"
 #include "continuity_report.hpp"
 #include "document.hpp"
+#include "domain_view.hpp"
 #include "edit_history.hpp"
 #include "gltf_export.hpp"
 #include "picking.hpp"
@@ -42,7 +43,7 @@ int runEditor(const std::string& file);
 
 enum class Interaction { None, Orbit, Pan, BoxSelect, PendingDrag, DragPoints, Grab };
 enum class FileDialogMode { None, Open, SaveAs, Import, ExportGltf, Screenshot };
-enum class PendingAction { None, Quit, Open, New, OpenRecent, Recover };
+enum class PendingAction { None, Quit, Open, New, OpenRecent, Recover, NotesPatch };
 
 struct DragState {
     std::vector<Vec3> start;       // the whole pool at drag start
@@ -197,6 +198,27 @@ private:
     void traceItem(const std::string& name);
     float leftPanelWidth_ = 0.0f;
     float uiScale_ = 1.0f;  // monitor content scale (HiDPI)
+
+    // Teaching (ui/editor_teaching.cpp): the live domain view with 1, 2 or 4 comparison panes, the
+    // notes' presets, a level sweep, and presentation mode.
+    void teachingInput();       // F5 presentation mode; advances a playing sweep
+    void setPresentation(bool on);
+    void drawTeachingControls();  // the Teaching section of the right panel
+    void drawTeachingWindow();    // the domain view window: where its panes go this frame, labels
+    void drawPresentationOverlay();
+    void drawDomainPanes();     // after the 3D view, before ImGui: the GPU domain tessellation
+    std::unique_ptr<render::DomainView> domainView_;
+    bool showDomain_ = false, presentation_ = false;
+    int domainKind_ = 0, domainPaneCount_ = 1;
+    std::array<int, 4> paneSpacing_{0, 1, 2, 3};       // index into Spacing
+    std::vector<render::DomainViewOptions> domainPanes_;  // this frame's panes, framebuffer pixels
+    std::vector<render::DomainStats> domainStats_;
+    struct Sweep {
+        bool playing = false, loop = true;
+        float from = 1.0f, to = 16.0f, seconds = 4.0f, level = 1.0f;
+        std::chrono::steady_clock::time_point start;
+    } sweep_;
+    float presentationScale_ = 2.0f;
 };
 
 }  // namespace pw::ui

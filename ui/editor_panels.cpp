@@ -51,6 +51,7 @@ const KeyHelp kKeys[] = {
     {"Ctrl + S / Ctrl + Shift + S", "Save / save as"},
     {"Ctrl + Q", "Quit"},
     {"F12", "Save a viewport screenshot (PNG)"},
+    {"F5", "Presentation mode: hide the panels, levels and counts large"},
     {"F1 or ?", "This help"},
 };
 
@@ -79,9 +80,14 @@ void Editor::traceItem(const std::string& name) {
 void Editor::drawUi() {
     traceItems_.clear();
     openModal_.clear();
-    drawMenuBar();
-    drawLeftPanel();
-    drawRightPanel();
+    if (presentation_) {
+        drawPresentationOverlay();
+    } else {
+        drawMenuBar();
+        drawLeftPanel();
+        drawRightPanel();
+    }
+    drawTeachingWindow();
     drawFileDialog();
     drawModals();
     if (showHelp_) drawHelp();
@@ -162,6 +168,10 @@ void Editor::drawMenuBar() {
         tip("Fit the selection (or the model) in the view");
         ImGui::MenuItem("Ground Grid", nullptr, &showGround_);
         tip("Show the ground-plane grid");
+        ImGui::MenuItem("Domain View", nullptr, &showDomain_);
+        tip("The parametric domain tessellated by the GPU with the current levels (Teaching panel for more)");
+        if (ImGui::MenuItem("Presentation Mode", "F5", presentation_)) setPresentation(!presentation_);
+        tip("Hide the editing panels; levels and counts large, high contrast (F5 toggles back)");
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Help")) {
@@ -519,6 +529,7 @@ void Editor::drawRightPanel() {
         }
         tip("Measured continuity of every join (continuityReport)");
     }
+    drawTeachingControls();
     ImGui::End();
 }
 

@@ -7,6 +7,7 @@
 #include <backends/imgui_impl_vulkan.h>
 
 #include "device.hpp"
+#include "embedded_data.hpp"
 #include "swapchain_target.hpp"
 
 namespace pw::ui {
@@ -30,6 +31,19 @@ ImGuiLayer::ImGuiLayer(render::Device& dev, GLFWwindow* window, render::Swapchai
     ImFontConfig cfg;
     cfg.SizePixels = 13.0f * scale;
     io.Fonts->AddFontDefault(&cfg);
+    // The arrow of the domain labels (4.5 → 5) is not in the default font: merge it from DejaVu.
+    static const ImWchar arrow[] = {0x2192, 0x2192, 0};
+    ImFontConfig merge;
+    merge.MergeMode = true;
+    merge.FontDataOwnedByAtlas = false;
+    io.Fonts->AddFontFromMemoryTTF(const_cast<char*>(embedded::uiFontTtf.data()), int(embedded::uiFontTtf.size()), 13.0f * scale,
+                                   &merge, arrow);
+    // Presentation mode's large text: the embedded DejaVu Sans at 3x, drawn scaled 0.5-1x (1.5-3x
+    // the UI size) so it stays sharp.
+    ImFontConfig big;
+    big.FontDataOwnedByAtlas = false;
+    presentationFont_ = io.Fonts->AddFontFromMemoryTTF(const_cast<char*>(embedded::uiFontTtf.data()), int(embedded::uiFontTtf.size()),
+                                                       39.0f * scale, &big);
 
     // Step 2: descriptor pool for the font texture (and nothing else).
     VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 8};

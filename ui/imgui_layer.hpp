@@ -4,6 +4,8 @@
 
 #include <vulkan/vulkan.h>
 
+struct ImFont;
+
 struct GLFWwindow;
 
 namespace pw::render {
@@ -25,12 +27,15 @@ public:
     // Records the overlay pass (ImGui draw data from ImGui::Render()) into `cmd` and ends it.
     VkCommandBuffer record();
     void swapchainRecreated();
+    // DejaVu Sans at three times the UI size (presentation mode).
+    ImFont* presentationFont() const { return presentationFont_; }
 
 private:
     render::Device& dev_;
     render::SwapchainTarget& target_;
     VkDescriptorPool pool_ = VK_NULL_HANDLE;
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;
+    ImFont* presentationFont_ = nullptr;
 };
 
 }  // namespace pw::ui

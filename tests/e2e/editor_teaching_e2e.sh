@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# The teaching features in the running editor, under Xvfb with the validation layer on: the domain
+# view's GPU counts match the tessellation rules for the document's levels, live as a preset changes
+# them and across comparison panes; the sweep animates the level and pausing leaves one undo step;
+# presentation mode (F5) hides the panels and comes back. Screenshots in WORK_DIR.
+# Usage: editor_teaching_e2e.sh PATCHWORK_BINARY DATA_DIR WORK_DIR
+set -euo pipefail
+BIN=$1
+WORK=$3
+rm -rf "$WORK"
+mkdir -p "$WORK"
+source "$(dirname "$0")/e2e_lib.sh"
+
+start_editor
+check_validation
+click_item panel.teaching
+wait_for "'teach.domain' in t['items']"
+click_item teach.domain
+# Teapot levels 16, equal spacing: 17 x 17 vertices, 2 x 16 x 16 triangles, counted on the GPU.
+wait_for "len(t['domain']) == 1 and t['domain'][0]['vertices'] == 289 and t['domain'][0]['primitives'] == 512"
+import -window root "$WORK/domain.png"
+say "domain view: 289 vertices, 512 triangles at level 16"
+
+# A preset of the notes: quad {1,2,3,4 | 4,4} -> 19 vertices, 26 triangles.
+click_item teach.preset
+wait_for "'preset.quad-1_2_3_4-4_4' in t['items']"
+click_item preset.quad-1_2_3_4-4_4
+wait_for "t['tessOuter'] == [1, 2, 3, 4] and t['domain'][0]['vertices'] == 19 and t['domain'][0]['primitives'] == 26"
+import -window root "$WORK/preset.png"
+say "preset quad {1,2,3,4 | 4,4}: 19 vertices, 26 triangles"
+STEPS=$(trace "t['undoSteps']")
+
+# Sweep: play, the level moves; pause, one undo step more.
+click_item teach.play
+wait_for "t['sweep']['playing'] and t['sweep']['level'] > 2"
+click_item teach.play
+wait_for "not t['sweep']['playing'] and t['undoSteps'] == $STEPS + 1"
+wait_for "all(d['vertices'] == d['expectedVertices'] and d['primitives'] == d['expectedPrimitives'] for d in t['domain'])"
+say "sweep stopped at level $(trace "round(t['sweep']['level'], 2)"); counts still follow the rules"
+
+# Presentation mode hides the panels (their items vanish from the trace) and F5 brings them back.
+xdotool mousemove --sync 640 700
+xdotool key F5
+wait_for "t['presentation'] and 'panel.teaching' not in t['items']"
+import -window root "$WORK/presentation.png"
+xdotool key F5
+wait_for "not t['presentation'] and 'panel.teaching' in t['items']"
+check_validation
+say "presentation mode on and off"
+
+xdotool key ctrl+q
+for i in $(seq 100); do kill -0 "$EDITOR_PID" 2>/dev/null || break; sleep 0.1; done
+# A sweep and a preset modified the document: the unsaved-changes prompt comes; discard.
+if kill -0 "$EDITOR_PID" 2>/dev/null; then
+    wait_for "t['modal'] == 'unsaved'"
+    click_item unsaved.discard
+    for i in $(seq 100); do kill -0 "$EDITOR_PID" 2>/dev/null || break; sleep 0.1; done
+fi
+kill -0 "$EDITOR_PID" 2>/dev/null && fail "editor did not quit"
+wait "$EDITOR_PID" && RC=0 || RC=$?
+EDITOR_PID=""
+[ "$RC" = "0" ] || fail "editor exit code $RC"
+if grep -qi "validation" "$WORK/editor.err"; then fail "validation output on stderr"; fi
+say "PASS"
