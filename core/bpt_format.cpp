@@ -226,6 +226,10 @@ Document parseBpt(std::string_view text, const std::string& sourceName) { return
 Document loadBpt(const std::filesystem::path& path) { return parseBpt(readFileLimited(path), path.string()); }
 
 std::string formatBpt(const Document& doc) {
+    if (!doc.triangles.empty())
+        throw InputError(doc.name.empty() ? "document" : doc.name,
+                         "Bézier triangles cannot be written as .bpt, which holds rectangular patches only", 0,
+                         "triangles[0]");
     const std::vector<PatchInstance> windows = expandPatches(doc);
     std::string out;
     out.reserve(windows.size() * 16 * 32 + 16);

@@ -39,6 +39,22 @@ struct Patch {
     bool operator==(const Patch&) const = default;
 };
 
+// A cubic Bézier triangle: 10 indices into the pool, b_ijk with i+j+k = 3 weighting
+// 3!/(i!j!k!) u^i v^j w^k, (u, v, w) barycentric, w = 1 - u - v. Canonical order:
+//   slot: 0    1    2    3    4    5    6    7    8    9
+//   b:    300  210  201  120  111  102  030  021  012  003
+// Corners: slot 0 at u = 1, slot 6 at v = 1, slot 9 at w = 1. Edges are numbered like the Vulkan
+// triangle domain's outer levels: edge 0 is u = 0 (slots 6,7,8,9), edge 1 is v = 0 (9,5,2,0),
+// edge 2 is w = 0 (0,1,3,6); see triEdgeSlot in bezier_triangle.hpp. Each edge is a cubic Bézier
+// curve of its 4 pool points, so triangles (and quads) that share those points meet watertight.
+struct TrianglePatch {
+    std::array<uint32_t, 10> idx{};
+    std::string name;
+    // Per-patch tessellation override: three outer levels (edges 0, 1, 2) and one inner.
+    std::optional<std::array<float, 4>> tessOverride;
+    bool operator==(const TrianglePatch&) const = default;
+};
+
 // A larger control net (rows x cols) under one basis; every 4x4 window is a patch. Bézier windows
 // step by 3, spline windows by 1. A closed direction wraps around (tubes and rings).
 struct Surface {
@@ -130,6 +146,9 @@ struct Document {
     TessSettings tess;
     DisplaySettings display;
     Camera camera;
+    // Cubic Bézier triangles, drawn after the quads (last, so that aggregate initialisations of
+    // documents without triangles keep working).
+    std::vector<TrianglePatch> triangles;
 
     bool operator==(const Document&) const = default;
 };

@@ -164,6 +164,8 @@ void mergeCoincidentPoints(Document& doc) {
         for (uint32_t& idx : patch.idx) rewrite(idx);
     for (Surface& s : doc.surfaces)
         for (uint32_t& idx : s.idx) rewrite(idx);
+    for (TrianglePatch& t : doc.triangles)
+        for (uint32_t& idx : t.idx) rewrite(idx);
     doc.points = std::move(pool);
 }
 

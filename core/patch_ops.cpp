@@ -261,6 +261,8 @@ void compactPool(Document& doc) {
         for (uint32_t i : p.idx) remap[i] = 0;
     for (const Surface& s : doc.surfaces)
         for (uint32_t i : s.idx) remap[i] = 0;
+    for (const TrianglePatch& t : doc.triangles)
+        for (uint32_t i : t.idx) remap[i] = 0;
     std::vector<Vec3> pts;
     pts.reserve(doc.points.size());
     for (size_t i = 0; i < doc.points.size(); ++i)
@@ -274,6 +276,8 @@ void compactPool(Document& doc) {
         for (uint32_t& i : p.idx) i = remap[i];
     for (Surface& s : doc.surfaces)
         for (uint32_t& i : s.idx) i = remap[i];
+    for (TrianglePatch& t : doc.triangles)
+        for (uint32_t& i : t.idx) i = remap[i];
 }
 
 }  // namespace pw

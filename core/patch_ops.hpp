@@ -57,7 +57,7 @@ void unjoin(Document& doc, size_t j);
 // Index of a join that uses edge e of patch p, or -1.
 int findJoin(const Document& doc, uint32_t p, Edge e);
 
-// Removes pool points that no patch or surface uses and renumbers the rest.
+// Removes pool points that no patch, surface or triangle uses and renumbers the rest.
 void compactPool(Document& doc);
 
 // The edge of a patch nearest the parameter point (u, v).

@@ -2,6 +2,7 @@
 // and reading with full validation; every error names the source and the JSON field path.
 #include "patchwork_format.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -363,6 +364,18 @@ json documentToJson(const Document& doc) {
     }
     j["joins"] = std::move(joins);
 
+    // Cubic Bézier triangles: only written when there are some, so that documents without them
+    // serialise exactly as before.
+    if (!doc.triangles.empty()) {
+        json triangles = json::array();
+        for (const TrianglePatch& t : doc.triangles) {
+            json o{{"idx", t.idx}, {"name", t.name}};
+            if (t.tessOverride) o["tess"] = floatArray(*t.tessOverride);
+            triangles.push_back(std::move(o));
+        }
+        j["triangles"] = std::move(triangles);
+    }
+
     j["tess"] = tessJson(doc.tess);
     j["display"] = displayJson(doc.display);
     j["camera"] = cameraJson(doc.camera);
@@ -475,6 +488,27 @@ Document documentFromJson(const json& j, const std::string& sourceName) {
         }
     }
 
+    // Cubic Bézier triangles (optional).
+    if (const json* tv = r.member(j, "", "triangles", false)) {
+        const json& triangles = r.array(*tv, "triangles", limits::kMaxPatches - std::min<uint64_t>(windows, limits::kMaxPatches), "triangles");
+        doc.triangles.resize(triangles.size());
+        for (size_t i = 0; i < triangles.size(); ++i) {
+            const std::string path = at("triangles", i);
+            const json& o = r.object(triangles[i], path);
+            TrianglePatch& t = doc.triangles[i];
+            const std::string ip = at(path, "idx");
+            const json& idx = r.fixedArray(*r.member(o, path, "idx", true), ip, 10);
+            for (size_t k = 0; k < 10; ++k) t.idx[k] = static_cast<uint32_t>(r.index(idx[k], at(ip, k), nPoints, "point index"));
+            r.optional(o, path, "name", [&](const json& x, const std::string& p) { t.name = r.string(x, p); });
+            r.optional(o, path, "tess", [&](const json& x, const std::string& p) {
+                if (x.is_null()) return;
+                std::array<float, 4> levels{};
+                readFloats(r, x, p, levels, kMinLevel, kMaxLevel);
+                t.tessOverride = levels;
+            });
+        }
+    }
+
     if (const json* v = r.member(j, "", "tess", false)) doc.tess = readTess(r, *v, "tess");
     if (const json* v = r.member(j, "", "display", false)) doc.display = readDisplay(r, *v, "display");
     if (const json* v = r.member(j, "", "camera", false)) doc.camera = readCamera(r, *v, "camera");
@@ -487,7 +521,7 @@ std::string serializeDocument(const Document& doc) {
     auto dump = [](const json& v) { return v.dump(-1, ' ', false, json::error_handler_t::replace); };
     std::string out = "{\n";
     bool first = true;
-    for (const char* key : {"format", "version", "name", "points", "patches", "surfaces", "joins", "tess", "display", "camera"}) {
+    for (const char* key : {"format", "version", "name", "points", "patches", "surfaces", "joins", "triangles", "tess", "display", "camera"}) {
         auto it = j.find(key);
         if (it == j.end()) continue;
         if (!first) out += ",\n";

@@ -81,6 +81,9 @@ std::vector<bool> usedPointMask(const Document& doc) {
     for (const Surface& s : doc.surfaces)
         for (uint32_t i : s.idx)
             if (i < used.size()) used[i] = true;
+    for (const TrianglePatch& t : doc.triangles)
+        for (uint32_t i : t.idx)
+            if (i < used.size()) used[i] = true;
     return used;
 }
 

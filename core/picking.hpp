@@ -27,7 +27,7 @@ Ray rayThroughPixel(const Camera& cam, double x, double y, int width, int height
 std::vector<std::optional<glm::dvec2>> projectPoints(const Camera& cam, const std::vector<Vec3>& points, int width, int height);
 
 // Nearest pool point whose projection lies within `radiusPx` of (x, y); ties go to the point
-// nearer the eye. -1 when none. Only points used by some patch or surface count when `used` is
+// nearer the eye. -1 when none. Only points used by some patch, surface or triangle count when `used` is
 // given (a mask the size of the pool).
 int pickPoint(const Camera& cam, const std::vector<Vec3>& points, double x, double y, int width, int height,
               double radiusPx, const std::vector<bool>* used = nullptr);
@@ -36,7 +36,7 @@ int pickPoint(const Camera& cam, const std::vector<Vec3>& points, double x, doub
 std::vector<uint32_t> pointsInBox(const Camera& cam, const std::vector<Vec3>& points, glm::dvec2 a, glm::dvec2 b, int width,
                                   int height, const std::vector<bool>* used = nullptr);
 
-// Mask of pool points referenced by a patch or a surface.
+// Mask of pool points referenced by a patch, a surface or a triangle.
 std::vector<bool> usedPointMask(const Document& doc);
 
 // Ray–triangle (Möller–Trumbore); the distance along the ray, or nullopt.

@@ -105,6 +105,18 @@ const std::map<std::string, Where>& expectedLocations() {
         {"version_string.patchwork", {0, "version"}},
         {"version_zero.patchwork", {0, "version"}},
         {"wrong_format.patchwork", {0, "format"}},
+        // .patchwork: cubic Bézier triangles
+        {"triangle_fractional_index.patchwork", {0, "triangles[0].idx[2]"}},
+        {"triangle_idx_count.patchwork", {0, "triangles[0].idx"}},
+        {"triangle_idx_missing.patchwork", {0, "triangles[0].idx"}},
+        {"triangle_index_out_of_range.patchwork", {0, "triangles[0].idx[9]"}},
+        {"triangle_name_number.patchwork", {0, "triangles[1].name"}},
+        {"triangle_nan.patchwork", {5, ""}},
+        {"triangle_negative_index.patchwork", {0, "triangles[0].idx[4]"}},
+        {"triangle_not_object.patchwork", {0, "triangles[0]"}},
+        {"triangle_tess_count.patchwork", {0, "triangles[0].tess"}},
+        {"triangle_tess_level.patchwork", {0, "triangles[0].tess[3]"}},
+        {"triangles_not_array.patchwork", {0, "triangles"}},
     };
     return table;
 }

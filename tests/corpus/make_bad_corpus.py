@@ -103,3 +103,18 @@ wj("camera_wrong_type.patchwork", doc(camera={"distance": "far"}))
 wj("camera_zero_distance.patchwork", doc(camera={"distance": 0}))
 wj("name_number.patchwork", doc(name=42))
 w("deep_nesting.patchwork", '{"format": "patchwork", "version": 1,\n"points": ' + "[" * 1000 + "]" * 1000 + "}\n")
+
+# ---- .patchwork: cubic Bézier triangles ----
+tri = list(range(3)) + [0, 1, 2, 0, 1, 2, 0]
+wj("triangle_idx_count.patchwork", doc(triangles=[{"idx": [0, 1, 2]}]))
+wj("triangle_idx_missing.patchwork", doc(triangles=[{"name": "no indices"}]))
+wj("triangle_index_out_of_range.patchwork", doc(triangles=[{"idx": tri[:9] + [3]}]))
+wj("triangle_negative_index.patchwork", doc(triangles=[{"idx": tri[:4] + [-1] + tri[5:]}]))
+wj("triangle_fractional_index.patchwork", doc(triangles=[{"idx": tri[:2] + [0.5] + tri[3:]}]))
+wj("triangle_not_object.patchwork", doc(triangles=[tri]))
+wj("triangles_not_array.patchwork", doc(triangles={"idx": tri}))
+wj("triangle_tess_count.patchwork", doc(triangles=[{"idx": tri, "tess": [4, 4, 4, 4, 4, 4]}]))
+wj("triangle_tess_level.patchwork", doc(triangles=[{"idx": tri, "tess": [4, 4, 4, 1000]}]))
+wj("triangle_name_number.patchwork", doc(triangles=[{"idx": tri}, {"idx": tri, "name": 7}]))
+w("triangle_nan.patchwork", '{"format": "patchwork", "version": 1,\n"points": [[0, 0, 0]],\n"patches": [],\n'
+  '"triangles": [{"idx": [0, 0, 0, 0, 0, 0, 0, 0, 0, 0],\n"tess": [4, NaN, 4, 4]}]}\n')

@@ -1,0 +1,125 @@
+#include "bezier_triangle.hpp"
+
+#include <algorithm>
+
+#include "document.hpp"
+#include "patch_eval.hpp"
+
+namespace pw {
+
+namespace {
+
+constexpr int kEdgeSlots[3][4] = {{6, 7, 8, 9}, {9, 5, 2, 0}, {0, 1, 3, 6}};
+
+double netScale(const Net10& net) {
+    Vec3 lo = net[0], hi = net[0];
+    for (const Vec3& p : net) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    return std::max(glm::length(hi - lo), 1e-300);
+}
+
+bool degenerateCross(const Vec3& n, double scale2) { return !(glm::length(n) > 1e-12 * scale2); }
+
+struct Derivs {
+    Vec3 p{0.0}, du{0.0}, dv{0.0};
+};
+
+// Cubic Bernstein sum for p, quadratic sums of the differences for the two derivatives.
+Derivs triEval(const Net10& net, double u, double v, double w) {
+    const double U[4] = {1.0, u, u * u, u * u * u};
+    const double V[4] = {1.0, v, v * v, v * v * v};
+    const double Wp[4] = {1.0, w, w * w, w * w * w};
+    static const double fact[4] = {1, 1, 2, 6};
+    Derivs d;
+    for (int i = 0; i <= 3; ++i)
+        for (int j = 0; j <= 3 - i; ++j) {
+            const int k = 3 - i - j;
+            d.p += (6.0 / (fact[i] * fact[j] * fact[k])) * U[i] * V[j] * Wp[k] * net[triSlot(i, j, k)];
+        }
+    for (int a = 0; a <= 2; ++a)
+        for (int b = 0; b <= 2 - a; ++b) {
+            const int c = 2 - a - b;
+            const double B = 3.0 * (2.0 / (fact[a] * fact[b] * fact[c])) * U[a] * V[b] * Wp[c];
+            const Vec3& toW = net[triSlot(a, b, c + 1)];
+            d.du += B * (net[triSlot(a + 1, b, c)] - toW);
+            d.dv += B * (net[triSlot(a, b + 1, c)] - toW);
+        }
+    return d;
+}
+
+}  // namespace
+
+int triSlot(int i, int j, int k) {
+    (void)j;
+    return (3 - i) * (4 - i) / 2 + k;
+}
+
+int triEdgeSlot(int edge, int k) { return kEdgeSlots[edge][k]; }
+
+TriPoint evaluateTriangle(const Net10& net, double u, double v) { return evaluateTriangle(net, u, v, 1.0 - u - v); }
+
+TriPoint evaluateTriangle(const Net10& net, double u, double v, double w) {
+    const Derivs d = triEval(net, u, v, w);
+    TriPoint tp;
+    tp.p = d.p;
+    tp.du = d.du;
+    tp.dv = d.dv;
+    tp.n = triangleNormalAt(net, u, v, w, d.du, d.dv);
+    return tp;
+}
+
+Vec3 triangleNormalAt(const Net10& net, double u, double v, double w, const Vec3& du, const Vec3& dv) {
+    const double scale = netScale(net), scale2 = scale * scale;
+    Vec3 n = glm::cross(du, dv);
+    if (!degenerateCross(n, scale2)) return n / glm::length(n);
+    // A small step towards the centroid: inside, the tangent plane is defined again and has the
+    // orientation of the interior.
+    const double third = 1.0 / 3.0;
+    for (double s : {1e-7, 1e-5, 1e-3, 1e-2, 1e-1, 1.0}) {
+        const Derivs e = triEval(net, u + (third - u) * s, v + (third - v) * s, w + (third - w) * s);
+        n = glm::cross(e.du, e.dv);
+        if (!degenerateCross(n, scale2)) return n / glm::length(n);
+    }
+    return Vec3(0, 0, 1);
+}
+
+Vec3 evaluateTriangleBernsteinSum(const Net10& net, double u, double v, double w) { return triEval(net, u, v, w).p; }
+
+Net10 gatherTriangleNet(const Document& doc, const std::array<uint32_t, 10>& idx) {
+    Net10 net;
+    for (int k = 0; k < 10; ++k) net[k] = doc.points[idx[k]];
+    return net;
+}
+
+std::array<uint32_t, 4> triEdgePool(const std::array<uint32_t, 10>& idx, int edge) {
+    return {idx[kEdgeSlots[edge][0]], idx[kEdgeSlots[edge][1]], idx[kEdgeSlots[edge][2]], idx[kEdgeSlots[edge][3]]};
+}
+
+std::array<int, 2> triGridEdgePoint(int edge, int k, int n) {
+    switch (edge) {
+        case 0: return {0, n - k};
+        case 1: return {k, 0};
+        default: return {n - k, k};
+    }
+}
+
+void evaluateTriangleGrid(const Net10& net, const std::array<uint32_t, 10>& poolIdx, int n, std::vector<TriPoint>& out) {
+    out.resize(triGridSize(n));
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n - j; ++i)
+            out[triGridIndex(i, j, n)] = evaluateTriangle(net, static_cast<double>(i) / n, static_cast<double>(j) / n,
+                                                          static_cast<double>(n - i - j) / n);
+    for (int e = 0; e < 3; ++e) {
+        std::array<Vec3, 4> pts;
+        for (int k = 0; k < 4; ++k) pts[k] = net[kEdgeSlots[e][k]];
+        const std::array<uint32_t, 4> ids = triEdgePool(poolIdx, e);
+        for (int k = 0; k <= n; ++k) {
+            const auto [i, j] = triGridEdgePoint(e, k, n);
+            out[triGridIndex(i, j, n)].p = evaluateSharedBezierEdge(pts, ids, k, n);
+        }
+    }
+}
+
+}  // namespace pw

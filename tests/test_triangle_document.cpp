@@ -1,0 +1,156 @@
+// Cubic Bézier triangles in the document: the .patchwork round trip (optional "triangles"; files
+// without triangles are written exactly as before), and the pool walkers that must know about
+// triangles (compaction, merging, used-point masks, undo).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "document_io.hpp"
+#include "edit_history.hpp"
+#include "errors.hpp"
+#include "join_detect.hpp"
+#include "patch_ops.hpp"
+#include "patchwork_format.hpp"
+#include "picking.hpp"
+#include "support.hpp"
+
+using namespace pw;
+
+namespace {
+
+// A flat quad patch (pool 0..15) and two triangles sharing an edge, one with a tess override.
+Document docWithTriangles() {
+    Document d;
+    d.name = "tri";
+    for (int i = 0; i < 16; ++i) d.points.push_back(Vec3(i % 4, i / 4, 0.0));
+    for (int i = 0; i < 14; ++i) d.points.push_back(Vec3(0.1 * i, -1.0 - 0.05 * i, 0.25 * (i % 3)));
+    Patch p;
+    for (uint32_t k = 0; k < 16; ++k) p.idx[k] = k;
+    d.patches.push_back(p);
+    TrianglePatch a, b;
+    a.idx = {16, 17, 18, 19, 20, 21, 22, 23, 24, 25};
+    a.name = "first";
+    b.idx = {26, 27, 28, 29, 24, 23, 22, 19, 17, 16};  // shares nothing but a few points: indices only
+    b.tessOverride = std::array<float, 4>{3.0f, 5.5f, 7.0f, 2.0f};
+    d.triangles = {a, b};
+    return d;
+}
+
+std::string readFile(const std::filesystem::path& p) {
+    std::ifstream f(p, std::ios::binary);
+    std::stringstream s;
+    s << f.rdbuf();
+    return s.str();
+}
+
+}  // namespace
+
+TEST(TriangleFormat, RoundTripIsExact) {
+    const Document doc = docWithTriangles();
+    const std::string text = serializeDocument(doc);
+    const Document again = parseDocument(text, "tri.patchwork");
+    EXPECT_EQ(again, doc);
+    EXPECT_EQ(serializeDocument(again), text);
+    const nlohmann::json j = nlohmann::json::parse(text);
+    ASSERT_EQ(j["triangles"].size(), 2u);
+    EXPECT_EQ(j["triangles"][0]["idx"].size(), 10u);
+    EXPECT_FALSE(j["triangles"][0].contains("tess"));
+    EXPECT_EQ(j["triangles"][1]["tess"].size(), 4u);
+    EXPECT_EQ(documentFromJson(documentToJson(doc), "tri"), doc);
+
+    const auto dir = test::freshTempDir("trisave");
+    saveDocument(doc, dir / "tri.patchwork");
+    EXPECT_EQ(loadDocument(dir / "tri.patchwork"), doc);
+    saveDocument(doc, dir / "tri.glb");  // the document travels in the glTF extras too
+    EXPECT_EQ(loadDocument(dir / "tri.glb"), doc);
+}
+
+TEST(TriangleFormat, DocumentsWithoutTrianglesAreWrittenAsBefore) {
+    // A file saved before triangles existed re-serialises to the same bytes, with no new key.
+    const auto file = test::testsDir() / "corpus" / "good" / "teacup.patchwork";
+    const std::string before = readFile(file);
+    const Document doc = loadDocument(file);
+    EXPECT_TRUE(doc.triangles.empty());
+    const std::string after = serializeDocument(doc);
+    EXPECT_EQ(after.find("triangles"), std::string::npos);
+    EXPECT_EQ(after, before);
+}
+
+TEST(TriangleFormat, ErrorsNameTheField) {
+    auto message = [](const std::string& text) {
+        try {
+            parseDocument(text, "t.patchwork");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    const std::string head = R"({"format":"patchwork","version":1,"points":[[0,0,0],[1,0,0]],"patches":[],)";
+    EXPECT_NE(message(head + R"("triangles":[{"idx":[0,1,0,1,0,1,0,1,0,2]}]})").find("triangles[0].idx[9]"), std::string::npos);
+    EXPECT_NE(message(head + R"("triangles":[{"idx":[0,1,0,1,0,1,0,1,0]}]})").find("expected an array of 10"), std::string::npos);
+    EXPECT_NE(message(head + R"("triangles":[{"idx":[0,1,0,1,0,1,0,1,0,1],"tess":[1,2,3,0]}]})").find("triangles[0].tess[3]"),
+              std::string::npos);
+    EXPECT_NE(message(head + R"("triangles":[{"idx":[0,1,0,1,0,1,0,1,0,1e0]}]})").find("triangles[0].idx[9]"), std::string::npos);
+}
+
+TEST(TriangleDocument, CompactPoolKeepsAndRemapsTrianglePoints) {
+    Document doc = docWithTriangles();
+    // Unused points in front of the triangles' points: compaction must renumber the triangles.
+    doc.points.insert(doc.points.begin() + 16, 3, Vec3(9, 9, 9));
+    for (TrianglePatch& t : doc.triangles)
+        for (uint32_t& i : t.idx) i += 3;
+    std::vector<std::array<Vec3, 10>> before;
+    for (const TrianglePatch& t : doc.triangles) {
+        std::array<Vec3, 10> pts;
+        for (int k = 0; k < 10; ++k) pts[k] = doc.points[t.idx[k]];
+        before.push_back(pts);
+    }
+    compactPool(doc);
+    EXPECT_EQ(doc.points.size(), 30u);
+    for (size_t t = 0; t < doc.triangles.size(); ++t)
+        for (int k = 0; k < 10; ++k) {
+            ASSERT_LT(doc.triangles[t].idx[k], doc.points.size());
+            EXPECT_EQ(doc.points[doc.triangles[t].idx[k]], before[t][k]);
+        }
+    // Deleting the only quad keeps every triangle point.
+    deletePatch(doc, 0);
+    EXPECT_EQ(doc.points.size(), 14u);
+    for (size_t t = 0; t < doc.triangles.size(); ++t)
+        for (int k = 0; k < 10; ++k) EXPECT_EQ(doc.points[doc.triangles[t].idx[k]], before[t][k]);
+}
+
+TEST(TriangleDocument, MergeCoincidentPointsAndUsedMaskSeeTriangles) {
+    Document doc = docWithTriangles();
+    doc.points.push_back(doc.points[20]);  // a duplicate used only by a triangle
+    doc.triangles[0].idx[4] = uint32_t(doc.points.size() - 1);
+    mergeCoincidentPoints(doc);
+    EXPECT_EQ(doc.points.size(), 30u);
+    EXPECT_EQ(doc.triangles[0].idx[4], 20u);
+    const std::vector<bool> used = usedPointMask(doc);
+    for (const TrianglePatch& t : doc.triangles)
+        for (uint32_t i : t.idx) EXPECT_TRUE(used[i]);
+}
+
+TEST(TriangleDocument, UndoRestoresTriangleChanges) {
+    Document doc = docWithTriangles();
+    EditHistory history(16);
+    Document before = doc;
+    doc.triangles.pop_back();
+    history.commit(before, doc, "delete triangle");
+    history.undo(doc);
+    EXPECT_EQ(doc, docWithTriangles());
+    history.redo(doc);
+    EXPECT_EQ(doc.triangles.size(), 1u);
+}
+
+TEST(TriangleFormat, BptRefusesTrianglesInsteadOfDroppingThem) {
+    const auto dir = test::freshTempDir("tribpt");
+    try {
+        saveDocument(docWithTriangles(), dir / "t.bpt");
+        ADD_FAILURE() << "no error";
+    } catch (const OutputError& e) {
+        EXPECT_NE(std::string(e.what()).find("triangles"), std::string::npos) << e.what();
+    }
+}
