@@ -55,6 +55,7 @@ int runInfo(const InfoOptions& opt) {
                {"points", doc.points.size()},
                {"patches", doc.patches.size()},
                {"surfaces", doc.surfaces.size()},
+               {"triangles", doc.triangles.size()},
                {"windows", windows.size()},
                {"joins", {{"total", doc.joins.size()}, {"C0", byKind[0]}, {"C1", byKind[1]}, {"G1", byKind[2]}}},
                {"modelSize", bounds.empty ? 0.0 : bounds.diagonal()},
@@ -87,6 +88,7 @@ int runInfo(const InfoOptions& opt) {
     std::cout << "  points      " << doc.points.size() << "\n";
     std::cout << "  patches     " << doc.patches.size() << "\n";
     std::cout << "  surfaces    " << doc.surfaces.size() << "\n";
+    std::cout << "  triangles   " << doc.triangles.size() << "  (cubic Bézier triangles)\n";
     std::cout << "  windows     " << windows.size() << "  (patches + surface windows)\n";
     std::cout << "  joins       " << doc.joins.size() << "  (C0 " << byKind[0] << ", C1 " << byKind[1] << ", G1 "
               << byKind[2] << ")\n";

@@ -190,6 +190,8 @@ std::string exportGltfBytes(const Document& doc, bool binary, const GltfExportOp
             } else {
                 for (const MeshRange& r : mesh.perWindow)
                     if (r.indexCount > 0) addPrimitive(r.firstIndex, r.indexCount);
+                for (const MeshRange& r : mesh.perTriangle)
+                    if (r.indexCount > 0) addPrimitive(r.firstIndex, r.indexCount);
             }
         }
     }  // the mesh's memory is released here, before serialising

@@ -17,7 +17,9 @@
 #include <tuple>
 
 #include "limits.hpp"
+#include "bezier_triangle.hpp"
 #include "patch_eval.hpp"
+#include "triangle_mesh.hpp"
 
 namespace pw {
 
@@ -72,22 +74,15 @@ struct SurfaceGridInfo {
 
 }  // namespace
 
-TriangleMesh tessellateDocument(const Document& doc, int level) {
-    if (level < 1 || level > limits::kMaxExportLevel)
-        throw std::invalid_argument("tessellation level " + std::to_string(level) + " is outside 1.." +
-                                    std::to_string(limits::kMaxExportLevel));
-    const std::vector<PatchInstance> windows = expandPatches(doc);
+namespace {
+
+// The 4x4 windows (patches and surface windows) into `mesh`.
+void tessellateWindows(const Document& doc, const std::vector<PatchInstance>& windows, int level, TriangleMesh& mesh) {
     const size_t W = windows.size();
     const int L = level;
     const int S = L + 1;  // grid points per side
-
-    TriangleMesh mesh;
     mesh.perWindow.resize(W);
-    if (W == 0) return mesh;
-    const double maxVertices = static_cast<double>(W) * S * S;
-    if (maxVertices >= 4294967295.0)
-        throw std::length_error(std::to_string(W) + " patches at level " + std::to_string(L) +
-                                " would need more than 2^32 vertices; use a lower level");
+    if (W == 0) return;
 
     // Per-edge facts for every window: degenerate (collapsed to one point) and the direction of the
     // canonical order of its four pool indices.
@@ -314,7 +309,10 @@ TriangleMesh tessellateDocument(const Document& doc, int level) {
         mesh.normals[bVid[o]] = {static_cast<float>(n.x), static_cast<float>(n.y), static_cast<float>(n.z)};
     }
 
-    // Vertices no triangle uses (a window collapsed to a line or a point) are removed.
+}
+
+// Vertices no triangle uses (a window collapsed to a line or a point) are removed.
+void removeUnusedVertices(TriangleMesh& mesh) {
     std::vector<uint8_t> used(mesh.positions.size(), 0);
     for (uint32_t i : mesh.indices) used[i] = 1;
     if (std::find(used.begin(), used.end(), uint8_t{0}) != used.end()) {
@@ -333,6 +331,24 @@ TriangleMesh tessellateDocument(const Document& doc, int level) {
         mesh.uvs.resize(next);
         for (uint32_t& i : mesh.indices) i = remap[i];
     }
+}
+
+}  // namespace
+
+TriangleMesh tessellateDocument(const Document& doc, int level) {
+    if (level < 1 || level > limits::kMaxExportLevel)
+        throw std::invalid_argument("tessellation level " + std::to_string(level) + " is outside 1.." +
+                                    std::to_string(limits::kMaxExportLevel));
+    const std::vector<PatchInstance> windows = expandPatches(doc);
+    const double S = level + 1.0;
+    const double maxVertices = static_cast<double>(windows.size()) * S * S + static_cast<double>(doc.triangles.size()) * S * (S + 1) / 2;
+    if (maxVertices >= 4294967295.0)
+        throw std::length_error(std::to_string(windows.size() + doc.triangles.size()) + " patches at level " +
+                                std::to_string(level) + " would need more than 2^32 vertices; use a lower level");
+    TriangleMesh mesh;
+    tessellateWindows(doc, windows, level, mesh);
+    appendBezierTriangles(doc, level, mesh);
+    removeUnusedVertices(mesh);
     return mesh;
 }
 
@@ -354,6 +370,19 @@ CageLines controlCage(const Document& doc) {
                 }
             }
         }
+    }
+    // Bézier triangles: the 18 edges of the net's 6 upward sub-triangles (a + b + c = 2).
+    for (const TrianglePatch& tri : doc.triangles) {
+        for (int a = 0; a <= 2; ++a)
+            for (int b = 0; b <= 2 - a; ++b) {
+                const int c = 2 - a - b;
+                const uint32_t p[3] = {tri.idx[triSlot(a + 1, b, c)], tri.idx[triSlot(a, b + 1, c)], tri.idx[triSlot(a, b, c + 1)]};
+                for (int e = 0; e < 3; ++e) {
+                    const uint32_t x = p[e], y = p[(e + 1) % 3];
+                    if (x == y) continue;
+                    segments.push_back(uint64_t(std::min(x, y)) << 32 | std::max(x, y));
+                }
+            }
     }
     std::sort(segments.begin(), segments.end());
     segments.erase(std::unique(segments.begin(), segments.end()), segments.end());

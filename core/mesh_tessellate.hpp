@@ -22,12 +22,15 @@ struct TriangleMesh {
     std::vector<std::array<float, 2>> uvs;
     std::vector<uint32_t> indices;     // triangles, counter-clockwise seen from the normal side
     std::vector<MeshRange> perWindow;  // one per expandPatches() entry
+    std::vector<MeshRange> perTriangle;  // one per Document::triangles entry (after the windows)
 };
 
-// level >= 1 (limits::kMaxExportLevel at most).
+// level >= 1 (limits::kMaxExportLevel at most). Windows first, then the Bézier triangles
+// (triangle_mesh.hpp), each triangle as level² triangles.
 TriangleMesh tessellateDocument(const Document& doc, int level);
 
-// The control cage: pool points and the line segments of every window's 4x4 net (deduplicated).
+// The control cage: pool points and the line segments of every window's 4x4 net and every
+// triangle's net (deduplicated).
 struct CageLines {
     std::vector<std::array<float, 3>> positions;
     std::vector<uint32_t> indices;  // pairs

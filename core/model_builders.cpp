@@ -2,7 +2,10 @@
 // control lattice, joined across every interior edge.
 #include "model_builders.hpp"
 
+#include <array>
 #include <cmath>
+#include <glm/vec2.hpp>
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -22,6 +25,10 @@ std::vector<double> c1Samples(int n, double step, double (*f)(double)) {
 
 double waveX(double x) { return std::sin(x); }
 double waveY(double y) { return std::cos(0.7 * y); }
+
+// Slot of b_ijk in TrianglePatch::idx (bezier_triangle.hpp's triSlot, repeated to keep this file
+// free of the evaluator).
+int triangleSlot(int i, int k) { return (3 - i) * (4 - i) / 2 + k; }
 
 }  // namespace
 
@@ -73,6 +80,62 @@ Document makePatchGrid(int rows, int cols, Continuity continuity) {
                 doc.joins.push_back(Join{patchIndex(i, j), Edge::V1, patchIndex(i + 1, j), Edge::V0, false, continuity, 1.0});
         }
     }
+    return doc;
+}
+
+Document makeTriangleDome(double radius, double height) {
+    if (!(radius > 0.0)) throw std::invalid_argument("makeTriangleDome: radius must be > 0");
+    Document doc;
+    doc.name = "triangle dome";
+    const double a = height / (radius * radius);
+    // The blossom of f(p) = height - a |p|^2 (a polynomial of degree 2 written as degree 3).
+    auto blossom = [&](const glm::dvec2& p, const glm::dvec2& q, const glm::dvec2& r) {
+        return height - a * (glm::dot(p, q) + glm::dot(p, r) + glm::dot(q, r)) / 3.0;
+    };
+    // Pool entries keyed by their lattice position (multiples of radius/3 in the hexagon's frame).
+    std::map<std::array<int, 8>, uint32_t> pool;
+    auto pointFor = [&](const std::array<int, 8>& key, const Vec3& p) {
+        auto [it, inserted] = pool.try_emplace(key, static_cast<uint32_t>(doc.points.size()));
+        if (inserted) doc.points.push_back(p);
+        return it->second;
+    };
+    const double kPi = 3.14159265358979323846;
+    glm::dvec2 corner[6];
+    for (int m = 0; m < 6; ++m) corner[m] = radius * glm::dvec2(std::cos(m * kPi / 3.0), std::sin(m * kPi / 3.0));
+    const glm::dvec2 centre(0.0);
+    for (int m = 0; m < 6; ++m) {
+        // u corner = hexagon vertex m, v corner = vertex m+1, w corner = the centre: counter-clockwise
+        // seen from above, so du × dv points up.
+        const int m1 = (m + 1) % 6;
+        const glm::dvec2 P[3] = {corner[m], corner[m1], centre};
+        TrianglePatch tri;
+        tri.name = "dome " + std::to_string(m);
+        for (int i = 0; i <= 3; ++i)
+            for (int j = 0; j <= 3 - i; ++j) {
+                const int k = 3 - i - j;
+                glm::dvec2 args[3];
+                int n = 0;
+                for (int c = 0; c < i; ++c) args[n++] = P[0];
+                for (int c = 0; c < j; ++c) args[n++] = P[1];
+                for (int c = 0; c < k; ++c) args[n++] = P[2];
+                const glm::dvec2 xy = (double(i) * P[0] + double(j) * P[1] + double(k) * P[2]) / 3.0;
+                // Key: how much of each hexagon vertex (0..5) and the centre (6) the point mixes,
+                // which is the same for both triangles along a shared edge; the interior point
+                // b111 also carries its triangle.
+                std::array<int, 8> key{};
+                key[size_t(m)] += i;
+                key[size_t(m1)] += j;
+                key[6] += k;
+                if (i > 0 && j > 0 && k > 0) key[7] = m + 1;
+                tri.idx[static_cast<size_t>(triangleSlot(i, k))] =
+                    pointFor(key, Vec3(xy.x, xy.y, blossom(args[0], args[1], args[2])));
+            }
+        doc.triangles.push_back(tri);
+    }
+    doc.tess.outer = {8, 8, 8, 8};
+    doc.tess.inner = {8, 8};
+    doc.camera.target = {0.0, 0.0, 0.5 * height};
+    doc.camera.distance = 4.0 * radius;
     return doc;
 }
 

@@ -10,4 +10,10 @@ namespace pw {
 // interior edge (the control net is made to satisfy C1 exactly). rows, cols >= 1.
 Document makePatchGrid(int rows, int cols, Continuity continuity = Continuity::C1);
 
+// A dome of six cubic Bézier triangles around the origin (z up): the paraboloid
+// z = height·(1 − (x² + y²)/radius²) over a regular hexagon of circumradius `radius`, represented
+// exactly (the control points are the surface's blossom values). Neighbours share their edges'
+// four pool points, so the dome is watertight and smooth; its normals point up (+z).
+Document makeTriangleDome(double radius = 1.0, double height = 0.5);
+
 }  // namespace pw

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <set>
 
+#include "bezier_triangle.hpp"
 #include "patch_eval.hpp"
 
 namespace pw::render {
@@ -23,6 +24,17 @@ std::vector<uint32_t> controlGridLines(const Document& doc) {
             for (int j = 0; j < 3; ++j) {
                 add(pi.idx[i * 4 + j], pi.idx[i * 4 + j + 1]);
                 add(pi.idx[j * 4 + i], pi.idx[(j + 1) * 4 + i]);
+            }
+    // Bézier triangles: the edges of the net's six upward sub-triangles (a + b + c = 2).
+    for (const TrianglePatch& t : doc.triangles)
+        for (int a = 0; a <= 2; ++a)
+            for (int b = 0; b <= 2 - a; ++b) {
+                const int c = 2 - a - b;
+                const uint32_t p[3] = {t.idx[size_t(triSlot(a + 1, b, c))], t.idx[size_t(triSlot(a, b + 1, c))],
+                                       t.idx[size_t(triSlot(a, b, c + 1))]};
+                add(p[0], p[1]);
+                add(p[1], p[2]);
+                add(p[2], p[0]);
             }
     return out;
 }

@@ -109,6 +109,33 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
             }
         }
     }
+    // Bézier triangles: the same vertex and fragment shaders, their own control and evaluation shaders.
+    {
+        const VkShaderModule ttesc[kLevelsVariants] = {mod(spirv::tri_surface_tesc_fixed), mod(spirv::tri_surface_tesc_full)};
+        const spirv::Blob* ttese[kSpacingVariants][kVaryingsVariants] = {
+            {&spirv::tri_surface_tese_equal, &spirv::tri_surface_tese_equal_full},
+            {&spirv::tri_surface_tese_odd, &spirv::tri_surface_tese_odd_full},
+            {&spirv::tri_surface_tese_even, &spirv::tri_surface_tese_even_full}};
+        for (int s = 0; s < kSpacingVariants; ++s) {
+            const VkShaderModule te[kVaryingsVariants] = {mod(*ttese[s][0]), mod(*ttese[s][1])};
+            for (int l = 0; l < kLevelsVariants; ++l) {
+                const auto lv = LevelsVariant(l);
+                for (int v = 0; v < kVaryingsVariants; ++v) {
+                    PipelineDesc pd;
+                    pd.tess = true;
+                    pd.patchControlPoints = 10;
+                    pd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, ttesc[l]},
+                                 {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, te[v]}, {VK_SHADER_STAGE_FRAGMENT_BIT, frag[v]}};
+                    set.triSurface[surfaceIndex(s, lv, VaryingsVariant(v))] = buildPipeline(dev, set.layout, set.cache, pd, color, depth, samples);
+                    if (v != int(VaryingsVariant::Lean)) continue;
+                    pd.polygon = VK_POLYGON_MODE_LINE;
+                    pd.depthWrite = false;
+                    pd.depthBias = true;
+                    set.triWire[overlayIndex(s, lv)] = buildPipeline(dev, set.layout, set.cache, pd, color, depth, samples);
+                }
+            }
+        }
+    }
     const spirv::Blob* meshVert[kVaryingsVariants] = {&spirv::mesh_vert, &spirv::mesh_vert_full};
     for (int v = 0; v < kVaryingsVariants; ++v) {
         PipelineDesc md;
@@ -165,6 +192,8 @@ void destroyPipelines(Device& dev, PipelineSet& set) {
     for (auto& p : set.surface) kill(p);
     for (auto& p : set.wire) kill(p);
     for (auto& p : set.normals) kill(p);
+    for (auto& p : set.triSurface) kill(p);
+    for (auto& p : set.triWire) kill(p);
     for (auto& p : set.mesh) kill(p);
     kill(set.gridLines);
     kill(set.gridPoints);

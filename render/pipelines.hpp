@@ -42,6 +42,10 @@ struct PipelineSet {
     // by overlayIndex: the surface as polygonMode LINE + depth bias; point-mode evaluation +
     // geometry shader for normal vectors (if supported)
     std::array<VkPipeline, kSpacingVariants * kLevelsVariants> wire{}, normals{};
+    // Bézier triangles (10 control points, triangle domain): shaded by surfaceIndex, wireframe by
+    // overlayIndex (the normal-vector overlay covers the windows only).
+    std::array<VkPipeline, kSpacingVariants * kLevelsVariants * kVaryingsVariants> triSurface{};
+    std::array<VkPipeline, kSpacingVariants * kLevelsVariants> triWire{};
     std::array<VkPipeline, kVaryingsVariants> mesh{};  // plain pre-tessellated triangles
     VkPipeline gridLines = VK_NULL_HANDLE;   // control net lines (over everything)
     VkPipeline gridPoints = VK_NULL_HANDLE;  // control points

@@ -16,6 +16,7 @@
 #include "plain_mesh.hpp"
 #include "surface_scene.hpp"
 #include "tess_levels.hpp"
+#include "triangle_draws.hpp"
 
 namespace pw::render {
 
@@ -247,6 +248,11 @@ FrameStats Renderer::render(const RenderOptions& opt) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.surface[surfaceIndex(variant, levels, varyings)]);
         stats.draws = recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, push, bounds, budget);
         stats.patches = m.scene.windowCount;
+        if (m.scene.triangleCount) {  // Bézier triangles after the windows, inside the same statistics
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.triSurface[surfaceIndex(variant, levels, varyings)]);
+            stats.draws += recordTriangleDraws(cmd, pipes_.layout, m.scene, perDraw, push);
+            stats.patches += m.scene.triangleCount;
+        }
     }
     // Step 4: overlays, after the statistics query ends (outside rendering, see stats.hpp).
     const bool anyOverlay = ds.showWireframe || ds.showNormals || ds.showBoundaries || ds.showGrid;
@@ -264,6 +270,10 @@ FrameStats Renderer::render(const RenderOptions& opt) {
         wp.drawMode = 1;
         wp.color = {0.08f, 0.09f, 0.12f, 1.0f};
         stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, wp, bounds, budget);
+        if (m.scene.triangleCount) {
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.triWire[overlayIndex(variant, levels)]);
+            stats.draws += recordTriangleDraws(cmd, pipes_.layout, m.scene, perDraw, wp);
+        }
     }
     if (ds.showNormals && !opt.plainMesh && pipes_.normals[overlayIndex(variant, levels)]) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.normals[overlayIndex(variant, levels)]);

@@ -49,6 +49,22 @@ SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc) {
         }
         ++s.runs.back().count;
     }
+    // Bézier triangles after the windows: indices in their own buffer, overrides appended.
+    std::vector<uint32_t> triIdx;
+    triIdx.reserve(doc.triangles.size() * 10);
+    for (const TrianglePatch& t : doc.triangles) {
+        triIdx.insert(triIdx.end(), t.idx.begin(), t.idx.end());
+        PatchData tp;
+        if (t.tessOverride) {
+            const auto& o = *t.tessOverride;
+            tp.outer = {o[0], o[1], o[2], 0.0f};
+            tp.inner = {o[3], 0.0f, 1.0f, 0.0f};
+            for (float f : o) s.overrideMax = std::max(s.overrideMax, f);
+        }
+        pd.push_back(tp);
+    }
+    s.triangleCount = uint32_t(doc.triangles.size());
+    if (!triIdx.empty()) s.triIndices = uploadBuffer(dev, triIdx, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     s.cpuPoints.reserve(doc.points.size());
     for (const Vec3& p : doc.points) s.cpuPoints.emplace_back(float(p.x), float(p.y), float(p.z));
     s.cpuIndices = idx;
@@ -64,6 +80,7 @@ void destroySurfaceScene(Device& dev, SurfaceScene& s) {
     destroyBuffer(dev, s.pool);
     destroyBuffer(dev, s.indices);
     destroyBuffer(dev, s.patchData);
+    destroyBuffer(dev, s.triIndices);
     s = SurfaceScene{};
 }
 

@@ -1,6 +1,7 @@
 // GPU copy of a document for the tessellated surface: the pool as a vec3 vertex buffer, 16 pool
 // indices per window as the index buffer, per-patch level overrides, and runs of windows sharing
-// a basis (one push-constant matrix per run). Records the batched surface draws.
+// a basis (one push-constant matrix per run); the Bézier triangles' 10 pool indices each in a second
+// index buffer (drawn by triangle_draws.*). Records the batched surface draws.
 #pragma once
 
 #include <vector>
@@ -30,6 +31,10 @@ struct SurfaceScene {
     std::vector<glm::vec3> cpuPoints;
     std::vector<uint32_t> cpuIndices;         // 16 per window
     std::vector<float> overrideLevel;          // per window: largest override level, 0 = none
+    // Bézier triangles: 10 uint32 pool indices each; their PatchData follows the windows' in
+    // patchData (triangle t is entry windowCount + t).
+    Buffer triIndices;
+    uint32_t triangleCount = 0;
 };
 
 SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc);

@@ -21,6 +21,7 @@
 #include "gltf_export.hpp"
 #include "net_ops.hpp"
 #include "gltf_import.hpp"
+#include "model_builders.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;
@@ -171,6 +172,46 @@ TEST(Gltf, TeaSetExportsAreValidAndRoundTrip) {
         SCOPED_TRACE(name);
         expectValid(files);
     }
+    fs::remove_all(dir);
+}
+
+TEST(Gltf, BezierTriangleExportsAreValidAndRoundTrip) {
+    // The triangle dome alone, and beside the teapot's patches: welded mesh, one primitive per
+    // triangle (or merged), cage with the triangle nets; 0 errors and 0 warnings.
+    const fs::path dir = pw::test::freshTempDir("gltf-triangles");
+    pw::Document mixed = loadModel("teapot");
+    {
+        const pw::Document dome = pw::makeTriangleDome(1.0, 0.5);
+        const uint32_t base = static_cast<uint32_t>(mixed.points.size());
+        for (const pw::Vec3& p : dome.points) mixed.points.push_back(p + pw::Vec3(0.0, 0.0, 4.0));
+        for (pw::TrianglePatch t : dome.triangles) {
+            for (uint32_t& i : t.idx) i += base;
+            mixed.triangles.push_back(t);
+        }
+    }
+    std::vector<fs::path> files;
+    int n = 0;
+    for (const pw::Document& doc : {pw::makeTriangleDome(1.0, 0.5), mixed}) {
+        for (int level : {1, 5, 16}) {
+            for (bool merge : {false, true}) {
+                const fs::path out = dir / ("tri" + std::to_string(n++) + (merge ? "-merge" : "") + (level == 5 ? ".gltf" : ".glb"));
+                pw::GltfExportOptions options;
+                options.level = level;
+                options.merge = merge;
+                options.cage = level == 5;
+                pw::GltfExportStats stats;
+                stats = pw::exportGltfWithStats(doc, out, options);
+                if (doc.patches.empty()) EXPECT_EQ(stats.triangles, size_t(6 * level * level));
+                const tinygltf::Model model = loadWithTinygltf(out);
+                ASSERT_EQ(model.meshes.size(), 1u);
+                const size_t surfacePrims = merge ? 1 : doc.patches.size() + doc.triangles.size();
+                EXPECT_EQ(model.meshes[0].primitives.size(), surfacePrims + (options.cage ? 1 : 0));
+                EXPECT_TRUE(pw::importPatchworkGltf(out) == doc) << out;
+                files.push_back(out);
+            }
+        }
+    }
+    expectValid(files);
     fs::remove_all(dir);
 }
 

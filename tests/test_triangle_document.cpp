@@ -11,6 +11,7 @@
 #include "edit_history.hpp"
 #include "errors.hpp"
 #include "join_detect.hpp"
+#include "model_builders.hpp"
 #include "patch_ops.hpp"
 #include "patchwork_format.hpp"
 #include "picking.hpp"
@@ -153,4 +154,19 @@ TEST(TriangleFormat, BptRefusesTrianglesInsteadOfDroppingThem) {
     } catch (const OutputError& e) {
         EXPECT_NE(std::string(e.what()).find("triangles"), std::string::npos) << e.what();
     }
+}
+
+TEST(TriangleCli, InfoCountsTriangles) {
+    const auto dir = test::freshTempDir("triinfo");
+    const auto file = dir / "dome.patchwork";
+    saveDocument(makeTriangleDome(), file);
+    const std::string bin = "'" + test::patchworkBinary().string() + "'";
+    auto r = test::runCommand(bin + " info '" + file.string() + "'");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("triangles   6"), std::string::npos) << r.output;
+    r = test::runCommand(bin + " info --json '" + file.string() + "' 2>/dev/null");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto j = nlohmann::json::parse(r.output);
+    EXPECT_EQ(j["triangles"], 6);
+    EXPECT_EQ(j["points"], 37);
 }

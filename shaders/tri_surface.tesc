@@ -1,0 +1,119 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Tessellation levels of one cubic Bézier triangle (10 control points, core/bezier_triangle.hpp
+// order): three outer levels (edge 0: u = 0, 1: v = 0, 2: w = 0) and one inner, from the uniform
+// levels (outer[0..2], inner[0]), a per-triangle override or adaptive (each edge from its own four
+// points in canonical order, with the quads' code: crack free against triangles and quads alike);
+// back-face and off-screen culling; DESIGN §3 rounding, pow2 emulated. Built with and without
+// -DADAPTIVE_AND_CULLING like surface.tesc.
+#include "common.glsl"
+#include "tess_levels.glsl"
+
+layout(vertices = 10) out;
+layout(location = 0) in int inIdx[];
+layout(location = 1) patch out float netScalePatch;  // largest extent of the net
+// Bit e set: edge e runs from the higher pool index to the lower (evaluate it reversed).
+layout(location = 2) patch out uint edgeFlipPatch;
+
+vec3 cp(int s) { return gl_in[s].gl_Position.xyz; }
+
+// Slot of the k-th point along edge e: 0 = (6,7,8,9), 1 = (9,5,2,0), 2 = (0,1,3,6).
+int triEdgeSlot(int e, int k) {
+    if (e == 0) return 6 + k;
+    if (e == 1) return k == 0 ? 9 : k == 1 ? 5 : k == 2 ? 2 : 0;
+    return k == 0 ? 0 : k == 1 ? 1 : k == 2 ? 3 : 6;
+}
+
+// Lexicographic comparison of the pool indices read backwards (as core/patch_eval.cpp decides).
+bool reversedEdge(int a, int b, int c, int d) {
+    if (inIdx[a] != inIdx[d]) return inIdx[a] > inIdx[d];
+    return inIdx[b] > inIdx[c];
+}
+
+#ifdef ADAPTIVE_AND_CULLING
+float adaptiveLevel(int e) {
+    vec3 p[4];
+    bool rev = inIdx[triEdgeSlot(e, 0)] > inIdx[triEdgeSlot(e, 3)];  // as the quads' edgePoints
+    for (int k = 0; k < 4; ++k) p[k] = cp(triEdgeSlot(e, rev ? 3 - k : k));
+    return adaptiveEdgeLevel(p);
+}
+
+bool offscreen() {
+    bvec4 allOut = bvec4(true);
+    bool allNear = true, allFar = true;
+    for (int i = 0; i < 10; ++i) {
+        vec4 c = frame.viewProj * vec4(cp(i), 1.0);
+        allOut = bvec4(allOut.x && c.x < -c.w, allOut.y && c.x > c.w, allOut.z && c.y < -c.w, allOut.w && c.y > c.w);
+        allNear = allNear && c.z < 0.0;
+        allFar = allFar && c.z > c.w;
+    }
+    return any(allOut) || allNear || allFar;
+}
+
+// Conservative normal cone: du x dv is a non-negative combination of the products of the net's
+// u-differences b(a+1,b,c) - b(a,b,c+1) and v-differences b(a,b+1,c) - b(a,b,c+1) (a+b+c = 2).
+bool backfacing() {
+    // Slots of (a+1,b,c), (a,b+1,c), (a,b,c+1) for the six (a,b,c) with a+b+c = 2.
+    const int su[6] = int[6](0, 1, 2, 3, 4, 5);
+    const int sv[6] = int[6](1, 3, 4, 6, 7, 8);
+    const int sw[6] = int[6](2, 4, 5, 7, 8, 9);
+    vec3 du[6], dv[6];
+    for (int i = 0; i < 6; ++i) {
+        du[i] = cp(su[i]) - cp(sw[i]);
+        dv[i] = cp(sv[i]) - cp(sw[i]);
+    }
+    for (int a = 0; a < 6; ++a)
+        for (int b = 0; b < 6; ++b) {
+            vec3 c = cross(du[a], dv[b]);
+            if (dot(c, c) == 0.0) continue;
+            for (int q = 0; q < 10; ++q)
+                if (dot(c, frame.eye.xyz - cp(q)) >= 0.0) return false;
+        }
+    return true;
+}
+#endif
+
+void main() {
+    gl_out[gl_InvocationID].gl_Position = gl_in[gl_InvocationID].gl_Position;
+    if (gl_InvocationID != 0) return;
+
+    vec3 lo = cp(0), hi = cp(0);
+    for (int i = 1; i < 10; ++i) { lo = min(lo, cp(i)); hi = max(hi, cp(i)); }
+    netScalePatch = max(max(hi.x - lo.x, hi.y - lo.y), max(hi.z - lo.z, 1e-20));
+    edgeFlipPatch = (reversedEdge(6, 7, 8, 9) ? 1u : 0u) | (reversedEdge(9, 5, 2, 0) ? 2u : 0u) |
+                    (reversedEdge(0, 1, 3, 6) ? 4u : 0u);
+
+    PatchData pd = patches[draw.patchBase + uint(gl_PrimitiveID)];
+    float o[3];
+    float in0;
+    if (pd.inner.z > 0.5) {
+        o[0] = pd.outer.x; o[1] = pd.outer.y; o[2] = pd.outer.z;
+        in0 = pd.inner.x;
+    } else
+#ifdef ADAPTIVE_AND_CULLING
+    if (frame.modes.y == 0u)
+#endif
+    {
+        o[0] = frame.outer.x; o[1] = frame.outer.y; o[2] = frame.outer.z;
+        in0 = frame.inner.x;
+    }
+#ifdef ADAPTIVE_AND_CULLING
+    else {
+        for (int e = 0; e < 3; ++e) o[e] = clamp(adaptiveLevel(e), 1.0, frame.inner.z);
+        in0 = max(o[0], max(o[1], o[2]));
+    }
+#endif
+    for (int e = 0; e < 3; ++e) gl_TessLevelOuter[e] = roundLevel(o[e]);
+    gl_TessLevelOuter[3] = 0.0;
+    gl_TessLevelInner[0] = roundLevel(in0);
+    gl_TessLevelInner[1] = 0.0;
+
+#ifdef ADAPTIVE_AND_CULLING
+    bool cull = ((frame.modes.z & 2u) != 0u && offscreen()) || ((frame.modes.z & 1u) != 0u && backfacing());
+    if (cull) {
+        for (int e = 0; e < 3; ++e) gl_TessLevelOuter[e] = 0.0;
+        gl_TessLevelInner[0] = 0.0;
+        atomicAdd(counters.culled, 1u);
+    }
+#endif
+}

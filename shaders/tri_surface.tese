@@ -1,0 +1,90 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Evaluates a cubic Bézier triangle at gl_TessCoord = (u, v, w) (core/bezier_triangle.cpp): the
+// Bernstein sum for the position, the quadratic difference sums for ∂p/∂u and ∂p/∂v, the normal
+// du × dv with a fallback a small step towards the centroid where that vanishes (collapsed edges),
+// and boundary points from the edge's four points only, in canonical order, with the same code as
+// the quads' boundaries (bit-identical shared edges). One variant per partitioning (-DSPACING=),
+// lean (normal) or -DFULL_VARYINGS (UV = (u, v), patch id; curvature is left at 0).
+#include "common.glsl"
+
+layout(triangles, SPACING, ccw) in;
+
+layout(location = 1) patch in float netScalePatch;
+layout(location = 2) patch in uint edgeFlipPatch;  // bit e: evaluate edge e reversed
+layout(location = 1) out vec3 outNormal;
+#ifdef FULL_VARYINGS
+layout(location = 2) out vec2 outUV;
+layout(location = 3) flat out uint outPatch;
+layout(location = 4) out vec2 outCurv;
+#endif
+
+vec3 cp(int s) { return gl_in[s].gl_Position.xyz; }
+
+// ∂p/∂u and ∂p/∂v (w = 1 - u - v) from the quadratic Bernstein weights.
+void derivs(float u, float v, float w, out vec3 du, out vec3 dv) {
+    float B200 = u * u, B020 = v * v, B002 = w * w;
+    float B110 = 2.0 * u * v, B101 = 2.0 * u * w, B011 = 2.0 * v * w;
+    // (a,b,c) -> u-point b(a+1,b,c), v-point b(a,b+1,c), w-point b(a,b,c+1)
+    du = 3.0 * (B200 * (cp(0) - cp(2)) + B110 * (cp(1) - cp(4)) + B101 * (cp(2) - cp(5)) +
+                B020 * (cp(3) - cp(7)) + B011 * (cp(4) - cp(8)) + B002 * (cp(5) - cp(9)));
+    dv = 3.0 * (B200 * (cp(1) - cp(2)) + B110 * (cp(3) - cp(4)) + B101 * (cp(4) - cp(5)) +
+                B020 * (cp(6) - cp(7)) + B011 * (cp(7) - cp(8)) + B002 * (cp(8) - cp(9)));
+}
+
+vec3 position(float u, float v, float w) {
+    float u2 = u * u, v2 = v * v, w2 = w * w;
+    return u2 * u * cp(0) + 3.0 * u2 * v * cp(1) + 3.0 * u2 * w * cp(2) + 3.0 * u * v2 * cp(3) +
+           6.0 * u * v * w * cp(4) + 3.0 * u * w2 * cp(5) + v2 * v * cp(6) + 3.0 * v2 * w * cp(7) +
+           3.0 * v * w2 * cp(8) + w2 * w * cp(9);
+}
+
+// A boundary point from edge e's four points only, lower pool index first; t runs along the edge
+// in its own direction (edge 0: slots 6→9, 1: 9→0, 2: 0→6). Same arithmetic as surface.tese.
+vec3 boundaryPoint(int e, float t) {
+    bool rev = (edgeFlipPatch & (1u << uint(e))) != 0u;
+    vec3 q0 = e == 0 ? cp(6) : (e == 1 ? cp(9) : cp(0));
+    vec3 q1 = e == 0 ? cp(7) : (e == 1 ? cp(5) : cp(1));
+    vec3 q2 = e == 0 ? cp(8) : (e == 1 ? cp(2) : cp(3));
+    vec3 q3 = e == 0 ? cp(9) : (e == 1 ? cp(0) : cp(6));
+    vec3 p0 = rev ? q3 : q0, p1 = rev ? q2 : q1, p2 = rev ? q1 : q2, p3 = rev ? q0 : q3;
+    precise float tc = rev ? 1.0 - t : t;
+    precise float sc = 1.0 - tc;
+    precise float w0 = sc * sc * sc;
+    precise float w1 = 3.0 * sc * sc * tc;
+    precise float w2 = 3.0 * sc * tc * tc;
+    precise float w3 = tc * tc * tc;
+    precise vec3 r = w0 * p0 + w1 * p1 + w2 * p2 + w3 * p3;
+    return r;
+}
+
+void main() {
+    float u = gl_TessCoord.x, v = gl_TessCoord.y, w = gl_TessCoord.z;
+    vec3 du, dv;
+    derivs(u, v, w, du, dv);
+    vec3 p = position(u, v, w);
+    if (u == 0.0) p = boundaryPoint(0, w);
+    else if (v == 0.0) p = boundaryPoint(1, u);
+    else if (w == 0.0) p = boundaryPoint(2, v);
+
+    float s2 = netScalePatch * netScalePatch;
+    vec3 n = cross(du, dv);
+    float len2 = dot(n, n);
+    if (!(len2 > 1e-10 * s2 * s2)) {
+        // Collapsed edge or parallel corner tangents: the tangent plane a small step inside.
+        const float k = 0.02;
+        vec3 eu, ev;
+        derivs(u + (1.0 / 3.0 - u) * k, v + (1.0 / 3.0 - v) * k, w + (1.0 / 3.0 - w) * k, eu, ev);
+        n = cross(eu, ev);
+        len2 = dot(n, n);
+    }
+    n = len2 > 0.0 ? n * inversesqrt(len2) : vec3(0.0, 0.0, 1.0);
+
+    outNormal = n;
+#ifdef FULL_VARYINGS
+    outUV = vec2(u, v);
+    outPatch = draw.patchBase + uint(gl_PrimitiveID);
+    outCurv = vec2(0.0);
+#endif
+    gl_Position = frame.viewProj * vec4(p, 1.0);
+}
