@@ -122,14 +122,16 @@ int runDomainRender(const RenderArgs& a, const std::vector<render::DomainPane>& 
             const DomainCounts want = expectedDomainCounts(p.kind, p.levels, p.spacing, float(dev.caps().maxTessLevel));
             const auto shown = render::shownCounts(stats[i], p);
             std::cout << "wrote " << a.output << " pane " << i + 1 << ": " << domainName(p.kind) << " " << spacingName(p.spacing)
-                      << ", " << shown[0] << " vertices, " << shown[1] << " primitives"
-                      << (stats[i].valid ? " (pipeline statistics)" : " (rules; no pipeline statistics)") << "\n";
+                      << ", " << shown[0] << " vertices, " << shown[1] << " primitives";
+            if (stats[i].valid) std::cout << " (GPU: " << stats[i].primitives << " primitives, " << stats[i].vertices << " evaluations)";
+            else std::cout << " (rules; the device has no pipeline statistics)";
+            std::cout << "\n";
             j["panes"].push_back({{"domain", domainName(p.kind)},
                                   {"spacing", spacingName(p.spacing)},
                                   {"outer", p.levels.outer},
                                   {"inner", p.levels.inner},
                                   {"statisticsValid", stats[i].valid},
-                                  {"vertices", stats[i].vertices},
+                                  {"evaluations", stats[i].vertices},  // evaluation shader invocations
                                   {"primitives", stats[i].primitives},
                                   {"expectedVertices", want.vertices},
                                   {"expectedPrimitives", want.primitives}});

@@ -17,9 +17,8 @@ std::vector<std::array<float, 4>> splitPanes(int count, const std::array<float, 
 }
 
 std::array<uint64_t, 2> shownCounts(const DomainStats& gpu, const DomainPane& pane) {
-    if (gpu.valid) return {gpu.vertices, gpu.primitives};
     const DomainCounts c = expectedDomainCounts(pane.kind, pane.levels, pane.spacing);
-    return {c.vertices, c.primitives};
+    return {c.vertices, gpu.valid ? gpu.primitives : c.primitives};
 }
 
 std::vector<DomainStats> renderDomainFigure(DomainView& view, OffscreenTarget& target, const LabelRaster& labels,

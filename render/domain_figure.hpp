@@ -23,8 +23,10 @@ struct DomainPane {
 // filling `area`.
 std::vector<std::array<float, 4>> splitPanes(int count, const std::array<float, 4>& area);
 
-// The vertices and primitives to show for a pane: the GPU's statistics where valid, else the
-// rules' prediction.
+// The vertices and primitives to show for a pane: the distinct vertices of the pattern (the rules:
+// a GPU may run the evaluation shader more than once for a vertex, NVIDIA's does under fractional
+// and pow2 spacing, so invocations are not vertices) and the primitives the GPU's statistics
+// counted (the rules' where the device has no statistics).
 std::array<uint64_t, 2> shownCounts(const DomainStats& gpu, const DomainPane& pane);
 
 // Draws the panes into `target` (which must read back), labels them with `labels` at `textPixels`

@@ -60,9 +60,10 @@ TEST(TeachingCli, PresetFigureCountsFollowTheRulesAndIsLabelled) {
     ASSERT_EQ(j["panes"].size(), 1u);
     const auto& p = j["panes"][0];
     EXPECT_TRUE(p["statisticsValid"].get<bool>());
-    EXPECT_EQ(p["vertices"].get<uint64_t>(), 19u);  // 1+2+3+4 boundary vertices + 3x3 interior
+    // lavapipe runs the evaluation shader once per distinct vertex: 1+2+3+4 boundary + 3x3 interior.
+    EXPECT_EQ(p["evaluations"].get<uint64_t>(), 19u);
     EXPECT_EQ(p["primitives"].get<uint64_t>(), 26u);
-    EXPECT_EQ(p["vertices"], p["expectedVertices"]);
+    EXPECT_EQ(p["evaluations"], p["expectedVertices"]);
     const Png img = loadPng(png);
     ASSERT_EQ(img.w, 400);
     // The four edge labels sit in the margins beside the middle of each edge; nothing red elsewhere
@@ -92,12 +93,12 @@ TEST(TeachingCli, ComparisonPanesEachHaveTheirPartitioning) {
     const char* spacings[] = {"equal", "fractional_odd", "fractional_even", "pow2"};
     for (size_t i = 0; i < 4; ++i) {
         EXPECT_EQ(j["panes"][i]["spacing"], spacings[i]);
-        EXPECT_EQ(j["panes"][i]["vertices"], j["panes"][i]["expectedVertices"]) << spacings[i];
+        EXPECT_EQ(j["panes"][i]["evaluations"], j["panes"][i]["expectedVertices"]) << spacings[i];
         EXPECT_EQ(j["panes"][i]["primitives"], j["panes"][i]["expectedPrimitives"]) << spacings[i];
     }
     // Integer and fractional_odd both give 5 segments per edge here; pow2 rounds 5 up to 8.
-    EXPECT_EQ(j["panes"][0]["vertices"], j["panes"][1]["vertices"]);
-    EXPECT_GT(j["panes"][3]["vertices"].get<uint64_t>(), j["panes"][0]["vertices"].get<uint64_t>());
+    EXPECT_EQ(j["panes"][0]["evaluations"], j["panes"][1]["evaluations"]);
+    EXPECT_GT(j["panes"][3]["evaluations"].get<uint64_t>(), j["panes"][0]["evaluations"].get<uint64_t>());
     const Png img = loadPng(png);
     EXPECT_EQ(img.w, 600);
     EXPECT_EQ(img.h, 500);
@@ -111,7 +112,7 @@ TEST(TeachingCli, IsolineDomainCountsLinesTimesSegments) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const nlohmann::json j = readJson(stats);
     EXPECT_EQ(j["panes"][0]["primitives"].get<uint64_t>(), 15u);
-    EXPECT_EQ(j["panes"][0]["vertices"].get<uint64_t>(), 18u);
+    EXPECT_EQ(j["panes"][0]["evaluations"].get<uint64_t>(), 18u);
 }
 
 TEST(TeachingCli, SweepWritesNumberedFramesThatChange) {
