@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "document.hpp"
+#include "net_scale.hpp"
 #include "patch_eval.hpp"
 
 namespace pw {
@@ -10,17 +11,6 @@ namespace pw {
 namespace {
 
 constexpr int kEdgeSlots[3][4] = {{6, 7, 8, 9}, {9, 5, 2, 0}, {0, 1, 3, 6}};
-
-double netScale(const Net10& net) {
-    Vec3 lo = net[0], hi = net[0];
-    for (const Vec3& p : net) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
-    return std::max(glm::length(hi - lo), 1e-300);
-}
-
-bool degenerateCross(const Vec3& n, double scale2) { return !(glm::length(n) > 1e-12 * scale2); }
 
 struct Derivs {
     Vec3 p{0.0}, du{0.0}, dv{0.0};

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "document.hpp"
+#include "net_scale.hpp"
 
 namespace pw {
 
@@ -28,18 +29,6 @@ Derivs tensorEval(const Net16& net, const BasisWeights& wu, const BasisWeights& 
     }
     return d;
 }
-
-double netScale(const Net16& net) {
-    Vec3 lo = net[0], hi = net[0];
-    for (const Vec3& p : net) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
-    return std::max(glm::length(hi - lo), 1e-300);
-}
-
-// True where a cross product of a and b is too small to give a direction.
-bool degenerateCross(const Vec3& n, double scale2) { return !(glm::length(n) > 1e-12 * scale2); }
 
 }  // namespace
 

@@ -80,3 +80,21 @@ click_item() {
     sleep 0.2
     xdotool click 1
 }
+
+# quit_editor: Ctrl+Q; discards unsaved changes if the prompt comes; the editor must exit with 0
+# and have printed no validation message.
+quit_editor() {
+    xdotool key ctrl+q
+    for i in $(seq 100); do kill -0 "$EDITOR_PID" 2>/dev/null || break; sleep 0.1; done
+    if kill -0 "$EDITOR_PID" 2>/dev/null; then
+        wait_for "t['modal'] == 'unsaved'"
+        click_item unsaved.discard
+        for i in $(seq 100); do kill -0 "$EDITOR_PID" 2>/dev/null || break; sleep 0.1; done
+    fi
+    kill -0 "$EDITOR_PID" 2>/dev/null && fail "editor did not quit"
+    local rc=0
+    wait "$EDITOR_PID" || rc=$?
+    EDITOR_PID=""
+    [ "$rc" = "0" ] || fail "editor exit code $rc"
+    if grep -qi "validation" "$WORK/editor.err"; then fail "validation output on stderr"; fi
+}

@@ -40,11 +40,5 @@ wait_for "t['framebuffer'] == [1000, 700] and t['frame'] > $F0" 30
 check_validation
 say "survived 40 resizes with 8 minimise/restore cycles; drawing at 1000x700"
 
-xdotool key ctrl+q
-for i in $(seq 100); do kill -0 "$EDITOR_PID" 2>/dev/null || break; sleep 0.1; done
-kill -0 "$EDITOR_PID" 2>/dev/null && fail "editor did not quit"
-wait "$EDITOR_PID" && RC=0 || RC=$?
-EDITOR_PID=""
-[ "$RC" = "0" ] || fail "editor exit code $RC"
-if grep -qi "validation" "$WORK/editor.err"; then fail "validation output on stderr"; fi
+quit_editor
 say "PASS"

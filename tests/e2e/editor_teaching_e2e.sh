@@ -48,17 +48,5 @@ wait_for "not t['presentation'] and 'panel.teaching' in t['items']"
 check_validation
 say "presentation mode on and off"
 
-xdotool key ctrl+q
-for i in $(seq 100); do kill -0 "$EDITOR_PID" 2>/dev/null || break; sleep 0.1; done
-# A sweep and a preset modified the document: the unsaved-changes prompt comes; discard.
-if kill -0 "$EDITOR_PID" 2>/dev/null; then
-    wait_for "t['modal'] == 'unsaved'"
-    click_item unsaved.discard
-    for i in $(seq 100); do kill -0 "$EDITOR_PID" 2>/dev/null || break; sleep 0.1; done
-fi
-kill -0 "$EDITOR_PID" 2>/dev/null && fail "editor did not quit"
-wait "$EDITOR_PID" && RC=0 || RC=$?
-EDITOR_PID=""
-[ "$RC" = "0" ] || fail "editor exit code $RC"
-if grep -qi "validation" "$WORK/editor.err"; then fail "validation output on stderr"; fi
+quit_editor
 say "PASS"
