@@ -90,10 +90,7 @@ say "undo restored point $IDX"
 
 # --- 4a. an out-of-range number typed into the inspector is refused with a message; nothing changes --------------
 wait_for "'inspector.set' in t['items'] and t['selection'] == [$IDX]"
-read -r IX IY < <(trace "' '.join(str(round(v)) for v in t['items']['inspector.set'])")
-xdotool mousemove --sync $IX $IY
-sleep 0.2
-xdotool click 1
+click_item inspector.set
 wait_for "t['textInput']"
 xdotool key ctrl+a
 sleep 0.3
@@ -104,10 +101,7 @@ sleep 0.3
 xdotool key Return
 wait_for "t['modal'] == 'error' and '5e+10 was not applied' in t['error'] and t['world'][$IDX] == $ORIG"
 say "inspector: $(trace "t['error']")"
-read -r EX EY < <(trace "' '.join(str(round(v)) for v in t['items']['error.ok'])")
-xdotool mousemove --sync $EX $EY
-sleep 0.2
-xdotool click 1
+click_item error.ok
 wait_for "t['modal'] == '' and t['world'][$IDX] == $ORIG"
 
 # --- 4b. Esc cancels a G grab, right click cancels a mouse drag (no undo step, point restored) ----
@@ -163,10 +157,7 @@ wait "$EDITOR_PID" 2>/dev/null || true
 say "killed; restarting"
 start_editor
 wait_for "t['modal'] == 'recover' and t['recoverable'] >= 1"
-read -r RX RY < <(trace "' '.join(str(round(v)) for v in t['items']['recover'])")
-xdotool mousemove --sync $RX $RY
-sleep 0.2
-xdotool click 1
+click_item recover
 wait_for "t['modal'] == '' and t['modified'] and t['file'].endswith('model.patchwork') and t['world'][$IDX] == $ORIG"
 check_validation
 say "recovered the autosaved document"
@@ -176,28 +167,16 @@ printf '{"format": "patchwork", "version": 1, "points": [[0, 0' > "$WORK/broken.
 xdotool mousemove --sync 600 380
 xdotool key ctrl+o
 wait_for "t['modal'] == 'unsaved'"
-read -r DXP DYP < <(trace "' '.join(str(round(v)) for v in t['items']['unsaved.discard'])")
-xdotool mousemove --sync $DXP $DYP
-sleep 0.2
-xdotool click 1
+click_item unsaved.discard
 wait_for "t['modal'] == 'file'"
-read -r FX FY < <(trace "' '.join(str(round(v)) for v in t['items']['file.name'])")
-xdotool mousemove --sync $FX $FY
-sleep 0.2
-xdotool click 1
+click_item file.name
 sleep 0.3
 xdotool type --delay 20 "$WORK/broken.patchwork"
 sleep 0.3
-read -r OX OY < <(trace "' '.join(str(round(v)) for v in t['items']['file.ok'])")
-xdotool mousemove --sync $OX $OY
-sleep 0.2
-xdotool click 1
+click_item file.ok
 wait_for "t['modal'] == 'error' and 'broken.patchwork' in t['error'] and t['patches'] == 32 and t['world'][$IDX] == $ORIG and t['modified']"
 say "error dialog: $(trace "t['error'].splitlines()[-1]")"
-read -r EX EY < <(trace "' '.join(str(round(v)) for v in t['items']['error.ok'])")
-xdotool mousemove --sync $EX $EY
-sleep 0.2
-xdotool click 1
+click_item error.ok
 wait_for "t['modal'] == ''"
 
 # --- 6c. a net: add it, switch nothing, convert it to Bézier patches, undo ----------------------
@@ -214,10 +193,7 @@ say "net added, converted to 16 Bézier patches with C1 joins, undone"
 # --- 7. quit asks about unsaved changes -------------------------------------------------------
 xdotool key ctrl+q
 wait_for "t['modal'] == 'unsaved'"
-read -r DXP DYP < <(trace "' '.join(str(round(v)) for v in t['items']['unsaved.discard'])")
-xdotool mousemove --sync $DXP $DYP
-sleep 0.2
-xdotool click 1
+click_item unsaved.discard
 for i in $(seq 100); do kill -0 "$EDITOR_PID" 2>/dev/null || break; sleep 0.1; done
 if kill -0 "$EDITOR_PID" 2>/dev/null; then fail "editor did not quit"; fi
 wait "$EDITOR_PID" && RC=0 || RC=$?
