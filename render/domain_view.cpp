@@ -199,37 +199,19 @@ std::vector<DomainStats> DomainView::draw(RenderTarget& target, const std::vecto
 
 std::vector<DomainStats> countDomain(Device& dev, DomainKind kind, Spacing spacing, const std::vector<DomainLevels>& levels) {
     if (levels.empty()) return {};
+    // Each level set is a pane covering the whole small target; draw() measures each pane's fill.
     OffscreenTarget target(dev, 64, 64, false);
     target.setReadback(false);
     DomainView view(dev, target.colorFormat(), target.depthFormat(), target.samples());
-    const uint32_t n = uint32_t(levels.size());
-    VkQueryPool pool = makeStatsPool(dev, n);
-    DomainViewOptions o;
-    o.kind = kind;
-    o.spacing = spacing;
-    o.rect = {0, 0, 64, 64};
-    o.margin = 2;
-    const DomainPlacement at = placeDomain(o);
-    dev.submitAndWait([&](VkCommandBuffer cmd) {
-        if (pool) vkCmdResetQueryPool(cmd, pool, 0, n);
-        for (uint32_t i = 0; i < n; ++i) {
-            o.levels = levels[i];
-            if (pool) vkCmdBeginQuery(cmd, pool, i, 0);
-            target.beginRendering(cmd, o.background);
-            const VkViewport vp{0, 0, 64, 64, 0, 1};
-            const VkRect2D sc{{0, 0}, {64, 64}};
-            vkCmdSetViewport(cmd, 0, 1, &vp);
-            vkCmdSetScissor(cmd, 0, 1, &sc);
-            view.recordPass(cmd, o, 0, at, o.fillColor, {64, 64});
-            target.pauseRendering(cmd);
-            if (pool) vkCmdEndQuery(cmd, pool, i);
-        }
-        target.resumeRendering(cmd);
-        target.endRendering(cmd);
-    });
-    std::vector<DomainStats> out = readStats(dev, pool, n);
-    if (pool) vkDestroyQueryPool(dev.device(), pool, nullptr);
-    return out;
+    std::vector<DomainViewOptions> panes(levels.size());
+    for (size_t i = 0; i < levels.size(); ++i) {
+        panes[i].kind = kind;
+        panes[i].spacing = spacing;
+        panes[i].levels = levels[i];
+        panes[i].rect = {0, 0, 64, 64};
+        panes[i].margin = 2;
+    }
+    return view.draw(target, panes, true);
 }
 
 }  // namespace pw::render

@@ -77,11 +77,10 @@ private:
     VkFormat color_, depth_;
     VkSampleCountFlagBits samples_;
     bool pointsSupported_ = false;
-    friend std::vector<DomainStats> countDomain(Device&, DomainKind, Spacing, const std::vector<DomainLevels>&);
 };
 
-// Counts for many level sets in one submission (tests, sweeps): each set is tessellated once into a
-// small offscreen target and measured with its own pipeline-statistics query.
+// Counts for many level sets in one submission (tests): each set is a pane of a small offscreen
+// target, measured with its own pipeline-statistics query.
 std::vector<DomainStats> countDomain(Device& dev, DomainKind kind, Spacing spacing, const std::vector<DomainLevels>& levels);
 
 }  // namespace pw::render
