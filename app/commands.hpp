@@ -16,6 +16,7 @@ void registerRenderCommand(CLI::App& app, Action& run);
 void registerBenchCommand(CLI::App& app, Action& run);
 void registerPresetsCommand(CLI::App& app, Action& run);
 void registerSweepCommand(CLI::App& app, Action& run);
+void registerShadersCommand(CLI::App& app, Action& run);
 
 // The default job when no sub-command is given (until the editor window exists: summary + export).
 int runDefault(const std::string& file);

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
     pw::app::registerBenchCommand(app, run);
     pw::app::registerPresetsCommand(app, run);
     pw::app::registerSweepCommand(app, run);
+    pw::app::registerShadersCommand(app, run);
 
     try {
         app.parse(argc, argv);

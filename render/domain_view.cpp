@@ -5,6 +5,7 @@
 
 #include "offscreen_target.hpp"
 #include "pipeline_builder.hpp"
+#include "shader_variants.hpp"
 #include "spirv.hpp"
 
 namespace pw::render {
@@ -25,14 +26,6 @@ constexpr float kTriangleHeight = 0.8660254f;  // sqrt(3)/2: the equilateral tri
 // Results come in the order of the flag bits: clipping invocations, then evaluation invocations.
 constexpr VkQueryPipelineStatisticFlags kDomainStatFlags =
     VK_QUERY_PIPELINE_STATISTIC_CLIPPING_INVOCATIONS_BIT | VK_QUERY_PIPELINE_STATISTIC_TESSELLATION_EVALUATION_SHADER_INVOCATIONS_BIT;
-
-int spacingSlot(Spacing s) {
-    switch (tessellatorSpacing(s)) {
-        case Spacing::FractionalOdd: return 1;
-        case Spacing::FractionalEven: return 2;
-        default: return 0;
-    }
-}
 
 VkQueryPool makeStatsPool(Device& dev, uint32_t count) {
     if (!dev.caps().pipelineStatistics) return VK_NULL_HANDLE;
@@ -122,7 +115,7 @@ DomainView::~DomainView() {
 }
 
 VkPipeline DomainView::pipeline(DomainKind kind, Spacing spacing, int pass) const {
-    return pipes_[size_t(kind)][size_t(spacingSlot(spacing))][size_t(pass)];
+    return pipes_[size_t(kind)][size_t(spacingVariant(spacing))][size_t(pass)];
 }
 
 void DomainView::recordPass(VkCommandBuffer cmd, const DomainViewOptions& o, int pass, const DomainPlacement& at,

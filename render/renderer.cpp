@@ -14,6 +14,7 @@
 #include "gpu_types.hpp"
 #include "overlays.hpp"
 #include "plain_mesh.hpp"
+#include "shader_variants.hpp"
 #include "surface_scene.hpp"
 #include "tess_levels.hpp"
 #include "triangle_draws.hpp"
@@ -41,31 +42,6 @@ struct Renderer::Impl {
 };
 
 namespace {
-
-int spacingVariant(Spacing s) {
-    switch (s) {
-        case Spacing::FractionalOdd: return 1;
-        case Spacing::FractionalEven: return 2;
-        default: return 0;  // equal and pow2 (rounded in the control shader)
-    }
-}
-
-// Adaptive levels or culling need the full control shader; uniform levels and overrides do not.
-LevelsVariant levelsVariant(const TessSettings& ts) {
-    const bool adaptive = ts.adaptive != AdaptiveMode::None;
-    return adaptive || ts.cullBackfaces || ts.cullOffscreen ? LevelsVariant::Full : LevelsVariant::Fixed;
-}
-
-// Patch-id, UV and curvature shading need the full varying set; the others position and normal only.
-VaryingsVariant varyingsVariant(ShadingMode m) {
-    switch (m) {
-        case ShadingMode::PatchId:
-        case ShadingMode::UvChecker:
-        case ShadingMode::GaussCurvature:
-        case ShadingMode::MeanCurvature: return VaryingsVariant::Full;
-        default: return VaryingsVariant::Lean;
-    }
-}
 
 void writeDescriptors(Device& dev, VkDescriptorSet set, const Buffer& ubo, const Buffer& patches, const Buffer& counters) {
     VkDescriptorBufferInfo infos[3] = {{ubo.buffer, 0, VK_WHOLE_SIZE},

@@ -558,6 +558,7 @@ void Editor::writeTrace() {
                                {"primitives", domainStats_[i].primitives}, {"expectedVertices", want.vertices},
                                {"expectedPrimitives", want.primitives}});
     }  // a text field has the keyboard
+    j["shaders"] = {{"open", showShaders_}, {"shown", shaderShown_}, {"inUse", shaderVariantsInUse_}};
     j["items"] = traceItems_;
     j["unsavedPrompt"] = pending_ != PendingAction::None;
     j["error"] = errorMessage_;

@@ -23,6 +23,7 @@
 #include "gltf_export.hpp"
 #include "picking.hpp"
 #include "selection.hpp"
+#include "shader_listing.hpp"
 #include "stats.hpp"
 
 struct GLFWwindow;
@@ -219,6 +220,14 @@ private:
         std::chrono::steady_clock::time_point start;
     } sweep_;
     float presentationScale_ = 2.0f;
+
+    // Shader panel (ui/editor_shaders.cpp): the GLSL of the pipelines the current settings draw with.
+    void drawShaderWindow();
+    bool showShaders_ = false, shaderHideInactive_ = false;
+    std::string shaderPipeline_;  // the pipeline picked in the panel (by name: the list changes)
+    std::string shaderShown_;     // the variant on screen this frame ("" = panel closed)
+    std::vector<std::string> shaderVariantsInUse_;
+    std::map<std::string, render::ShaderListing, std::less<>> shaderListings_;  // cache by variant
 };
 
 }  // namespace pw::ui

@@ -88,6 +88,7 @@ void Editor::drawUi() {
         drawRightPanel();
     }
     drawTeachingWindow();
+    drawShaderWindow();
     drawFileDialog();
     drawModals();
     if (showHelp_) drawHelp();
@@ -170,6 +171,8 @@ void Editor::drawMenuBar() {
         tip("Show the ground-plane grid");
         ImGui::MenuItem("Domain View", nullptr, &showDomain_);
         tip("The parametric domain tessellated by the GPU with the current levels (Teaching panel for more)");
+        ImGui::MenuItem("Shaders", nullptr, &showShaders_);
+        tip("The GLSL of the tessellation stages in use, with the defines of each variant");
         if (ImGui::MenuItem("Presentation Mode", "F5", presentation_)) setPresentation(!presentation_);
         tip("Hide the editing panels; levels and counts large, high contrast (F5 toggles back)");
         ImGui::EndMenu();

@@ -82,6 +82,9 @@ void Editor::drawTeachingControls() {
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x);
     ImGui::Combo("##domain", &domainKind_, kDomainNames, 3);
     tip("Quad: outer u0, v0, u1, v1 and inner u, v. Triangle: outer 1-3 and inner 1. Isoline: outer 1 = lines, outer 2 = segments");
+    ImGui::Checkbox("Shaders", &showShaders_);
+    traceItem("teach.shaders");
+    tip("The GLSL of the tessellation stages in use, read-only, with the active defines");
     ImGui::TextUnformatted("Panes");
     for (int n : {1, 2, 4}) {
         ImGui::SameLine();
@@ -100,7 +103,7 @@ void Editor::drawTeachingControls() {
 
     // Presets: the notes' factor sets, their Bézier patch, their distance formula.
     const auto& presets = tessPresets();
-    if (ImGui::BeginCombo("Preset", "choose...")) {
+    if (ImGui::BeginCombo("Preset", "choose...", ImGuiComboFlags_HeightLargest)) {
         for (const TessPreset& p : presets) {
             const bool chosen = ImGui::Selectable(p.label.c_str());
             traceItem("preset." + p.name);

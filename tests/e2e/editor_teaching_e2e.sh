@@ -2,6 +2,7 @@
 # The teaching features in the running editor, under Xvfb with the validation layer on: the domain
 # view's GPU counts match the tessellation rules for the document's levels, live as a preset changes
 # them and across comparison panes; the sweep animates the level and pausing leaves one undo step;
+# the shader panel shows the variants the settings select;
 # presentation mode (F5) hides the panels and comes back. Screenshots in WORK_DIR.
 # Usage: editor_teaching_e2e.sh PATCHWORK_BINARY DATA_DIR WORK_DIR
 set -euo pipefail
@@ -28,6 +29,21 @@ click_item preset.quad-1_2_3_4-4_4
 wait_for "t['tessOuter'] == [1, 2, 3, 4] and t['domain'][0]['vertices'] == 19 and t['domain'][0]['primitives'] == 26"
 import -window root "$WORK/preset.png"
 say "preset quad {1,2,3,4 | 4,4}: 19 vertices, 26 triangles"
+STEPS=$(trace "t['undoSteps']")
+
+# Shader panel: the stages in use follow the settings. The teapot draws with the fixed-level-free
+# control shader (off-screen culling on) and equal spacing; the domain pane adds its own pipeline.
+click_item teach.shaders
+wait_for "t['shaders']['open'] and t['shaders']['shown'] == 'surface_vert' and 'domain_tese_quad_equal' in t['shaders']['inUse']"
+click_item shaders.tab.surface_tese_equal
+wait_for "t['shaders']['shown'] == 'surface_tese_equal'"
+# The notes' fractional example under fractional_odd switches the evaluation stage to its variant.
+click_item teach.preset
+wait_for "'preset.tri-4.9_4.5_4.1-4.4-fractional_odd' in t['items']"
+click_item preset.tri-4.9_4.5_4.1-4.4-fractional_odd
+wait_for "t['shaders']['shown'] == 'surface_tese_odd' and 'domain_tese_tri_odd' in t['shaders']['inUse']"
+import -window root "$WORK/shaders.png"
+say "shader panel: surface_tese_equal, then surface_tese_odd after the fractional_odd preset"
 STEPS=$(trace "t['undoSteps']")
 
 # Sweep: play, the level moves; pause, one undo step more.

@@ -1,0 +1,184 @@
+// The shader panel's listing (render/shader_listing) and `patchwork shaders`: every variant the
+// settings can select exists in the build and lists the very text glslc compiled, includes inlined,
+// with the lines its defines switch off marked; the stages follow spacing, adaptivity, shading,
+// overlays, triangles and domain panes. No device needed.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "shader_listing.hpp"
+#include "support.hpp"
+
+namespace pw::test {
+namespace {
+
+using render::ListingLine;
+using render::PipelineUse;
+using render::ShaderContext;
+
+std::string readText(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+const ListingLine* findLine(const render::ShaderListing& l, const std::string& text) {
+    for (const auto& line : l.lines)
+        if (line.text == text) return &line;
+    return nullptr;
+}
+
+std::string variantOf(const std::vector<PipelineUse>& pipes, const std::string& pipeline, const std::string& stage) {
+    for (const auto& p : pipes)
+        if (p.name.starts_with(pipeline))
+            for (const auto& s : p.stages)
+                if (s.stage == stage) return s.variant;
+    return "";
+}
+
+TEST(ShaderListing, EveryVariantListsTheFileGlslcCompiled) {
+    const auto names = render::shaderVariantNames();
+    ASSERT_GE(names.size(), 40u);
+    for (const std::string& name : names) {
+        SCOPED_TRACE(name);
+        const auto l = render::shaderListing(name);
+        ASSERT_TRUE(l);
+        // The stage's own lines (depth 0) are the file on disk, byte for byte.
+        std::string own;
+        for (const auto& line : l->lines)
+            if (line.depth == 0) own += line.text + "\n";
+        EXPECT_EQ(own, readText(testsDir() / ".." / "shaders" / l->source));
+        // Every #include is followed by the included file's first line, one level deeper.
+        for (size_t i = 0; i < l->lines.size(); ++i)
+            if (l->lines[i].text.starts_with("#include")) {
+                ASSERT_LT(i + 1, l->lines.size());
+                EXPECT_EQ(l->lines[i + 1].depth, l->lines[i].depth + 1);
+                EXPECT_EQ(l->lines[i + 1].line, 1);
+            }
+    }
+    EXPECT_FALSE(render::shaderListing("no_such_variant"));
+}
+
+TEST(ShaderListing, DefinesSwitchBranchesOnAndOff) {
+    const auto surface = render::shaderListing("surface_tese_odd");
+    const auto points = render::shaderListing("points_tese_odd");
+    ASSERT_TRUE(surface && points);
+    EXPECT_EQ(surface->defines, std::vector<std::string>{"-DSPACING=fractional_odd_spacing"});
+    EXPECT_EQ(points->defines, (std::vector<std::string>{"-DSPACING=fractional_odd_spacing", "-DPOINT_MODE"}));
+    const std::string tri = "layout(quads, SPACING, ccw) in;", pts = "layout(quads, SPACING, ccw, point_mode) in;";
+    ASSERT_TRUE(findLine(*surface, tri) && findLine(*surface, pts));
+    EXPECT_TRUE(findLine(*surface, tri)->active);
+    EXPECT_FALSE(findLine(*surface, pts)->active);
+    EXPECT_FALSE(findLine(*points, tri)->active);
+    EXPECT_TRUE(findLine(*points, pts)->active);
+
+    // Inside an include: tess_levels.glsl's adaptive block is off in the fixed control shader and on
+    // in the full one; the #ifdef lines themselves belong to the enclosing (active) region.
+    const auto fixed = render::shaderListing("surface_tesc_fixed"), full = render::shaderListing("surface_tesc_full");
+    ASSERT_TRUE(fixed && full);
+    size_t fixedOff = 0, fullOff = 0, fixedIncludedOff = 0;
+    for (const auto& line : fixed->lines) {
+        fixedOff += !line.active;
+        fixedIncludedOff += !line.active && line.file == "tess_levels.glsl";
+        if (line.text.starts_with("#ifdef") || line.text.starts_with("#endif")) {
+            EXPECT_TRUE(line.active);
+        }
+    }
+    for (const auto& line : full->lines) fullOff += !line.active;
+    EXPECT_GT(fixedIncludedOff, 10u);
+    EXPECT_GT(fixedOff, fixedIncludedOff);
+    EXPECT_EQ(fullOff, 0u);
+}
+
+TEST(ShaderListing, StagesFollowTheSettings) {
+    ShaderContext c;
+    c.tess.cullOffscreen = false;
+    auto pipes = render::pipelinesInUse(c);
+    ASSERT_EQ(pipes.size(), 1u);
+    EXPECT_EQ(variantOf(pipes, "Surface", "tessellation control"), "surface_tesc_fixed");
+    EXPECT_EQ(variantOf(pipes, "Surface", "tessellation evaluation"), "surface_tese_equal");
+    EXPECT_EQ(variantOf(pipes, "Surface", "fragment"), "surface_frag");
+
+    c.tess.spacing = Spacing::Pow2;  // pow2 is equal spacing with levels rounded in the control shader
+    c.tess.adaptive = AdaptiveMode::ScreenSpace;
+    c.display.shading = ShadingMode::MeanCurvature;
+    pipes = render::pipelinesInUse(c);
+    EXPECT_EQ(variantOf(pipes, "Surface", "tessellation control"), "surface_tesc_full");
+    EXPECT_EQ(variantOf(pipes, "Surface", "tessellation evaluation"), "surface_tese_equal_full");
+    EXPECT_EQ(variantOf(pipes, "Surface", "fragment"), "surface_frag_full");
+    EXPECT_NE(pipes[0].why.find("pow2"), std::string::npos);
+    EXPECT_NE(pipes[0].why.find("adaptive screen"), std::string::npos);
+
+    c.tess.spacing = Spacing::FractionalEven;
+    c.display.showWireframe = c.display.showNormals = true;
+    c.triangles = true;
+    pipes = render::pipelinesInUse(c);
+    EXPECT_EQ(variantOf(pipes, "Surface (Bézier triangles", "tessellation evaluation"), "tri_surface_tese_even_full");
+    EXPECT_EQ(variantOf(pipes, "Wireframe (quad", "tessellation evaluation"), "surface_tese_even");  // lean
+    EXPECT_EQ(variantOf(pipes, "Wireframe (Bézier", "tessellation evaluation"), "tri_surface_tese_even");
+    EXPECT_EQ(variantOf(pipes, "Normal vectors", "tessellation evaluation"), "points_tese_even");
+    EXPECT_EQ(variantOf(pipes, "Normal vectors", "geometry"), "normals_geom");
+    c.geometryShader = false;
+    EXPECT_EQ(variantOf(render::pipelinesInUse(c), "Normal vectors", "geometry"), "");
+
+    c.domainPanes = {{DomainKind::Triangle, Spacing::FractionalOdd}, {DomainKind::Isoline, Spacing::Pow2}};
+    pipes = render::pipelinesInUse(c);
+    EXPECT_EQ(variantOf(pipes, "Domain view: tri, fractional_odd", "tessellation evaluation"), "domain_tese_tri_odd");
+    EXPECT_EQ(variantOf(pipes, "Domain view: isoline, pow2", "tessellation evaluation"), "domain_tese_iso_equal");
+}
+
+TEST(ShaderListing, EverySelectableVariantIsBuilt) {
+    const auto names = render::shaderVariantNames();
+    const std::set<std::string> built(names.begin(), names.end());
+    size_t checked = 0;
+    for (Spacing sp : {Spacing::Equal, Spacing::FractionalOdd, Spacing::FractionalEven, Spacing::Pow2})
+        for (AdaptiveMode ad : {AdaptiveMode::None, AdaptiveMode::Distance, AdaptiveMode::ScreenSpace, AdaptiveMode::Orientation})
+            for (int sh = 0; sh <= int(ShadingMode::MeanCurvature); ++sh)
+                for (int flags = 0; flags < 8; ++flags)
+                    for (DomainKind dk : {DomainKind::Quad, DomainKind::Triangle, DomainKind::Isoline}) {
+                        ShaderContext c;
+                        c.tess.spacing = sp;
+                        c.tess.adaptive = ad;
+                        c.tess.cullOffscreen = flags & 1;
+                        c.display.shading = ShadingMode(sh);
+                        c.display.showWireframe = c.display.showNormals = flags & 2;
+                        c.triangles = flags & 4;
+                        c.domainPanes = {{dk, sp}};
+                        for (const auto& p : render::pipelinesInUse(c))
+                            for (const auto& s : p.stages) {
+                                EXPECT_TRUE(built.contains(s.variant)) << s.variant << " in " << p.name;
+                                ++checked;
+                            }
+                    }
+    EXPECT_GT(checked, 10000u);
+}
+
+TEST(ShaderListing, CommandPrintsTheStagesInUse) {
+    const std::string bin = patchworkBinary().string();
+    RunResult r = runCommand(bin + " shaders --stage tese --spacing fractional_even --active-only");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("surface_tese_even: surface.tese, glslc --target-env=vulkan1.3 -O -DSPACING=fractional_even_spacing"),
+              std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("layout(quads, SPACING, ccw) in;"), std::string::npos);
+    EXPECT_EQ(r.output.find("point_mode"), std::string::npos);  // switched off, left out
+    EXPECT_EQ(r.output.find("-- vertex"), std::string::npos);
+
+    r = runCommand(bin + " shaders --list --domain isoline --outer 3,5 --spacing fractional_odd");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("Domain view: isoline, fractional_odd"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("-- tessellation evaluation: domain_tese_iso_odd\n"), std::string::npos);
+    EXPECT_EQ(r.output.find("Surface"), std::string::npos);
+
+    r = runCommand(bin + " shaders --variant nope");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("--variant"), std::string::npos) << r.output;
+    r = runCommand(bin + " shaders --stage tessellate");
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.output.find("--stage"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace pw::test
