@@ -36,6 +36,7 @@ int runExport(const ExportArgs& args) {
     const GltfExportStats stats = exportGltfWithStats(doc, args.output, options);
     std::cout << "wrote " << args.output << ": " << stats.triangles << " triangles, " << stats.vertices << " vertices";
     if (args.cage) std::cout << ", " << stats.cageSegments << " cage segments";
+    if (stats.curveSegments) std::cout << ", " << stats.curveSegments << " curve segments";
     std::cout << ", " << stats.bytes << " bytes (level " << stats.level << ", "
               << (args.merge ? "one merged primitive" : "one primitive per patch") << ")\n";
     return 0;

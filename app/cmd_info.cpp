@@ -56,6 +56,7 @@ int runInfo(const InfoOptions& opt) {
                {"patches", doc.patches.size()},
                {"surfaces", doc.surfaces.size()},
                {"triangles", doc.triangles.size()},
+               {"curves", doc.curves.size()},
                {"windows", windows.size()},
                {"joins", {{"total", doc.joins.size()}, {"C0", byKind[0]}, {"C1", byKind[1]}, {"G1", byKind[2]}}},
                {"modelSize", bounds.empty ? 0.0 : bounds.diagonal()},
@@ -89,6 +90,7 @@ int runInfo(const InfoOptions& opt) {
     std::cout << "  patches     " << doc.patches.size() << "\n";
     std::cout << "  surfaces    " << doc.surfaces.size() << "\n";
     std::cout << "  triangles   " << doc.triangles.size() << "  (cubic Bézier triangles)\n";
+    std::cout << "  curves      " << doc.curves.size() << "  (cubic Bézier curves)\n";
     std::cout << "  windows     " << windows.size() << "  (patches + surface windows)\n";
     std::cout << "  joins       " << doc.joins.size() << "  (C0 " << byKind[0] << ", C1 " << byKind[1] << ", G1 "
               << byKind[2] << ")\n";

@@ -74,6 +74,10 @@ render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& do
         o.tess.targetPixels = px;
     }
     if (!a.maxLevel.empty()) o.tess.maxLevel = parseLevel("--max-level", a.maxLevel);
+    if (!a.isolines.empty()) {
+        const auto v = parseLevels("--isolines", a.isolines, 2);
+        o.tess.isolineLevels = {v[0], v[1]};
+    }
     if (a.cull) o.tess.cullBackfaces = true;
     if (!a.shading.empty()) {
         std::optional<ShadingMode> s = a.shading == "curvature" ? std::optional(ShadingMode::GaussCurvature) : parseShading(a.shading);
@@ -85,7 +89,8 @@ render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& do
         else if (ov == "wire") o.display.showWireframe = true;
         else if (ov == "normals") o.display.showNormals = true;
         else if (ov == "boundaries") o.display.showBoundaries = true;
-        else if (ov != "none") bad("--overlay", "'" + ov + "' is not one of grid, wire, normals, boundaries, none");
+        else if (ov == "isocurves") o.display.showIsocurves = true;
+        else if (ov != "none") bad("--overlay", "'" + ov + "' is not one of grid, wire, normals, boundaries, isocurves, none");
     }
     const double aspect = double(width) / double(height);
     if (!a.view.empty()) {
@@ -203,7 +208,8 @@ void addRenderOptions(CLI::App* cmd, RenderArgs& a) {
     cmd->add_option("--target-px", a.targetPx, "Screen-space adaptive: pixels per segment (default 8)");
     cmd->add_option("--max-level", a.maxLevel, "Adaptive: largest level, 1..64");
     cmd->add_option("--shading", a.shading, "lit | normal | patch | uv | zebra | curvature | gauss | mean");
-    cmd->add_option("--overlay", a.overlay, "Comma-separated overlays: grid, wire, normals, boundaries");
+    cmd->add_option("--overlay", a.overlay, "Comma-separated overlays: grid, wire, normals, boundaries, isocurves");
+    cmd->add_option("--isolines", a.isolines, "Isoline levels LINES,SEGMENTS for curves and the isocurve overlay (default: the document's, 2,16)");
     cmd->add_option("--view", a.view, "front | back | left | right | top | bottom | iso (framed to the model)");
     cmd->add_option("--stats", a.stats, "Write frame statistics (triangles, GPU time, ...) as JSON to this file");
     cmd->add_option("--domain", a.domain, "Draw the parametric domain instead: quad | tri | isoline (levels from --tess/--outer/--inner)");

@@ -69,6 +69,7 @@ int runShaders(const ShadersArgs& a) {
         c.display = o.display;
         c.windows = !doc.patches.empty() || !doc.surfaces.empty();
         c.triangles = !doc.triangles.empty();
+        c.curves = !doc.curves.empty();
     }
     for (const render::PipelineUse& p : render::pipelinesInUse(c)) {
         std::cout << "== " << p.name << "\n   " << p.why << "\n";

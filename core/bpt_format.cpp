@@ -230,6 +230,9 @@ std::string formatBpt(const Document& doc) {
         throw InputError(doc.name.empty() ? "document" : doc.name,
                          "Bézier triangles cannot be written as .bpt, which holds rectangular patches only", 0,
                          "triangles[0]");
+    if (!doc.curves.empty())
+        throw InputError(doc.name.empty() ? "document" : doc.name, "Bézier curves cannot be written as .bpt, which holds rectangular patches only", 0,
+                         "curves[0]");
     const std::vector<PatchInstance> windows = expandPatches(doc);
     std::string out;
     out.reserve(windows.size() * 16 * 32 + 16);

@@ -55,6 +55,14 @@ struct TrianglePatch {
     bool operator==(const TrianglePatch&) const = default;
 };
 
+// A cubic Bézier curve: four pool points. Drawn through the GPU's isoline tessellator (DESIGN §3)
+// with TessSettings::isolineLevels[1] segments; exported as a glTF line strip.
+struct BezierCurve {
+    std::array<uint32_t, 4> idx{};
+    std::string name;
+    bool operator==(const BezierCurve&) const = default;
+};
+
 // A larger control net (rows x cols) under one basis; every 4x4 window is a patch. Bézier windows
 // step by 3, spline windows by 1. A closed direction wraps around (tubes and rings).
 struct Surface {
@@ -105,6 +113,11 @@ struct TessSettings {
     float maxLevel = 64.0f;
     bool cullBackfaces = false;
     bool cullOffscreen = true;
+    // The isoline domain's two levels, for curves and the isocurve overlay: lines (outer 0, always
+    // rounded to an integer) and segments per line (outer 1, under `spacing`). Curves draw one line;
+    // the isocurve overlay draws `lines` isoparametric curves per direction of every window, the
+    // first and last on its boundary (2 = the boundary curves).
+    std::array<float, 2> isolineLevels{2.0f, 16.0f};
     bool operator==(const TessSettings&) const = default;
 };
 
@@ -118,6 +131,7 @@ struct DisplaySettings {
     bool showWireframe = false;
     bool showNormals = false;
     bool showBoundaries = false;  // patch boundaries and joins coloured by continuity
+    bool showIsocurves = false;   // isoparametric curves of every window, through the isoline tessellator
     float normalLength = 0.1f;
     std::array<float, 3> lightDir{0.4f, 0.5f, 0.75f};
     std::array<float, 3> background{0.16f, 0.17f, 0.19f};
@@ -149,6 +163,7 @@ struct Document {
     // Cubic Bézier triangles, drawn after the quads (last, so that aggregate initialisations of
     // documents without triangles keep working).
     std::vector<TrianglePatch> triangles;
+    std::vector<BezierCurve> curves;  // cubic Bézier curves (isoline domain)
 
     bool operator==(const Document&) const = default;
 };

@@ -9,7 +9,7 @@ namespace {
 // True when the two documents differ only in point coordinates (same pool size).
 bool onlyPointsDiffer(const Document& a, const Document& b) {
     return a.points.size() == b.points.size() && a.patches == b.patches && a.surfaces == b.surfaces &&
-           a.triangles == b.triangles && a.joins == b.joins && a.tess == b.tess && a.display == b.display && a.camera == b.camera &&
+           a.triangles == b.triangles && a.curves == b.curves && a.joins == b.joins && a.tess == b.tess && a.display == b.display && a.camera == b.camera &&
            a.name == b.name;
 }
 

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "bezier_curve.hpp"
 #include "errors.hpp"
 #include "file_io.hpp"
 #include "limits.hpp"
@@ -213,6 +214,32 @@ std::string exportGltfBytes(const Document& doc, bool binary, const GltfExportOp
             prim.mode = TINYGLTF_MODE_LINE;
             gmesh.primitives.push_back(std::move(prim));
         }
+    }
+
+    // Bézier curves: one LINE_STRIP each, `level` segments, on one shared position accessor.
+    if (!doc.curves.empty()) {
+        std::vector<std::array<float, 3>> positions;
+        positions.reserve(doc.curves.size() * size_t(level + 1));
+        for (const BezierCurve& c : doc.curves)
+            for (const Vec3& q : sampleCurve(curvePoints(doc, c), level)) positions.push_back({float(q.x), float(q.y), float(q.z)});
+        std::vector<uint32_t> indices(positions.size());
+        for (size_t i = 0; i < indices.size(); ++i) indices[i] = uint32_t(i);
+        const size_t nv = positions.size();
+        const int posView = addView(model, positions.data(), nv * 12, TINYGLTF_TARGET_ARRAY_BUFFER);
+        const int posAcc = addAccessor(model, posView, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, nv);
+        setMinMax(model.accessors[posAcc], positions);
+        int componentType = 0;
+        size_t componentSize = 0;
+        const int idxView = addIndexView(model, indices, nv, componentType, componentSize);
+        const size_t perCurve = size_t(level) + 1;
+        for (size_t c = 0; c < doc.curves.size(); ++c) {
+            tinygltf::Primitive prim;
+            prim.attributes["POSITION"] = posAcc;
+            prim.indices = addAccessor(model, idxView, c * perCurve * componentSize, componentType, TINYGLTF_TYPE_SCALAR, perCurve);
+            prim.mode = TINYGLTF_MODE_LINE_STRIP;
+            gmesh.primitives.push_back(std::move(prim));
+        }
+        st.curveSegments = doc.curves.size() * size_t(level);
     }
 
     // The buffer's length is a multiple of 4 (GLB chunk alignment); an empty buffer is left out.

@@ -28,6 +28,7 @@ struct GltfExportStats {
     size_t triangles = 0;
     size_t vertices = 0;      // of the surface mesh (welded)
     size_t cageSegments = 0;  // 0 without the cage
+    size_t curveSegments = 0;  // line-strip segments of the document's Bézier curves
     size_t bytes = 0;         // size of the file
 };
 

@@ -166,6 +166,8 @@ void mergeCoincidentPoints(Document& doc) {
         for (uint32_t& idx : s.idx) rewrite(idx);
     for (TrianglePatch& t : doc.triangles)
         for (uint32_t& idx : t.idx) rewrite(idx);
+    for (BezierCurve& c : doc.curves)
+        for (uint32_t& idx : c.idx) rewrite(idx);
     doc.points = std::move(pool);
 }
 

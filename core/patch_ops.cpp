@@ -255,6 +255,34 @@ void unjoin(Document& doc, size_t j) {
     }
 }
 
+uint32_t addCurve(Document& doc, const Vec3& center, double size, bool zUp) {
+    BezierCurve c;
+    const double xs[4] = {-0.5, -0.25, 0.25, 0.5}, ys[4] = {0.0, 0.5, 0.5, 0.0};
+    for (int k = 0; k < 4; ++k) {
+        const double a = xs[k] * size, b = ys[k] * size;
+        c.idx[size_t(k)] = addPoint(doc, center + (zUp ? Vec3(a, b, 0.0) : Vec3(a, 0.0, -b)));
+    }
+    c.name = "curve " + std::to_string(doc.curves.size());
+    doc.curves.push_back(c);
+    return uint32_t(doc.curves.size() - 1);
+}
+
+uint32_t curveFromEdge(Document& doc, uint32_t p, Edge e) {
+    checkBezier(doc, p, "take a curve from");
+    BezierCurve c;
+    for (int k = 0; k < 4; ++k) c.idx[size_t(k)] = doc.patches[p].idx[size_t(edgeSlot(e, k, 0))];
+    c.name = (doc.patches[p].name.empty() ? "patch " + std::to_string(p) : doc.patches[p].name) + " edge " + std::string(edgeName(e));
+    doc.curves.push_back(c);
+    return uint32_t(doc.curves.size() - 1);
+}
+
+void deleteCurve(Document& doc, uint32_t c) {
+    if (c >= doc.curves.size()) throw EditError("curve " + std::to_string(c) + " does not exist (the document has " +
+                                                std::to_string(doc.curves.size()) + ")");
+    doc.curves.erase(doc.curves.begin() + c);
+    compactPool(doc);
+}
+
 void compactPool(Document& doc) {
     std::vector<uint32_t> remap(doc.points.size(), UINT32_MAX);
     for (const Patch& p : doc.patches)
@@ -263,6 +291,8 @@ void compactPool(Document& doc) {
         for (uint32_t i : s.idx) remap[i] = 0;
     for (const TrianglePatch& t : doc.triangles)
         for (uint32_t i : t.idx) remap[i] = 0;
+    for (const BezierCurve& c : doc.curves)
+        for (uint32_t i : c.idx) remap[i] = 0;
     std::vector<Vec3> pts;
     pts.reserve(doc.points.size());
     for (size_t i = 0; i < doc.points.size(); ++i)
@@ -278,6 +308,8 @@ void compactPool(Document& doc) {
         for (uint32_t& i : s.idx) i = remap[i];
     for (TrianglePatch& t : doc.triangles)
         for (uint32_t& i : t.idx) i = remap[i];
+    for (BezierCurve& c : doc.curves)
+        for (uint32_t& i : c.idx) i = remap[i];
 }
 
 }  // namespace pw

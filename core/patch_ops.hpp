@@ -60,6 +60,14 @@ int findJoin(const Document& doc, uint32_t p, Edge e);
 // Removes pool points that no patch, surface or triangle uses and renumbers the rest.
 void compactPool(Document& doc);
 
+// Cubic Bézier curves (isoline domain). A new arch of width `size` at `center` in the ground plane.
+uint32_t addCurve(Document& doc, const Vec3& center, double size, bool zUp = true);
+// A curve on boundary `e` of Bézier patch p that shares the edge's pool points, so it follows the
+// patch when its points move (and the patch keeps them if the curve is deleted).
+uint32_t curveFromEdge(Document& doc, uint32_t p, Edge e);
+// Removes curve c; points no longer used by anything are dropped from the pool.
+void deleteCurve(Document& doc, uint32_t c);
+
 // The edge of a patch nearest the parameter point (u, v).
 Edge nearestEdge(double u, double v);
 

@@ -42,7 +42,7 @@ json floatArray(const std::array<float, N>& a) {
 }
 
 json tessJson(const TessSettings& t) {
-    return json{{"outer", floatArray(t.outer)},
+    json j{{"outer", floatArray(t.outer)},
                 {"inner", floatArray(t.inner)},
                 {"linked", t.linked},
                 {"spacing", spacingName(t.spacing)},
@@ -53,10 +53,12 @@ json tessJson(const TessSettings& t) {
                 {"maxLevel", floatJson(t.maxLevel)},
                 {"cullBackfaces", t.cullBackfaces},
                 {"cullOffscreen", t.cullOffscreen}};
+    if (t.isolineLevels != TessSettings{}.isolineLevels) j["isoline"] = floatArray(t.isolineLevels);  // older files stay as they were
+    return j;
 }
 
 json displayJson(const DisplaySettings& d) {
-    return json{{"shading", shadingName(d.shading)},
+    json j{{"shading", shadingName(d.shading)},
                 {"showGrid", d.showGrid},
                 {"showWireframe", d.showWireframe},
                 {"showNormals", d.showNormals},
@@ -64,6 +66,8 @@ json displayJson(const DisplaySettings& d) {
                 {"normalLength", floatJson(d.normalLength)},
                 {"lightDir", floatArray(d.lightDir)},
                 {"background", floatArray(d.background)}};
+    if (d.showIsocurves) j["showIsocurves"] = true;
+    return j;
 }
 
 json cameraJson(const Camera& c) {
@@ -234,6 +238,7 @@ TessSettings readTess(const Reader& r, const json& v, const std::string& path) {
     r.optional(v, path, "maxLevel", [&](const json& x, const std::string& p) { t.maxLevel = r.floatValue(x, p, kMinLevel, kMaxLevel); });
     r.optional(v, path, "cullBackfaces", [&](const json& x, const std::string& p) { t.cullBackfaces = r.boolean(x, p); });
     r.optional(v, path, "cullOffscreen", [&](const json& x, const std::string& p) { t.cullOffscreen = r.boolean(x, p); });
+    r.optional(v, path, "isoline", [&](const json& x, const std::string& p) { readFloats(r, x, p, t.isolineLevels, kMinLevel, kMaxLevel); });
     return t;
 }
 
@@ -247,6 +252,7 @@ DisplaySettings readDisplay(const Reader& r, const json& v, const std::string& p
     r.optional(v, path, "showWireframe", [&](const json& x, const std::string& p) { d.showWireframe = r.boolean(x, p); });
     r.optional(v, path, "showNormals", [&](const json& x, const std::string& p) { d.showNormals = r.boolean(x, p); });
     r.optional(v, path, "showBoundaries", [&](const json& x, const std::string& p) { d.showBoundaries = r.boolean(x, p); });
+    r.optional(v, path, "showIsocurves", [&](const json& x, const std::string& p) { d.showIsocurves = r.boolean(x, p); });
     r.optional(v, path, "normalLength", [&](const json& x, const std::string& p) { d.normalLength = r.floatValue(x, p, 0, 1e9); });
     r.optional(v, path, "lightDir", [&](const json& x, const std::string& p) { readFloats(r, x, p, d.lightDir, -1e9, 1e9); });
     r.optional(v, path, "background", [&](const json& x, const std::string& p) { readFloats(r, x, p, d.background, -1e9, 1e9); });
@@ -374,6 +380,11 @@ json documentToJson(const Document& doc) {
             triangles.push_back(std::move(o));
         }
         j["triangles"] = std::move(triangles);
+    }
+    if (!doc.curves.empty()) {
+        json curves = json::array();
+        for (const BezierCurve& c : doc.curves) curves.push_back(json{{"idx", c.idx}, {"name", c.name}});
+        j["curves"] = std::move(curves);
     }
 
     j["tess"] = tessJson(doc.tess);
@@ -509,6 +520,21 @@ Document documentFromJson(const json& j, const std::string& sourceName) {
         }
     }
 
+    // Cubic Bézier curves (optional).
+    if (const json* cv = r.member(j, "", "curves", false)) {
+        const json& curves = r.array(*cv, "curves", limits::kMaxPatches, "curves");
+        doc.curves.resize(curves.size());
+        for (size_t i = 0; i < curves.size(); ++i) {
+            const std::string path = at("curves", i);
+            const json& o = r.object(curves[i], path);
+            BezierCurve& c = doc.curves[i];
+            const std::string ip = at(path, "idx");
+            const json& idx = r.fixedArray(*r.member(o, path, "idx", true), ip, 4);
+            for (size_t k = 0; k < 4; ++k) c.idx[k] = static_cast<uint32_t>(r.index(idx[k], at(ip, k), nPoints, "point index"));
+            r.optional(o, path, "name", [&](const json& x, const std::string& p) { c.name = r.string(x, p); });
+        }
+    }
+
     if (const json* v = r.member(j, "", "tess", false)) doc.tess = readTess(r, *v, "tess");
     if (const json* v = r.member(j, "", "display", false)) doc.display = readDisplay(r, *v, "display");
     if (const json* v = r.member(j, "", "camera", false)) doc.camera = readCamera(r, *v, "camera");
@@ -521,7 +547,7 @@ std::string serializeDocument(const Document& doc) {
     auto dump = [](const json& v) { return v.dump(-1, ' ', false, json::error_handler_t::replace); };
     std::string out = "{\n";
     bool first = true;
-    for (const char* key : {"format", "version", "name", "points", "patches", "surfaces", "joins", "triangles", "tess", "display", "camera"}) {
+    for (const char* key : {"format", "version", "name", "points", "patches", "surfaces", "joins", "triangles", "curves", "tess", "display", "camera"}) {
         auto it = j.find(key);
         if (it == j.end()) continue;
         if (!first) out += ",\n";

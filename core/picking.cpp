@@ -84,6 +84,9 @@ std::vector<bool> usedPointMask(const Document& doc) {
     for (const TrianglePatch& t : doc.triangles)
         for (uint32_t i : t.idx)
             if (i < used.size()) used[i] = true;
+    for (const BezierCurve& c : doc.curves)
+        for (uint32_t i : c.idx)
+            if (i < used.size()) used[i] = true;
     return used;
 }
 

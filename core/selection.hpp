@@ -13,10 +13,11 @@ struct Selection {
     std::vector<uint32_t> points;  // sorted, unique pool indices
     int patch = -1;                // Document::patches index, -1 = none
     int surface = -1;              // Document::surfaces index (a net), -1 = none
+    int curve = -1;                // Document::curves index, -1 = none
 
     bool contains(uint32_t p) const;
-    bool empty() const { return points.empty() && patch < 0 && surface < 0; }
-    void clear() { points.clear(); patch = -1; surface = -1; }
+    bool empty() const { return points.empty() && patch < 0 && surface < 0 && curve < 0; }
+    void clear() { points.clear(); patch = -1; surface = -1; curve = -1; }
     bool operator==(const Selection&) const = default;
 };
 

@@ -22,8 +22,9 @@ struct FrameUniforms {
     // View rays: the direction from the eye through NDC (x, y) is rayZ + x rayX + y rayY (the
     // fragment shader's view vector, so no world position travels as a varying).
     glm::vec4 rayX, rayY, rayZ;
+    glm::vec4 isoline;  // isoline domain (curves, isocurves): x lines, y segments
 };
-static_assert(sizeof(FrameUniforms) == 2 * 64 + 11 * 16);
+static_assert(sizeof(FrameUniforms) == 2 * 64 + 12 * 16);
 
 struct PatchData {
     glm::vec4 outer{0.0f};
@@ -35,7 +36,7 @@ struct DrawPush {
     uint32_t patchBase = 0;
     uint32_t basisKind = 0;  // 0 Bézier, 1 B-spline, 2 Catmull-Rom
     uint32_t drawMode = 0;   // 0 shaded, 1 flat colour, 3 grid points
-    uint32_t pad = 0;
+    uint32_t isoDirection = 0;  // isocurve overlay: 0 lines along u, 1 along v
     glm::vec4 color{1.0f};
 };
 static_assert(sizeof(DrawPush) == 96);

@@ -136,6 +136,25 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
             }
         }
     }
+    // Curves and isocurves: the isoline domain; lines drawn depth-tested over the surface.
+    {
+        const VkShaderModule ctesc = mod(spirv::curve_tesc), itesc = mod(spirv::isocurve_tesc);
+        const spirv::Blob* ctese[kSpacingVariants] = {&spirv::curve_tese_equal, &spirv::curve_tese_odd, &spirv::curve_tese_even};
+        const spirv::Blob* itese[kSpacingVariants] = {&spirv::isocurve_tese_equal, &spirv::isocurve_tese_odd, &spirv::isocurve_tese_even};
+        for (int s = 0; s < kSpacingVariants; ++s) {
+            PipelineDesc cd;
+            cd.tess = true;
+            cd.patchControlPoints = 4;
+            cd.depthWrite = false;
+            cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, ctesc},
+                         {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(*ctese[s])}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
+            set.curves[size_t(s)] = buildPipeline(dev, set.layout, set.cache, cd, color, depth, samples);
+            cd.patchControlPoints = 16;
+            cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, itesc},
+                         {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(*itese[s])}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
+            set.isocurves[size_t(s)] = buildPipeline(dev, set.layout, set.cache, cd, color, depth, samples);
+        }
+    }
     const spirv::Blob* meshVert[kVaryingsVariants] = {&spirv::mesh_vert, &spirv::mesh_vert_full};
     for (int v = 0; v < kVaryingsVariants; ++v) {
         PipelineDesc md;
@@ -194,6 +213,8 @@ void destroyPipelines(Device& dev, PipelineSet& set) {
     for (auto& p : set.normals) kill(p);
     for (auto& p : set.triSurface) kill(p);
     for (auto& p : set.triWire) kill(p);
+    for (auto& p : set.curves) kill(p);
+    for (auto& p : set.isocurves) kill(p);
     for (auto& p : set.mesh) kill(p);
     kill(set.gridLines);
     kill(set.gridPoints);

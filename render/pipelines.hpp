@@ -46,6 +46,9 @@ struct PipelineSet {
     // overlayIndex (the normal-vector overlay covers the windows only).
     std::array<VkPipeline, kSpacingVariants * kLevelsVariants * kVaryingsVariants> triSurface{};
     std::array<VkPipeline, kSpacingVariants * kLevelsVariants> triWire{};
+    // The isoline domain, by spacing variant: Bézier curves (4 points) and the isocurve overlay of
+    // every window (16 points).
+    std::array<VkPipeline, kSpacingVariants> curves{}, isocurves{};
     std::array<VkPipeline, kVaryingsVariants> mesh{};  // plain pre-tessellated triangles
     VkPipeline gridLines = VK_NULL_HANDLE;   // control net lines (over everything)
     VkPipeline gridPoints = VK_NULL_HANDLE;  // control points

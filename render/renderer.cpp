@@ -178,6 +178,7 @@ FrameStats Renderer::render(const RenderOptions& opt) {
                 (ts.cullBackfaces ? 1u : 0u) | (ts.cullOffscreen ? 2u : 0u), uint32_t(ds.shading)};
     fu.sel = {opt.hoveredPoint >= 0 ? uint32_t(opt.hoveredPoint) : kNoPoint,
               opt.selectedPoint >= 0 ? uint32_t(opt.selectedPoint) : kNoPoint, m.scene.pointCount, 0u};
+    fu.isoline = {ts.isolineLevels[0], ts.isolineLevels[1], 0.0f, 0.0f};
     std::memcpy(m.frameUbo.mapped, &fu, sizeof(fu));
 
     // Step 2: record.
@@ -231,7 +232,8 @@ FrameStats Renderer::render(const RenderOptions& opt) {
         }
     }
     // Step 4: overlays, after the statistics query ends (outside rendering, see stats.hpp).
-    const bool anyOverlay = ds.showWireframe || ds.showNormals || ds.showBoundaries || ds.showGrid;
+    // Curves count as overlays: the statistics are the surface's triangles.
+    const bool anyOverlay = ds.showWireframe || ds.showNormals || ds.showBoundaries || ds.showGrid || ds.showIsocurves || m.scene.curveCount;
     if (anyOverlay) {
         target_.pauseRendering(cmd);
         m.queries->statsEnd(cmd);
@@ -256,6 +258,24 @@ FrameStats Renderer::render(const RenderOptions& opt) {
         DrawPush np;
         np.color = {0.2f, 0.9f, 1.0f, 1.0f};
         stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, np, bounds, budget);
+    }
+    // The isoline domain: isoparametric curves of every window (two passes: along u, along v), then
+    // the document's Bézier curves.
+    if (ds.showIsocurves && !opt.plainMesh && m.scene.windowCount) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.isocurves[size_t(variant)]);
+        DrawPush ip;
+        ip.color = {0.35f, 0.95f, 0.45f, 1.0f};
+        const uint32_t perIso = std::max(1u, budget / (65u * uint32_t(std::ceil(std::clamp(ts.isolineLevels[0], 1.0f, 64.0f)))));
+        for (uint32_t dir : {0u, 1u}) {
+            ip.isoDirection = dir;
+            stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perIso, ip, nullptr, budget);
+        }
+    }
+    if (m.scene.curveCount) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.curves[size_t(variant)]);
+        DrawPush cp;
+        cp.color = {0.95f, 0.35f, 0.25f, 1.0f};
+        stats.draws += recordCurveDraws(cmd, pipes_.layout, m.scene, cp);
     }
     const VkDeviceSize zero = 0;
     if (ds.showBoundaries && m.overlays.boundaryVertexCount) {
@@ -309,7 +329,7 @@ void Renderer::warmUp() {
     RenderOptions o;
     o.tess.outer = {2, 2, 2, 2};
     o.tess.inner = {2, 2};
-    o.display.showGrid = o.display.showWireframe = o.display.showNormals = o.display.showBoundaries = true;
+    o.display.showGrid = o.display.showWireframe = o.display.showNormals = o.display.showBoundaries = o.display.showIsocurves = true;
     for (Spacing s : {Spacing::Equal, Spacing::FractionalOdd, Spacing::FractionalEven})
         for (bool culling : {false, true})                                      // both levels variants
             for (ShadingMode shading : {ShadingMode::Lit, ShadingMode::PatchId}) {  // both varying sets

@@ -120,6 +120,21 @@ std::vector<PipelineUse> pipelinesInUse(const ShaderContext& c) {
                         {"tessellation evaluation", "points_tese_" + sp},
                         {"geometry", "normals_geom"},
                         {"fragment", "line_frag"}}});
+    const std::string isoWhy = "isoline domain: outer level 0 = lines (" + std::to_string(c.tess.isolineLevels[0]).substr(0, 4) +
+                               "), outer level 1 = segments (" + std::to_string(c.tess.isolineLevels[1]).substr(0, 4) +
+                               ") under partitioning " + std::string(spacingName(c.tess.spacing));
+    if (c.display.showIsocurves && c.windows)
+        out.push_back({"Isocurves (isoline domain, 16 points)", isoWhy,
+                       {{"vertex", "surface_vert"},
+                        {"tessellation control", "isocurve_tesc"},
+                        {"tessellation evaluation", "isocurve_tese_" + sp},
+                        {"fragment", "line_frag"}}});
+    if (c.curves)
+        out.push_back({"Bézier curves (isoline domain, 4 points)", isoWhy + "; one line per curve",
+                       {{"vertex", "surface_vert"},
+                        {"tessellation control", "curve_tesc"},
+                        {"tessellation evaluation", "curve_tese_" + sp},
+                        {"fragment", "line_frag"}}});
     static const char* const kDomain[] = {"quad", "tri", "iso"};
     for (size_t i = 0; i < c.domainPanes.size(); ++i) {
         const auto [kind, spacing] = c.domainPanes[i];

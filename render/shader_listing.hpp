@@ -31,6 +31,7 @@ struct ShaderContext {
     DisplaySettings display;
     bool windows = true;        // the document has quad windows (Bézier, B-spline, Catmull-Rom)
     bool triangles = false;     // the document has Bézier triangles
+    bool curves = false;        // the document has Bézier curves
     bool geometryShader = true;  // the device draws the normal-vector overlay
     // Domain-view panes (kind and partitioning each), empty when the domain view is closed.
     std::vector<std::pair<DomainKind, Spacing>> domainPanes;

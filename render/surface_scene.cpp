@@ -65,6 +65,11 @@ SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc) {
     }
     s.triangleCount = uint32_t(doc.triangles.size());
     if (!triIdx.empty()) s.triIndices = uploadBuffer(dev, triIdx, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    std::vector<uint32_t> curveIdx;
+    curveIdx.reserve(doc.curves.size() * 4);
+    for (const BezierCurve& c : doc.curves) curveIdx.insert(curveIdx.end(), c.idx.begin(), c.idx.end());
+    s.curveCount = uint32_t(doc.curves.size());
+    if (!curveIdx.empty()) s.curveIndices = uploadBuffer(dev, curveIdx, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     s.cpuPoints.reserve(doc.points.size());
     for (const Vec3& p : doc.points) s.cpuPoints.emplace_back(float(p.x), float(p.y), float(p.z));
     s.cpuIndices = idx;
@@ -81,6 +86,7 @@ void destroySurfaceScene(Device& dev, SurfaceScene& s) {
     destroyBuffer(dev, s.indices);
     destroyBuffer(dev, s.patchData);
     destroyBuffer(dev, s.triIndices);
+    destroyBuffer(dev, s.curveIndices);
     s = SurfaceScene{};
 }
 

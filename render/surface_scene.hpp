@@ -35,6 +35,9 @@ struct SurfaceScene {
     // patchData (triangle t is entry windowCount + t).
     Buffer triIndices;
     uint32_t triangleCount = 0;
+    // Bézier curves: 4 uint32 pool indices each (isoline domain, render/triangle_draws.hpp).
+    Buffer curveIndices;
+    uint32_t curveCount = 0;
 };
 
 SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc);

@@ -1,4 +1,4 @@
-// Draws of the document's cubic Bézier triangles (patch lists of 10 control points from the pool,
+// Draws of the document's patches that are not 4x4 windows. Cubic Bézier triangles (patch lists of 10 control points from the pool,
 // SurfaceScene::triIndices), batched like the windows: at most `perDraw` triangles per
 // vkCmdDrawIndexed (a triangle at level L has (L+1)(L+2)/2 evaluation vertices, fewer than a
 // window, so the windows' batch size keeps lavapipe within its budget, DESIGN §4).
@@ -15,5 +15,11 @@ namespace pw::render {
 // windowCount + first triangle (their PatchData follows the windows'). Returns the number of draws.
 uint32_t recordTriangleDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t perDraw,
                              DrawPush push);
+
+// Binds the pool and the curve index buffer and draws every Bézier curve (patch lists of 4 control
+// points through the isoline domain) in one vkCmdDrawIndexed: a curve has at most 65 evaluation
+// vertices, so 4 096 / 65 = 63 curves stay in lavapipe's budget per draw; more are split. Returns
+// the number of draws.
+uint32_t recordCurveDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, DrawPush push);
 
 }  // namespace pw::render

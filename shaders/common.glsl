@@ -14,6 +14,7 @@ layout(set = 0, binding = 0, std140) uniform Frame {
     uvec4 modes;     // x spacing (0 equal, 1 odd, 2 even, 3 pow2), y adaptive, z cull bits, w shading
     uvec4 sel;       // x hovered point, y selected point (0xffffffff = none)
     vec4 rayX, rayY, rayZ;  // direction from the eye through NDC (x, y): rayZ + x rayX + y rayY
+    vec4 isoline;    // isoline domain (curves, isocurves): x lines, y segments
 } frame;
 
 // binding 1: per-patch tessellation overrides, indexed by patchBase + gl_PrimitiveID.
@@ -32,6 +33,6 @@ layout(push_constant) uniform Draw {
     uint patchBase;  // index of the first patch of this draw
     uint basisKind;  // 0 Bézier, 1 B-spline, 2 Catmull-Rom
     uint drawMode;   // 0 shaded, 1 flat colour (wireframe), 2 plain mesh
-    uint pad;
+    uint isoDirection;  // isocurve overlay: 0 lines along u, 1 along v
     vec4 color;      // flat colour
 } draw;

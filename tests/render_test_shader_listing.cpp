@@ -124,6 +124,12 @@ TEST(ShaderListing, StagesFollowTheSettings) {
     c.geometryShader = false;
     EXPECT_EQ(variantOf(render::pipelinesInUse(c), "Normal vectors", "geometry"), "");
 
+    c.curves = c.display.showIsocurves = true;
+    pipes = render::pipelinesInUse(c);
+    EXPECT_EQ(variantOf(pipes, "Isocurves", "tessellation control"), "isocurve_tesc");
+    EXPECT_EQ(variantOf(pipes, "Isocurves", "tessellation evaluation"), "isocurve_tese_even");
+    EXPECT_EQ(variantOf(pipes, "Bézier curves", "tessellation evaluation"), "curve_tese_even");
+
     c.domainPanes = {{DomainKind::Triangle, Spacing::FractionalOdd}, {DomainKind::Isoline, Spacing::Pow2}};
     pipes = render::pipelinesInUse(c);
     EXPECT_EQ(variantOf(pipes, "Domain view: tri, fractional_odd", "tessellation evaluation"), "domain_tese_tri_odd");
@@ -144,8 +150,8 @@ TEST(ShaderListing, EverySelectableVariantIsBuilt) {
                         c.tess.adaptive = ad;
                         c.tess.cullOffscreen = flags & 1;
                         c.display.shading = ShadingMode(sh);
-                        c.display.showWireframe = c.display.showNormals = flags & 2;
-                        c.triangles = flags & 4;
+                        c.display.showWireframe = c.display.showNormals = c.display.showIsocurves = flags & 2;
+                        c.triangles = c.curves = flags & 4;
                         c.domainPanes = {{dk, sp}};
                         for (const auto& p : render::pipelinesInUse(c))
                             for (const auto& s : p.stages) {

@@ -117,6 +117,13 @@ const std::map<std::string, Where>& expectedLocations() {
         {"triangle_tess_count.patchwork", {0, "triangles[0].tess"}},
         {"triangle_tess_level.patchwork", {0, "triangles[0].tess[3]"}},
         {"triangles_not_array.patchwork", {0, "triangles"}},
+        // .patchwork: cubic Bézier curves and the isoline levels
+        {"curve_fractional_index.patchwork", {0, "curves[0].idx[1]"}},
+        {"curve_idx_count.patchwork", {0, "curves[0].idx"}},
+        {"curve_idx_missing.patchwork", {0, "curves[0].idx"}},
+        {"curve_index_out_of_range.patchwork", {0, "curves[0].idx[2]"}},
+        {"curves_not_array.patchwork", {0, "curves"}},
+        {"tess_isoline_level.patchwork", {0, "tess.isoline[1]"}},
     };
     return table;
 }

@@ -16,7 +16,9 @@
 #include <string>
 #include <vector>
 
+#include "bezier_curve.hpp"
 #include "bpt_format.hpp"
+#include "patch_ops.hpp"
 #include "errors.hpp"
 #include "gltf_export.hpp"
 #include "net_ops.hpp"
@@ -209,6 +211,47 @@ TEST(Gltf, BezierTriangleExportsAreValidAndRoundTrip) {
                 EXPECT_TRUE(pw::importPatchworkGltf(out) == doc) << out;
                 files.push_back(out);
             }
+        }
+    }
+    expectValid(files);
+    fs::remove_all(dir);
+}
+
+TEST(Gltf, BezierCurvesExportAsLineStripsAndRoundTrip) {
+    // Two curves alone, and a curve on a teapot edge beside the teapot: one LINE_STRIP of level + 1
+    // points per curve, at the curve's samples; the document comes back from the extras; valid.
+    const fs::path dir = pw::test::freshTempDir("gltf-curves");
+    pw::Document alone;
+    pw::addCurve(alone, pw::Vec3(0.0), 2.0);
+    pw::addCurve(alone, pw::Vec3(0.0, 0.0, 1.0), 3.0, false);
+    pw::Document mixed = loadModel("teapot");
+    pw::curveFromEdge(mixed, 0, pw::Edge::V0);
+    std::vector<fs::path> files;
+    int n = 0;
+    for (const pw::Document& doc : {alone, mixed}) {
+        for (int level : {1, 7, 16}) {
+            const fs::path out = dir / ("curves" + std::to_string(n++) + (level == 7 ? ".gltf" : ".glb"));
+            pw::GltfExportOptions options;
+            options.level = level;
+            const pw::GltfExportStats stats = pw::exportGltfWithStats(doc, out, options);
+            EXPECT_EQ(stats.curveSegments, doc.curves.size() * size_t(level));
+            const tinygltf::Model model = loadWithTinygltf(out);
+            ASSERT_EQ(model.meshes.size(), 1u);
+            std::vector<const tinygltf::Primitive*> strips;
+            for (const auto& prim : model.meshes[0].primitives)
+                if (prim.mode == TINYGLTF_MODE_LINE_STRIP) strips.push_back(&prim);
+            ASSERT_EQ(strips.size(), doc.curves.size());
+            const auto positions = readVec3(model, strips[0]->attributes.at("POSITION"));
+            for (size_t c = 0; c < strips.size(); ++c) {
+                const tinygltf::Accessor& idx = model.accessors[size_t(strips[c]->indices)];
+                EXPECT_EQ(idx.count, size_t(level) + 1);
+                const auto want = pw::sampleCurve(pw::curvePoints(doc, doc.curves[c]), level);
+                const size_t first = c * (size_t(level) + 1);  // the strips follow one another
+                for (size_t k = 0; k < want.size(); ++k)
+                    for (int a = 0; a < 3; ++a) EXPECT_FLOAT_EQ(positions[first + k][size_t(a)], float(want[k][a]));
+            }
+            EXPECT_TRUE(pw::importPatchworkGltf(out) == doc) << out;
+            files.push_back(out);
         }
     }
     expectValid(files);

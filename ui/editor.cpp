@@ -570,6 +570,8 @@ void Editor::writeTrace() {
     j["patches"] = doc_.patches.size();
     j["joins"] = doc_.joins.size();
     j["surfaces"] = doc_.surfaces.size();
+    j["curves"] = doc_.curves.size();
+    j["isocurves"] = doc_.display.showIsocurves;
     j["maxConstraintResidual"] = mode_ == Interaction::None ? maxConstraintResidual(doc_) : -1.0;
     const auto proj = projectPoints(cam_, doc_.points, ww, wh);
     nlohmann::json pts = nlohmann::json::array();

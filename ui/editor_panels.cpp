@@ -219,9 +219,21 @@ void Editor::drawLeftPanel() {
                 sel_.points.clear();
             }
         }
+        for (size_t i = 0; i < doc_.curves.size(); ++i) {
+            char label[160];
+            std::snprintf(label, sizeof label, "curve %zu  %s", i, doc_.curves[i].name.c_str());
+            if (ImGui::Selectable(label, sel_.curve == int(i))) {
+                sel_.clear();
+                sel_.curve = int(i);
+                sel_.points.assign(doc_.curves[i].idx.begin(), doc_.curves[i].idx.end());
+                std::sort(sel_.points.begin(), sel_.points.end());
+                sel_.points.erase(std::unique(sel_.points.begin(), sel_.points.end()), sel_.points.end());
+            }
+        }
         ImGui::EndChild();
-        tip("Patches and net surfaces of the document; click to select one");
+        tip("Patches, net surfaces and curves of the document; click to select one");
         ImGui::Text("%zu points, %zu patches, %zu joins", doc_.points.size(), doc_.patches.size(), doc_.joins.size());
+        if (!doc_.curves.empty()) ImGui::Text("%zu curves", doc_.curves.size());
     }
 
     // Inspector.
@@ -293,6 +305,19 @@ void Editor::drawLeftPanel() {
             if (created >= 0) sel_.patch = created;
         }
         tip("Add a flat 1x1 Bézier patch at the view target");
+        ImGui::SameLine();
+        if (ImGui::Button("Add curve")) {
+            const Vec3 c(cam_.target[0], cam_.target[1], cam_.target[2]);
+            const double size = std::max(0.2 * modelSize(doc_), 1.0);
+            int created = -1;
+            patchOp("Add curve", [&](Document& d) { created = int(addCurve(d, c, size, cam_.zUp)); });
+            if (created >= 0) {
+                sel_.clear();
+                sel_.curve = created;
+            }
+        }
+        traceItem("op.addCurve");
+        tip("Add a cubic Bézier curve (4 points) at the view target, drawn through the isoline tessellator");
         ImGui::BeginDisabled(!hasPatch);
         ImGui::SameLine();
         if (ImGui::Button("Duplicate")) {
@@ -333,6 +358,31 @@ void Editor::drawLeftPanel() {
         if (ImGui::Button("Unjoin highlighted edge")) patchOp("Unjoin", [&](Document& d) { unjoin(d, size_t(j)); });
         tip("Remove the join on the highlighted edge; the other patch gets its own edge points");
         ImGui::EndDisabled();
+        const std::string ce = std::string("Curve from edge ") + kEdgeNames[int(lastEdge_)];
+        const bool fromEdge = ImGui::Button(ce.c_str());
+        traceItem("op.curveFromEdge");
+        if (fromEdge) {
+            int created = -1;
+            const Edge e = lastEdge_;
+            patchOp("Curve from edge", [&](Document& d) { created = int(curveFromEdge(d, p, e)); });
+            if (created >= 0) {
+                sel_.clear();
+                sel_.curve = created;
+            }
+        }
+        tip("A Bézier curve on the highlighted boundary, sharing its points (it follows the patch)");
+        ImGui::EndDisabled();
+        const bool hasCurve = sel_.curve >= 0 && sel_.curve < int(doc_.curves.size());
+        ImGui::SameLine();
+        ImGui::BeginDisabled(!hasCurve);
+        const bool delCurve = ImGui::Button("Delete curve");
+        traceItem("op.deleteCurve");
+        if (delCurve) {
+            const uint32_t c = uint32_t(sel_.curve);
+            patchOp("Delete curve", [&](Document& d) { deleteCurve(d, c); });
+            sel_.clear();
+        }
+        tip("Delete the curve selected in the outliner");
         ImGui::EndDisabled();
         ImGui::Separator();
         ImGui::TextUnformatted("Join two boundary edges");
@@ -433,6 +483,10 @@ void Editor::drawRightPanel() {
         }
         edited(ImGui::SliderFloat("Max level", &ts.maxLevel, 1.0f, 64.0f, "%.0f"), "Max level");
         tip("Upper clamp of every level");
+        edited(ImGui::SliderFloat2("Isolines", ts.isolineLevels.data(), 1.0f, 64.0f, "%.2f"), "Isoline levels");
+        traceItem("tess.isolines");
+        tip("Isoline domain: lines (always rounded up to an integer) and segments per line (under the partitioning). "
+            "Curves draw one line; the isocurve overlay draws this many per direction, the first and last on the boundary");
         bool cb = ts.cullBackfaces, co = ts.cullOffscreen;
         if (ImGui::Checkbox("Cull back faces", &cb)) {
             ts.cullBackfaces = cb;
@@ -470,6 +524,8 @@ void Editor::drawRightPanel() {
         ImGui::SameLine();
         flag("Boundaries", ds.showBoundaries, "Patch boundaries coloured by continuity (grey open, red C0, green C1, blue G1)");
         traceItem("display.boundaries");
+        flag("Isocurves", ds.showIsocurves, "Isoparametric curves of every patch through the isoline tessellator (levels in Tessellation)");
+        traceItem("display.isocurves");
         edited(ImGui::SliderFloat("Normal length", &ds.normalLength, 0.001f, 1.0f, "%.3f", ImGuiSliderFlags_Logarithmic), "Normal length");
         tip("Length of the drawn normals");
         edited(ImGui::SliderFloat3("Light", ds.lightDir.data(), -1.0f, 1.0f, "%.2f"), "Light direction");

@@ -54,6 +54,7 @@ void Editor::drawShaderWindow() {
     c.display = doc_.display;
     c.windows = !doc_.patches.empty() || !doc_.surfaces.empty();
     c.triangles = !doc_.triangles.empty();
+    c.curves = !doc_.curves.empty();
     c.geometryShader = dev_->caps().geometryShader;
     for (const auto& o : domainPanes_) c.domainPanes.emplace_back(o.kind, o.spacing);
     const std::vector<render::PipelineUse> pipes = render::pipelinesInUse(c);

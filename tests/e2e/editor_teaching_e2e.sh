@@ -44,9 +44,30 @@ click_item preset.tri-4.9_4.5_4.1-4.4-fractional_odd
 wait_for "t['shaders']['shown'] == 'surface_tese_odd' and 'domain_tese_tri_odd' in t['shaders']['inUse']"
 import -window root "$WORK/shaders.png"
 say "shader panel: surface_tese_equal, then surface_tese_odd after the fractional_odd preset"
+
+# The isoline domain on the model: the isocurve overlay, then a Bézier curve; both show up in the
+# shader panel with the document's partitioning, and adding the curve is one undo step.
+STEPS=$(trace "t['undoSteps']")
+click_item display.isocurves
+wait_for "t['isocurves'] and 'isocurve_tese_odd' in t['shaders']['inUse']"
+click_item op.addCurve
+wait_for "t['curves'] == 1 and 'curve_tese_odd' in t['shaders']['inUse'] and t['undoSteps'] == $STEPS + 2"
+import -window root "$WORK/curves.png"
+xdotool mousemove --sync 640 700
+xdotool key ctrl+z
+wait_for "t['curves'] == 0 and 'curve_tese_odd' not in t['shaders']['inUse']"
+xdotool key ctrl+shift+z
+wait_for "t['curves'] == 1 and t['undoSteps'] == $STEPS + 2"
+check_validation
+say "isocurves and a curve through the isoline tessellator; undo removes the curve, redo brings it back"
+STEPS=$(trace "t['undoSteps']")
 STEPS=$(trace "t['undoSteps']")
 
-# Sweep: play, the level moves; pause, one undo step more.
+# Sweep: play, the level moves; pause, one undo step more. (Scroll the properties panel so that the
+# sweep controls are in view.)
+xdotool mousemove --sync 1030 500
+for i in 1 2 3 4 5 6; do xdotool click 5; sleep 0.05; done
+wait_for "t['items']['teach.play'][1] < 740"
 click_item teach.play
 wait_for "t['sweep']['playing'] and t['sweep']['level'] > 2"
 click_item teach.play

@@ -1,0 +1,41 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// The isoline domain (DESIGN §3): gl_TessCoord.x runs along a line in steps the segments level
+// made, gl_TessCoord.y = k / lines says which line. Curves: the cubic Bézier of the 4 points at x.
+// -DISOCURVES: line k of n is the window's isoparametric curve at k / (n - 1), so the first and the
+// last lie on its boundary (n = 2: the boundary curves; n = 1: the u0 or v0 boundary), along u or,
+// with draw.isoDirection = 1, along v; any basis (draw.basis).
+#include "common.glsl"
+
+layout(isolines, SPACING) in;
+layout(location = 0) out vec4 outColor;
+
+vec3 cp(int s) { return gl_in[s].gl_Position.xyz; }
+
+vec4 weights(float t) {
+    float s = 1.0 - t;
+    return draw.basisKind == 0u ? vec4(s * s * s, 3.0 * s * s * t, 3.0 * s * t * t, t * t * t)
+                                : draw.basis * vec4(t * t * t, t * t, t, 1.0);
+}
+
+void main() {
+    float t = gl_TessCoord.x;
+#ifdef ISOCURVES
+    float n = ceil(gl_TessLevelOuter[0]);
+    float k = round(gl_TessCoord.y * n);
+    float across = n > 1.0 ? k / (n - 1.0) : 0.0;
+    bool alongV = draw.isoDirection == 1u;
+    vec4 wu = weights(alongV ? across : t);  // along a row of the net (slots i*4 + 0..3)
+    vec4 wv = weights(alongV ? t : across);  // across the rows
+    vec3 p = vec3(0.0);
+    for (int i = 0; i < 4; ++i)
+        p += wv[i] * (wu.x * cp(i * 4) + wu.y * cp(i * 4 + 1) + wu.z * cp(i * 4 + 2) + wu.w * cp(i * 4 + 3));
+#else
+    float s = 1.0 - t;
+    vec3 p = s * s * s * cp(0) + 3.0 * s * s * t * cp(1) + 3.0 * s * t * t * cp(2) + t * t * t * cp(3);
+    p = t == 0.0 ? cp(0) : (t == 1.0 ? cp(3) : p);  // exact ends, like core/bezier_curve.cpp
+#endif
+    gl_Position = frame.viewProj * vec4(p, 1.0);
+    gl_Position.z -= 2e-6 * gl_Position.w;  // in front of the surface the curve lies on
+    outColor = draw.color;
+}
