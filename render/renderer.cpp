@@ -265,7 +265,9 @@ FrameStats Renderer::render(const RenderOptions& opt) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.isocurves[size_t(variant)]);
         DrawPush ip;
         ip.color = {0.35f, 0.95f, 0.45f, 1.0f};
-        const uint32_t perIso = std::max(1u, budget / (65u * uint32_t(std::ceil(std::clamp(ts.isolineLevels[0], 1.0f, 64.0f)))));
+        // A window draws lines x (segments + 1) <= 64 x 65 evaluation vertices.
+        const uint32_t lines = uint32_t(std::ceil(std::clamp(ts.isolineLevels[0], 1.0f, 64.0f)));
+        const uint32_t perIso = budget == 0 ? UINT32_MAX : std::max(1u, budget / (65u * lines));
         for (uint32_t dir : {0u, 1u}) {
             ip.isoDirection = dir;
             stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perIso, ip, nullptr, budget);
@@ -275,7 +277,7 @@ FrameStats Renderer::render(const RenderOptions& opt) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.curves[size_t(variant)]);
         DrawPush cp;
         cp.color = {0.95f, 0.35f, 0.25f, 1.0f};
-        stats.draws += recordCurveDraws(cmd, pipes_.layout, m.scene, cp);
+        stats.draws += recordCurveDraws(cmd, pipes_.layout, m.scene, cp, budget);
     }
     const VkDeviceSize zero = 0;
     if (ds.showBoundaries && m.overlays.boundaryVertexCount) {

@@ -17,9 +17,9 @@ uint32_t recordTriangleDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const
                              DrawPush push);
 
 // Binds the pool and the curve index buffer and draws every Bézier curve (patch lists of 4 control
-// points through the isoline domain) in one vkCmdDrawIndexed: a curve has at most 65 evaluation
-// vertices, so 4 096 / 65 = 63 curves stay in lavapipe's budget per draw; more are split. Returns
-// the number of draws.
-uint32_t recordCurveDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, DrawPush push);
+// points through the isoline domain): a curve has at most 65 evaluation vertices, so a draw holds
+// vertexBudget / 65 curves (lavapipe: 63; 0 = no budget, one draw). Returns the number of draws.
+uint32_t recordCurveDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, DrawPush push,
+                          uint32_t vertexBudget);
 
 }  // namespace pw::render
