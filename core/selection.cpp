@@ -34,6 +34,7 @@ void clampSelection(Selection& sel, const Document& doc) {
     std::erase_if(sel.points, [&](uint32_t p) { return p >= doc.points.size(); });
     if (sel.patch >= int(doc.patches.size())) sel.patch = -1;
     if (sel.surface >= int(doc.surfaces.size())) sel.surface = -1;
+    if (sel.curve >= int(doc.curves.size())) sel.curve = -1;
 }
 
 namespace {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <set>
 
 #include "glsl_sources.hpp"
@@ -120,9 +121,10 @@ std::vector<PipelineUse> pipelinesInUse(const ShaderContext& c) {
                         {"tessellation evaluation", "points_tese_" + sp},
                         {"geometry", "normals_geom"},
                         {"fragment", "line_frag"}}});
-    const std::string isoWhy = "isoline domain: outer level 0 = lines (" + std::to_string(c.tess.isolineLevels[0]).substr(0, 4) +
-                               "), outer level 1 = segments (" + std::to_string(c.tess.isolineLevels[1]).substr(0, 4) +
-                               ") under partitioning " + std::string(spacingName(c.tess.spacing));
+    char levels[96];
+    std::snprintf(levels, sizeof levels, "isoline domain: outer level 0 = lines (%g), outer level 1 = segments (%g)",
+                  double(c.tess.isolineLevels[0]), double(c.tess.isolineLevels[1]));
+    const std::string isoWhy = levels + std::string(" under partitioning ") + std::string(spacingName(c.tess.spacing));
     if (c.display.showIsocurves && c.windows)
         out.push_back({"Isocurves (isoline domain, 16 points)", isoWhy,
                        {{"vertex", "surface_vert"},

@@ -41,9 +41,11 @@ TEST(EditorSelection, ClampAndCentroid) {
     Selection s;
     s.points = {0, 3, 100};
     s.patch = 4;
+    s.curve = 0;  // the grid has no curves (an undone "Add curve")
     clampSelection(s, doc);
     EXPECT_EQ(s.points, (std::vector<uint32_t>{0, 3}));
     EXPECT_EQ(s.patch, -1);
+    EXPECT_EQ(s.curve, -1);
     const Vec3 c = selectionCentroid(doc, s);
     EXPECT_NEAR(c.x, 0.5 * (doc.points[0].x + doc.points[3].x), 1e-12);
     s.points.clear();

@@ -197,7 +197,7 @@ private:
     std::map<std::string, std::array<float, 2>> traceItems_;
     std::string openModal_;
     void traceItem(const std::string& name);
-    float leftPanelWidth_ = 0.0f;
+    float leftPanelWidth_ = 0.0f, rightPanelWidth_ = 0.0f;
     float uiScale_ = 1.0f;  // monitor content scale (HiDPI)
 
     // Teaching (ui/editor_teaching.cpp): the live domain view with 1, 2 or 4 comparison panes, the

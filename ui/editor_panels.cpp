@@ -225,9 +225,7 @@ void Editor::drawLeftPanel() {
             if (ImGui::Selectable(label, sel_.curve == int(i))) {
                 sel_.clear();
                 sel_.curve = int(i);
-                sel_.points.assign(doc_.curves[i].idx.begin(), doc_.curves[i].idx.end());
-                std::sort(sel_.points.begin(), sel_.points.end());
-                sel_.points.erase(std::unique(sel_.points.begin(), sel_.points.end()), sel_.points.end());
+                applyBox(sel_, {doc_.curves[i].idx.begin(), doc_.curves[i].idx.end()}, false);
             }
         }
         ImGui::EndChild();
@@ -425,6 +423,7 @@ void Editor::drawRightPanel() {
     const ImGuiIO& io = ImGui::GetIO();
     const float top = ImGui::GetFrameHeight();
     const float w = std::min(330.0f * uiScale_, io.DisplaySize.x * 0.3f);
+    rightPanelWidth_ = w;
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - w, top));
     ImGui::SetNextWindowSize(ImVec2(w, io.DisplaySize.y - top));
     ImGui::Begin("Properties", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);

@@ -41,8 +41,7 @@ void Editor::drawShaderWindow() {
     // the domain and the source are all in sight.
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const float top = std::min(ImGui::GetFrameHeight() + 16.0f + 440.0f * uiScale_, display.y * 0.5f);
-    const float rightPanel = std::min(330.0f * uiScale_, display.x * 0.3f);  // drawRightPanel's width
-    const float width = std::max(320.0f, display.x - leftPanelWidth_ - rightPanel - 32.0f);
+    const float width = std::max(320.0f, display.x - leftPanelWidth_ - rightPanelWidth_ - 32.0f);
     ImGui::SetNextWindowPos(ImVec2(leftPanelWidth_ + 16.0f, top), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(width, std::max(200.0f, display.y - top - 16.0f)), ImGuiCond_FirstUseEver);
     if (!ImGui::Begin("Shaders", &showShaders_)) {
