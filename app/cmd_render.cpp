@@ -20,6 +20,7 @@
 #include "file_io.hpp"
 #include "level_args.hpp"
 #include "limits.hpp"
+#include "model_figure.hpp"
 #include "offscreen_target.hpp"
 #include "png_writer.hpp"
 #include "renderer.hpp"
@@ -155,9 +156,14 @@ int runRender(const RenderArgs& a) {
         if (!a.input.empty()) bad("--domain", "a domain figure draws no document; leave out the file");
         return runDomainRender(a, domainPanes("render", dargs), w, h);
     }
-    if (!a.compare.empty()) bad("--compare", "comparison panes are for domain figures (--domain or --preset)");
     const Document doc = a.input.empty() ? builtinTeapot() : loadDocument(a.input);
-    const render::RenderOptions opt = buildRenderOptions(a, doc, w, h);
+    // --compare: the model in 2 or 4 panes, each with its own partitioning (and level).
+    std::vector<render::ModelPane> panes;
+    for (const PaneSpec& p : a.compare.empty() ? std::vector<PaneSpec>{} : parsePaneSpecs("render", "--compare", a.compare))
+        panes.push_back({p.spacing, p.level});
+    const auto rects = render::splitPanes(int(std::max<size_t>(panes.size(), 1)), {0.0f, 0.0f, float(w), float(h)});
+    const auto first = render::pixelRect(rects.front());  // the camera is framed for a pane's aspect
+    const render::RenderOptions opt = buildRenderOptions(a, doc, uint32_t(std::max(first[2], 1)), uint32_t(std::max(first[3], 1)));
 
     render::DeviceOptions dopt;
     dopt.name = a.device;
@@ -169,18 +175,38 @@ int runRender(const RenderArgs& a) {
         float highest = 0.0f;
         for (float l : opt.tess.outer) highest = std::max(highest, l);
         for (float l : opt.tess.inner) highest = std::max(highest, l);
+        for (const auto& p : panes) highest = std::max(highest, p.level);
         if (highest > float(dev.caps().maxTessLevel))
             std::cerr << "patchwork render: level " << highest << " clamped to the device maximum " << dev.caps().maxTessLevel << "\n";
         render::OffscreenTarget target(dev, w, h, !a.noMsaa);
         render::Renderer renderer(dev, target);
         renderer.setDocument(doc);
-        const render::FrameStats st = renderer.render(opt);
-        render::writePng(a.output, w, h, target.pixels());
-        std::cout << "wrote " << a.output << " (" << w << "x" << h << ", " << dev.name() << "): " << st.triangles()
-                  << " triangles, " << st.patches << " patches (" << st.patchesCulled << " culled), " << st.draws
-                  << " draws, GPU " << st.gpuMs << " ms\n";
-        if (!a.stats.empty()) {
-            writeFileAtomic(a.stats, render::statsToJson(st) + "\n");
+        if (panes.empty()) {
+            const render::FrameStats st = renderer.render(opt);
+            render::writePng(a.output, w, h, target.pixels());
+            std::cout << "wrote " << a.output << " (" << w << "x" << h << ", " << dev.name() << "): " << st.triangles()
+                      << " triangles, " << st.patches << " patches (" << st.patchesCulled << " culled), " << st.draws
+                      << " draws, GPU " << st.gpuMs << " ms\n";
+            if (!a.stats.empty()) writeFileAtomic(a.stats, render::statsToJson(st) + "\n");
+        } else {
+            const render::LabelRaster labels;
+            std::vector<uint8_t> rgba;
+            const auto stats = render::renderModelFigure(renderer, target, labels, opt, panes, 0.0f, rgba);
+            render::writePng(a.output, w, h, rgba);
+            nlohmann::json j;
+            j["device"] = dev.name();
+            for (size_t i = 0; i < panes.size(); ++i) {
+                const render::RenderOptions po = render::paneOptions(opt, panes[i], rects[i], i);
+                std::cout << "wrote " << a.output << " pane " << i + 1 << ": " << render::paneCaption(po.tess, stats[i].triangles())
+                          << ", GPU " << stats[i].gpuMs << " ms\n";
+                nlohmann::json p = nlohmann::json::parse(render::statsToJson(stats[i]));
+                p["spacing"] = spacingName(po.tess.spacing);
+                p["outer"] = po.tess.outer;
+                p["inner"] = po.tess.inner;
+                p["rect"] = po.pane;
+                j["panes"].push_back(std::move(p));
+            }
+            if (!a.stats.empty()) writeFileAtomic(a.stats, j.dump(2) + "\n");
         }
         rc = validationExitCode(dev, "render");
     }
@@ -214,7 +240,7 @@ void addRenderOptions(CLI::App* cmd, RenderArgs& a) {
     cmd->add_option("--stats", a.stats, "Write frame statistics (triangles, GPU time, ...) as JSON to this file");
     cmd->add_option("--domain", a.domain, "Draw the parametric domain instead: quad | tri | isoline (levels from --tess/--outer/--inner)");
     cmd->add_option("--preset", a.preset, "Domain figure of the notes' factor sets: preset id(s), comma-separated (see `patchwork presets`)");
-    cmd->add_option("--compare", a.compare, "Domain figure: 2-4 partitionings side by side, e.g. equal,fractional_odd");
+    cmd->add_option("--compare", a.compare, "2-4 panes side by side, each a partitioning with an optional level: equal,fractional_odd:4.5 (model or domain figure)");
     cmd->add_option("--device", a.device, "Vulkan device: substring of its name");
     cmd->add_flag("--cull", a.cull, "Cull back-facing patches (conservative normal-cone test)");
     cmd->add_flag("--validation", a.validation, "Enable the Vulkan validation layer (also PATCHWORK_VALIDATION=1)");

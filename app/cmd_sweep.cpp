@@ -1,8 +1,8 @@
 // `patchwork sweep [FILE] -o PATTERN --from A --to B`: animates a uniform tessellation level from A
 // to B and writes the frames as a numbered PNG sequence, headless: the model (with its wireframe,
 // so vertices popping in under integer spacing and sliding in under fractional spacing show), or a
-// domain figure (--domain / --preset, with --compare for panes side by side). Each frame is
-// captioned with its level and triangle count.
+// domain figure (--domain / --preset); --compare puts panes with their own partitioning side by
+// side. Each frame (or pane) is captioned with its level and triangle count.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -16,6 +16,7 @@
 #include "errors.hpp"
 #include "level_args.hpp"
 #include "model_builders.hpp"
+#include "model_figure.hpp"
 #include "offscreen_target.hpp"
 #include "png_writer.hpp"
 #include "render_args.hpp"
@@ -85,9 +86,18 @@ int runSweep(const SweepArgs& a) {
         panes = domainPanes(cmd, dargs);
     }
     const Document doc = domain ? Document{} : a.render.input.empty() ? builtinTeapot() : loadDocument(a.render.input);
+    // --compare on a model: the panes side by side, each with its partitioning, all at the sweep's level.
+    std::vector<render::ModelPane> modelPanes;
+    if (!domain && !a.render.compare.empty())
+        for (const PaneSpec& p : parsePaneSpecs(cmd, "--compare", a.render.compare)) {
+            if (p.level > 0.0f) badOption(cmd, "--compare", "a sweep sets the levels itself; give partitionings only");
+            modelPanes.push_back({p.spacing, 0.0f});
+        }
+    const auto rects = render::splitPanes(int(std::max<size_t>(modelPanes.size(), 1)), {0.0f, 0.0f, float(w), float(h)});
+    const auto first = render::pixelRect(rects.front());
     render::RenderOptions opt;
     if (!domain) {
-        opt = buildRenderOptions(a.render, doc, w, h);
+        opt = buildRenderOptions(a.render, doc, uint32_t(std::max(first[2], 1)), uint32_t(std::max(first[3], 1)));
         if (a.render.overlay.empty()) opt.display.showWireframe = true;  // popping and sliding show in the wireframe
         opt.tess.adaptive = AdaptiveMode::None;
     }
@@ -121,6 +131,10 @@ int runSweep(const SweepArgs& a) {
                     for (float& l : p.levels.inner) l = l > 0.0f ? level : 0.0f;
                 }
                 render::renderDomainFigure(*view, target, labels, now, 0.0f, rgba);
+            } else if (!modelPanes.empty()) {
+                opt.tess.outer = {level, level, level, level};
+                opt.tess.inner = {level, level};
+                render::renderModelFigure(*renderer, target, labels, opt, modelPanes, 0.0f, rgba);  // each pane captioned
             } else {
                 opt.tess.outer = {level, level, level, level};
                 opt.tess.inner = {level, level};
@@ -129,7 +143,7 @@ int runSweep(const SweepArgs& a) {
                 text += "  \u00b7  " + std::string(spacingName(opt.tess.spacing)) + "  \u00b7  " + std::to_string(st.triangles()) +
                         " triangles";
             }
-            caption(labels, rgba, w, h, text);
+            if (modelPanes.empty()) caption(labels, rgba, w, h, text);
             render::writePng(names(k), w, h, rgba);
         }
         std::cout << "wrote " << frames << " frames (" << w << "x" << h << ", level " << render::formatLevel(from) << " to "

@@ -55,9 +55,13 @@ std::vector<render::DomainPane> domainPanes(const std::string& command, const Do
         if (panes.size() != 1) badOption(command, "--compare", "compare partitionings of one level set (one preset)");
         const render::DomainPane base = panes.front();
         panes.clear();
-        for (const std::string& s : splitList(a.compare)) {
+        for (const PaneSpec& spec : parsePaneSpecs(command, "--compare", a.compare)) {
             render::DomainPane p = base;
-            p.spacing = parseSpacingOption(command, "--compare", s);
+            p.spacing = spec.spacing;
+            if (spec.level > 0.0f) {  // the pane's own level on every edge the domain has
+                for (float& l : p.levels.outer) l = l > 0.0f ? spec.level : 0.0f;
+                for (float& l : p.levels.inner) l = l > 0.0f ? spec.level : 0.0f;
+            }
             panes.push_back(p);
         }
     }

@@ -60,4 +60,17 @@ Spacing parseSpacingOption(const std::string& command, const std::string& option
     return *s;
 }
 
+std::vector<PaneSpec> parsePaneSpecs(const std::string& command, const std::string& option, const std::string& text) {
+    std::vector<PaneSpec> out;
+    for (const std::string& item : splitList(text)) {
+        const size_t colon = item.find(':');
+        PaneSpec p;
+        p.spacing = parseSpacingOption(command, option, item.substr(0, colon));
+        if (colon != std::string::npos) p.level = parseLevel(command, option, item.substr(colon + 1));
+        out.push_back(p);
+    }
+    if (out.empty() || out.size() > 4) badOption(command, option, "give 1 to 4 panes, e.g. equal,fractional_odd:4.5");
+    return out;
+}
+
 }  // namespace pw::app

@@ -21,4 +21,12 @@ std::vector<std::string> splitList(const std::string& text);
 std::array<unsigned, 2> parseImageSize(const std::string& command, const std::string& text);
 Spacing parseSpacingOption(const std::string& command, const std::string& option, const std::string& text);
 
+// `--compare`: 1 to 4 comma-separated panes, each a partitioning with an optional uniform level
+// after a colon ("equal,fractional_odd:4.5"); level 0 means the pane keeps the other options' levels.
+struct PaneSpec {
+    Spacing spacing = Spacing::Equal;
+    float level = 0.0f;
+};
+std::vector<PaneSpec> parsePaneSpecs(const std::string& command, const std::string& option, const std::string& text);
+
 }  // namespace pw::app

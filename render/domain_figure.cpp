@@ -7,15 +7,6 @@
 
 namespace pw::render {
 
-std::vector<std::array<float, 4>> splitPanes(int count, const std::array<float, 4>& a) {
-    std::vector<std::array<float, 4>> out;
-    const int n = std::clamp(count, 1, 4);
-    const int cols = n == 1 ? 1 : 2, rows = n <= 2 ? 1 : 2;
-    const float w = a[2] / float(cols), h = a[3] / float(rows);
-    for (int i = 0; i < n; ++i) out.push_back({a[0] + float(i % cols) * w, a[1] + float(i / cols) * h, w, h});
-    return out;
-}
-
 std::array<uint64_t, 2> shownCounts(const DomainStats& gpu, const DomainPane& pane) {
     const DomainCounts c = expectedDomainCounts(pane.kind, pane.levels, pane.spacing);
     return {c.vertices, gpu.valid ? gpu.primitives : c.primitives};
@@ -54,17 +45,7 @@ std::vector<DomainStats> renderDomainFigure(DomainView& view, OffscreenTarget& t
             labels.draw(img, l.x, l.y, l.text, st, l.ax, l.ay);
         }
     }
-    // A thin grey line along each pane's left and top edge where another pane adjoins it.
-    const auto grey = [&](uint32_t x, uint32_t y) {
-        if (x < ext.width && y < ext.height) std::fill_n(&rgba[(size_t(y) * ext.width + x) * 4], 3, uint8_t(160));
-    };
-    for (const auto& r : rects) {
-        const auto x0 = uint32_t(r[0]), y0 = uint32_t(r[1]), x1 = uint32_t(r[0] + r[2]), y1 = uint32_t(r[1] + r[3]);
-        if (x0 > 0)
-            for (uint32_t y = y0; y < y1; ++y) grey(x0, y);
-        if (y0 > 0)
-            for (uint32_t x = x0; x < x1; ++x) grey(x, y0);
-    }
+    drawPaneDividers(rgba, ext.width, ext.height, rects);
     return stats;
 }
 

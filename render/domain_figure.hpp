@@ -10,6 +10,7 @@
 #include "domain_view.hpp"
 #include "label_raster.hpp"
 #include "offscreen_target.hpp"
+#include "pane_layout.hpp"
 
 namespace pw::render {
 
@@ -18,10 +19,6 @@ struct DomainPane {
     DomainLevels levels;
     Spacing spacing = Spacing::Equal;
 };
-
-// The rectangles (x, y, width, height) of `count` panes (1, 2: side by side, 3 or 4: a 2 x 2 grid)
-// filling `area`.
-std::vector<std::array<float, 4>> splitPanes(int count, const std::array<float, 4>& area);
 
 // The vertices and primitives to show for a pane: the distinct vertices of the pattern (the rules:
 // a GPU may run the evaluation shader more than once for a vertex, NVIDIA's does under fractional

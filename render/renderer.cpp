@@ -29,6 +29,15 @@ RenderOptions optionsFromDocument(const Document& doc) {
     return o;
 }
 
+VkRect2D paneRect(const RenderOptions& opt, VkExtent2D extent) {
+    const auto& r = opt.pane;
+    const int x0 = std::clamp(r[0], 0, int(extent.width)), y0 = std::clamp(r[1], 0, int(extent.height));
+    const int x1 = std::clamp(r[0] + std::max(r[2], 0), x0, int(extent.width));
+    const int y1 = std::clamp(r[1] + std::max(r[3], 0), y0, int(extent.height));
+    if (x1 - x0 < 1 || y1 - y0 < 1) return {{0, 0}, extent};
+    return {{x0, y0}, {uint32_t(x1 - x0), uint32_t(y1 - y0)}};
+}
+
 struct Renderer::Impl {
     SurfaceScene scene;
     OverlayScene overlays;
@@ -142,7 +151,8 @@ FrameStats Renderer::render(const RenderOptions& opt) {
     Impl& m = *impl_;
     FrameStats stats;
     const auto t0 = std::chrono::steady_clock::now();
-    const VkExtent2D ext = target_.extent();
+    const VkRect2D area = paneRect(opt, target_.extent());
+    const VkExtent2D ext = area.extent;  // the pane's size: aspect, pixel sizes
     const TessSettings& ts = opt.tess;
     const DisplaySettings& ds = opt.display;
 
@@ -168,7 +178,7 @@ FrameStats Renderer::render(const RenderOptions& opt) {
         fu.rayY = ray(inv[1]);
         fu.rayZ = ray(inv[2] + inv[3]);
     }
-    fu.viewport = {float(ext.width), float(ext.height), 0.0f, 0.0f};
+    fu.viewport = {float(ext.width), float(ext.height), float(area.offset.x), float(area.offset.y)};
     fu.outer = {ts.outer[0], ts.outer[1], ts.outer[2], ts.outer[3]};
     const float maxLevel = std::clamp(std::min(ts.maxLevel, float(dev_.caps().maxTessLevel)), 1.0f, 64.0f);
     fu.inner = {ts.inner[0], ts.inner[1], maxLevel, ts.targetPixels};
@@ -196,9 +206,19 @@ FrameStats Renderer::render(const RenderOptions& opt) {
                          nullptr, 0, nullptr);
     m.queries->timestampBegin(cmd);
     m.queries->statsBegin(cmd);
-    target_.beginRendering(cmd, {ds.background[0], ds.background[1], ds.background[2], 1.0f});
-    VkViewport viewport{0.0f, 0.0f, float(ext.width), float(ext.height), 0.0f, 1.0f};
-    VkRect2D scissor{{0, 0}, ext};
+    const std::array<float, 4> background{ds.background[0], ds.background[1], ds.background[2], 1.0f};
+    VkViewport viewport{float(area.offset.x), float(area.offset.y), float(ext.width), float(ext.height), 0.0f, 1.0f};
+    const VkRect2D scissor = area;
+    if (opt.keepTarget) {  // a later pane: the others stay, this rectangle starts from the background
+        target_.resumeRendering(cmd);
+        VkClearAttachment clears[2] = {{VK_IMAGE_ASPECT_COLOR_BIT, 0, {}}, {VK_IMAGE_ASPECT_DEPTH_BIT, 0, {}}};
+        clears[0].clearValue.color = {{background[0], background[1], background[2], background[3]}};
+        clears[1].clearValue.depthStencil = {1.0f, 0};
+        const VkClearRect rect{area, 0, 1};
+        vkCmdClearAttachments(cmd, 2, clears, 1, &rect);
+    } else {
+        target_.beginRendering(cmd, background);
+    }
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.layout, 0, 1, &m.set, 0, nullptr);

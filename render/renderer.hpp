@@ -3,6 +3,7 @@
 // returns its statistics.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -23,7 +24,18 @@ struct RenderOptions {
     int hoveredPoint = -1;
     int selectedPoint = -1;
     bool plainMesh = false;  // draw the uploaded CPU mesh instead of tessellating
+    // Comparison panes: draw into this rectangle of the target (x, y, width, height in pixels; a
+    // zero width or height means the whole target). The camera takes the rectangle's aspect, and
+    // screen-space levels its pixels.
+    std::array<int, 4> pane{0, 0, 0, 0};
+    // Keep what the target holds (earlier panes of this frame) and clear only the pane's rectangle;
+    // otherwise the whole target is cleared to the background first.
+    bool keepTarget = false;
 };
+
+// The pane rectangle `opt` draws into, clamped to a target of `extent` (the whole target when
+// the options give none, or one that lies outside it).
+VkRect2D paneRect(const RenderOptions& opt, VkExtent2D extent);
 
 RenderOptions optionsFromDocument(const Document& doc);
 

@@ -7,7 +7,7 @@ layout(set = 0, binding = 0, std140) uniform Frame {
     mat4 view;       // world -> eye
     vec4 eye;        // xyz camera position
     vec4 lightDir;   // xyz light direction (towards the light), w: normal overlay length
-    vec4 viewport;   // xy size in pixels
+    vec4 viewport;   // xy size in pixels, zw the pane's top-left corner in the target
     vec4 outer;      // uniform outer levels (u0, v0, u1, v1)
     vec4 inner;      // xy uniform inner levels, z max level, w target pixels per segment
     vec4 dist;       // x d0 (full level), y d1 (level 1), z curvature colour scale, w zebra stripes

@@ -27,7 +27,7 @@ vec3 diverging(float x) {  // blue (negative) - white - red (positive)
 void main() {
     if (draw.drawMode == 1u) { outColor = draw.color; return; }
     vec3 n = normalize(inNormal);
-    vec2 ndc = gl_FragCoord.xy / frame.viewport.xy * 2.0 - 1.0;
+    vec2 ndc = (gl_FragCoord.xy - frame.viewport.zw) / frame.viewport.xy * 2.0 - 1.0;
     vec3 v = -normalize(frame.rayZ.xyz + ndc.x * frame.rayX.xyz + ndc.y * frame.rayY.xyz);  // towards the eye
     bool back = dot(n, v) < 0.0;
     vec3 nf = back ? -n : n;

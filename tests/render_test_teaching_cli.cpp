@@ -104,6 +104,35 @@ TEST(TeachingCli, ComparisonPanesEachHaveTheirPartitioning) {
     EXPECT_EQ(img.h, 500);
 }
 
+TEST(TeachingCli, ModelComparisonPanesHaveTheirOwnPartitioningAndLevel) {
+    const auto dir = freshTempDir("teach-model-compare");
+    const auto png = dir / "m.png", stats = dir / "m.json";
+    const RunResult r = runCommand(bin() + " render --tess 4.5 --compare equal,fractional_odd,fractional_even,pow2:5 --size 480x300 -o " +
+                                   png.string() + " --stats " + stats.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const nlohmann::json j = readJson(stats);
+    ASSERT_EQ(j["panes"].size(), 4u);
+    const char* spacings[] = {"equal", "fractional_odd", "fractional_even", "pow2"};
+    for (size_t i = 0; i < 4; ++i) EXPECT_EQ(j["panes"][i]["spacing"], spacings[i]);
+    EXPECT_EQ(j["panes"][3]["outer"][0].get<float>(), 5.0f);  // the pane's own level
+    EXPECT_EQ(j["panes"][1]["outer"][0].get<float>(), 4.5f);
+    // 32 teapot patches: equal and fractional_odd 4.5 both cut 5 segments, fractional_even 6,
+    // pow2 5 -> 8 (2 n^2 triangles a patch).
+    const uint64_t t[] = {32 * 2 * 25, 32 * 2 * 25, 32 * 2 * 36, 32 * 2 * 64};
+    for (size_t i = 0; i < 4; ++i) EXPECT_EQ(j["panes"][i]["triangles"].get<uint64_t>(), t[i]) << spacings[i];
+    EXPECT_EQ(j["panes"][2]["rect"], nlohmann::json::array({0, 150, 240, 150}));
+    EXPECT_NE(r.output.find("pow2 · level 5 · 4,096 triangles"), std::string::npos) << r.output;
+    const Png img = loadPng(png);
+    ASSERT_EQ(img.w, 480);
+    // The divider between the top panes is the grey line; the captions are drawn in each pane.
+    EXPECT_EQ(img.at(240, 75)[0], 160);
+    // A model sweep compares partitionings frame by frame.
+    const RunResult s = runCommand(bin() + " sweep --compare equal,fractional_odd --from 2 --to 3 --frames 2 --size 240x120 -o " +
+                                   (dir / "s%d.png").string());
+    ASSERT_EQ(s.exitCode, 0) << s.output;
+    EXPECT_TRUE(std::filesystem::exists(dir / "s1.png"));
+}
+
 TEST(TeachingCli, IsolineDomainCountsLinesTimesSegments) {
     const auto dir = freshTempDir("teach-iso");
     const auto stats = dir / "i.json";
@@ -148,7 +177,10 @@ TEST(TeachingCli, BadOptionsNameTheProblemAndWriteNothing) {
         {"render --preset quad-4_4_4_4-4_4 --tess 3", "--preset"},
         {"render --domain quad --compare equal,odd", "--compare"},
         {"render --domain quad --compare equal,equal,equal,equal,equal", "--compare"},
-        {"render --compare equal,pow2", "--compare"},
+        {"render --compare equal,pow2:65", "--compare"},
+        {"render --compare equal:x", "--compare"},
+        {"render --compare odd", "--compare"},
+        {"sweep --compare equal,fractional_odd:4.5", "--compare"},
         {"sweep --from 0", "--from"},
         {"sweep --to 1e9", "--to"},
         {"sweep --frames 1", "--frames"},
