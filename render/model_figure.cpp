@@ -54,8 +54,9 @@ std::string levelsText(const TessSettings& ts) {
 
 }  // namespace
 
-std::string paneCaption(const TessSettings& ts, uint64_t triangles) {
-    return std::string(spacingName(ts.spacing)) + " \u00b7 " + levelsText(ts) + " \u00b7 " + groupDigits(triangles) + " triangles";
+std::string paneCaption(const TessSettings& ts, uint64_t triangles, bool twoLines) {
+    return std::string(spacingName(ts.spacing)) + " \u00b7 " + levelsText(ts) + (twoLines ? "\n" : " \u00b7 ") + groupDigits(triangles) +
+           " triangles";
 }
 
 std::vector<FrameStats> renderModelFigure(Renderer& renderer, OffscreenTarget& target, const LabelRaster& labels,

@@ -23,9 +23,9 @@ struct ModelPane {
 // pane clearing the target, the later ones drawing beside it.
 RenderOptions paneOptions(const RenderOptions& base, const ModelPane& pane, const std::array<float, 4>& rect, size_t index);
 
-// What a pane shows, e.g. "fractional_odd · level 4.5 · 1,234 triangles"; the levels are the
-// pane's (`ts` after paneOptions).
-std::string paneCaption(const TessSettings& ts, uint64_t triangles);
+// What a pane shows, e.g. "fractional_odd · level 4.5 · 1,234 triangles" (with `twoLines` the
+// triangles go on a second line, for narrow panes); the levels are the pane's (`ts` after paneOptions).
+std::string paneCaption(const TessSettings& ts, uint64_t triangles, bool twoLines = false);
 
 // Draws the panes side by side (1, 2) or in a 2 x 2 grid (3, 4) into `target` (which must read
 // back), one submission each, captions them with `labels` (`textPixels` line height, 0: from the

@@ -487,6 +487,7 @@ void Editor::frame() {
     viewportInput();
     teachingInput();
     if (!presentation_) drawViewportOverlays();
+    drawPaneCaptions();
     drawUi();
     ImGui::Render();
     keyQueue_.clear();
@@ -508,7 +509,7 @@ void Editor::frame() {
     o.camera = cam_;
     o.hoveredPoint = hovered_;
     o.selectedPoint = sel_.points.empty() ? -1 : int(sel_.points.front());
-    stats_ = renderer_->render(o);
+    renderView(o);
     drawDomainPanes();
     if (screenshotRequested_) {
         screenshotRequested_ = false;
@@ -558,6 +559,14 @@ void Editor::writeTrace() {
                                {"primitives", domainStats_[i].primitives}, {"expectedVertices", want.vertices},
                                {"expectedPrimitives", want.primitives}});
     }  // a text field has the keyboard
+    j["viewPanes"] = nlohmann::json::array();
+    const auto viewRects = viewPaneRects();
+    for (size_t i = 0; viewSplit() && i < viewRects.size() && i < paneStats_.size(); ++i)
+        j["viewPanes"].push_back({{"spacing", spacingName(kPaneSpacings[size_t(paneSpacing_[i])])},
+                                  {"level", paneLevel_[i]},
+                                  {"rect", viewRects[i]},
+                                  {"triangles", paneStats_[i].triangles()}});
+    j["activePane"] = activePane_;
     j["shaders"] = {{"open", showShaders_}, {"shown", shaderShown_}, {"inUse", shaderVariantsInUse_}};
     j["items"] = traceItems_;
     j["unsavedPrompt"] = pending_ != PendingAction::None;
@@ -573,11 +582,13 @@ void Editor::writeTrace() {
     j["curves"] = doc_.curves.size();
     j["isocurves"] = doc_.display.showIsocurves;
     j["maxConstraintResidual"] = mode_ == Interaction::None ? maxConstraintResidual(doc_) : -1.0;
-    const auto proj = projectPoints(cam_, doc_.points, ww, wh);
+    // Where the points are on screen, in the pane the mouse works in (the whole window unless split).
+    const std::array<float, 4> pane = viewSplit() ? viewArea_ : std::array<float, 4>{0.0f, 0.0f, float(ww), float(wh)};
+    const auto proj = projectPoints(cam_, doc_.points, int(pane[2]), int(pane[3]));
     nlohmann::json pts = nlohmann::json::array();
     for (size_t i = 0; i < proj.size(); ++i) {
         if (proj[i] && i < usedMask_.size() && usedMask_[i])
-            pts.push_back({proj[i]->x, proj[i]->y});
+            pts.push_back({proj[i]->x + pane[0], proj[i]->y + pane[1]});
         else
             pts.push_back(nullptr);
     }

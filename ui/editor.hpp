@@ -32,9 +32,13 @@ namespace pw::render {
 class Device;
 class SwapchainTarget;
 class Renderer;
+struct RenderOptions;
 }  // namespace pw::render
 
 namespace pw::ui {
+
+// The partitionings a comparison pane can pick, in the order of its combo.
+inline constexpr Spacing kPaneSpacings[] = {Spacing::Equal, Spacing::FractionalOdd, Spacing::FractionalEven, Spacing::Pow2};
 
 class ImGuiLayer;
 
@@ -212,6 +216,21 @@ private:
     bool showDomain_ = false, presentation_ = false;
     int domainKind_ = 0, domainPaneCount_ = 1;
     std::array<int, 4> paneSpacing_{0, 1, 2, 3};       // index into Spacing
+    std::array<float, 4> paneLevel_{0, 0, 0, 0};       // a pane's own uniform level; 0: the document's
+    // The 3D view split into the same panes (each with its partitioning and level, one camera).
+    bool splitView_ = false;
+    bool viewSplit() const { return splitView_ && domainPaneCount_ > 1; }
+    // Where the 3D view's panes are (window pixels): one covering the window unless split, else the
+    // panes between the side panels.
+    std::vector<std::array<float, 4>> viewPaneRects() const;
+    // The pane the mouse works in: the one under it, held while an interaction lasts.
+    std::array<float, 4> interactionPane(double mouseX, double mouseY);
+    int activePane_ = 0;
+    std::array<float, 4> viewArea_{0, 0, 1, 1};  // this frame's interaction pane (window pixels)
+    void renderView(const render::RenderOptions& o);  // the 3D view: one render, or one per pane
+    void drawPaneCaptions();
+    void drawPaneOverlays(const std::array<float, 4>& pane, bool active);  // ground grid, selection, gizmo of one pane                          // each split pane's partitioning, level, triangles
+    std::vector<render::FrameStats> paneStats_;
     std::vector<render::DomainViewOptions> domainPanes_;  // this frame's panes, framebuffer pixels
     std::vector<render::DomainStats> domainStats_;
     struct Sweep {

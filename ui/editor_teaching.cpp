@@ -6,6 +6,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cstdio>
 
 #include "domain_figure.hpp"
@@ -13,6 +14,7 @@
 #include "editor.hpp"
 #include "imgui_layer.hpp"
 #include "imgui_tip.hpp"
+#include "model_figure.hpp"
 #include "swapchain_target.hpp"
 #include "tess_presets.hpp"
 
@@ -20,7 +22,6 @@ namespace pw::ui {
 
 namespace {
 
-const Spacing kSpacings[] = {Spacing::Equal, Spacing::FractionalOdd, Spacing::FractionalEven, Spacing::Pow2};
 const char* const kSpacingNames[] = {"equal", "fractional_odd", "fractional_even", "pow2"};
 const char* const kDomainNames[] = {"quad", "triangle", "isoline"};
 
@@ -90,16 +91,35 @@ void Editor::drawTeachingControls() {
         ImGui::SameLine();
         char label[8];
         std::snprintf(label, sizeof label, "%d", n);
-        if (ImGui::RadioButton(label, domainPaneCount_ == n)) domainPaneCount_ = n;
+        if (ImGui::RadioButton(label, domainPaneCount_ == n)) {
+            domainPaneCount_ = n;
+            if (splitView_) frameBox(computeBounds(doc_.points));  // fit the new pane shape
+        }
+        traceItem("teach.panes" + std::to_string(n));
     }
-    tip("Compare partitionings side by side on the same levels");
-    if (domainPaneCount_ > 1)
+    tip("Compare partitionings (or levels) side by side: the domain view, and the 3D view when split");
+    if (domainPaneCount_ > 1) {
+        if (ImGui::Checkbox("Split 3D view", &splitView_)) frameBox(computeBounds(doc_.points));  // fit the new pane shape
+        traceItem("teach.splitView");
+        tip("Show the model once per pane, each with its own partitioning and level, under one camera");
+        const float w = ImGui::GetContentRegionAvail().x;
         for (int i = 0; i < domainPaneCount_; ++i) {
             char label[24];
-            std::snprintf(label, sizeof label, "Pane %d", i + 1);
+            std::snprintf(label, sizeof label, "##paneSpacing%d", i);
+            ImGui::SetNextItemWidth(w * 0.5f);
             ImGui::Combo(label, &paneSpacing_[size_t(i)], kSpacingNames, 4);
+            traceItem("teach.paneSpacing" + std::to_string(i));
             tip("Partitioning of this pane");
+            ImGui::SameLine();
+            std::snprintf(label, sizeof label, "##paneLevel%d", i);
+            float& level = paneLevel_[size_t(i)];
+            ImGui::SetNextItemWidth(-1.0f);
+            if (ImGui::SliderFloat(label, &level, 0.0f, 64.0f, level < 1.0f ? "doc levels" : "level %.2f")) wake();
+            if (level < 1.0f) level = 0.0f;  // below 1: the document's levels
+            traceItem("teach.paneLevel" + std::to_string(i));
+            tip("This pane's own uniform level; at the left end the pane uses the document's levels (Ctrl+click to type)");
         }
+    }
 
     // Presets: the notes' factor sets, their Bézier patch, their distance formula.
     const auto& presets = tessPresets();
@@ -190,7 +210,11 @@ void Editor::drawTeachingWindow() {
             render::DomainViewOptions o;
             o.kind = DomainKind(domainKind_);
             o.levels = {doc_.tess.outer, doc_.tess.inner};
-            o.spacing = domainPaneCount_ > 1 ? kSpacings[paneSpacing_[i]] : doc_.tess.spacing;
+            o.spacing = domainPaneCount_ > 1 ? kPaneSpacings[paneSpacing_[i]] : doc_.tess.spacing;
+            if (domainPaneCount_ > 1 && paneLevel_[i] > 0.0f) {
+                o.levels.outer.fill(paneLevel_[i]);
+                o.levels.inner.fill(paneLevel_[i]);
+            }
             o.rect = rects[i];
             o.margin = render::domainLabelMargin(px);
             const render::DomainPane pane{o.kind, o.levels, o.spacing};
@@ -208,6 +232,72 @@ void Editor::drawTeachingWindow() {
         }
     }
     ImGui::End();
+}
+
+std::vector<std::array<float, 4>> Editor::viewPaneRects() const {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (!viewSplit()) return {{0.0f, 0.0f, io.DisplaySize.x, io.DisplaySize.y}};
+    // Between the side panels and below the menu bar (the whole window in presentation mode).
+    const float left = presentation_ ? 0.0f : leftPanelWidth_, right = presentation_ ? 0.0f : rightPanelWidth_;
+    const float top = presentation_ ? 0.0f : ImGui::GetFrameHeight();
+    const float w = std::max(io.DisplaySize.x - left - right, 64.0f), h = std::max(io.DisplaySize.y - top, 64.0f);
+    return render::splitPanes(domainPaneCount_, {left, top, w, h});
+}
+
+std::array<float, 4> Editor::interactionPane(double mx, double my) {
+    const auto rects = viewPaneRects();
+    if (mode_ == Interaction::None)
+        for (size_t i = 0; i < rects.size(); ++i) {
+            const auto& r = rects[i];
+            if (mx >= r[0] && mx < r[0] + r[2] && my >= r[1] && my < r[1] + r[3]) activePane_ = int(i);
+        }
+    activePane_ = std::clamp(activePane_, 0, int(rects.size()) - 1);
+    return rects[size_t(activePane_)];
+}
+
+void Editor::renderView(const render::RenderOptions& o) {
+    paneStats_.clear();
+    if (!viewSplit()) {
+        stats_ = renderer_->render(o);
+        return;
+    }
+    const ImGuiIO& io = ImGui::GetIO();
+    const float sx = io.DisplayFramebufferScale.x, sy = io.DisplayFramebufferScale.y;
+    const auto rects = viewPaneRects();
+    for (size_t i = 0; i < rects.size(); ++i) {
+        const std::array<float, 4> fb{rects[i][0] * sx, rects[i][1] * sy, rects[i][2] * sx, rects[i][3] * sy};
+        const render::ModelPane pane{kPaneSpacings[size_t(paneSpacing_[i])], paneLevel_[i]};
+        paneStats_.push_back(renderer_->render(render::paneOptions(o, pane, fb, i)));
+    }
+    stats_ = paneStats_.front();
+}
+
+void Editor::drawPaneCaptions() {
+    if (!viewSplit()) return;
+    ImDrawList* dl = ImGui::GetBackgroundDrawList();
+    ImFont* font = presentation_ && imgui_->presentationFont() ? imgui_->presentationFont() : ImGui::GetFont();
+    const float size = presentation_ ? ImGui::GetFontSize() * presentationScale_ * 0.9f : ImGui::GetFontSize();
+    const auto rects = viewPaneRects();
+    for (size_t i = 0; i < rects.size() && i < paneStats_.size(); ++i) {
+        const auto& r = rects[i];
+        TessSettings ts = doc_.tess;
+        ts.spacing = kPaneSpacings[size_t(paneSpacing_[i])];
+        if (paneLevel_[i] > 0.0f) {
+            ts.adaptive = AdaptiveMode::None;
+            ts.outer.fill(paneLevel_[i]);
+            ts.inner.fill(paneLevel_[i]);
+        }
+        const std::string text = render::paneCaption(ts, paneStats_[i].triangles(), true);
+        const ImVec2 ts2 = font->CalcTextSizeA(size, FLT_MAX, 0.0f, text.c_str());
+        // Top centre; at the bottom in presentation mode, clear of the large levels at the top left.
+        const ImVec2 at(r[0] + 0.5f * (r[2] - ts2.x), presentation_ ? r[1] + r[3] - ts2.y - 12.0f : r[1] + 8.0f);
+        dl->AddRectFilled(ImVec2(at.x - 6.0f, at.y - 3.0f), ImVec2(at.x + ts2.x + 6.0f, at.y + ts2.y + 3.0f), IM_COL32(0, 0, 0, 150), 4.0f);
+        dl->AddText(font, size, at, presentation_ ? IM_COL32(255, 220, 40, 255) : IM_COL32(235, 235, 235, 255), text.c_str());
+        if (i > 0 || r[0] > 0.0f)  // a thin line between panes
+            dl->AddLine(ImVec2(r[0], r[1]), ImVec2(r[0], r[1] + r[3]), IM_COL32(150, 150, 150, 200));
+        if (r[1] > (presentation_ ? 0.0f : ImGui::GetFrameHeight()) + 1.0f)
+            dl->AddLine(ImVec2(r[0], r[1]), ImVec2(r[0] + r[2], r[1]), IM_COL32(150, 150, 150, 200));
+    }
 }
 
 void Editor::drawDomainPanes() {

@@ -44,6 +44,11 @@ void Editor::frameBox(const Bounds& box) {
     int W = 0, H = 0;
     glfwGetWindowSize(window_, &W, &H);
     W = std::max(W, 1), H = std::max(H, 1);
+    if (viewSplit()) {  // every pane has the same size: fit the box into one
+        const auto pane = viewPaneRects().front();
+        cam_ = frameBounds(cam_, box, double(pane[2]) / std::max(double(pane[3]), 1.0));
+        return;
+    }
     // Fit the box into the part of the window between the side panels, then shift it there.
     const double left = std::min(300.0 * uiScale_, W * 0.3), right = std::min(330.0 * uiScale_, W * 0.3);
     const double visible = std::max(W - left - right, W * 0.25);
@@ -55,8 +60,11 @@ void Editor::frameSelection() { frameBox(frameTargetBounds(doc_, sel_)); }
 
 void Editor::viewportInput() {
     ImGuiIO& io = ImGui::GetIO();
-    const double mx = io.MousePos.x, my = io.MousePos.y;
-    const int W = int(io.DisplaySize.x), H = int(io.DisplaySize.y);
+    // Mouse positions are relative to the pane the mouse works in (the whole window unless the
+    // view is split): each pane is a view of its own size under the one camera.
+    viewArea_ = interactionPane(io.MousePos.x, io.MousePos.y);
+    const double mx = io.MousePos.x - viewArea_[0], my = io.MousePos.y - viewArea_[1];
+    const int W = std::max(int(viewArea_[2]), 1), H = std::max(int(viewArea_[3]), 1);
     const bool overUi = io.WantCaptureMouse && mode_ == Interaction::None;
     const bool mouseValid = ImGui::IsMousePosValid();
 
@@ -169,8 +177,8 @@ void Editor::viewportInput() {
     switch (mode_) {
         case Interaction::None:
             if (!overUi && mouseValid && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
-                pressX_ = leftPressed_ ? leftPressX_ : mx;
-                pressY_ = leftPressed_ ? leftPressY_ : my;
+                pressX_ = leftPressed_ ? leftPressX_ - viewArea_[0] : mx;
+                pressY_ = leftPressed_ ? leftPressY_ - viewArea_[1] : my;
                 pressShift_ = io.KeyShift;
                 hovered_ = pickPoint(cam_, doc_.points, pressX_, pressY_, W, H, kPickRadiusPx, &usedMask_);
                 if (hovered_ >= 0) {
@@ -237,7 +245,6 @@ void Editor::viewportInput() {
 
 void Editor::beginDrag(bool grab) {
     if (sel_.points.empty()) return;
-    const ImGuiIO& io = ImGui::GetIO();
     drag_ = DragState{};
     drag_.grab = grab;
     drag_.start = doc_.points;
@@ -250,14 +257,14 @@ void Editor::beginDrag(bool grab) {
     drag_.planeNormal = f;
     drag_.startX = pressX_;
     drag_.startY = pressY_;
-    const Ray ray = rayThroughPixel(cam_, pressX_, pressY_, int(io.DisplaySize.x), int(io.DisplaySize.y));
+    const Ray ray = rayThroughPixel(cam_, pressX_, pressY_, std::max(int(viewArea_[2]), 1), std::max(int(viewArea_[3]), 1));
     drag_.startHit = intersectPlane(ray, drag_.anchor, f).value_or(drag_.anchor);
     mode_ = grab ? Interaction::Grab : Interaction::DragPoints;
 }
 
 void Editor::updateDrag(double mx, double my) {
     const ImGuiIO& io = ImGui::GetIO();
-    const int W = int(io.DisplaySize.x), H = int(io.DisplaySize.y);
+    const int W = std::max(int(viewArea_[2]), 1), H = std::max(int(viewArea_[3]), 1);
     const Ray ray = rayThroughPixel(cam_, mx, my, W, H);
     Vec3 delta(0.0);
     if (drag_.axis < 0) {
@@ -302,10 +309,37 @@ void Editor::cancelDrag() {
 
 void Editor::drawViewportOverlays() {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
+    const auto rects = viewPaneRects();
+    for (size_t i = 0; i < rects.size(); ++i) {
+        const auto& r = rects[i];
+        dl->PushClipRect(ImVec2(r[0], r[1]), ImVec2(r[0] + r[2], r[1] + r[3]), true);
+        drawPaneOverlays(r, int(i) == activePane_ || !viewSplit());
+        dl->PopClipRect();
+    }
+
+    // Mode line.
+    const char* modeText = nullptr;
+    char buf[160];
+    if (mode_ == Interaction::Grab || mode_ == Interaction::DragPoints) {
+        std::snprintf(buf, sizeof buf, "%s %zu point(s)%s   X/Y/Z axis · Ctrl snap · Esc/right click cancel%s",
+                      mode_ == Interaction::Grab ? "Grab" : "Drag", drag_.moved.size(),
+                      drag_.axis < 0 ? " in the view plane" : drag_.axis == 0 ? " along X" : drag_.axis == 1 ? " along Y" : " along Z",
+                      mode_ == Interaction::Grab ? " · click/Enter confirm" : "");
+        modeText = buf;
+    }
+    if (modeText) dl->AddText(ImVec2(float(leftPanelWidth_) + 12.0f, 30.0f), IM_COL32(255, 230, 120, 255), modeText);
+}
+
+void Editor::drawPaneOverlays(const std::array<float, 4>& pane, bool active) {
+    ImDrawList* dl = ImGui::GetBackgroundDrawList();
     const ImGuiIO& io = ImGui::GetIO();
-    const int W = int(io.DisplaySize.x), H = int(io.DisplaySize.y);
-    const ViewMatrices vm = viewMatrices(cam_, double(W) / std::max(H, 1));
-    auto proj = [&](const Vec3& p) { return projectToPixel(vm, p, W, H); };
+    const int W = std::max(int(pane[2]), 1), H = std::max(int(pane[3]), 1);
+    const ViewMatrices vm = viewMatrices(cam_, double(W) / H);
+    auto proj = [&](const Vec3& p) -> std::optional<glm::dvec2> {
+        auto s = projectToPixel(vm, p, W, H);
+        if (s) *s += glm::dvec2(pane[0], pane[1]);
+        return s;
+    };
     auto line = [&](const Vec3& a, const Vec3& b, ImU32 col, float th) {
         const auto pa = proj(a), pb = proj(b);
         if (pa && pb) dl->AddLine(ImVec2(float(pa->x), float(pa->y)), ImVec2(float(pb->x), float(pb->y)), col, th);
@@ -371,8 +405,8 @@ void Editor::drawViewportOverlays() {
     }
 
     // Box selection rectangle.
-    if (mode_ == Interaction::BoxSelect) {
-        const ImVec2 a{float(pressX_), float(pressY_)}, b = io.MousePos;
+    if (mode_ == Interaction::BoxSelect && active) {
+        const ImVec2 a{float(pressX_) + pane[0], float(pressY_) + pane[1]}, b = io.MousePos;
         dl->AddRectFilled(ImVec2(std::min(a.x, b.x), std::min(a.y, b.y)), ImVec2(std::max(a.x, b.x), std::max(a.y, b.y)),
                           IM_COL32(100, 150, 255, 40));
         dl->AddRect(ImVec2(std::min(a.x, b.x), std::min(a.y, b.y)), ImVec2(std::max(a.x, b.x), std::max(a.y, b.y)),
@@ -381,7 +415,7 @@ void Editor::drawViewportOverlays() {
 
     // Axis gizmo (bottom left of the viewport, right of the left panel).
     {
-        const ImVec2 c(float(leftPanelWidth_) + 60.0f, float(H) - 60.0f);
+        const ImVec2 c(pane[0] + (viewSplit() ? 0.0f : float(leftPanelWidth_)) + 60.0f, pane[1] + float(H) - 60.0f);
         const float len = 40.0f;
         struct Ax { glm::vec3 v; ImU32 col; const char* name; };
         Ax axes[3] = {{glm::vec3(vm.view * glm::vec4(1, 0, 0, 0)), IM_COL32(230, 70, 70, 255), "X"},
@@ -396,17 +430,6 @@ void Editor::drawViewportOverlays() {
         }
     }
 
-    // Mode line.
-    const char* modeText = nullptr;
-    char buf[160];
-    if (mode_ == Interaction::Grab || mode_ == Interaction::DragPoints) {
-        std::snprintf(buf, sizeof buf, "%s %zu point(s)%s   X/Y/Z axis · Ctrl snap · Esc/right click cancel%s",
-                      mode_ == Interaction::Grab ? "Grab" : "Drag", drag_.moved.size(),
-                      drag_.axis < 0 ? " in the view plane" : drag_.axis == 0 ? " along X" : drag_.axis == 1 ? " along Y" : " along Z",
-                      mode_ == Interaction::Grab ? " · click/Enter confirm" : "");
-        modeText = buf;
-    }
-    if (modeText) dl->AddText(ImVec2(float(leftPanelWidth_) + 12.0f, 30.0f), IM_COL32(255, 230, 120, 255), modeText);
 }
 
 }  // namespace pw::ui

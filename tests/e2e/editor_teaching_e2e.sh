@@ -61,7 +61,67 @@ wait_for "t['curves'] == 1 and t['undoSteps'] == $STEPS + 2"
 check_validation
 say "isocurves and a curve through the isoline tessellator; undo removes the curve, redo brings it back"
 STEPS=$(trace "t['undoSteps']")
-STEPS=$(trace "t['undoSteps']")
+
+# Split 3D view: two panes of the model, equal and fractional_odd, each counted on its own; a pane's
+# own level; a drag in the second pane moves the point under the mouse there. (The domain and
+# shader windows are closed first so that they do not cover the panes.)
+SINGLE=$(trace "t['triangles']")
+click_item teach.domain
+click_item teach.shaders
+wait_for "not t['shaders']['open'] and len(t['domain']) == 0"
+click_item teach.panes2
+wait_for "'teach.splitView' in t['items']"
+click_item teach.splitView
+wait_for "len(t['viewPanes']) == 2 and [p['spacing'] for p in t['viewPanes']] == ['equal', 'fractional_odd']"
+# The preset's levels {4.9,4.5,4.1 | 4.4} cut 5 segments on every teapot edge under both rules.
+wait_for "t['viewPanes'][0]['triangles'] == 32 * 2 * 25 and t['viewPanes'][1]['triangles'] == $SINGLE"
+click_item teach.paneLevel1
+wait_for "t['viewPanes'][1]['level'] > 8"
+python3 - "$WORK/trace.json" <<'PY' || fail "pane level count"
+import json, math, sys
+t = json.load(open(sys.argv[1]))
+p = t['viewPanes'][1]
+n = math.ceil(p['level'])
+n += 1 - n % 2  # fractional_odd: the next odd segment count
+assert p['triangles'] == 32 * 2 * n * n, (p, n)
+print("pane level", p['level'], "->", n, "segments,", p['triangles'], "triangles")
+PY
+read -r RX RY RW RH < <(trace "' '.join(str(round(v)) for v in t['viewPanes'][1]['rect'])")
+xdotool mousemove --sync $((RX + RW / 2)) $((RY + RH / 2))
+wait_for "t['activePane'] == 1"
+# A point of the net inside the second pane, away from its edges.
+IDX=$(python3 - "$WORK/trace.json" "$RX" "$RY" "$RW" "$RH" <<'PY'
+import json, sys
+t = json.load(open(sys.argv[1]))
+x, y, w, h = map(float, sys.argv[2:])
+best = min((abs(p[0] - x - w / 2) + abs(p[1] - y - h / 2), i) for i, p in enumerate(t['points'])
+           if p and x + 40 < p[0] < x + w - 40 and y + 80 < p[1] < y + h - 40)
+print(best[1])
+PY
+)
+ORIG=$(trace "t['world'][$IDX]")
+read -r PX PY < <(trace "' '.join(str(round(v)) for v in t['points'][$IDX])")
+xdotool mousemove --sync $PX $PY
+wait_for "t['hovered'] == $IDX"
+xdotool mousedown 1
+for d in 10 20 30; do xdotool mousemove --sync $PX $((PY - d)); sleep 0.1; done
+xdotool mouseup 1
+wait_for "t['mode'] == 0 and t['world'][$IDX] != $ORIG and t['undoSteps'] == $STEPS + 1"
+python3 - "$WORK/trace.json" "$IDX" "$PX" "$PY" <<'PY' || fail "the dragged point is not under the mouse in pane 2"
+import json, sys
+t = json.load(open(sys.argv[1]))
+i, px, py = int(sys.argv[2]), float(sys.argv[3]), float(sys.argv[4])
+p = t['points'][i]
+assert abs(p[0] - px) < 4 and abs(p[1] - (py - 30)) < 4, (p, px, py - 30)
+PY
+xdotool key ctrl+z
+wait_for "t['world'][$IDX] == $ORIG"
+click_item teach.panes1
+click_item teach.domain
+wait_for "len(t['viewPanes']) == 0 and len(t['domain']) == 1"
+check_validation
+say "split view: equal and fractional_odd panes counted apart, a pane's own level, a drag in pane 2"
+STEPS=$(trace "t['undoSteps'] - 1")  # the undone drag is dropped by the next edit
 
 # Sweep: play, the level moves; pause, one undo step more. (Scroll the properties panel so that the
 # sweep controls are in view.)
