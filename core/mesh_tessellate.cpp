@@ -77,7 +77,9 @@ struct SurfaceGridInfo {
 namespace {
 
 // The 4x4 windows (patches and surface windows) into `mesh`.
-void tessellateWindows(const Document& doc, const std::vector<PatchInstance>& windows, int level, TriangleMesh& mesh) {
+// `boundary` receives the Bézier windows' boundary vertices by pool (triangles weld to them).
+void tessellateWindows(const Document& doc, const std::vector<PatchInstance>& windows, int level, TriangleMesh& mesh,
+                       BoundaryVertices& boundaryByPool) {
     const size_t W = windows.size();
     const int L = level;
     const int S = L + 1;  // grid points per side
@@ -276,6 +278,27 @@ void tessellateWindows(const Document& doc, const std::vector<PatchInstance>& wi
             ids[r * S] = boundary(r, 0);
             ids[r * S + L] = boundary(r, L);
         }
+        if (mode == WeldMode::Bezier)
+            for (Edge e : kEdges) {  // the vertices a Bézier triangle on this edge welds to
+                const auto pool = edgePool(inst.idx, e);
+                auto onEdge = [&](int k) {
+                    switch (e) {
+                        case Edge::U0: return ids[size_t(k * S)];
+                        case Edge::U1: return ids[size_t(k * S + L)];
+                        case Edge::V0: return ids[size_t(k)];
+                        default: return ids[size_t(L * S + k)];
+                    }
+                };
+                boundaryByPool.corners.try_emplace(pool[0], onEdge(0));
+                boundaryByPool.corners.try_emplace(pool[3], onEdge(L));
+                const size_t ke = w * 4 + static_cast<size_t>(e);
+                if (collapsed[ke] || reversed4(pool) == pool || L < 2) continue;
+                auto [it, inserted] = boundaryByPool.edges.try_emplace(flip[ke] ? reversed4(pool) : pool, size_t(L - 1), kNone);
+                for (int k = 1; k < L; ++k) {
+                    uint32_t& slot = it->second[size_t((flip[ke] ? L - k : k) - 1)];
+                    if (slot == kNone) slot = onEdge(k);
+                }
+            }
 
         // Two triangles per grid cell, counter-clockwise seen from du × dv; the triangles that a
         // collapsed edge makes degenerate are left out (the cell becomes one triangle of a fan).
@@ -346,8 +369,9 @@ TriangleMesh tessellateDocument(const Document& doc, int level) {
         throw std::length_error(std::to_string(windows.size() + doc.triangles.size()) + " patches at level " +
                                 std::to_string(level) + " would need more than 2^32 vertices; use a lower level");
     TriangleMesh mesh;
-    tessellateWindows(doc, windows, level, mesh);
-    appendBezierTriangles(doc, level, mesh);
+    BoundaryVertices quadBoundaries;
+    tessellateWindows(doc, windows, level, mesh, quadBoundaries);
+    appendBezierTriangles(doc, level, mesh, &quadBoundaries);
     removeUnusedVertices(mesh);
     return mesh;
 }

@@ -21,14 +21,28 @@ std::array<uint32_t, 4> reversed4(const std::array<uint32_t, 4>& a) { return {a[
 
 }  // namespace
 
-void appendBezierTriangles(const Document& doc, int level, TriangleMesh& mesh) {
+void appendBezierTriangles(const Document& doc, int level, TriangleMesh& mesh, const BoundaryVertices* quads) {
     const int n = level;
     mesh.perTriangle.resize(doc.triangles.size());
 
-    // Shared vertices: corners by pool index, edge interiors by canonical edge and k.
+    // Shared vertices: corners by pool index, edge interiors by canonical edge and k; the quads'
+    // boundary vertices to start with, each counting its normal once.
     std::map<uint32_t, uint32_t> cornerVertex;
     std::map<std::array<uint32_t, 4>, std::vector<uint32_t>> edgeVertices;
     std::map<uint32_t, std::pair<Vec3, uint32_t>> normalSum;  // welded vertex → (sum, count)
+    if (quads) {
+        cornerVertex = quads->corners;
+        for (const auto& [key, ids] : quads->edges)
+            if (ids.size() == size_t(n > 1 ? n - 1 : 0)) edgeVertices.emplace(key, ids);
+        auto seed = [&](uint32_t v) {
+            if (v == kNone || v >= mesh.normals.size()) return;
+            const auto& q = mesh.normals[v];
+            normalSum.try_emplace(v, Vec3(q[0], q[1], q[2]), 1u);
+        };
+        for (const auto& entry : cornerVertex) seed(entry.second);
+        for (const auto& entry : edgeVertices)
+            for (uint32_t v : entry.second) seed(v);
+    }
 
     std::vector<TriPoint> grid;
     std::vector<uint32_t> ids(triGridSize(n));

@@ -147,6 +147,50 @@ TEST(TriangleMesh, TriangleBesideAQuadMeetsItWithoutAGap) {
     EXPECT_GT(onEdge, size_t(L));
 }
 
+// A flat quad on [0,3]² (z = 0) and a triangle on its edge y = 0, sharing the edge's pool points;
+// the triangle's far corner at (1.5, -3, z).
+Document quadAndTriangle(double z) {
+    Document doc;
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) doc.points.push_back(Vec3(c, r, 0.0));
+    Patch q;
+    for (uint32_t k = 0; k < 16; ++k) q.idx[k] = k;
+    doc.patches.push_back(q);
+    const Vec3 U(3, 0, 0), V(0, 0, 0), W(1.5, -3, z);  // edge 2 (u -> v) = pool 3, 2, 1, 0
+    auto add = [&](Vec3 p) {
+        doc.points.push_back(p);
+        return uint32_t(doc.points.size() - 1);
+    };
+    TrianglePatch t;
+    t.idx[0] = 3;
+    t.idx[1] = 2;
+    t.idx[3] = 1;
+    t.idx[6] = 0;
+    t.idx[2] = add((2.0 * U + W) / 3.0);  // b201
+    t.idx[4] = add((U + V + W) / 3.0);    // b111
+    t.idx[5] = add((U + 2.0 * W) / 3.0);  // b102
+    t.idx[7] = add((2.0 * V + W) / 3.0);  // b021
+    t.idx[8] = add((V + 2.0 * W) / 3.0);  // b012
+    t.idx[9] = add(W);
+    doc.triangles.push_back(t);
+    return doc;
+}
+
+TEST(TriangleMesh, TriangleBesideAQuadIsWeldedWhereSmoothAndSplitAtACrease) {
+    const int L = 6;
+    const size_t quadVerts = size_t(L + 1) * (L + 1), triVerts = size_t(L + 1) * (L + 2) / 2;
+    // Coplanar: the seam's L + 1 vertices are the quad's, so the seam is inside the mesh.
+    const TriangleMesh flat = tessellateDocument(quadAndTriangle(0.0), L);
+    EXPECT_EQ(flat.positions.size(), quadVerts + triVerts - size_t(L + 1));
+    EXPECT_EQ(edgeStats(flat).boundaryEdges, size_t(3 * L + 2 * L));  // 3 quad sides + 2 triangle sides
+    EXPECT_EQ(edgeStats(flat).nonManifoldEdges, 0u);
+    for (const auto& n : flat.normals) EXPECT_NEAR(n[2], 1.0f, 1e-5f);
+    // Folded down by 45 degrees: a crease, so each side keeps its own vertices (and normals).
+    const TriangleMesh fold = tessellateDocument(quadAndTriangle(3.0), L);
+    EXPECT_EQ(fold.positions.size(), quadVerts + triVerts);
+    EXPECT_EQ(edgeStats(fold).boundaryEdges, size_t(4 * L + 3 * L));
+}
+
 TEST(TriangleMesh, CollapsedEdgeLeavesNoDegenerateTrianglesOrNaN) {
     Document doc = makeTriangleDome();
     // Collapse triangle 0's edge 2 (its two hexagon corners and the points between) to one point.
