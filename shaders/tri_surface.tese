@@ -5,7 +5,8 @@
 // du × dv with a fallback a small step towards the centroid where that vanishes (collapsed edges),
 // and boundary points from the edge's four points only, in canonical order, with the same code as
 // the quads' boundaries (bit-identical shared edges). One variant per partitioning (-DSPACING=),
-// lean (normal) or -DFULL_VARYINGS (UV = (u, v), patch id; curvature is left at 0).
+// lean (normal) or -DFULL_VARYINGS (UV = (u, v), patch id, Gaussian and mean curvature from the
+// second derivatives when a curvature shading is on).
 #include "common.glsl"
 
 layout(triangles, SPACING, ccw) in;
@@ -31,6 +32,15 @@ void derivs(float u, float v, float w, out vec3 du, out vec3 dv) {
     dv = 3.0 * (B200 * (cp(1) - cp(2)) + B110 * (cp(3) - cp(4)) + B101 * (cp(4) - cp(5)) +
                 B020 * (cp(6) - cp(7)) + B011 * (cp(7) - cp(8)) + B002 * (cp(8) - cp(9)));
 }
+
+#ifdef FULL_VARYINGS
+// ∂²p/∂u², ∂²p/∂u∂v, ∂²p/∂v² (w = 1 - u - v) from the linear Bernstein weights u, v, w.
+void secondDerivs(float u, float v, float w, out vec3 duu, out vec3 duv, out vec3 dvv) {
+    duu = 6.0 * (u * (cp(0) - 2.0 * cp(2) + cp(5)) + v * (cp(1) - 2.0 * cp(4) + cp(8)) + w * (cp(2) - 2.0 * cp(5) + cp(9)));
+    duv = 6.0 * (u * (cp(1) - cp(2) - cp(4) + cp(5)) + v * (cp(3) - cp(4) - cp(7) + cp(8)) + w * (cp(4) - cp(5) - cp(8) + cp(9)));
+    dvv = 6.0 * (u * (cp(3) - 2.0 * cp(4) + cp(5)) + v * (cp(6) - 2.0 * cp(7) + cp(8)) + w * (cp(7) - 2.0 * cp(8) + cp(9)));
+}
+#endif
 
 vec3 position(float u, float v, float w) {
     float u2 = u * u, v2 = v * v, w2 = w * w;
@@ -84,7 +94,17 @@ void main() {
 #ifdef FULL_VARYINGS
     outUV = vec2(u, v);
     outPatch = draw.patchBase + uint(gl_PrimitiveID);
-    outCurv = vec2(0.0);
+    // Gaussian and mean curvature from the fundamental forms (curvature shading only).
+    vec2 curv = vec2(0.0);
+    if (frame.modes.w == 5u || frame.modes.w == 6u) {
+        vec3 duu, duv, dvv;
+        secondDerivs(u, v, w, duu, duv, dvv);
+        float E = dot(du, du), F = dot(du, dv), G = dot(dv, dv);
+        float L = dot(duu, n), M = dot(duv, n), N = dot(dvv, n);
+        float den = E * G - F * F;
+        if (den > 1e-12 * (E * G + 1e-30)) curv = vec2((L * N - M * M) / den, (E * N - 2.0 * F * M + G * L) / (2.0 * den));
+    }
+    outCurv = curv;
 #endif
     gl_Position = frame.viewProj * vec4(p, 1.0);
 }

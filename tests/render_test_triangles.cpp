@@ -196,6 +196,37 @@ TEST_F(RenderTriangles, LitDomeHasNoHolesOrBlackPixelsInsideItsSilhouette) {
     EXPECT_EQ(holesInside(rs, doc, projected(rs, side, {Vec3(-0.6, 0, 0.2), Vec3(0.6, 0, 0.2), Vec3(0, 0, 0.45)}), 0.85, "side"), 0u);
 }
 
+TEST_F(RenderTriangles, CurvatureShadingShowsTheDomesCurvature) {
+    // The paraboloid z = h (1 - r²/R²) with upward normals: Gaussian curvature 4h²/R⁴ > 0 at the
+    // top (red in the diverging map), mean curvature -2h/R² < 0 (blue); the flat triangle has
+    // neither (white, as lit grey).
+    const Document dome = makeTriangleDome(1.0, 0.5);
+    Offscreen off(W, H, false);
+    off.setDocument(dome);
+    render::RenderOptions o = topView(dome, 16.0f);
+    auto centre = [&](const render::RenderOptions& opt) {
+        const Rendered r = off.render(opt);
+        const glm::dvec2 c = projected(r, opt, {Vec3(0.1, 0.05, 0.49)})[0];
+        const uint8_t* px = r.image.at(int(c.x), int(c.y));
+        return std::array<int, 3>{px[0], px[1], px[2]};
+    };
+    o.display.shading = ShadingMode::GaussCurvature;
+    const auto gauss = centre(o);
+    EXPECT_GT(gauss[0], gauss[1] + 25) << "Gaussian curvature > 0 is red";
+    EXPECT_GT(gauss[0], gauss[2] + 25);
+    o.display.shading = ShadingMode::MeanCurvature;
+    const auto mean = centre(o);
+    EXPECT_GT(mean[2], mean[0] + 25) << "mean curvature < 0 is blue";
+    const Document flat = flatTriangle();
+    off.setDocument(flat);
+    render::RenderOptions f = topView(flat, 8.0f);
+    f.display.shading = ShadingMode::GaussCurvature;
+    const Rendered r = off.render(f);
+    const glm::dvec2 c = projected(r, f, {Vec3(1.0, 1.0, 0.0)})[0];
+    const uint8_t* px = r.image.at(int(c.x), int(c.y));
+    EXPECT_LE(std::abs(int(px[0]) - int(px[2])), 6) << "zero curvature is neutral";
+}
+
 TEST_F(RenderTriangles, SharedEdgeAtDifferentLevelsHasNoCrack) {
     const Document doc = twoTriangles();
     Offscreen off(W, H, /*msaa=*/false);
