@@ -116,8 +116,11 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
             {&spirv::tri_surface_tese_equal, &spirv::tri_surface_tese_equal_full},
             {&spirv::tri_surface_tese_odd, &spirv::tri_surface_tese_odd_full},
             {&spirv::tri_surface_tese_even, &spirv::tri_surface_tese_even_full}};
+        const spirv::Blob* tptese[kSpacingVariants] = {&spirv::tri_points_tese_equal, &spirv::tri_points_tese_odd,
+                                                       &spirv::tri_points_tese_even};
         for (int s = 0; s < kSpacingVariants; ++s) {
             const VkShaderModule te[kVaryingsVariants] = {mod(*ttese[s][0]), mod(*ttese[s][1])};
+            const VkShaderModule pte = geom ? mod(*tptese[s]) : VK_NULL_HANDLE;
             for (int l = 0; l < kLevelsVariants; ++l) {
                 const auto lv = LevelsVariant(l);
                 for (int v = 0; v < kVaryingsVariants; ++v) {
@@ -132,6 +135,16 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
                     pd.depthWrite = false;
                     pd.depthBias = true;
                     set.triWire[overlayIndex(s, lv)] = buildPipeline(dev, set.layout, set.cache, pd, color, depth, samples);
+                }
+                if (geom) {
+                    PipelineDesc nd;
+                    nd.tess = true;
+                    nd.patchControlPoints = 10;
+                    nd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, ttesc[l]},
+                                 {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, pte},
+                                 {VK_SHADER_STAGE_GEOMETRY_BIT, geom}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
+                    nd.depthWrite = false;
+                    set.triNormals[overlayIndex(s, lv)] = buildPipeline(dev, set.layout, set.cache, nd, color, depth, samples);
                 }
             }
         }
@@ -213,6 +226,7 @@ void destroyPipelines(Device& dev, PipelineSet& set) {
     for (auto& p : set.normals) kill(p);
     for (auto& p : set.triSurface) kill(p);
     for (auto& p : set.triWire) kill(p);
+    for (auto& p : set.triNormals) kill(p);
     for (auto& p : set.curves) kill(p);
     for (auto& p : set.isocurves) kill(p);
     for (auto& p : set.mesh) kill(p);

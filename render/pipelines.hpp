@@ -42,10 +42,10 @@ struct PipelineSet {
     // by overlayIndex: the surface as polygonMode LINE + depth bias; point-mode evaluation +
     // geometry shader for normal vectors (if supported)
     std::array<VkPipeline, kSpacingVariants * kLevelsVariants> wire{}, normals{};
-    // Bézier triangles (10 control points, triangle domain): shaded by surfaceIndex, wireframe by
-    // overlayIndex (the normal-vector overlay covers the windows only).
+    // Bézier triangles (10 control points, triangle domain): shaded by surfaceIndex, wireframe and
+    // normal vectors (if supported) by overlayIndex.
     std::array<VkPipeline, kSpacingVariants * kLevelsVariants * kVaryingsVariants> triSurface{};
-    std::array<VkPipeline, kSpacingVariants * kLevelsVariants> triWire{};
+    std::array<VkPipeline, kSpacingVariants * kLevelsVariants> triWire{}, triNormals{};
     // The isoline domain, by spacing variant: Bézier curves (4 points) and the isocurve overlay of
     // every window (16 points).
     std::array<VkPipeline, kSpacingVariants> curves{}, isocurves{};

@@ -278,6 +278,10 @@ FrameStats Renderer::render(const RenderOptions& opt) {
         DrawPush np;
         np.color = {0.2f, 0.9f, 1.0f, 1.0f};
         stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, np, bounds, budget);
+        if (m.scene.triangleCount && pipes_.triNormals[overlayIndex(variant, levels)]) {
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.triNormals[overlayIndex(variant, levels)]);
+            stats.draws += recordTriangleDraws(cmd, pipes_.layout, m.scene, perDraw, np);
+        }
     }
     // The isoline domain: isoparametric curves of every window (two passes: along u, along v), then
     // the document's Bézier curves.

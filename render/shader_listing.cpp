@@ -121,6 +121,13 @@ std::vector<PipelineUse> pipelinesInUse(const ShaderContext& c) {
                         {"tessellation evaluation", "points_tese_" + sp},
                         {"geometry", "normals_geom"},
                         {"fragment", "line_frag"}}});
+    if (c.display.showNormals && c.triangles && c.geometryShader)
+        out.push_back({"Normal vectors (Bézier triangles, point mode)", why,
+                       {{"vertex", "surface_vert"},
+                        {"tessellation control", "tri_surface_" + tesc},
+                        {"tessellation evaluation", "tri_points_tese_" + sp},
+                        {"geometry", "normals_geom"},
+                        {"fragment", "line_frag"}}});
     char levels[96];
     std::snprintf(levels, sizeof levels, "isoline domain: outer level 0 = lines (%g), outer level 1 = segments (%g)",
                   double(c.tess.isolineLevels[0]), double(c.tess.isolineLevels[1]));

@@ -5,14 +5,21 @@
 // du × dv with a fallback a small step towards the centroid where that vanishes (collapsed edges),
 // and boundary points from the edge's four points only, in canonical order, with the same code as
 // the quads' boundaries (bit-identical shared edges). One variant per partitioning (-DSPACING=),
-// lean (normal) or -DFULL_VARYINGS (UV = (u, v), patch id, Gaussian and mean curvature from the
+// lean (normal), -DPOINT_MODE (the normal-vector overlay) or -DFULL_VARYINGS (UV = (u, v), patch id, Gaussian and mean curvature from the
 // second derivatives when a curvature shading is on).
 #include "common.glsl"
 
+#ifdef POINT_MODE
+layout(triangles, SPACING, ccw, point_mode) in;  // the normal-vector overlay
+#else
 layout(triangles, SPACING, ccw) in;
+#endif
 
 layout(location = 1) patch in float netScalePatch;
 layout(location = 2) patch in uint edgeFlipPatch;  // bit e: evaluate edge e reversed
+#ifdef POINT_MODE
+layout(location = 0) out vec3 outPos;  // the normal-vector overlay's base point
+#endif
 layout(location = 1) out vec3 outNormal;
 #ifdef FULL_VARYINGS
 layout(location = 2) out vec2 outUV;
@@ -90,6 +97,9 @@ void main() {
     }
     n = len2 > 0.0 ? n * inversesqrt(len2) : vec3(0.0, 0.0, 1.0);
 
+#ifdef POINT_MODE
+    outPos = p;
+#endif
     outNormal = n;
 #ifdef FULL_VARYINGS
     outUV = vec2(u, v);

@@ -227,6 +227,33 @@ TEST_F(RenderTriangles, CurvatureShadingShowsTheDomesCurvature) {
     EXPECT_LE(std::abs(int(px[0]) - int(px[2])), 6) << "zero curvature is neutral";
 }
 
+TEST_F(RenderTriangles, NormalVectorOverlayDrawsTheTrianglesNormals) {
+    if (!sharedDevice().caps().geometryShader) GTEST_SKIP() << "no geometry shaders on this device";
+    // A document of triangles only: every normal vector drawn comes from the triangle pipeline.
+    const Document dome = makeTriangleDome(1.0, 0.5);
+    Offscreen off(W, H, false);
+    off.setDocument(dome);
+    render::RenderOptions o = plainOptions(dome, 6.0f, double(W) / H, "front");
+    o.display.normalLength = 0.3f;
+    auto cyan = [](const Rendered& r) {
+        size_t n = 0;
+        for (size_t i = 0; i < r.image.rgba.size(); i += 4) n += r.image.rgba[i] < 110 && r.image.rgba[i + 1] > 180 && r.image.rgba[i + 2] > 200;
+        return n;
+    };
+    EXPECT_EQ(cyan(off.render(o)), 0u);
+    o.display.showNormals = true;
+    const Rendered r = off.render(o);
+    EXPECT_GT(cyan(r), 200u);
+    // They stand on the dome and point up and out: cyan above the dome's top (z = 0.5 + 0.3).
+    const glm::dvec2 top = projected(r, o, {Vec3(0.0, 0.0, 0.7)})[0];
+    size_t above = 0;
+    for (int dx = -3; dx <= 3; ++dx) {
+        const uint8_t* px = r.image.at(int(top.x) + dx, int(top.y));
+        above += px[0] < 110 && px[1] > 180 && px[2] > 200;
+    }
+    EXPECT_GT(above, 0u);
+}
+
 TEST_F(RenderTriangles, SharedEdgeAtDifferentLevelsHasNoCrack) {
     const Document doc = twoTriangles();
     Offscreen off(W, H, /*msaa=*/false);
