@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "constraint_solver.hpp"
+#include "bezier_triangle.hpp"
 #include "patch_eval.hpp"
 
 namespace pw {
@@ -280,6 +281,48 @@ void deleteCurve(Document& doc, uint32_t c) {
     if (c >= doc.curves.size()) throw EditError("curve " + std::to_string(c) + " does not exist (the document has " +
                                                 std::to_string(doc.curves.size()) + ")");
     doc.curves.erase(doc.curves.begin() + c);
+    compactPool(doc);
+}
+
+uint32_t addTriangle(Document& doc, const Vec3& center, double size, bool zUp) {
+    // Corners u, v, w of an equilateral triangle, counter-clockwise seen from above (normal up).
+    const double r = size / std::sqrt(3.0);
+    auto corner = [&](double deg) {
+        const double a = deg * 3.14159265358979323846 / 180.0;
+        const double x = r * std::cos(a), y = r * std::sin(a);
+        return zUp ? Vec3(x, y, 0.0) : Vec3(x, 0.0, -y);
+    };
+    const Vec3 U = corner(-30.0), V = corner(90.0), W = corner(210.0);
+    TrianglePatch t;
+    for (int i = 0; i <= 3; ++i)
+        for (int j = 0; j <= 3 - i; ++j) {
+            const int k = 3 - i - j;
+            t.idx[size_t(triSlot(i, j, k))] = addPoint(doc, center + (double(i) * U + double(j) * V + double(k) * W) / 3.0);
+        }
+    t.name = "triangle " + std::to_string(doc.triangles.size());
+    doc.triangles.push_back(t);
+    return uint32_t(doc.triangles.size() - 1);
+}
+
+namespace {
+void checkTriangle(const Document& doc, uint32_t t) {
+    if (t >= doc.triangles.size())
+        throw EditError("triangle " + std::to_string(t) + " does not exist (the document has " + std::to_string(doc.triangles.size()) + ")");
+}
+}  // namespace
+
+uint32_t duplicateTriangle(Document& doc, uint32_t t, const Vec3& offset) {
+    checkTriangle(doc, t);
+    TrianglePatch copy = doc.triangles[t];
+    for (uint32_t& i : copy.idx) i = addPoint(doc, doc.points[i] + offset);
+    copy.name = (copy.name.empty() ? "triangle " + std::to_string(t) : copy.name) + " copy";
+    doc.triangles.push_back(copy);
+    return uint32_t(doc.triangles.size() - 1);
+}
+
+void deleteTriangle(Document& doc, uint32_t t) {
+    checkTriangle(doc, t);
+    doc.triangles.erase(doc.triangles.begin() + t);
     compactPool(doc);
 }
 

@@ -68,6 +68,14 @@ uint32_t curveFromEdge(Document& doc, uint32_t p, Edge e);
 // Removes curve c; points no longer used by anything are dropped from the pool.
 void deleteCurve(Document& doc, uint32_t c);
 
+// Cubic Bézier triangles. A new flat triangle of side `size` centred at `center` in the ground plane
+// (its normal up), its 10 points on the uniform lattice.
+uint32_t addTriangle(Document& doc, const Vec3& center, double size, bool zUp = true);
+// A copy of triangle t with fresh points moved by `offset`; returns its index.
+uint32_t duplicateTriangle(Document& doc, uint32_t t, const Vec3& offset);
+// Removes triangle t; points no longer used by anything are dropped from the pool.
+void deleteTriangle(Document& doc, uint32_t t);
+
 // The edge of a patch nearest the parameter point (u, v).
 Edge nearestEdge(double u, double v);
 

@@ -7,6 +7,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/matrix.hpp>
 
+#include "bezier_triangle.hpp"
 #include "patch_eval.hpp"
 
 namespace pw {
@@ -108,6 +109,24 @@ std::optional<double> intersectTriangle(const Ray& ray, const glm::dvec3& a, con
     return t;
 }
 
+namespace {
+// False when the ray misses the sphere around the points' centroid that holds them all (the
+// control net bounds its patch): the patch cannot be hit.
+template <class It>
+bool raySphereMayHit(const Ray& ray, It first, It last) {
+    glm::dvec3 c(0.0);
+    double n = 0.0;
+    for (It p = first; p != last; ++p, n += 1.0) c += *p;
+    c /= std::max(n, 1.0);
+    double r2 = 0.0;
+    for (It p = first; p != last; ++p) r2 = std::max(r2, glm::dot(*p - c, *p - c));
+    const glm::dvec3 oc = c - ray.origin;
+    const double along = glm::dot(oc, ray.dir);
+    const double perp2 = glm::dot(oc, oc) - along * along;
+    return perp2 <= r2 * 1.0001 + 1e-18;
+}
+}  // namespace
+
 std::optional<SurfaceHit> pickSurface(const Document& doc, const Ray& ray, int level) {
     level = std::clamp(level, 1, 64);
     const std::vector<PatchInstance> inst = expandPatches(doc);
@@ -118,15 +137,7 @@ std::optional<SurfaceHit> pickSurface(const Document& doc, const Ray& ray, int l
         const PatchInstance& pi = inst[w];
         const Net16 net = gatherNet(doc, pi.idx);
         // Bounding-sphere rejection first (the control net bounds the Bézier/spline window).
-        glm::dvec3 c(0.0);
-        for (const Vec3& p : net) c += p;
-        c /= 16.0;
-        double r2 = 0.0;
-        for (const Vec3& p : net) r2 = std::max(r2, glm::dot(p - c, p - c));
-        const glm::dvec3 oc = c - ray.origin;
-        const double along = glm::dot(oc, ray.dir);
-        const double perp2 = glm::dot(oc, oc) - along * along;
-        if (perp2 > r2 * 1.0001 + 1e-18) continue;
+        if (!raySphereMayHit(ray, net.begin(), net.end())) continue;
         if (weights.basis != pi.basis || weights.tension != pi.tension || weights.nu != level)
             weights = makeGridWeights(pi.basis, pi.tension, level, level);
         evaluateGrid(net, pi.idx, weights, grid);
@@ -140,9 +151,25 @@ std::optional<SurfaceHit> pickSurface(const Document& doc, const Ray& ray, int l
                 for (int tri = 0; tri < 2; ++tri) {
                     const auto t = tri == 0 ? intersectTriangle(ray, p00, p01, p11) : intersectTriangle(ray, p00, p11, p10);
                     if (t && (!best || *t < best->t)) {
-                        best = SurfaceHit{int(w), pi.patch, pi.surface, *t, (col + 0.5) / level, (r + 0.5) / level};
+                        best = SurfaceHit{int(w), pi.patch, pi.surface, -1, *t, (col + 0.5) / level, (r + 0.5) / level};
                     }
                 }
+            }
+    }
+    std::vector<TriPoint> tgrid;
+    for (size_t k = 0; k < doc.triangles.size(); ++k) {
+        const TrianglePatch& tri = doc.triangles[k];
+        const Net10 net = gatherTriangleNet(doc, tri.idx);
+        if (!raySphereMayHit(ray, net.begin(), net.end())) continue;
+        evaluateTriangleGrid(net, tri.idx, level, tgrid);
+        for (int j = 0; j < level; ++j)
+            for (int i = 0; i < level - j; ++i) {
+                const auto at = [&](int a, int b) { return tgrid[triGridIndex(a, b, level)].p; };
+                auto hit = [&](std::optional<double> t, double cu, double cv) {
+                    if (t && (!best || *t < best->t)) best = SurfaceHit{-1, -1, -1, int(k), *t, cu / level, cv / level};
+                };
+                hit(intersectTriangle(ray, at(i, j), at(i + 1, j), at(i, j + 1)), i + 1.0 / 3.0, j + 1.0 / 3.0);
+                if (i + 1 < level - j) hit(intersectTriangle(ray, at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)), i + 2.0 / 3.0, j + 2.0 / 3.0);
             }
     }
     return best;

@@ -46,10 +46,12 @@ struct SurfaceHit {
     int instance = -1;  // index into expandPatches(doc)
     int patch = -1;     // Document::patches index or -1 (surface window)
     int surface = -1;
+    int triangle = -1;  // Document::triangles index or -1 (then instance is -1 too)
     double t = 0.0;     // distance along the ray
-    double u = 0.0, v = 0.0;
+    double u = 0.0, v = 0.0;  // window parameters, or a triangle's barycentric u, v
 };
-// Nearest hit of the ray with the surface, each window tessellated as a `level` x `level` grid.
+// Nearest hit of the ray with the surface: each window tessellated as a `level` x `level` grid,
+// each Bézier triangle as its barycentric grid at `level`.
 std::optional<SurfaceHit> pickSurface(const Document& doc, const Ray& ray, int level = 12);
 
 // Where the ray meets the plane through `point` with normal `normal` (nullopt when parallel or behind).

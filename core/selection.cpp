@@ -35,10 +35,11 @@ void clampSelection(Selection& sel, const Document& doc) {
     if (sel.patch >= int(doc.patches.size())) sel.patch = -1;
     if (sel.surface >= int(doc.surfaces.size())) sel.surface = -1;
     if (sel.curve >= int(doc.curves.size())) sel.curve = -1;
+    if (sel.triangle >= int(doc.triangles.size())) sel.triangle = -1;
 }
 
 namespace {
-// The selected points, else the points of the selected patch or net.
+// The selected points, else the points of the selected patch, net or triangle.
 std::vector<Vec3> selectedPositions(const Document& doc, const Selection& sel) {
     std::vector<Vec3> pts;
     auto add = [&](uint32_t p) {
@@ -49,6 +50,8 @@ std::vector<Vec3> selectedPositions(const Document& doc, const Selection& sel) {
         for (uint32_t p : doc.patches[size_t(sel.patch)].idx) add(p);
     if (pts.empty() && sel.surface >= 0 && sel.surface < int(doc.surfaces.size()))
         for (uint32_t p : doc.surfaces[size_t(sel.surface)].idx) add(p);
+    if (pts.empty() && sel.triangle >= 0 && sel.triangle < int(doc.triangles.size()))
+        for (uint32_t p : doc.triangles[size_t(sel.triangle)].idx) add(p);
     return pts;
 }
 }  // namespace

@@ -14,10 +14,11 @@ struct Selection {
     int patch = -1;                // Document::patches index, -1 = none
     int surface = -1;              // Document::surfaces index (a net), -1 = none
     int curve = -1;                // Document::curves index, -1 = none
+    int triangle = -1;             // Document::triangles index (a Bézier triangle), -1 = none
 
     bool contains(uint32_t p) const;
-    bool empty() const { return points.empty() && patch < 0 && surface < 0 && curve < 0; }
-    void clear() { points.clear(); patch = -1; surface = -1; curve = -1; }
+    bool empty() const { return points.empty() && patch < 0 && surface < 0 && curve < 0 && triangle < 0; }
+    void clear() { points.clear(); patch = -1; surface = -1; curve = -1; triangle = -1; }
     bool operator==(const Selection&) const = default;
 };
 
@@ -29,9 +30,9 @@ void applyBox(Selection& sel, const std::vector<uint32_t>& boxed, bool shift);
 // Drops indices that no longer exist (after an edit shrank the pool or the patch list).
 void clampSelection(Selection& sel, const Document& doc);
 
-// Mean of the selected points (or of the selected patch's or net's points); the origin when empty.
+// Mean of the selected points (or of the selected patch's, net's or triangle's points); the origin when empty.
 Vec3 selectionCentroid(const Document& doc, const Selection& sel);
-// Bounds of what F frames: the selected points, else the selected patch or net, else the whole model.
+// Bounds of what F frames: the selected points, else the selected patch, net or triangle, else the whole model.
 Bounds frameTargetBounds(const Document& doc, const Selection& sel);
 
 // --- Camera navigation (pixel deltas, y down) ---

@@ -203,7 +203,9 @@ TEST(Gltf, BezierTriangleExportsAreValidAndRoundTrip) {
                 options.cage = level == 5;
                 pw::GltfExportStats stats;
                 stats = pw::exportGltfWithStats(doc, out, options);
-                if (doc.patches.empty()) EXPECT_EQ(stats.triangles, size_t(6 * level * level));
+                if (doc.patches.empty()) {
+                    EXPECT_EQ(stats.triangles, size_t(6 * level * level));
+                }
                 const tinygltf::Model model = loadWithTinygltf(out);
                 ASSERT_EQ(model.meshes.size(), 1u);
                 const size_t surfacePrims = merge ? 1 : doc.patches.size() + doc.triangles.size();

@@ -15,6 +15,8 @@
 #include "patch_ops.hpp"
 #include "patchwork_format.hpp"
 #include "picking.hpp"
+#include "selection.hpp"
+#include "bezier_triangle.hpp"
 #include "support.hpp"
 
 using namespace pw;
@@ -169,4 +171,70 @@ TEST(TriangleCli, InfoCountsTriangles) {
     const auto j = nlohmann::json::parse(r.output);
     EXPECT_EQ(j["triangles"], 6);
     EXPECT_EQ(j["points"], 37);
+}
+
+TEST(TriangleOps, AddedTriangleIsFlatWithItsNormalUp) {
+    for (bool zUp : {true, false}) {
+        Document doc = builtinTeapot();
+        const size_t before = doc.points.size();
+        const Vec3 c(1.0, 2.0, 3.0);
+        const uint32_t t = addTriangle(doc, c, 2.0, zUp);
+        ASSERT_EQ(t, 0u);
+        EXPECT_EQ(doc.points.size(), before + 10);
+        const Net10 net = gatherTriangleNet(doc, doc.triangles[t].idx);
+        const TriPoint mid = evaluateTriangle(net, 1.0 / 3.0, 1.0 / 3.0);
+        EXPECT_NEAR(glm::length(mid.p - c), 0.0, 1e-12);  // the centroid is the centre
+        EXPECT_NEAR(mid.n[zUp ? 2 : 1], 1.0, 1e-12) << "normal up (+z, or +y when y is up)";
+        // Equilateral with side 2: the corners are 2 apart.
+        const Vec3 U = evaluateTriangle(net, 1, 0).p, V = evaluateTriangle(net, 0, 1).p, W = evaluateTriangle(net, 0, 0).p;
+        EXPECT_NEAR(glm::length(U - V), 2.0, 1e-12);
+        EXPECT_NEAR(glm::length(V - W), 2.0, 1e-12);
+        EXPECT_NEAR(glm::length(W - U), 2.0, 1e-12);
+    }
+}
+
+TEST(TriangleOps, PickingFindsTheTriangleUnderTheRay) {
+    Document doc;
+    addTriangle(doc, Vec3(0.0), 2.0);
+    addTriangle(doc, Vec3(5.0, 0.0, 0.0), 2.0);
+    const Ray down{Vec3(5.1, 0.1, 10.0), Vec3(0.0, 0.0, -1.0)};
+    const auto hit = pickSurface(doc, down);
+    ASSERT_TRUE(hit);
+    EXPECT_EQ(hit->triangle, 1);
+    EXPECT_EQ(hit->patch, -1);
+    EXPECT_EQ(hit->instance, -1);
+    EXPECT_NEAR(hit->t, 10.0, 1e-9);
+    EXPECT_GT(hit->u, 0.0);
+    EXPECT_GT(hit->v, 0.0);
+    EXPECT_LT(hit->u + hit->v, 1.0);
+    EXPECT_FALSE(pickSurface(doc, Ray{Vec3(2.5, 0.0, 10.0), Vec3(0.0, 0.0, -1.0)}));  // between them
+    // A quad patch in front of the triangle wins: the nearest hit counts.
+    addFlatPatch(doc, Vec3(5.0, 0.0, 1.0), 3.0);
+    const auto front = pickSurface(doc, down);
+    ASSERT_TRUE(front);
+    EXPECT_EQ(front->patch, 0);
+    EXPECT_EQ(front->triangle, -1);
+}
+
+TEST(TriangleOps, DuplicateAndDeleteKeepThePoolTidy) {
+    Document doc;
+    addTriangle(doc, Vec3(0.0), 1.0);
+    const uint32_t copy = duplicateTriangle(doc, 0, Vec3(0.0, 0.0, 2.0));
+    ASSERT_EQ(doc.triangles.size(), 2u);
+    EXPECT_EQ(doc.points.size(), 20u);
+    for (int k = 0; k < 10; ++k)
+        EXPECT_EQ(doc.points[doc.triangles[copy].idx[size_t(k)]], doc.points[doc.triangles[0].idx[size_t(k)]] + Vec3(0.0, 0.0, 2.0));
+    Selection sel;
+    sel.triangle = 1;
+    EXPECT_FALSE(sel.empty());
+    EXPECT_NEAR(selectionCentroid(doc, sel).z, 2.0, 1e-12);
+    deleteTriangle(doc, 0);
+    EXPECT_EQ(doc.triangles.size(), 1u);
+    EXPECT_EQ(doc.points.size(), 10u);
+    for (uint32_t i : doc.triangles[0].idx) EXPECT_NEAR(doc.points[i].z, 2.0, 1e-12);
+    clampSelection(sel, doc);
+    EXPECT_EQ(sel.triangle, -1);
+    EXPECT_THROW(deleteTriangle(doc, 3), EditError);
+    EXPECT_THROW(duplicateTriangle(doc, 1, Vec3(0.0)), EditError);
+    EXPECT_EQ(doc.triangles.size(), 1u);
 }

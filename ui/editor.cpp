@@ -580,6 +580,8 @@ void Editor::writeTrace() {
     j["joins"] = doc_.joins.size();
     j["surfaces"] = doc_.surfaces.size();
     j["curves"] = doc_.curves.size();
+    j["bezierTriangles"] = doc_.triangles.size();
+    j["selectedTriangle"] = sel_.triangle;
     j["isocurves"] = doc_.display.showIsocurves;
     j["maxConstraintResidual"] = mode_ == Interaction::None ? maxConstraintResidual(doc_) : -1.0;
     // Where the points are on screen, in the pane the mouse works in (the whole window unless split).

@@ -44,8 +44,8 @@ const KeyHelp kKeys[] = {
     {"Ctrl (while moving)", "Snap to the grid"},
     {"Esc / right click (while moving)", "Cancel the move and restore"},
     {"A / Alt+A", "Select all points / deselect"},
-    {"Shift + D", "Duplicate the selected patch"},
-    {"Delete", "Delete the selected patch or net"},
+    {"Shift + D", "Duplicate the selected patch or Bézier triangle"},
+    {"Delete", "Delete the selected patch, net or Bézier triangle"},
     {"Ctrl + Z / Ctrl + Shift + Z (Ctrl + Y)", "Undo / redo"},
     {"Ctrl + N / Ctrl + O", "New / open"},
     {"Ctrl + S / Ctrl + Shift + S", "Save / save as"},
@@ -204,9 +204,8 @@ void Editor::drawLeftPanel() {
             char label[160];
             std::snprintf(label, sizeof label, "%zu  %s", i, p.name.empty() ? "patch" : p.name.c_str());
             if (ImGui::Selectable(label, sel_.patch == int(i))) {
+                sel_.clear();
                 sel_.patch = int(i);
-                sel_.surface = -1;
-                sel_.points.clear();
             }
         }
         for (size_t i = 0; i < doc_.surfaces.size(); ++i) {
@@ -214,9 +213,16 @@ void Editor::drawLeftPanel() {
             std::snprintf(label, sizeof label, "net %zu  %s (%ux%u, %s)", i, doc_.surfaces[i].name.c_str(), doc_.surfaces[i].rows,
                           doc_.surfaces[i].cols, basisName(doc_.surfaces[i].basis).data());
             if (ImGui::Selectable(label, sel_.surface == int(i))) {
+                sel_.clear();
                 sel_.surface = int(i);
-                sel_.patch = -1;
-                sel_.points.clear();
+            }
+        }
+        for (size_t i = 0; i < doc_.triangles.size(); ++i) {
+            char label[160];
+            std::snprintf(label, sizeof label, "triangle %zu  %s", i, doc_.triangles[i].name.c_str());
+            if (ImGui::Selectable(label, sel_.triangle == int(i))) {
+                sel_.clear();
+                sel_.triangle = int(i);
             }
         }
         for (size_t i = 0; i < doc_.curves.size(); ++i) {
@@ -229,9 +235,9 @@ void Editor::drawLeftPanel() {
             }
         }
         ImGui::EndChild();
-        tip("Patches, net surfaces and curves of the document; click to select one");
+        tip("Patches, net surfaces, Bézier triangles and curves of the document; click to select one");
         ImGui::Text("%zu points, %zu patches, %zu joins", doc_.points.size(), doc_.patches.size(), doc_.joins.size());
-        if (!doc_.curves.empty()) ImGui::Text("%zu curves", doc_.curves.size());
+        if (!doc_.curves.empty() || !doc_.triangles.empty()) ImGui::Text("%zu triangles, %zu curves", doc_.triangles.size(), doc_.curves.size());
     }
 
     // Inspector.
@@ -287,6 +293,33 @@ void Editor::drawLeftPanel() {
                 if (ImGui::SliderFloat2("Inner##ov", pt.tessOverride->data() + 4, 1.0f, 64.0f, "%.0f")) documentChanged(false);
                 if (ImGui::IsItemDeactivatedAfterEdit()) commit("Patch tessellation override");
                 tip("Inner levels along u and v");
+            }
+        }
+        if (sel_.triangle >= 0 && sel_.triangle < int(doc_.triangles.size())) {
+            ImGui::Separator();
+            TrianglePatch& tri = doc_.triangles[size_t(sel_.triangle)];
+            ImGui::Text("Bézier triangle %d  (10 points)", sel_.triangle);
+            char name[128];
+            std::snprintf(name, sizeof name, "%s", tri.name.c_str());
+            if (ImGui::InputText("Name##tri", name, sizeof name)) tri.name = name;
+            if (ImGui::IsItemDeactivatedAfterEdit()) commit("Rename triangle");
+            tip("Name shown in the outliner");
+            bool ov = tri.tessOverride.has_value();
+            if (ImGui::Checkbox("Override tessellation##tri", &ov)) {
+                if (ov) tri.tessOverride = std::array<float, 4>{8, 8, 8, 8};
+                else tri.tessOverride.reset();
+                commit("Triangle tessellation override");
+                documentChanged(false);
+            }
+            traceItem("inspector.triOverride");
+            tip("Give this triangle its own three outer levels and inner level");
+            if (tri.tessOverride) {
+                if (ImGui::SliderFloat3("Outer##triov", tri.tessOverride->data(), 1.0f, 64.0f, "%.0f")) documentChanged(false);
+                if (ImGui::IsItemDeactivatedAfterEdit()) commit("Triangle tessellation override");
+                tip("Outer levels of edges u = 0, v = 0, w = 0");
+                if (ImGui::SliderFloat("Inner##triov", tri.tessOverride->data() + 3, 1.0f, 64.0f, "%.0f")) documentChanged(false);
+                if (ImGui::IsItemDeactivatedAfterEdit()) commit("Triangle tessellation override");
+                tip("Inner level");
             }
         }
     }
@@ -381,6 +414,31 @@ void Editor::drawLeftPanel() {
             sel_.clear();
         }
         tip("Delete the curve selected in the outliner");
+        ImGui::EndDisabled();
+        const bool addTri = ImGui::Button("Add triangle");
+        traceItem("op.addTriangle");
+        if (addTri) {
+            const Vec3 c(cam_.target[0], cam_.target[1], cam_.target[2]);
+            const double size = std::max(0.2 * modelSize(doc_), 1.0);
+            int created = -1;
+            patchOp("Add triangle", [&](Document& d) { created = int(addTriangle(d, c, size, cam_.zUp)); });
+            if (created >= 0) {
+                sel_.clear();
+                sel_.triangle = created;
+            }
+        }
+        tip("Add a flat cubic Bézier triangle (10 points) at the view target, drawn through the triangle domain");
+        const bool hasTri = sel_.triangle >= 0 && sel_.triangle < int(doc_.triangles.size());
+        ImGui::SameLine();
+        ImGui::BeginDisabled(!hasTri);
+        const bool delTri = ImGui::Button("Delete triangle");
+        traceItem("op.deleteTriangle");
+        if (delTri) {
+            const uint32_t t = uint32_t(sel_.triangle);
+            patchOp("Delete triangle", [&](Document& d) { deleteTriangle(d, t); });
+            sel_.clear();
+        }
+        tip("Delete the selected triangle (click its surface, or the outliner; Delete key; Shift+D duplicates)");
         ImGui::EndDisabled();
         ImGui::Separator();
         ImGui::TextUnformatted("Join two boundary edges");

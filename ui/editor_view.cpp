@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include "camera_math.hpp"
+#include "bezier_triangle.hpp"
 #include "editor.hpp"
 #include "patch_eval.hpp"
 #include "net_ops.hpp"
@@ -128,6 +129,17 @@ void Editor::viewportInput() {
                     const uint32_t s = uint32_t(sel_.surface);
                     patchOp("Delete net", [s](Document& d) { deleteNetSurface(d, s); });
                     sel_.clear();
+                } else if (keyPressed(GLFW_KEY_DELETE, 0) && sel_.triangle >= 0) {
+                    const uint32_t t = uint32_t(sel_.triangle);
+                    patchOp("Delete triangle", [t](Document& d) { deleteTriangle(d, t); });
+                    sel_.clear();
+                }
+                if (keyPressed(GLFW_KEY_D, S) && sel_.triangle >= 0) {
+                    const uint32_t t = uint32_t(sel_.triangle);
+                    const Vec3 off(0.1 * modelSize(doc_), 0.0, 0.0);
+                    int created = -1;
+                    patchOp("Duplicate triangle", [t, off, &created](Document& d) { created = int(duplicateTriangle(d, t, off)); });
+                    if (created >= 0) sel_.triangle = created;
                 }
                 if (keyPressed(GLFW_KEY_D, S) && sel_.patch >= 0) {
                     const uint32_t p = uint32_t(sel_.patch);
@@ -225,13 +237,16 @@ void Editor::viewportInput() {
                     if (!pressShift_) sel_.points.clear();
                     if (hit && hit->patch >= 0) {
                         sel_.patch = hit->patch;
-                        sel_.surface = -1;
+                        sel_.surface = sel_.triangle = -1;
                         lastEdge_ = nearestEdge(hit->u, hit->v);
                     } else if (hit && hit->surface >= 0) {
                         sel_.surface = hit->surface;
-                        sel_.patch = -1;
-                    } else if (!pressShift_) {
+                        sel_.patch = sel_.triangle = -1;
+                    } else if (hit && hit->triangle >= 0) {
+                        sel_.triangle = hit->triangle;
                         sel_.patch = sel_.surface = -1;
+                    } else if (!pressShift_) {
+                        sel_.patch = sel_.surface = sel_.triangle = -1;
                     }
                 } else {
                     applyBox(sel_, pointsInBox(cam_, doc_.points, {pressX_, pressY_}, {mx, my}, W, H, &usedMask_), pressShift_);
@@ -387,6 +402,22 @@ void Editor::drawPaneOverlays(const std::array<float, 4>& pane, bool active) {
                      hl ? IM_COL32(255, 120, 255, 255) : IM_COL32(80, 220, 255, 255), hl ? 4.0f : 2.5f);
             }
         }
+    }
+
+    // Selected Bézier triangle: its three boundary curves.
+    if (sel_.triangle >= 0 && sel_.triangle < int(doc_.triangles.size())) {
+        const Net10 net = gatherTriangleNet(doc_, doc_.triangles[size_t(sel_.triangle)].idx);
+        const int n = 24;
+        for (int e = 0; e < 3; ++e)
+            for (int k = 0; k < n; ++k) {
+                // Edge e runs from one corner to the next (u = 0: v to w, v = 0: w to u, w = 0: u to v).
+                auto at = [&](int s) {
+                    const double t = double(s) / n;
+                    const double u = e == 0 ? 0.0 : e == 1 ? t : 1.0 - t, v = e == 0 ? 1.0 - t : e == 1 ? 0.0 : t;
+                    return evaluateTriangle(net, u, v).p;
+                };
+                line(at(k), at(k + 1), IM_COL32(80, 220, 255, 255), 2.5f);
+            }
     }
 
     // Selected and hovered points.

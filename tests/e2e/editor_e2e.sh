@@ -182,6 +182,14 @@ wait_for "t['modal'] == ''"
 # --- 6c. a net: add it, switch nothing, convert it to Bézier patches, undo ----------------------
 click_item net.add
 wait_for "t['surfaces'] == 1 and t['patches'] == 32 and 'net.toPatches' in t['items']"
+# The net's panel grows the scene panel past the window: scroll it until the button is in view.
+xdotool mousemove --sync 150 500
+for i in $(seq 10); do
+    [ "$(trace "int(t['items']['net.toPatches'][1] < 750)")" = "1" ] && break
+    xdotool click 5
+    sleep 0.2
+done
+wait_for "t['items']['net.toPatches'][1] < 750"
 click_item net.toPatches
 # a 7 x 7 B-spline net has 4 x 4 windows: 16 Bézier patches, 24 C1 joins that hold
 wait_for "t['surfaces'] == 0 and t['patches'] == 48 and t['joins'] == 76 and t['maxConstraintResidual'] < 1e-9"

@@ -65,6 +65,7 @@ STEPS=$(trace "t['undoSteps']")
 # Split 3D view: two panes of the model, equal and fractional_odd, each counted on its own; a pane's
 # own level; a drag in the second pane moves the point under the mouse there. (The domain and
 # shader windows are closed first so that they do not cover the panes.)
+wait_for "t['triangles'] > 0"
 SINGLE=$(trace "t['triangles']")
 click_item teach.domain
 click_item teach.shaders
@@ -144,6 +145,44 @@ xdotool key F5
 wait_for "not t['presentation'] and 'panel.teaching' in t['items']"
 check_validation
 say "presentation mode on and off"
+
+# Bézier triangles in the editor: a new document (one flat patch), seen from the top; the patch is
+# picked by its surface and deleted, a triangle added, picked by its surface, deleted with the
+# Delete key, and brought back by undo.
+xdotool mousemove --sync 640 700
+xdotool key ctrl+n
+wait_for "t['modal'] == 'unsaved' or t['file'] == ''"
+if [ "$(trace "t['modal']")" = "unsaved" ]; then click_item unsaved.discard; fi
+wait_for "t['patches'] == 1 and t['bezierTriangles'] == 0 and t['modal'] == ''"
+click_item teach.domain  # out of the way of the clicks
+wait_for "len(t['domain']) == 0"
+xdotool mousemove --sync 640 700
+xdotool key 7 alt+a
+# click_centre: clicks the surface 16 pixels below the mean of the projected points in use (a
+# triangle's centre is a control point, which a click would select instead).
+click_centre() {
+    read -r CX CY < <(trace "' '.join(str(round(sum(p[k] for p in t['points'] if p) / len([p for p in t['points'] if p]))) for k in (0, 1))")
+    xdotool mousemove --sync $CX $((CY + 16))
+    sleep 0.2
+    xdotool click 1
+}
+click_centre
+wait_for "t['selectedPatch'] == 0"
+xdotool key Delete
+wait_for "t['patches'] == 0"
+click_item op.addTriangle
+wait_for "t['bezierTriangles'] == 1 and t['selectedTriangle'] == 0"
+xdotool mousemove --sync 640 700
+xdotool key alt+a
+wait_for "t['selectedTriangle'] == -1"
+click_centre
+wait_for "t['selectedTriangle'] == 0"
+xdotool key Delete
+wait_for "t['bezierTriangles'] == 0 and t['selectedTriangle'] == -1"
+xdotool key ctrl+z
+wait_for "t['bezierTriangles'] == 1"
+check_validation
+say "Bézier triangle: added, picked by its surface, deleted, restored by undo"
 
 quit_editor
 say "PASS"
