@@ -73,13 +73,21 @@ uint32_t addFlatPatch(Document& doc, const Vec3& center, double size, bool zUp) 
     return uint32_t(doc.patches.size() - 1);
 }
 
+namespace {
+// A copy of items[k] (a patch or a triangle) with fresh points moved by `offset`, appended.
+template <class Item>
+uint32_t duplicateWithOwnPoints(Document& doc, std::vector<Item>& items, uint32_t k, const Vec3& offset, const char* kind) {
+    Item copy = items[k];
+    for (uint32_t& i : copy.idx) i = addPoint(doc, doc.points[i] + offset);
+    copy.name = (copy.name.empty() ? std::string(kind) + " " + std::to_string(k) : copy.name) + " copy";
+    items.push_back(std::move(copy));
+    return uint32_t(items.size() - 1);
+}
+}  // namespace
+
 uint32_t duplicatePatch(Document& doc, uint32_t p, const Vec3& offset) {
     checkPatch(doc, p);
-    Patch copy = doc.patches[p];
-    for (uint32_t& i : copy.idx) i = addPoint(doc, doc.points[i] + offset);
-    copy.name = (copy.name.empty() ? "patch " + std::to_string(p) : copy.name) + " copy";
-    doc.patches.push_back(copy);
-    return uint32_t(doc.patches.size() - 1);
+    return duplicateWithOwnPoints(doc, doc.patches, p, offset, "patch");
 }
 
 void deletePatch(Document& doc, uint32_t p) {
@@ -313,11 +321,7 @@ void checkTriangle(const Document& doc, uint32_t t) {
 
 uint32_t duplicateTriangle(Document& doc, uint32_t t, const Vec3& offset) {
     checkTriangle(doc, t);
-    TrianglePatch copy = doc.triangles[t];
-    for (uint32_t& i : copy.idx) i = addPoint(doc, doc.points[i] + offset);
-    copy.name = (copy.name.empty() ? "triangle " + std::to_string(t) : copy.name) + " copy";
-    doc.triangles.push_back(copy);
-    return uint32_t(doc.triangles.size() - 1);
+    return duplicateWithOwnPoints(doc, doc.triangles, t, offset, "triangle");
 }
 
 void deleteTriangle(Document& doc, uint32_t t) {
