@@ -30,13 +30,14 @@ layout(location = 4) out vec2 outCurv;  // Gaussian, mean
 vec3 cp(int s) { return gl_in[s].gl_Position.xyz; }
 
 void weights(float t, out vec4 w, out vec4 dw, out vec4 ddw) {
-    if (draw.basisKind == 0u) {  // Bernstein from t and s = 1 - t
+    if (draw.basisKind == 0u) {  // Bernstein and its derivative from t and s = 1 - t
         float s = 1.0 - t;
         w = vec4(s * s * s, 3.0 * s * s * t, 3.0 * s * t * t, t * t * t);
+        dw = 3.0 * vec4(-s * s, s * (s - 2.0 * t), t * (2.0 * s - t), t * t);
     } else {
         w = draw.basis * vec4(t * t * t, t * t, t, 1.0);
+        dw = draw.basis * vec4(3.0 * t * t, 2.0 * t, 1.0, 0.0);
     }
-    dw = draw.basis * vec4(3.0 * t * t, 2.0 * t, 1.0, 0.0);
     ddw = draw.basis * vec4(6.0 * t, 2.0, 0.0, 0.0);
 }
 
@@ -95,8 +96,8 @@ vec3 normalAt(float u, float v, Derivs d) {
     // Common case first: du x dv is well defined away from collapsed edges.
     vec3 n = cross(d.du, d.dv);
     float len2 = dot(n, n);
-    bool duZero = length(d.du) <= 1e-4 * scale;
-    bool dvZero = length(d.dv) <= 1e-4 * scale;
+    bool duZero = dot(d.du, d.du) <= 1e-8 * s2;  // |du| <= 1e-4 scale, without a square root
+    bool dvZero = dot(d.dv, d.dv) <= 1e-8 * s2;
     if (!duZero && !dvZero && len2 > 1e-12 * s2 * s2) return n * inversesqrt(len2);
     // A collapsed row or column (teapot lid top, bottom centre): the derivative along it is float
     // noise, so use the limit from inside through the mixed derivative.
