@@ -161,9 +161,8 @@ int runRender(const RenderArgs& a) {
     std::vector<render::ModelPane> panes;
     for (const PaneSpec& p : a.compare.empty() ? std::vector<PaneSpec>{} : parsePaneSpecs("render", "--compare", a.compare))
         panes.push_back({p.spacing, p.level});
-    const auto rects = render::splitPanes(int(std::max<size_t>(panes.size(), 1)), {0.0f, 0.0f, float(w), float(h)});
-    const auto first = render::pixelRect(rects.front());  // the camera is framed for a pane's aspect
-    const render::RenderOptions opt = buildRenderOptions(a, doc, uint32_t(std::max(first[2], 1)), uint32_t(std::max(first[3], 1)));
+    const auto [paneW, paneH] = render::paneSize(int(panes.size()), w, h);  // the camera is framed for a pane's aspect
+    const render::RenderOptions opt = buildRenderOptions(a, doc, paneW, paneH);
 
     render::DeviceOptions dopt;
     dopt.name = a.device;
@@ -191,19 +190,19 @@ int runRender(const RenderArgs& a) {
         } else {
             const render::LabelRaster labels;
             std::vector<uint8_t> rgba;
-            const auto stats = render::renderModelFigure(renderer, target, labels, opt, panes, 0.0f, rgba);
+            const auto results = render::renderModelFigure(renderer, target, labels, opt, panes, 0.0f, rgba);
             render::writePng(a.output, w, h, rgba);
             nlohmann::json j;
             j["device"] = dev.name();
-            for (size_t i = 0; i < panes.size(); ++i) {
-                const render::RenderOptions po = render::paneOptions(opt, panes[i], rects[i], i);
-                std::cout << "wrote " << a.output << " pane " << i + 1 << ": " << render::paneCaption(po.tess, stats[i].triangles())
-                          << ", GPU " << stats[i].gpuMs << " ms\n";
-                nlohmann::json p = nlohmann::json::parse(render::statsToJson(stats[i]));
-                p["spacing"] = spacingName(po.tess.spacing);
-                p["outer"] = po.tess.outer;
-                p["inner"] = po.tess.inner;
-                p["rect"] = po.pane;
+            for (size_t i = 0; i < results.size(); ++i) {
+                const render::PaneResult& r = results[i];
+                std::cout << "wrote " << a.output << " pane " << i + 1 << ": " << render::paneCaption(r.tess, r.stats.triangles())
+                          << ", GPU " << r.stats.gpuMs << " ms\n";
+                nlohmann::json p = nlohmann::json::parse(render::statsToJson(r.stats));
+                p["spacing"] = spacingName(r.tess.spacing);
+                p["outer"] = r.tess.outer;
+                p["inner"] = r.tess.inner;
+                p["rect"] = r.rect;
                 j["panes"].push_back(std::move(p));
             }
             if (!a.stats.empty()) writeFileAtomic(a.stats, j.dump(2) + "\n");

@@ -93,11 +93,10 @@ int runSweep(const SweepArgs& a) {
             if (p.level > 0.0f) badOption(cmd, "--compare", "a sweep sets the levels itself; give partitionings only");
             modelPanes.push_back({p.spacing, 0.0f});
         }
-    const auto rects = render::splitPanes(int(std::max<size_t>(modelPanes.size(), 1)), {0.0f, 0.0f, float(w), float(h)});
-    const auto first = render::pixelRect(rects.front());
     render::RenderOptions opt;
     if (!domain) {
-        opt = buildRenderOptions(a.render, doc, uint32_t(std::max(first[2], 1)), uint32_t(std::max(first[3], 1)));
+        const auto [paneW, paneH] = render::paneSize(int(modelPanes.size()), w, h);  // the camera is framed for a pane
+        opt = buildRenderOptions(a.render, doc, paneW, paneH);
         if (a.render.overlay.empty()) opt.display.showWireframe = true;  // popping and sliding show in the wireframe
         opt.tess.adaptive = AdaptiveMode::None;
     }
@@ -126,10 +125,7 @@ int runSweep(const SweepArgs& a) {
             std::string text = "level " + render::formatLevel(level);
             if (domain) {
                 std::vector<render::DomainPane> now = panes;
-                for (auto& p : now) {
-                    for (float& l : p.levels.outer) l = l > 0.0f ? level : 0.0f;
-                    for (float& l : p.levels.inner) l = l > 0.0f ? level : 0.0f;
-                }
+                for (auto& p : now) p.levels = withUniformLevel(p.levels, level);
                 render::renderDomainFigure(*view, target, labels, now, 0.0f, rgba);
             } else if (!modelPanes.empty()) {
                 opt.tess.outer = {level, level, level, level};

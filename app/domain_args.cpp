@@ -58,10 +58,7 @@ std::vector<render::DomainPane> domainPanes(const std::string& command, const Do
         for (const PaneSpec& spec : parsePaneSpecs(command, "--compare", a.compare)) {
             render::DomainPane p = base;
             p.spacing = spec.spacing;
-            if (spec.level > 0.0f) {  // the pane's own level on every edge the domain has
-                for (float& l : p.levels.outer) l = l > 0.0f ? spec.level : 0.0f;
-                for (float& l : p.levels.inner) l = l > 0.0f ? spec.level : 0.0f;
-            }
+            if (spec.level > 0.0f) p.levels = withUniformLevel(p.levels, spec.level);  // the pane's own level
             panes.push_back(p);
         }
     }

@@ -132,4 +132,11 @@ DomainCounts expectedDomainCounts(DomainKind kind, const DomainLevels& levels, S
     return out;
 }
 
+DomainLevels withUniformLevel(const DomainLevels& used, float level) {
+    DomainLevels out = used;
+    for (float& l : out.outer) l = l > 0.0f ? level : 0.0f;
+    for (float& l : out.inner) l = l > 0.0f ? level : 0.0f;
+    return out;
+}
+
 }  // namespace pw

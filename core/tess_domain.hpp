@@ -26,6 +26,9 @@ struct DomainLevels {
     bool operator==(const DomainLevels&) const = default;
 };
 
+// `used` with every level its domain uses (the non-zero ones) set to `level`; unused stay 0.
+DomainLevels withUniformLevel(const DomainLevels& used, float level);
+
 // The level the control shader hands the tessellator: pow2 is emulated there (next power of two
 // of the integer level, then equal spacing); the other modes pass the level through.
 float controlShaderLevel(float level, Spacing s);

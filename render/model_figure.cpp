@@ -6,6 +6,11 @@
 
 namespace pw::render {
 
+std::array<uint32_t, 2> paneSize(int count, uint32_t width, uint32_t height) {
+    const auto r = pixelRect(splitPanes(std::max(count, 1), {0.0f, 0.0f, float(width), float(height)}).front());
+    return {uint32_t(std::max(r[2], 1)), uint32_t(std::max(r[3], 1))};
+}
+
 RenderOptions paneOptions(const RenderOptions& base, const ModelPane& pane, const std::array<float, 4>& rect, size_t index) {
     RenderOptions o = base;
     o.tess.spacing = pane.spacing;
@@ -59,17 +64,15 @@ std::string paneCaption(const TessSettings& ts, uint64_t triangles, bool twoLine
            " triangles";
 }
 
-std::vector<FrameStats> renderModelFigure(Renderer& renderer, OffscreenTarget& target, const LabelRaster& labels,
+std::vector<PaneResult> renderModelFigure(Renderer& renderer, OffscreenTarget& target, const LabelRaster& labels,
                                           const RenderOptions& base, const std::vector<ModelPane>& panes, float textPixels,
                                           std::vector<uint8_t>& rgba) {
     const VkExtent2D ext = target.extent();
     const auto rects = splitPanes(int(panes.size()), {0.0f, 0.0f, float(ext.width), float(ext.height)});
-    std::vector<FrameStats> stats;
-    std::vector<TessSettings> used;
+    std::vector<PaneResult> results;
     for (size_t i = 0; i < rects.size(); ++i) {
         const RenderOptions o = paneOptions(base, panes[i], rects[i], i);
-        stats.push_back(renderer.render(o));
-        used.push_back(o.tess);
+        results.push_back({o.tess, o.pane, renderer.render(o)});
     }
     rgba = target.pixels();
     PixelImage img{ext.width, ext.height, rgba};
@@ -77,10 +80,10 @@ std::vector<FrameStats> renderModelFigure(Renderer& renderer, OffscreenTarget& t
         TextStyle st;
         st.pixels = textPixels > 0.0f ? textPixels : std::clamp(std::min(rects[i][2], rects[i][3]) / 24.0f, 11.0f, 36.0f);
         st.box = true;
-        labels.draw(img, rects[i][0] + st.pixels * 0.5f, rects[i][1] + st.pixels * 0.5f, paneCaption(used[i], stats[i].triangles()), st);
+        labels.draw(img, rects[i][0] + st.pixels * 0.5f, rects[i][1] + st.pixels * 0.5f, paneCaption(results[i].tess, results[i].stats.triangles()), st);
     }
     drawPaneDividers(rgba, ext.width, ext.height, rects);
-    return stats;
+    return results;
 }
 
 }  // namespace pw::render

@@ -19,6 +19,16 @@ struct ModelPane {
     float level = 0.0f;  // a uniform level for this pane (no adaptivity); 0: the document's levels
 };
 
+// What one pane drew: its tessellation settings (after paneOptions), its rectangle and statistics.
+struct PaneResult {
+    TessSettings tess;
+    std::array<int, 4> rect{};
+    FrameStats stats;
+};
+
+// The size in whole pixels of each of `count` panes (at least 1) sharing a width x height target.
+std::array<uint32_t, 2> paneSize(int count, uint32_t width, uint32_t height);
+
 // `base` drawn as pane `index` into `rect` (target pixels): its partitioning and level, the first
 // pane clearing the target, the later ones drawing beside it.
 RenderOptions paneOptions(const RenderOptions& base, const ModelPane& pane, const std::array<float, 4>& rect, size_t index);
@@ -29,8 +39,8 @@ std::string paneCaption(const TessSettings& ts, uint64_t triangles, bool twoLine
 
 // Draws the panes side by side (1, 2) or in a 2 x 2 grid (3, 4) into `target` (which must read
 // back), one submission each, captions them with `labels` (`textPixels` line height, 0: from the
-// pane size) and returns each pane's statistics; the image is in `rgba` (target-sized).
-std::vector<FrameStats> renderModelFigure(Renderer& renderer, OffscreenTarget& target, const LabelRaster& labels,
+// pane size) and returns what each pane drew; the image is in `rgba` (target-sized).
+std::vector<PaneResult> renderModelFigure(Renderer& renderer, OffscreenTarget& target, const LabelRaster& labels,
                                           const RenderOptions& base, const std::vector<ModelPane>& panes, float textPixels,
                                           std::vector<uint8_t>& rgba);
 

@@ -31,12 +31,12 @@ void OffscreenTarget::beginRendering(VkCommandBuffer cmd, const std::array<float
 void OffscreenTarget::pauseRendering(VkCommandBuffer cmd) { pauseColorDepthRendering(cmd); }
 
 void OffscreenTarget::resumeRendering(VkCommandBuffer cmd) {
-    if (readBack_) {  // a later submission draws on top of a finished frame (comparison panes)
+    if (readImageInTransferSrc_) {  // a later submission draws on top of a finished frame (comparison panes)
         imageBarrier(cmd, resolve_.image ? resolve_.image : color_.image, VK_IMAGE_ASPECT_COLOR_BIT,
                      VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
                      VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                      VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT);
-        readBack_ = false;
+        readImageInTransferSrc_ = false;
     }
     begin(cmd, true, {0, 0, 0, 0});
 }
@@ -44,16 +44,16 @@ void OffscreenTarget::resumeRendering(VkCommandBuffer cmd) {
 void OffscreenTarget::begin(VkCommandBuffer cmd, bool load, const std::array<float, 4>& clear) {
     const bool ms = resolve_.image != VK_NULL_HANDLE;
     if (!load) {
-    readBack_ = false;
-    // Previous contents are discarded (UNDEFINED): every frame clears.
-    imageBarrier(cmd, color_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                 VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                 VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT);
-    if (ms)
-        imageBarrier(cmd, resolve_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                     VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT,
-                     VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
-    discardDepthToAttachment(cmd, depth_.image);
+        readImageInTransferSrc_ = false;  // the barriers below start from UNDEFINED
+        // Previous contents are discarded (UNDEFINED): every frame clears.
+        imageBarrier(cmd, color_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                     VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                     VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT);
+        if (ms)
+            imageBarrier(cmd, resolve_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                         VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT,
+                         VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+        discardDepthToAttachment(cmd, depth_.image);
     }
 
     beginColorDepthRendering(cmd, {extent_, color_.view, depth_.view, ms ? resolve_.view : VK_NULL_HANDLE}, load, clear);
@@ -62,7 +62,7 @@ void OffscreenTarget::begin(VkCommandBuffer cmd, bool load, const std::array<flo
 void OffscreenTarget::endRendering(VkCommandBuffer cmd) {
     vkCmdEndRendering(cmd);
     if (!readback_) return;
-    readBack_ = true;
+    readImageInTransferSrc_ = true;
     copyColorAttachmentToHost(cmd, resolve_.image ? resolve_.image : color_.image, extent_, readbackBuf_.buffer);
 }
 

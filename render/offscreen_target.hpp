@@ -39,7 +39,7 @@ private:
     Image color_, resolve_, depth_;
     Buffer readbackBuf_;
     bool readback_ = true;
-    bool readBack_ = false;  // the last recorded endRendering left the read image in TRANSFER_SRC
+    bool readImageInTransferSrc_ = false;  // the last recorded endRendering copied it out, leaving it in TRANSFER_SRC
 };
 
 }  // namespace pw::render

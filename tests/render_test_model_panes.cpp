@@ -114,10 +114,12 @@ TEST_F(ModelPanes, FigureCaptionsEachPane) {
     renderer.setDocument(doc);
     std::vector<uint8_t> rgba;
     const render::RenderOptions base = plainOptions(doc, 3.0f, 1.0);
-    const auto stats = render::renderModelFigure(renderer, target, labels, base, {{Spacing::Equal, 0}, {Spacing::FractionalOdd, 3.5f}}, 14.0f, rgba);
-    ASSERT_EQ(stats.size(), 2u);
-    EXPECT_EQ(stats[0].triangles(), 32u * 2 * 9);
-    EXPECT_EQ(stats[1].triangles(), 32u * 2 * 25);  // fractional_odd 3.5 -> 5
+    const auto panes = render::renderModelFigure(renderer, target, labels, base, {{Spacing::Equal, 0}, {Spacing::FractionalOdd, 3.5f}}, 14.0f, rgba);
+    ASSERT_EQ(panes.size(), 2u);
+    EXPECT_EQ(panes[0].stats.triangles(), 32u * 2 * 9);
+    EXPECT_EQ(panes[1].stats.triangles(), 32u * 2 * 25);  // fractional_odd 3.5 -> 5
+    EXPECT_EQ(panes[1].tess.outer[0], 3.5f);
+    EXPECT_EQ(panes[1].rect, (std::array<int, 4>{200, 0, 200, 200}));
     // Caption boxes (near white) at each pane's top left.
     auto whiteIn = [&](uint32_t x0, uint32_t x1) {
         size_t n = 0;
@@ -150,6 +152,8 @@ TEST(ModelPaneRect, ClampsToTheTargetAndFallsBackToTheWhole) {
     o.pane = {-10, -10, 20, 20};
     EXPECT_TRUE(eq(render::paneRect(o, ext), 0, 0, 10, 10));
     EXPECT_EQ(render::pixelRect({0.4f, 0.6f, 99.5f, 10.2f}), (std::array<int, 4>{0, 1, 100, 10}));
+    EXPECT_EQ(render::paneSize(4, 481, 300), (std::array<uint32_t, 2>{241, 150}));
+    EXPECT_EQ(render::paneSize(0, 20, 10), (std::array<uint32_t, 2>{20, 10}));
 }
 
 }  // namespace

@@ -561,11 +561,11 @@ void Editor::writeTrace() {
     }  // a text field has the keyboard
     j["viewPanes"] = nlohmann::json::array();
     const auto viewRects = viewPaneRects();
-    for (size_t i = 0; viewSplit() && i < viewRects.size() && i < paneStats_.size(); ++i)
-        j["viewPanes"].push_back({{"spacing", spacingName(kPaneSpacings[size_t(paneSpacing_[i])])},
+    for (size_t i = 0; viewSplit() && i < viewRects.size() && i < viewPanes_.size(); ++i)
+        j["viewPanes"].push_back({{"spacing", spacingName(viewPanes_[i].tess.spacing)},
                                   {"level", paneLevel_[i]},
                                   {"rect", viewRects[i]},
-                                  {"triangles", paneStats_[i].triangles()}});
+                                  {"triangles", viewPanes_[i].stats.triangles()}});
     j["activePane"] = activePane_;
     j["shaders"] = {{"open", showShaders_}, {"shown", shaderShown_}, {"inUse", shaderVariantsInUse_}};
     j["items"] = traceItems_;

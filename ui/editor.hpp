@@ -21,6 +21,7 @@
 #include "domain_view.hpp"
 #include "edit_history.hpp"
 #include "gltf_export.hpp"
+#include "model_figure.hpp"
 #include "picking.hpp"
 #include "selection.hpp"
 #include "shader_listing.hpp"
@@ -228,9 +229,10 @@ private:
     int activePane_ = 0;
     std::array<float, 4> viewArea_{0, 0, 1, 1};  // this frame's interaction pane (window pixels)
     void renderView(const render::RenderOptions& o);  // the 3D view: one render, or one per pane
-    void drawPaneCaptions();
-    void drawPaneOverlays(const std::array<float, 4>& pane, bool active);  // ground grid, selection, gizmo of one pane                          // each split pane's partitioning, level, triangles
-    std::vector<render::FrameStats> paneStats_;
+    void drawPaneCaptions();                          // each split pane's partitioning, level, triangles
+    void drawPaneOverlays(const std::array<float, 4>& pane, bool active);  // ground grid, selection, gizmo of one pane
+    std::array<int, 2> viewSize() const;  // the interaction pane's width and height in pixels, at least 1
+    std::vector<render::PaneResult> viewPanes_;  // what each split pane drew last frame
     std::vector<render::DomainViewOptions> domainPanes_;  // this frame's panes, framebuffer pixels
     std::vector<render::DomainStats> domainStats_;
     struct Sweep {

@@ -14,7 +14,6 @@
 #include "editor.hpp"
 #include "imgui_layer.hpp"
 #include "imgui_tip.hpp"
-#include "model_figure.hpp"
 #include "swapchain_target.hpp"
 #include "tess_presets.hpp"
 
@@ -211,10 +210,7 @@ void Editor::drawTeachingWindow() {
             o.kind = DomainKind(domainKind_);
             o.levels = {doc_.tess.outer, doc_.tess.inner};
             o.spacing = domainPaneCount_ > 1 ? kPaneSpacings[paneSpacing_[i]] : doc_.tess.spacing;
-            if (domainPaneCount_ > 1 && paneLevel_[i] > 0.0f) {
-                o.levels.outer.fill(paneLevel_[i]);
-                o.levels.inner.fill(paneLevel_[i]);
-            }
+            if (domainPaneCount_ > 1 && paneLevel_[i] > 0.0f) o.levels = withUniformLevel(o.levels, paneLevel_[i]);
             o.rect = rects[i];
             o.margin = render::domainLabelMargin(px);
             const render::DomainPane pane{o.kind, o.levels, o.spacing};
@@ -256,7 +252,7 @@ std::array<float, 4> Editor::interactionPane(double mx, double my) {
 }
 
 void Editor::renderView(const render::RenderOptions& o) {
-    paneStats_.clear();
+    viewPanes_.clear();
     if (!viewSplit()) {
         stats_ = renderer_->render(o);
         return;
@@ -267,9 +263,10 @@ void Editor::renderView(const render::RenderOptions& o) {
     for (size_t i = 0; i < rects.size(); ++i) {
         const std::array<float, 4> fb{rects[i][0] * sx, rects[i][1] * sy, rects[i][2] * sx, rects[i][3] * sy};
         const render::ModelPane pane{kPaneSpacings[size_t(paneSpacing_[i])], paneLevel_[i]};
-        paneStats_.push_back(renderer_->render(render::paneOptions(o, pane, fb, i)));
+        const render::RenderOptions po = render::paneOptions(o, pane, fb, i);
+        viewPanes_.push_back({po.tess, po.pane, renderer_->render(po)});
     }
-    stats_ = paneStats_.front();
+    stats_ = viewPanes_.front().stats;
 }
 
 void Editor::drawPaneCaptions() {
@@ -278,16 +275,9 @@ void Editor::drawPaneCaptions() {
     ImFont* font = presentation_ && imgui_->presentationFont() ? imgui_->presentationFont() : ImGui::GetFont();
     const float size = presentation_ ? ImGui::GetFontSize() * presentationScale_ * 0.9f : ImGui::GetFontSize();
     const auto rects = viewPaneRects();
-    for (size_t i = 0; i < rects.size() && i < paneStats_.size(); ++i) {
+    for (size_t i = 0; i < rects.size() && i < viewPanes_.size(); ++i) {
         const auto& r = rects[i];
-        TessSettings ts = doc_.tess;
-        ts.spacing = kPaneSpacings[size_t(paneSpacing_[i])];
-        if (paneLevel_[i] > 0.0f) {
-            ts.adaptive = AdaptiveMode::None;
-            ts.outer.fill(paneLevel_[i]);
-            ts.inner.fill(paneLevel_[i]);
-        }
-        const std::string text = render::paneCaption(ts, paneStats_[i].triangles(), true);
+        const std::string text = render::paneCaption(viewPanes_[i].tess, viewPanes_[i].stats.triangles(), true);
         const ImVec2 ts2 = font->CalcTextSizeA(size, FLT_MAX, 0.0f, text.c_str());
         // Top centre; at the bottom in presentation mode, clear of the large levels at the top left.
         const ImVec2 at(r[0] + 0.5f * (r[2] - ts2.x), presentation_ ? r[1] + r[3] - ts2.y - 12.0f : r[1] + 8.0f);

@@ -57,6 +57,8 @@ void Editor::frameBox(const Bounds& box) {
     panCamera(cam_, 0.5 * (left - right), 0.0, H);
 }
 
+std::array<int, 2> Editor::viewSize() const { return {std::max(int(viewArea_[2]), 1), std::max(int(viewArea_[3]), 1)}; }
+
 void Editor::frameSelection() { frameBox(frameTargetBounds(doc_, sel_)); }
 
 void Editor::viewportInput() {
@@ -65,7 +67,7 @@ void Editor::viewportInput() {
     // view is split): each pane is a view of its own size under the one camera.
     viewArea_ = interactionPane(io.MousePos.x, io.MousePos.y);
     const double mx = io.MousePos.x - viewArea_[0], my = io.MousePos.y - viewArea_[1];
-    const int W = std::max(int(viewArea_[2]), 1), H = std::max(int(viewArea_[3]), 1);
+    const auto [W, H] = viewSize();
     const bool overUi = io.WantCaptureMouse && mode_ == Interaction::None;
     const bool mouseValid = ImGui::IsMousePosValid();
 
@@ -272,14 +274,15 @@ void Editor::beginDrag(bool grab) {
     drag_.planeNormal = f;
     drag_.startX = pressX_;
     drag_.startY = pressY_;
-    const Ray ray = rayThroughPixel(cam_, pressX_, pressY_, std::max(int(viewArea_[2]), 1), std::max(int(viewArea_[3]), 1));
+    const auto [W, H] = viewSize();
+    const Ray ray = rayThroughPixel(cam_, pressX_, pressY_, W, H);
     drag_.startHit = intersectPlane(ray, drag_.anchor, f).value_or(drag_.anchor);
     mode_ = grab ? Interaction::Grab : Interaction::DragPoints;
 }
 
 void Editor::updateDrag(double mx, double my) {
     const ImGuiIO& io = ImGui::GetIO();
-    const int W = std::max(int(viewArea_[2]), 1), H = std::max(int(viewArea_[3]), 1);
+    const auto [W, H] = viewSize();
     const Ray ray = rayThroughPixel(cam_, mx, my, W, H);
     Vec3 delta(0.0);
     if (drag_.axis < 0) {
