@@ -4,6 +4,7 @@
 // million triangles per second and the tessellated/plain throughput ratio.
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -24,6 +25,10 @@
 #include "offscreen_target.hpp"
 #include "renderer.hpp"
 
+#ifdef PATCHWORK_HAVE_EDITOR
+#include "editor.hpp"
+#endif
+
 namespace pw::app {
 
 namespace {
@@ -34,6 +39,10 @@ struct BenchArgs {
     std::string json, device;
     bool validation = false;
     bool msaa = false;
+    bool editor = false;  // the editor's frame while dragging, against a bare render
+    std::string file;     // editor: the document (default: the built-in teapot)
+    float level = 16.0f;  // editor: uniform level
+    std::string size = "1280x720";  // editor: window size
 };
 
 struct Scene {
@@ -92,8 +101,28 @@ std::vector<Measure> measureInterleaved(render::Renderer& r, const std::vector<r
     return m;
 }
 
+int runEditorBench(const BenchArgs& a) {
+#ifdef PATCHWORK_HAVE_EDITOR
+    ui::EditorBenchOptions o;
+    o.file = a.file;
+    o.frames = a.frames;
+    o.level = a.level;
+    if (std::sscanf(a.size.c_str(), "%dx%d", &o.width, &o.height) != 2 || o.width < 64 || o.height < 64 || o.width > 16384 ||
+        o.height > 16384)
+        throw InputError("bench", "--size: expected WIDTHxHEIGHT (64..16384), got '" + a.size + "'");
+    o.json = a.json;
+    if (a.validation) ::setenv("PATCHWORK_VALIDATION", "1", 1);  // the editor's device reads it
+    return ui::runEditorBench(o);
+#else
+    (void)a;
+    std::cerr << "patchwork bench: this build has no editor (configure with -DPATCHWORK_BUILD_EDITOR=ON)\n";
+    return 2;
+#endif
+}
+
 int runBench(const BenchArgs& a) {
     if (a.frames < 1 || a.frames > 100000) throw InputError("bench", "--frames: must be from 1 to 100000");
+    if (a.editor) return runEditorBench(a);
     std::vector<Scene> scenes = allScenes();
     for (const std::string& n : a.scenes)
         if (std::none_of(scenes.begin(), scenes.end(), [&](const Scene& s) { return s.name == n; })) {
@@ -201,6 +230,12 @@ void registerBenchCommand(CLI::App& app, Action& run) {
     cmd->add_option("--device", a->device, "Vulkan device: substring of its name");
     cmd->add_flag("--validation", a->validation, "Enable the Vulkan validation layer");
     cmd->add_flag("--msaa", a->msaa, "Render with 4x MSAA (default: one sample per pixel)");
+    cmd->add_flag("--editor", a->editor,
+                  "Instead: the editor's frame time while a control point is dragged (G grab, the mouse moving every "
+                  "frame) against a bare offscreen render of the same view; needs a display (Xvfb will do)");
+    cmd->add_option("--file", a->file, "With --editor: the document (default: the built-in teapot)");
+    cmd->add_option("--level", a->level, "With --editor: the uniform tessellation level (default 16)")->check(CLI::Range(1.0f, 64.0f));
+    cmd->add_option("--size", a->size, "With --editor: the window size, WIDTHxHEIGHT (default 1280x720)");
     cmd->callback([a, &run] { run = [a] { return runBench(*a); }; });
 }
 

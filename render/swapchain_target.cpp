@@ -7,18 +7,68 @@
 
 namespace pw::render {
 
-SwapchainTarget::SwapchainTarget(Device& dev, VkSurfaceKHR surface, VkExtent2D framebufferSize)
-    : dev_(dev), surface_(surface) {
-    // Step 1: the queue must be able to present to this surface.
+SwapchainTarget::SwapchainTarget(Device& dev, VkSurfaceKHR surface, VkExtent2D framebufferSize, HostPresent hostPresent)
+    : dev_(dev), surface_(surface), hostPresent_(std::move(hostPresent)) {
+    // Step 1: the surface's format (host presentation draws B8G8R8A8, the X11 TrueColor layout).
+    if (!hostPresent_) chooseSurfaceFormat();
+
+    // Step 2: overlay render pass (ImGui): load what the renderer drew, end ready to present (or,
+    // presenting from host memory, ready for the copy into it).
+    VkAttachmentDescription att{};
+    att.format = format_;
+    att.samples = VK_SAMPLE_COUNT_1_BIT;
+    att.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    att.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    att.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    att.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    att.initialLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    att.finalLayout = hostPresent_ ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL : VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+    VkAttachmentReference ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+    VkSubpassDescription sub{};
+    sub.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+    sub.colorAttachmentCount = 1;
+    sub.pColorAttachments = &ref;
+    VkSubpassDependency deps[2]{};
+    deps[0].srcSubpass = VK_SUBPASS_EXTERNAL;
+    deps[0].dstSubpass = 0;
+    deps[0].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    deps[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    deps[0].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    deps[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    deps[1].srcSubpass = 0;  // host presentation: the overlay's writes before the copy reads them
+    deps[1].dstSubpass = VK_SUBPASS_EXTERNAL;
+    deps[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+    deps[1].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
+    deps[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+    deps[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+    VkRenderPassCreateInfo rp{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+    rp.attachmentCount = 1;
+    rp.pAttachments = &att;
+    rp.subpassCount = 1;
+    rp.pSubpasses = &sub;
+    rp.dependencyCount = hostPresent_ ? 2 : 1;
+    rp.pDependencies = deps;
+    VK_CHECK(vkCreateRenderPass(dev.device(), &rp, nullptr, &overlayPass_));
+
+    // Step 3: fences (acquire waits on the host; the renderer's own submit then owns the image).
+    VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VK_CHECK(vkCreateFence(dev.device(), &fci, nullptr, &acquireFence_));
+    VK_CHECK(vkCreateFence(dev.device(), &fci, nullptr, &submitFence_));
+
+    createSwapchain(framebufferSize);
+}
+
+void SwapchainTarget::chooseSurfaceFormat() {
+    // The queue must be able to present to this surface.
     VkBool32 present = VK_FALSE;
-    VK_CHECK(vkGetPhysicalDeviceSurfaceSupportKHR(dev.physical(), dev.queueFamily(), surface, &present));
+    VK_CHECK(vkGetPhysicalDeviceSurfaceSupportKHR(dev_.physical(), dev_.queueFamily(), surface_, &present));
     if (!present) throw VulkanError("the Vulkan device's graphics queue cannot present to the window surface");
 
-    // Step 2: surface format (UNORM like the offscreen target, so colours match `patchwork render`).
+    // UNORM like the offscreen target, so colours match `patchwork render`.
     uint32_t n = 0;
-    VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(dev.physical(), surface, &n, nullptr));
+    VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(dev_.physical(), surface_, &n, nullptr));
     std::vector<VkSurfaceFormatKHR> formats(n);
-    VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(dev.physical(), surface, &n, formats.data()));
+    VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(dev_.physical(), surface_, &n, formats.data()));
     if (formats.empty()) throw VulkanError("the window surface reports no formats");
     format_ = formats[0].format;
     colorSpace_ = formats[0].colorSpace;
@@ -29,43 +79,6 @@ SwapchainTarget::SwapchainTarget(Device& dev, VkSurfaceKHR surface, VkExtent2D f
             break;
         }
 
-    // Step 3: overlay render pass (ImGui): load what the renderer drew, end ready to present.
-    VkAttachmentDescription att{};
-    att.format = format_;
-    att.samples = VK_SAMPLE_COUNT_1_BIT;
-    att.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-    att.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    att.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
-    att.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-    att.initialLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    att.finalLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
-    VkAttachmentReference ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    VkSubpassDescription sub{};
-    sub.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    sub.colorAttachmentCount = 1;
-    sub.pColorAttachments = &ref;
-    VkSubpassDependency dep{};
-    dep.srcSubpass = VK_SUBPASS_EXTERNAL;
-    dep.dstSubpass = 0;
-    dep.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-    dep.dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-    dep.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    dep.dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
-    VkRenderPassCreateInfo rp{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
-    rp.attachmentCount = 1;
-    rp.pAttachments = &att;
-    rp.subpassCount = 1;
-    rp.pSubpasses = &sub;
-    rp.dependencyCount = 1;
-    rp.pDependencies = &dep;
-    VK_CHECK(vkCreateRenderPass(dev.device(), &rp, nullptr, &overlayPass_));
-
-    // Step 4: fences (acquire waits on the host; the renderer's own submit then owns the image).
-    VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    VK_CHECK(vkCreateFence(dev.device(), &fci, nullptr, &acquireFence_));
-    VK_CHECK(vkCreateFence(dev.device(), &fci, nullptr, &submitFence_));
-
-    createSwapchain(framebufferSize);
 }
 
 SwapchainTarget::~SwapchainTarget() {
@@ -75,6 +88,7 @@ SwapchainTarget::~SwapchainTarget() {
     vkDestroyRenderPass(dev_.device(), overlayPass_, nullptr);
     vkDestroyFence(dev_.device(), acquireFence_, nullptr);
     vkDestroyFence(dev_.device(), submitFence_, nullptr);
+    if (copyCmd_) vkFreeCommandBuffers(dev_.device(), dev_.commandPool(), 1, &copyCmd_);
 }
 
 void SwapchainTarget::destroySwapchainResources() {
@@ -87,6 +101,9 @@ void SwapchainTarget::destroySwapchainResources() {
     images_.clear();
     destroyImage(dev_, depth_);
     depth_ = Image{};
+    destroyImage(dev_, hostImage_);
+    hostImage_ = Image{};
+    destroyBuffer(dev_, hostPixels_);
 }
 
 void SwapchainTarget::recreate(VkExtent2D size) {
@@ -96,6 +113,10 @@ void SwapchainTarget::recreate(VkExtent2D size) {
 }
 
 void SwapchainTarget::createSwapchain(VkExtent2D size) {
+    if (hostPresent_) {
+        createHostImage(size);
+        return;
+    }
     VkSurfaceCapabilitiesKHR caps;
     VK_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(dev_.physical(), surface_, &caps));
     VkExtent2D ext = caps.currentExtent;
@@ -137,37 +158,80 @@ void SwapchainTarget::createSwapchain(VkExtent2D size) {
     VK_CHECK(vkGetSwapchainImagesKHR(dev_.device(), swapchain_, &n, nullptr));
     images_.resize(n);
     VK_CHECK(vkGetSwapchainImagesKHR(dev_.device(), swapchain_, &n, images_.data()));
-    for (VkImage img : images_) {
-        VkImageViewCreateInfo vi{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-        vi.image = img;
-        vi.viewType = VK_IMAGE_VIEW_TYPE_2D;
-        vi.format = format_;
-        vi.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-        VkImageView view = VK_NULL_HANDLE;
-        VK_CHECK(vkCreateImageView(dev_.device(), &vi, nullptr, &view));
-        views_.push_back(view);
-        VkFramebufferCreateInfo fi{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-        fi.renderPass = overlayPass_;
-        fi.attachmentCount = 1;
-        fi.pAttachments = &view;
-        fi.width = ext.width;
-        fi.height = ext.height;
-        fi.layers = 1;
-        VkFramebuffer fb = VK_NULL_HANDLE;
-        VK_CHECK(vkCreateFramebuffer(dev_.device(), &fi, nullptr, &fb));
-        framebuffers_.push_back(fb);
-        VkSemaphoreCreateInfo si{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
-        VkSemaphore s = VK_NULL_HANDLE;
-        VK_CHECK(vkCreateSemaphore(dev_.device(), &si, nullptr, &s));
-        renderDone_.push_back(s);
-    }
+    for (VkImage img : images_) addImage(img);
     // Step 3: depth buffer of the new size.
     depth_ = createImage(dev_, ext, depthFormat(), VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
                          VK_IMAGE_ASPECT_DEPTH_BIT);
     current_ = 0;
 }
 
+void SwapchainTarget::addImage(VkImage img) {
+    VkImageViewCreateInfo vi{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    vi.image = img;
+    vi.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    vi.format = format_;
+    vi.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    VkImageView view = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateImageView(dev_.device(), &vi, nullptr, &view));
+    views_.push_back(view);
+    VkFramebufferCreateInfo fi{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+    fi.renderPass = overlayPass_;
+    fi.attachmentCount = 1;
+    fi.pAttachments = &view;
+    fi.width = extent_.width;
+    fi.height = extent_.height;
+    fi.layers = 1;
+    VkFramebuffer fb = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateFramebuffer(dev_.device(), &fi, nullptr, &fb));
+    framebuffers_.push_back(fb);
+    VkSemaphoreCreateInfo si{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+    VkSemaphore s = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateSemaphore(dev_.device(), &si, nullptr, &s));
+    renderDone_.push_back(s);
+}
+
+void SwapchainTarget::createHostImage(VkExtent2D size) {
+    if (size.width == 0 || size.height == 0) return;  // minimised: keep the old image until a real size
+    destroySwapchainResources();
+    extent_ = size;
+    transferSrc_ = true;
+    hostImage_ = createImage(dev_, size, format_, VK_SAMPLE_COUNT_1_BIT,
+                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
+    images_ = {hostImage_.image};
+    addImage(hostImage_.image);
+    depth_ = createImage(dev_, size, depthFormat(), VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                         VK_IMAGE_ASPECT_DEPTH_BIT);
+    hostPixels_ = createBuffer(dev_, VkDeviceSize(size.width) * size.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+    // The copy that follows the overlay pass every frame (which leaves the image TRANSFER_SRC).
+    if (!copyCmd_) {
+        VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+        ai.commandPool = dev_.commandPool();
+        ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+        ai.commandBufferCount = 1;
+        VK_CHECK(vkAllocateCommandBuffers(dev_.device(), &ai, &copyCmd_));
+    }
+    VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    VK_CHECK(vkBeginCommandBuffer(copyCmd_, &bi));
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {size.width, size.height, 1};
+    vkCmdCopyImageToBuffer(copyCmd_, hostImage_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, hostPixels_.buffer, 1, &region);
+    VkBufferMemoryBarrier bb{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
+    bb.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    bb.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    bb.srcQueueFamilyIndex = bb.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    bb.buffer = hostPixels_.buffer;
+    bb.size = VK_WHOLE_SIZE;
+    vkCmdPipelineBarrier(copyCmd_, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &bb, 0, nullptr);
+    VK_CHECK(vkEndCommandBuffer(copyCmd_));
+    current_ = 0;
+}
+
 bool SwapchainTarget::acquire() {
+    if (hostPresent_) {  // one image, free again once the last submitAndPresent returned
+        current_ = 0;
+        return hostImage_.image != VK_NULL_HANDLE;
+    }
     if (!swapchain_) return false;
     VK_CHECK(vkResetFences(dev_.device(), 1, &acquireFence_));
     const VkResult r = vkAcquireNextImageKHR(dev_.device(), swapchain_, UINT64_MAX, VK_NULL_HANDLE, acquireFence_, &current_);
@@ -179,6 +243,17 @@ bool SwapchainTarget::acquire() {
 }
 
 bool SwapchainTarget::submitAndPresent(VkCommandBuffer cmd) {
+    if (hostPresent_) {  // the overlay pass, the copy into host memory, then the window
+        const VkCommandBuffer cmds[2] = {cmd, copyCmd_};
+        VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+        si.commandBufferCount = 2;
+        si.pCommandBuffers = cmds;
+        VK_CHECK(vkResetFences(dev_.device(), 1, &submitFence_));
+        VK_CHECK(vkQueueSubmit(dev_.queue(), 1, &si, submitFence_));
+        VK_CHECK(vkWaitForFences(dev_.device(), 1, &submitFence_, VK_TRUE, UINT64_MAX));
+        hostPresent_(static_cast<const uint8_t*>(hostPixels_.mapped), extent_, extent_.width * 4);
+        return true;
+    }
     VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
     si.commandBufferCount = 1;
     si.pCommandBuffers = &cmd;

@@ -3,11 +3,19 @@
 // pass (for Dear ImGui 1.86, which needs a VkRenderPass) then draws on top and leaves the image
 // ready to present. Handles resize, zero-size (minimised) windows and out-of-date/suboptimal
 // swapchains: acquire()/present() return false and the caller calls recreate() with the new size.
+//
+// Host presentation (CPU devices): with a HostPresent function there is no VkSwapchainKHR. One
+// B8G8R8A8 image is drawn the same way, copied into mapped host memory after the overlay pass, and
+// handed to the function (the editor puts it into its X11 window). Mesa's software swapchain sends
+// each frame as one multi-megabyte X request, which an X server without DRI3 (Xvfb, remote X)
+// takes in socket-buffer-sized pieces: 11-16 ms a 720p frame, against ~1 ms for Xlib's split
+// XPutImage (measured under Xvfb; docs/PERFORMANCE.md).
 #pragma once
 
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "buffers.hpp"
@@ -17,8 +25,11 @@ namespace pw::render {
 
 class SwapchainTarget final : public RenderTarget {
 public:
-    // `surface` stays owned by the caller (destroy it after this target).
-    SwapchainTarget(Device& dev, VkSurfaceKHR surface, VkExtent2D framebufferSize);
+    // Shows a finished frame: B8G8R8A8 pixels, rows top first, `rowBytes` apart.
+    using HostPresent = std::function<void(const uint8_t* bgra, VkExtent2D extent, uint32_t rowBytes)>;
+    // `surface` stays owned by the caller (destroy it after this target). With `hostPresent`,
+    // `surface` is not used (it may be VK_NULL_HANDLE) and frames go to that function instead.
+    SwapchainTarget(Device& dev, VkSurfaceKHR surface, VkExtent2D framebufferSize, HostPresent hostPresent = {});
     ~SwapchainTarget() override;
     SwapchainTarget(const SwapchainTarget&) = delete;
     SwapchainTarget& operator=(const SwapchainTarget&) = delete;
@@ -45,14 +56,18 @@ public:
     VkFramebuffer overlayFramebuffer() const { return framebuffers_[current_]; }
     uint32_t minImageCount() const { return minImageCount_; }
     uint32_t imageCount() const { return uint32_t(images_.size()); }
-    bool valid() const { return swapchain_ != VK_NULL_HANDLE; }
+    bool valid() const { return hostPresent_ ? hostImage_.image != VK_NULL_HANDLE : swapchain_ != VK_NULL_HANDLE; }
+    bool hostPresented() const { return bool(hostPresent_); }
 
     // RGBA8 copy of the acquired image as the renderer left it (call after Renderer::render, before
     // the overlay pass); rows top first.
     std::vector<uint8_t> readCurrentImage();
 
 private:
+    void chooseSurfaceFormat();
     void createSwapchain(VkExtent2D size);
+    void createHostImage(VkExtent2D size);  // host presentation: the one image, its copy and buffer
+    void addImage(VkImage image);           // view, overlay framebuffer and semaphore of one image
     void destroySwapchainResources();
     Device& dev_;
     VkSurfaceKHR surface_;
@@ -70,6 +85,11 @@ private:
     VkFence acquireFence_ = VK_NULL_HANDLE, submitFence_ = VK_NULL_HANDLE;
     uint32_t current_ = 0;
     bool transferSrc_ = false;
+    // Host presentation.
+    HostPresent hostPresent_;
+    Image hostImage_;
+    Buffer hostPixels_;                           // mapped copy of the finished frame
+    VkCommandBuffer copyCmd_ = VK_NULL_HANDLE;    // image -> hostPixels_, recorded per size
 };
 
 }  // namespace pw::render

@@ -10,6 +10,8 @@
 #include <cstring>
 #include <ctime>
 #include <fstream>
+#include <functional>
+#include <optional>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <thread>
@@ -29,6 +31,7 @@
 #include "png_writer.hpp"
 #include "renderer.hpp"
 #include "swapchain_target.hpp"
+#include "x11_present.hpp"
 
 namespace pw::ui {
 
@@ -73,7 +76,12 @@ fs::path recentFile() { return autosaveDirectory() / "recent.txt"; }
 
 }  // namespace
 
-int runEditor(const std::string& file) {
+namespace {
+
+// Opens the editor's window and runs `body` on it, then closes GLFW. The size is `fixed` (pixels at
+// content scale 1) or 1600x900 scaled to the monitor (PATCHWORK_WINDOW_SIZE overrides). Exit 2 with
+// a message when there is no display.
+int withEditorWindow(const std::optional<std::array<int, 2>>& fixed, const std::function<int(GLFWwindow*)>& body) {
     const char* d = std::getenv("DISPLAY");
     const char* w = std::getenv("WAYLAND_DISPLAY");
     if ((!d || !*d) && (!w || !*w)) {
@@ -102,14 +110,15 @@ int runEditor(const std::string& file) {
             height = std::max(400, std::min(height, int(0.9f * float(wh) / sy)));
         }
     }
-    if (const char* ws = std::getenv("PATCHWORK_WINDOW_SIZE"); ws && *ws) {
+    if (const char* ws = std::getenv("PATCHWORK_WINDOW_SIZE"); ws && *ws && !fixed) {
         if (std::sscanf(ws, "%dx%d", &width, &height) != 2 || width < 64 || height < 64 || width > 16384 || height > 16384) {
             glfwTerminate();
             throw InputError("PATCHWORK_WINDOW_SIZE", std::string("expected WIDTHxHEIGHT (64..16384), got '") + ws + "'");
         }
     }
+    if (fixed) width = (*fixed)[0], height = (*fixed)[1];
     glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
-    glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
+    glfwWindowHint(GLFW_SCALE_TO_MONITOR, fixed ? GLFW_FALSE : GLFW_TRUE);
     GLFWwindow* window = glfwCreateWindow(width, height, "Patchwork", nullptr, nullptr);
     if (!window) {
         glfwTerminate();
@@ -118,8 +127,7 @@ int runEditor(const std::string& file) {
     }
     int rc = 0;
     try {
-        Editor editor(window, file);
-        rc = editor.run();
+        rc = body(window);
     } catch (...) {
         glfwDestroyWindow(window);
         glfwTerminate();
@@ -128,6 +136,22 @@ int runEditor(const std::string& file) {
     glfwDestroyWindow(window);
     glfwTerminate();
     return rc;
+}
+
+}  // namespace
+
+int runEditor(const std::string& file) {
+    return withEditorWindow(std::nullopt, [&](GLFWwindow* window) {
+        Editor editor(window, file);
+        return editor.run();
+    });
+}
+
+int runEditorBench(const EditorBenchOptions& options) {
+    return withEditorWindow(std::array<int, 2>{options.width, options.height}, [&](GLFWwindow* window) {
+        Editor editor(window, options.file);
+        return editor.runBench(options);
+    });
 }
 
 Editor::Editor(GLFWwindow* window, const std::string& file) : window_(window) {
@@ -142,11 +166,20 @@ Editor::Editor(GLFWwindow* window, const std::string& file) : window_(window) {
     for (uint32_t i = 0; i < n; ++i) opt.instanceExtensions.push_back(exts[i]);
     opt.deviceExtensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
     dev_ = std::make_unique<render::Device>(opt);
-    if (glfwCreateWindowSurface(dev_->instance(), window_, nullptr, &surface_) != VK_SUCCESS)
-        throw render::VulkanError("cannot create a Vulkan surface for the window");
     int fbw = 0, fbh = 0;
     glfwGetFramebufferSize(window_, &fbw, &fbh);
-    target_ = std::make_unique<render::SwapchainTarget>(*dev_, surface_, VkExtent2D{uint32_t(fbw), uint32_t(fbh)});
+    // A CPU device on X11 puts its frames into the window itself (ui/x11_present.hpp says why);
+    // everything else presents through a Vulkan swapchain.
+    if (dev_->properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) hostPresenter_ = X11Presenter::create(window_);
+    if (hostPresenter_) {
+        target_ = std::make_unique<render::SwapchainTarget>(
+            *dev_, VK_NULL_HANDLE, VkExtent2D{uint32_t(fbw), uint32_t(fbh)},
+            [p = hostPresenter_.get()](const uint8_t* bgra, VkExtent2D ext, uint32_t rowBytes) { p->present(bgra, ext, rowBytes); });
+    } else {
+        if (glfwCreateWindowSurface(dev_->instance(), window_, nullptr, &surface_) != VK_SUCCESS)
+            throw render::VulkanError("cannot create a Vulkan surface for the window");
+        target_ = std::make_unique<render::SwapchainTarget>(*dev_, surface_, VkExtent2D{uint32_t(fbw), uint32_t(fbh)});
+    }
     renderer_ = std::make_unique<render::Renderer>(*dev_, *target_);
 
     // Step 2: input callbacks (before ImGui so it chains to them), then ImGui.
@@ -196,6 +229,7 @@ Editor::~Editor() {
     imgui_.reset();
     renderer_.reset();
     target_.reset();
+    hostPresenter_.reset();
     if (surface_) vkDestroySurfaceKHR(dev_->instance(), surface_, nullptr);
     g_editor = nullptr;
 }
@@ -470,7 +504,19 @@ int Editor::run() {
     return 0;
 }
 
+render::RenderOptions Editor::viewOptions() const {
+    render::RenderOptions o = render::optionsFromDocument(doc_);
+    o.camera = cam_;
+    o.hoveredPoint = hovered_;
+    o.selectedPoint = sel_.points.empty() ? -1 : int(sel_.points.front());
+    return o;
+}
+
 void Editor::frame() {
+    using clock = std::chrono::steady_clock;
+    auto ms = [](clock::time_point a, clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+    const auto t0 = clock::now();
+    dragMs_ = 0.0;
     // Step 1: UI and viewport input. ImGui 1.86 only sees key *state*: a key pressed and released
     // between two frames (fast typing, xdotool) is held down for this one frame so it is not lost.
     ImGuiIO& io = ImGui::GetIO();
@@ -484,6 +530,7 @@ void Editor::frame() {
         io.KeyAlt = io.KeyAlt || (mods & GLFW_MOD_ALT);
     }
     imgui_->newFrame();
+    if (benchMouse_) io.MousePos = ImVec2(float((*benchMouse_)[0]), float((*benchMouse_)[1]));
     viewportInput();
     teachingInput();
     if (!presentation_) drawViewportOverlays();
@@ -499,17 +546,15 @@ void Editor::frame() {
         wake();  // one more frame sees the release
     }
     leftPressed_ = false;
+    const auto t1 = clock::now();
 
     // Step 2: the 3D view into the swapchain image.
     if (!target_->acquire()) {
         swapchainDirty_ = true;
         return;
     }
-    render::RenderOptions o = render::optionsFromDocument(doc_);
-    o.camera = cam_;
-    o.hoveredPoint = hovered_;
-    o.selectedPoint = sel_.points.empty() ? -1 : int(sel_.points.front());
-    renderView(o);
+    const auto t2 = clock::now();
+    renderView(viewOptions());
     drawDomainPanes();
     if (screenshotRequested_) {
         screenshotRequested_ = false;
@@ -524,7 +569,10 @@ void Editor::frame() {
         }
     }
     // Step 3: ImGui on top, present.
+    const auto t3 = clock::now();
     if (!target_->submitAndPresent(imgui_->record())) swapchainDirty_ = true;
+    const auto t4 = clock::now();
+    frameTimes_ = {ms(t0, t1), dragMs_, ms(t1, t2), ms(t2, t3), ms(t3, t4), ms(t0, t4)};
     ++frameCount_;
     if (!tracePath_.empty()) writeTrace();
 }

@@ -42,10 +42,33 @@ namespace pw::ui {
 inline constexpr Spacing kPaneSpacings[] = {Spacing::Equal, Spacing::FractionalOdd, Spacing::FractionalEven, Spacing::Pow2};
 
 class ImGuiLayer;
+class X11Presenter;
 
 // Opens the editor on `file` (empty: the built-in teapot). Returns the exit code; 2 when there is
 // no display.
 int runEditor(const std::string& file);
+
+// `patchwork bench --editor`: the editor's frame cost while a control point is dragged (G grab, the
+// mouse moving every frame), against a bare offscreen render of the same view in the same run.
+struct EditorBenchOptions {
+    std::string file;          // empty: the built-in teapot
+    int frames = 100;          // measured frames
+    int width = 1280, height = 720;  // window size (pixels at content scale 1)
+    float level = 16.0f;       // uniform tessellation level of the benchmarked document
+    std::string json;          // write the results here as JSON when not empty
+};
+// Needs a display (Xvfb will do); returns the exit code (2 without a display).
+int runEditorBench(const EditorBenchOptions& options);
+
+// Where one editor frame's time went (wall clock, milliseconds).
+struct FrameTimes {
+    double ui = 0;       // input, panels and ImGui::Render (CPU), the drag solve included
+    double drag = 0;     // of which: the drag's projection onto the joins and the partial upload
+    double acquire = 0;  // waiting for a swapchain image
+    double view = 0;     // the 3D view: record, submit and wait (Renderer::render), domain panes
+    double present = 0;  // ImGui's command buffer, submit and present
+    double total = 0;
+};
 
 enum class Interaction { None, Orbit, Pan, BoxSelect, PendingDrag, DragPoints, Grab };
 enum class FileDialogMode { None, Open, SaveAs, Import, ExportGltf, Screenshot };
@@ -70,6 +93,8 @@ public:
     Editor(GLFWwindow* window, const std::string& file);
     ~Editor();
     int run();
+    // The editor benchmark (ui/editor_bench.cpp): drives this editor's own frames.
+    int runBench(const EditorBenchOptions& options);
 
     // Called by GLFW callbacks.
     void wake() { wakeFrames_ = 8; }  // ImGui popups and hover states settle over a few frames
@@ -128,6 +153,7 @@ private:
     GLFWwindow* window_;
     std::unique_ptr<render::Device> dev_;
     VkSurfaceKHR surface_ = VK_NULL_HANDLE;
+    std::unique_ptr<X11Presenter> hostPresenter_;  // CPU devices on X11: frames go to the window by XPutImage
     std::unique_ptr<render::SwapchainTarget> target_;
     std::unique_ptr<render::Renderer> renderer_;
     std::unique_ptr<ImGuiLayer> imgui_;
@@ -158,6 +184,10 @@ private:
     uint64_t frameCount_ = 0;
     std::chrono::steady_clock::time_point lastFrame_{};
     double frameMs_ = 0.0;
+    FrameTimes frameTimes_;  // the last frame's breakdown (Stats panel, benchmark)
+    double dragMs_ = 0.0;    // this frame's drag solve + upload
+    std::optional<std::array<double, 2>> benchMouse_;  // the benchmark's mouse position (window pixels)
+    render::RenderOptions viewOptions() const;  // what the 3D view draws this frame
     render::FrameStats stats_;
     bool swapchainDirty_ = false;
 

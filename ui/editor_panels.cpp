@@ -592,8 +592,12 @@ void Editor::drawRightPanel() {
     }
 
     if (ImGui::CollapsingHeader("Stats", ImGuiTreeNodeFlags_DefaultOpen)) {
-        ImGui::Text("Frame       %.2f ms", frameMs_);
-        tip("Time between the last two frames (paced to at most 60 fps; idle when nothing changes)");
+        ImGui::Text("Frame       %.2f ms (work %.2f)", frameMs_, frameTimes_.total);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Time between the last two frames (paced to at most 60 fps; idle when nothing changes).\n"
+                              "Work: the frame's own time, pacing excluded: UI %.2f ms (of it drag solve + upload %.3f),\n"
+                              "swapchain image %.2f, 3D view %.2f, ImGui + present %.2f",
+                              frameTimes_.ui, frameTimes_.drag, frameTimes_.acquire, frameTimes_.view, frameTimes_.present);
         ImGui::Text("Render      %.2f ms (CPU wall)", stats_.wallMs);
         tip("Record + submit + wait of the 3D view");
         if (stats_.gpuMs >= 0) ImGui::Text("GPU         %.2f ms", stats_.gpuMs);

@@ -301,12 +301,14 @@ void Editor::updateDrag(double mx, double my) {
         else
             delta[drag_.axis] = snapped[drag_.axis] - drag_.anchor[drag_.axis];
     }
+    const auto t0 = std::chrono::steady_clock::now();
     doc_.points = drag_.start;
     for (uint32_t p : drag_.moved) doc_.points[p] = drag_.start[p] + delta;
     drag_.solver->project(doc_.points);
     // Partial upload: only the points that moved since the last frame.
     takeChangedPoints(drag_.uploaded, doc_.points, drag_.changed);
     renderer_->updatePoints(doc_.points, drag_.changed);
+    dragMs_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     wake();
 }
 

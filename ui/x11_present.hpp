@@ -1,0 +1,34 @@
+// Host presentation into the editor's X11 window (render::SwapchainTarget::HostPresent): XPutImage
+// of the finished frame from mapped memory. Used on CPU Vulkan devices (lavapipe), whose software
+// swapchain sends a frame as one request that an X server without DRI3 reads in small pieces;
+// Xlib splits the image into requests the server takes at once (docs/PERFORMANCE.md).
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <memory>
+
+struct GLFWwindow;
+
+namespace pw::ui {
+
+class X11Presenter {
+public:
+    // Null when the window is not an X11 window or its visual is not 24/32-bit TrueColor in the
+    // B8G8R8A8 byte layout; PATCHWORK_PRESENT=swapchain also gives null (the Vulkan swapchain).
+    static std::unique_ptr<X11Presenter> create(GLFWwindow* window);
+    ~X11Presenter();
+    X11Presenter(const X11Presenter&) = delete;
+    X11Presenter& operator=(const X11Presenter&) = delete;
+
+    // Puts the frame into the window and waits until the X server has taken it.
+    void present(const uint8_t* bgra, VkExtent2D extent, uint32_t rowBytes);
+
+private:
+    struct Impl;
+    explicit X11Presenter(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace pw::ui
