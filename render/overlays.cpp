@@ -49,6 +49,27 @@ std::array<float, 4> continuityColor(const Continuity* c) {
     return {1, 1, 1, 1};
 }
 
+std::vector<float> groundGridVertices(double step, bool zUp) {
+    constexpr int n = 10;
+    std::vector<float> v;
+    v.reserve(2 * (2 * n + 1) * 2 * 7);
+    auto vertex = [&](double a, double b, const std::array<float, 4>& c) {
+        const float x = float(a * step), y = float(b * step);
+        const float p[3] = {x, zUp ? y : 0.0f, zUp ? 0.0f : -y};
+        v.insert(v.end(), p, p + 3);
+        v.insert(v.end(), c.begin(), c.end());
+    };
+    for (int i = -n; i <= n; ++i)
+        for (int dir = 0; dir < 2; ++dir) {
+            const std::array<float, 4> c = i != 0 ? std::array<float, 4>{0.59f, 0.59f, 0.59f, 0.18f}
+                                           : dir == 0 ? std::array<float, 4>{0.78f, 0.27f, 0.27f, 0.55f}
+                                                      : std::array<float, 4>{0.27f, 0.71f, 0.27f, 0.55f};
+            if (dir == 0) vertex(-n, i, c), vertex(n, i, c);  // along x
+            else vertex(i, -n, c), vertex(i, n, c);
+        }
+    return v;
+}
+
 OverlayScene uploadOverlayScene(Device& dev, const Document& doc) {
     OverlayScene s;
     const std::vector<uint32_t> lines = controlGridLines(doc);

@@ -25,6 +25,10 @@ std::vector<uint32_t> controlGridLines(const Document& doc);
 // Colour of a continuity (or of an open boundary when no join is recorded).
 std::array<float, 4> continuityColor(const Continuity* c);
 
+// The editor's ground grid: 21 lines each way in the z = 0 plane (y = 0 when y is up), `step`
+// apart, the axes red (x) and green (the other); line-list vertices of position + rgba.
+std::vector<float> groundGridVertices(double step, bool zUp);
+
 OverlayScene uploadOverlayScene(Device& dev, const Document& doc);
 void destroyOverlayScene(Device& dev, OverlayScene& s);
 

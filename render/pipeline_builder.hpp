@@ -19,6 +19,7 @@ struct PipelineDesc {
     uint32_t patchControlPoints = 16;
     VkPolygonMode polygon = VK_POLYGON_MODE_FILL;
     bool depthTest = true, depthWrite = true, depthBias = false;
+    bool blend = false;  // source-alpha blending (translucent lines)
     int vertexLayout = 0;  // -1: none; 0: vec3 position; 1: position, normal, uv (mesh); 2: position + rgba colour;
                            // 3: position, normal (mesh, lean varyings)
 };

@@ -192,6 +192,8 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
         cd.depthWrite = false;
         cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, mod(spirv::colorline_vert)}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
         set.colorLines = buildPipeline(dev, set.layout, set.cache, cd, color, depth, samples);
+        cd.blend = true;
+        set.groundLines = buildPipeline(dev, set.layout, set.cache, cd, color, depth, samples);
     }
     for (VkShaderModule m : modules) vkDestroyShaderModule(d, m, nullptr);
     set.createMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -233,6 +235,7 @@ void destroyPipelines(Device& dev, PipelineSet& set) {
     kill(set.gridLines);
     kill(set.gridPoints);
     kill(set.colorLines);
+    kill(set.groundLines);
     if (set.layout) vkDestroyPipelineLayout(d, set.layout, nullptr);
     if (set.setLayout) vkDestroyDescriptorSetLayout(d, set.setLayout, nullptr);
     set = PipelineSet{};

@@ -53,6 +53,7 @@ struct PipelineSet {
     VkPipeline gridLines = VK_NULL_HANDLE;   // control net lines (over everything)
     VkPipeline gridPoints = VK_NULL_HANDLE;  // control points
     VkPipeline colorLines = VK_NULL_HANDLE;  // coloured lines, depth-tested (boundaries)
+    VkPipeline groundLines = VK_NULL_HANDLE; // coloured translucent lines, depth-tested (the editor's ground grid)
     VkPipelineCache cache = VK_NULL_HANDLE;
     std::filesystem::path cacheFile;
     double createMs = 0.0;  // time spent creating all pipelines

@@ -43,6 +43,10 @@ struct Renderer::Impl {
     OverlayScene overlays;
     PlainMesh mesh;
     Buffer frameUbo, counters;
+    Buffer ground;  // ground grid vertices (position + rgba) for groundStep / groundZUp
+    uint32_t groundVertexCount = 0;
+    double groundStep = 0.0;
+    bool groundZUp = true;
     VkDescriptorPool descPool = VK_NULL_HANDLE;
     VkDescriptorSet set = VK_NULL_HANDLE;
     std::unique_ptr<FrameQueries> queries;
@@ -110,6 +114,7 @@ Renderer::~Renderer() {
     destroyPlainMesh(dev_, m.mesh);
     destroyBuffer(dev_, m.frameUbo);
     destroyBuffer(dev_, m.counters);
+    destroyBuffer(dev_, m.ground);
     m.queries.reset();
     vkDestroyFence(dev_.device(), m.fence, nullptr);
     vkFreeCommandBuffers(dev_.device(), dev_.commandPool(), 1, &m.cmd);
@@ -253,7 +258,9 @@ FrameStats Renderer::render(const RenderOptions& opt) {
     }
     // Step 4: overlays, after the statistics query ends (outside rendering, see stats.hpp).
     // Curves count as overlays: the statistics are the surface's triangles.
-    const bool anyOverlay = ds.showWireframe || ds.showNormals || ds.showBoundaries || ds.showGrid || ds.showIsocurves || m.scene.curveCount;
+    const bool ground = opt.groundGridStep > 0.0 && std::isfinite(opt.groundGridStep);
+    const bool anyOverlay =
+        ds.showWireframe || ds.showNormals || ds.showBoundaries || ds.showGrid || ds.showIsocurves || m.scene.curveCount || ground;
     if (anyOverlay) {
         target_.pauseRendering(cmd);
         m.queries->statsEnd(cmd);
@@ -261,6 +268,22 @@ FrameStats Renderer::render(const RenderOptions& opt) {
         vkCmdSetViewport(cmd, 0, 1, &viewport);
         vkCmdSetScissor(cmd, 0, 1, &scissor);
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.layout, 0, 1, &m.set, 0, nullptr);
+    }
+    const VkDeviceSize zero = 0;
+    if (ground) {  // behind the surface where the surface is nearer (depth test, no depth write)
+        if (!m.ground.buffer || m.groundStep != opt.groundGridStep || m.groundZUp != opt.camera.zUp) {
+            destroyBuffer(dev_, m.ground);  // no frame reads it any more: render() waits for its own submission
+            const std::vector<float> v = groundGridVertices(opt.groundGridStep, opt.camera.zUp);
+            m.ground = uploadBuffer(dev_, v, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+            m.groundVertexCount = uint32_t(v.size() / 7);
+            m.groundStep = opt.groundGridStep;
+            m.groundZUp = opt.camera.zUp;
+        }
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.groundLines);
+        vkCmdPushConstants(cmd, pipes_.layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
+        vkCmdBindVertexBuffers(cmd, 0, 1, &m.ground.buffer, &zero);
+        vkCmdDraw(cmd, m.groundVertexCount, 1, 0, 0);
+        ++stats.draws;
     }
     if (ds.showWireframe && !opt.plainMesh) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.wire[overlayIndex(variant, levels)]);
@@ -303,7 +326,6 @@ FrameStats Renderer::render(const RenderOptions& opt) {
         cp.color = {0.95f, 0.35f, 0.25f, 1.0f};
         stats.draws += recordCurveDraws(cmd, pipes_.layout, m.scene, cp, budget);
     }
-    const VkDeviceSize zero = 0;
     if (ds.showBoundaries && m.overlays.boundaryVertexCount) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.colorLines);
         vkCmdPushConstants(cmd, pipes_.layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);

@@ -31,6 +31,9 @@ struct RenderOptions {
     // Keep what the target holds (earlier panes of this frame) and clear only the pane's rectangle;
     // otherwise the whole target is cleared to the background first.
     bool keepTarget = false;
+    // The editor's ground grid (translucent lines in the ground plane, hidden behind the surface):
+    // drawn when > 0, with lines this far apart (render/overlays.hpp).
+    double groundGridStep = 0.0;
 };
 
 // The pane rectangle `opt` draws into, clamped to a target of `extent` (the whole target when

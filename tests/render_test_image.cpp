@@ -3,7 +3,10 @@
 // fractional_odd 4.5 differs from 5; every shading mode renders.
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include "document_io.hpp"
+#include "picking.hpp"
 #include "render_support.hpp"
 
 namespace pw::test {
@@ -87,6 +90,33 @@ TEST_F(RenderImage, OverlaysChangePixels) {
     EXPECT_TRUE(differs(plain.image, grid.image));
     EXPECT_TRUE(differs(grid.image, selected.image));
     EXPECT_TRUE(differs(selected.image, hovered.image));
+}
+
+// The editor's ground grid is drawn in the 3D pass: visible on the background, hidden wherever the
+// surface is in front of it (depth-tested), and it leaves the surface statistics alone.
+TEST_F(RenderImage, GroundGridIsHiddenBehindTheSurface) {
+    const Document doc = builtinTeapot();
+    Offscreen off(W, H);
+    off.setDocument(doc);
+    const render::RenderOptions base = plainOptions(doc, 8, double(W) / H, "iso");
+    render::RenderOptions grid = base;
+    grid.groundGridStep = niceGridStep(modelSize(doc));
+    const Rendered plain = off.render(base), ground = off.render(grid);
+    size_t onBackground = 0, onSurface = 0, surface = 0;
+    for (uint32_t y = 0; y < H; ++y)
+        for (uint32_t x = 0; x < W; ++x) {
+            const bool bg = sameColor(plain.image.at(int(x), int(y)), doc.display.background, 0);
+            const bool changed = std::memcmp(plain.image.at(int(x), int(y)), ground.image.at(int(x), int(y)), 3) != 0;
+            surface += !bg;
+            (bg ? onBackground : onSurface) += changed;
+        }
+    EXPECT_GT(onBackground, 2000u);  // the lines show around the teapot
+    EXPECT_GT(surface, 10000u);
+    // and not over it (the iso view looks down on the grid the teapot stands on): at most the pixels
+    // where the base touches the ground plane and the depths tie; drawn on top, the lines would
+    // cross thousands of surface pixels.
+    EXPECT_LT(onSurface, surface / 200) << onSurface << " of " << surface << " surface pixels changed";
+    EXPECT_EQ(plain.stats.triangles(), ground.stats.triangles());
 }
 
 TEST_F(RenderImage, Pow2AtFiveEqualsEqualAtEight) {

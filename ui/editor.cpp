@@ -509,6 +509,7 @@ render::RenderOptions Editor::viewOptions() const {
     o.camera = cam_;
     o.hoveredPoint = hovered_;
     o.selectedPoint = sel_.points.empty() ? -1 : int(sel_.points.front());
+    if (showGround_) o.groundGridStep = niceGridStep(modelSize(doc_));
     return o;
 }
 

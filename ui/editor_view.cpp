@@ -365,24 +365,6 @@ void Editor::drawPaneOverlays(const std::array<float, 4>& pane, bool active) {
         if (pa && pb) dl->AddLine(ImVec2(float(pa->x), float(pa->y)), ImVec2(float(pb->x), float(pb->y)), col, th);
     };
 
-    // Ground grid in the z = 0 (or y = 0) plane, split into segments so lines behind the eye clip.
-    if (showGround_) {
-        const double step = niceGridStep(modelSize(doc_));
-        const int n = 10;
-        for (int i = -n; i <= n; ++i)
-            for (int dir = 0; dir < 2; ++dir) {
-                const ImU32 col = i == 0 ? (dir == 0 ? IM_COL32(200, 70, 70, 140) : IM_COL32(70, 180, 70, 140))
-                                         : IM_COL32(150, 150, 150, 45);
-                for (int s = -n; s < n; ++s) {
-                    Vec3 a, b;
-                    if (dir == 0) a = Vec3(s * step, i * step, 0), b = Vec3((s + 1) * step, i * step, 0);
-                    else a = Vec3(i * step, s * step, 0), b = Vec3(i * step, (s + 1) * step, 0);
-                    if (!cam_.zUp) a = Vec3(a.x, 0, -a.y), b = Vec3(b.x, 0, -b.y);
-                    line(a, b, col, 1.0f);
-                }
-            }
-    }
-
     // Selected patch: its boundary curves.
     if (sel_.patch >= 0 && sel_.patch < int(doc_.patches.size())) {
         const Patch& pt = doc_.patches[size_t(sel_.patch)];
