@@ -219,7 +219,7 @@ Editor::Editor(GLFWwindow* window, const std::string& file) : window_(window) {
         // Present it through the normal path on the first frame.
         imgui_->newFrame();
         ImGui::Render();
-        target_->submitAndPresent(imgui_->record());
+        target_->submitAndPresent(imgui_->record({}, {}));
     }
     lastAutosave_ = std::chrono::steady_clock::now();
 }
@@ -530,6 +530,7 @@ void Editor::frame() {
         io.KeyShift = io.KeyShift || (mods & GLFW_MOD_SHIFT);
         io.KeyAlt = io.KeyAlt || (mods & GLFW_MOD_ALT);
     }
+    panelRects_.clear();
     imgui_->newFrame();
     if (benchMouse_) io.MousePos = ImVec2(float((*benchMouse_)[0]), float((*benchMouse_)[1]));
     viewportInput();
@@ -571,7 +572,8 @@ void Editor::frame() {
     }
     // Step 3: ImGui on top, present.
     const auto t3 = clock::now();
-    if (!target_->submitAndPresent(imgui_->record())) swapchainDirty_ = true;
+    const ImVec4 panel = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg);
+    if (!target_->submitAndPresent(imgui_->record(panelRects_, {panel.x, panel.y, panel.z, 1.0f}))) swapchainDirty_ = true;
     const auto t4 = clock::now();
     frameTimes_ = {ms(t0, t1), dragMs_, ms(t1, t2), ms(t2, t3), ms(t3, t4), ms(t0, t4)};
     ++frameCount_;

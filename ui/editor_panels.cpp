@@ -187,14 +187,22 @@ void Editor::drawMenuBar() {
     ImGui::EndMainMenuBar();
 }
 
-void Editor::drawLeftPanel() {
+void Editor::beginSidePanel(const char* name, float x, float width) {
     const ImGuiIO& io = ImGui::GetIO();
     const float top = ImGui::GetFrameHeight();
+    const std::array<float, 4> rect{x, top, width, io.DisplaySize.y - top};
+    ImGui::SetNextWindowPos(ImVec2(rect[0], rect[1]));
+    ImGui::SetNextWindowSize(ImVec2(rect[2], rect[3]));
+    ImGui::SetNextWindowBgAlpha(0.0f);  // the overlay pass fills it (panelRects_)
+    panelRects_.push_back(rect);
+    ImGui::Begin(name, nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+}
+
+void Editor::drawLeftPanel() {
+    const ImGuiIO& io = ImGui::GetIO();
     const float w = std::min(300.0f * uiScale_, io.DisplaySize.x * 0.3f);
     leftPanelWidth_ = w;
-    ImGui::SetNextWindowPos(ImVec2(0, top));
-    ImGui::SetNextWindowSize(ImVec2(w, io.DisplaySize.y - top));
-    ImGui::Begin("Scene", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    beginSidePanel("Scene", 0.0f, w);
 
     // Outliner.
     if (ImGui::CollapsingHeader("Outliner", ImGuiTreeNodeFlags_DefaultOpen)) {
@@ -479,12 +487,9 @@ void Editor::drawLeftPanel() {
 
 void Editor::drawRightPanel() {
     const ImGuiIO& io = ImGui::GetIO();
-    const float top = ImGui::GetFrameHeight();
     const float w = std::min(330.0f * uiScale_, io.DisplaySize.x * 0.3f);
     rightPanelWidth_ = w;
-    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - w, top));
-    ImGui::SetNextWindowSize(ImVec2(w, io.DisplaySize.y - top));
-    ImGui::Begin("Properties", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    beginSidePanel("Properties", io.DisplaySize.x - w, w);
     TessSettings& ts = doc_.tess;
     DisplaySettings& ds = doc_.display;
     auto edited = [&](bool changed, const char* label) {

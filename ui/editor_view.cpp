@@ -332,7 +332,9 @@ void Editor::drawViewportOverlays() {
     const auto rects = viewPaneRects();
     for (size_t i = 0; i < rects.size(); ++i) {
         const auto& r = rects[i];
-        dl->PushClipRect(ImVec2(r[0], r[1]), ImVec2(r[0] + r[2], r[1] + r[3]), true);
+        // Not under the side panels: their backgrounds are filled before ImGui draws this list.
+        const float x0 = std::max(r[0], leftPanelWidth_), x1 = std::min(r[0] + r[2], ImGui::GetIO().DisplaySize.x - rightPanelWidth_);
+        dl->PushClipRect(ImVec2(x0, r[1]), ImVec2(std::max(x0, x1), r[1] + r[3]), true);
         drawPaneOverlays(r, int(i) == activePane_ || !viewSplit());
         dl->PopClipRect();
     }

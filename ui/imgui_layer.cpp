@@ -1,6 +1,9 @@
 #include "imgui_layer.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
@@ -96,7 +99,7 @@ void ImGuiLayer::newFrame() {
     ImGui::NewFrame();
 }
 
-VkCommandBuffer ImGuiLayer::record() {
+VkCommandBuffer ImGuiLayer::record(std::span<const std::array<float, 4>> fills, const std::array<float, 4>& color) {
     VK_CHECK(vkResetCommandBuffer(cmd_, 0));
     VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
@@ -106,6 +109,22 @@ VkCommandBuffer ImGuiLayer::record() {
     rp.framebuffer = target_.overlayFramebuffer();
     rp.renderArea = {{0, 0}, target_.extent()};
     vkCmdBeginRenderPass(cmd_, &rp, VK_SUBPASS_CONTENTS_INLINE);
+    // Opaque backgrounds as one clear each: a fill without texture or blending.
+    const ImVec2 scale = ImGui::GetIO().DisplayFramebufferScale;
+    const VkExtent2D ext = target_.extent();
+    std::vector<VkClearRect> rects;
+    for (const auto& f : fills) {
+        const int x0 = std::clamp(int(std::floor(f[0] * scale.x)), 0, int(ext.width));
+        const int y0 = std::clamp(int(std::floor(f[1] * scale.y)), 0, int(ext.height));
+        const int x1 = std::clamp(int(std::ceil((f[0] + f[2]) * scale.x)), x0, int(ext.width));
+        const int y1 = std::clamp(int(std::ceil((f[1] + f[3]) * scale.y)), y0, int(ext.height));
+        if (x1 > x0 && y1 > y0) rects.push_back({{{x0, y0}, {uint32_t(x1 - x0), uint32_t(y1 - y0)}}, 0, 1});
+    }
+    if (!rects.empty()) {
+        VkClearAttachment clear{VK_IMAGE_ASPECT_COLOR_BIT, 0, {}};
+        clear.clearValue.color = {{color[0], color[1], color[2], color[3]}};
+        vkCmdClearAttachments(cmd_, 1, &clear, uint32_t(rects.size()), rects.data());
+    }
     ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd_);
     vkCmdEndRenderPass(cmd_);
     VK_CHECK(vkEndCommandBuffer(cmd_));

@@ -4,6 +4,9 @@
 
 #include <vulkan/vulkan.h>
 
+#include <array>
+#include <span>
+
 struct ImFont;
 
 struct GLFWwindow;
@@ -24,8 +27,9 @@ public:
     ImGuiLayer& operator=(const ImGuiLayer&) = delete;
 
     void newFrame();
-    // Records the overlay pass (ImGui draw data from ImGui::Render()) into `cmd` and ends it.
-    VkCommandBuffer record();
+    // Records the overlay pass: first `fills` (x, y, width, height in window pixels) cleared to the
+    // opaque `color`, then the ImGui draw data from ImGui::Render().
+    VkCommandBuffer record(std::span<const std::array<float, 4>> fills, const std::array<float, 4>& color);
     void swapchainRecreated();
     // DejaVu Sans at three times the UI size (presentation mode).
     ImFont* presentationFont() const { return presentationFont_; }
