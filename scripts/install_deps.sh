@@ -9,7 +9,7 @@ set -euo pipefail
 build_packages=(
   cmake g++ make pkg-config
   libvulkan-dev mesa-vulkan-drivers glslc
-  libglfw3-dev libx11-dev libxrandr-dev libimgui-dev libglm-dev libeigen3-dev libtinygltf-dev
+  libglfw3-dev libx11-dev libxext-dev libxrandr-dev libimgui-dev libglm-dev libeigen3-dev libtinygltf-dev
   nlohmann-json3-dev libstb-dev libcli11-dev fonts-dejavu-core
   libgtest-dev libbenchmark-dev
 )

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # `patchwork bench --editor` under Xvfb with the validation layer on, through both presentation
-# paths (host presentation by XPutImage, the CPU default, and the Vulkan swapchain): a short G drag
+# paths (host presentation by XShmPutImage, the CPU default, and the Vulkan swapchain): a short G drag
 # runs, the point moves with every join holding, Esc restores it, and the JSON carries every
 # figure. Then the editor's window is photographed on both paths: the 3D view must be on screen
 # (the teapot and its net fill the middle, the background shows below). No timing is checked:
