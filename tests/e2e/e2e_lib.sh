@@ -13,7 +13,15 @@ fail() {
     [ -f "$WORK/trace.json" ] && python3 -c "import json; t=json.load(open('$WORK/trace.json')); print({k: t[k] for k in t if k not in ('points', 'world')})"
     exit 1
 }
-for tool in Xvfb xdotool python3; do command -v $tool >/dev/null || { echo "e2e: $tool missing"; exit 77; }; done
+# A missing tool skips the test (exit 77) on a developer's machine; in CI (CI set), where
+# scripts/install_deps.sh --tests installs every one of them, it fails instead, so that a broken
+# install step cannot pass as a skipped editor test.
+missing_tool() {
+    echo "e2e: $1 missing"
+    [ -n "${CI:-}" ] && exit 1
+    exit 77
+}
+for tool in Xvfb xdotool python3; do command -v $tool >/dev/null || missing_tool $tool; done
 
 # Xvfb picks a free display number itself (-displayfd) so parallel runs cannot collide.
 Xvfb -displayfd 3 -screen 0 1280x800x24 -nolisten tcp 3>"$WORK/display" >"$WORK/xvfb.log" 2>&1 &
@@ -33,7 +41,7 @@ export DISPLAY=:$DNUM
 for i in $(seq 50); do xdotool getmouselocation >/dev/null 2>&1 && break; sleep 0.1; done
 # E2E_WINDOW_MANAGER=openbox: a window manager, so that windows can be minimised and restored.
 if [ -n "${E2E_WINDOW_MANAGER:-}" ]; then
-    command -v "$E2E_WINDOW_MANAGER" >/dev/null || { echo "e2e: $E2E_WINDOW_MANAGER missing"; exit 77; }
+    command -v "$E2E_WINDOW_MANAGER" >/dev/null || missing_tool "$E2E_WINDOW_MANAGER"
     "$E2E_WINDOW_MANAGER" >"$WORK/wm.log" 2>&1 &
     WM_PID=$!
     sleep 1

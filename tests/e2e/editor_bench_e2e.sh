@@ -12,7 +12,7 @@ WORK=$3
 rm -rf "$WORK"
 mkdir -p "$WORK"
 source "$(dirname "$0")/e2e_lib.sh"
-command -v import >/dev/null || { echo "e2e: ImageMagick (import) missing"; exit 77; }
+command -v import >/dev/null || missing_tool "ImageMagick (import)"
 
 for present in host swapchain; do
     if [ $present = swapchain ]; then export PATCHWORK_PRESENT=swapchain; else unset PATCHWORK_PRESENT; fi
