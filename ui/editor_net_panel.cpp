@@ -112,7 +112,9 @@ void Editor::drawNetPanel() {
 
     const int s = activeNet();
     if (s < 0) {
+        ImGui::PushTextWrapPos(0.0f);
         ImGui::TextDisabled("Select a net (outliner, its surface or one of its points) to edit it");
+        ImGui::PopTextWrapPos();
         return;
     }
     ImGui::Separator();

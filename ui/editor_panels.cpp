@@ -344,7 +344,7 @@ void Editor::drawLeftPanel() {
             if (created >= 0) sel_.patch = created;
         }
         tip("Add a flat 1x1 Bézier patch at the view target");
-        ImGui::SameLine();
+        sameLineIfFits("Add curve");
         if (ImGui::Button("Add curve")) {
             const Vec3 c(cam_.target[0], cam_.target[1], cam_.target[2]);
             const double size = std::max(0.2 * modelSize(doc_), 1.0);
@@ -358,7 +358,7 @@ void Editor::drawLeftPanel() {
         traceItem("op.addCurve");
         tip("Add a cubic Bézier curve (4 points) at the view target, drawn through the isoline tessellator");
         ImGui::BeginDisabled(!hasPatch);
-        ImGui::SameLine();
+        sameLineIfFits("Duplicate");
         if (ImGui::Button("Duplicate")) {
             int created = -1;
             const Vec3 off(0.1 * modelSize(doc_), 0, 0);
@@ -366,7 +366,7 @@ void Editor::drawLeftPanel() {
             if (created >= 0) sel_.patch = created;
         }
         tip("Copy the selected patch with its own points (Shift+D)");
-        ImGui::SameLine();
+        sameLineIfFits("Delete");
         if (ImGui::Button("Delete")) {
             patchOp("Delete patch", [&](Document& d) { deletePatch(d, p); });
             sel_.clear();
