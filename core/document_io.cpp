@@ -42,6 +42,11 @@ void saveDocument(const Document& doc, const std::filesystem::path& path, const 
     }
 }
 
+bool saveKeepsEverything(const std::filesystem::path& path) {
+    const std::string ext = lowerExtension(path);
+    return ext == ".patchwork" || ext == ".gltf" || ext == ".glb";
+}
+
 Document builtinTeapot() {
     Document doc = parseBpt(embedded::teapotBpt, "teapot.bpt (built in)");
     doc.name = "teapot";

@@ -12,6 +12,10 @@ namespace pw {
 Document loadDocument(const std::filesystem::path& path);
 void saveDocument(const Document& doc, const std::filesystem::path& path, const GltfExportOptions& gltf = {});
 
+// Formats that keep everything a document holds (patches, nets, triangles, curves, joins):
+// .patchwork, .gltf and .glb. Writing another (.bpt) is an export: Save asks for a name instead.
+bool saveKeepsEverything(const std::filesystem::path& path);
+
 // The built-in teapot (data/teapot.bpt compiled into the binary), joins detected.
 Document builtinTeapot();
 

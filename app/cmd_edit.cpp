@@ -1,0 +1,66 @@
+// `patchwork edit [IN] -o OUT [--run SCRIPT] [-c 'cmd; cmd; …']`: the editor's commands without a
+// window (core/command_table.hpp). IN defaults to an empty document; the script runs first, then
+// the -c commands. A bad line fails with SCRIPT:LINE: message and exit 2, and then nothing is
+// written: OUT and every file a `save` in the script named stay as they were.
+#include <iostream>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "command_table.hpp"
+#include "commands.hpp"
+#include "document_io.hpp"
+#include "errors.hpp"
+#include "file_io.hpp"
+
+namespace pw::app {
+
+namespace {
+
+struct EditOptions {
+    std::string input, output, script, commands;
+    bool quiet = false;
+};
+
+// Keeps the script's writes until it has run to its end.
+class ScriptHost final : public CommandHost {
+public:
+    void write(const Document& doc, const std::string& path) override { writes.emplace_back(path, doc); }
+    std::vector<std::pair<std::string, Document>> writes;
+};
+
+int runEdit(const EditOptions& opt) {
+    const std::string ext = lowerExtension(opt.output);
+    if (ext != ".patchwork" && ext != ".bpt" && ext != ".gltf" && ext != ".glb")
+        throw OutputError(opt.output, "unknown file type '" + ext + "'; Patchwork writes .patchwork, .bpt, .gltf or .glb");
+    EditSession session;
+    if (!opt.input.empty()) session.open(opt.input);
+    const CommandTable table = makeCommandTable();
+    ScriptHost host;
+    if (!opt.script.empty()) table.runScript(session, host, readFileLimited(opt.script), opt.script);
+    if (!opt.commands.empty()) table.runScript(session, host, opt.commands, "-c");
+    for (const auto& [path, doc] : host.writes) saveDocument(doc, path, session.exportOptions);
+    const Document out = session.documentToSave();
+    saveDocument(out, opt.output, session.exportOptions);
+    if (!opt.quiet)
+        std::cout << "wrote " << opt.output << " (" << out.patches.size() << " patches, " << out.surfaces.size() << " nets, "
+                  << out.triangles.size() << " triangles, " << out.curves.size() << " curves, " << out.points.size()
+                  << " points, " << out.joins.size() << " joins)\n";
+    return 0;
+}
+
+}  // namespace
+
+void registerEditCommand(CLI::App& app, Action& run) {
+    auto opt = std::make_shared<EditOptions>();
+    CLI::App* cmd = app.add_subcommand("edit", "Run editor commands without a window (the names of the F1 help and the palette)");
+    cmd->add_option("input", opt->input, "Document to start from (.patchwork, .bpt, .gltf, .glb); default: an empty document");
+    cmd->add_option("-o,--output", opt->output, "Where to write the result (.patchwork, .bpt, .gltf, .glb; by extension)")->required();
+    cmd->add_option("--run", opt->script, "Script file: one command per line or ';'-separated, '#' starts a comment");
+    cmd->add_option("-c,--commands", opt->commands, "Commands, ';'-separated (run after --run)");
+    cmd->add_flag("-q,--quiet", opt->quiet, "Print nothing on success");
+    cmd->callback([opt, &run] { run = [opt] { return runEdit(*opt); }; });
+}
+
+}  // namespace pw::app

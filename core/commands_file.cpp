@@ -1,0 +1,113 @@
+// File and history commands: new, open, import, save, save-as, export-gltf, screenshot, quit,
+// undo, redo.
+#include <filesystem>
+
+#include "command_table.hpp"
+#include "document_io.hpp"
+#include "patch_ops.hpp"
+
+namespace pw {
+
+namespace {
+
+bool canUndo(const EditSession& s) { return s.history().canUndo(); }
+bool canRedo(const EditSession& s) { return s.history().canRedo(); }
+
+// New and Open replace the document: a window asks about unsaved changes first.
+bool mayReplace(CommandContext& ctx) {
+    if (!ctx.guarded || !ctx.session.isModified()) return true;
+    std::string line = ctx.command.name;
+    for (const std::string& a : ctx.args) line += " \"" + a + "\"";
+    return ctx.host.confirmDiscard(line);
+}
+
+void save(CommandContext& ctx, const std::string& path) {
+    ctx.host.write(ctx.session.documentToSave(), path);
+    ctx.session.savedTo(path);
+    ctx.host.status("Saved " + path);
+}
+
+}  // namespace
+
+void addFileCommands(CommandTable& t) {
+    t.add({.name = "new", .label = "New", .menu = "File", .help = "Start a new document with one flat patch",
+           .bindings = {{"", "", {"Ctrl+N"}}},
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 0, 0);
+               if (mayReplace(ctx)) ctx.session.newDocument();
+           }});
+    t.add({.name = "open", .label = "Open...", .menu = "File", .usage = "[FILE]",
+           .help = "Open a .patchwork, .bpt or Patchwork glTF file",
+           .bindings = {{"", "", {"Ctrl+O"}}},
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, ctx.host.hasWindow() ? 0 : 1, 1);
+               if (!mayReplace(ctx)) return;
+               if (ctx.args.empty())
+                   ctx.host.fileDialog(FileDialogKind::Open);
+               else
+                   ctx.session.open(ctx.args[0]);
+           }});
+    t.add({.name = "import", .label = "Import...", .menu = "File", .usage = "[FILE]",
+           .help = "Add everything in a .patchwork, .bpt or Patchwork glTF file to this document, selected",
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, ctx.host.hasWindow() ? 0 : 1, 1);
+               if (ctx.args.empty())
+                   ctx.host.fileDialog(FileDialogKind::Import);
+               else
+                   ctx.session.import(ctx.args[0]);
+           }});
+    t.add({.name = "save", .label = "Save", .menu = "File", .usage = "[FILE]",
+           .help = "Save to the document's file (atomic write); untitled or .bpt documents ask for a name",
+           .bindings = {{"", "", {"Ctrl+S"}}},
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, ctx.host.hasWindow() ? 0 : 1, 1);
+               if (!ctx.args.empty())
+                   save(ctx, ctx.args[0]);
+               else if (!ctx.session.path().empty() && saveKeepsEverything(ctx.session.path()))
+                   save(ctx, ctx.session.path());
+               else
+                   ctx.host.fileDialog(FileDialogKind::SaveAs);
+           }});
+    t.add({.name = "save-as", .label = "Save As...", .menu = "File",
+           .help = "Save under a new name (.patchwork, .bpt, .gltf, .glb)",
+           .bindings = {{"", "", {"Ctrl+Shift+S"}}}, .windowOnly = true,
+           .run = [](CommandContext& ctx) { ctx.host.fileDialog(FileDialogKind::SaveAs); }});
+    t.add({.name = "export-gltf", .label = "Export glTF...", .menu = "File", .usage = "[FILE]",
+           .help = "Tessellate and write a glTF 2.0 mesh (.gltf or .glb; the patches kept in extras)",
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, ctx.host.hasWindow() ? 0 : 1, 1);
+               if (ctx.args.empty()) return ctx.host.fileDialog(FileDialogKind::ExportGltf);
+               const std::filesystem::path p = ctx.args[0];
+               const std::string ext = p.extension().string();
+               if (ext != ".gltf" && ext != ".glb") throw EditError("'" + ctx.args[0] + "' is not a .gltf or .glb file");
+               ctx.host.write(ctx.session.documentToSave(), ctx.args[0]);
+           }});
+    t.add({.name = "screenshot", .label = "Save Screenshot...", .menu = "File", .usage = "[FILE]",
+           .help = "Save the 3D viewport (without panels) as a PNG",
+           .bindings = {{"", "", {"F12"}}}, .windowOnly = true,
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 0, 1);
+               ctx.host.screenshot(ctx.args.empty() ? std::string() : ctx.args[0]);
+           }});
+    t.add({.name = "quit", .label = "Quit", .menu = "File", .help = "Close the editor (asks about unsaved changes)",
+           .bindings = {{"", "", {"Ctrl+Q"}}}, .windowOnly = true,
+           .run = [](CommandContext& ctx) {
+               if (mayReplace(ctx)) ctx.host.quit();
+           }});
+    t.add({.name = "undo", .label = "Undo", .menu = "Edit", .help = "Undo the last edit (one drag is one step)",
+           .bindings = {{"", "", {"Ctrl+Z"}}}, .enabled = canUndo,
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 0, 0);
+               ctx.session.undo();
+               ctx.host.status("Undone");
+           }});
+    t.add({.name = "redo", .label = "Redo", .menu = "Edit", .help = "Redo the undone edit",
+           .bindings = {{"", "", {"Ctrl+Shift+Z", "Ctrl+Y"}}}, .enabled = canRedo,
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 0, 0);
+               ctx.session.redo();
+               ctx.host.status("Redone");
+           }});
+}
+
+}  // namespace pw

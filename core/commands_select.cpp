@@ -1,0 +1,144 @@
+// Selection and transform commands: select, move, rotate, scale, cursor.
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "command_table.hpp"
+#include "constraint_solver.hpp"
+#include "patch_ops.hpp"
+#include "picking.hpp"
+
+namespace pw {
+
+namespace {
+
+// "3" or "0,2,5" → indices below `count`.
+std::vector<uint32_t> indexList(const std::string& word, size_t count, const char* what) {
+    std::vector<uint32_t> out;
+    size_t start = 0;
+    while (start <= word.size()) {
+        const size_t comma = std::min(word.find(',', start), word.size());
+        out.push_back(commandIndex(word.substr(start, comma - start), count, what));
+        start = comma + 1;
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+void select(CommandContext& ctx) {
+    expectArgs(ctx, 1, 2);
+    const std::string& what = ctx.args[0];
+    const Document& doc = ctx.session.doc;
+    Selection& sel = ctx.session.sel;
+    auto addPoints = [&](const auto& idx) { sel.points.insert(sel.points.end(), idx.begin(), idx.end()); };
+    if (what == "all" || what == "none") {
+        expectArgs(ctx, 1, 1);
+        sel.clear();
+        if (what == "all") {
+            const std::vector<bool> used = usedPointMask(doc);
+            for (size_t i = 0; i < used.size(); ++i)
+                if (used[i]) sel.points.push_back(uint32_t(i));
+        }
+        return;
+    }
+    expectArgs(ctx, 2, 2);
+    const std::string& list = ctx.args[1];
+    sel.clear();
+    if (what == "point") {
+        sel.points = indexList(list, doc.points.size(), "point");
+    } else if (what == "patch") {
+        const auto ids = indexList(list, doc.patches.size(), "patch");
+        for (uint32_t i : ids) addPoints(doc.patches[i].idx);
+        if (ids.size() == 1) sel.patch = int(ids[0]);
+    } else if (what == "net") {
+        const auto ids = indexList(list, doc.surfaces.size(), "net");
+        for (uint32_t i : ids) addPoints(doc.surfaces[i].idx);
+        if (ids.size() == 1) sel.surface = int(ids[0]);
+    } else if (what == "triangle") {
+        const auto ids = indexList(list, doc.triangles.size(), "triangle");
+        for (uint32_t i : ids) addPoints(doc.triangles[i].idx);
+        if (ids.size() == 1) sel.triangle = int(ids[0]);
+    } else if (what == "curve") {
+        const auto ids = indexList(list, doc.curves.size(), "curve");
+        for (uint32_t i : ids) addPoints(doc.curves[i].idx);
+        if (ids.size() == 1) sel.curve = int(ids[0]);
+    } else {
+        throw EditError("expected all, none, point, patch, net, triangle or curve, got '" + what + "'");
+    }
+    std::sort(sel.points.begin(), sel.points.end());
+    sel.points.erase(std::unique(sel.points.begin(), sel.points.end()), sel.points.end());
+}
+
+// Moves the selection's points by `f`; the joins are held by the solver with the moved points fixed
+// (a whole joined group moved rigidly needs no correction and gets none).
+void transformSelection(CommandContext& ctx, const std::string& label, const std::function<Vec3(const Vec3&)>& f) {
+    const std::vector<uint32_t> moved = ctx.session.selectedPoints();
+    if (moved.empty()) throw EditError("nothing is selected (select points, a patch, a net, a triangle or a curve first)");
+    ctx.session.apply(label, [&](Document& d) {
+        const DragSolver solver(d, moved);
+        for (uint32_t p : moved) d.points[p] = f(d.points[p]);
+        solver.project(d.points);
+    }, false);
+}
+
+Vec3 pivot(const EditSession& s) {
+    Vec3 c(0.0);
+    const std::vector<uint32_t> pts = s.selectedPoints();
+    for (uint32_t p : pts) c += s.doc.points[p];
+    return pts.empty() ? c : c / double(pts.size());
+}
+
+int axisIndex(const std::string& word) {
+    if (word == "x" || word == "X") return 0;
+    if (word == "y" || word == "Y") return 1;
+    if (word == "z" || word == "Z") return 2;
+    throw EditError("expected an axis X, Y or Z, got '" + word + "'");
+}
+
+}  // namespace
+
+void addSelectCommands(CommandTable& t) {
+    t.add({.name = "select", .label = "Select", .menu = "Select",
+           .usage = "all|none|point N[,N...]|patch N[,N...]|net N|triangle N|curve N",
+           .help = "Select control points, or whole patches, nets, triangles or curves by number",
+           .bindings = {{"Select All", "all", {"A"}}, {"Select None", "none", {"Alt+A"}}},
+           .run = select});
+    t.add({.name = "move", .label = "Move", .usage = "DX DY DZ",
+           .help = "Move the selection by a vector; joins are held",
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 3, 3);
+               const Vec3 d(commandNumber(ctx.args[0], "DX"), commandNumber(ctx.args[1], "DY"), commandNumber(ctx.args[2], "DZ"));
+               transformSelection(ctx, "Move", [d](const Vec3& p) { return p + d; });
+           }});
+    t.add({.name = "rotate", .label = "Rotate", .usage = "X|Y|Z DEG",
+           .help = "Rotate the selection about an axis through its median point; joins are held",
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 2, 2);
+               Vec3 axis(0.0);
+               axis[axisIndex(ctx.args[0])] = 1.0;
+               const double rad = glm::radians(commandNumber(ctx.args[1], "DEG"));
+               const Vec3 c = pivot(ctx.session);
+               const glm::dmat4 m = glm::rotate(glm::dmat4(1.0), rad, axis);
+               transformSelection(ctx, "Rotate", [&](const Vec3& p) { return c + Vec3(m * glm::dvec4(p - c, 0.0)); });
+           }});
+    t.add({.name = "scale", .label = "Scale", .usage = "S | SX SY SZ",
+           .help = "Scale the selection about its median point; joins are held",
+           .run = [](CommandContext& ctx) {
+               if (ctx.args.size() != 1) expectArgs(ctx, 3, 3);
+               Vec3 s(commandNumber(ctx.args[0], "S"));
+               if (ctx.args.size() == 3) s = Vec3(commandNumber(ctx.args[0], "SX"), commandNumber(ctx.args[1], "SY"), commandNumber(ctx.args[2], "SZ"));
+               const Vec3 c = pivot(ctx.session);
+               transformSelection(ctx, "Scale", [&](const Vec3& p) { return c + s * (p - c); });
+           }});
+    t.add({.name = "cursor", .label = "Place 3D Cursor", .usage = "X Y Z",
+           .help = "Place the 3D cursor, where new patches, triangles, curves and nets appear",
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 3, 3);
+               ctx.session.cursor = Vec3(commandNumber(ctx.args[0], "X"), commandNumber(ctx.args[1], "Y"), commandNumber(ctx.args[2], "Z"));
+           }});
+}
+
+}  // namespace pw
