@@ -52,7 +52,10 @@ std::vector<std::string> splitCommandWords(std::string_view line) {
 }
 
 void CommandTable::run(EditSession& session, CommandHost& host, std::string_view line, bool guarded) const {
-    std::vector<std::string> words = splitCommandWords(line);
+    run(session, host, splitCommandWords(line), guarded);
+}
+
+void CommandTable::run(EditSession& session, CommandHost& host, const std::vector<std::string>& words, bool guarded) const {
     if (words.empty()) return;
     const Command* c = find(words.front());
     if (!c) throw EditError("unknown command '" + words.front() + "' (the F1 help and the palette list every command)");

@@ -25,9 +25,10 @@ class CommandHost {
 public:
     virtual ~CommandHost() = default;
     virtual bool hasWindow() const { return false; }
-    // Before `line` replaces a modified document: true to go on now. A window asks the user and
-    // returns false; it runs `line` again (unguarded) once the user saved or discarded.
-    virtual bool confirmDiscard(const std::string& line) { (void)line; return true; }
+    // Before the command `words` (name and arguments) replaces a modified document: true to go on
+    // now. A window asks the user and returns false; it runs the command again (unguarded) once the
+    // user saved or discarded.
+    virtual bool confirmDiscard(const std::vector<std::string>& words) { (void)words; return true; }
     // Writes `doc` to `path` (by extension). A script host keeps every write until the script ended
     // well, so that a failing script leaves no file behind.
     virtual void write(const Document& doc, const std::string& path) = 0;
@@ -84,6 +85,8 @@ public:
     // disabled command, or one that needs a window the host has not got; the command's own
     // exceptions go on.
     void run(EditSession& session, CommandHost& host, std::string_view line, bool guarded = true) const;
+    // The same with the line split already (a file name from a dialog needs no quoting).
+    void run(EditSession& session, CommandHost& host, const std::vector<std::string>& words, bool guarded = true) const;
     bool isEnabled(const Command& c, const EditSession& session) const { return !c.enabled || c.enabled(session); }
 
     // A script: one command per line or `;`-separated, `#` starts a comment. Any failure throws

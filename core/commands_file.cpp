@@ -5,6 +5,7 @@
 #include "command_table.hpp"
 #include "document_io.hpp"
 #include "patch_ops.hpp"
+#include "tess_presets.hpp"
 
 namespace pw {
 
@@ -16,9 +17,9 @@ bool canRedo(const EditSession& s) { return s.history().canRedo(); }
 // New and Open replace the document: a window asks about unsaved changes first.
 bool mayReplace(CommandContext& ctx) {
     if (!ctx.guarded || !ctx.session.isModified()) return true;
-    std::string line = ctx.command.name;
-    for (const std::string& a : ctx.args) line += " \"" + a + "\"";
-    return ctx.host.confirmDiscard(line);
+    std::vector<std::string> words{ctx.command.name};
+    words.insert(words.end(), ctx.args.begin(), ctx.args.end());
+    return ctx.host.confirmDiscard(words);
 }
 
 void save(CommandContext& ctx, const std::string& path) {
@@ -46,6 +47,12 @@ void addFileCommands(CommandTable& t) {
                    ctx.host.fileDialog(FileDialogKind::Open);
                else
                    ctx.session.open(ctx.args[0]);
+           }});
+    t.add({.name = "open-notes-patch", .label = "Open the Notes' Bézier Patch",
+           .help = "Replace the document with the 16-point Bézier patch of the lecture notes",
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 0, 0);
+               if (mayReplace(ctx)) ctx.session.reset(notesBezierPatch(), "");
            }});
     t.add({.name = "import", .label = "Import...", .menu = "File", .usage = "[FILE]",
            .help = "Add everything in a .patchwork, .bpt or Patchwork glTF file to this document, selected",

@@ -38,6 +38,7 @@ void EditSession::reset(Document d, const std::string& path) {
     path_ = path;
     sel.clear();
     camera = doc.camera;
+    ++serial_;
     changed(true);
 }
 

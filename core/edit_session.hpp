@@ -40,6 +40,7 @@ public:
     // nets, triangles, curves or joins may have changed (not when points merely moved).
     uint64_t version() const { return version_; }
     uint64_t topologyVersion() const { return topologyVersion_; }
+    uint64_t documentSerial() const { return serial_; }  // bumped by reset(): a different document
     void changed(bool topology);
 
     // Replaces the document (new, open, recover): history cleared, saved state, camera from the
@@ -76,7 +77,7 @@ private:
     Document committed_;
     EditHistory history_;
     std::string path_;
-    uint64_t generation_ = 0, version_ = 0, topologyVersion_ = 0;
+    uint64_t generation_ = 0, version_ = 0, topologyVersion_ = 0, serial_ = 0;
     bool forceModified_ = false;
     void markCommitted();
 };

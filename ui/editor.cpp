@@ -197,6 +197,7 @@ Editor::Editor(GLFWwindow* window, const std::string& file) : window_(window) {
     glfwGetWindowContentScale(window_, &sx, &sy);
     uiScale_ = std::max(1.0f, std::max(sx, sy));
     imgui_ = std::make_unique<ImGuiLayer>(*dev_, window_, *target_, uiScale_);
+    bindShortcuts();
 
     // Step 3: the document, recent files, crash recovery.
     browseDir_ = fs::current_path();
@@ -235,36 +236,129 @@ Editor::~Editor() {
 }
 
 void Editor::setDocument(Document doc, const std::string& path) {
-    doc_ = std::move(doc);
-    markCommitted();
-    history_.clear();
-    history_.markSaved();
-    forceModified_ = false;
-    path_ = path;
-    sel_.clear();
+    session_.reset(std::move(doc), path);
+    documentReplaced();
+}
+
+void Editor::documentReplaced() {
+    seenSerial_ = session_.documentSerial();
     hovered_ = -1;
-    cam_ = doc_.camera;
+    inspectorSolver_.reset();
     // Files without a stored view (or the teapot) are framed; PATCHWORK_EDITOR_VIEW (tests) names a view.
     const char* fixed = std::getenv("PATCHWORK_EDITOR_VIEW");
     if (fixed && *fixed)
         if (auto c = applyNamedView(cam_, fixed)) cam_ = *c;
     if (cam_ == Camera{} || (fixed && *fixed)) frameBox(computeBounds(doc_.points));
+    // New geometry goes where the view looks until the user places the 3D cursor.
+    session_.cursor = Vec3(cam_.target[0], cam_.target[1], cam_.target[2]);
     documentChanged(true);
-    glfwSetWindowTitle(window_, ("Patchwork — " + (path_.empty() ? std::string(doc_.name.empty() ? "untitled" : doc_.name) : path_)).c_str());
+    if (!session_.path().empty()) addRecent(session_.path());
+    glfwSetWindowTitle(window_, ("Patchwork — " + session_.title()).c_str());
 }
 
 void Editor::documentChanged(bool topology) {
     renderer_->setDocument(doc_);
     if (topology) usedMask_ = usedPointMask(doc_);
     clampSelection(sel_, doc_);
+    seenVersion_ = session_.version();
+    seenTopology_ = session_.topologyVersion();
     ++docVersion_;
     wake();
 }
 
-void Editor::markCommitted() {
-    committed_ = doc_;
-    ++committedGeneration_;
-    inspectorSolver_.reset();
+void Editor::runCommand(const std::vector<std::string>& words, bool guarded) {
+    try {
+        commands_.run(session_, *this, words, guarded);
+    } catch (const std::exception& e) {
+        showError(std::string("The command did not run; the document is unchanged.\n\n") + e.what());
+    }
+    if (session_.documentSerial() != seenSerial_)
+        documentReplaced();
+    else if (session_.version() != seenVersion_)
+        documentChanged(session_.topologyVersion() != seenTopology_);
+    wake();
+}
+
+bool Editor::confirmDiscard(const std::vector<std::string>& words) {
+    pendingCommand_ = words;
+    openUnsavedPrompt_ = true;
+    wake();
+    return false;
+}
+
+void Editor::write(const Document& doc, const std::string& path) { saveDocument(doc, path, exportOptions_); }
+
+void Editor::fileDialog(FileDialogKind kind) {
+    const std::string name = doc_.name.empty() ? "untitled" : doc_.name;
+    fileName_[0] = 0;
+    switch (kind) {
+        case FileDialogKind::Open: fileMode_ = FileDialogMode::Open; break;
+        case FileDialogKind::Import: fileMode_ = FileDialogMode::Import; break;
+        case FileDialogKind::SaveAs:
+            fileMode_ = FileDialogMode::SaveAs;
+            std::snprintf(fileName_, sizeof fileName_, "%s.patchwork", name.c_str());
+            break;
+        case FileDialogKind::ExportGltf:
+            fileMode_ = FileDialogMode::ExportGltf;
+            std::snprintf(fileName_, sizeof fileName_, "%s.glb", name.c_str());
+            break;
+        case FileDialogKind::Screenshot:
+            fileMode_ = FileDialogMode::Screenshot;
+            std::snprintf(fileName_, sizeof fileName_, "screenshot.png");
+            break;
+    }
+    wake();
+}
+
+void Editor::toggle(WindowToggle which) {
+    switch (which) {
+        case WindowToggle::Help: showHelp_ = !showHelp_; break;
+        case WindowToggle::Palette:
+            showPalette_ = !showPalette_;
+            paletteQuery_[0] = 0;
+            paletteCursor_ = 0;
+            break;
+        case WindowToggle::Presentation: setPresentation(!presentation_); break;
+        case WindowToggle::DomainView: showDomain_ = !showDomain_; break;
+        case WindowToggle::ShaderPanel: showShaders_ = !showShaders_; break;
+        case WindowToggle::GroundGrid: showGround_ = !showGround_; break;
+    }
+    wake();
+}
+
+bool Editor::toggled(WindowToggle which) const {
+    switch (which) {
+        case WindowToggle::Help: return showHelp_;
+        case WindowToggle::Palette: return showPalette_;
+        case WindowToggle::Presentation: return presentation_;
+        case WindowToggle::DomainView: return showDomain_;
+        case WindowToggle::ShaderPanel: return showShaders_;
+        case WindowToggle::GroundGrid: return showGround_;
+    }
+    return false;
+}
+
+void Editor::screenshot(const std::string& path) {
+    std::string file = path;
+    if (file.empty()) {
+        char name[64];
+        const std::time_t t = std::time(nullptr);
+        std::strftime(name, sizeof name, "patchwork-%Y%m%d-%H%M%S.png", std::localtime(&t));
+        file = name;
+    }
+    screenshotRequested_ = true;
+    screenshotPath_ = file;
+    wake();
+}
+
+bool Editor::frame(const Bounds& box) {
+    frameBox(box);
+    return true;
+}
+
+void Editor::status(const std::string& message) {
+    status_ = message;
+    statusTime_ = std::chrono::steady_clock::now();
 }
 
 void Editor::setPointHeld(uint32_t p, const Vec3& position) {
@@ -278,107 +372,22 @@ void Editor::setPointHeld(uint32_t p, const Vec3& position) {
         }
     // Numeric edits go through the solver like a drag, with this point held; the factorisation is
     // kept while the same point is edited against the same committed document.
-    if (!inspectorSolver_ || inspectorPoint_ != p || inspectorGeneration_ != committedGeneration_) {
-        inspectorSolver_ = std::make_unique<DragSolver>(committed_, std::vector<uint32_t>{p});
+    if (!inspectorSolver_ || inspectorPoint_ != p || inspectorGeneration_ != session_.generation()) {
+        inspectorSolver_ = std::make_unique<DragSolver>(session_.committed(), std::vector<uint32_t>{p});
         inspectorPoint_ = p;
-        inspectorGeneration_ = committedGeneration_;
+        inspectorGeneration_ = session_.generation();
     }
-    std::vector<Vec3> pts = committed_.points;
+    std::vector<Vec3> pts = session_.committed().points;
     pts[p] = position;
     inspectorSolver_->project(pts);
     doc_.points = std::move(pts);
     documentChanged(false);
 }
 
-void Editor::commit(const std::string& label) {
-    history_.commit(committed_, doc_, label);
-    markCommitted();
-    ++docVersion_;
-}
-
-void Editor::undo() {
-    if (mode_ != Interaction::None || !history_.canUndo()) return;
-    history_.undo(doc_);
-    markCommitted();
-    documentChanged(true);
-    status_ = "Undone";
-    statusTime_ = std::chrono::steady_clock::now();
-}
-
-void Editor::redo() {
-    if (mode_ != Interaction::None || !history_.canRedo()) return;
-    history_.redo(doc_);
-    markCommitted();
-    documentChanged(true);
-    status_ = "Redone";
-    statusTime_ = std::chrono::steady_clock::now();
-}
-
 void Editor::showError(const std::string& message) {
     errorMessage_ = message;
     openError_ = true;
     wake();
-}
-
-void Editor::loadFile(const std::string& path, bool import) {
-    try {
-        Document d = loadDocument(path);
-        if (import) {
-            // Import: append the file's patches (own points, joins renumbered) to this document.
-            const uint32_t base = uint32_t(doc_.points.size()), pbase = uint32_t(doc_.patches.size());
-            doc_.points.insert(doc_.points.end(), d.points.begin(), d.points.end());
-            for (Patch p : d.patches) {
-                for (uint32_t& i : p.idx) i += base;
-                doc_.patches.push_back(p);
-            }
-            for (Surface s : d.surfaces) {
-                for (uint32_t& i : s.idx) i += base;
-                doc_.surfaces.push_back(s);
-            }
-            for (Join j : d.joins) {
-                j.patchA += pbase;
-                j.patchB += pbase;
-                doc_.joins.push_back(j);
-            }
-            commit("Import " + fs::path(path).filename().string());
-            documentChanged(true);
-        } else {
-            setDocument(std::move(d), path);
-            addRecent(path);
-        }
-    } catch (const std::exception& e) {
-        showError(std::string("Could not open the file; the document is unchanged.\n\n") + e.what());
-    }
-}
-
-bool Editor::saveTo(const std::string& path) {
-    try {
-        Document out = doc_;
-        out.camera = cam_;
-        saveDocument(out, path, exportOptions_);
-        const std::string ext = lowerExtension(path);
-        if (ext == ".patchwork" || ext == ".bpt" || ext == ".gltf" || ext == ".glb") {
-            path_ = path;
-            history_.markSaved();
-            forceModified_ = false;
-            autosaver_.discard();
-            addRecent(path);
-            glfwSetWindowTitle(window_, ("Patchwork — " + path_).c_str());
-        }
-        status_ = "Saved " + path;
-        statusTime_ = std::chrono::steady_clock::now();
-        return true;
-    } catch (const std::exception& e) {
-        showError(std::string("Could not save; the document is unchanged.\n\n") + e.what());
-        return false;
-    }
-}
-
-void Editor::newDocument() {
-    Document d;
-    d.name = "untitled";
-    addFlatPatch(d, Vec3(0.0), 2.0, true);
-    setDocument(std::move(d), "");
 }
 
 void Editor::addRecent(const std::string& path) {
@@ -399,45 +408,17 @@ void Editor::addRecent(const std::string& path) {
     }
 }
 
-void Editor::requestAction(PendingAction a, const std::string& path) {
-    pending_ = a;
-    pendingPath_ = path;
-    if (isModified() && a != PendingAction::None) {
-        openUnsavedPrompt_ = true;
-        wake();
-        return;
-    }
-    performAction(a);
-}
-
-void Editor::performAction(PendingAction a) {
-    pending_ = PendingAction::None;
-    switch (a) {
-        case PendingAction::Quit: quit_ = true; break;
-        case PendingAction::New: newDocument(); break;
-        case PendingAction::NotesPatch: setDocument(notesBezierPatch(), ""); break;
-        case PendingAction::Open:
-            fileMode_ = FileDialogMode::Open;
-            fileName_[0] = 0;
-            break;
-        case PendingAction::OpenRecent: loadFile(pendingPath_, false); break;
-        case PendingAction::Recover:
-            if (!recoverable_.empty()) {
-                const AutosaveEntry e = recoverable_.front();
-                try {
-                    Document d = loadDocument(e.document);
-                    setDocument(std::move(d), e.originalPath);
-                    forceModified_ = true;  // the recovered state differs from the file on disk
-                    removeAutosave(e);
-                    recoverable_.erase(recoverable_.begin());
-                    status_ = "Recovered autosave of " + (e.originalPath.empty() ? std::string("untitled") : e.originalPath);
-                    statusTime_ = std::chrono::steady_clock::now();
-                } catch (const std::exception& ex) {
-                    showError(std::string("Could not recover the autosave.\n\n") + ex.what());
-                }
-            }
-            break;
-        default: break;
+void Editor::recoverAutosave() {
+    if (recoverable_.empty()) return;
+    const AutosaveEntry e = recoverable_.front();
+    try {
+        setDocument(loadDocument(e.document), e.originalPath);
+        session_.setForceModified(true);  // the recovered state differs from the file on disk
+        removeAutosave(e);
+        recoverable_.erase(recoverable_.begin());
+        status("Recovered autosave of " + (e.originalPath.empty() ? std::string("untitled") : e.originalPath));
+    } catch (const std::exception& ex) {
+        showError(std::string("Could not recover the autosave.\n\n") + ex.what());
     }
 }
 
@@ -447,19 +428,12 @@ void Editor::autosaveTick() {
     lastAutosave_ = now;
     if (!isModified() || mode_ == Interaction::DragPoints || mode_ == Interaction::Grab) return;
     try {
-        Document out = doc_;
-        out.camera = cam_;
-        autosaver_.save(out, path_);
+        const Document out = session_.documentToSave();
+        autosaver_.save(out, session_.path());
     } catch (const std::exception& e) {
         status_ = std::string("Autosave failed: ") + e.what();
         statusTime_ = now;
     }
-}
-
-void Editor::takeScreenshot(const std::string& path) {
-    screenshotRequested_ = true;
-    screenshotPath_ = path;
-    wake();
 }
 
 int Editor::run() {
@@ -473,7 +447,7 @@ int Editor::run() {
         autosaveTick();
         if (glfwWindowShouldClose(window_)) {
             glfwSetWindowShouldClose(window_, GLFW_FALSE);
-            requestAction(PendingAction::Quit);
+            runCommand("quit");
             if (quit_) break;
         }
         // Step 2: size changes; a minimised (iconified or zero-size) window waits and draws nothing.
@@ -588,11 +562,11 @@ void Editor::writeTrace() {
     j["frame"] = frameCount_;
     j["window"] = {ww, wh};
     j["framebuffer"] = {fw, fh};
-    j["file"] = path_;
+    j["file"] = session_.path();
     j["modified"] = isModified();
     j["mode"] = int(mode_);
-    j["undoSteps"] = history_.size();
-    j["canUndo"] = history_.canUndo();
+    j["undoSteps"] = session_.history().size();
+    j["canUndo"] = session_.history().canUndo();
     j["hovered"] = hovered_;
     j["selection"] = sel_.points;
     j["selectedPatch"] = sel_.patch;
@@ -620,7 +594,9 @@ void Editor::writeTrace() {
     j["activePane"] = activePane_;
     j["shaders"] = {{"open", showShaders_}, {"shown", shaderShown_}, {"inUse", shaderVariantsInUse_}};
     j["items"] = traceItems_;
-    j["unsavedPrompt"] = pending_ != PendingAction::None;
+    j["unsavedPrompt"] = !pendingCommand_.empty();
+    j["palette"] = showPalette_;
+    j["help"] = showHelp_;
     j["error"] = errorMessage_;
     j["frameMs"] = frameMs_;
     j["renderMs"] = stats_.wallMs;

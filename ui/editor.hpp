@@ -15,9 +15,11 @@
 #include <vector>
 
 #include "autosave.hpp"
+#include "command_table.hpp"
 #include "constraint_solver.hpp"
 #include "continuity_report.hpp"
 #include "document.hpp"
+#include "edit_session.hpp"
 #include "domain_view.hpp"
 #include "edit_history.hpp"
 #include "gltf_export.hpp"
@@ -72,7 +74,6 @@ struct FrameTimes {
 
 enum class Interaction { None, Orbit, Pan, BoxSelect, PendingDrag, DragPoints, Grab };
 enum class FileDialogMode { None, Open, SaveAs, Import, ExportGltf, Screenshot };
-enum class PendingAction { None, Quit, Open, New, OpenRecent, Recover, NotesPatch };
 
 struct DragState {
     std::vector<Vec3> start;       // the whole pool at drag start
@@ -88,10 +89,12 @@ struct DragState {
     std::vector<uint32_t> changed;
 };
 
-class Editor {
+// The editor window: hosts the command table (core/command_table.hpp) for its menus, keys, F1 help
+// and palette, and runs the editing session (core/edit_session.hpp) on screen.
+class Editor final : public CommandHost {
 public:
     Editor(GLFWwindow* window, const std::string& file);
-    ~Editor();
+    ~Editor() override;
     int run();
     // The editor benchmark (ui/editor_bench.cpp): drives this editor's own frames.
     int runBench(const EditorBenchOptions& options);
@@ -107,24 +110,33 @@ public:
 private:
     // editor.cpp: frame loop and files
     void frame();
-    void loadFile(const std::string& path, bool import);
-    bool saveTo(const std::string& path);
-    void newDocument();
+    // Runs one line of the command table; errors go to the error dialog. `guarded` false: the
+    // unsaved-changes prompt was answered already.
+    void runCommand(const std::vector<std::string>& words, bool guarded = true);
+    void runCommand(const std::string& line) { runCommand(splitCommandWords(line)); }
     void setDocument(Document doc, const std::string& path);
+    void documentReplaced();  // after the session's document was replaced: view, title, recent files
     void documentChanged(bool topology);  // re-upload
-    void commit(const std::string& label);
-    void markCommitted();  // committed_ = doc_ (the state undo steps start from)
+    void commit(const std::string& label) { session_.commit(label); }
     void setPointHeld(uint32_t p, const Vec3& position);  // inspector edit, joins held
-    void undo();
-    void redo();
-    void requestAction(PendingAction a, const std::string& path = {});
-    void performAction(PendingAction a);
+    void recoverAutosave();
     void autosaveTick();
     void writeTrace();
-    void takeScreenshot(const std::string& path);
     void addRecent(const std::string& path);
     void showError(const std::string& message);
-    bool isModified() const { return history_.isModified() || forceModified_; }
+    bool isModified() const { return session_.isModified(); }
+
+    // CommandHost: what the commands ask of the window.
+    bool hasWindow() const override { return true; }
+    bool confirmDiscard(const std::vector<std::string>& words) override;
+    void write(const Document& doc, const std::string& path) override;
+    void fileDialog(FileDialogKind kind) override;
+    void toggle(WindowToggle which) override;
+    bool toggled(WindowToggle which) const override;
+    void quit() override { quit_ = true; }
+    void screenshot(const std::string& path) override;
+    bool frame(const Bounds& box) override;
+    void status(const std::string& message) override;
 
     // editor_view.cpp: viewport interaction and overlays
     void viewportInput();
@@ -163,18 +175,19 @@ private:
     std::unique_ptr<render::Renderer> renderer_;
     std::unique_ptr<ImGuiLayer> imgui_;
 
-    Document doc_, committed_;
-    uint64_t committedGeneration_ = 0;              // bumped by markCommitted()
+    EditSession session_;
+    const CommandTable commands_ = makeCommandTable();
+    // Shorthands for the session's parts that every panel uses.
+    Document& doc_ = session_.doc;
+    Selection& sel_ = session_.sel;
+    Camera& cam_ = session_.camera;
+    Edge& lastEdge_ = session_.activeEdge;  // edge nearest the last surface click (extrude, unjoin)
+    uint64_t seenVersion_ = 0, seenTopology_ = 0, seenSerial_ = 0;  // the session as last drawn
     std::unique_ptr<DragSolver> inspectorSolver_;   // factorised for inspectorPoint_ held
     uint32_t inspectorPoint_ = 0;
     uint64_t inspectorGeneration_ = 0;
-    EditHistory history_;
-    std::string path_;  // current file ("" = untitled)
-    Camera cam_;
-    Selection sel_;
     int hovered_ = -1;
     int hoveredEdgePatch_ = -1;
-    Edge lastEdge_ = Edge::U1;  // edge nearest the last surface click (extrude/join)
     std::vector<bool> usedMask_;
     uint64_t docVersion_ = 0;
 
@@ -206,16 +219,25 @@ private:
     // UI state
     bool showHelp_ = false;
     bool quit_ = false;
-    PendingAction pending_ = PendingAction::None;
-    std::string pendingPath_;
+    std::vector<std::string> pendingCommand_;  // waits for the unsaved-changes prompt (empty = none)
+    bool runPendingAfterSave_ = false;  // Save As from that prompt: run it once the file is written
     bool openUnsavedPrompt_ = false;
+    bool showPalette_ = false;
+    void drawPalette();  // ui/editor_commands.cpp: F3, type to search, Enter runs
+    // A panel button that runs a command line: disabled when the command is, its help as tooltip.
+    void commandButton(const char* label, const std::string& line, const char* trace = nullptr);
+    char paletteQuery_[256] = {};
+    int paletteCursor_ = 0;
+    bool paletteRefocus_ = false;  // give the palette's field the keyboard next frame
+    bool paletteCursorToEnd_ = false;  // and put its text cursor after the text
+    void completeInPalette(const Command& c);  // open the palette with "name " to complete
     std::string errorMessage_;
     bool openError_ = false;
     FileDialogMode fileMode_ = FileDialogMode::None;
     std::filesystem::path browseDir_;
     char fileName_[512] = {};
     std::vector<std::string> recent_;
-    GltfExportOptions exportOptions_;
+    GltfExportOptions& exportOptions_ = session_.exportOptions;
     std::string status_;
     std::chrono::steady_clock::time_point statusTime_;
     std::vector<JoinContinuity> continuity_;
@@ -231,7 +253,13 @@ private:
     double leftPressX_ = 0, leftPressY_ = 0;
     bool leftPressed_ = false;
     bool keyPressed(int key, int mods) const;
-    bool forceModified_ = false;
+    struct KeyBinding {
+        int key = 0, mods = 0;
+        std::string line;  // the command line it runs
+    };
+    std::vector<KeyBinding> keyBindings_;  // from the command table's shortcuts
+    void runShortcuts();                   // the command table's keys pressed this frame
+    void bindShortcuts();                  // keyBindings_ from the table (ui/editor_commands.cpp)
     bool showGround_ = true;
     // Test trace: window-coordinate centres of a few dialog buttons, and which modal is open.
     std::map<std::string, std::array<float, 2>> traceItems_;

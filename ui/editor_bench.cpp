@@ -43,7 +43,7 @@ int Editor::runBench(const EditorBenchOptions& opt) {
     doc_.tess.inner = {opt.level, opt.level};
     doc_.tess.spacing = Spacing::Equal;
     doc_.tess.adaptive = AdaptiveMode::None;
-    markCommitted();
+    commit("Benchmark levels");
     documentChanged(false);
     const VkExtent2D ext = target_->extent();
     render::OffscreenTarget bareTarget(*dev_, ext.width, ext.height, target_->samples() > VK_SAMPLE_COUNT_1_BIT);
@@ -108,7 +108,7 @@ int Editor::runBench(const EditorBenchOptions& opt) {
     // Step 6: report.
     const double frameMed = median(total), bareMed = median(bareMs);
     std::printf("editor bench: %s, %zu patches at level %g, %ux%u window, %s, %d frames of a G drag, medians\n",
-                path_.empty() ? "built-in teapot" : path_.c_str(), expandPatches(doc_).size(), double(opt.level), ext.width,
+                session_.path().empty() ? "built-in teapot" : session_.path().c_str(), expandPatches(doc_).size(), double(opt.level), ext.width,
                 ext.height, dev_->name().c_str(), opt.frames);
     std::printf("  editor frame     %8.2f ms   (UI %.2f, of it drag solve + upload %.3f; acquire %.2f; 3D view %.2f; ImGui + present %.2f)\n",
                 frameMed, median(ui), median(drag), median(acquire), median(view), median(present));

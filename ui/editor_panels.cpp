@@ -11,6 +11,7 @@
 
 #include "camera_math.hpp"
 #include "device.hpp"
+#include "document_io.hpp"
 #include "editor.hpp"
 #include "limits.hpp"
 #include "imgui_tip.hpp"
@@ -22,38 +23,6 @@ namespace pw::ui {
 namespace fs = std::filesystem;
 
 namespace {
-
-struct KeyHelp {
-    const char* keys;
-    const char* what;
-};
-const KeyHelp kKeys[] = {
-    {"Middle drag", "Orbit the view"},
-    {"Shift + middle drag", "Pan the view"},
-    {"Wheel", "Zoom"},
-    {"Alt + left drag", "Orbit (laptops)"},
-    {"Numpad 1 / 3 / 7 (or 1 / 3 / 7)", "Front / right / top view (Ctrl: back / left / bottom)"},
-    {"Numpad 5 (or 5)", "Toggle perspective / orthographic"},
-    {"F", "Frame the selection (or everything)"},
-    {"Left click", "Select a control point; on the surface: select the patch (nearest edge highlighted)"},
-    {"Shift + left click", "Add / remove a point from the selection"},
-    {"Left drag on empty space", "Box select (Shift adds)"},
-    {"Left drag on a point", "Move the selected points in the view plane; joins are held"},
-    {"G", "Grab the selected points (move the mouse, click or Enter confirms)"},
-    {"X / Y / Z (while moving)", "Constrain to that axis (again: free)"},
-    {"Ctrl (while moving)", "Snap to the grid"},
-    {"Esc / right click (while moving)", "Cancel the move and restore"},
-    {"A / Alt+A", "Select all points / deselect"},
-    {"Shift + D", "Duplicate the selected patch or Bézier triangle"},
-    {"Delete", "Delete the selected patch, net or Bézier triangle"},
-    {"Ctrl + Z / Ctrl + Shift + Z (Ctrl + Y)", "Undo / redo"},
-    {"Ctrl + N / Ctrl + O", "New / open"},
-    {"Ctrl + S / Ctrl + Shift + S", "Save / save as"},
-    {"Ctrl + Q", "Quit"},
-    {"F12", "Save a viewport screenshot (PNG)"},
-    {"F5", "Presentation mode: hide the panels, levels and counts large"},
-    {"F1 or ?", "This help"},
-};
 
 const char* kEdgeNames[] = {"u0", "v0", "u1", "v1"};
 
@@ -92,99 +61,12 @@ void Editor::drawUi() {
     drawFileDialog();
     drawModals();
     if (showHelp_) drawHelp();
+    if (showPalette_) drawPalette();
     // Status line.
     const ImGuiIO& io = ImGui::GetIO();
     if (!status_.empty() && std::chrono::steady_clock::now() - statusTime_ < std::chrono::seconds(6))
         ImGui::GetForegroundDrawList()->AddText(ImVec2(leftPanelWidth_ + 12.0f, io.DisplaySize.y - 24.0f), IM_COL32(220, 220, 220, 255),
                                                 status_.c_str());
-}
-
-void Editor::drawMenuBar() {
-    if (!ImGui::BeginMainMenuBar()) return;
-    if (ImGui::BeginMenu("File")) {
-        if (ImGui::MenuItem("New", "Ctrl+N")) requestAction(PendingAction::New);
-        tip("Start a new document with one flat patch");
-        if (ImGui::MenuItem("Open...", "Ctrl+O")) requestAction(PendingAction::Open);
-        tip("Open a .patchwork, .bpt or Patchwork glTF file");
-        if (ImGui::BeginMenu("Open Recent", !recent_.empty())) {
-            for (const std::string& r : recent_)
-                if (ImGui::MenuItem(r.c_str())) requestAction(PendingAction::OpenRecent, r);
-            ImGui::EndMenu();
-        }
-        tip("Recently opened or saved files");
-        if (ImGui::MenuItem("Save", "Ctrl+S")) {
-            if (path_.empty() || fs::path(path_).extension() == ".bpt") {
-                fileMode_ = FileDialogMode::SaveAs;
-                std::snprintf(fileName_, sizeof fileName_, "%s.patchwork", doc_.name.empty() ? "untitled" : doc_.name.c_str());
-            } else {
-                saveTo(path_);
-            }
-        }
-        tip("Save to the current file (atomic write)");
-        if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) {
-            fileMode_ = FileDialogMode::SaveAs;
-            std::snprintf(fileName_, sizeof fileName_, "%s.patchwork", doc_.name.empty() ? "untitled" : doc_.name.c_str());
-        }
-        tip("Save under a new name (.patchwork, .bpt, .gltf, .glb)");
-        if (ImGui::MenuItem("Import...")) {
-            fileMode_ = FileDialogMode::Import;
-            fileName_[0] = 0;
-        }
-        traceItem("menu.import");
-        tip("Add the patches of a .bpt or Patchwork glTF file to this document");
-        if (ImGui::MenuItem("Export glTF...")) {
-            fileMode_ = FileDialogMode::ExportGltf;
-            std::snprintf(fileName_, sizeof fileName_, "%s.glb", doc_.name.empty() ? "untitled" : doc_.name.c_str());
-        }
-        traceItem("menu.export");
-        tip("Tessellate and write a glTF 2.0 mesh (patches kept in extras)");
-        if (ImGui::MenuItem("Save Screenshot...", "F12")) {
-            fileMode_ = FileDialogMode::Screenshot;
-            std::snprintf(fileName_, sizeof fileName_, "screenshot.png");
-        }
-        tip("Save the 3D viewport (without panels) as a PNG");
-        ImGui::Separator();
-        if (ImGui::MenuItem("Quit", "Ctrl+Q")) requestAction(PendingAction::Quit);
-        tip("Close the editor (asks about unsaved changes)");
-        ImGui::EndMenu();
-    }
-    if (ImGui::BeginMenu("Edit")) {
-        const std::string u = "Undo " + history_.undoLabel(), r = "Redo " + history_.redoLabel();
-        if (ImGui::MenuItem(u.c_str(), "Ctrl+Z", false, history_.canUndo())) undo();
-        tip("Undo the last edit (one drag is one step)");
-        if (ImGui::MenuItem(r.c_str(), "Ctrl+Shift+Z", false, history_.canRedo())) redo();
-        tip("Redo the undone edit");
-        ImGui::EndMenu();
-    }
-    if (ImGui::BeginMenu("View")) {
-        if (ImGui::MenuItem("Front", "1")) cam_ = *applyNamedView(cam_, "front");
-        tip("Look along +Y (numpad 1)");
-        if (ImGui::MenuItem("Right", "3")) cam_ = *applyNamedView(cam_, "right");
-        tip("Look along -X (numpad 3)");
-        if (ImGui::MenuItem("Top", "7")) cam_ = *applyNamedView(cam_, "top");
-        tip("Look down (numpad 7)");
-        if (ImGui::MenuItem("Orthographic", "5", cam_.orthographic)) cam_.orthographic = !cam_.orthographic;
-        tip("Toggle perspective / orthographic projection");
-        if (ImGui::MenuItem("Frame Selection", "F")) frameSelection();
-        tip("Fit the selection (or the model) in the view");
-        ImGui::MenuItem("Ground Grid", nullptr, &showGround_);
-        tip("Show the ground-plane grid");
-        ImGui::MenuItem("Domain View", nullptr, &showDomain_);
-        tip("The parametric domain tessellated by the GPU with the current levels (Teaching panel for more)");
-        ImGui::MenuItem("Shaders", nullptr, &showShaders_);
-        tip("The GLSL of the tessellation stages in use, with the defines of each variant");
-        if (ImGui::MenuItem("Presentation Mode", "F5", presentation_)) setPresentation(!presentation_);
-        tip("Hide the editing panels; levels and counts large, high contrast (F5 toggles back)");
-        ImGui::EndMenu();
-    }
-    if (ImGui::BeginMenu("Help")) {
-        if (ImGui::MenuItem("Keys", "F1")) showHelp_ = true;
-        tip("List every key and mouse action");
-        ImGui::EndMenu();
-    }
-    ImGui::TextDisabled("%s%s", path_.empty() ? (doc_.name.empty() ? "untitled" : doc_.name.c_str()) : path_.c_str(),
-                        isModified() ? "  (modified)" : "");
-    ImGui::EndMainMenuBar();
 }
 
 void Editor::beginSidePanel(const char* name, float x, float width) {
@@ -334,119 +216,36 @@ void Editor::drawLeftPanel() {
 
     // Patch operations.
     if (ImGui::CollapsingHeader("Patch operations", ImGuiTreeNodeFlags_DefaultOpen)) {
-        const bool hasPatch = sel_.patch >= 0 && sel_.patch < int(doc_.patches.size());
-        const uint32_t p = hasPatch ? uint32_t(sel_.patch) : 0;
-        if (ImGui::Button("Add flat patch")) {
-            const Vec3 c(cam_.target[0], cam_.target[1], cam_.target[2]);
-            const double size = std::max(0.2 * modelSize(doc_), 1.0);
-            int created = -1;
-            patchOp("Add patch", [&](Document& d) { created = int(addFlatPatch(d, c, size, cam_.zUp)); });
-            if (created >= 0) sel_.patch = created;
-        }
-        tip("Add a flat 1x1 Bézier patch at the view target");
+        // Each button runs its command (core/commands_model.cpp): disabled when the command is.
+        commandButton("Add flat patch", "add-patch");
         sameLineIfFits("Add curve");
-        if (ImGui::Button("Add curve")) {
-            const Vec3 c(cam_.target[0], cam_.target[1], cam_.target[2]);
-            const double size = std::max(0.2 * modelSize(doc_), 1.0);
-            int created = -1;
-            patchOp("Add curve", [&](Document& d) { created = int(addCurve(d, c, size, cam_.zUp)); });
-            if (created >= 0) {
-                sel_.clear();
-                sel_.curve = created;
-            }
-        }
-        traceItem("op.addCurve");
-        tip("Add a cubic Bézier curve (4 points) at the view target, drawn through the isoline tessellator");
-        ImGui::BeginDisabled(!hasPatch);
+        commandButton("Add curve", "add-curve", "op.addCurve");
         sameLineIfFits("Duplicate");
-        if (ImGui::Button("Duplicate")) {
-            int created = -1;
-            const Vec3 off(0.1 * modelSize(doc_), 0, 0);
-            patchOp("Duplicate patch", [&](Document& d) { created = int(duplicatePatch(d, p, off)); });
-            if (created >= 0) sel_.patch = created;
-        }
-        tip("Copy the selected patch with its own points (Shift+D)");
+        commandButton("Duplicate", "duplicate");
         sameLineIfFits("Delete");
-        if (ImGui::Button("Delete")) {
-            patchOp("Delete patch", [&](Document& d) { deletePatch(d, p); });
-            sel_.clear();
-        }
-        tip("Delete the selected patch and its joins (Delete)");
-        if (ImGui::Button("Flip")) patchOp("Flip patch", [&](Document& d) { flipPatch(d, p); });
-        tip("Reverse the u direction so the normal points the other way");
+        commandButton("Delete", "delete");
+        commandButton("Flip", "flip");
         ImGui::SameLine();
-        std::string ex = std::string("Extrude edge ") + kEdgeNames[int(lastEdge_)];
-        const bool extrude = ImGui::Button(ex.c_str());
-        traceItem("op.extrude");
-        if (extrude) {
-            int created = -1;
-            const Edge e = lastEdge_;
-            patchOp("Extrude edge", [&](Document& d) { created = int(extrudeEdge(d, p, e)); });
-            if (created >= 0) sel_.patch = created;
-        }
-        tip("Add a C1 patch continuing the highlighted edge (click the surface near an edge to choose it)");
+        const std::string edge(edgeName(lastEdge_));
+        commandButton(("Extrude edge " + edge).c_str(), "extrude", "op.extrude");
         ImGui::SliderFloat("t", &splitT_, 0.05f, 0.95f, "%.2f");
         tip("Split parameter");
-        if (ImGui::Button("Split at u")) patchOp("Split patch", [&](Document& d) { splitPatch(d, p, true, splitT_); });
-        tip("Exact de Casteljau split along u at t (new shared curve, C1/G1 join)");
+        commandButton("Split at u", "split u " + std::to_string(splitT_));
         ImGui::SameLine();
-        if (ImGui::Button("Split at v")) patchOp("Split patch", [&](Document& d) { splitPatch(d, p, false, splitT_); });
-        tip("Exact de Casteljau split along v at t");
-        const int j = hasPatch ? findJoin(doc_, p, lastEdge_) : -1;
-        ImGui::BeginDisabled(j < 0);
-        if (ImGui::Button("Unjoin highlighted edge")) patchOp("Unjoin", [&](Document& d) { unjoin(d, size_t(j)); });
-        tip("Remove the join on the highlighted edge; the other patch gets its own edge points");
+        commandButton("Split at v", "split v " + std::to_string(splitT_));
+        const bool joined = sel_.patch >= 0 && sel_.patch < int(doc_.patches.size()) && findJoin(doc_, uint32_t(sel_.patch), lastEdge_) >= 0;
+        ImGui::BeginDisabled(!joined);
+        commandButton("Unjoin highlighted edge", "unjoin");
         ImGui::EndDisabled();
-        const std::string ce = std::string("Curve from edge ") + kEdgeNames[int(lastEdge_)];
-        const bool fromEdge = ImGui::Button(ce.c_str());
-        traceItem("op.curveFromEdge");
-        if (fromEdge) {
-            int created = -1;
-            const Edge e = lastEdge_;
-            patchOp("Curve from edge", [&](Document& d) { created = int(curveFromEdge(d, p, e)); });
-            if (created >= 0) {
-                sel_.clear();
-                sel_.curve = created;
-            }
-        }
-        tip("A Bézier curve on the highlighted boundary, sharing its points (it follows the patch)");
-        ImGui::EndDisabled();
-        const bool hasCurve = sel_.curve >= 0 && sel_.curve < int(doc_.curves.size());
+        commandButton(("Curve from edge " + edge).c_str(), "curve-from-edge", "op.curveFromEdge");
         ImGui::SameLine();
-        ImGui::BeginDisabled(!hasCurve);
-        const bool delCurve = ImGui::Button("Delete curve");
-        traceItem("op.deleteCurve");
-        if (delCurve) {
-            const uint32_t c = uint32_t(sel_.curve);
-            patchOp("Delete curve", [&](Document& d) { deleteCurve(d, c); });
-            sel_.clear();
-        }
-        tip("Delete the curve selected in the outliner");
+        ImGui::BeginDisabled(sel_.curve < 0);
+        commandButton("Delete curve", "delete", "op.deleteCurve");
         ImGui::EndDisabled();
-        const bool addTri = ImGui::Button("Add triangle");
-        traceItem("op.addTriangle");
-        if (addTri) {
-            const Vec3 c(cam_.target[0], cam_.target[1], cam_.target[2]);
-            const double size = std::max(0.2 * modelSize(doc_), 1.0);
-            int created = -1;
-            patchOp("Add triangle", [&](Document& d) { created = int(addTriangle(d, c, size, cam_.zUp)); });
-            if (created >= 0) {
-                sel_.clear();
-                sel_.triangle = created;
-            }
-        }
-        tip("Add a flat cubic Bézier triangle (10 points) at the view target, drawn through the triangle domain");
-        const bool hasTri = sel_.triangle >= 0 && sel_.triangle < int(doc_.triangles.size());
+        commandButton("Add triangle", "add-triangle", "op.addTriangle");
         ImGui::SameLine();
-        ImGui::BeginDisabled(!hasTri);
-        const bool delTri = ImGui::Button("Delete triangle");
-        traceItem("op.deleteTriangle");
-        if (delTri) {
-            const uint32_t t = uint32_t(sel_.triangle);
-            patchOp("Delete triangle", [&](Document& d) { deleteTriangle(d, t); });
-            sel_.clear();
-        }
-        tip("Delete the selected triangle (click its surface, or the outliner; Delete key; Shift+D duplicates)");
+        ImGui::BeginDisabled(sel_.triangle < 0);
+        commandButton("Delete triangle", "delete", "op.deleteTriangle");
         ImGui::EndDisabled();
         ImGui::Separator();
         ImGui::TextUnformatted("Join two boundary edges");
@@ -473,13 +272,8 @@ void Editor::drawLeftPanel() {
         ImGui::Combo("Continuity", &joinKind_, kinds, 3);
         tip("C0: shared edge; C1: equal tangents; G1: tangents in a fixed ratio");
         ImGui::SameLine();
-        if (ImGui::Button("Join")) {
-            const uint32_t a = uint32_t(joinA_), b = uint32_t(joinB_);
-            const Edge ea = Edge(joinEdgeA_), eb = Edge(joinEdgeB_);
-            const Continuity c = Continuity(joinKind_);
-            patchOp("Join edges", [&](Document& d) { joinEdges(d, a, ea, b, eb, c); });
-        }
-        tip("Merge the two edges' points in the pool and record the join (constraints projected)");
+        commandButton("Join", "join " + std::to_string(joinA_) + ":" + kEdgeNames[joinEdgeA_] + " " + std::to_string(joinB_) + ":" +
+                                  kEdgeNames[joinEdgeB_] + " " + kinds[joinKind_]);
     }
     drawNetPanel();
     ImGui::End();
@@ -718,24 +512,21 @@ void Editor::drawFileDialog() {
         const FileDialogMode m = fileMode_;
         fileMode_ = FileDialogMode::None;
         ImGui::CloseCurrentPopup();
-        if (m == FileDialogMode::Open) loadFile(p.string(), false);
-        else if (m == FileDialogMode::Import) loadFile(p.string(), true);
-        else if (m == FileDialogMode::SaveAs) saveTo(p.string());
-        else if (m == FileDialogMode::ExportGltf) {
-            try {
-                Document out = doc_;
-                out.camera = cam_;
-                exportGltf(out, p, exportOptions_);
-                status_ = "Exported " + p.string();
-                statusTime_ = std::chrono::steady_clock::now();
-            } catch (const std::exception& e) {
-                showError(std::string("Export failed.\n\n") + e.what());
-            }
-        } else if (m == FileDialogMode::Screenshot) {
-            takeScreenshot(p.string());
+        // The unsaved-changes prompt came before the Open dialog: the open itself is unguarded.
+        if (m == FileDialogMode::Open) runCommand({"open", p.string()}, false);
+        else if (m == FileDialogMode::Import) runCommand({"import", p.string()});
+        else if (m == FileDialogMode::ExportGltf) runCommand({"export-gltf", p.string()});
+        else if (m == FileDialogMode::Screenshot) runCommand({"screenshot", p.string()});
+        else if (m == FileDialogMode::SaveAs) {
+            runCommand({"save", p.string()});
+            // Save from the unsaved-changes prompt of an untitled document: go on with New / Open / Quit.
+            if (runPendingAfterSave_ && !isModified()) runCommand(std::exchange(pendingCommand_, {}), false);
+            runPendingAfterSave_ = false;
         }
     } else if (cancel) {
         fileMode_ = FileDialogMode::None;
+        runPendingAfterSave_ = false;
+        pendingCommand_.clear();
         ImGui::CloseCurrentPopup();
     }
     ImGui::EndPopup();
@@ -772,15 +563,15 @@ void Editor::drawModals() {
     ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
         openModal_ = "unsaved";
-        ImGui::Text("Save changes to %s?", path_.empty() ? "the untitled document" : path_.c_str());
+        ImGui::Text("Save changes to %s?", session_.path().empty() ? "the untitled document" : session_.path().c_str());
         if (ImGui::Button("Save", ImVec2(100, 0))) {
             ImGui::CloseCurrentPopup();
-            const std::string ext = path_.empty() ? "" : fs::path(path_).extension().string();
-            if (!path_.empty() && ext != ".bpt" && saveTo(path_)) performAction(pending_);
-            else if (path_.empty() || ext == ".bpt") {
-                pending_ = PendingAction::None;
-                fileMode_ = FileDialogMode::SaveAs;
-                std::snprintf(fileName_, sizeof fileName_, "%s.patchwork", doc_.name.empty() ? "untitled" : doc_.name.c_str());
+            if (!session_.path().empty() && saveKeepsEverything(session_.path())) {
+                runCommand(std::vector<std::string>{"save"});
+                if (!isModified()) runCommand(std::exchange(pendingCommand_, {}), false);
+            } else {
+                runPendingAfterSave_ = true;  // the Save As dialog goes on with the command once written
+                fileDialog(FileDialogKind::SaveAs);
             }
         }
         tip("Save, then continue");
@@ -789,12 +580,12 @@ void Editor::drawModals() {
         traceItem("unsaved.discard");
         if (discard) {
             ImGui::CloseCurrentPopup();
-            performAction(pending_);
+            runCommand(std::exchange(pendingCommand_, {}), false);
         }
         tip("Continue and lose the changes");
         ImGui::SameLine();
         if (ImGui::Button("Cancel", ImVec2(100, 0)) || keyPressed(GLFW_KEY_ESCAPE, 0)) {
-            pending_ = PendingAction::None;
+            pendingCommand_.clear();
             ImGui::CloseCurrentPopup();
         }
         tip("Keep editing");
@@ -818,7 +609,7 @@ void Editor::drawModals() {
         traceItem("recover");
         if (recover) {
             ImGui::CloseCurrentPopup();
-            performAction(PendingAction::Recover);
+            recoverAutosave();
         }
         tip("Open the autosaved document (marked modified; save it to keep it)");
         ImGui::SameLine();
@@ -833,25 +624,6 @@ void Editor::drawModals() {
         tip("Keep the autosave for the next start");
         ImGui::EndPopup();
     }
-}
-
-void Editor::drawHelp() {
-    const ImGuiIO& io = ImGui::GetIO();
-    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowBgAlpha(0.92f);
-    if (ImGui::Begin("Keys (F1)", &showHelp_, ImGuiWindowFlags_AlwaysAutoResize)) {
-        if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders)) {
-            for (const KeyHelp& k : kKeys) {
-                ImGui::TableNextRow();
-                ImGui::TableNextColumn();
-                ImGui::TextUnformatted(k.keys);
-                ImGui::TableNextColumn();
-                ImGui::TextUnformatted(k.what);
-            }
-            ImGui::EndTable();
-        }
-    }
-    ImGui::End();
 }
 
 }  // namespace pw::ui

@@ -46,8 +46,6 @@ void Editor::setPresentation(bool on) {
 }
 
 void Editor::teachingInput() {
-    const ImGuiIO& io = ImGui::GetIO();
-    if (!io.WantCaptureKeyboard && keyPressed(GLFW_KEY_F5, 0)) setPresentation(!presentation_);
     if (!sweep_.playing) return;
     // The sweep drives the uniform level; one undo step when it stops.
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - sweep_.start).count();
@@ -146,7 +144,7 @@ void Editor::drawTeachingControls() {
             tip(p.note.c_str());
         }
         ImGui::Separator();
-        if (ImGui::Selectable("Bézier patch of the notes")) requestAction(PendingAction::NotesPatch);
+        if (ImGui::Selectable("Bézier patch of the notes")) runCommand("open-notes-patch");
         tip("The notes' 16 control points at level 25 (replaces the document; asks first if it has changes)");
         if (ImGui::Selectable("Distance formula of the notes")) {
             applyNotesDistanceFormula(ts);

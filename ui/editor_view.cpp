@@ -74,84 +74,15 @@ void Editor::viewportInput() {
     // Step 1: keyboard (unless a text field has focus). Shortcuts use the queued key events with
     // their own modifiers; held modifiers during a drag (Ctrl snap) use the live state.
     if (!io.WantCaptureKeyboard) {
-        constexpr int C = GLFW_MOD_CONTROL, S = GLFW_MOD_SHIFT, A = GLFW_MOD_ALT;
         const bool dragging = mode_ == Interaction::DragPoints || mode_ == Interaction::Grab;
-        if (keyPressed(GLFW_KEY_Z, C)) undo();
-        if (keyPressed(GLFW_KEY_Z, C | S) || keyPressed(GLFW_KEY_Y, C)) redo();
-        const bool save = keyPressed(GLFW_KEY_S, C), saveAs = keyPressed(GLFW_KEY_S, C | S);
-        if (save || saveAs) {
-            const std::string ext = path_.empty() ? "" : std::filesystem::path(path_).extension().string();
-            if (saveAs || path_.empty() || (ext != ".patchwork" && ext != ".gltf" && ext != ".glb")) {
-                fileMode_ = FileDialogMode::SaveAs;
-                std::snprintf(fileName_, sizeof fileName_, "%s.patchwork", doc_.name.empty() ? "untitled" : doc_.name.c_str());
-            } else {
-                saveTo(path_);
-            }
-        }
-        if (keyPressed(GLFW_KEY_O, C)) requestAction(PendingAction::Open);
-        if (keyPressed(GLFW_KEY_N, C)) requestAction(PendingAction::New);
-        if (keyPressed(GLFW_KEY_Q, C)) requestAction(PendingAction::Quit);
-        if (keyPressed(GLFW_KEY_F1, 0) || keyPressed(GLFW_KEY_SLASH, S)) showHelp_ = !showHelp_;
-        if (keyPressed(GLFW_KEY_F12, 0)) {
-            char name[64];
-            const std::time_t t = std::time(nullptr);
-            std::strftime(name, sizeof name, "patchwork-%Y%m%d-%H%M%S.png", std::localtime(&t));
-            takeScreenshot(name);
-        }
         if (!dragging) {
-            if (keyPressed(GLFW_KEY_F, 0)) frameSelection();
-            auto view = [&](int a, int b, const char* name, const char* ctrlName) {
-                if (keyPressed(a, 0) || keyPressed(b, 0))
-                    if (auto c = applyNamedView(cam_, name)) cam_ = *c;
-                if (keyPressed(a, C) || keyPressed(b, C))
-                    if (auto c = applyNamedView(cam_, ctrlName)) cam_ = *c;
-            };
-            view(GLFW_KEY_KP_1, GLFW_KEY_1, "front", "back");
-            view(GLFW_KEY_KP_3, GLFW_KEY_3, "right", "left");
-            view(GLFW_KEY_KP_7, GLFW_KEY_7, "top", "bottom");
-            if (keyPressed(GLFW_KEY_KP_5, 0) || keyPressed(GLFW_KEY_5, 0)) cam_.orthographic = !cam_.orthographic;
+            runShortcuts();
             if (keyPressed(GLFW_KEY_G, 0) && !sel_.points.empty() && mode_ == Interaction::None) {
                 pressX_ = mx;
                 pressY_ = my;
                 beginDrag(true);
             }
-            if (mode_ == Interaction::None) {
-                if (keyPressed(GLFW_KEY_A, A)) {
-                    sel_.clear();
-                } else if (keyPressed(GLFW_KEY_A, 0)) {
-                    sel_.points.clear();
-                    for (size_t i = 0; i < usedMask_.size(); ++i)
-                        if (usedMask_[i]) sel_.points.push_back(uint32_t(i));
-                }
-                if (keyPressed(GLFW_KEY_DELETE, 0) && sel_.patch >= 0) {
-                    const uint32_t p = uint32_t(sel_.patch);
-                    patchOp("Delete patch", [p](Document& d) { deletePatch(d, p); });
-                    sel_.clear();
-                } else if (keyPressed(GLFW_KEY_DELETE, 0) && sel_.surface >= 0) {
-                    const uint32_t s = uint32_t(sel_.surface);
-                    patchOp("Delete net", [s](Document& d) { deleteNetSurface(d, s); });
-                    sel_.clear();
-                } else if (keyPressed(GLFW_KEY_DELETE, 0) && sel_.triangle >= 0) {
-                    const uint32_t t = uint32_t(sel_.triangle);
-                    patchOp("Delete triangle", [t](Document& d) { deleteTriangle(d, t); });
-                    sel_.clear();
-                }
-                if (keyPressed(GLFW_KEY_D, S) && sel_.triangle >= 0) {
-                    const uint32_t t = uint32_t(sel_.triangle);
-                    const Vec3 off(0.1 * modelSize(doc_), 0.0, 0.0);
-                    int created = -1;
-                    patchOp("Duplicate triangle", [t, off, &created](Document& d) { created = int(duplicateTriangle(d, t, off)); });
-                    if (created >= 0) sel_.triangle = created;
-                }
-                if (keyPressed(GLFW_KEY_D, S) && sel_.patch >= 0) {
-                    const uint32_t p = uint32_t(sel_.patch);
-                    const Vec3 off(0.1 * modelSize(doc_), 0.0, 0.0);
-                    int created = -1;
-                    patchOp("Duplicate patch", [p, off, &created](Document& d) { created = int(duplicatePatch(d, p, off)); });
-                    if (created >= 0) sel_.patch = created;
-                }
-                if (keyPressed(GLFW_KEY_ESCAPE, 0)) sel_.clear();
-            }
+            if (mode_ == Interaction::None && keyPressed(GLFW_KEY_ESCAPE, 0) && !showPalette_) sel_.clear();
         } else {
             for (int a = 0; a < 3; ++a)
                 if (keyPressed(GLFW_KEY_X + a, 0)) {
@@ -316,7 +247,7 @@ void Editor::finishDrag() {
     mode_ = Interaction::None;
     const size_t n = drag_.moved.size();
     drag_ = DragState{};
-    if (doc_.points != committed_.points) commit(n == 1 ? "Move point" : "Move " + std::to_string(n) + " points");
+    if (doc_.points != session_.committed().points) commit(n == 1 ? "Move point" : "Move " + std::to_string(n) + " points");
     documentChanged(false);
 }
 

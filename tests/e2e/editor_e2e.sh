@@ -198,6 +198,33 @@ wait_for "t['surfaces'] == 1 and t['patches'] == 32 and t['joins'] == 52"
 check_validation
 say "net added, converted to 16 Bézier patches with C1 joins, undone"
 
+# --- 6d. the command table: F3 palette runs a typed command, F1 lists the commands ----------------
+xdotool mousemove --sync 600 380
+xdotool key F3
+wait_for "t['palette'] and t['modal'] == 'palette'"
+sleep 0.3
+xdotool type --delay 30 "flat patch"
+sleep 0.3
+xdotool key Return
+wait_for "not t['palette'] and t['patches'] == 33 and t['undoSteps'] >= 1"
+xdotool key F3
+wait_for "t['palette']"
+sleep 0.3
+xdotool type --delay 30 "tess 3"
+xdotool key Return
+wait_for "not t['palette'] and t['tessOuter'] == [3, 3, 3, 3]"
+xdotool key ctrl+z
+wait_for "t['tessOuter'] != [3, 3, 3, 3]"
+xdotool key ctrl+z
+wait_for "t['patches'] == 32"
+xdotool key F1
+wait_for "t['help']"
+import -window root "$WORK/help.png"
+xdotool key F1
+wait_for "not t['help']"
+check_validation
+say "palette ran 'Flat Patch' and 'tess 3'; F1 opened and closed the command list"
+
 # --- 7. quit asks about unsaved changes -------------------------------------------------------
 xdotool key ctrl+q
 wait_for "t['modal'] == 'unsaved'"

@@ -1,0 +1,73 @@
+// The layers depend one way (README): core includes no Vulkan, ImGui or GLFW and no header of
+// render/, ui/ or app/; render includes no ImGui or GLFW and no header of ui/ or app/. Read from
+// the sources, so a new include that breaks the rule fails here.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <regex>
+#include <set>
+
+#include "support.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path repo() { return pw::test::testsDir().parent_path(); }
+
+std::set<std::string> headersOf(const std::string& layer) {
+    std::set<std::string> out;
+    for (const auto& e : fs::directory_iterator(repo() / layer))
+        if (e.path().extension() == ".hpp") out.insert(e.path().filename().string());
+    return out;
+}
+
+// "file:line: #include ..." for every include of `layer` that names a forbidden system prefix or a
+// header of a forbidden layer.
+std::vector<std::string> violations(const std::string& layer, const std::vector<std::string>& systemPrefixes,
+                                    const std::vector<std::string>& layers) {
+    std::set<std::string> forbidden;
+    for (const std::string& l : layers)
+        for (const std::string& h : headersOf(l)) forbidden.insert(h), forbidden.insert(l + "/" + h);
+    const std::set<std::string> own = headersOf(layer);
+    const std::regex include(R"(^\s*#\s*include\s*([<"])([^>"]+)[>"])");
+    std::vector<std::string> out;
+    size_t files = 0;
+    for (const auto& e : fs::directory_iterator(repo() / layer)) {
+        const std::string ext = e.path().extension().string();
+        if (ext != ".cpp" && ext != ".hpp") continue;
+        ++files;
+        std::ifstream in(e.path());
+        int n = 0;
+        for (std::string line; std::getline(in, line);) {
+            ++n;
+            std::smatch m;
+            if (!std::regex_search(line, m, include)) continue;
+            const std::string name = m[2];
+            bool bad = false;
+            for (const std::string& p : systemPrefixes) bad = bad || name.rfind(p, 0) == 0;
+            // A quoted name that is one of this layer's own headers is fine even if another layer has one alike.
+            if (m[1] == "\"" && !own.count(name) && forbidden.count(name)) bad = true;
+            if (bad) out.push_back(layer + "/" + e.path().filename().string() + ":" + std::to_string(n) + ": " + line);
+        }
+    }
+    EXPECT_GT(files, 10u) << "no sources found under " << (repo() / layer);
+    return out;
+}
+
+}  // namespace
+
+TEST(Layering, CoreIncludesNoGpuNoWindowNoUpperLayer) {
+    const auto v = violations("core", {"vulkan/", "imgui", "GLFW/", "X11/"}, {"render", "ui", "app"});
+    EXPECT_TRUE(v.empty()) << ::testing::PrintToString(v);
+}
+
+TEST(Layering, RenderIncludesNoImGuiNoGlfwNoUi) {
+    const auto v = violations("render", {"imgui", "GLFW/", "X11/"}, {"ui", "app"});
+    EXPECT_TRUE(v.empty()) << ::testing::PrintToString(v);
+}
+
+TEST(Layering, UiIncludesNoAppHeader) {
+    const auto v = violations("ui", {}, {"app"});
+    EXPECT_TRUE(v.empty()) << ::testing::PrintToString(v);
+}
