@@ -51,39 +51,29 @@ void deleteSelection(Document& d, const Selection& sel) {
     if (!any) throw EditError("the selection covers no whole patch, net, triangle or curve");
 }
 
+// A command that adds one item of the model's scale at the 3D cursor (`add(doc, centre, size, zUp)`
+// returns its index) and selects it as `field`.
+Command addAtCursor(const char* name, const char* label, const char* help, const char* undoLabel, int Selection::*field,
+                    uint32_t (*add)(Document&, const Vec3&, double, bool)) {
+    return {.name = name, .label = label, .menu = "Add", .help = help,
+            .run = [=](CommandContext& ctx) {
+                expectArgs(ctx, 0, 0);
+                EditSession& s = ctx.session;
+                int created = -1;
+                s.apply(undoLabel, [&](Document& d) { created = int(add(d, s.cursor, newItemSize(d), s.camera.zUp)); });
+                s.sel.clear();
+                s.sel.*field = created;
+            }};
+}
+
 }  // namespace
 
 void addModelCommands(CommandTable& t) {
-    t.add({.name = "add-patch", .label = "Flat Patch", .menu = "Add",
-           .help = "Add a flat 1x1 Bézier patch at the 3D cursor",
-           .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 0, 0);
-               EditSession& s = ctx.session;
-               int created = -1;
-               s.apply("Add patch", [&](Document& d) { created = int(addFlatPatch(d, s.cursor, newItemSize(d), s.camera.zUp)); });
-               s.sel.clear();
-               s.sel.patch = created;
-           }});
-    t.add({.name = "add-triangle", .label = "Bézier Triangle", .menu = "Add",
-           .help = "Add a flat cubic Bézier triangle (10 points) at the 3D cursor",
-           .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 0, 0);
-               EditSession& s = ctx.session;
-               int created = -1;
-               s.apply("Add triangle", [&](Document& d) { created = int(addTriangle(d, s.cursor, newItemSize(d), s.camera.zUp)); });
-               s.sel.clear();
-               s.sel.triangle = created;
-           }});
-    t.add({.name = "add-curve", .label = "Bézier Curve", .menu = "Add",
-           .help = "Add a cubic Bézier curve (4 points) at the 3D cursor, drawn through the isoline tessellator",
-           .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 0, 0);
-               EditSession& s = ctx.session;
-               int created = -1;
-               s.apply("Add curve", [&](Document& d) { created = int(addCurve(d, s.cursor, newItemSize(d), s.camera.zUp)); });
-               s.sel.clear();
-               s.sel.curve = created;
-           }});
+    t.add(addAtCursor("add-patch", "Flat Patch", "Add a flat 1x1 Bézier patch at the 3D cursor", "Add patch", &Selection::patch, addFlatPatch));
+    t.add(addAtCursor("add-triangle", "Bézier Triangle", "Add a flat cubic Bézier triangle (10 points) at the 3D cursor", "Add triangle",
+                      &Selection::triangle, addTriangle));
+    t.add(addAtCursor("add-curve", "Bézier Curve", "Add a cubic Bézier curve (4 points) at the 3D cursor, drawn through the isoline tessellator",
+                      "Add curve", &Selection::curve, addCurve));
     t.add({.name = "add-net", .label = "Net Surface", .menu = "Add", .usage = "[ROWS COLS [flat|tube|torus [bezier|bspline|catmull-rom]]]",
            .help = "Add a control net (default 7x7 flat B-spline) at the 3D cursor",
            .run = [](CommandContext& ctx) {

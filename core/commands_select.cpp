@@ -28,12 +28,19 @@ std::vector<uint32_t> indexList(const std::string& word, size_t count, const cha
     return out;
 }
 
+// Selects the points of items `list` of `items`; with one item, that item as `field` too.
+template <class Item>
+void selectItems(Selection& sel, const std::vector<Item>& items, const std::string& list, const char* what, int Selection::*field) {
+    const std::vector<uint32_t> ids = indexList(list, items.size(), what);
+    for (uint32_t i : ids) sel.points.insert(sel.points.end(), items[i].idx.begin(), items[i].idx.end());
+    if (ids.size() == 1) sel.*field = int(ids[0]);
+}
+
 void select(CommandContext& ctx) {
     expectArgs(ctx, 1, 2);
     const std::string& what = ctx.args[0];
     const Document& doc = ctx.session.doc;
     Selection& sel = ctx.session.sel;
-    auto addPoints = [&](const auto& idx) { sel.points.insert(sel.points.end(), idx.begin(), idx.end()); };
     if (what == "all" || what == "none") {
         expectArgs(ctx, 1, 1);
         sel.clear();
@@ -50,21 +57,13 @@ void select(CommandContext& ctx) {
     if (what == "point") {
         sel.points = indexList(list, doc.points.size(), "point");
     } else if (what == "patch") {
-        const auto ids = indexList(list, doc.patches.size(), "patch");
-        for (uint32_t i : ids) addPoints(doc.patches[i].idx);
-        if (ids.size() == 1) sel.patch = int(ids[0]);
+        selectItems(sel, doc.patches, list, "patch", &Selection::patch);
     } else if (what == "net") {
-        const auto ids = indexList(list, doc.surfaces.size(), "net");
-        for (uint32_t i : ids) addPoints(doc.surfaces[i].idx);
-        if (ids.size() == 1) sel.surface = int(ids[0]);
+        selectItems(sel, doc.surfaces, list, "net", &Selection::surface);
     } else if (what == "triangle") {
-        const auto ids = indexList(list, doc.triangles.size(), "triangle");
-        for (uint32_t i : ids) addPoints(doc.triangles[i].idx);
-        if (ids.size() == 1) sel.triangle = int(ids[0]);
+        selectItems(sel, doc.triangles, list, "triangle", &Selection::triangle);
     } else if (what == "curve") {
-        const auto ids = indexList(list, doc.curves.size(), "curve");
-        for (uint32_t i : ids) addPoints(doc.curves[i].idx);
-        if (ids.size() == 1) sel.curve = int(ids[0]);
+        selectItems(sel, doc.curves, list, "curve", &Selection::curve);
     } else {
         throw EditError("expected all, none, point, patch, net, triangle or curve, got '" + what + "'");
     }
