@@ -66,6 +66,23 @@ Command addAtCursor(const char* name, const char* label, const char* help, const
             }};
 }
 
+// A command that makes one item from an edge of the selected patch (`make(doc, patch, edge)`
+// returns its index; the edge is the argument or the highlighted one) and selects it as `field`.
+Command fromEdge(const char* name, const char* label, const char* help, const char* undoLabel, int Selection::*field,
+                 uint32_t (*make)(Document&, uint32_t, Edge)) {
+    return {.name = name, .label = label, .menu = "Patch", .usage = "[u0|v0|u1|v1]", .help = help, .enabled = hasPatch,
+            .run = [=](CommandContext& ctx) {
+                expectArgs(ctx, 0, 1);
+                EditSession& s = ctx.session;
+                const uint32_t p = uint32_t(s.sel.patch);
+                const Edge e = edgeArg(ctx, 0);
+                int created = -1;
+                s.apply(undoLabel, [&](Document& d) { created = int(make(d, p, e)); });
+                s.sel.clear();
+                s.sel.*field = created;
+            }};
+}
+
 }  // namespace
 
 void addModelCommands(CommandTable& t) {
@@ -142,19 +159,8 @@ void addModelCommands(CommandTable& t) {
                const uint32_t p = uint32_t(ctx.session.sel.patch);
                ctx.session.apply("Flip patch", [p](Document& d) { flipPatch(d, p); });
            }});
-    t.add({.name = "extrude", .label = "Extrude Edge", .menu = "Patch", .usage = "[u0|v0|u1|v1]",
-           .help = "Add a C1 patch continuing an edge of the selected patch (default: the highlighted edge)",
-           .enabled = hasPatch,
-           .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 0, 1);
-               EditSession& s = ctx.session;
-               const uint32_t p = uint32_t(s.sel.patch);
-               const Edge e = edgeArg(ctx, 0);
-               int created = -1;
-               s.apply("Extrude edge", [&](Document& d) { created = int(extrudeEdge(d, p, e)); });
-               s.sel.clear();
-               s.sel.patch = created;
-           }});
+    t.add(fromEdge("extrude", "Extrude Edge", "Add a C1 patch continuing an edge of the selected patch (default: the highlighted edge)",
+                   "Extrude edge", &Selection::patch, extrudeEdge));
     t.add({.name = "split", .label = "Split", .menu = "Patch", .usage = "u|v [T]",
            .help = "Exact de Casteljau split of the selected patch along u or v at T (default 0.5)",
            .bindings = {{"Split at u", "u", {}}, {"Split at v", "v", {}}},
@@ -190,19 +196,9 @@ void addModelCommands(CommandTable& t) {
                if (j < 0) throw EditError("edge " + std::string(edgeName(e)) + " of patch " + std::to_string(p) + " is not joined");
                s.apply("Unjoin", [j](Document& d) { unjoin(d, size_t(j)); });
            }});
-    t.add({.name = "curve-from-edge", .label = "Curve from Edge", .menu = "Patch", .usage = "[u0|v0|u1|v1]",
-           .help = "A curve on an edge of the selected patch that shares its points (default: the highlighted edge)",
-           .enabled = hasPatch,
-           .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 0, 1);
-               EditSession& s = ctx.session;
-               const uint32_t p = uint32_t(s.sel.patch);
-               const Edge e = edgeArg(ctx, 0);
-               int created = -1;
-               s.apply("Curve from edge", [&](Document& d) { created = int(curveFromEdge(d, p, e)); });
-               s.sel.clear();
-               s.sel.curve = created;
-           }});
+    t.add(fromEdge("curve-from-edge", "Curve from Edge",
+                   "A curve on an edge of the selected patch that shares its points (default: the highlighted edge)", "Curve from edge",
+                   &Selection::curve, curveFromEdge));
 }
 
 }  // namespace pw

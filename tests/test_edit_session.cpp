@@ -217,6 +217,11 @@ TEST(Commands, SaveGoesThroughTheHostAndSplitExtrudeWork) {
     const CommandTable t = makeCommandTable();
     t.runScript(s, host, "add-patch; extrude u1; select patch 0; split v 0.25; save \"my file.patchwork\"", "x");
     EXPECT_EQ(s.doc.patches.size(), 3u);
+XX
+    t.runScript(s, host, "select patch 1; curve-from-edge v0", "x");
+    ASSERT_EQ(s.doc.curves.size(), 1u);
+    EXPECT_EQ(s.sel.curve, 0);
+    t.runScript(s, host, "undo", "x");
     ASSERT_EQ(host.writes.size(), 1u);
     EXPECT_EQ(host.writes[0].first, "my file.patchwork");
     EXPECT_EQ(host.writes[0].second.patches.size(), 3u);
