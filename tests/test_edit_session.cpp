@@ -217,7 +217,8 @@ TEST(Commands, SaveGoesThroughTheHostAndSplitExtrudeWork) {
     const CommandTable t = makeCommandTable();
     t.runScript(s, host, "add-patch; extrude u1; select patch 0; split v 0.25; save \"my file.patchwork\"", "x");
     EXPECT_EQ(s.doc.patches.size(), 3u);
-XX
+    // The split along v cut edge u1, whose extrusion join is dropped (split); the split's own join stays.
+    EXPECT_EQ(s.doc.joins.size(), 1u);
     t.runScript(s, host, "select patch 1; curve-from-edge v0", "x");
     ASSERT_EQ(s.doc.curves.size(), 1u);
     EXPECT_EQ(s.sel.curve, 0);
