@@ -179,11 +179,10 @@ void addModelCommands(CommandTable& t) {
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 3, 3);
                const Document& doc = ctx.session.doc;
-               const auto [a, ea] = patchEdge(ctx.args[0], doc);
-               const auto [b, eb] = patchEdge(ctx.args[1], doc);
+               const std::pair<uint32_t, Edge> a = patchEdge(ctx.args[0], doc), b = patchEdge(ctx.args[1], doc);
                const auto c = parseContinuity(ctx.args[2]);
                if (!c) throw EditError("expected C0, C1 or G1, got '" + ctx.args[2] + "'");
-               ctx.session.apply("Join edges", [&](Document& d) { joinEdges(d, a, ea, b, eb, *c); });
+               ctx.session.apply("Join edges", [&](Document& d) { joinEdges(d, a.first, a.second, b.first, b.second, *c); });
            }});
     t.add({.name = "unjoin", .label = "Unjoin Edge", .menu = "Patch", .usage = "[A:EDGE]",
            .help = "Remove the join on an edge (default: the selected patch's highlighted edge); the patches can then move apart",
