@@ -1,14 +1,17 @@
-// What the editor generates from the command table (core/command_table.hpp): the menu bar, the
-// keyboard shortcuts, the F1 help and the F3 command palette. One entry per binding of a command.
+// The editor and the command table (core/command_table.hpp): what the window does for commands
+// (CommandHost), and what it generates from the table: the menu bar, the keyboard shortcuts, the F1
+// help, the F3 command palette and panel buttons. One entry per binding of a command.
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 
 #include <imgui.h>
 
+#include "document_io.hpp"
 #include "editor.hpp"
 #include "imgui_tip.hpp"
 #include "shortcuts.hpp"
@@ -97,6 +100,90 @@ void Editor::runShortcuts() {
             const Command* c = commands_.find(words.front());
             if (c && commands_.isEnabled(*c, session_)) runCommand(words);
         }
+}
+
+// --- CommandHost: what the commands ask of the window ---
+
+bool Editor::confirmDiscard(const std::vector<std::string>& words) {
+    pendingCommand_ = words;
+    openUnsavedPrompt_ = true;
+    wake();
+    return false;
+}
+
+void Editor::write(const Document& doc, const std::string& path) { saveDocument(doc, path, exportOptions_); }
+
+void Editor::fileDialog(FileDialogKind kind) {
+    const std::string name = doc_.name.empty() ? "untitled" : doc_.name;
+    fileName_[0] = 0;
+    switch (kind) {
+        case FileDialogKind::Open: fileMode_ = FileDialogMode::Open; break;
+        case FileDialogKind::Import: fileMode_ = FileDialogMode::Import; break;
+        case FileDialogKind::SaveAs:
+            fileMode_ = FileDialogMode::SaveAs;
+            std::snprintf(fileName_, sizeof fileName_, "%s.patchwork", name.c_str());
+            break;
+        case FileDialogKind::ExportGltf:
+            fileMode_ = FileDialogMode::ExportGltf;
+            std::snprintf(fileName_, sizeof fileName_, "%s.glb", name.c_str());
+            break;
+        case FileDialogKind::Screenshot:
+            fileMode_ = FileDialogMode::Screenshot;
+            std::snprintf(fileName_, sizeof fileName_, "screenshot.png");
+            break;
+    }
+    wake();
+}
+
+void Editor::toggle(WindowToggle which) {
+    switch (which) {
+        case WindowToggle::Help: showHelp_ = !showHelp_; break;
+        case WindowToggle::Palette:
+            showPalette_ = !showPalette_;
+            paletteQuery_[0] = 0;
+            paletteCursor_ = 0;
+            break;
+        case WindowToggle::Presentation: setPresentation(!presentation_); break;
+        case WindowToggle::DomainView: showDomain_ = !showDomain_; break;
+        case WindowToggle::ShaderPanel: showShaders_ = !showShaders_; break;
+        case WindowToggle::GroundGrid: showGround_ = !showGround_; break;
+    }
+    wake();
+}
+
+bool Editor::toggled(WindowToggle which) const {
+    switch (which) {
+        case WindowToggle::Help: return showHelp_;
+        case WindowToggle::Palette: return showPalette_;
+        case WindowToggle::Presentation: return presentation_;
+        case WindowToggle::DomainView: return showDomain_;
+        case WindowToggle::ShaderPanel: return showShaders_;
+        case WindowToggle::GroundGrid: return showGround_;
+    }
+    return false;
+}
+
+void Editor::screenshot(const std::string& path) {
+    std::string file = path;
+    if (file.empty()) {
+        char name[64];
+        const std::time_t t = std::time(nullptr);
+        std::strftime(name, sizeof name, "patchwork-%Y%m%d-%H%M%S.png", std::localtime(&t));
+        file = name;
+    }
+    screenshotRequested_ = true;
+    screenshotPath_ = file;
+    wake();
+}
+
+bool Editor::frame(const Bounds& box) {
+    frameBox(box);
+    return true;
+}
+
+void Editor::status(const std::string& message) {
+    status_ = message;
+    statusTime_ = std::chrono::steady_clock::now();
 }
 
 void Editor::commandButton(const char* label, const std::string& line, const char* trace) {
