@@ -32,6 +32,9 @@ public:
     // Writes `doc` to `path` (by extension). A script host keeps every write until the script ended
     // well, so that a failing script leaves no file behind.
     virtual void write(const Document& doc, const std::string& path) = 0;
+    // After `save` wrote the document to `path` (the session has taken it as its file when the
+    // format keeps everything): a window updates its title, recent files and autosave.
+    virtual void saved(const std::string& path) { (void)path; }
     // Window-only actions (never called for a host without a window).
     virtual void fileDialog(FileDialogKind) {}
     virtual void toggle(WindowToggle) {}

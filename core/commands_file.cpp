@@ -25,6 +25,7 @@ bool mayReplace(CommandContext& ctx) {
 void save(CommandContext& ctx, const std::string& path) {
     ctx.host.write(ctx.session.documentToSave(), path);
     ctx.session.savedTo(path);
+    ctx.host.saved(path);
     ctx.host.status("Saved " + path);
 }
 

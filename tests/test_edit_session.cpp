@@ -22,7 +22,9 @@ namespace {
 class RecordingHost final : public CommandHost {
 public:
     void write(const Document& doc, const std::string& path) override { writes.emplace_back(path, doc); }
+    void saved(const std::string& path) override { savedPaths.push_back(path); }
     std::vector<std::pair<std::string, Document>> writes;
+    std::vector<std::string> savedPaths;
 };
 
 void run(EditSession& s, const std::string& script) {
@@ -225,6 +227,7 @@ TEST(Commands, SaveGoesThroughTheHostAndSplitExtrudeWork) {
     t.runScript(s, host, "undo", "x");
     ASSERT_EQ(host.writes.size(), 1u);
     EXPECT_EQ(host.writes[0].first, "my file.patchwork");
+    EXPECT_EQ(host.savedPaths, std::vector<std::string>{"my file.patchwork"});  // the window updates title, recent files, autosave
     EXPECT_EQ(host.writes[0].second.patches.size(), 3u);
     EXPECT_EQ(s.path(), "my file.patchwork");
     EXPECT_FALSE(s.isModified());

@@ -130,6 +130,7 @@ private:
     bool hasWindow() const override { return true; }
     bool confirmDiscard(const std::vector<std::string>& words) override;
     void write(const Document& doc, const std::string& path) override;
+    void saved(const std::string& path) override;
     void fileDialog(FileDialogKind kind) override;
     void toggle(WindowToggle which) override;
     bool toggled(WindowToggle which) const override;
@@ -145,7 +146,6 @@ private:
     void finishDrag();
     void cancelDrag();
     void drawViewportOverlays();
-    void frameSelection();
     void frameBox(const Bounds& box);
     Camera viewCamera() const { return cam_; }
 

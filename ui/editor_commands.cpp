@@ -113,6 +113,12 @@ bool Editor::confirmDiscard(const std::vector<std::string>& words) {
 
 void Editor::write(const Document& doc, const std::string& path) { saveDocument(doc, path, exportOptions_); }
 
+void Editor::saved(const std::string& path) {
+    addRecent(path);
+    if (!isModified()) autosaver_.discard();  // the file on disk holds everything now
+    glfwSetWindowTitle(window_, ("Patchwork — " + session_.title()).c_str());
+}
+
 void Editor::fileDialog(FileDialogKind kind) {
     const std::string name = doc_.name.empty() ? "untitled" : doc_.name;
     fileName_[0] = 0;

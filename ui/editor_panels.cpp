@@ -29,15 +29,12 @@ const char* kEdgeNames[] = {"u0", "v0", "u1", "v1"};
 }  // namespace
 
 void Editor::patchOp(const std::string& label, const std::function<void(Document&)>& op, bool topology) {
-    Document d = doc_;
     try {
-        op(d);
+        session_.apply(label, op, topology);
     } catch (const std::exception& e) {
         showError(label + " failed: " + e.what());
         return;
     }
-    doc_ = std::move(d);
-    commit(label);
     documentChanged(topology);
 }
 

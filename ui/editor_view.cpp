@@ -59,8 +59,6 @@ void Editor::frameBox(const Bounds& box) {
 
 std::array<int, 2> Editor::viewSize() const { return {std::max(int(viewArea_[2]), 1), std::max(int(viewArea_[3]), 1)}; }
 
-void Editor::frameSelection() { frameBox(frameTargetBounds(doc_, sel_)); }
-
 void Editor::viewportInput() {
     ImGuiIO& io = ImGui::GetIO();
     // Mouse positions are relative to the pane the mouse works in (the whole window unless the
@@ -76,7 +74,7 @@ void Editor::viewportInput() {
     if (!io.WantCaptureKeyboard) {
         const bool dragging = mode_ == Interaction::DragPoints || mode_ == Interaction::Grab;
         if (!dragging) {
-            runShortcuts();
+            if (mode_ == Interaction::None) runShortcuts();
             if (keyPressed(GLFW_KEY_G, 0) && !sel_.points.empty() && mode_ == Interaction::None) {
                 pressX_ = mx;
                 pressY_ = my;
