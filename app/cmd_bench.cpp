@@ -14,19 +14,19 @@
 #include <string>
 #include <vector>
 
-#include "camera_math.hpp"
-#include "commands.hpp"
-#include "device.hpp"
-#include "document_io.hpp"
-#include "errors.hpp"
-#include "file_io.hpp"
-#include "mesh_tessellate.hpp"
-#include "model_builders.hpp"
-#include "offscreen_target.hpp"
-#include "renderer.hpp"
+#include "core/camera_math.hpp"
+#include "app/commands.hpp"
+#include "render/device.hpp"
+#include "core/document_io.hpp"
+#include "core/errors.hpp"
+#include "core/file_io.hpp"
+#include "core/mesh_tessellate.hpp"
+#include "core/model_builders.hpp"
+#include "render/offscreen_target.hpp"
+#include "render/renderer.hpp"
 
 #ifdef PATCHWORK_HAVE_EDITOR
-#include "editor.hpp"
+#include "ui/editor.hpp"
 #endif
 
 namespace pw::app {

@@ -5,10 +5,10 @@
 #include <memory>
 #include <string>
 
-#include "commands.hpp"
-#include "document_io.hpp"
-#include "errors.hpp"
-#include "file_io.hpp"
+#include "app/commands.hpp"
+#include "core/document_io.hpp"
+#include "core/errors.hpp"
+#include "core/file_io.hpp"
 
 namespace pw::app {
 

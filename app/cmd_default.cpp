@@ -2,10 +2,10 @@
 // built-in teapot). Without a display it says so and exits 2.
 #include <iostream>
 
-#include "commands.hpp"
+#include "app/commands.hpp"
 
 #ifdef PATCHWORK_HAVE_EDITOR
-#include "editor.hpp"
+#include "ui/editor.hpp"
 #endif
 
 namespace pw::app {

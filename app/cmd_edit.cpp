@@ -8,11 +8,11 @@
 #include <utility>
 #include <vector>
 
-#include "command_table.hpp"
-#include "commands.hpp"
-#include "document_io.hpp"
-#include "errors.hpp"
-#include "file_io.hpp"
+#include "core/command_table.hpp"
+#include "app/commands.hpp"
+#include "core/document_io.hpp"
+#include "core/errors.hpp"
+#include "core/file_io.hpp"
 
 namespace pw::app {
 

@@ -4,10 +4,10 @@
 #include <memory>
 #include <string>
 
-#include "commands.hpp"
-#include "document_io.hpp"
-#include "gltf_export.hpp"
-#include "limits.hpp"
+#include "app/commands.hpp"
+#include "core/document_io.hpp"
+#include "core/gltf_export.hpp"
+#include "core/limits.hpp"
 
 namespace pw::app {
 

@@ -7,10 +7,10 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "commands.hpp"
-#include "constraint_solver.hpp"
-#include "continuity_report.hpp"
-#include "document_io.hpp"
+#include "app/commands.hpp"
+#include "core/constraint_solver.hpp"
+#include "core/continuity_report.hpp"
+#include "core/document_io.hpp"
 
 namespace pw::app {
 

@@ -3,8 +3,8 @@
 #include <iomanip>
 #include <iostream>
 
-#include "commands.hpp"
-#include "tess_presets.hpp"
+#include "app/commands.hpp"
+#include "core/tess_presets.hpp"
 
 namespace pw::app {
 

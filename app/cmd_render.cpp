@@ -9,21 +9,21 @@
 #include <string>
 #include <vector>
 
-#include "camera_math.hpp"
-#include "commands.hpp"
-#include "device.hpp"
-#include "document_io.hpp"
-#include "domain_args.hpp"
-#include "render_args.hpp"
-#include "domain_figure.hpp"
-#include "errors.hpp"
-#include "file_io.hpp"
-#include "level_args.hpp"
-#include "limits.hpp"
-#include "model_figure.hpp"
-#include "offscreen_target.hpp"
-#include "png_writer.hpp"
-#include "renderer.hpp"
+#include "core/camera_math.hpp"
+#include "app/commands.hpp"
+#include "render/device.hpp"
+#include "core/document_io.hpp"
+#include "app/domain_args.hpp"
+#include "app/render_args.hpp"
+#include "render/domain_figure.hpp"
+#include "core/errors.hpp"
+#include "core/file_io.hpp"
+#include "app/level_args.hpp"
+#include "core/limits.hpp"
+#include "render/model_figure.hpp"
+#include "render/offscreen_target.hpp"
+#include "render/png_writer.hpp"
+#include "render/renderer.hpp"
 
 namespace pw::app {
 

@@ -5,12 +5,12 @@
 #include <iostream>
 #include <memory>
 
-#include "commands.hpp"
-#include "document_io.hpp"
-#include "domain_args.hpp"
-#include "level_args.hpp"
-#include "render_args.hpp"
-#include "shader_listing.hpp"
+#include "app/commands.hpp"
+#include "core/document_io.hpp"
+#include "app/domain_args.hpp"
+#include "app/level_args.hpp"
+#include "app/render_args.hpp"
+#include "render/shader_listing.hpp"
 
 namespace pw::app {
 namespace {

@@ -10,16 +10,16 @@
 #include <memory>
 #include <regex>
 
-#include "commands.hpp"
-#include "document_io.hpp"
-#include "domain_labels.hpp"
-#include "errors.hpp"
-#include "level_args.hpp"
-#include "model_builders.hpp"
-#include "model_figure.hpp"
-#include "offscreen_target.hpp"
-#include "png_writer.hpp"
-#include "render_args.hpp"
+#include "app/commands.hpp"
+#include "core/document_io.hpp"
+#include "render/domain_labels.hpp"
+#include "core/errors.hpp"
+#include "app/level_args.hpp"
+#include "core/model_builders.hpp"
+#include "render/model_figure.hpp"
+#include "render/offscreen_target.hpp"
+#include "render/png_writer.hpp"
+#include "app/render_args.hpp"
 
 namespace pw::app {
 

@@ -1,7 +1,7 @@
-#include "domain_args.hpp"
+#include "app/domain_args.hpp"
 
-#include "level_args.hpp"
-#include "tess_presets.hpp"
+#include "app/level_args.hpp"
+#include "core/tess_presets.hpp"
 
 namespace pw::app {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "domain_figure.hpp"
+#include "render/domain_figure.hpp"
 
 namespace pw::app {
 

@@ -1,10 +1,10 @@
-#include "level_args.hpp"
+#include "app/level_args.hpp"
 
 #include <cmath>
 #include <sstream>
 
-#include "errors.hpp"
-#include "limits.hpp"
+#include "core/errors.hpp"
+#include "core/limits.hpp"
 
 namespace pw::app {
 

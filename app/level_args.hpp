@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "document.hpp"
+#include "core/document.hpp"
 
 namespace pw::app {
 

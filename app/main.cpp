@@ -4,8 +4,8 @@
 #include <exception>
 #include <iostream>
 
-#include "commands.hpp"
-#include "errors.hpp"
+#include "app/commands.hpp"
+#include "core/errors.hpp"
 
 int main(int argc, char** argv) {
     CLI::App app{"Patchwork — a Bézier/spline patch editor on the GPU tessellation pipeline"};

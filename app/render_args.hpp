@@ -5,9 +5,9 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
-#include "document.hpp"
-#include "domain_args.hpp"
-#include "renderer.hpp"
+#include "core/document.hpp"
+#include "app/domain_args.hpp"
+#include "render/renderer.hpp"
 
 namespace pw::app {
 

@@ -6,9 +6,9 @@
 
 #include <vector>
 
-#include "constraint_solver.hpp"
-#include "model_builders.hpp"
-#include "point_upload.hpp"
+#include "core/constraint_solver.hpp"
+#include "core/model_builders.hpp"
+#include "core/point_upload.hpp"
 
 namespace {
 

@@ -10,10 +10,10 @@
 #include <random>
 #include <vector>
 
-#include "document_io.hpp"
-#include "gltf_export.hpp"
-#include "model_builders.hpp"
-#include "patch_eval.hpp"
+#include "core/document_io.hpp"
+#include "core/gltf_export.hpp"
+#include "core/model_builders.hpp"
+#include "core/patch_eval.hpp"
 
 namespace {
 

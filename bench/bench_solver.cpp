@@ -4,8 +4,8 @@
 
 #include <stdexcept>
 
-#include "constraint_solver.hpp"
-#include "model_builders.hpp"
+#include "core/constraint_solver.hpp"
+#include "core/model_builders.hpp"
 
 namespace {
 

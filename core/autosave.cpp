@@ -1,4 +1,4 @@
-#include "autosave.hpp"
+#include "core/autosave.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -11,8 +11,8 @@
 #include <system_error>
 #include <unistd.h>
 
-#include "document_io.hpp"
-#include "file_io.hpp"
+#include "core/document_io.hpp"
+#include "core/file_io.hpp"
 
 namespace pw {
 

@@ -1,4 +1,6 @@
-#include "basis.hpp"
+#include "core/basis.hpp"
+
+#include "core/patch_math.h"
 
 namespace pw {
 
@@ -53,19 +55,9 @@ BasisWeights matrixWeights(const Mat4& m, double t) {
 }
 
 BasisWeights bernsteinWeights(double t, double s) {
+    const glm::dvec4 w = gpu::bernstein3(t, s), dw = gpu::bernstein3D1(t, s), ddw = gpu::bernstein3D2(t, s);
     BasisWeights r{};
-    r.w[0] = s * s * s;
-    r.w[1] = 3 * t * s * s;
-    r.w[2] = 3 * t * t * s;
-    r.w[3] = t * t * t;
-    r.dw[0] = -3 * s * s;
-    r.dw[1] = 3 * s * s - 6 * t * s;
-    r.dw[2] = 6 * t * s - 3 * t * t;
-    r.dw[3] = 3 * t * t;
-    r.ddw[0] = 6 * s;
-    r.ddw[1] = 6 * t - 12 * s;
-    r.ddw[2] = 6 * s - 12 * t;
-    r.ddw[3] = 6 * t;
+    for (int i = 0; i < 4; ++i) r.w[i] = w[i], r.dw[i] = dw[i], r.ddw[i] = ddw[i];
     return r;
 }
 

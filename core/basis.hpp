@@ -4,7 +4,7 @@
 #include <optional>
 #include <string_view>
 
-#include "math_types.hpp"
+#include "core/math_types.hpp"
 
 namespace pw {
 

@@ -1,4 +1,4 @@
-#include "bezier_curve.hpp"
+#include "core/bezier_curve.hpp"
 
 #include <algorithm>
 

@@ -6,7 +6,7 @@
 #include <array>
 #include <vector>
 
-#include "document.hpp"
+#include "core/document.hpp"
 
 namespace pw {
 

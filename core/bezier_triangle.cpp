@@ -1,16 +1,15 @@
-#include "bezier_triangle.hpp"
+#include "core/bezier_triangle.hpp"
 
 #include <algorithm>
 
-#include "document.hpp"
-#include "net_scale.hpp"
-#include "patch_eval.hpp"
+#include "core/document.hpp"
+#include "core/net_scale.hpp"
+#include "core/patch_eval.hpp"
+#include "core/patch_math.h"
 
 namespace pw {
 
 namespace {
-
-constexpr int kEdgeSlots[3][4] = {{6, 7, 8, 9}, {9, 5, 2, 0}, {0, 1, 3, 6}};
 
 struct Derivs {
     Vec3 p{0.0}, du{0.0}, dv{0.0};
@@ -46,7 +45,7 @@ int triSlot(int i, int j, int k) {
     return (3 - i) * (4 - i) / 2 + k;
 }
 
-int triEdgeSlot(int edge, int k) { return kEdgeSlots[edge][k]; }
+int triEdgeSlot(int edge, int k) { return gpu::triEdgeSlot(edge, k); }
 
 TriPoint evaluateTriangle(const Net10& net, double u, double v) { return evaluateTriangle(net, u, v, 1.0 - u - v); }
 
@@ -84,7 +83,7 @@ Net10 gatherTriangleNet(const Document& doc, const std::array<uint32_t, 10>& idx
 }
 
 std::array<uint32_t, 4> triEdgePool(const std::array<uint32_t, 10>& idx, int edge) {
-    return {idx[kEdgeSlots[edge][0]], idx[kEdgeSlots[edge][1]], idx[kEdgeSlots[edge][2]], idx[kEdgeSlots[edge][3]]};
+    return {idx[triEdgeSlot(edge, 0)], idx[triEdgeSlot(edge, 1)], idx[triEdgeSlot(edge, 2)], idx[triEdgeSlot(edge, 3)]};
 }
 
 std::array<int, 2> triGridEdgePoint(int edge, int k, int n) {
@@ -103,7 +102,7 @@ void evaluateTriangleGrid(const Net10& net, const std::array<uint32_t, 10>& pool
                                                           static_cast<double>(n - i - j) / n);
     for (int e = 0; e < 3; ++e) {
         std::array<Vec3, 4> pts;
-        for (int k = 0; k < 4; ++k) pts[k] = net[kEdgeSlots[e][k]];
+        for (int k = 0; k < 4; ++k) pts[k] = net[triEdgeSlot(e, k)];
         const std::array<uint32_t, 4> ids = triEdgePool(poolIdx, e);
         for (int k = 0; k <= n; ++k) {
             const auto [i, j] = triGridEdgePoint(e, k, n);

@@ -1,6 +1,6 @@
 // The tea-set .bpt format: strict line-by-line parsing with line numbers in every error, and
 // round-trip exact writing.
-#include "bpt_format.hpp"
+#include "core/bpt_format.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "errors.hpp"
-#include "file_io.hpp"
-#include "join_detect.hpp"
-#include "orientation.hpp"
-#include "limits.hpp"
+#include "core/errors.hpp"
+#include "core/file_io.hpp"
+#include "core/join_detect.hpp"
+#include "core/orientation.hpp"
+#include "core/limits.hpp"
 
 namespace pw {
 

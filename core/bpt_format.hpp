@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-#include "document.hpp"
+#include "core/document.hpp"
 
 namespace pw {
 

@@ -1,4 +1,4 @@
-#include "camera_math.hpp"
+#include "core/camera_math.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -9,7 +9,7 @@
 #include <optional>
 #include <string_view>
 
-#include "document.hpp"
+#include "core/document.hpp"
 
 namespace pw {
 

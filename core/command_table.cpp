@@ -1,13 +1,13 @@
-#include "command_table.hpp"
+#include "core/command_table.hpp"
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
 
-#include "errors.hpp"
-#include "limits.hpp"
-#include "patch_ops.hpp"
+#include "core/errors.hpp"
+#include "core/limits.hpp"
+#include "core/patch_ops.hpp"
 
 namespace pw {
 

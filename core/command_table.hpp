@@ -13,7 +13,7 @@
 #include <string_view>
 #include <vector>
 
-#include "edit_session.hpp"
+#include "core/edit_session.hpp"
 
 namespace pw {
 

@@ -2,10 +2,10 @@
 // undo, redo.
 #include <filesystem>
 
-#include "command_table.hpp"
-#include "document_io.hpp"
-#include "patch_ops.hpp"
-#include "tess_presets.hpp"
+#include "core/command_table.hpp"
+#include "core/document_io.hpp"
+#include "core/patch_ops.hpp"
+#include "core/tess_presets.hpp"
 
 namespace pw {
 

@@ -2,9 +2,9 @@
 // flip, extrude, split, join and unjoin.
 #include <algorithm>
 
-#include "command_table.hpp"
-#include "net_ops.hpp"
-#include "patch_ops.hpp"
+#include "core/command_table.hpp"
+#include "core/net_ops.hpp"
+#include "core/patch_ops.hpp"
 
 namespace pw {
 

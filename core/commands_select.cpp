@@ -5,10 +5,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "command_table.hpp"
-#include "constraint_solver.hpp"
-#include "patch_ops.hpp"
-#include "picking.hpp"
+#include "core/command_table.hpp"
+#include "core/constraint_solver.hpp"
+#include "core/patch_ops.hpp"
+#include "core/picking.hpp"
 
 namespace pw {
 

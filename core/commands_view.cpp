@@ -2,9 +2,9 @@
 // levels and partitioning; and the window's own toggles (help, palette, presentation, panels).
 #include <algorithm>
 
-#include "camera_math.hpp"
-#include "command_table.hpp"
-#include "patch_ops.hpp"
+#include "core/camera_math.hpp"
+#include "core/command_table.hpp"
+#include "core/patch_ops.hpp"
 
 namespace pw {
 

@@ -1,6 +1,6 @@
 // Projection of edited control points onto the join constraints (DESIGN §1): a weighted
 // least-change KKT solve, d = W⁻¹Cᵀy with (C W⁻¹ Cᵀ + εI) y = r, factorised once per drag.
-#include "constraint_solver.hpp"
+#include "core/constraint_solver.hpp"
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -10,8 +10,8 @@
 #include <map>
 #include <stdexcept>
 
-#include "net_ops.hpp"
-#include "solver_constraints.hpp"
+#include "core/net_ops.hpp"
+#include "core/solver_constraints.hpp"
 
 namespace pw {
 

@@ -12,7 +12,7 @@
 #include <memory>
 #include <vector>
 
-#include "document.hpp"
+#include "core/document.hpp"
 
 namespace pw {
 

@@ -1,13 +1,13 @@
 // Measured continuity along each join: the seam sampled on both sides (positions and normals) and
 // the control-point C1 residual.
-#include "continuity_report.hpp"
+#include "core/continuity_report.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-#include "patch_eval.hpp"
-#include "solver_constraints.hpp"
+#include "core/patch_eval.hpp"
+#include "core/solver_constraints.hpp"
 
 namespace pw {
 

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "document.hpp"
+#include "core/document.hpp"
 
 namespace pw {
 

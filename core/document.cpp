@@ -1,9 +1,26 @@
-#include "document.hpp"
+#include "core/document.hpp"
+
+#include "core/basis.hpp"
+#include "core/patch_math.h"
 
 #include <algorithm>
 #include <limits>
 
 namespace pw {
+
+// The shaders receive these enums as the named constants of core/patch_math.h.
+static_assert(uint32_t(Spacing::Equal) == gpu::kSpacingEqual && uint32_t(Spacing::FractionalOdd) == gpu::kSpacingFractionalOdd &&
+              uint32_t(Spacing::FractionalEven) == gpu::kSpacingFractionalEven && uint32_t(Spacing::Pow2) == gpu::kSpacingPow2);
+static_assert(uint32_t(AdaptiveMode::None) == gpu::kAdaptiveNone && uint32_t(AdaptiveMode::Distance) == gpu::kAdaptiveDistance &&
+              uint32_t(AdaptiveMode::ScreenSpace) == gpu::kAdaptiveScreen &&
+              uint32_t(AdaptiveMode::Orientation) == gpu::kAdaptiveOrientation);
+static_assert(uint32_t(ShadingMode::Lit) == gpu::kShadingLit && uint32_t(ShadingMode::Normal) == gpu::kShadingNormal &&
+              uint32_t(ShadingMode::PatchId) == gpu::kShadingPatchId && uint32_t(ShadingMode::UvChecker) == gpu::kShadingUvChecker &&
+              uint32_t(ShadingMode::Zebra) == gpu::kShadingZebra &&
+              uint32_t(ShadingMode::GaussCurvature) == gpu::kShadingGaussCurvature &&
+              uint32_t(ShadingMode::MeanCurvature) == gpu::kShadingMeanCurvature);
+static_assert(uint32_t(Basis::Bezier) == gpu::kBasisBezier && uint32_t(Basis::BSpline) == gpu::kBasisBSpline &&
+              uint32_t(Basis::CatmullRom) == gpu::kBasisCatmullRom);
 
 namespace {
 
@@ -33,15 +50,9 @@ std::optional<AdaptiveMode> parseAdaptive(std::string_view n) { return parseName
 std::string_view shadingName(ShadingMode m) { return kShadingNames[static_cast<size_t>(m)]; }
 std::optional<ShadingMode> parseShading(std::string_view n) { return parseNamed<ShadingMode>(n, kShadingNames); }
 
-int edgeSlot(Edge e, int k, int depth) {
-    switch (e) {
-        case Edge::U0: return k * 4 + depth;
-        case Edge::V0: return depth * 4 + k;
-        case Edge::U1: return k * 4 + (3 - depth);
-        case Edge::V1: return (3 - depth) * 4 + k;
-    }
-    return 0;
-}
+int edgeSlot(Edge e, int k, int depth) { return gpu::quadEdgeSlot(static_cast<int>(e), k, depth); }
+
+bool edgeReversed(const std::array<uint32_t, 4>& pool) { return gpu::edgeReversed(pool[0], pool[1], pool[2], pool[3]); }
 
 std::vector<PatchInstance> expandPatches(const Document& doc) {
     std::vector<PatchInstance> out;

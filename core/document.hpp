@@ -9,8 +9,8 @@
 #include <string_view>
 #include <vector>
 
-#include "basis.hpp"
-#include "math_types.hpp"
+#include "core/basis.hpp"
+#include "core/math_types.hpp"
 
 namespace pw {
 
@@ -23,6 +23,12 @@ std::optional<Edge> parseEdge(std::string_view name);
 // Net slot (0..15) of the k-th point along edge e (k in increasing parameter), and of the point
 // `depth` rows inward from it (depth 0 = on the edge, 1 = the tangent row).
 int edgeSlot(Edge e, int k, int depth = 0);
+
+// True when an edge with these four pool indices runs against its canonical direction (its indices
+// read backwards are lexicographically smaller); every patch sharing the edge walks it canonically
+// (watertight seams, DESIGN §2). The rule of core/patch_math.h, which the shaders use too.
+bool edgeReversed(const std::array<uint32_t, 4>& pool);
+inline std::array<uint32_t, 4> reversedEdgePool(const std::array<uint32_t, 4>& p) { return {p[3], p[2], p[1], p[0]}; }
 
 enum class Continuity : uint8_t { C0, C1, G1 };
 std::string_view continuityName(Continuity c);  // "C0", "C1", "G1"

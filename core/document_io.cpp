@@ -1,12 +1,12 @@
 // Loading and saving documents by file extension.
-#include "document_io.hpp"
+#include "core/document_io.hpp"
 
-#include "bpt_format.hpp"
-#include "embedded_data.hpp"
-#include "errors.hpp"
-#include "file_io.hpp"
-#include "gltf_import.hpp"
-#include "patchwork_format.hpp"
+#include "core/bpt_format.hpp"
+#include "core/embedded_data.hpp"
+#include "core/errors.hpp"
+#include "core/file_io.hpp"
+#include "core/gltf_import.hpp"
+#include "core/patchwork_format.hpp"
 
 namespace pw {
 

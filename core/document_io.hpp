@@ -4,8 +4,8 @@
 
 #include <filesystem>
 
-#include "document.hpp"
-#include "gltf_export.hpp"
+#include "core/document.hpp"
+#include "core/gltf_export.hpp"
 
 namespace pw {
 

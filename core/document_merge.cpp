@@ -1,4 +1,4 @@
-#include "document_merge.hpp"
+#include "core/document_merge.hpp"
 
 namespace pw {
 

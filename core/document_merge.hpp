@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-#include "document.hpp"
+#include "core/document.hpp"
 
 namespace pw {
 

@@ -1,4 +1,4 @@
-#include "edit_history.hpp"
+#include "core/edit_history.hpp"
 
 #include <stdexcept>
 

@@ -1,9 +1,9 @@
-#include "edit_session.hpp"
+#include "core/edit_session.hpp"
 
 #include <algorithm>
 
-#include "document_io.hpp"
-#include "patch_ops.hpp"
+#include "core/document_io.hpp"
+#include "core/patch_ops.hpp"
 
 namespace pw {
 

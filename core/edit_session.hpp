@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "document.hpp"
-#include "document_merge.hpp"
-#include "edit_history.hpp"
-#include "gltf_export.hpp"
-#include "selection.hpp"
+#include "core/document.hpp"
+#include "core/document_merge.hpp"
+#include "core/edit_history.hpp"
+#include "core/gltf_export.hpp"
+#include "core/selection.hpp"
 
 namespace pw {
 

@@ -1,4 +1,4 @@
-#include "file_io.hpp"
+#include "core/file_io.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -9,8 +9,8 @@
 #include <fstream>
 #include <random>
 
-#include "errors.hpp"
-#include "limits.hpp"
+#include "core/errors.hpp"
+#include "core/limits.hpp"
 
 namespace pw {
 

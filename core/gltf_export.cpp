@@ -1,7 +1,7 @@
 // glTF 2.0 export through tinygltf (DESIGN §5): the welded mesh in one buffer (POSITION, NORMAL,
 // TEXCOORD_0, indices; optional control cage as LINES), one scene, one node, one mesh, one
 // material, and the editable document in asset.extras.patchwork.
-#include "gltf_export.hpp"
+#include "core/gltf_export.hpp"
 
 #include <tiny_gltf.h>
 
@@ -12,12 +12,12 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "bezier_curve.hpp"
-#include "errors.hpp"
-#include "file_io.hpp"
-#include "limits.hpp"
-#include "mesh_tessellate.hpp"
-#include "patchwork_format.hpp"
+#include "core/bezier_curve.hpp"
+#include "core/errors.hpp"
+#include "core/file_io.hpp"
+#include "core/limits.hpp"
+#include "core/mesh_tessellate.hpp"
+#include "core/patchwork_format.hpp"
 
 namespace pw {
 

@@ -1,4 +1,4 @@
-#include "gltf_import.hpp"
+#include "core/gltf_import.hpp"
 
 #include <tiny_gltf.h>
 
@@ -6,9 +6,9 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "errors.hpp"
-#include "file_io.hpp"
-#include "patchwork_format.hpp"
+#include "core/errors.hpp"
+#include "core/file_io.hpp"
+#include "core/patchwork_format.hpp"
 
 namespace pw {
 

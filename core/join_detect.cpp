@@ -17,7 +17,7 @@
 // well above 4-decimal rounding of coordinates of order 1. Such slightly-off joins have a residual
 // up to tol until the first edit, when the constraint projection (constraint_solver.hpp) makes it
 // exact; pass 1e-6 (or less) to accept only seams already exact to the solver's standard.
-#include "join_detect.hpp"
+#include "core/join_detect.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -94,8 +94,7 @@ std::vector<Join> detectJoins(const Document& doc, JoinDetectOptions options) {
                 inRange = inRange && ref.idx[k] < doc.points.size();
             }
             if (!inRange || degenerateEdge(doc, ref.idx)) continue;
-            std::array<uint32_t, 4> rev{ref.idx[3], ref.idx[2], ref.idx[1], ref.idx[0]};
-            groups[std::min(ref.idx, rev)].push_back(ref);
+            groups[edgeReversed(ref.idx) ? reversedEdgePool(ref.idx) : ref.idx].push_back(ref);
         }
     }
 

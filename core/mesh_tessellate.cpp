@@ -6,7 +6,7 @@
 //               of the edge's four pool indices (the lexicographically smaller of both orders).
 // C0 and unjoined seams keep separate vertices (same position, own normals). Spline surfaces share
 // one vertex grid per surface (their windows are C1/C2 by construction).
-#include "mesh_tessellate.hpp"
+#include "core/mesh_tessellate.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -16,10 +16,10 @@
 #include <string>
 #include <tuple>
 
-#include "limits.hpp"
-#include "bezier_triangle.hpp"
-#include "patch_eval.hpp"
-#include "triangle_mesh.hpp"
+#include "core/limits.hpp"
+#include "core/bezier_triangle.hpp"
+#include "core/patch_eval.hpp"
+#include "core/triangle_mesh.hpp"
 
 namespace pw {
 
@@ -55,8 +55,6 @@ int cornerOfSlot(int slot) { return (slot >= 12 ? 2 : 0) + ((slot & 3) == 3 ? 1 
 std::array<uint32_t, 4> edgePool(const std::array<uint32_t, 16>& idx, Edge e) {
     return {idx[edgeSlot(e, 0)], idx[edgeSlot(e, 1)], idx[edgeSlot(e, 2)], idx[edgeSlot(e, 3)]};
 }
-
-std::array<uint32_t, 4> reversed4(const std::array<uint32_t, 4>& a) { return {a[3], a[2], a[1], a[0]}; }
 
 constexpr Edge kEdges[4] = {Edge::U0, Edge::V0, Edge::U1, Edge::V1};
 
@@ -100,7 +98,7 @@ void tessellateWindows(const Document& doc, const std::vector<PatchInstance>& wi
             const bool samePoint = ids[0] == ids[1] && ids[0] == ids[2] && ids[0] == ids[3];
             const bool samePosition = p0 == doc.points[ids[1]] && p0 == doc.points[ids[2]] && p0 == doc.points[ids[3]];
             collapsed[k] = samePoint || samePosition;
-            flip[k] = reversed4(ids) < ids;
+            flip[k] = edgeReversed(ids);
             if (collapsed[k])
                 cornerSets.unite(static_cast<uint32_t>(w * 4 + cornerOfSlot(edgeSlot(e, 0))),
                                  static_cast<uint32_t>(w * 4 + cornerOfSlot(edgeSlot(e, 3))));
@@ -137,7 +135,7 @@ void tessellateWindows(const Document& doc, const std::vector<PatchInstance>& wi
         if (a.basis != Basis::Bezier || b.basis != Basis::Bezier) continue;
         if (j.patchA == j.patchB && j.edgeA == j.edgeB) continue;
         const auto ea = edgePool(a.idx, j.edgeA), eb = edgePool(b.idx, j.edgeB);
-        const bool same = ea == eb, rev = ea == reversed4(eb);
+        const bool same = ea == eb, rev = ea == reversedEdgePool(eb);
         const size_t ka = j.patchA * size_t{4} + static_cast<size_t>(j.edgeA);
         const size_t kb = j.patchB * size_t{4} + static_cast<size_t>(j.edgeB);
         if (!same && !rev) continue;  // not a shared boundary: nothing to weld
@@ -292,8 +290,8 @@ void tessellateWindows(const Document& doc, const std::vector<PatchInstance>& wi
                 boundaryByPool.corners.try_emplace(pool[0], onEdge(0));
                 boundaryByPool.corners.try_emplace(pool[3], onEdge(L));
                 const size_t ke = w * 4 + static_cast<size_t>(e);
-                if (collapsed[ke] || reversed4(pool) == pool || L < 2) continue;
-                auto [it, inserted] = boundaryByPool.edges.try_emplace(flip[ke] ? reversed4(pool) : pool, size_t(L - 1), kNone);
+                if (collapsed[ke] || reversedEdgePool(pool) == pool || L < 2) continue;
+                auto [it, inserted] = boundaryByPool.edges.try_emplace(flip[ke] ? reversedEdgePool(pool) : pool, size_t(L - 1), kNone);
                 for (int k = 1; k < L; ++k) {
                     uint32_t& slot = it->second[size_t((flip[ke] ? L - k : k) - 1)];
                     if (slot == kNone) slot = onEdge(k);

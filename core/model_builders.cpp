@@ -1,6 +1,6 @@
 // Procedural documents for tests and benchmarks: a grid of bicubic Bézier patches on one shared
 // control lattice, joined across every interior edge.
-#include "model_builders.hpp"
+#include "core/model_builders.hpp"
 
 #include <array>
 #include <cmath>

@@ -1,7 +1,7 @@
 // Procedural documents for tests and benchmarks.
 #pragma once
 
-#include "document.hpp"
+#include "core/document.hpp"
 
 namespace pw {
 

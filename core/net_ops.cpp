@@ -1,4 +1,4 @@
-#include "net_ops.hpp"
+#include "core/net_ops.hpp"
 
 #include <algorithm>
 #include <array>
@@ -7,8 +7,8 @@
 #include <map>
 #include <numbers>
 
-#include "basis.hpp"
-#include "limits.hpp"
+#include "core/basis.hpp"
+#include "core/limits.hpp"
 
 namespace pw {
 

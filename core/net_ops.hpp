@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "document.hpp"
-#include "patch_ops.hpp"
+#include "core/document.hpp"
+#include "core/patch_ops.hpp"
 
 namespace pw {
 

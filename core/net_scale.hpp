@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <glm/common.hpp>
 
-#include "math_types.hpp"
+#include "core/math_types.hpp"
 
 namespace pw {
 

@@ -1,8 +1,8 @@
-#include "orientation.hpp"
+#include "core/orientation.hpp"
 
 
-#include "patch_eval.hpp"
-#include "patch_ops.hpp"
+#include "core/patch_eval.hpp"
+#include "core/patch_ops.hpp"
 
 namespace pw {
 

@@ -3,7 +3,7 @@
 // positive when the normals point out, negative when every patch is turned inside out.
 #pragma once
 
-#include "document.hpp"
+#include "core/document.hpp"
 
 namespace pw {
 

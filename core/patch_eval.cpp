@@ -1,10 +1,10 @@
-#include "patch_eval.hpp"
+#include "core/patch_eval.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "document.hpp"
-#include "net_scale.hpp"
+#include "core/document.hpp"
+#include "core/net_scale.hpp"
 
 namespace pw {
 
@@ -146,8 +146,7 @@ std::pair<Net16, Net16> splitBezierV(const Net16& net, double v) {
 }
 
 Vec3 evaluateSharedBezierEdge(const std::array<Vec3, 4>& pts, const std::array<uint32_t, 4>& poolIdx, int k, int n) {
-    const std::array<uint32_t, 4> rev{poolIdx[3], poolIdx[2], poolIdx[1], poolIdx[0]};
-    const bool flip = rev < poolIdx;
+    const bool flip = edgeReversed(poolIdx);
     const int kk = flip ? n - k : k;
     const double t = static_cast<double>(kk) / n, s = static_cast<double>(n - kk) / n;
     const BasisWeights w = bernsteinWeights(t, s);

@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "basis.hpp"
-#include "math_types.hpp"
+#include "core/basis.hpp"
+#include "core/math_types.hpp"
 
 namespace pw {
 

@@ -1,11 +1,11 @@
-#include "patch_ops.hpp"
+#include "core/patch_ops.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "constraint_solver.hpp"
-#include "bezier_triangle.hpp"
-#include "patch_eval.hpp"
+#include "core/constraint_solver.hpp"
+#include "core/bezier_triangle.hpp"
+#include "core/patch_eval.hpp"
 
 namespace pw {
 

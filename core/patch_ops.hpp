@@ -10,7 +10,7 @@
 #include <string>
 #include <utility>
 
-#include "document.hpp"
+#include "core/document.hpp"
 
 namespace pw {
 

@@ -1,6 +1,6 @@
 // The native .patchwork JSON format (docs/FILE_FORMAT.md): writing with round-trip exact numbers
 // and reading with full validation; every error names the source and the JSON field path.
-#include "patchwork_format.hpp"
+#include "core/patchwork_format.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "errors.hpp"
-#include "limits.hpp"
+#include "core/errors.hpp"
+#include "core/limits.hpp"
 
 namespace pw {
 

@@ -1,4 +1,4 @@
-#include "picking.hpp"
+#include "core/picking.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,8 +7,8 @@
 #include <glm/mat4x4.hpp>
 #include <glm/matrix.hpp>
 
-#include "bezier_triangle.hpp"
-#include "patch_eval.hpp"
+#include "core/bezier_triangle.hpp"
+#include "core/patch_eval.hpp"
 
 namespace pw {
 

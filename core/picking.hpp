@@ -9,8 +9,8 @@
 
 #include <glm/vec2.hpp>
 
-#include "camera_math.hpp"
-#include "document.hpp"
+#include "core/camera_math.hpp"
+#include "core/document.hpp"
 
 namespace pw {
 

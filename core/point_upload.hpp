@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "math_types.hpp"
+#include "core/math_types.hpp"
 
 namespace pw {
 

@@ -1,9 +1,9 @@
-#include "selection.hpp"
+#include "core/selection.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "camera_math.hpp"
+#include "core/camera_math.hpp"
 
 namespace pw {
 

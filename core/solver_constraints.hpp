@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "document.hpp"
+#include "core/document.hpp"
 
 namespace pw::solver_detail {
 

@@ -1,7 +1,9 @@
-#include "tess_domain.hpp"
+#include "core/tess_domain.hpp"
 
 #include <algorithm>
 #include <cmath>
+
+#include "core/patch_math.h"
 
 namespace pw {
 
@@ -22,13 +24,7 @@ std::optional<DomainKind> parseDomain(std::string_view name) {
 }
 
 float controlShaderLevel(float level, Spacing s) {
-    if (s != Spacing::Pow2) return level;
-    // As shaders/common.glsl's roundLevel: integer level in [1, 64], then the next power of two.
-    if (!(level == level)) level = 1.0f;
-    const float c = std::clamp(std::ceil(level), 1.0f, 64.0f);
-    float p = 1.0f;
-    while (p < c) p *= 2.0f;
-    return p;
+    return s == Spacing::Pow2 ? gpu::roundLevel(level, gpu::kSpacingPow2) : level;
 }
 
 Spacing tessellatorSpacing(Spacing s) { return s == Spacing::Pow2 ? Spacing::Equal : s; }

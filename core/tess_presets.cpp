@@ -1,4 +1,4 @@
-#include "tess_presets.hpp"
+#include "core/tess_presets.hpp"
 
 #include <algorithm>
 #include <cstdio>

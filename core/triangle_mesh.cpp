@@ -1,8 +1,8 @@
-#include "triangle_mesh.hpp"
+#include "core/triangle_mesh.hpp"
 
 #include <map>
 
-#include "bezier_triangle.hpp"
+#include "core/bezier_triangle.hpp"
 
 namespace pw {
 
@@ -16,8 +16,6 @@ constexpr double kSmoothCos = 0.985;
 
 // Corner slots at the grid corners: (0,0) is w = 1, (n,0) is u = 1, (0,n) is v = 1.
 constexpr int kCornerW = 9, kCornerU = 0, kCornerV = 6;
-
-std::array<uint32_t, 4> reversed4(const std::array<uint32_t, 4>& a) { return {a[3], a[2], a[1], a[0]}; }
 
 }  // namespace
 
@@ -81,8 +79,8 @@ void appendBezierTriangles(const Document& doc, int level, TriangleMesh& mesh, c
         std::array<bool, 3> flip{}, collapsed{}, weldable{};
         for (int e = 0; e < 3; ++e) {
             const auto pool = triEdgePool(tri.idx, e);
-            const auto rev = reversed4(pool);
-            flip[e] = rev < pool;
+            const auto rev = reversedEdgePool(pool);
+            flip[e] = edgeReversed(pool);
             key[e] = flip[e] ? rev : pool;
             const Vec3& p0 = doc.points[pool[0]];
             collapsed[e] = p0 == doc.points[pool[1]] && p0 == doc.points[pool[2]] && p0 == doc.points[pool[3]];

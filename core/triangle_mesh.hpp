@@ -10,7 +10,7 @@
 #include <map>
 #include <vector>
 
-#include "mesh_tessellate.hpp"
+#include "core/mesh_tessellate.hpp"
 
 namespace pw {
 

@@ -4,8 +4,8 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "bpt_format.hpp"
-#include "errors.hpp"
+#include "core/bpt_format.hpp"
+#include "core/errors.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const std::string_view text(reinterpret_cast<const char*>(data), size);

@@ -1,11 +1,11 @@
-#include "adaptive_bounds.hpp"
+#include "render/adaptive_bounds.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 
-#include "tess_levels.hpp"
+#include "render/tess_levels.hpp"
 
 namespace pw::render {
 

@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "camera_math.hpp"
-#include "document.hpp"
-#include "surface_scene.hpp"
+#include "core/camera_math.hpp"
+#include "core/document.hpp"
+#include "render/surface_scene.hpp"
 
 namespace pw::render {
 

@@ -1,4 +1,4 @@
-#include "buffers.hpp"
+#include "render/buffers.hpp"
 
 namespace pw::render {
 

@@ -7,7 +7,7 @@
 #include <cstring>
 #include <vector>
 
-#include "device.hpp"
+#include "render/device.hpp"
 
 namespace pw::render {
 

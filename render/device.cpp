@@ -1,4 +1,4 @@
-#include "device.hpp"
+#include "render/device.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -6,10 +6,10 @@
 #include <cstring>
 #include <iostream>
 
-#include "tess_levels.hpp"
+#include "render/tess_levels.hpp"
 #include <sstream>
 
-#include "errors.hpp"
+#include "core/errors.hpp"
 
 namespace pw::render {
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "vk_check.hpp"
+#include "render/vk_check.hpp"
 
 namespace pw::render {
 

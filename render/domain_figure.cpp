@@ -1,9 +1,9 @@
-#include "domain_figure.hpp"
+#include "render/domain_figure.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "domain_labels.hpp"
+#include "render/domain_labels.hpp"
 
 namespace pw::render {
 

@@ -7,10 +7,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "domain_view.hpp"
-#include "label_raster.hpp"
-#include "offscreen_target.hpp"
-#include "pane_layout.hpp"
+#include "render/domain_view.hpp"
+#include "render/label_raster.hpp"
+#include "render/offscreen_target.hpp"
+#include "render/pane_layout.hpp"
 
 namespace pw::render {
 

@@ -1,4 +1,4 @@
-#include "domain_labels.hpp"
+#include "render/domain_labels.hpp"
 
 #include <cmath>
 #include <cstdio>

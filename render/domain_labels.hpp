@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "domain_view.hpp"
+#include "render/domain_view.hpp"
 
 namespace pw::render {
 

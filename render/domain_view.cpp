@@ -1,23 +1,15 @@
-#include "domain_view.hpp"
+#include "render/domain_view.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "offscreen_target.hpp"
-#include "pipeline_builder.hpp"
-#include "shader_variants.hpp"
-#include "spirv.hpp"
+#include "render/domain_interface.h"
+#include "render/offscreen_target.hpp"
+#include "render/pipeline_builder.hpp"
+#include "render/shader_variants.hpp"
+#include "shaders/spirv.hpp"
 
 namespace pw::render {
-
-// Mirrors DomainPush in shaders/domain_common.glsl.
-struct DomainView::Push {
-    std::array<float, 4> outer;
-    std::array<float, 4> inner;
-    std::array<float, 4> transform;
-    std::array<float, 4> color;
-    std::array<float, 4> point;
-};
 
 namespace {
 
@@ -63,7 +55,7 @@ DomainPlacement placeDomain(const DomainViewOptions& o) {
 
 DomainView::DomainView(Device& dev, VkFormat color, VkFormat depth, VkSampleCountFlagBits samples)
     : dev_(dev), color_(color), depth_(depth), samples_(samples) {
-    VkPushConstantRange pr{VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(Push)};
+    VkPushConstantRange pr{VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(gpu::DomainPush)};
     VkPipelineLayoutCreateInfo pl{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     pl.pushConstantRangeCount = 1;
     pl.pPushConstantRanges = &pr;
@@ -124,11 +116,11 @@ void DomainView::recordPass(VkCommandBuffer cmd, const DomainViewOptions& o, int
     if (!p) return;
     // Domain (x, y) -> pixels (originX + x size, originY - y size) -> clip ([-1, 1], y down).
     const float sx = 2.0f / float(extent.width), sy = 2.0f / float(extent.height);
-    Push push{};
-    for (int e = 0; e < 4; ++e) push.outer[size_t(e)] = o.levels.outer[size_t(e)];
+    gpu::DomainPush push{};
+    for (int e = 0; e < 4; ++e) push.outer[e] = o.levels.outer[size_t(e)];
     push.inner = {o.levels.inner[0], o.levels.inner[1], o.spacing == Spacing::Pow2 ? 1.0f : 0.0f, 0.0f};
     push.transform = {at.size * sx, -at.size * sy, at.originX * sx - 1.0f, at.originY * sy - 1.0f};
-    push.color = color;
+    push.color = {color[0], color[1], color[2], color[3]};
     push.point = {o.pointSize, 0, 0, 0};
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p);
     vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof push, &push);

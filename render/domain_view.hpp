@@ -9,9 +9,9 @@
 #include <array>
 #include <vector>
 
-#include "device.hpp"
-#include "render_target.hpp"
-#include "tess_domain.hpp"
+#include "render/device.hpp"
+#include "render/render_target.hpp"
+#include "core/tess_domain.hpp"
 
 namespace pw::render {
 
@@ -65,7 +65,6 @@ public:
     bool pointsSupported() const { return pointsSupported_; }
 
 private:
-    struct Push;
     VkPipeline pipeline(DomainKind kind, Spacing spacing, int pass) const;  // pass 0 fill, 1 lines, 2 points
     void recordPass(VkCommandBuffer cmd, const DomainViewOptions& o, int pass, const DomainPlacement& at,
                     const std::array<float, 4>& color, VkExtent2D extent) const;

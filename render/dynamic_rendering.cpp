@@ -1,6 +1,6 @@
-#include "dynamic_rendering.hpp"
+#include "render/dynamic_rendering.hpp"
 
-#include "buffers.hpp"
+#include "render/buffers.hpp"
 
 namespace pw::render {
 

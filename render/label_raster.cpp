@@ -1,4 +1,4 @@
-#include "label_raster.hpp"
+#include "render/label_raster.hpp"
 
 #include <stb_truetype.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "embedded_data.hpp"
+#include "core/embedded_data.hpp"
 
 namespace pw::render {
 

@@ -1,8 +1,8 @@
-#include "model_figure.hpp"
+#include "render/model_figure.hpp"
 
 #include <algorithm>
 
-#include "domain_labels.hpp"
+#include "render/domain_labels.hpp"
 
 namespace pw::render {
 

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "label_raster.hpp"
-#include "offscreen_target.hpp"
-#include "pane_layout.hpp"
-#include "renderer.hpp"
+#include "render/label_raster.hpp"
+#include "render/offscreen_target.hpp"
+#include "render/pane_layout.hpp"
+#include "render/renderer.hpp"
 
 namespace pw::render {
 

@@ -1,6 +1,6 @@
-#include "offscreen_target.hpp"
+#include "render/offscreen_target.hpp"
 
-#include "dynamic_rendering.hpp"
+#include "render/dynamic_rendering.hpp"
 
 namespace pw::render {
 

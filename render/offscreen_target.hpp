@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "buffers.hpp"
-#include "render_target.hpp"
+#include "render/buffers.hpp"
+#include "render/render_target.hpp"
 
 namespace pw::render {
 

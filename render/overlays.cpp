@@ -1,10 +1,10 @@
-#include "overlays.hpp"
+#include "render/overlays.hpp"
 
 #include <algorithm>
 #include <set>
 
-#include "bezier_triangle.hpp"
-#include "patch_eval.hpp"
+#include "core/bezier_triangle.hpp"
+#include "core/patch_eval.hpp"
 
 namespace pw::render {
 

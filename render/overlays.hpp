@@ -7,8 +7,8 @@
 #include <array>
 #include <vector>
 
-#include "buffers.hpp"
-#include "document.hpp"
+#include "render/buffers.hpp"
+#include "core/document.hpp"
 
 namespace pw::render {
 

@@ -1,4 +1,4 @@
-#include "pane_layout.hpp"
+#include "render/pane_layout.hpp"
 
 #include <algorithm>
 #include <cmath>

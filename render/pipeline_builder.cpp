@@ -1,4 +1,4 @@
-#include "pipeline_builder.hpp"
+#include "render/pipeline_builder.hpp"
 
 namespace pw::render {
 

@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
-#include "device.hpp"
-#include "spirv.hpp"
+#include "render/device.hpp"
+#include "shaders/spirv.hpp"
 
 namespace pw::render {
 

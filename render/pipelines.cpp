@@ -1,13 +1,13 @@
-#include "pipelines.hpp"
+#include "render/pipelines.hpp"
 
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
 #include <vector>
 
-#include "gpu_types.hpp"
-#include "pipeline_builder.hpp"
-#include "spirv.hpp"
+#include "render/gpu_interface.h"
+#include "render/pipeline_builder.hpp"
+#include "shaders/spirv.hpp"
 
 namespace pw::render {
 namespace {
@@ -56,7 +56,7 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
     dl.bindingCount = 3;
     dl.pBindings = b;
     VK_CHECK(vkCreateDescriptorSetLayout(d, &dl, nullptr, &set.setLayout));
-    VkPushConstantRange pr{all, 0, sizeof(DrawPush)};
+    VkPushConstantRange pr{all, 0, sizeof(gpu::DrawPush)};
     VkPipelineLayoutCreateInfo pl{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     pl.setLayoutCount = 1;
     pl.pSetLayouts = &set.setLayout;

@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <string>
 
-#include "device.hpp"
+#include "render/device.hpp"
 
 namespace pw::render {
 
@@ -36,7 +36,7 @@ constexpr size_t overlayIndex(int spacing, LevelsVariant l) { return size_t(spac
 
 struct PipelineSet {
     VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;  // 0: frame UBO, 1: patch data, 2: counters
-    VkPipelineLayout layout = VK_NULL_HANDLE;          // + DrawPush push constants
+    VkPipelineLayout layout = VK_NULL_HANDLE;          // + gpu::DrawPush push constants
     // shaded tessellated surface, by surfaceIndex
     std::array<VkPipeline, kSpacingVariants * kLevelsVariants * kVaryingsVariants> surface{};
     // by overlayIndex: the surface as polygonMode LINE + depth bias; point-mode evaluation +

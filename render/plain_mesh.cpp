@@ -1,4 +1,4 @@
-#include "plain_mesh.hpp"
+#include "render/plain_mesh.hpp"
 
 namespace pw::render {
 

@@ -2,8 +2,8 @@
 // with the surface's shading: the reference for tests and the tessellated/plain benchmark ratio.
 #pragma once
 
-#include "buffers.hpp"
-#include "mesh_tessellate.hpp"
+#include "render/buffers.hpp"
+#include "core/mesh_tessellate.hpp"
 
 namespace pw::render {
 

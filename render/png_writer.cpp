@@ -1,11 +1,11 @@
-#include "png_writer.hpp"
+#include "render/png_writer.hpp"
 
 #include <stb/stb_image_write.h>  // Debian's libstb (linked through pkg-config `stb`)
 
 #include <string>
 
-#include "errors.hpp"
-#include "file_io.hpp"
+#include "core/errors.hpp"
+#include "core/file_io.hpp"
 
 namespace pw::render {
 

@@ -1,4 +1,4 @@
-#include "renderer.hpp"
+#include "render/renderer.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,16 +8,16 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
-#include "adaptive_bounds.hpp"
-#include "buffers.hpp"
-#include "camera_math.hpp"
-#include "gpu_types.hpp"
-#include "overlays.hpp"
-#include "plain_mesh.hpp"
-#include "shader_variants.hpp"
-#include "surface_scene.hpp"
-#include "tess_levels.hpp"
-#include "triangle_draws.hpp"
+#include "render/adaptive_bounds.hpp"
+#include "render/buffers.hpp"
+#include "core/camera_math.hpp"
+#include "render/gpu_interface.h"
+#include "render/overlays.hpp"
+#include "render/plain_mesh.hpp"
+#include "render/shader_variants.hpp"
+#include "render/surface_scene.hpp"
+#include "render/tess_levels.hpp"
+#include "render/triangle_draws.hpp"
 
 namespace pw::render {
 
@@ -78,7 +78,7 @@ Renderer::Renderer(Device& dev, RenderTarget& target)
     : dev_(dev), target_(target), impl_(std::make_unique<Impl>()) {
     pipes_ = createPipelines(dev, target.colorFormat(), target.depthFormat(), target.samples());
     Impl& m = *impl_;
-    m.frameUbo = createBuffer(dev, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    m.frameUbo = createBuffer(dev, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     m.counters = createBuffer(dev, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
     std::memset(m.counters.mapped, 0, 16);
     m.scene.patchData = createBuffer(dev, 32, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
@@ -163,7 +163,7 @@ FrameStats Renderer::render(const RenderOptions& opt) {
 
     // Step 1: frame uniforms.
     const ViewMatrices vm = viewMatrices(opt.camera, double(ext.width) / double(ext.height));
-    FrameUniforms fu{};
+    gpu::FrameUniforms fu{};
     fu.viewProj = vm.viewProj;
     fu.view = vm.view;
     fu.eye = glm::vec4(vm.eye, 1.0f);
@@ -190,9 +190,9 @@ FrameStats Renderer::render(const RenderOptions& opt) {
     fu.dist = {ts.distanceNear, ts.distanceFar, float(4.0 / std::max(modelSize_, 1e-9)), 12.0f};
     fu.dist.z = float(std::max(modelSize_, 1e-9) / 4.0);
     fu.modes = {uint32_t(ts.spacing), uint32_t(ts.adaptive),
-                (ts.cullBackfaces ? 1u : 0u) | (ts.cullOffscreen ? 2u : 0u), uint32_t(ds.shading)};
-    fu.sel = {opt.hoveredPoint >= 0 ? uint32_t(opt.hoveredPoint) : kNoPoint,
-              opt.selectedPoint >= 0 ? uint32_t(opt.selectedPoint) : kNoPoint, m.scene.pointCount, 0u};
+                (ts.cullBackfaces ? gpu::kCullBackFaces : 0u) | (ts.cullOffscreen ? gpu::kCullOffscreen : 0u), uint32_t(ds.shading)};
+    fu.sel = {opt.hoveredPoint >= 0 ? uint32_t(opt.hoveredPoint) : gpu::kNoPoint,
+              opt.selectedPoint >= 0 ? uint32_t(opt.selectedPoint) : gpu::kNoPoint, m.scene.pointCount, 0u};
     fu.isoline = {ts.isolineLevels[0], ts.isolineLevels[1], 0.0f, 0.0f};
     std::memcpy(m.frameUbo.mapped, &fu, sizeof(fu));
 
@@ -237,12 +237,12 @@ FrameStats Renderer::render(const RenderOptions& opt) {
     if (ts.adaptive == AdaptiveMode::Distance || ts.adaptive == AdaptiveMode::ScreenSpace)
         levelBounds = adaptiveLevelBounds(m.scene, ts, vm, float(ext.width), float(ext.height), maxLevel);
     const std::vector<uint8_t>* bounds = levelBounds.empty() ? nullptr : &levelBounds;
-    DrawPush push;
+    gpu::DrawPush push;
 
     // Step 3: the surface (statistics cover this pass only).
     if (opt.plainMesh) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.mesh[size_t(varyings)]);
-        push.drawMode = 2;
+        push.drawMode = gpu::kDrawPlainMesh;
         vkCmdPushConstants(cmd, pipes_.layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
         recordPlainMesh(cmd, m.mesh);
         stats.draws = m.mesh.indexCount ? 1 : 0;
@@ -287,8 +287,8 @@ FrameStats Renderer::render(const RenderOptions& opt) {
     }
     if (ds.showWireframe && !opt.plainMesh) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.wire[overlayIndex(variant, levels)]);
-        DrawPush wp;
-        wp.drawMode = 1;
+        gpu::DrawPush wp;
+        wp.drawMode = gpu::kDrawFlatColour;
         wp.color = {0.08f, 0.09f, 0.12f, 1.0f};
         stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, wp, bounds, budget);
         if (m.scene.triangleCount) {
@@ -298,7 +298,7 @@ FrameStats Renderer::render(const RenderOptions& opt) {
     }
     if (ds.showNormals && !opt.plainMesh && pipes_.normals[overlayIndex(variant, levels)]) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.normals[overlayIndex(variant, levels)]);
-        DrawPush np;
+        gpu::DrawPush np;
         np.color = {0.2f, 0.9f, 1.0f, 1.0f};
         stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, np, bounds, budget);
         if (m.scene.triangleCount && pipes_.triNormals[overlayIndex(variant, levels)]) {
@@ -310,7 +310,7 @@ FrameStats Renderer::render(const RenderOptions& opt) {
     // the document's Bézier curves.
     if (ds.showIsocurves && !opt.plainMesh && m.scene.windowCount) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.isocurves[size_t(variant)]);
-        DrawPush ip;
+        gpu::DrawPush ip;
         ip.color = {0.35f, 0.95f, 0.45f, 1.0f};
         // A window draws lines x (segments + 1) <= 64 x 65 evaluation vertices.
         const uint32_t lines = uint32_t(std::ceil(std::clamp(ts.isolineLevels[0], 1.0f, 64.0f)));
@@ -322,7 +322,7 @@ FrameStats Renderer::render(const RenderOptions& opt) {
     }
     if (m.scene.curveCount) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.curves[size_t(variant)]);
-        DrawPush cp;
+        gpu::DrawPush cp;
         cp.color = {0.95f, 0.35f, 0.25f, 1.0f};
         stats.draws += recordCurveDraws(cmd, pipes_.layout, m.scene, cp, budget);
     }
@@ -334,7 +334,7 @@ FrameStats Renderer::render(const RenderOptions& opt) {
         ++stats.draws;
     }
     if (ds.showGrid && m.scene.pointCount) {
-        DrawPush gp;
+        gpu::DrawPush gp;
         gp.color = {0.95f, 0.75f, 0.2f, 1.0f};
         vkCmdBindVertexBuffers(cmd, 0, 1, &m.scene.pool.buffer, &zero);
         if (m.overlays.gridIndexCount) {
@@ -344,7 +344,7 @@ FrameStats Renderer::render(const RenderOptions& opt) {
             vkCmdDrawIndexed(cmd, m.overlays.gridIndexCount, 1, 0, 0, 0);
         }
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.gridPoints);
-        gp.drawMode = 3;
+        gp.drawMode = gpu::kDrawGridPoints;
         gp.color = {0.1f, 0.1f, 0.1f, 1.0f};
         vkCmdPushConstants(cmd, pipes_.layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(gp), &gp);
         vkCmdDraw(cmd, m.scene.pointCount, 1, 0, 0);

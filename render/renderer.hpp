@@ -8,12 +8,12 @@
 #include <optional>
 #include <vector>
 
-#include "device.hpp"
-#include "document.hpp"
-#include "mesh_tessellate.hpp"
-#include "pipelines.hpp"
-#include "render_target.hpp"
-#include "stats.hpp"
+#include "render/device.hpp"
+#include "core/document.hpp"
+#include "core/mesh_tessellate.hpp"
+#include "render/pipelines.hpp"
+#include "render/render_target.hpp"
+#include "render/stats.hpp"
 
 namespace pw::render {
 

@@ -1,12 +1,12 @@
-#include "shader_listing.hpp"
+#include "render/shader_listing.hpp"
 
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <set>
 
-#include "glsl_sources.hpp"
-#include "shader_variants.hpp"
+#include "shaders/glsl_sources.hpp"
+#include "render/shader_variants.hpp"
 
 namespace pw::render {
 namespace {

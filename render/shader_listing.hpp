@@ -10,8 +10,8 @@
 #include <string_view>
 #include <vector>
 
-#include "document.hpp"
-#include "tess_domain.hpp"
+#include "core/document.hpp"
+#include "core/tess_domain.hpp"
 
 namespace pw::render {
 

@@ -2,8 +2,8 @@
 // renderer (which pipeline to bind) and the shader panel (which GLSL to show) both ask.
 #pragma once
 
-#include "document.hpp"
-#include "pipelines.hpp"
+#include "core/document.hpp"
+#include "render/pipelines.hpp"
 
 namespace pw::render {
 

@@ -1,4 +1,4 @@
-#include "stats.hpp"
+#include "render/stats.hpp"
 
 #include <cstdlib>
 #include <nlohmann/json.hpp>

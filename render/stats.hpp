@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <string>
 
-#include "device.hpp"
+#include "render/device.hpp"
 
 namespace pw::render {
 

@@ -1,4 +1,4 @@
-#include "surface_scene.hpp"
+#include "render/surface_scene.hpp"
 
 #include <algorithm>
 
@@ -25,7 +25,7 @@ SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc) {
     const std::vector<PatchInstance> inst = expandPatches(doc);
     std::vector<uint32_t> idx;
     idx.reserve(inst.size() * 16);
-    std::vector<PatchData> pd(inst.size());
+    std::vector<gpu::PatchData> pd(inst.size());
     s.overrideLevel.assign(inst.size(), 0.0f);
     for (size_t w = 0; w < inst.size(); ++w) {
         const PatchInstance& pi = inst[w];
@@ -54,7 +54,7 @@ SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc) {
     triIdx.reserve(doc.triangles.size() * 10);
     for (const TrianglePatch& t : doc.triangles) {
         triIdx.insert(triIdx.end(), t.idx.begin(), t.idx.end());
-        PatchData tp;
+        gpu::PatchData tp;
         if (t.tessOverride) {
             const auto& o = *t.tessOverride;
             tp.outer = {o[0], o[1], o[2], 0.0f};
@@ -91,7 +91,7 @@ void destroySurfaceScene(Device& dev, SurfaceScene& s) {
 }
 
 uint32_t recordSurfaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t perDraw,
-                            DrawPush push, const std::vector<uint8_t>* levels, uint32_t vertexBudget) {
+                            gpu::DrawPush push, const std::vector<uint8_t>* levels, uint32_t vertexBudget) {
     if (s.windowCount == 0) return 0;
     const VkDeviceSize zero = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, &s.pool.buffer, &zero);
@@ -116,7 +116,7 @@ uint32_t recordSurfaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const 
             push.basis = run.matrix;
             push.basisKind = run.basisKind;
             push.patchBase = first;
-            vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(DrawPush), &push);
+            vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(gpu::DrawPush), &push);
             vkCmdDrawIndexed(cmd, 16 * n, 1, 16 * first, 0, 0);
             ++draws;
         }

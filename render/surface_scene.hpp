@@ -6,10 +6,10 @@
 
 #include <vector>
 
-#include "buffers.hpp"
-#include "document.hpp"
-#include "gpu_types.hpp"
-#include "tess_levels.hpp"
+#include "render/buffers.hpp"
+#include "core/document.hpp"
+#include "render/gpu_interface.h"
+#include "render/tess_levels.hpp"
 
 namespace pw::render {
 
@@ -22,7 +22,7 @@ struct BasisRun {
 struct SurfaceScene {
     Buffer pool;       // vec3 float per pool point
     Buffer indices;    // 16 uint32 per window
-    Buffer patchData;  // PatchData per window
+    Buffer patchData;  // gpu::PatchData per window
     uint32_t pointCount = 0;
     uint32_t windowCount = 0;
     float overrideMax = 0.0f;  // largest override level (0 = none)
@@ -31,7 +31,7 @@ struct SurfaceScene {
     std::vector<glm::vec3> cpuPoints;
     std::vector<uint32_t> cpuIndices;         // 16 per window
     std::vector<float> overrideLevel;          // per window: largest override level, 0 = none
-    // Bézier triangles: 10 uint32 pool indices each; their PatchData follows the windows' in
+    // Bézier triangles: 10 uint32 pool indices each; their gpu::PatchData follows the windows' in
     // patchData (triangle t is entry windowCount + t).
     Buffer triIndices;
     uint32_t triangleCount = 0;
@@ -48,7 +48,7 @@ void destroySurfaceScene(Device& dev, SurfaceScene& s);
 // keep windows x (max level + 2)^2 <= vertexBudget. Returns the number of draws. `push` supplies
 // drawMode/colour; basis fields are filled per run.
 uint32_t recordSurfaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t perDraw,
-                            DrawPush push, const std::vector<uint8_t>* levels = nullptr,
+                            gpu::DrawPush push, const std::vector<uint8_t>* levels = nullptr,
                             uint32_t vertexBudget = kCpuDrawVertexBudget);
 
 glm::mat4 basisPushMatrix(Basis basis, double tension);

@@ -1,6 +1,6 @@
-#include "swapchain_target.hpp"
+#include "render/swapchain_target.hpp"
 
-#include "dynamic_rendering.hpp"
+#include "render/dynamic_rendering.hpp"
 
 #include <algorithm>
 #include <cstring>

@@ -18,8 +18,8 @@
 #include <functional>
 #include <vector>
 
-#include "buffers.hpp"
-#include "render_target.hpp"
+#include "render/buffers.hpp"
+#include "render/render_target.hpp"
 
 namespace pw::render {
 

@@ -1,4 +1,4 @@
-#include "tess_levels.hpp"
+#include "render/tess_levels.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-#include "document.hpp"
+#include "core/document.hpp"
 
 namespace pw::render {
 

@@ -3,7 +3,8 @@
 // Levels of the isoline domain (DESIGN §3) for Bézier curves (4 points) and, with -DISOCURVES, for
 // the isocurve overlay of 16-point windows: outer level 0 = lines (the tessellator always rounds it
 // up to an integer), outer level 1 = segments per line (under the document's partitioning; pow2 is
-// equal spacing with the level rounded up to a power of two here). A curve is one line.
+// equal spacing with the level rounded up to a power of two here, core/patch_math.h's roundLevel).
+// A curve is one line.
 #include "common.glsl"
 
 #ifdef ISOCURVES
@@ -15,8 +16,7 @@ layout(vertices = 4) out;
 void main() {
     gl_out[gl_InvocationID].gl_Position = gl_in[gl_InvocationID].gl_Position;
     if (gl_InvocationID == 0) {
-        float segments = clamp(frame.isoline.y, 1.0, 64.0);
-        if (frame.modes.x == 3u) segments = min(exp2(ceil(log2(segments))), 64.0);
+        float segments = roundLevel(max(frame.isoline.y, 1.0), frame.modes.x);
 #ifdef ISOCURVES
         gl_TessLevelOuter[0] = clamp(frame.isoline.x, 1.0, 64.0);
 #else

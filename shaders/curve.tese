@@ -14,8 +14,7 @@ vec3 cp(int s) { return gl_in[s].gl_Position.xyz; }
 
 vec4 weights(float t) {
     float s = 1.0 - t;
-    return draw.basisKind == 0u ? vec4(s * s * s, 3.0 * s * s * t, 3.0 * s * t * t, t * t * t)
-                                : draw.basis * vec4(t * t * t, t * t, t, 1.0);
+    return draw.basisKind == kBasisBezier ? bernstein3(t, s) : draw.basis * vec4(t * t * t, t * t, t, 1.0);
 }
 
 void main() {
@@ -31,8 +30,8 @@ void main() {
     for (int i = 0; i < 4; ++i)
         p += wv[i] * (wu.x * cp(i * 4) + wu.y * cp(i * 4 + 1) + wu.z * cp(i * 4 + 2) + wu.w * cp(i * 4 + 3));
 #else
-    float s = 1.0 - t;
-    vec3 p = s * s * s * cp(0) + 3.0 * s * s * t * cp(1) + 3.0 * s * t * t * cp(2) + t * t * t * cp(3);
+    vec4 w = bernstein3(t, 1.0 - t);
+    vec3 p = w.x * cp(0) + w.y * cp(1) + w.z * cp(2) + w.w * cp(3);
     p = t == 0.0 ? cp(0) : (t == 1.0 ? cp(3) : p);  // exact ends, like core/bezier_curve.cpp
 #endif
     gl_Position = frame.viewProj * vec4(p, 1.0);

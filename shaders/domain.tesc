@@ -7,12 +7,7 @@
 
 layout(vertices = 1) out;
 
-float level(float f) {
-    if (dp.inner.z < 0.5) return f;
-    if (!(f == f)) f = 1.0;
-    float c = clamp(ceil(f), 1.0, 64.0);
-    return clamp(exp2(ceil(log2(c) - 1e-4)), 1.0, 64.0);
-}
+float level(float f) { return dp.inner.z < 0.5 ? f : roundLevel(f, kSpacingPow2); }
 
 void main() {
     gl_out[gl_InvocationID].gl_Position = gl_in[gl_InvocationID].gl_Position;

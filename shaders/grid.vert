@@ -9,7 +9,7 @@ void main() {
     uint id = uint(gl_VertexIndex);
     vec4 c = draw.color;
     float size = 5.0;
-    if (draw.drawMode == 3u) {  // points
+    if (draw.drawMode == kDrawGridPoints) {  // points
         if (id == frame.sel.y) { c = vec4(1.0, 0.55, 0.1, 1.0); size = 10.0; }
         else if (id == frame.sel.x) { c = vec4(1.0, 1.0, 0.3, 1.0); size = 9.0; }
     }

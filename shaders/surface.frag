@@ -25,7 +25,7 @@ vec3 diverging(float x) {  // blue (negative) - white - red (positive)
 }
 
 void main() {
-    if (draw.drawMode == 1u) { outColor = draw.color; return; }
+    if (draw.drawMode == kDrawFlatColour) { outColor = draw.color; return; }
     vec3 n = normalize(inNormal);
     vec2 ndc = (gl_FragCoord.xy - frame.viewport.zw) / frame.viewport.xy * 2.0 - 1.0;
     vec3 v = -normalize(frame.rayZ.xyz + ndc.x * frame.rayX.xyz + ndc.y * frame.rayY.xyz);  // towards the eye
@@ -37,27 +37,27 @@ void main() {
     float light = 0.25 + 0.75 * diff;
     uint mode = frame.modes.w;
     vec3 base;
-    if (mode == 1u) { outColor = vec4(n * 0.5 + 0.5, 1.0); return; }
+    if (mode == kShadingNormal) { outColor = vec4(n * 0.5 + 0.5, 1.0); return; }
 #ifdef FULL_VARYINGS
-    else if (mode == 2u) base = hashColor(inPatch);
-    else if (mode == 3u) {
+    else if (mode == kShadingPatchId) base = hashColor(inPatch);
+    else if (mode == kShadingUvChecker) {
         ivec2 c = ivec2(floor(clamp(inUV, 0.0, 0.9999) * 8.0));
         base = ((c.x + c.y) & 1) == 0 ? vec3(0.92) : vec3(0.25, 0.3, 0.4);
         base = mix(base, vec3(inUV, 0.4), 0.25);
     }
 #endif
-    else if (mode == 4u) {
+    else if (mode == kShadingZebra) {
         vec3 r = reflect(-v, nf);
         float stripe = fract(frame.dist.w * (r.z * 0.5 + 0.5));
         outColor = vec4(vec3(stripe < 0.5 ? 0.05 : 0.95), 1.0);
         return;
     }
 #ifdef FULL_VARYINGS
-    else if (mode == 5u) base = diverging(inCurv.x * frame.dist.z * frame.dist.z);
-    else if (mode == 6u) base = diverging(inCurv.y * frame.dist.z);
+    else if (mode == kShadingGaussCurvature) base = diverging(inCurv.x * frame.dist.z * frame.dist.z);
+    else if (mode == kShadingMeanCurvature) base = diverging(inCurv.y * frame.dist.z);
 #endif
     else base = vec3(0.72, 0.74, 0.78);
     if (back) base *= vec3(1.0, 0.55, 0.5);  // back faces tinted
-    vec3 c = base * light + (mode == 0u ? vec3(0.35) * spec : vec3(0.0));
+    vec3 c = base * light + (mode == kShadingLit ? vec3(0.35) * spec : vec3(0.0));
     outColor = vec4(clamp(c, 0.0, 1.0), 1.0);
 }

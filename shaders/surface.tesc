@@ -7,38 +7,24 @@
 // levels and per-patch overrides only. lavapipe runs every branch whether taken or not, so the
 // adaptive and culling code would otherwise cost ~25 ms a frame on 1 024 patches when switched off.
 #include "common.glsl"
-#include "tess_levels.glsl"
 
 layout(vertices = 16) out;
 layout(location = 0) in int inIdx[];
+#include "tess_levels.glsl"
 layout(location = 1) patch out float netScalePatch;  // largest extent of the net, for the evaluation shader
 // Bit e set: boundary e (quad-domain order u0, v0, u1, v1) runs from the higher pool index to the
 // lower, so the evaluation shader evaluates it reversed (canonical direction, bit-identical seams).
 layout(location = 2) patch out uint edgeFlipPatch;
 
 // Net slot of the k-th point of the row/column that represents edge e (quad-domain order u0,v0,u1,v1).
-// Bézier: the boundary row itself; splines (step 1): the row the neighbouring window shares.
-int edgeSlot(int e, int k) {
-    int near = draw.basisKind == 0u ? 0 : 1;
-    int far = 3 - near;
-    if (e == 0) return k * 4 + near;
-    if (e == 1) return near * 4 + k;
-    if (e == 2) return k * 4 + far;
-    return far * 4 + k;
-}
+// Bézier: the boundary row itself; splines: the row the neighbouring window shares (one inside).
+int edgeSlot(int e, int k) { return quadEdgeSlot(e, k, draw.basisKind == kBasisBezier ? 0 : 1); }
 
 vec3 cp(int s) { return gl_in[s].gl_Position.xyz; }
 
-// True when the boundary through net slots a, b, c, d is reversed against its canonical direction:
-// the pool indices read backwards are lexicographically smaller (as core/patch_eval.cpp decides).
-bool reversedEdge(int a, int b, int c, int d) {
-    if (inIdx[a] != inIdx[d]) return inIdx[a] > inIdx[d];
-    return inIdx[b] > inIdx[c];
-}
-
-// The edge's four points in canonical order (lower pool index first).
+// The edge's four points in canonical order.
 void edgePoints(int e, out vec3 p[4]) {
-    bool rev = inIdx[edgeSlot(e, 0)] > inIdx[edgeSlot(e, 3)];
+    bool rev = reversedEdge(edgeSlot(e, 0), edgeSlot(e, 1), edgeSlot(e, 2), edgeSlot(e, 3));
     for (int k = 0; k < 4; ++k) p[k] = cp(edgeSlot(e, rev ? 3 - k : k));
 }
 
@@ -67,7 +53,7 @@ bool offscreen() {
 // v-differences of the net (Bézier and B-spline weights are non-negative). If every such product
 // faces away from the eye at every control point (hence over the convex hull), the patch is back-facing.
 bool backfacing() {
-    if (draw.basisKind == 2u) return false;  // Catmull-Rom weights change sign
+    if (draw.basisKind == kBasisCatmullRom) return false;  // Catmull-Rom weights change sign
     vec3 du[12], dv[12];
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 3; ++j) {
@@ -93,8 +79,11 @@ void main() {
     vec3 lo = cp(0), hi = cp(0);
     for (int i = 1; i < 16; ++i) { lo = min(lo, cp(i)); hi = max(hi, cp(i)); }
     netScalePatch = max(max(hi.x - lo.x, hi.y - lo.y), max(hi.z - lo.z, 1e-20));
-    edgeFlipPatch = (reversedEdge(0, 4, 8, 12) ? 1u : 0u) | (reversedEdge(0, 1, 2, 3) ? 2u : 0u) |
-                    (reversedEdge(3, 7, 11, 15) ? 4u : 0u) | (reversedEdge(12, 13, 14, 15) ? 8u : 0u);
+    uint flip = 0u;  // the Bézier boundary rows (depth 0), whatever the basis
+    for (int e = 0; e < 4; ++e)
+        if (reversedEdge(quadEdgeSlot(e, 0, 0), quadEdgeSlot(e, 1, 0), quadEdgeSlot(e, 2, 0), quadEdgeSlot(e, 3, 0)))
+            flip |= 1u << uint(e);
+    edgeFlipPatch = flip;
 
     PatchData pd = patches[draw.patchBase + uint(gl_PrimitiveID)];
     float o[4];
@@ -104,7 +93,7 @@ void main() {
         in0 = pd.inner.x; in1 = pd.inner.y;
     } else
 #ifdef ADAPTIVE_AND_CULLING
-    if (frame.modes.y == 0u)
+    if (frame.modes.y == kAdaptiveNone)
 #endif
     {
         o[0] = frame.outer.x; o[1] = frame.outer.y; o[2] = frame.outer.z; o[3] = frame.outer.w;
@@ -122,7 +111,8 @@ void main() {
     gl_TessLevelInner[1] = roundLevel(in1);
 
 #ifdef ADAPTIVE_AND_CULLING
-    bool cull = ((frame.modes.z & 2u) != 0u && offscreen()) || ((frame.modes.z & 1u) != 0u && backfacing());
+    bool cull = ((frame.modes.z & kCullOffscreen) != 0u && offscreen()) ||
+                ((frame.modes.z & kCullBackFaces) != 0u && backfacing());
     if (cull) {
         for (int e = 0; e < 4; ++e) gl_TessLevelOuter[e] = 0.0;
         gl_TessLevelInner[0] = 0.0;

@@ -30,15 +30,16 @@ layout(location = 4) out vec2 outCurv;  // Gaussian, mean
 vec3 cp(int s) { return gl_in[s].gl_Position.xyz; }
 
 void weights(float t, out vec4 w, out vec4 dw, out vec4 ddw) {
-    if (draw.basisKind == 0u) {  // Bernstein and its derivative from t and s = 1 - t
+    if (draw.basisKind == kBasisBezier) {  // Bernstein from t and s = 1 - t (core/patch_math.h)
         float s = 1.0 - t;
-        w = vec4(s * s * s, 3.0 * s * s * t, 3.0 * s * t * t, t * t * t);
-        dw = 3.0 * vec4(-s * s, s * (s - 2.0 * t), t * (2.0 * s - t), t * t);
+        w = bernstein3(t, s);
+        dw = bernstein3D1(t, s);
+        ddw = bernstein3D2(t, s);
     } else {
         w = draw.basis * vec4(t * t * t, t * t, t, 1.0);
         dw = draw.basis * vec4(3.0 * t * t, 2.0 * t, 1.0, 0.0);
+        ddw = draw.basis * vec4(6.0 * t, 2.0, 0.0, 0.0);
     }
-    ddw = draw.basis * vec4(6.0 * t, 2.0, 0.0, 0.0);
 }
 
 struct Derivs { vec3 p, du, dv, duu, dvv, duv; };
@@ -79,15 +80,7 @@ vec3 boundaryPoint(int e, float t) {
     vec3 q1 = alongU ? (far ? cp(13) : cp(1)) : (far ? cp(7) : cp(4));
     vec3 q2 = alongU ? (far ? cp(14) : cp(2)) : (far ? cp(11) : cp(8));
     vec3 q3 = alongU ? (far ? cp(15) : cp(3)) : (far ? cp(15) : cp(12));
-    vec3 p0 = rev ? q3 : q0, p1 = rev ? q2 : q1, p2 = rev ? q1 : q2, p3 = rev ? q0 : q3;
-    precise float tc = rev ? 1.0 - t : t;
-    precise float sc = 1.0 - tc;
-    precise float w0 = sc * sc * sc;
-    precise float w1 = 3.0 * sc * sc * tc;
-    precise float w2 = 3.0 * sc * tc * tc;
-    precise float w3 = tc * tc * tc;
-    precise vec3 r = w0 * p0 + w1 * p1 + w2 * p2 + w3 * p3;
-    return r;
+    return canonicalBoundaryPoint(q0, q1, q2, q3, t, rev);
 }
 
 vec3 normalAt(float u, float v, Derivs d) {
@@ -115,14 +108,14 @@ vec3 normalAt(float u, float v, Derivs d) {
 void main() {
     float u = gl_TessCoord.x, v = gl_TessCoord.y;
 #ifdef FULL_VARYINGS
-    bool curvature = frame.modes.w == 5u || frame.modes.w == 6u;
+    bool curvature = frame.modes.w == kShadingGaussCurvature || frame.modes.w == kShadingMeanCurvature;
 #else
     const bool curvature = false;
 #endif
     Derivs d = evalAt(u, v, curvature);
     vec3 p = d.p;
     bool onV = v == 0.0 || v == 1.0, onU = u == 0.0 || u == 1.0;
-    if (draw.basisKind == 0u && (onU || onV)) {
+    if (draw.basisKind == kBasisBezier && (onU || onV)) {
         int e = onV ? (v == 0.0 ? 1 : 3) : (u == 0.0 ? 0 : 2);
         p = boundaryPoint(e, onV ? u : v);
     }

@@ -7,33 +7,20 @@
 // back-face and off-screen culling; DESIGN §3 rounding, pow2 emulated. Built with and without
 // -DADAPTIVE_AND_CULLING like surface.tesc.
 #include "common.glsl"
-#include "tess_levels.glsl"
 
 layout(vertices = 10) out;
 layout(location = 0) in int inIdx[];
+#include "tess_levels.glsl"
 layout(location = 1) patch out float netScalePatch;  // largest extent of the net
 // Bit e set: edge e runs from the higher pool index to the lower (evaluate it reversed).
 layout(location = 2) patch out uint edgeFlipPatch;
 
 vec3 cp(int s) { return gl_in[s].gl_Position.xyz; }
 
-// Slot of the k-th point along edge e: 0 = (6,7,8,9), 1 = (9,5,2,0), 2 = (0,1,3,6).
-int triEdgeSlot(int e, int k) {
-    if (e == 0) return 6 + k;
-    if (e == 1) return k == 0 ? 9 : k == 1 ? 5 : k == 2 ? 2 : 0;
-    return k == 0 ? 0 : k == 1 ? 1 : k == 2 ? 3 : 6;
-}
-
-// Lexicographic comparison of the pool indices read backwards (as core/patch_eval.cpp decides).
-bool reversedEdge(int a, int b, int c, int d) {
-    if (inIdx[a] != inIdx[d]) return inIdx[a] > inIdx[d];
-    return inIdx[b] > inIdx[c];
-}
-
 #ifdef ADAPTIVE_AND_CULLING
 float adaptiveLevel(int e) {
     vec3 p[4];
-    bool rev = inIdx[triEdgeSlot(e, 0)] > inIdx[triEdgeSlot(e, 3)];  // as the quads' edgePoints
+    bool rev = reversedEdge(triEdgeSlot(e, 0), triEdgeSlot(e, 1), triEdgeSlot(e, 2), triEdgeSlot(e, 3));
     for (int k = 0; k < 4; ++k) p[k] = cp(triEdgeSlot(e, rev ? 3 - k : k));
     return adaptiveEdgeLevel(p);
 }
@@ -80,8 +67,10 @@ void main() {
     vec3 lo = cp(0), hi = cp(0);
     for (int i = 1; i < 10; ++i) { lo = min(lo, cp(i)); hi = max(hi, cp(i)); }
     netScalePatch = max(max(hi.x - lo.x, hi.y - lo.y), max(hi.z - lo.z, 1e-20));
-    edgeFlipPatch = (reversedEdge(6, 7, 8, 9) ? 1u : 0u) | (reversedEdge(9, 5, 2, 0) ? 2u : 0u) |
-                    (reversedEdge(0, 1, 3, 6) ? 4u : 0u);
+    uint flip = 0u;
+    for (int e = 0; e < 3; ++e)
+        if (reversedEdge(triEdgeSlot(e, 0), triEdgeSlot(e, 1), triEdgeSlot(e, 2), triEdgeSlot(e, 3))) flip |= 1u << uint(e);
+    edgeFlipPatch = flip;
 
     PatchData pd = patches[draw.patchBase + uint(gl_PrimitiveID)];
     float o[3];
@@ -91,7 +80,7 @@ void main() {
         in0 = pd.inner.x;
     } else
 #ifdef ADAPTIVE_AND_CULLING
-    if (frame.modes.y == 0u)
+    if (frame.modes.y == kAdaptiveNone)
 #endif
     {
         o[0] = frame.outer.x; o[1] = frame.outer.y; o[2] = frame.outer.z;
@@ -109,7 +98,8 @@ void main() {
     gl_TessLevelInner[1] = 0.0;
 
 #ifdef ADAPTIVE_AND_CULLING
-    bool cull = ((frame.modes.z & 2u) != 0u && offscreen()) || ((frame.modes.z & 1u) != 0u && backfacing());
+    bool cull = ((frame.modes.z & kCullOffscreen) != 0u && offscreen()) ||
+                ((frame.modes.z & kCullBackFaces) != 0u && backfacing());
     if (cull) {
         for (int e = 0; e < 3; ++e) gl_TessLevelOuter[e] = 0.0;
         gl_TessLevelInner[0] = 0.0;

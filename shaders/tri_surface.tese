@@ -57,22 +57,14 @@ vec3 position(float u, float v, float w) {
 }
 
 // A boundary point from edge e's four points only, lower pool index first; t runs along the edge
-// in its own direction (edge 0: slots 6→9, 1: 9→0, 2: 0→6). Same arithmetic as surface.tese.
+// in its own direction (edge 0: slots 6→9, 1: 9→0, 2: 0→6). The quads' function (surface.tese).
 vec3 boundaryPoint(int e, float t) {
     bool rev = (edgeFlipPatch & (1u << uint(e))) != 0u;
     vec3 q0 = e == 0 ? cp(6) : (e == 1 ? cp(9) : cp(0));
     vec3 q1 = e == 0 ? cp(7) : (e == 1 ? cp(5) : cp(1));
     vec3 q2 = e == 0 ? cp(8) : (e == 1 ? cp(2) : cp(3));
     vec3 q3 = e == 0 ? cp(9) : (e == 1 ? cp(0) : cp(6));
-    vec3 p0 = rev ? q3 : q0, p1 = rev ? q2 : q1, p2 = rev ? q1 : q2, p3 = rev ? q0 : q3;
-    precise float tc = rev ? 1.0 - t : t;
-    precise float sc = 1.0 - tc;
-    precise float w0 = sc * sc * sc;
-    precise float w1 = 3.0 * sc * sc * tc;
-    precise float w2 = 3.0 * sc * tc * tc;
-    precise float w3 = tc * tc * tc;
-    precise vec3 r = w0 * p0 + w1 * p1 + w2 * p2 + w3 * p3;
-    return r;
+    return canonicalBoundaryPoint(q0, q1, q2, q3, t, rev);
 }
 
 void main() {
@@ -106,7 +98,7 @@ void main() {
     outPatch = draw.patchBase + uint(gl_PrimitiveID);
     // Gaussian and mean curvature from the fundamental forms (curvature shading only).
     vec2 curv = vec2(0.0);
-    if (frame.modes.w == 5u || frame.modes.w == 6u) {
+    if (frame.modes.w == kShadingGaussCurvature || frame.modes.w == kShadingMeanCurvature) {
         vec3 duu, duv, dvv;
         secondDerivs(u, v, w, duu, duv, dvv);
         float E = dot(du, du), F = dot(du, dv), G = dot(dv, dv);

@@ -10,10 +10,10 @@
 #include <memory>
 #include <vector>
 
-#include "camera_math.hpp"
-#include "device.hpp"
-#include "offscreen_target.hpp"
-#include "renderer.hpp"
+#include "core/camera_math.hpp"
+#include "render/device.hpp"
+#include "render/offscreen_target.hpp"
+#include "render/renderer.hpp"
 
 namespace pw::test {
 

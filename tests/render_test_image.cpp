@@ -5,8 +5,8 @@
 
 #include <cstring>
 
-#include "document_io.hpp"
-#include "picking.hpp"
+#include "core/document_io.hpp"
+#include "core/picking.hpp"
 #include "render_support.hpp"
 
 namespace pw::test {

@@ -3,9 +3,9 @@
 // ones alone, and each pane's statistics are its own. Validation layer on.
 #include <algorithm>
 
-#include "document_io.hpp"
-#include "label_raster.hpp"
-#include "model_figure.hpp"
+#include "core/document_io.hpp"
+#include "render/label_raster.hpp"
+#include "render/model_figure.hpp"
 #include "render_support.hpp"
 
 namespace pw::test {

@@ -4,9 +4,9 @@
 
 #include <cstdlib>
 
-#include "mesh_tessellate.hpp"
-#include "model_builders.hpp"
-#include "png_writer.hpp"
+#include "core/mesh_tessellate.hpp"
+#include "core/model_builders.hpp"
+#include "render/png_writer.hpp"
 #include "render_support.hpp"
 
 namespace pw::test {

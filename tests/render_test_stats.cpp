@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "model_builders.hpp"
+#include "core/model_builders.hpp"
 #include "render_support.hpp"
-#include "tess_levels.hpp"
+#include "render/tess_levels.hpp"
 
 namespace pw::test {
 namespace {

@@ -7,10 +7,10 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "domain_figure.hpp"
-#include "domain_labels.hpp"
+#include "render/domain_figure.hpp"
+#include "render/domain_labels.hpp"
 #include "support.hpp"
-#include "tess_presets.hpp"
+#include "core/tess_presets.hpp"
 
 namespace pw::test {
 namespace {

@@ -7,8 +7,8 @@
 #include <cstdlib>
 #include <map>
 
-#include "model_builders.hpp"
-#include "png_writer.hpp"
+#include "core/model_builders.hpp"
+#include "render/png_writer.hpp"
 #include "render_support.hpp"
 
 namespace pw::test {

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "document.hpp"
+#include "core/document.hpp"
 
 namespace pw::test {
 

@@ -14,7 +14,7 @@
 #include <random>
 #include <string>
 
-#include "file_io.hpp"
+#include "core/file_io.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;

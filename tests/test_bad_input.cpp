@@ -10,9 +10,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "bpt_format.hpp"
-#include "document_io.hpp"
-#include "errors.hpp"
+#include "core/bpt_format.hpp"
+#include "core/document_io.hpp"
+#include "core/errors.hpp"
 #include "support.hpp"
 
 using namespace pw;

@@ -7,12 +7,12 @@
 #include <cmath>
 #include <random>
 
-#include "bezier_curve.hpp"
-#include "bpt_format.hpp"
-#include "edit_history.hpp"
-#include "errors.hpp"
-#include "patch_ops.hpp"
-#include "patchwork_format.hpp"
+#include "core/bezier_curve.hpp"
+#include "core/bpt_format.hpp"
+#include "core/edit_history.hpp"
+#include "core/errors.hpp"
+#include "core/patch_ops.hpp"
+#include "core/patchwork_format.hpp"
 #include "support.hpp"
 
 namespace pw {

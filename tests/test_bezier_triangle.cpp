@@ -6,10 +6,10 @@
 #include <cmath>
 #include <random>
 
-#include "basis.hpp"
-#include "bezier_triangle.hpp"
-#include "document.hpp"
-#include "patch_eval.hpp"
+#include "core/basis.hpp"
+#include "core/bezier_triangle.hpp"
+#include "core/document.hpp"
+#include "core/patch_eval.hpp"
 
 using namespace pw;
 

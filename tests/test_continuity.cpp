@@ -4,10 +4,10 @@
 
 #include <cmath>
 
-#include "constraint_solver.hpp"
-#include "continuity_report.hpp"
-#include "document.hpp"
-#include "model_builders.hpp"
+#include "core/constraint_solver.hpp"
+#include "core/continuity_report.hpp"
+#include "core/document.hpp"
+#include "core/model_builders.hpp"
 
 using namespace pw;
 

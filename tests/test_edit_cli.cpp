@@ -4,7 +4,7 @@
 
 #include <fstream>
 
-#include "document_io.hpp"
+#include "core/document_io.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;

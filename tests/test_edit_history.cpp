@@ -5,10 +5,10 @@
 #include <cstring>
 #include <random>
 
-#include "edit_history.hpp"
-#include "model_builders.hpp"
-#include "net_ops.hpp"
-#include "patch_ops.hpp"
+#include "core/edit_history.hpp"
+#include "core/model_builders.hpp"
+#include "core/net_ops.hpp"
+#include "core/patch_ops.hpp"
 
 using namespace pw;
 

@@ -5,13 +5,13 @@
 #include <cmath>
 #include <fstream>
 
-#include "command_table.hpp"
-#include "constraint_solver.hpp"
-#include "document_io.hpp"
-#include "document_merge.hpp"
-#include "errors.hpp"
-#include "model_builders.hpp"
-#include "patch_ops.hpp"
+#include "core/command_table.hpp"
+#include "core/constraint_solver.hpp"
+#include "core/document_io.hpp"
+#include "core/document_merge.hpp"
+#include "core/errors.hpp"
+#include "core/model_builders.hpp"
+#include "core/patch_ops.hpp"
 #include "support.hpp"
 
 using namespace pw;

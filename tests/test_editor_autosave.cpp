@@ -4,9 +4,9 @@
 
 #include <unistd.h>
 
-#include "autosave.hpp"
-#include "document_io.hpp"
-#include "model_builders.hpp"
+#include "core/autosave.hpp"
+#include "core/document_io.hpp"
+#include "core/model_builders.hpp"
 #include "support.hpp"
 
 using namespace pw;

@@ -4,12 +4,12 @@
 
 #include <cmath>
 
-#include "constraint_solver.hpp"
-#include "continuity_report.hpp"
-#include "model_builders.hpp"
-#include "patch_eval.hpp"
-#include "patch_ops.hpp"
-#include "picking.hpp"
+#include "core/constraint_solver.hpp"
+#include "core/continuity_report.hpp"
+#include "core/model_builders.hpp"
+#include "core/patch_eval.hpp"
+#include "core/patch_ops.hpp"
+#include "core/picking.hpp"
 
 using namespace pw;
 

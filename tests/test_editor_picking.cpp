@@ -4,10 +4,10 @@
 
 #include <cmath>
 
-#include "camera_math.hpp"
-#include "model_builders.hpp"
-#include "patch_eval.hpp"
-#include "picking.hpp"
+#include "core/camera_math.hpp"
+#include "core/model_builders.hpp"
+#include "core/patch_eval.hpp"
+#include "core/picking.hpp"
 
 using namespace pw;
 

@@ -3,9 +3,9 @@
 
 #include <cmath>
 
-#include "camera_math.hpp"
-#include "model_builders.hpp"
-#include "selection.hpp"
+#include "core/camera_math.hpp"
+#include "core/model_builders.hpp"
+#include "core/selection.hpp"
 
 using namespace pw;
 

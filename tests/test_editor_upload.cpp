@@ -1,7 +1,7 @@
 // Partial upload of dragged points: only changed pool entries are found and written as float3.
 #include <gtest/gtest.h>
 
-#include "point_upload.hpp"
+#include "core/point_upload.hpp"
 
 using namespace pw;
 

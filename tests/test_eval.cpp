@@ -4,9 +4,9 @@
 
 #include <random>
 
-#include "basis.hpp"
-#include "document.hpp"
-#include "patch_eval.hpp"
+#include "core/basis.hpp"
+#include "core/document.hpp"
+#include "core/patch_eval.hpp"
 
 using namespace pw;
 

@@ -11,13 +11,13 @@
 #include <nlohmann/json.hpp>
 #include <random>
 
-#include "bpt_format.hpp"
-#include "document_io.hpp"
-#include "errors.hpp"
-#include "file_io.hpp"
-#include "join_detect.hpp"
-#include "limits.hpp"
-#include "patchwork_format.hpp"
+#include "core/bpt_format.hpp"
+#include "core/document_io.hpp"
+#include "core/errors.hpp"
+#include "core/file_io.hpp"
+#include "core/join_detect.hpp"
+#include "core/limits.hpp"
+#include "core/patchwork_format.hpp"
 #include "support.hpp"
 
 using namespace pw;

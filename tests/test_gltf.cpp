@@ -16,14 +16,14 @@
 #include <string>
 #include <vector>
 
-#include "bezier_curve.hpp"
-#include "bpt_format.hpp"
-#include "patch_ops.hpp"
-#include "errors.hpp"
-#include "gltf_export.hpp"
-#include "net_ops.hpp"
-#include "gltf_import.hpp"
-#include "model_builders.hpp"
+#include "core/bezier_curve.hpp"
+#include "core/bpt_format.hpp"
+#include "core/patch_ops.hpp"
+#include "core/errors.hpp"
+#include "core/gltf_export.hpp"
+#include "core/net_ops.hpp"
+#include "core/gltf_import.hpp"
+#include "core/model_builders.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;

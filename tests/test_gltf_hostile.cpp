@@ -3,9 +3,9 @@
 
 #include <fstream>
 
-#include "errors.hpp"
-#include "file_io.hpp"
-#include "gltf_import.hpp"
+#include "core/errors.hpp"
+#include "core/file_io.hpp"
+#include "core/gltf_import.hpp"
 #include "support.hpp"
 
 using namespace pw;

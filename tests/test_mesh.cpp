@@ -10,11 +10,11 @@
 #include <utility>
 #include <vector>
 
-#include "bpt_format.hpp"
-#include "document.hpp"
-#include "mesh_tessellate.hpp"
-#include "net_ops.hpp"
-#include "model_builders.hpp"
+#include "core/bpt_format.hpp"
+#include "core/document.hpp"
+#include "core/mesh_tessellate.hpp"
+#include "core/net_ops.hpp"
+#include "core/model_builders.hpp"
 #include "support.hpp"
 
 namespace {

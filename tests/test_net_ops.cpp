@@ -5,10 +5,10 @@
 #include <cmath>
 #include <random>
 
-#include "constraint_solver.hpp"
-#include "net_ops.hpp"
-#include "patch_eval.hpp"
-#include "patchwork_format.hpp"
+#include "core/constraint_solver.hpp"
+#include "core/net_ops.hpp"
+#include "core/patch_eval.hpp"
+#include "core/patchwork_format.hpp"
 
 namespace {
 

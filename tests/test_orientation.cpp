@@ -2,12 +2,12 @@
 // out), and a model turned inside out is turned back with its joins intact.
 #include <gtest/gtest.h>
 
-#include "bpt_format.hpp"
-#include "constraint_solver.hpp"
-#include "continuity_report.hpp"
-#include "orientation.hpp"
-#include "patch_eval.hpp"
-#include "patch_ops.hpp"
+#include "core/bpt_format.hpp"
+#include "core/constraint_solver.hpp"
+#include "core/continuity_report.hpp"
+#include "core/orientation.hpp"
+#include "core/patch_eval.hpp"
+#include "core/patch_ops.hpp"
 #include "support.hpp"
 
 using namespace pw;

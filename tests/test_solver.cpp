@@ -9,13 +9,13 @@
 #include <random>
 #include <set>
 
-#include "bpt_format.hpp"
-#include "constraint_solver.hpp"
-#include "continuity_report.hpp"
-#include "document.hpp"
-#include "embedded_data.hpp"
-#include "join_detect.hpp"
-#include "model_builders.hpp"
+#include "core/bpt_format.hpp"
+#include "core/constraint_solver.hpp"
+#include "core/continuity_report.hpp"
+#include "core/document.hpp"
+#include "core/embedded_data.hpp"
+#include "core/join_detect.hpp"
+#include "core/model_builders.hpp"
 
 using namespace pw;
 

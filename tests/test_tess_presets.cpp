@@ -4,8 +4,8 @@
 
 #include <set>
 
-#include "patch_eval.hpp"
-#include "tess_presets.hpp"
+#include "core/patch_eval.hpp"
+#include "core/tess_presets.hpp"
 
 using namespace pw;
 

@@ -7,16 +7,16 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "document_io.hpp"
-#include "edit_history.hpp"
-#include "errors.hpp"
-#include "join_detect.hpp"
-#include "model_builders.hpp"
-#include "patch_ops.hpp"
-#include "patchwork_format.hpp"
-#include "picking.hpp"
-#include "selection.hpp"
-#include "bezier_triangle.hpp"
+#include "core/document_io.hpp"
+#include "core/edit_history.hpp"
+#include "core/errors.hpp"
+#include "core/join_detect.hpp"
+#include "core/model_builders.hpp"
+#include "core/patch_ops.hpp"
+#include "core/patchwork_format.hpp"
+#include "core/picking.hpp"
+#include "core/selection.hpp"
+#include "core/bezier_triangle.hpp"
 #include "support.hpp"
 
 using namespace pw;

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <map>
 
-#include "bezier_triangle.hpp"
-#include "mesh_tessellate.hpp"
-#include "model_builders.hpp"
+#include "core/bezier_triangle.hpp"
+#include "core/mesh_tessellate.hpp"
+#include "core/model_builders.hpp"
 
 using namespace pw;
 

@@ -1,5 +1,5 @@
 // Editor window, frame loop, files, undo/redo, autosave and the test trace.
-#include "editor.hpp"
+#include "ui/editor.hpp"
 
 #include <GLFW/glfw3.h>
 
@@ -18,20 +18,20 @@
 
 #include <imgui.h>
 
-#include "camera_math.hpp"
-#include "device.hpp"
-#include "document_io.hpp"
-#include "errors.hpp"
-#include "file_io.hpp"
-#include "imgui_layer.hpp"
-#include "join_detect.hpp"
-#include "limits.hpp"
-#include "patch_ops.hpp"
-#include "tess_presets.hpp"
-#include "png_writer.hpp"
-#include "renderer.hpp"
-#include "swapchain_target.hpp"
-#include "x11_present.hpp"
+#include "core/camera_math.hpp"
+#include "render/device.hpp"
+#include "core/document_io.hpp"
+#include "core/errors.hpp"
+#include "core/file_io.hpp"
+#include "ui/imgui_layer.hpp"
+#include "core/join_detect.hpp"
+#include "core/limits.hpp"
+#include "core/patch_ops.hpp"
+#include "core/tess_presets.hpp"
+#include "render/png_writer.hpp"
+#include "render/renderer.hpp"
+#include "render/swapchain_target.hpp"
+#include "ui/x11_present.hpp"
 
 namespace pw::ui {
 

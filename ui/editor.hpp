@@ -14,20 +14,20 @@
 #include <string>
 #include <vector>
 
-#include "autosave.hpp"
-#include "command_table.hpp"
-#include "constraint_solver.hpp"
-#include "continuity_report.hpp"
-#include "document.hpp"
-#include "edit_session.hpp"
-#include "domain_view.hpp"
-#include "edit_history.hpp"
-#include "gltf_export.hpp"
-#include "model_figure.hpp"
-#include "picking.hpp"
-#include "selection.hpp"
-#include "shader_listing.hpp"
-#include "stats.hpp"
+#include "core/autosave.hpp"
+#include "core/command_table.hpp"
+#include "core/constraint_solver.hpp"
+#include "core/continuity_report.hpp"
+#include "core/document.hpp"
+#include "core/edit_session.hpp"
+#include "render/domain_view.hpp"
+#include "core/edit_history.hpp"
+#include "core/gltf_export.hpp"
+#include "render/model_figure.hpp"
+#include "core/picking.hpp"
+#include "core/selection.hpp"
+#include "render/shader_listing.hpp"
+#include "render/stats.hpp"
 
 struct GLFWwindow;
 

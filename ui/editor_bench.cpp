@@ -13,16 +13,16 @@
 
 #include <imgui.h>
 
-#include "camera_math.hpp"
-#include "constraint_solver.hpp"
-#include "device.hpp"
-#include "editor.hpp"
-#include "errors.hpp"
-#include "file_io.hpp"
-#include "offscreen_target.hpp"
-#include "picking.hpp"
-#include "renderer.hpp"
-#include "swapchain_target.hpp"
+#include "core/camera_math.hpp"
+#include "core/constraint_solver.hpp"
+#include "render/device.hpp"
+#include "ui/editor.hpp"
+#include "core/errors.hpp"
+#include "core/file_io.hpp"
+#include "render/offscreen_target.hpp"
+#include "core/picking.hpp"
+#include "render/renderer.hpp"
+#include "render/swapchain_target.hpp"
 
 namespace pw::ui {
 

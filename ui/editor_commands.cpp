@@ -11,10 +11,10 @@
 
 #include <imgui.h>
 
-#include "document_io.hpp"
-#include "editor.hpp"
-#include "imgui_tip.hpp"
-#include "shortcuts.hpp"
+#include "core/document_io.hpp"
+#include "ui/editor.hpp"
+#include "ui/imgui_tip.hpp"
+#include "ui/shortcuts.hpp"
 
 namespace pw::ui {
 

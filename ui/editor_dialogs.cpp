@@ -8,10 +8,10 @@
 
 #include <imgui.h>
 
-#include "document_io.hpp"
-#include "editor.hpp"
-#include "imgui_tip.hpp"
-#include "limits.hpp"
+#include "core/document_io.hpp"
+#include "ui/editor.hpp"
+#include "ui/imgui_tip.hpp"
+#include "core/limits.hpp"
 
 namespace pw::ui {
 

@@ -7,12 +7,12 @@
 #include <cstdio>
 #include <set>
 
-#include "constraint_solver.hpp"
-#include "editor.hpp"
-#include "imgui_tip.hpp"
-#include "limits.hpp"
-#include "net_ops.hpp"
-#include "selection.hpp"
+#include "core/constraint_solver.hpp"
+#include "ui/editor.hpp"
+#include "ui/imgui_tip.hpp"
+#include "core/limits.hpp"
+#include "core/net_ops.hpp"
+#include "core/selection.hpp"
 
 namespace pw::ui {
 

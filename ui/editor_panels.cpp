@@ -9,14 +9,14 @@
 
 #include <imgui.h>
 
-#include "camera_math.hpp"
-#include "device.hpp"
-#include "document_io.hpp"
-#include "editor.hpp"
-#include "limits.hpp"
-#include "imgui_tip.hpp"
-#include "patch_ops.hpp"
-#include "renderer.hpp"
+#include "core/camera_math.hpp"
+#include "render/device.hpp"
+#include "core/document_io.hpp"
+#include "ui/editor.hpp"
+#include "core/limits.hpp"
+#include "ui/imgui_tip.hpp"
+#include "core/patch_ops.hpp"
+#include "render/renderer.hpp"
 
 namespace pw::ui {
 

@@ -7,8 +7,8 @@
 #include <cctype>
 #include <string>
 
-#include "editor.hpp"
-#include "imgui_tip.hpp"
+#include "ui/editor.hpp"
+#include "ui/imgui_tip.hpp"
 
 namespace pw::ui {
 

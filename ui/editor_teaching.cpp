@@ -9,13 +9,13 @@
 #include <cfloat>
 #include <cstdio>
 
-#include "domain_figure.hpp"
-#include "domain_labels.hpp"
-#include "editor.hpp"
-#include "imgui_layer.hpp"
-#include "imgui_tip.hpp"
-#include "swapchain_target.hpp"
-#include "tess_presets.hpp"
+#include "render/domain_figure.hpp"
+#include "render/domain_labels.hpp"
+#include "ui/editor.hpp"
+#include "ui/imgui_layer.hpp"
+#include "ui/imgui_tip.hpp"
+#include "render/swapchain_target.hpp"
+#include "core/tess_presets.hpp"
 
 namespace pw::ui {
 

@@ -9,14 +9,14 @@
 
 #include <imgui.h>
 
-#include "camera_math.hpp"
-#include "bezier_triangle.hpp"
-#include "editor.hpp"
-#include "patch_eval.hpp"
-#include "net_ops.hpp"
-#include "patch_ops.hpp"
-#include "point_upload.hpp"
-#include "renderer.hpp"
+#include "core/camera_math.hpp"
+#include "core/bezier_triangle.hpp"
+#include "ui/editor.hpp"
+#include "core/patch_eval.hpp"
+#include "core/net_ops.hpp"
+#include "core/patch_ops.hpp"
+#include "core/point_upload.hpp"
+#include "render/renderer.hpp"
 
 namespace pw::ui {
 

@@ -1,4 +1,4 @@
-#include "imgui_layer.hpp"
+#include "ui/imgui_layer.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,9 +9,9 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_vulkan.h>
 
-#include "device.hpp"
-#include "embedded_data.hpp"
-#include "swapchain_target.hpp"
+#include "render/device.hpp"
+#include "core/embedded_data.hpp"
+#include "render/swapchain_target.hpp"
 
 namespace pw::ui {
 

@@ -1,4 +1,4 @@
-#include "x11_present.hpp"
+#include "ui/x11_present.hpp"
 
 #include <sys/ipc.h>
 #include <sys/shm.h>
