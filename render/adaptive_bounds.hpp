@@ -1,6 +1,6 @@
-// CPU bound of the segments each window gets this frame under adaptive tessellation, mirroring
-// the control shader's per-edge formulas (shaders/surface.tesc), so that draws can be batched by
-// the levels actually produced rather than by the worst case (64 -> one window per draw).
+// CPU bound of the segments each window gets this frame under adaptive tessellation, from the
+// control shader's own per-edge formula (core/patch_math.h's adaptiveEdgeLevel), so that draws can be
+// batched by the levels actually produced rather than by the worst case (64 -> one window per draw).
 #pragma once
 
 #include <cstdint>

@@ -234,7 +234,7 @@ FrameStats Renderer::render(const RenderOptions& opt) {
     const uint32_t budget = dev_.drawVertexBudget();
     const uint32_t perDraw = patchesPerDraw(maxSegments(ts, m.scene.overrideMax, maxLevel), budget);
     std::vector<uint8_t> levelBounds;  // adaptive: batch by this frame's levels, not by the worst case
-    if (ts.adaptive == AdaptiveMode::Distance || ts.adaptive == AdaptiveMode::ScreenSpace)
+    if (ts.adaptive != AdaptiveMode::None)
         levelBounds = adaptiveLevelBounds(m.scene, ts, vm, float(ext.width), float(ext.height), maxLevel);
     const std::vector<uint8_t>* bounds = levelBounds.empty() ? nullptr : &levelBounds;
     gpu::DrawPush push;

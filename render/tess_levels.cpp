@@ -3,30 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/patch_math.h"
+#include "core/tess_domain.hpp"
+
 namespace pw::render {
 
 int roundedSegments(float f, Spacing spacing) {
-    if (!(f == f)) f = 1.0f;
-    switch (spacing) {
-        case Spacing::Equal: return std::clamp(int(std::ceil(f)), 1, 64);
-        case Spacing::FractionalOdd: {
-            int n = int(std::ceil(std::clamp(f, 1.0f, 63.0f)));
-            if (n % 2 == 0) ++n;
-            return std::min(n, 63);
-        }
-        case Spacing::FractionalEven: {
-            int n = int(std::ceil(std::clamp(f, 2.0f, 64.0f)));
-            if (n % 2 == 1) ++n;
-            return std::min(n, 64);
-        }
-        case Spacing::Pow2: {
-            const int c = std::clamp(int(std::ceil(f)), 1, 64);
-            int p = 1;
-            while (p < c) p *= 2;
-            return p;
-        }
-    }
-    return 1;
+    // The control shader's rounding, then the tessellator's (core/patch_math.h, core/tess_domain.hpp).
+    return segmentCount(gpu::roundLevel(f, uint32_t(spacing)), tessellatorSpacing(spacing));
 }
 
 int maxSegments(const TessSettings& tess, float overrideMax, float deviceMax) {
