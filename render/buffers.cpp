@@ -2,8 +2,49 @@
 
 namespace pw::render {
 
-Buffer createBuffer(Device& dev, VkDeviceSize size, VkBufferUsageFlags usage, bool hostVisible) {
+namespace {
+
+// The first memory type with all of `want` (and then as many of `prefer` as possible).
+uint32_t pickMemoryType(const VkPhysicalDeviceMemoryProperties& props, uint32_t typeBits, VkMemoryPropertyFlags want,
+                        VkMemoryPropertyFlags prefer) {
+    int best = -1, bestScore = -1;
+    for (uint32_t i = 0; i < props.memoryTypeCount; ++i) {
+        const VkMemoryPropertyFlags f = props.memoryTypes[i].propertyFlags;
+        if (!(typeBits & (1u << i)) || (f & want) != want) continue;
+        const int score = __builtin_popcount(f & prefer);
+        if (score > bestScore) best = int(i), bestScore = score;
+    }
+    if (best < 0) throw VulkanError("no suitable Vulkan memory type");
+    return uint32_t(best);
+}
+
+// HostWritten buffers up to this size may take device-local host-visible memory (a BAR heap can be
+// as small as 256 MiB; large ones stay in system memory).
+constexpr VkDeviceSize kSmallHostWritten = VkDeviceSize(16) << 20;
+
+}  // namespace
+
+Buffer& Buffer::operator=(Buffer&& o) noexcept {
+    if (this != &o) {
+        reset();
+        buffer = std::exchange(o.buffer, VkBuffer(VK_NULL_HANDLE));
+        memory = std::exchange(o.memory, VkDeviceMemory(VK_NULL_HANDLE));
+        size = std::exchange(o.size, 0);
+        mapped = std::exchange(o.mapped, nullptr);
+        device_ = o.device_;
+    }
+    return *this;
+}
+
+void Buffer::reset() {
+    if (buffer) vkDestroyBuffer(device_, buffer, nullptr);
+    if (memory) vkFreeMemory(device_, memory, nullptr);
+    buffer = VK_NULL_HANDLE, memory = VK_NULL_HANDLE, size = 0, mapped = nullptr;
+}
+
+Buffer createBuffer(Device& dev, VkDeviceSize size, VkBufferUsageFlags usage, MemoryUse use) {
     Buffer b;
+    b.device_ = dev.device();
     b.size = size;
     VkBufferCreateInfo ci{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
     ci.size = size;
@@ -12,26 +53,66 @@ Buffer createBuffer(Device& dev, VkDeviceSize size, VkBufferUsageFlags usage, bo
     VK_CHECK(vkCreateBuffer(dev.device(), &ci, nullptr, &b.buffer));
     VkMemoryRequirements req;
     vkGetBufferMemoryRequirements(dev.device(), b.buffer, &req);
+    VkMemoryPropertyFlags want = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, prefer = 0;
+    if (use == MemoryUse::Static) want = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+    if (use == MemoryUse::HostWritten && size <= kSmallHostWritten) prefer = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+    if (use == MemoryUse::Readback) prefer = VK_MEMORY_PROPERTY_HOST_CACHED_BIT;
     VkMemoryAllocateInfo ai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     ai.allocationSize = req.size;
-    ai.memoryTypeIndex = dev.findMemoryType(req.memoryTypeBits, hostVisible
-        ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
-        : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    ai.memoryTypeIndex = pickMemoryType(dev.memoryProperties(), req.memoryTypeBits, want, prefer);
     VK_CHECK(vkAllocateMemory(dev.device(), &ai, nullptr, &b.memory));
     VK_CHECK(vkBindBufferMemory(dev.device(), b.buffer, b.memory, 0));
+    const bool hostVisible = dev.memoryProperties().memoryTypes[ai.memoryTypeIndex].propertyFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT;
     if (hostVisible) VK_CHECK(vkMapMemory(dev.device(), b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped));
     return b;
 }
 
-void destroyBuffer(Device& dev, Buffer& b) {
-    if (b.buffer) vkDestroyBuffer(dev.device(), b.buffer, nullptr);
-    if (b.memory) vkFreeMemory(dev.device(), b.memory, nullptr);
-    b = Buffer{};
+Buffer uploadStatic(Device& dev, const void* data, VkDeviceSize bytes, VkBufferUsageFlags usage) {
+    const VkDeviceSize size = std::max<VkDeviceSize>(16, bytes);
+    Buffer b = createBuffer(dev, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Static);
+    if (bytes == 0) return b;
+    if (b.mapped) {  // device-local memory the host sees (lavapipe, resizable BAR): no copy needed
+        const VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE, nullptr, b.memory, 0, VK_WHOLE_SIZE};
+        std::memcpy(b.mapped, data, bytes);
+        VK_CHECK(vkFlushMappedMemoryRanges(dev.device(), 1, &range));
+        return b;
+    }
+    Buffer staging = createBuffer(dev, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::HostWritten);
+    std::memcpy(staging.mapped, data, bytes);
+    dev.submitAndWait([&](VkCommandBuffer cmd) {
+        const VkBufferCopy region{0, 0, bytes};
+        vkCmdCopyBuffer(cmd, staging.buffer, b.buffer, 1, &region);
+        VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+        mb.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        mb.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 1, &mb, 0, nullptr, 0, nullptr);
+    });
+    return b;
+}
+
+Image& Image::operator=(Image&& o) noexcept {
+    if (this != &o) {
+        reset();
+        image = std::exchange(o.image, VkImage(VK_NULL_HANDLE));
+        memory = std::exchange(o.memory, VkDeviceMemory(VK_NULL_HANDLE));
+        view = std::exchange(o.view, VkImageView(VK_NULL_HANDLE));
+        format = std::exchange(o.format, VK_FORMAT_UNDEFINED);
+        device_ = o.device_;
+    }
+    return *this;
+}
+
+void Image::reset() {
+    if (view) vkDestroyImageView(device_, view, nullptr);
+    if (image) vkDestroyImage(device_, image, nullptr);
+    if (memory) vkFreeMemory(device_, memory, nullptr);
+    image = VK_NULL_HANDLE, memory = VK_NULL_HANDLE, view = VK_NULL_HANDLE, format = VK_FORMAT_UNDEFINED;
 }
 
 Image createImage(Device& dev, VkExtent2D extent, VkFormat format, VkSampleCountFlagBits samples, VkImageUsageFlags usage,
                   VkImageAspectFlags aspect) {
     Image img;
+    img.device_ = dev.device();
     img.format = format;
     VkImageCreateInfo ci{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
     ci.imageType = VK_IMAGE_TYPE_2D;
@@ -58,13 +139,6 @@ Image createImage(Device& dev, VkExtent2D extent, VkFormat format, VkSampleCount
     vi.subresourceRange = {aspect, 0, 1, 0, 1};
     VK_CHECK(vkCreateImageView(dev.device(), &vi, nullptr, &img.view));
     return img;
-}
-
-void destroyImage(Device& dev, Image& img) {
-    if (img.view) vkDestroyImageView(dev.device(), img.view, nullptr);
-    if (img.image) vkDestroyImage(dev.device(), img.image, nullptr);
-    if (img.memory) vkFreeMemory(dev.device(), img.memory, nullptr);
-    img = Image{};
 }
 
 void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,

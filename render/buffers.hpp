@@ -1,46 +1,88 @@
-// Buffers and images with their own memory (the renderer allocates few, large resources).
+// Buffers and images with their own memory (the renderer allocates few, large resources), owned
+// like render/vk_owned.hpp's handles, each in the memory class its use calls for.
 #pragma once
 
 #include <vulkan/vulkan.h>
 
 #include <cstddef>
+#include <algorithm>
 #include <cstring>
+#include <utility>
 #include <vector>
 
 #include "render/device.hpp"
 
 namespace pw::render {
 
+// What a buffer's memory is for (DESIGN: static data device-local on discrete GPUs).
+enum class MemoryUse {
+    Static,       // written once at upload: device-local, filled through a staging copy unless that
+                  // memory is host-visible too (lavapipe, resizable BAR), then mapped and copied
+    HostWritten,  // the CPU rewrites it (frame uniforms, points being dragged): host-visible and
+                  // coherent, stays mapped; device-local as well where the driver offers it
+    Readback,     // the GPU writes, the CPU reads (pixels, counters): host-visible, cached if offered
+};
+
+// A buffer and its memory, owned: freed when it dies or is reset; move-only. `mapped` is set when
+// the memory is host-visible (always for HostWritten and Readback).
 struct Buffer {
     VkBuffer buffer = VK_NULL_HANDLE;
     VkDeviceMemory memory = VK_NULL_HANDLE;
     VkDeviceSize size = 0;
-    void* mapped = nullptr;  // host-visible buffers stay mapped
+    void* mapped = nullptr;
+
+    Buffer() = default;
+    ~Buffer() { reset(); }
+    Buffer(Buffer&& o) noexcept { *this = std::move(o); }
+    Buffer& operator=(Buffer&& o) noexcept;
+    Buffer(const Buffer&) = delete;
+    Buffer& operator=(const Buffer&) = delete;
+    void reset();
+
+private:
+    friend Buffer createBuffer(Device&, VkDeviceSize, VkBufferUsageFlags, MemoryUse);
+    VkDevice device_ = VK_NULL_HANDLE;
 };
 
-// Host-visible, coherent buffer (lavapipe: all memory is host memory; on GPUs fine for our sizes).
-Buffer createBuffer(Device& dev, VkDeviceSize size, VkBufferUsageFlags usage, bool hostVisible = true);
-void destroyBuffer(Device& dev, Buffer& b);
+Buffer createBuffer(Device& dev, VkDeviceSize size, VkBufferUsageFlags usage, MemoryUse use);
 
-// A host-visible buffer holding `data` (at least 16 bytes so empty scenes stay valid).
+// A Static buffer holding `bytes` bytes from `data` (at least 16 bytes so empty scenes stay valid).
+Buffer uploadStatic(Device& dev, const void* data, VkDeviceSize bytes, VkBufferUsageFlags usage);
 template <class T>
-Buffer uploadBuffer(Device& dev, const std::vector<T>& data, VkBufferUsageFlags usage) {
-    const VkDeviceSize bytes = std::max<VkDeviceSize>(16, sizeof(T) * data.size());
-    Buffer b = createBuffer(dev, bytes, usage, true);
+Buffer uploadStatic(Device& dev, const std::vector<T>& data, VkBufferUsageFlags usage) {
+    return uploadStatic(dev, data.data(), sizeof(T) * data.size(), usage);
+}
+
+// A HostWritten buffer holding `data` (at least 16 bytes).
+template <class T>
+Buffer uploadHostWritten(Device& dev, const std::vector<T>& data, VkBufferUsageFlags usage) {
+    Buffer b = createBuffer(dev, std::max<VkDeviceSize>(16, sizeof(T) * data.size()), usage, MemoryUse::HostWritten);
     if (!data.empty()) std::memcpy(b.mapped, data.data(), sizeof(T) * data.size());
     return b;
 }
 
+// A device-local image with one view, owned like Buffer.
 struct Image {
     VkImage image = VK_NULL_HANDLE;
     VkDeviceMemory memory = VK_NULL_HANDLE;
     VkImageView view = VK_NULL_HANDLE;
     VkFormat format = VK_FORMAT_UNDEFINED;
+
+    Image() = default;
+    ~Image() { reset(); }
+    Image(Image&& o) noexcept { *this = std::move(o); }
+    Image& operator=(Image&& o) noexcept;
+    Image(const Image&) = delete;
+    Image& operator=(const Image&) = delete;
+    void reset();
+
+private:
+    friend Image createImage(Device&, VkExtent2D, VkFormat, VkSampleCountFlagBits, VkImageUsageFlags, VkImageAspectFlags);
+    VkDevice device_ = VK_NULL_HANDLE;
 };
 
 Image createImage(Device& dev, VkExtent2D extent, VkFormat format, VkSampleCountFlagBits samples, VkImageUsageFlags usage,
                   VkImageAspectFlags aspect);
-void destroyImage(Device& dev, Image& img);
 
 // Image layout transition with a full (conservative) barrier.
 // Records the copy of a colour attachment (COLOR_ATTACHMENT_OPTIMAL, left in TRANSFER_SRC_OPTIMAL)

@@ -66,6 +66,7 @@ public:
     bool validationEnabled() const { return messenger_ != VK_NULL_HANDLE; }
 
     uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags flags) const;
+    const VkPhysicalDeviceMemoryProperties& memoryProperties() const { return memProps_; }
 
     // Records with `record` into a one-time command buffer, submits and waits.
     template <class F>

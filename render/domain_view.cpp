@@ -59,11 +59,11 @@ DomainView::DomainView(Device& dev, VkFormat color, VkFormat depth, VkSampleCoun
     VkPipelineLayoutCreateInfo pl{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     pl.pushConstantRangeCount = 1;
     pl.pPushConstantRanges = &pr;
-    VK_CHECK(vkCreatePipelineLayout(dev.device(), &pl, nullptr, &layout_));
+    VK_CHECK(vkCreatePipelineLayout(dev.device(), &pl, nullptr, layout_.replace(dev.device())));
 
     pointsSupported_ = dev.caps().tessGeomPointSize;
-    std::vector<VkShaderModule> modules;
-    auto mod = [&](const spirv::Blob& b) { return modules.emplace_back(makeModule(dev, b)); };
+    std::vector<OwnedShaderModule> modules;  // destroyed once the pipelines exist
+    auto mod = [&](const spirv::Blob& b) { return modules.emplace_back(dev.device(), makeModule(dev, b)).get(); };
     const VkShaderModule vert = mod(spirv::domain_vert), tesc = mod(spirv::domain_tesc), frag = mod(spirv::line_frag);
     const spirv::Blob* tese[3][3][2] = {
         {{&spirv::domain_tese_quad_equal, &spirv::domain_tese_quad_equal_points},
@@ -84,30 +84,23 @@ DomainView::DomainView(Device& dev, VkFormat color, VkFormat depth, VkSampleCoun
             pd.depthTest = pd.depthWrite = false;
             pd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc},
                          {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(*tese[d][s][0])}, {VK_SHADER_STAGE_FRAGMENT_BIT, frag}};
-            pipes_[size_t(d)][size_t(s)][0] = buildPipeline(dev, layout_, VK_NULL_HANDLE, pd, color, depth, samples);
+            pipes_[size_t(d)][size_t(s)][0] = OwnedPipeline(dev.device(), buildPipeline(dev, layout_, VK_NULL_HANDLE, pd, color, depth, samples));
             if (d != int(DomainKind::Isoline)) {  // isolines are lines already
                 pd.polygon = VK_POLYGON_MODE_LINE;
-                pipes_[size_t(d)][size_t(s)][1] = buildPipeline(dev, layout_, VK_NULL_HANDLE, pd, color, depth, samples);
+                pipes_[size_t(d)][size_t(s)][1] = OwnedPipeline(dev.device(), buildPipeline(dev, layout_, VK_NULL_HANDLE, pd, color, depth, samples));
             }
             if (pointsSupported_) {
                 pd.polygon = VK_POLYGON_MODE_FILL;
                 pd.stages[2].second = mod(*tese[d][s][1]);
-                pipes_[size_t(d)][size_t(s)][2] = buildPipeline(dev, layout_, VK_NULL_HANDLE, pd, color, depth, samples);
+                pipes_[size_t(d)][size_t(s)][2] = OwnedPipeline(dev.device(), buildPipeline(dev, layout_, VK_NULL_HANDLE, pd, color, depth, samples));
             }
         }
-    for (VkShaderModule m : modules) vkDestroyShaderModule(dev.device(), m, nullptr);
 }
 
-DomainView::~DomainView() {
-    for (auto& byDomain : pipes_)
-        for (auto& bySpacing : byDomain)
-            for (VkPipeline p : bySpacing)
-                if (p) vkDestroyPipeline(dev_.device(), p, nullptr);
-    vkDestroyPipelineLayout(dev_.device(), layout_, nullptr);
-}
+DomainView::~DomainView() = default;
 
 VkPipeline DomainView::pipeline(DomainKind kind, Spacing spacing, int pass) const {
-    return pipes_[size_t(kind)][size_t(spacingVariant(spacing))][size_t(pass)];
+    return pipes_[size_t(kind)][size_t(spacingVariant(spacing))][size_t(pass)].get();
 }
 
 void DomainView::recordPass(VkCommandBuffer cmd, const DomainViewOptions& o, int pass, const DomainPlacement& at,
@@ -135,7 +128,7 @@ std::vector<DomainStats> DomainView::draw(RenderTarget& target, const std::vecto
     const VkExtent2D ext = target.extent();
     const uint32_t n = uint32_t(panes.size());
     if (n == 0) return {};
-    VkQueryPool pool = makeStatsPool(dev_, n);
+    const OwnedQueryPool pool(dev_.device(), makeStatsPool(dev_, n));
     // Viewport the whole target; scissor the pane's rectangle, so nothing lands outside it.
     const auto viewportAndScissor = [&](VkCommandBuffer cmd, const DomainViewOptions& o) {
         const VkViewport vp{0, 0, float(ext.width), float(ext.height), 0, 1};
@@ -178,7 +171,6 @@ std::vector<DomainStats> DomainView::draw(RenderTarget& target, const std::vecto
         target.endRendering(cmd);
     });
     std::vector<DomainStats> s = readStats(dev_, pool, n);
-    if (pool) vkDestroyQueryPool(dev_.device(), pool, nullptr);
     return s;
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "render/device.hpp"
+#include "render/vk_owned.hpp"
 #include "render/render_target.hpp"
 #include "core/tess_domain.hpp"
 
@@ -70,9 +71,9 @@ private:
                     const std::array<float, 4>& color, VkExtent2D extent) const;
 
     Device& dev_;
-    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    OwnedPipelineLayout layout_;
     // [domain][spacing][pass]
-    std::array<std::array<std::array<VkPipeline, 3>, 3>, 3> pipes_{};
+    std::array<std::array<std::array<OwnedPipeline, 3>, 3>, 3> pipes_;
     VkFormat color_, depth_;
     VkSampleCountFlagBits samples_;
     bool pointsSupported_ = false;

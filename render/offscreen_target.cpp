@@ -15,15 +15,11 @@ OffscreenTarget::OffscreenTarget(Device& dev, uint32_t width, uint32_t height, b
                                VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
     depth_ = createImage(dev, extent_, depthFormat(), samples_, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
                          VK_IMAGE_ASPECT_DEPTH_BIT);
-    readbackBuf_ = createBuffer(dev, VkDeviceSize(width) * height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+    readbackBuf_ = createBuffer(dev, VkDeviceSize(width) * height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
 }
 
 OffscreenTarget::~OffscreenTarget() {
-    vkDeviceWaitIdle(dev_.device());
-    destroyImage(dev_, color_);
-    destroyImage(dev_, resolve_);
-    destroyImage(dev_, depth_);
-    destroyBuffer(dev_, readbackBuf_);
+    vkDeviceWaitIdle(dev_.device());  // then the images and the buffer free themselves
 }
 
 void OffscreenTarget::beginRendering(VkCommandBuffer cmd, const std::array<float, 4>& clear) { begin(cmd, false, clear); }

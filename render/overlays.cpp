@@ -74,7 +74,7 @@ OverlayScene uploadOverlayScene(Device& dev, const Document& doc) {
     OverlayScene s;
     const std::vector<uint32_t> lines = controlGridLines(doc);
     s.gridIndexCount = uint32_t(lines.size());
-    s.gridIndices = uploadBuffer(dev, lines, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    s.gridIndices = uploadStatic(dev, lines, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
 
     // Boundary curves: 16 segments per window edge.
     std::vector<float> verts;
@@ -114,14 +114,8 @@ OverlayScene uploadOverlayScene(Device& dev, const Document& doc) {
         }
     }
     s.boundaryVertexCount = uint32_t(verts.size() / 7);
-    s.boundaryVerts = uploadBuffer(dev, verts, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    s.boundaryVerts = uploadStatic(dev, verts, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
     return s;
-}
-
-void destroyOverlayScene(Device& dev, OverlayScene& s) {
-    destroyBuffer(dev, s.gridIndices);
-    destroyBuffer(dev, s.boundaryVerts);
-    s = OverlayScene{};
 }
 
 }  // namespace pw::render

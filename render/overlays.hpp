@@ -30,6 +30,5 @@ std::array<float, 4> continuityColor(const Continuity* c);
 std::vector<float> groundGridVertices(double step, bool zUp);
 
 OverlayScene uploadOverlayScene(Device& dev, const Document& doc);
-void destroyOverlayScene(Device& dev, OverlayScene& s);
 
 }  // namespace pw::render

@@ -1,5 +1,7 @@
 #include "render/pipelines.hpp"
 
+#include "render/vk_owned.hpp"
+
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
@@ -28,7 +30,7 @@ std::filesystem::path pipelineCacheDir() {
 
 PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampleCountFlagBits samples) {
     const auto t0 = std::chrono::steady_clock::now();
-    PipelineSet set;
+    PipelineSet set(dev.device());
     VkDevice d = dev.device();
 
     // Pipeline cache from disk (the driver rejects a blob from another device or driver version).
@@ -65,10 +67,9 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
     VK_CHECK(vkCreatePipelineLayout(d, &pl, nullptr, &set.layout));
 
     // Shader modules (destroyed once the pipelines exist).
-    std::vector<VkShaderModule> modules;
+    std::vector<OwnedShaderModule> modules;
     auto mod = [&](const spirv::Blob& blob) {
-        modules.push_back(makeModule(dev, blob));
-        return modules.back();
+        return modules.emplace_back(dev.device(), makeModule(dev, blob)).get();
     };
     VkShaderModule vert = mod(spirv::surface_vert);
     const VkShaderModule tesc[kLevelsVariants] = {mod(spirv::surface_tesc_fixed), mod(spirv::surface_tesc_full)};
@@ -195,13 +196,23 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
         cd.blend = true;
         set.groundLines = buildPipeline(dev, set.layout, set.cache, cd, color, depth, samples);
     }
-    for (VkShaderModule m : modules) vkDestroyShaderModule(d, m, nullptr);
     set.createMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     return set;
 }
 
-void destroyPipelines(Device& dev, PipelineSet& set) {
-    VkDevice d = dev.device();
+PipelineSet& PipelineSet::operator=(PipelineSet&& o) noexcept {
+    if (this != &o) {
+        release();
+        static_cast<PipelineHandles&>(*this) = std::exchange(static_cast<PipelineHandles&>(o), PipelineHandles{});
+        device_ = o.device_;
+    }
+    return *this;
+}
+
+void PipelineSet::release() {
+    VkDevice d = device_;
+    PipelineHandles& set = *this;
+    if (!d) return;
     if (set.cache) {
         size_t size = 0;
         if (vkGetPipelineCacheData(d, set.cache, &size, nullptr) == VK_SUCCESS && size > 0) {
@@ -238,7 +249,7 @@ void destroyPipelines(Device& dev, PipelineSet& set) {
     kill(set.groundLines);
     if (set.layout) vkDestroyPipelineLayout(d, set.layout, nullptr);
     if (set.setLayout) vkDestroyDescriptorSetLayout(d, set.setLayout, nullptr);
-    set = PipelineSet{};
+    set = PipelineHandles{};
 }
 
 }  // namespace pw::render

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <filesystem>
+#include <utility>
 #include <string>
 
 #include "render/device.hpp"
@@ -34,7 +35,8 @@ constexpr size_t surfaceIndex(int spacing, LevelsVariant l, VaryingsVariant v) {
 // Index of the wireframe or normal-overlay pipeline (lean varyings) for a spacing and levels variant.
 constexpr size_t overlayIndex(int spacing, LevelsVariant l) { return size_t(spacing) * kLevelsVariants + size_t(l); }
 
-struct PipelineSet {
+// The handles of every pipeline of the renderer (PipelineSet owns them).
+struct PipelineHandles {
     VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;  // 0: frame UBO, 1: patch data, 2: counters
     VkPipelineLayout layout = VK_NULL_HANDLE;          // + gpu::DrawPush push constants
     // shaded tessellated surface, by surfaceIndex
@@ -59,11 +61,26 @@ struct PipelineSet {
     double createMs = 0.0;  // time spent creating all pipelines
 };
 
+// Every pipeline, their layouts and the pipeline cache, owned: when the set dies or is replaced it
+// saves the cache (best effort) and destroys every handle. Move-only.
+struct PipelineSet : PipelineHandles {
+    PipelineSet() = default;
+    explicit PipelineSet(VkDevice device) : device_(device) {}
+    ~PipelineSet() { release(); }
+    PipelineSet(PipelineSet&& o) noexcept
+        : PipelineHandles(std::exchange(static_cast<PipelineHandles&>(o), PipelineHandles{})), device_(o.device_) {}
+    PipelineSet& operator=(PipelineSet&& o) noexcept;
+    PipelineSet(const PipelineSet&) = delete;
+    PipelineSet& operator=(const PipelineSet&) = delete;
+
+private:
+    void release();
+    VkDevice device_ = VK_NULL_HANDLE;
+};
+
 // The directory for the pipeline cache: $XDG_CACHE_HOME/patchwork, else ~/.cache/patchwork.
 std::filesystem::path pipelineCacheDir();
 
 PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampleCountFlagBits samples);
-// Saves the cache (best effort) and destroys everything.
-void destroyPipelines(Device& dev, PipelineSet& set);
 
 }  // namespace pw::render

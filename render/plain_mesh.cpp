@@ -4,22 +4,14 @@ namespace pw::render {
 
 PlainMesh uploadPlainMesh(Device& dev, const TriangleMesh& mesh) {
     PlainMesh m;
-    m.positions = uploadBuffer(dev, mesh.positions, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-    m.normals = uploadBuffer(dev, mesh.normals, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    m.positions = uploadStatic(dev, mesh.positions, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    m.normals = uploadStatic(dev, mesh.normals, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
     std::vector<std::array<float, 2>> uvs = mesh.uvs;
     uvs.resize(mesh.positions.size(), {0.0f, 0.0f});
-    m.uvs = uploadBuffer(dev, uvs, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-    m.indices = uploadBuffer(dev, mesh.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    m.uvs = uploadStatic(dev, uvs, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    m.indices = uploadStatic(dev, mesh.indices, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     m.indexCount = uint32_t(mesh.indices.size());
     return m;
-}
-
-void destroyPlainMesh(Device& dev, PlainMesh& m) {
-    destroyBuffer(dev, m.positions);
-    destroyBuffer(dev, m.normals);
-    destroyBuffer(dev, m.uvs);
-    destroyBuffer(dev, m.indices);
-    m = PlainMesh{};
 }
 
 void recordPlainMesh(VkCommandBuffer cmd, const PlainMesh& m) {

@@ -1,5 +1,6 @@
 // A CPU-tessellated mesh (core tessellateDocument) on the GPU, drawn as plain indexed triangles
 // with the surface's shading: the reference for tests and the tessellated/plain benchmark ratio.
+// Static data in device-local memory, like the tessellated input's indices (render/buffers.hpp).
 #pragma once
 
 #include "render/buffers.hpp"
@@ -13,7 +14,6 @@ struct PlainMesh {
 };
 
 PlainMesh uploadPlainMesh(Device& dev, const TriangleMesh& mesh);
-void destroyPlainMesh(Device& dev, PlainMesh& m);
 void recordPlainMesh(VkCommandBuffer cmd, const PlainMesh& m);
 
 }  // namespace pw::render

@@ -10,6 +10,7 @@
 
 #include "render/adaptive_bounds.hpp"
 #include "render/buffers.hpp"
+#include "render/vk_owned.hpp"
 #include "core/camera_math.hpp"
 #include "render/gpu_interface.h"
 #include "render/overlays.hpp"
@@ -47,11 +48,11 @@ struct Renderer::Impl {
     uint32_t groundVertexCount = 0;
     double groundStep = 0.0;
     bool groundZUp = true;
-    VkDescriptorPool descPool = VK_NULL_HANDLE;
-    VkDescriptorSet set = VK_NULL_HANDLE;
+    OwnedDescriptorPool descPool;
+    VkDescriptorSet set = VK_NULL_HANDLE;  // freed with descPool
     std::unique_ptr<FrameQueries> queries;
-    VkCommandBuffer cmd = VK_NULL_HANDLE;
-    VkFence fence = VK_NULL_HANDLE;
+    OwnedCommandBuffer cmd;
+    OwnedFence fence;
 };
 
 namespace {
@@ -78,17 +79,17 @@ Renderer::Renderer(Device& dev, RenderTarget& target)
     : dev_(dev), target_(target), impl_(std::make_unique<Impl>()) {
     pipes_ = createPipelines(dev, target.colorFormat(), target.depthFormat(), target.samples());
     Impl& m = *impl_;
-    m.frameUbo = createBuffer(dev, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-    m.counters = createBuffer(dev, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    m.frameUbo = createBuffer(dev, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::HostWritten);
+    m.counters = createBuffer(dev, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
     std::memset(m.counters.mapped, 0, 16);
-    m.scene.patchData = createBuffer(dev, 32, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    m.scene.patchData = uploadStatic(dev, std::vector<gpu::PatchData>(1), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
 
     VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2}};
     VkDescriptorPoolCreateInfo dp{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     dp.maxSets = 1;
     dp.poolSizeCount = 2;
     dp.pPoolSizes = sizes;
-    VK_CHECK(vkCreateDescriptorPool(dev.device(), &dp, nullptr, &m.descPool));
+    VK_CHECK(vkCreateDescriptorPool(dev.device(), &dp, nullptr, m.descPool.replace(dev.device())));
     VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     ai.descriptorPool = m.descPool;
     ai.descriptorSetCount = 1;
@@ -97,36 +98,19 @@ Renderer::Renderer(Device& dev, RenderTarget& target)
     writeDescriptors(dev, m.set, m.frameUbo, m.scene.patchData, m.counters);
 
     m.queries = std::make_unique<FrameQueries>(dev);
-    VkCommandBufferAllocateInfo ci{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    ci.commandPool = dev.commandPool();
-    ci.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    ci.commandBufferCount = 1;
-    VK_CHECK(vkAllocateCommandBuffers(dev.device(), &ci, &m.cmd));
+    m.cmd = OwnedCommandBuffer(dev.device(), dev.commandPool());
     VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    VK_CHECK(vkCreateFence(dev.device(), &fci, nullptr, &m.fence));
+    VK_CHECK(vkCreateFence(dev.device(), &fci, nullptr, m.fence.replace(dev.device())));
 }
 
 Renderer::~Renderer() {
     vkDeviceWaitIdle(dev_.device());
-    Impl& m = *impl_;
-    destroySurfaceScene(dev_, m.scene);
-    destroyOverlayScene(dev_, m.overlays);
-    destroyPlainMesh(dev_, m.mesh);
-    destroyBuffer(dev_, m.frameUbo);
-    destroyBuffer(dev_, m.counters);
-    destroyBuffer(dev_, m.ground);
-    m.queries.reset();
-    vkDestroyFence(dev_.device(), m.fence, nullptr);
-    vkFreeCommandBuffers(dev_.device(), dev_.commandPool(), 1, &m.cmd);
-    vkDestroyDescriptorPool(dev_.device(), m.descPool, nullptr);
-    destroyPipelines(dev_, pipes_);
+    impl_.reset();  // buffers, queries, pool, fence: each frees itself; then the pipelines
 }
 
 void Renderer::setDocument(const Document& doc) {
     vkDeviceWaitIdle(dev_.device());
     Impl& m = *impl_;
-    destroySurfaceScene(dev_, m.scene);
-    destroyOverlayScene(dev_, m.overlays);
     m.scene = uploadSurfaceScene(dev_, doc);
     m.overlays = uploadOverlayScene(dev_, doc);
     writeDescriptors(dev_, m.set, m.frameUbo, m.scene.patchData, m.counters);
@@ -135,7 +119,6 @@ void Renderer::setDocument(const Document& doc) {
 
 void Renderer::setPlainMesh(const TriangleMesh& mesh) {
     vkDeviceWaitIdle(dev_.device());
-    destroyPlainMesh(dev_, impl_->mesh);
     impl_->mesh = uploadPlainMesh(dev_, mesh);
 }
 
@@ -272,9 +255,8 @@ FrameStats Renderer::render(const RenderOptions& opt) {
     const VkDeviceSize zero = 0;
     if (ground) {  // behind the surface where the surface is nearer (depth test, no depth write)
         if (!m.ground.buffer || m.groundStep != opt.groundGridStep || m.groundZUp != opt.camera.zUp) {
-            destroyBuffer(dev_, m.ground);  // no frame reads it any more: render() waits for its own submission
             const std::vector<float> v = groundGridVertices(opt.groundGridStep, opt.camera.zUp);
-            m.ground = uploadBuffer(dev_, v, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+            m.ground = uploadStatic(dev_, v, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);  // no frame reads the old one: render() waits for its own submission
             m.groundVertexCount = uint32_t(v.size() / 7);
             m.groundStep = opt.groundGridStep;
             m.groundZUp = opt.camera.zUp;
@@ -360,9 +342,9 @@ FrameStats Renderer::render(const RenderOptions& opt) {
     VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
     si.commandBufferCount = 1;
     si.pCommandBuffers = &cmd;
-    VK_CHECK(vkResetFences(dev_.device(), 1, &m.fence));
+    VK_CHECK(vkResetFences(dev_.device(), 1, m.fence.ptr()));
     VK_CHECK(vkQueueSubmit(dev_.queue(), 1, &si, m.fence));
-    VK_CHECK(vkWaitForFences(dev_.device(), 1, &m.fence, VK_TRUE, UINT64_MAX));
+    VK_CHECK(vkWaitForFences(dev_.device(), 1, m.fence.ptr(), VK_TRUE, UINT64_MAX));
     const auto t2 = std::chrono::steady_clock::now();
     stats.wallMs = std::chrono::duration<double, std::milli>(t2 - t0).count();
     stats.submitMs = std::chrono::duration<double, std::milli>(t2 - t1).count();

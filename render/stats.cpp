@@ -35,21 +35,18 @@ FrameQueries::FrameQueries(Device& dev) : dev_(dev) {
         VkQueryPoolCreateInfo ci{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
         ci.queryType = VK_QUERY_TYPE_TIMESTAMP;
         ci.queryCount = 2;
-        VK_CHECK(vkCreateQueryPool(dev.device(), &ci, nullptr, &ts_));
+        VK_CHECK(vkCreateQueryPool(dev.device(), &ci, nullptr, ts_.replace(dev.device())));
     }
     if (dev.caps().pipelineStatistics) {
         VkQueryPoolCreateInfo ci{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
         ci.queryType = VK_QUERY_TYPE_PIPELINE_STATISTICS;
         ci.queryCount = 1;
         ci.pipelineStatistics = kStatFlags;
-        VK_CHECK(vkCreateQueryPool(dev.device(), &ci, nullptr, &stats_));
+        VK_CHECK(vkCreateQueryPool(dev.device(), &ci, nullptr, stats_.replace(dev.device())));
     }
 }
 
-FrameQueries::~FrameQueries() {
-    if (ts_) vkDestroyQueryPool(dev_.device(), ts_, nullptr);
-    if (stats_) vkDestroyQueryPool(dev_.device(), stats_, nullptr);
-}
+FrameQueries::~FrameQueries() = default;
 
 void FrameQueries::reset(VkCommandBuffer cmd) {
     if (ts_) vkCmdResetQueryPool(cmd, ts_, 0, 2);

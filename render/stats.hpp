@@ -9,6 +9,7 @@
 #include <string>
 
 #include "render/device.hpp"
+#include "render/vk_owned.hpp"
 
 namespace pw::render {
 
@@ -48,7 +49,7 @@ public:
 
 private:
     Device& dev_;
-    VkQueryPool ts_ = VK_NULL_HANDLE, stats_ = VK_NULL_HANDLE;
+    OwnedQueryPool ts_, stats_;
 };
 
 }  // namespace pw::render

@@ -64,30 +64,21 @@ SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc) {
         pd.push_back(tp);
     }
     s.triangleCount = uint32_t(doc.triangles.size());
-    if (!triIdx.empty()) s.triIndices = uploadBuffer(dev, triIdx, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    if (!triIdx.empty()) s.triIndices = uploadStatic(dev, triIdx, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     std::vector<uint32_t> curveIdx;
     curveIdx.reserve(doc.curves.size() * 4);
     for (const BezierCurve& c : doc.curves) curveIdx.insert(curveIdx.end(), c.idx.begin(), c.idx.end());
     s.curveCount = uint32_t(doc.curves.size());
-    if (!curveIdx.empty()) s.curveIndices = uploadBuffer(dev, curveIdx, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    if (!curveIdx.empty()) s.curveIndices = uploadStatic(dev, curveIdx, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     s.cpuPoints.reserve(doc.points.size());
     for (const Vec3& p : doc.points) s.cpuPoints.emplace_back(float(p.x), float(p.y), float(p.z));
     s.cpuIndices = idx;
     s.pointCount = uint32_t(doc.points.size());
     s.windowCount = uint32_t(inst.size());
-    s.pool = uploadBuffer(dev, pts, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-    s.indices = uploadBuffer(dev, idx, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
-    s.patchData = uploadBuffer(dev, pd, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    s.pool = uploadHostWritten(dev, pts, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    s.indices = uploadStatic(dev, idx, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    s.patchData = uploadStatic(dev, pd, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     return s;
-}
-
-void destroySurfaceScene(Device& dev, SurfaceScene& s) {
-    destroyBuffer(dev, s.pool);
-    destroyBuffer(dev, s.indices);
-    destroyBuffer(dev, s.patchData);
-    destroyBuffer(dev, s.triIndices);
-    destroyBuffer(dev, s.curveIndices);
-    s = SurfaceScene{};
 }
 
 uint32_t recordSurfaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t perDraw,

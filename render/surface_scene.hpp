@@ -20,7 +20,7 @@ struct BasisRun {
 };
 
 struct SurfaceScene {
-    Buffer pool;       // vec3 float per pool point
+    Buffer pool;       // vec3 float per pool point (HostWritten: dragged points are written in place)
     Buffer indices;    // 16 uint32 per window
     Buffer patchData;  // gpu::PatchData per window
     uint32_t pointCount = 0;
@@ -41,7 +41,6 @@ struct SurfaceScene {
 };
 
 SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc);
-void destroySurfaceScene(Device& dev, SurfaceScene& s);
 
 // Binds pool + index buffers and issues the draws, at most `perDraw` windows per vkCmdDrawIndexed,
 // or, with `levels` (per-window segment bounds) and a non-zero `vertexBudget`, as many windows as

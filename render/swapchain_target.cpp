@@ -48,12 +48,12 @@ SwapchainTarget::SwapchainTarget(Device& dev, VkSurfaceKHR surface, VkExtent2D f
     rp.pSubpasses = &sub;
     rp.dependencyCount = hostPresent_ ? 2 : 1;
     rp.pDependencies = deps;
-    VK_CHECK(vkCreateRenderPass(dev.device(), &rp, nullptr, &overlayPass_));
+    VK_CHECK(vkCreateRenderPass(dev.device(), &rp, nullptr, overlayPass_.replace(dev.device())));
 
     // Step 3: fences (acquire waits on the host; the renderer's own submit then owns the image).
     VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    VK_CHECK(vkCreateFence(dev.device(), &fci, nullptr, &acquireFence_));
-    VK_CHECK(vkCreateFence(dev.device(), &fci, nullptr, &submitFence_));
+    VK_CHECK(vkCreateFence(dev.device(), &fci, nullptr, acquireFence_.replace(dev.device())));
+    VK_CHECK(vkCreateFence(dev.device(), &fci, nullptr, submitFence_.replace(dev.device())));
 
     createSwapchain(framebufferSize);
 }
@@ -83,27 +83,17 @@ void SwapchainTarget::chooseSurfaceFormat() {
 
 SwapchainTarget::~SwapchainTarget() {
     vkDeviceWaitIdle(dev_.device());
-    destroySwapchainResources();
-    if (swapchain_) vkDestroySwapchainKHR(dev_.device(), swapchain_, nullptr);
-    vkDestroyRenderPass(dev_.device(), overlayPass_, nullptr);
-    vkDestroyFence(dev_.device(), acquireFence_, nullptr);
-    vkDestroyFence(dev_.device(), submitFence_, nullptr);
-    if (copyCmd_) vkFreeCommandBuffers(dev_.device(), dev_.commandPool(), 1, &copyCmd_);
+    destroySwapchainResources();  // before the swapchain; the members go by themselves
 }
 
 void SwapchainTarget::destroySwapchainResources() {
-    for (VkFramebuffer f : framebuffers_) vkDestroyFramebuffer(dev_.device(), f, nullptr);
-    for (VkImageView v : views_) vkDestroyImageView(dev_.device(), v, nullptr);
-    for (VkSemaphore s : renderDone_) vkDestroySemaphore(dev_.device(), s, nullptr);
     framebuffers_.clear();
     views_.clear();
     renderDone_.clear();
     images_.clear();
-    destroyImage(dev_, depth_);
-    depth_ = Image{};
-    destroyImage(dev_, hostImage_);
-    hostImage_ = Image{};
-    destroyBuffer(dev_, hostPixels_);
+    depth_.reset();
+    hostImage_.reset();
+    hostPixels_.reset();
 }
 
 void SwapchainTarget::recreate(VkExtent2D size) {
@@ -149,8 +139,7 @@ void SwapchainTarget::createSwapchain(VkExtent2D size) {
     VkSwapchainKHR fresh = VK_NULL_HANDLE;
     VK_CHECK(vkCreateSwapchainKHR(dev_.device(), &ci, nullptr, &fresh));
     destroySwapchainResources();
-    if (swapchain_) vkDestroySwapchainKHR(dev_.device(), swapchain_, nullptr);
-    swapchain_ = fresh;
+    swapchain_ = OwnedSwapchain(dev_.device(), fresh);
     extent_ = ext;
 
     // Step 2: images, views, overlay framebuffers and per-image semaphores.
@@ -173,7 +162,7 @@ void SwapchainTarget::addImage(VkImage img) {
     vi.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
     VkImageView view = VK_NULL_HANDLE;
     VK_CHECK(vkCreateImageView(dev_.device(), &vi, nullptr, &view));
-    views_.push_back(view);
+    views_.emplace_back(dev_.device(), view);
     VkFramebufferCreateInfo fi{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
     fi.renderPass = overlayPass_;
     fi.attachmentCount = 1;
@@ -183,11 +172,11 @@ void SwapchainTarget::addImage(VkImage img) {
     fi.layers = 1;
     VkFramebuffer fb = VK_NULL_HANDLE;
     VK_CHECK(vkCreateFramebuffer(dev_.device(), &fi, nullptr, &fb));
-    framebuffers_.push_back(fb);
+    framebuffers_.emplace_back(dev_.device(), fb);
     VkSemaphoreCreateInfo si{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
     VkSemaphore s = VK_NULL_HANDLE;
     VK_CHECK(vkCreateSemaphore(dev_.device(), &si, nullptr, &s));
-    renderDone_.push_back(s);
+    renderDone_.emplace_back(dev_.device(), s);
 }
 
 void SwapchainTarget::createHostImage(VkExtent2D size) {
@@ -201,15 +190,9 @@ void SwapchainTarget::createHostImage(VkExtent2D size) {
     addImage(hostImage_.image);
     depth_ = createImage(dev_, size, depthFormat(), VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
                          VK_IMAGE_ASPECT_DEPTH_BIT);
-    hostPixels_ = createBuffer(dev_, VkDeviceSize(size.width) * size.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+    hostPixels_ = createBuffer(dev_, VkDeviceSize(size.width) * size.height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
     // The copy that follows the overlay pass every frame (which leaves the image TRANSFER_SRC).
-    if (!copyCmd_) {
-        VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-        ai.commandPool = dev_.commandPool();
-        ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-        ai.commandBufferCount = 1;
-        VK_CHECK(vkAllocateCommandBuffers(dev_.device(), &ai, &copyCmd_));
-    }
+    if (!copyCmd_) copyCmd_ = OwnedCommandBuffer(dev_.device(), dev_.commandPool());
     VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     VK_CHECK(vkBeginCommandBuffer(copyCmd_, &bi));
     VkBufferImageCopy region{};
@@ -233,12 +216,12 @@ bool SwapchainTarget::acquire() {
         return hostImage_.image != VK_NULL_HANDLE;
     }
     if (!swapchain_) return false;
-    VK_CHECK(vkResetFences(dev_.device(), 1, &acquireFence_));
+    VK_CHECK(vkResetFences(dev_.device(), 1, acquireFence_.ptr()));
     const VkResult r = vkAcquireNextImageKHR(dev_.device(), swapchain_, UINT64_MAX, VK_NULL_HANDLE, acquireFence_, &current_);
     if (r == VK_ERROR_OUT_OF_DATE_KHR) return false;
     if (r != VK_SUCCESS && r != VK_SUBOPTIMAL_KHR) VK_CHECK(r);
     // A suboptimal image was still acquired (and signals the fence): use it, recreate after present.
-    VK_CHECK(vkWaitForFences(dev_.device(), 1, &acquireFence_, VK_TRUE, UINT64_MAX));
+    VK_CHECK(vkWaitForFences(dev_.device(), 1, acquireFence_.ptr(), VK_TRUE, UINT64_MAX));
     return true;
 }
 
@@ -248,9 +231,9 @@ bool SwapchainTarget::submitAndPresent(VkCommandBuffer cmd) {
         VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
         si.commandBufferCount = 2;
         si.pCommandBuffers = cmds;
-        VK_CHECK(vkResetFences(dev_.device(), 1, &submitFence_));
+        VK_CHECK(vkResetFences(dev_.device(), 1, submitFence_.ptr()));
         VK_CHECK(vkQueueSubmit(dev_.queue(), 1, &si, submitFence_));
-        VK_CHECK(vkWaitForFences(dev_.device(), 1, &submitFence_, VK_TRUE, UINT64_MAX));
+        VK_CHECK(vkWaitForFences(dev_.device(), 1, submitFence_.ptr(), VK_TRUE, UINT64_MAX));
         hostPresent_(static_cast<const uint8_t*>(hostPixels_.mapped), extent_, extent_.width * 4);
         return true;
     }
@@ -258,17 +241,17 @@ bool SwapchainTarget::submitAndPresent(VkCommandBuffer cmd) {
     si.commandBufferCount = 1;
     si.pCommandBuffers = &cmd;
     si.signalSemaphoreCount = 1;
-    si.pSignalSemaphores = &renderDone_[current_];
-    VK_CHECK(vkResetFences(dev_.device(), 1, &submitFence_));
+    si.pSignalSemaphores = renderDone_[current_].ptr();
+    VK_CHECK(vkResetFences(dev_.device(), 1, submitFence_.ptr()));
     VK_CHECK(vkQueueSubmit(dev_.queue(), 1, &si, submitFence_));
     VkPresentInfoKHR pi{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
     pi.waitSemaphoreCount = 1;
-    pi.pWaitSemaphores = &renderDone_[current_];
+    pi.pWaitSemaphores = renderDone_[current_].ptr();
     pi.swapchainCount = 1;
-    pi.pSwapchains = &swapchain_;
+    pi.pSwapchains = swapchain_.ptr();
     pi.pImageIndices = &current_;
     const VkResult r = vkQueuePresentKHR(dev_.queue(), &pi);
-    VK_CHECK(vkWaitForFences(dev_.device(), 1, &submitFence_, VK_TRUE, UINT64_MAX));
+    VK_CHECK(vkWaitForFences(dev_.device(), 1, submitFence_.ptr(), VK_TRUE, UINT64_MAX));
     if (r == VK_ERROR_OUT_OF_DATE_KHR || r == VK_SUBOPTIMAL_KHR) return false;
     VK_CHECK(r);
     return true;
@@ -298,7 +281,7 @@ void SwapchainTarget::endRendering(VkCommandBuffer cmd) {
 std::vector<uint8_t> SwapchainTarget::readCurrentImage() {
     if (!transferSrc_ || !swapchain_) return {};
     const VkDeviceSize bytes = VkDeviceSize(extent_.width) * extent_.height * 4;
-    Buffer buf = createBuffer(dev_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+    Buffer buf = createBuffer(dev_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
     VkImage img = images_[current_];
     dev_.submitAndWait([&](VkCommandBuffer cmd) {
         copyColorAttachmentToHost(cmd, img, extent_, buf.buffer);
@@ -309,7 +292,6 @@ std::vector<uint8_t> SwapchainTarget::readCurrentImage() {
     });
     std::vector<uint8_t> out(bytes);
     std::memcpy(out.data(), buf.mapped, bytes);
-    destroyBuffer(dev_, buf);
     const bool bgra = format_ == VK_FORMAT_B8G8R8A8_UNORM || format_ == VK_FORMAT_B8G8R8A8_SRGB;
     for (size_t i = 0; i < out.size(); i += 4) {
         if (bgra) std::swap(out[i], out[i + 2]);

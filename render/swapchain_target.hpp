@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "render/buffers.hpp"
+#include "render/vk_owned.hpp"
 #include "render/render_target.hpp"
 
 namespace pw::render {
@@ -71,25 +72,25 @@ private:
     void destroySwapchainResources();
     Device& dev_;
     VkSurfaceKHR surface_;
-    VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;
+    OwnedSwapchain swapchain_;
     VkFormat format_ = VK_FORMAT_B8G8R8A8_UNORM;
     VkColorSpaceKHR colorSpace_ = VK_COLOR_SPACE_SRGB_NONLINEAR_KHR;
     VkExtent2D extent_{0, 0};
     uint32_t minImageCount_ = 2;
     std::vector<VkImage> images_;
-    std::vector<VkImageView> views_;
-    std::vector<VkFramebuffer> framebuffers_;
-    std::vector<VkSemaphore> renderDone_;  // per image: overlay submit -> present
+    std::vector<OwnedImageView> views_;
+    std::vector<OwnedFramebuffer> framebuffers_;
+    std::vector<OwnedSemaphore> renderDone_;  // per image: overlay submit -> present
     Image depth_;
-    VkRenderPass overlayPass_ = VK_NULL_HANDLE;
-    VkFence acquireFence_ = VK_NULL_HANDLE, submitFence_ = VK_NULL_HANDLE;
+    OwnedRenderPass overlayPass_;
+    OwnedFence acquireFence_, submitFence_;
     uint32_t current_ = 0;
     bool transferSrc_ = false;
     // Host presentation.
     HostPresent hostPresent_;
     Image hostImage_;
     Buffer hostPixels_;                           // mapped copy of the finished frame
-    VkCommandBuffer copyCmd_ = VK_NULL_HANDLE;    // image -> hostPixels_, recorded per size
+    OwnedCommandBuffer copyCmd_;                  // image -> hostPixels_, recorded per size
 };
 
 }  // namespace pw::render

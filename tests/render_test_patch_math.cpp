@@ -11,6 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render/buffers.hpp"
+#include "render/vk_owned.hpp"
 #include "render_support.hpp"
 #include "patch_math_check.h"
 
@@ -24,32 +25,33 @@ const uint32_t kCheckSpirv[] = {
 // Runs the check shader once over `in`; returns its kOutSize floats.
 std::vector<float> runOnGpu(render::Device& dev, const gpu::CheckInput& in) {
     VkDevice d = dev.device();
-    render::Buffer inBuf = render::createBuffer(dev, sizeof in, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-    render::Buffer outBuf = render::createBuffer(dev, sizeof(float) * gpu::kOutSize, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    render::Buffer inBuf = render::createBuffer(dev, sizeof in, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, render::MemoryUse::HostWritten);
+    render::Buffer outBuf =
+        render::createBuffer(dev, sizeof(float) * gpu::kOutSize, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, render::MemoryUse::Readback);
     std::memcpy(inBuf.mapped, &in, sizeof in);
 
     const VkShaderModuleCreateInfo smi{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO, nullptr, 0, sizeof kCheckSpirv, kCheckSpirv};
-    VkShaderModule module = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateShaderModule(d, &smi, nullptr, &module));
+    render::OwnedShaderModule module;
+    VK_CHECK(vkCreateShaderModule(d, &smi, nullptr, module.replace(d)));
     VkDescriptorSetLayoutBinding bindings[2] = {
         {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
         {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr}};
     const VkDescriptorSetLayoutCreateInfo dli{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO, nullptr, 0, 2, bindings};
-    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateDescriptorSetLayout(d, &dli, nullptr, &setLayout));
-    const VkPipelineLayoutCreateInfo pli{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO, nullptr, 0, 1, &setLayout, 0, nullptr};
-    VkPipelineLayout layout = VK_NULL_HANDLE;
-    VK_CHECK(vkCreatePipelineLayout(d, &pli, nullptr, &layout));
+    render::OwnedDescriptorSetLayout setLayout;
+    VK_CHECK(vkCreateDescriptorSetLayout(d, &dli, nullptr, setLayout.replace(d)));
+    const VkPipelineLayoutCreateInfo pli{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO, nullptr, 0, 1, setLayout.ptr(), 0, nullptr};
+    render::OwnedPipelineLayout layout;
+    VK_CHECK(vkCreatePipelineLayout(d, &pli, nullptr, layout.replace(d)));
     VkComputePipelineCreateInfo cpi{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     cpi.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_COMPUTE_BIT, module, "main", nullptr};
     cpi.layout = layout;
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateComputePipelines(d, VK_NULL_HANDLE, 1, &cpi, nullptr, &pipeline));
+    render::OwnedPipeline pipeline;
+    VK_CHECK(vkCreateComputePipelines(d, VK_NULL_HANDLE, 1, &cpi, nullptr, pipeline.replace(d)));
     const VkDescriptorPoolSize ps{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2};
     const VkDescriptorPoolCreateInfo dpi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO, nullptr, 0, 1, 1, &ps};
-    VkDescriptorPool pool = VK_NULL_HANDLE;
-    VK_CHECK(vkCreateDescriptorPool(d, &dpi, nullptr, &pool));
-    const VkDescriptorSetAllocateInfo dai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO, nullptr, pool, 1, &setLayout};
+    render::OwnedDescriptorPool pool;
+    VK_CHECK(vkCreateDescriptorPool(d, &dpi, nullptr, pool.replace(d)));
+    const VkDescriptorSetAllocateInfo dai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO, nullptr, pool, 1, setLayout.ptr()};
     VkDescriptorSet set = VK_NULL_HANDLE;
     VK_CHECK(vkAllocateDescriptorSets(d, &dai, &set));
     const VkDescriptorBufferInfo bi[2] = {{inBuf.buffer, 0, VK_WHOLE_SIZE}, {outBuf.buffer, 0, VK_WHOLE_SIZE}};
@@ -67,15 +69,7 @@ std::vector<float> runOnGpu(render::Device& dev, const gpu::CheckInput& in) {
     });
     std::vector<float> out(gpu::kOutSize);
     std::memcpy(out.data(), outBuf.mapped, sizeof(float) * out.size());
-
-    vkDestroyDescriptorPool(d, pool, nullptr);
-    vkDestroyPipeline(d, pipeline, nullptr);
-    vkDestroyPipelineLayout(d, layout, nullptr);
-    vkDestroyDescriptorSetLayout(d, setLayout, nullptr);
-    vkDestroyShaderModule(d, module, nullptr);
-    render::destroyBuffer(dev, outBuf);
-    render::destroyBuffer(dev, inBuf);
-    return out;
+    return out;  // every handle above frees itself
 }
 
 // Inputs: levels across every rounding boundary (and NaN, negative, past 64), pool quadruples with
