@@ -24,33 +24,14 @@ constexpr VkDeviceSize kSmallHostWritten = VkDeviceSize(16) << 20;
 
 }  // namespace
 
-Buffer& Buffer::operator=(Buffer&& o) noexcept {
-    if (this != &o) {
-        reset();
-        buffer = std::exchange(o.buffer, VkBuffer(VK_NULL_HANDLE));
-        memory = std::exchange(o.memory, VkDeviceMemory(VK_NULL_HANDLE));
-        size = std::exchange(o.size, 0);
-        mapped = std::exchange(o.mapped, nullptr);
-        device_ = o.device_;
-    }
-    return *this;
-}
-
-void Buffer::reset() {
-    if (buffer) vkDestroyBuffer(device_, buffer, nullptr);
-    if (memory) vkFreeMemory(device_, memory, nullptr);
-    buffer = VK_NULL_HANDLE, memory = VK_NULL_HANDLE, size = 0, mapped = nullptr;
-}
-
 Buffer createBuffer(Device& dev, VkDeviceSize size, VkBufferUsageFlags usage, MemoryUse use) {
     Buffer b;
-    b.device_ = dev.device();
     b.size = size;
     VkBufferCreateInfo ci{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
     ci.size = size;
     ci.usage = usage;
     ci.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    VK_CHECK(vkCreateBuffer(dev.device(), &ci, nullptr, &b.buffer));
+    VK_CHECK(vkCreateBuffer(dev.device(), &ci, nullptr, b.buffer.replace(dev.device())));
     VkMemoryRequirements req;
     vkGetBufferMemoryRequirements(dev.device(), b.buffer, &req);
     VkMemoryPropertyFlags want = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT, prefer = 0;
@@ -60,7 +41,7 @@ Buffer createBuffer(Device& dev, VkDeviceSize size, VkBufferUsageFlags usage, Me
     VkMemoryAllocateInfo ai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     ai.allocationSize = req.size;
     ai.memoryTypeIndex = pickMemoryType(dev.memoryProperties(), req.memoryTypeBits, want, prefer);
-    VK_CHECK(vkAllocateMemory(dev.device(), &ai, nullptr, &b.memory));
+    VK_CHECK(vkAllocateMemory(dev.device(), &ai, nullptr, b.memory.replace(dev.device())));
     VK_CHECK(vkBindBufferMemory(dev.device(), b.buffer, b.memory, 0));
     const bool hostVisible = dev.memoryProperties().memoryTypes[ai.memoryTypeIndex].propertyFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT;
     if (hostVisible) VK_CHECK(vkMapMemory(dev.device(), b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped));
@@ -72,7 +53,7 @@ Buffer uploadStatic(Device& dev, const void* data, VkDeviceSize bytes, VkBufferU
     Buffer b = createBuffer(dev, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Static);
     if (bytes == 0) return b;
     if (b.mapped) {  // device-local memory the host sees (lavapipe, resizable BAR): no copy needed
-        const VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE, nullptr, b.memory, 0, VK_WHOLE_SIZE};
+        const VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE, nullptr, b.memory.get(), 0, VK_WHOLE_SIZE};
         std::memcpy(b.mapped, data, bytes);
         VK_CHECK(vkFlushMappedMemoryRanges(dev.device(), 1, &range));
         return b;
@@ -90,29 +71,9 @@ Buffer uploadStatic(Device& dev, const void* data, VkDeviceSize bytes, VkBufferU
     return b;
 }
 
-Image& Image::operator=(Image&& o) noexcept {
-    if (this != &o) {
-        reset();
-        image = std::exchange(o.image, VkImage(VK_NULL_HANDLE));
-        memory = std::exchange(o.memory, VkDeviceMemory(VK_NULL_HANDLE));
-        view = std::exchange(o.view, VkImageView(VK_NULL_HANDLE));
-        format = std::exchange(o.format, VK_FORMAT_UNDEFINED);
-        device_ = o.device_;
-    }
-    return *this;
-}
-
-void Image::reset() {
-    if (view) vkDestroyImageView(device_, view, nullptr);
-    if (image) vkDestroyImage(device_, image, nullptr);
-    if (memory) vkFreeMemory(device_, memory, nullptr);
-    image = VK_NULL_HANDLE, memory = VK_NULL_HANDLE, view = VK_NULL_HANDLE, format = VK_FORMAT_UNDEFINED;
-}
-
 Image createImage(Device& dev, VkExtent2D extent, VkFormat format, VkSampleCountFlagBits samples, VkImageUsageFlags usage,
                   VkImageAspectFlags aspect) {
     Image img;
-    img.device_ = dev.device();
     img.format = format;
     VkImageCreateInfo ci{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
     ci.imageType = VK_IMAGE_TYPE_2D;
@@ -124,20 +85,20 @@ Image createImage(Device& dev, VkExtent2D extent, VkFormat format, VkSampleCount
     ci.tiling = VK_IMAGE_TILING_OPTIMAL;
     ci.usage = usage;
     ci.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    VK_CHECK(vkCreateImage(dev.device(), &ci, nullptr, &img.image));
+    VK_CHECK(vkCreateImage(dev.device(), &ci, nullptr, img.image.replace(dev.device())));
     VkMemoryRequirements req;
     vkGetImageMemoryRequirements(dev.device(), img.image, &req);
     VkMemoryAllocateInfo ai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     ai.allocationSize = req.size;
     ai.memoryTypeIndex = dev.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    VK_CHECK(vkAllocateMemory(dev.device(), &ai, nullptr, &img.memory));
+    VK_CHECK(vkAllocateMemory(dev.device(), &ai, nullptr, img.memory.replace(dev.device())));
     VK_CHECK(vkBindImageMemory(dev.device(), img.image, img.memory, 0));
     VkImageViewCreateInfo vi{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     vi.image = img.image;
     vi.viewType = VK_IMAGE_VIEW_TYPE_2D;
     vi.format = format;
     vi.subresourceRange = {aspect, 0, 1, 0, 1};
-    VK_CHECK(vkCreateImageView(dev.device(), &vi, nullptr, &img.view));
+    VK_CHECK(vkCreateImageView(dev.device(), &vi, nullptr, img.view.replace(dev.device())));
     return img;
 }
 

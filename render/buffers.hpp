@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "render/device.hpp"
+#include "render/vk_owned.hpp"
 
 namespace pw::render {
 
@@ -26,22 +27,11 @@ enum class MemoryUse {
 // A buffer and its memory, owned: freed when it dies or is reset; move-only. `mapped` is set when
 // the memory is host-visible (always for HostWritten and Readback).
 struct Buffer {
-    VkBuffer buffer = VK_NULL_HANDLE;
-    VkDeviceMemory memory = VK_NULL_HANDLE;
+    OwnedMemory memory;
+    OwnedBufferHandle buffer;  // declared after the memory, so destroyed before it
     VkDeviceSize size = 0;
     void* mapped = nullptr;
-
-    Buffer() = default;
-    ~Buffer() { reset(); }
-    Buffer(Buffer&& o) noexcept { *this = std::move(o); }
-    Buffer& operator=(Buffer&& o) noexcept;
-    Buffer(const Buffer&) = delete;
-    Buffer& operator=(const Buffer&) = delete;
-    void reset();
-
-private:
-    friend Buffer createBuffer(Device&, VkDeviceSize, VkBufferUsageFlags, MemoryUse);
-    VkDevice device_ = VK_NULL_HANDLE;
+    void reset() { *this = Buffer{}; }
 };
 
 Buffer createBuffer(Device& dev, VkDeviceSize size, VkBufferUsageFlags usage, MemoryUse use);
@@ -63,22 +53,11 @@ Buffer uploadHostWritten(Device& dev, const std::vector<T>& data, VkBufferUsageF
 
 // A device-local image with one view, owned like Buffer.
 struct Image {
-    VkImage image = VK_NULL_HANDLE;
-    VkDeviceMemory memory = VK_NULL_HANDLE;
-    VkImageView view = VK_NULL_HANDLE;
+    OwnedMemory memory;
+    OwnedImageHandle image;
+    OwnedImageView view;
     VkFormat format = VK_FORMAT_UNDEFINED;
-
-    Image() = default;
-    ~Image() { reset(); }
-    Image(Image&& o) noexcept { *this = std::move(o); }
-    Image& operator=(Image&& o) noexcept;
-    Image(const Image&) = delete;
-    Image& operator=(const Image&) = delete;
-    void reset();
-
-private:
-    friend Image createImage(Device&, VkExtent2D, VkFormat, VkSampleCountFlagBits, VkImageUsageFlags, VkImageAspectFlags);
-    VkDevice device_ = VK_NULL_HANDLE;
+    void reset() { *this = Image{}; }
 };
 
 Image createImage(Device& dev, VkExtent2D extent, VkFormat format, VkSampleCountFlagBits samples, VkImageUsageFlags usage,

@@ -52,7 +52,7 @@ void OffscreenTarget::begin(VkCommandBuffer cmd, bool load, const std::array<flo
         discardDepthToAttachment(cmd, depth_.image);
     }
 
-    beginColorDepthRendering(cmd, {extent_, color_.view, depth_.view, ms ? resolve_.view : VK_NULL_HANDLE}, load, clear);
+    beginColorDepthRendering(cmd, {extent_, color_.view, depth_.view, ms ? resolve_.view.get() : VK_NULL_HANDLE}, load, clear);
 }
 
 void OffscreenTarget::endRendering(VkCommandBuffer cmd) {

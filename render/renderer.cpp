@@ -263,7 +263,7 @@ FrameStats Renderer::render(const RenderOptions& opt) {
         }
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.groundLines);
         vkCmdPushConstants(cmd, pipes_.layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
-        vkCmdBindVertexBuffers(cmd, 0, 1, &m.ground.buffer, &zero);
+        vkCmdBindVertexBuffers(cmd, 0, 1, m.ground.buffer.ptr(), &zero);
         vkCmdDraw(cmd, m.groundVertexCount, 1, 0, 0);
         ++stats.draws;
     }
@@ -311,14 +311,14 @@ FrameStats Renderer::render(const RenderOptions& opt) {
     if (ds.showBoundaries && m.overlays.boundaryVertexCount) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.colorLines);
         vkCmdPushConstants(cmd, pipes_.layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
-        vkCmdBindVertexBuffers(cmd, 0, 1, &m.overlays.boundaryVerts.buffer, &zero);
+        vkCmdBindVertexBuffers(cmd, 0, 1, m.overlays.boundaryVerts.buffer.ptr(), &zero);
         vkCmdDraw(cmd, m.overlays.boundaryVertexCount, 1, 0, 0);
         ++stats.draws;
     }
     if (ds.showGrid && m.scene.pointCount) {
         gpu::DrawPush gp;
         gp.color = {0.95f, 0.75f, 0.2f, 1.0f};
-        vkCmdBindVertexBuffers(cmd, 0, 1, &m.scene.pool.buffer, &zero);
+        vkCmdBindVertexBuffers(cmd, 0, 1, m.scene.pool.buffer.ptr(), &zero);
         if (m.overlays.gridIndexCount) {
             vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.gridLines);
             vkCmdPushConstants(cmd, pipes_.layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(gp), &gp);

@@ -85,7 +85,7 @@ uint32_t recordSurfaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const 
                             gpu::DrawPush push, const std::vector<uint8_t>* levels, uint32_t vertexBudget) {
     if (s.windowCount == 0) return 0;
     const VkDeviceSize zero = 0;
-    vkCmdBindVertexBuffers(cmd, 0, 1, &s.pool.buffer, &zero);
+    vkCmdBindVertexBuffers(cmd, 0, 1, s.pool.buffer.ptr(), &zero);
     vkCmdBindIndexBuffer(cmd, s.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
     uint32_t draws = 0;
     perDraw = std::max(perDraw, 1u);

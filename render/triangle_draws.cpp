@@ -12,7 +12,7 @@ uint32_t recordPatchListDraws(VkCommandBuffer cmd, VkPipelineLayout layout, cons
                               uint32_t count, uint32_t points, uint32_t perDraw, uint32_t patchBase0, gpu::DrawPush push) {
     if (count == 0) return 0;
     const VkDeviceSize zero = 0;
-    vkCmdBindVertexBuffers(cmd, 0, 1, &s.pool.buffer, &zero);
+    vkCmdBindVertexBuffers(cmd, 0, 1, s.pool.buffer.ptr(), &zero);
     vkCmdBindIndexBuffer(cmd, indexBuffer, 0, VK_INDEX_TYPE_UINT32);
     perDraw = std::max(perDraw, 1u);
     push.basisKind = gpu::kBasisBezier;
