@@ -23,6 +23,7 @@
 #include "core/picking.hpp"
 #include "render/renderer.hpp"
 #include "render/swapchain_target.hpp"
+#include "ui/app_window.hpp"
 
 namespace pw::ui {
 
@@ -43,12 +44,12 @@ int Editor::runBench(const EditorBenchOptions& opt) {
     doc_.tess.inner = {opt.level, opt.level};
     doc_.tess.spacing = Spacing::Equal;
     doc_.tess.adaptive = AdaptiveMode::None;
-    commit("Benchmark levels");
+    session_.commit("Benchmark levels");
     documentChanged(false);
-    const VkExtent2D ext = target_->extent();
-    render::OffscreenTarget bareTarget(*dev_, ext.width, ext.height, target_->samples() > VK_SAMPLE_COUNT_1_BIT);
+    const VkExtent2D ext = window_.target().extent();
+    render::OffscreenTarget bareTarget(window_.device(), ext.width, ext.height, window_.target().samples() > VK_SAMPLE_COUNT_1_BIT);
     bareTarget.setReadback(false);
-    render::Renderer bare(*dev_, bareTarget);
+    render::Renderer bare(window_.device(), bareTarget);
     bare.setDocument(doc_);
     bare.warmUp();
 
@@ -71,10 +72,10 @@ int Editor::runBench(const EditorBenchOptions& opt) {
     // Step 3: settle (fonts, panels, first frames), then G grabs the selected point.
     sel_.clear();
     sel_.points = {uint32_t(point)};
-    benchMouse_ = std::array<double, 2>{at.x, at.y};
-    for (int i = 0; i < 10; ++i) frame();
-    keyEvent(GLFW_KEY_G, 0);
-    frame();
+    window_.overrideMouse(std::array<double, 2>{at.x, at.y});
+    for (int i = 0; i < 10; ++i) drawFrame();
+    window_.keyEvent(GLFW_KEY_G, 0);
+    drawFrame();
     if (mode_ != Interaction::Grab) throw InputError("bench", "--editor: the G grab did not start (is the window focused?)");
 
     // Step 4: measured frames; the mouse moves 40 px around the point, one step a frame, and each
@@ -84,32 +85,32 @@ int Editor::runBench(const EditorBenchOptions& opt) {
     const double size = modelSize(doc_);
     for (int i = 0; i < opt.frames; ++i) {
         const double a = 2.0 * M_PI * double(i + 1) / 60.0;
-        benchMouse_ = std::array<double, 2>{at.x + 40.0 * std::sin(a), at.y + 40.0 * (1.0 - std::cos(a))};
+        window_.overrideMouse(std::array<double, 2>{at.x + 40.0 * std::sin(a), at.y + 40.0 * (1.0 - std::cos(a))});
         glfwPollEvents();
-        frame();
-        total.push_back(frameTimes_.total);
-        ui.push_back(frameTimes_.ui);
-        drag.push_back(frameTimes_.drag);
-        acquire.push_back(frameTimes_.acquire);
-        view.push_back(frameTimes_.view);
-        present.push_back(frameTimes_.present);
+        drawFrame();
+        total.push_back(report_.times.total);
+        ui.push_back(report_.times.ui);
+        drag.push_back(report_.times.drag);
+        acquire.push_back(report_.times.acquire);
+        view.push_back(report_.times.view);
+        present.push_back(report_.times.present);
         bareMs.push_back(bare.render(viewOptions()).wallMs);
         moved = std::max(moved, glm::length(doc_.points[size_t(point)] - start));
         residual = std::max(residual, maxConstraintResidual(doc_));
     }
-    const render::FrameStats stats = stats_;
+    const render::FrameStats stats = report_.stats;
 
     // Step 5: Esc cancels the grab; the document is as it was.
-    keyEvent(GLFW_KEY_ESCAPE, 0);
-    frame();
-    benchMouse_.reset();
+    window_.keyEvent(GLFW_KEY_ESCAPE, 0);
+    drawFrame();
+    window_.overrideMouse(std::nullopt);
     const bool restored = mode_ == Interaction::None && doc_.points[size_t(point)] == start;
 
     // Step 6: report.
     const double frameMed = median(total), bareMed = median(bareMs);
     std::printf("editor bench: %s, %zu patches at level %g, %ux%u window, %s, %d frames of a G drag, medians\n",
                 session_.path().empty() ? "built-in teapot" : session_.path().c_str(), expandPatches(doc_).size(), double(opt.level), ext.width,
-                ext.height, dev_->name().c_str(), opt.frames);
+                ext.height, window_.device().name().c_str(), opt.frames);
     std::printf("  editor frame     %8.2f ms   (UI %.2f, of it drag solve + upload %.3f; acquire %.2f; 3D view %.2f; ImGui + present %.2f)\n",
                 frameMed, median(ui), median(drag), median(acquire), median(view), median(present));
     std::printf("  bare render      %8.2f ms   (the same view offscreen: record, submit, wait)\n", bareMed);
@@ -118,7 +119,7 @@ int Editor::runBench(const EditorBenchOptions& opt) {
     std::printf("  point %d moved up to %.4g (model size %.4g), largest join residual %.3g, restored by Esc: %s\n", point, moved,
                 size, residual, restored ? "yes" : "no");
     if (!opt.json.empty()) {
-        const nlohmann::json j{{"device", dev_->name()},
+        const nlohmann::json j{{"device", window_.device().name()},
                                {"width", ext.width},
                                {"height", ext.height},
                                {"frames", opt.frames},
@@ -144,7 +145,7 @@ int Editor::runBench(const EditorBenchOptions& opt) {
         std::cerr << "patchwork bench: Esc did not restore the dragged point\n";
         return 1;
     }
-    if (dev_->validationEnabled() && render::Device::validationMessageCount() > 0) {
+    if (window_.device().validationEnabled() && render::Device::validationMessageCount() > 0) {
         std::cerr << "patchwork bench: " << render::Device::validationMessageCount() << " Vulkan validation message(s)\n";
         return 1;
     }

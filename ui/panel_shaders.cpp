@@ -1,14 +1,13 @@
-// The shader panel: the GLSL of the tessellation pipelines the current settings draw with (surface,
-// triangles, wireframe, normal vectors, domain panes), stage by stage, read-only, with the glslc
-// defines of each variant and the lines those defines switch off dimmed (render/shader_listing).
+// The Shaders window (ui/panel_shaders.hpp): the GLSL of the pipelines in use, a tab per stage.
 #include <imgui.h>
 
 #include <algorithm>
 #include <cctype>
 #include <string>
 
-#include "ui/editor.hpp"
 #include "ui/imgui_tip.hpp"
+#include "ui/panel_shaders.hpp"
+#include "ui/test_trace.hpp"
 
 namespace pw::ui {
 
@@ -33,32 +32,32 @@ std::string listingText(const render::ShaderListing& l, bool activeOnly) {
 
 }  // namespace
 
-void Editor::drawShaderWindow() {
-    shaderShown_.clear();
-    shaderVariantsInUse_.clear();
-    if (!showShaders_) return;
+void ShaderPanel::draw(PanelContext& ctx, bool geometryShader, const std::vector<render::DomainViewOptions>& domainPanes) {
+    shown.clear();
+    variantsInUse.clear();
+    if (!open) return;
     // First placed below where the domain view opens, between the side panels, so that the model,
     // the domain and the source are all in sight.
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    const float top = std::min(ImGui::GetFrameHeight() + 16.0f + 440.0f * uiScale_, display.y * 0.5f);
-    const float width = std::max(320.0f, display.x - leftPanelWidth_ - rightPanelWidth_ - 32.0f);
-    ImGui::SetNextWindowPos(ImVec2(leftPanelWidth_ + 16.0f, top), ImGuiCond_FirstUseEver);
+    const float top = std::min(ImGui::GetFrameHeight() + 16.0f + 440.0f * ctx.uiScale(), display.y * 0.5f);
+    const float width = std::max(320.0f, display.x - ctx.layout().left - ctx.layout().right - 32.0f);
+    ImGui::SetNextWindowPos(ImVec2(ctx.layout().left + 16.0f, top), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(width, std::max(200.0f, display.y - top - 16.0f)), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Shaders", &showShaders_)) {
+    if (!ImGui::Begin("Shaders", &open)) {
         ImGui::End();
         return;
     }
     render::ShaderContext c;
-    c.tess = doc_.tess;
-    c.display = doc_.display;
-    c.windows = !doc_.patches.empty() || !doc_.surfaces.empty();
-    c.triangles = !doc_.triangles.empty();
-    c.curves = !doc_.curves.empty();
-    c.geometryShader = dev_->caps().geometryShader;
-    for (const auto& o : domainPanes_) c.domainPanes.emplace_back(o.kind, o.spacing);
+    c.tess = ctx.session().doc.tess;
+    c.display = ctx.session().doc.display;
+    c.windows = !ctx.session().doc.patches.empty() || !ctx.session().doc.surfaces.empty();
+    c.triangles = !ctx.session().doc.triangles.empty();
+    c.curves = !ctx.session().doc.curves.empty();
+    c.geometryShader = geometryShader;
+    for (const auto& o : domainPanes) c.domainPanes.emplace_back(o.kind, o.spacing);
     const std::vector<render::PipelineUse> pipes = render::pipelinesInUse(c);
     for (const auto& p : pipes)
-        for (const auto& s : p.stages) shaderVariantsInUse_.push_back(s.variant);
+        for (const auto& s : p.stages) variantsInUse.push_back(s.variant);
     if (pipes.empty()) {
         ImGui::TextWrapped("Nothing is tessellated: the document is empty and the domain view is closed.");
         ImGui::End();
@@ -66,12 +65,12 @@ void Editor::drawShaderWindow() {
     }
     const render::PipelineUse* pipe = &pipes.front();
     for (const auto& p : pipes)
-        if (p.name == shaderPipeline_) pipe = &p;
+        if (p.name == pipeline_) pipe = &p;
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
     if (ImGui::BeginCombo("Pipeline", pipe->name.c_str())) {
         for (const auto& p : pipes)
             if (ImGui::Selectable(p.name.c_str(), &p == pipe)) {
-                shaderPipeline_ = p.name;
+                pipeline_ = p.name;
                 pipe = &p;
             }
         ImGui::EndCombo();
@@ -79,7 +78,7 @@ void Editor::drawShaderWindow() {
     traceItem("shaders.pipeline");
     tip("The pipelines drawn with the current settings; wireframe, normals and the domain view add theirs");
     ImGui::SameLine();
-    ImGui::Checkbox("Hide switched-off lines", &shaderHideInactive_);
+    ImGui::Checkbox("Hide switched-off lines", &hideInactive_);
     traceItem("shaders.hide");
     tip("Leave out the #ifdef branches this variant's defines switch off (shown dimmed otherwise)");
     ImGui::TextWrapped("%s", pipe->why.c_str());
@@ -89,25 +88,25 @@ void Editor::drawShaderWindow() {
             const bool open = ImGui::BeginTabItem((tabLabel(stage.stage) + "##" + stage.stage).c_str());
             traceItem("shaders.tab." + stage.variant);
             if (!open) continue;
-            auto it = shaderListings_.find(stage.variant);
-            if (it == shaderListings_.end()) {
+            auto it = listings_.find(stage.variant);
+            if (it == listings_.end()) {
                 auto l = render::shaderListing(stage.variant);
-                it = shaderListings_.emplace(stage.variant, l ? std::move(*l) : render::ShaderListing{stage.variant, "?", {}, {}}).first;
+                it = listings_.emplace(stage.variant, l ? std::move(*l) : render::ShaderListing{stage.variant, "?", {}, {}}).first;
             }
             const render::ShaderListing& l = it->second;
-            shaderShown_ = l.variant;
+            shown = l.variant;
             std::string defs;
             for (const auto& d : l.defines) defs += (defs.empty() ? "" : " ") + d;
             ImGui::Text("%s  (%s)", l.source.c_str(), l.variant.c_str());
             ImGui::SameLine();
-            if (ImGui::SmallButton("Copy")) ImGui::SetClipboardText(listingText(l, shaderHideInactive_).c_str());
+            if (ImGui::SmallButton("Copy")) ImGui::SetClipboardText(listingText(l, hideInactive_).c_str());
             tip("Copy this stage's source (with the defines as a first comment line) to the clipboard");
             ImGui::TextDisabled("defines: %s", defs.empty() ? "(none)" : defs.c_str());
             ImGui::BeginChild("source", ImVec2(0, 0), true, ImGuiWindowFlags_HorizontalScrollbar);
             std::vector<int> shown;
             shown.reserve(l.lines.size());
             for (size_t i = 0; i < l.lines.size(); ++i)
-                if (l.lines[i].active || !shaderHideInactive_) shown.push_back(int(i));
+                if (l.lines[i].active || !hideInactive_) shown.push_back(int(i));
             const ImVec4 dim = ImGui::GetStyle().Colors[ImGuiCol_TextDisabled];
             const ImVec4 included(0.55f, 0.75f, 0.95f, 1.0f);
             ImGuiListClipper clipper;

@@ -1,0 +1,122 @@
+// The file browser (ui/dialogs.hpp): Open, Import, Save As, Export glTF (with the export options)
+// and Save Screenshot; OK runs the matching command.
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <utility>
+
+#include "core/limits.hpp"
+#include "ui/dialogs.hpp"
+#include "ui/imgui_tip.hpp"
+#include "ui/test_trace.hpp"
+
+namespace pw::ui {
+
+namespace fs = std::filesystem;
+
+Dialogs::Dialogs() : browseDir_(fs::current_path()) {}
+
+void Dialogs::openFileDialog(FileDialogKind kind, const std::string& documentName) {
+    const std::string name = documentName.empty() ? "untitled" : documentName;
+    fileName_[0] = 0;
+    switch (kind) {
+        case FileDialogKind::Open: fileMode_ = FileDialogMode::Open; break;
+        case FileDialogKind::Import: fileMode_ = FileDialogMode::Import; break;
+        case FileDialogKind::SaveAs:
+            fileMode_ = FileDialogMode::SaveAs;
+            std::snprintf(fileName_, sizeof fileName_, "%s.patchwork", name.c_str());
+            break;
+        case FileDialogKind::ExportGltf:
+            fileMode_ = FileDialogMode::ExportGltf;
+            std::snprintf(fileName_, sizeof fileName_, "%s.glb", name.c_str());
+            break;
+        case FileDialogKind::Screenshot:
+            fileMode_ = FileDialogMode::Screenshot;
+            std::snprintf(fileName_, sizeof fileName_, "screenshot.png");
+            break;
+    }
+}
+
+void Dialogs::drawFileBrowser(PanelContext& ctx) {
+    if (fileMode_ == FileDialogMode::None) return;
+    const char* titles[] = {"", "Open", "Save As", "Import", "Export glTF", "Save Screenshot"};
+    const char* title = titles[int(fileMode_)];
+    ImGui::OpenPopup("File browser");
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowSize(ImVec2(std::min(640.0f, io.DisplaySize.x - 40), std::min(480.0f, io.DisplaySize.y - 40)), ImGuiCond_Always);
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    if (!ImGui::BeginPopupModal("File browser", nullptr, ImGuiWindowFlags_NoResize)) return;
+    traceModal("file");
+    bool doubleClicked = false;
+    ImGui::Text("%s: %s", title, browseDir_.string().c_str());
+    if (ImGui::Button("Up")) browseDir_ = browseDir_.parent_path();
+    tip("Parent directory");
+    ImGui::BeginChild("entries", ImVec2(0, -90), true);
+    std::vector<fs::directory_entry> entries;
+    std::error_code ec;
+    for (const fs::directory_entry& e : fs::directory_iterator(browseDir_, ec)) entries.push_back(e);
+    std::sort(entries.begin(), entries.end(), [](const fs::directory_entry& a, const fs::directory_entry& b) {
+        if (a.is_directory() != b.is_directory()) return a.is_directory();
+        return a.path().filename() < b.path().filename();
+    });
+    for (const fs::directory_entry& e : entries) {
+        const std::string name = e.path().filename().string();
+        if (!name.empty() && name[0] == '.') continue;
+        if (e.is_directory(ec)) {
+            if (ImGui::Selectable((name + "/").c_str(), false, ImGuiSelectableFlags_AllowDoubleClick)) browseDir_ = e.path();
+        } else if (ImGui::Selectable(name.c_str(), name == fileName_, ImGuiSelectableFlags_AllowDoubleClick)) {
+            std::snprintf(fileName_, sizeof fileName_, "%s", name.c_str());
+            doubleClicked = ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left);
+        }
+    }
+    if (ec) ImGui::TextDisabled("(cannot list: %s)", ec.message().c_str());
+    ImGui::EndChild();
+    ImGui::InputText("File name", fileName_, sizeof fileName_);
+    traceItem("file.name");
+    tip("Name in the directory above, or an absolute path");
+    if (fileMode_ == FileDialogMode::ExportGltf || fileMode_ == FileDialogMode::SaveAs) {
+        ImGui::SetNextItemWidth(120);
+        ImGui::SliderInt("Export level", &ctx.session().exportOptions.level, 0, limits::kMaxExportLevel);
+        tip("glTF tessellation level (0: the document's level)");
+        ImGui::SameLine();
+        ImGui::Checkbox("Merge", &ctx.session().exportOptions.merge);
+        tip("One mesh primitive for everything");
+        ImGui::SameLine();
+        ImGui::Checkbox("Cage", &ctx.session().exportOptions.cage);
+        tip("Also export the control cage as lines");
+    }
+    const bool ok = ImGui::Button("OK", ImVec2(100, 0)) || doubleClicked;
+    traceItem("file.ok");
+    tip("Confirm");
+    ImGui::SameLine();
+    const bool cancel = ImGui::Button("Cancel", ImVec2(100, 0)) || ctx.keyPressed(GLFW_KEY_ESCAPE, 0);
+    tip("Close without doing anything");
+    if (ok && fileName_[0]) {
+        fs::path p = fileName_;
+        if (p.is_relative()) p = browseDir_ / p;
+        const FileDialogMode m = fileMode_;
+        fileMode_ = FileDialogMode::None;
+        ImGui::CloseCurrentPopup();
+        // The unsaved-changes prompt came before the Open dialog: the open itself is unguarded.
+        if (m == FileDialogMode::Open) ctx.runCommand({"open", p.string()}, false);
+        else if (m == FileDialogMode::Import) ctx.runCommand({"import", p.string()});
+        else if (m == FileDialogMode::ExportGltf) ctx.runCommand({"export-gltf", p.string()});
+        else if (m == FileDialogMode::Screenshot) ctx.runCommand({"screenshot", p.string()});
+        else if (m == FileDialogMode::SaveAs) {
+            ctx.runCommand({"save", p.string()});
+            // Save from the unsaved-changes prompt of an untitled document: go on with New / Open / Quit.
+            if (runPendingAfterSave_ && !ctx.session().isModified()) ctx.runCommand(std::exchange(pendingCommand_, {}), false);
+            runPendingAfterSave_ = false;
+        }
+    } else if (cancel) {
+        fileMode_ = FileDialogMode::None;
+        runPendingAfterSave_ = false;
+        pendingCommand_.clear();
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
+}  // namespace pw::ui

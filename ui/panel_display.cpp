@@ -1,0 +1,51 @@
+// Display (right panel): shading mode, overlays (control net, wireframe, normals, boundaries,
+// isocurves), normal length, light direction, background. Each change is one undo step.
+#include <imgui.h>
+
+#include "ui/imgui_tip.hpp"
+#include "ui/side_panels.hpp"
+#include "ui/test_trace.hpp"
+
+namespace pw::ui {
+
+void drawDisplayPanel(PanelContext& ctx) {
+    if (!ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    EditSession& s = ctx.session();
+    DisplaySettings& ds = s.doc.display;
+    auto edited = [&](bool changed, const char* label) {
+        if (changed) ctx.settingsChanged();
+        if (ImGui::IsItemDeactivatedAfterEdit() || (changed && !ImGui::IsItemActive())) s.commit(label);
+    };
+    const char* shadings[] = {"lit", "normal", "patch id", "uv checker", "zebra", "gaussian curvature", "mean curvature"};
+    int sh = int(ds.shading);
+    if (ImGui::Combo("Shading", &sh, shadings, 7)) {
+        ds.shading = ShadingMode(sh);
+        s.commit("Shading");
+    }
+    tip("How the surface is coloured");
+    auto flag = [&](const char* label, bool& v, const char* help) {
+        bool b = v;
+        if (ImGui::Checkbox(label, &b)) {
+            v = b;
+            s.commit(label);
+        }
+        tip(help);
+    };
+    flag("Control net", ds.showGrid, "Show the control points and net lines");
+    ImGui::SameLine();
+    flag("Wireframe", ds.showWireframe, "Show the tessellated triangles");
+    flag("Normals", ds.showNormals, "Show surface normals");
+    ImGui::SameLine();
+    flag("Boundaries", ds.showBoundaries, "Patch boundaries coloured by continuity (grey open, red C0, green C1, blue G1)");
+    traceItem("display.boundaries");
+    flag("Isocurves", ds.showIsocurves, "Isoparametric curves of every patch through the isoline tessellator (levels in Tessellation)");
+    traceItem("display.isocurves");
+    edited(ImGui::SliderFloat("Normal length", &ds.normalLength, 0.001f, 1.0f, "%.3f", ImGuiSliderFlags_Logarithmic), "Normal length");
+    tip("Length of the drawn normals");
+    edited(ImGui::SliderFloat3("Light", ds.lightDir.data(), -1.0f, 1.0f, "%.2f"), "Light direction");
+    tip("Direction towards the light");
+    edited(ImGui::ColorEdit3("Background", ds.background.data()), "Background");
+    tip("Viewport clear colour");
+}
+
+}  // namespace pw::ui

@@ -1,0 +1,37 @@
+// Presentation mode's overlay (F5, ui/teaching.hpp): the levels, the partitioning and the counts in
+// large type, high contrast, no editing panels.
+#include <imgui.h>
+
+#include <string>
+
+#include "render/domain_labels.hpp"
+#include "ui/app_window.hpp"
+#include "ui/imgui_layer.hpp"
+#include "ui/teaching.hpp"
+
+namespace pw::ui {
+
+void Teaching::drawPresentationOverlay(PanelContext& ctx) {
+    const TessSettings& ts = ctx.session().doc.tess;
+    const render::FrameStats& stats = ctx.frameReport().stats;
+    ImGui::SetNextWindowPos(ImVec2(16.0f, 16.0f));
+    ImGui::SetNextWindowBgAlpha(0.85f);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
+                                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+    if (ImGui::Begin("##presentation", nullptr, flags)) {
+        ImGui::PushFont(window_.imgui().presentationFont());
+        ImGui::SetWindowFontScale(presentationScale / 3.0f);
+        ImGui::Text("outer %s  %s  %s  %s", render::formatLevel(ts.outer[0]).c_str(), render::formatLevel(ts.outer[1]).c_str(),
+                    render::formatLevel(ts.outer[2]).c_str(), render::formatLevel(ts.outer[3]).c_str());
+        ImGui::Text("inner %s  %s", render::formatLevel(ts.inner[0]).c_str(), render::formatLevel(ts.inner[1]).c_str());
+        ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.1f, 1.0f), "%s%s", spacingName(ts.spacing).data(),
+                           ts.adaptive == AdaptiveMode::None ? "" : (std::string(", adaptive ") + adaptiveName(ts.adaptive).data()).c_str());
+        ImGui::Text("%llu triangles", static_cast<unsigned long long>(stats.triangles()));
+        ImGui::Text("%llu evaluations", static_cast<unsigned long long>(stats.tesInvocations));
+        if (sweep.playing) ImGui::Text("sweep %.2f", double(sweep.level));
+        ImGui::PopFont();
+    }
+    ImGui::End();
+}
+
+}  // namespace pw::ui

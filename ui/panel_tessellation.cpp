@@ -1,0 +1,84 @@
+// Tessellation (right panel): levels (linked or per edge), partitioning, adaptive modes, the
+// isoline levels, culling. Each change is one undo step.
+#include <imgui.h>
+
+#include "ui/imgui_tip.hpp"
+#include "ui/side_panels.hpp"
+#include "ui/test_trace.hpp"
+
+namespace pw::ui {
+
+void drawTessellationPanel(PanelContext& ctx) {
+    if (!ImGui::CollapsingHeader("Tessellation", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    EditSession& s = ctx.session();
+    TessSettings& ts = s.doc.tess;
+    auto edited = [&](bool changed, const char* label) {
+        if (changed) ctx.settingsChanged();
+        if (ImGui::IsItemDeactivatedAfterEdit() || (changed && !ImGui::IsItemActive())) s.commit(label);
+    };
+    bool linked = ts.linked;
+    if (ImGui::Checkbox("Link levels", &linked)) {
+        ts.linked = linked;
+        s.commit("Link levels");
+    }
+    tip("One slider drives all four outer and both inner levels");
+    if (ts.linked) {
+        float l = ts.outer[0];
+        const bool c = ImGui::SliderFloat("Level", &l, 1.0f, 64.0f, "%.1f");
+        if (c) {
+            ts.outer = {l, l, l, l};
+            ts.inner = {l, l};
+        }
+        edited(c, "Tessellation level");
+        tip("Outer and inner tessellation level (1-64)");
+    } else {
+        edited(ImGui::SliderFloat4("Outer", ts.outer.data(), 1.0f, 64.0f, "%.1f"), "Outer levels");
+        tip("Outer levels: edge u=0, v=0, u=1, v=1");
+        edited(ImGui::SliderFloat2("Inner", ts.inner.data(), 1.0f, 64.0f, "%.1f"), "Inner levels");
+        tip("Inner levels along u and v");
+    }
+    const char* spacings[] = {"equal", "fractional odd", "fractional even", "pow2"};
+    int sp = int(ts.spacing);
+    if (ImGui::Combo("Partitioning", &sp, spacings, 4)) {
+        ts.spacing = Spacing(sp);
+        s.commit("Partitioning");
+    }
+    tip("Spacing of the tessellator: equal, fractional odd/even (smooth level changes), pow2 (rounded up)");
+    const char* modes[] = {"none", "distance", "screen space", "orientation"};
+    int am = int(ts.adaptive);
+    if (ImGui::Combo("Adaptive", &am, modes, 4)) {
+        ts.adaptive = AdaptiveMode(am);
+        s.commit("Adaptive mode");
+    }
+    tip("Per-edge levels from the distance to the eye, the projected edge length, or the silhouette");
+    if (ts.adaptive == AdaptiveMode::Distance) {
+        edited(ImGui::DragFloat("Near", &ts.distanceNear, 0.05f, 0.0f, 1e6f), "Adaptive near");
+        tip("Full level at or below this distance");
+        edited(ImGui::DragFloat("Far", &ts.distanceFar, 0.1f, 0.0f, 1e6f), "Adaptive far");
+        tip("Level 1 at or beyond this distance");
+    }
+    if (ts.adaptive == AdaptiveMode::ScreenSpace) {
+        edited(ImGui::SliderFloat("Pixels/segment", &ts.targetPixels, 1.0f, 64.0f, "%.1f"), "Target pixels");
+        tip("Target length of one segment on screen (about 8 px is the lecture advice)");
+    }
+    edited(ImGui::SliderFloat("Max level", &ts.maxLevel, 1.0f, 64.0f, "%.0f"), "Max level");
+    tip("Upper clamp of every level");
+    edited(ImGui::SliderFloat2("Isolines", ts.isolineLevels.data(), 1.0f, 64.0f, "%.2f"), "Isoline levels");
+    traceItem("tess.isolines");
+    tip("Isoline domain: lines (always rounded up to an integer) and segments per line (under the partitioning). "
+        "Curves draw one line; the isocurve overlay draws this many per direction, the first and last on the boundary");
+    bool cb = ts.cullBackfaces, co = ts.cullOffscreen;
+    if (ImGui::Checkbox("Cull back faces", &cb)) {
+        ts.cullBackfaces = cb;
+        s.commit("Culling");
+    }
+    tip("Skip patches whose control net faces away from the eye");
+    ImGui::SameLine();
+    if (ImGui::Checkbox("Cull off-screen", &co)) {
+        ts.cullOffscreen = co;
+        s.commit("Culling");
+    }
+    tip("Skip patches outside the view frustum");
+}
+
+}  // namespace pw::ui

@@ -1,0 +1,144 @@
+// The viewport's overlays, drawn with ImGui's background draw list in every pane: the selected
+// patch's or triangle's boundary, selected and hovered points, the axis line of a constrained drag,
+// the box of a box selection, the axis gizmo; and the mode line of a drag. (The ground grid is
+// drawn by the renderer, depth-tested.)
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <optional>
+
+#include "core/bezier_triangle.hpp"
+#include "core/camera_math.hpp"
+#include "core/patch_eval.hpp"
+#include "ui/editor.hpp"
+
+namespace pw::ui {
+
+void Editor::drawViewportOverlays() {
+    ImDrawList* dl = ImGui::GetBackgroundDrawList();
+    const auto rects = teaching_.viewPaneRects(sidePanels_.layout());
+    for (size_t i = 0; i < rects.size(); ++i) {
+        const auto& r = rects[i];
+        // Not under the side panels: their backgrounds are filled before ImGui draws this list.
+        const float x0 = std::max(r[0], sidePanels_.layout().left), x1 = std::min(r[0] + r[2], ImGui::GetIO().DisplaySize.x - sidePanels_.layout().right);
+        dl->PushClipRect(ImVec2(x0, r[1]), ImVec2(std::max(x0, x1), r[1] + r[3]), true);
+        drawPaneOverlays(r, int(i) == teaching_.activePane || !teaching_.viewSplit());
+        dl->PopClipRect();
+    }
+
+    // Mode line.
+    const char* modeText = nullptr;
+    char buf[160];
+    if (mode_ == Interaction::Grab || mode_ == Interaction::DragPoints) {
+        std::snprintf(buf, sizeof buf, "%s %zu point(s)%s   X/Y/Z axis · Ctrl snap · Esc/right click cancel%s",
+                      mode_ == Interaction::Grab ? "Grab" : "Drag", drag_.movedCount(),
+                      drag_.axis() < 0 ? " in the view plane" : drag_.axis() == 0 ? " along X" : drag_.axis() == 1 ? " along Y" : " along Z",
+                      mode_ == Interaction::Grab ? " · click/Enter confirm" : "");
+        modeText = buf;
+    }
+    if (modeText) dl->AddText(ImVec2(float(sidePanels_.layout().left) + 12.0f, 30.0f), IM_COL32(255, 230, 120, 255), modeText);
+}
+
+void Editor::drawPaneOverlays(const std::array<float, 4>& pane, bool active) {
+    ImDrawList* dl = ImGui::GetBackgroundDrawList();
+    const ImGuiIO& io = ImGui::GetIO();
+    const int W = std::max(int(pane[2]), 1), H = std::max(int(pane[3]), 1);
+    const ViewMatrices vm = viewMatrices(cam_, double(W) / H);
+    auto proj = [&](const Vec3& p) -> std::optional<glm::dvec2> {
+        auto s = projectToPixel(vm, p, W, H);
+        if (s) *s += glm::dvec2(pane[0], pane[1]);
+        return s;
+    };
+    auto line = [&](const Vec3& a, const Vec3& b, ImU32 col, float th) {
+        const auto pa = proj(a), pb = proj(b);
+        if (pa && pb) dl->AddLine(ImVec2(float(pa->x), float(pa->y)), ImVec2(float(pb->x), float(pb->y)), col, th);
+    };
+
+    // Selected patch: its boundary curves.
+    if (sel_.patch >= 0 && sel_.patch < int(doc_.patches.size())) {
+        const Patch& pt = doc_.patches[size_t(sel_.patch)];
+        const Net16 net = gatherNet(doc_, pt.idx);
+        const int n = 24;
+        for (int e = 0; e < 4; ++e) {
+            const bool hl = e == int(lastEdge_);
+            for (int k = 0; k < n; ++k) {
+                auto uv = [&](int s, double& u, double& v) {
+                    const double t = double(s) / n;
+                    switch (e) {
+                        case 0: u = 0, v = t; break;
+                        case 1: u = t, v = 0; break;
+                        case 2: u = 1, v = t; break;
+                        default: u = t, v = 1; break;
+                    }
+                };
+                double u0, v0, u1, v1;
+                uv(k, u0, v0);
+                uv(k + 1, u1, v1);
+                line(evaluateNet(net, pt.basis, pt.tension, u0, v0).p, evaluateNet(net, pt.basis, pt.tension, u1, v1).p,
+                     hl ? IM_COL32(255, 120, 255, 255) : IM_COL32(80, 220, 255, 255), hl ? 4.0f : 2.5f);
+            }
+        }
+    }
+
+    // Selected Bézier triangle: its three boundary curves.
+    if (sel_.triangle >= 0 && sel_.triangle < int(doc_.triangles.size())) {
+        const Net10 net = gatherTriangleNet(doc_, doc_.triangles[size_t(sel_.triangle)].idx);
+        const int n = 24;
+        for (int e = 0; e < 3; ++e)
+            for (int k = 0; k < n; ++k) {
+                // Edge e runs from one corner to the next (u = 0: v to w, v = 0: w to u, w = 0: u to v).
+                auto at = [&](int s) {
+                    const double t = double(s) / n;
+                    const double u = e == 0 ? 0.0 : e == 1 ? t : 1.0 - t, v = e == 0 ? 1.0 - t : e == 1 ? 0.0 : t;
+                    return evaluateTriangle(net, u, v).p;
+                };
+                line(at(k), at(k + 1), IM_COL32(80, 220, 255, 255), 2.5f);
+            }
+    }
+
+    // Selected and hovered points.
+    for (uint32_t p : sel_.points)
+        if (p < doc_.points.size())
+            if (auto s = proj(doc_.points[p])) dl->AddCircleFilled(ImVec2(float(s->x), float(s->y)), 5.0f, IM_COL32(255, 140, 30, 255));
+    if (hovered_ >= 0 && hovered_ < int(doc_.points.size()))
+        if (auto s = proj(doc_.points[size_t(hovered_)]))
+            dl->AddCircle(ImVec2(float(s->x), float(s->y)), 8.0f, IM_COL32(255, 255, 255, 255), 16, 2.0f);
+
+    // Axis constraint line during a drag.
+    if ((mode_ == Interaction::DragPoints || mode_ == Interaction::Grab) && drag_.axis() >= 0) {
+        Vec3 a(0.0);
+        a[drag_.axis()] = 2.0 * modelSize(doc_);
+        const ImU32 col = drag_.axis() == 0 ? IM_COL32(230, 60, 60, 220) : drag_.axis() == 1 ? IM_COL32(60, 210, 60, 220) : IM_COL32(70, 120, 255, 220);
+        line(drag_.anchor() - a, drag_.anchor() + a, col, 1.5f);
+    }
+
+    // Box selection rectangle.
+    if (mode_ == Interaction::BoxSelect && active) {
+        const ImVec2 a{float(pressX_) + pane[0], float(pressY_) + pane[1]}, b = io.MousePos;
+        dl->AddRectFilled(ImVec2(std::min(a.x, b.x), std::min(a.y, b.y)), ImVec2(std::max(a.x, b.x), std::max(a.y, b.y)),
+                          IM_COL32(100, 150, 255, 40));
+        dl->AddRect(ImVec2(std::min(a.x, b.x), std::min(a.y, b.y)), ImVec2(std::max(a.x, b.x), std::max(a.y, b.y)),
+                    IM_COL32(120, 170, 255, 200));
+    }
+
+    // Axis gizmo (bottom left of the viewport, right of the left panel).
+    {
+        const ImVec2 c(pane[0] + (teaching_.viewSplit() ? 0.0f : float(sidePanels_.layout().left)) + 60.0f, pane[1] + float(H) - 60.0f);
+        const float len = 40.0f;
+        struct Ax { glm::vec3 v; ImU32 col; const char* name; };
+        Ax axes[3] = {{glm::vec3(vm.view * glm::vec4(1, 0, 0, 0)), IM_COL32(230, 70, 70, 255), "X"},
+                      {glm::vec3(vm.view * glm::vec4(0, 1, 0, 0)), IM_COL32(80, 200, 80, 255), "Y"},
+                      {glm::vec3(vm.view * glm::vec4(0, 0, 1, 0)), IM_COL32(80, 130, 255, 255), "Z"}};
+        std::sort(axes, axes + 3, [](const Ax& a, const Ax& b) { return a.v.z < b.v.z; });
+        dl->AddCircleFilled(c, len + 12.0f, IM_COL32(0, 0, 0, 60));
+        for (const Ax& a : axes) {
+            const ImVec2 e(c.x + a.v.x * len, c.y - a.v.y * len);
+            dl->AddLine(c, e, a.col, 2.5f);
+            dl->AddText(ImVec2(e.x - 3.0f, e.y - 7.0f), a.col, a.name);
+        }
+    }
+
+}
+
+}  // namespace pw::ui
