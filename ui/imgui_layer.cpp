@@ -55,7 +55,7 @@ ImGuiLayer::ImGuiLayer(render::Device& dev, GLFWwindow* window, render::Swapchai
     dp.maxSets = 8;
     dp.poolSizeCount = 1;
     dp.pPoolSizes = &size;
-    VK_CHECK(vkCreateDescriptorPool(dev.device(), &dp, nullptr, &pool_));
+    VK_CHECK(vkCreateDescriptorPool(dev.device(), &dp, nullptr, pool_.replace(dev.device())));
 
     // Step 3: backends.
     ImGui_ImplGlfw_InitForVulkan(window, true);
@@ -77,20 +77,14 @@ ImGuiLayer::ImGuiLayer(render::Device& dev, GLFWwindow* window, render::Swapchai
     dev.submitAndWait([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
     ImGui_ImplVulkan_DestroyFontUploadObjects();
 
-    VkCommandBufferAllocateInfo ci{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    ci.commandPool = dev.commandPool();
-    ci.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    ci.commandBufferCount = 1;
-    VK_CHECK(vkAllocateCommandBuffers(dev.device(), &ci, &cmd_));
+    cmd_ = render::OwnedCommandBuffer(dev.device(), dev.commandPool());
 }
 
 ImGuiLayer::~ImGuiLayer() {
     vkDeviceWaitIdle(dev_.device());
     ImGui_ImplVulkan_Shutdown();
     ImGui_ImplGlfw_Shutdown();
-    ImGui::DestroyContext();
-    vkFreeCommandBuffers(dev_.device(), dev_.commandPool(), 1, &cmd_);
-    vkDestroyDescriptorPool(dev_.device(), pool_, nullptr);
+    ImGui::DestroyContext();  // then the command buffer and the descriptor pool free themselves
 }
 
 void ImGuiLayer::newFrame() {

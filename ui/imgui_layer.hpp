@@ -7,6 +7,8 @@
 #include <array>
 #include <span>
 
+#include "render/vk_owned.hpp"
+
 struct ImFont;
 
 struct GLFWwindow;
@@ -37,8 +39,8 @@ public:
 private:
     render::Device& dev_;
     render::SwapchainTarget& target_;
-    VkDescriptorPool pool_ = VK_NULL_HANDLE;
-    VkCommandBuffer cmd_ = VK_NULL_HANDLE;
+    render::OwnedDescriptorPool pool_;
+    render::OwnedCommandBuffer cmd_;
     ImFont* presentationFont_ = nullptr;
 };
 
