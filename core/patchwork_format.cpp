@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/errors.hpp"
+#include "core/json_guard.hpp"
 #include "core/limits.hpp"
 
 namespace pw {
@@ -276,53 +277,6 @@ Camera readCamera(const Reader& r, const json& v, const std::string& path) {
 }
 
 constexpr const char* kBases = "bezier, bspline, catmull-rom";
-
-// Byte offset → 1-based line number.
-int lineAt(std::string_view text, size_t byte) {
-    byte = std::min(byte, text.size());
-    int line = 1;
-    for (size_t i = 0; i < byte; ++i)
-        if (text[i] == '\n') ++line;
-    return line;
-}
-
-// nlohmann's message without its "[json.exception.parse_error.101] parse error at line 3, column 5: "
-// prefix (we report the line ourselves).
-std::string parseErrorReason(const std::string& what) {
-    std::string s = what;
-    if (s.rfind("[json.exception.", 0) == 0) {
-        const size_t close = s.find("] ");
-        if (close != std::string::npos) s = s.substr(close + 2);
-    }
-    if (s.rfind("parse error", 0) == 0) {
-        const size_t colon = s.find(": ");
-        if (colon != std::string::npos) s = s.substr(colon + 2);
-    }
-    return "JSON syntax error: " + s;
-}
-
-// A Patchwork document nests 4 deep; refuse absurd nesting before building the DOM, so that a file
-// of millions of '[' cannot exhaust memory. Returns the byte offset of the first bracket too deep.
-constexpr int kMaxJsonDepth = 64;
-size_t excessiveNesting(std::string_view text) {
-    int depth = 0;
-    bool inString = false, escaped = false;
-    for (size_t i = 0; i < text.size(); ++i) {
-        const char c = text[i];
-        if (inString) {
-            if (escaped) escaped = false;
-            else if (c == '\\') escaped = true;
-            else if (c == '"') inString = false;
-        } else if (c == '"') {
-            inString = true;
-        } else if (c == '[' || c == '{') {
-            if (++depth > kMaxJsonDepth) return i;
-        } else if (c == ']' || c == '}') {
-            --depth;
-        }
-    }
-    return std::string_view::npos;
-}
 
 }  // namespace
 
