@@ -23,7 +23,8 @@
 #define PW_FN inline                 // a function defined in a header
 #define PW_CONST inline constexpr    // a named constant
 #define PW_OUT(T) T&                 // an out parameter
-#define PW_PRECISE                   // GLSL's `precise` (no contraction); C++ does not contract here
+#define PW_PRECISE                   // GLSL's `precise` (no contraction); no-op in C++, whose uses
+                                     // (batching bounds, tests) tolerate float-rounding differences
 #define PW_INIT(x) {x}               // a C++ default member value (GLSL blocks have none)
 // A uniform or storage block: a plain struct in C++, the block with its layout in GLSL.
 #define PW_BLOCK(glslHead, cppName) struct cppName

@@ -1,7 +1,8 @@
 // Tessellation-level helpers of the quad (surface.tesc) and triangle (tri_surface.tesc) control
 // shaders: core/patch_math.h's adaptive edge level and rounding with this frame's settings. Both
 // control shaders compute a shared edge's level with the same code from the same canonical points.
-// Needs common.glsl first.
+// Needs common.glsl first, and the control shader's `inIdx[]` (the pool index of each control point)
+// declared before the include.
 #ifdef ADAPTIVE_AND_CULLING
 // Adaptive level of one boundary curve from its four control points in canonical order.
 float adaptiveEdgeLevel(vec3 p[4]) {
