@@ -1,24 +1,16 @@
 #include "core/basis.hpp"
 
+#include "core/enum_names.hpp"
 #include "core/patch_math.h"
 
 namespace pw {
 
-std::string_view basisName(Basis basis) {
-    switch (basis) {
-        case Basis::Bezier: return "bezier";
-        case Basis::BSpline: return "bspline";
-        case Basis::CatmullRom: return "catmull-rom";
-    }
-    return "bezier";
+namespace {
+constexpr std::array<std::string_view, 3> kBasisNames{"bezier", "bspline", "catmull-rom"};
 }
 
-std::optional<Basis> parseBasis(std::string_view name) {
-    if (name == "bezier") return Basis::Bezier;
-    if (name == "bspline") return Basis::BSpline;
-    if (name == "catmull-rom") return Basis::CatmullRom;
-    return std::nullopt;
-}
+std::string_view basisName(Basis basis) { return enumName(basis, kBasisNames); }
+std::optional<Basis> parseBasis(std::string_view name) { return parseEnum<Basis>(name, kBasisNames); }
 
 Mat4 basisMatrix(Basis basis, double tension) {
     switch (basis) {

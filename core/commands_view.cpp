@@ -30,6 +30,20 @@ const Overlay& overlayNamed(const std::string& name) {
     throw EditError("expected an overlay grid, wireframe, normals, boundaries or isocurves, got '" + name + "'");
 }
 
+// A command that sets one enum-valued setting from its name (one of `usage`, '|'-separated), as
+// one undo step named `label`.
+template <class E>
+Command enumSetting(const char* name, const char* label, const char* usage, const char* help,
+                    std::optional<E> (*parse)(std::string_view), void (*set)(Document&, E)) {
+    return {.name = name, .label = label, .usage = usage, .help = help,
+            .run = [=](CommandContext& ctx) {
+                expectArgs(ctx, 1, 1);
+                const std::optional<E> v = parse(ctx.args[0]);
+                if (!v) throw EditError("expected one of " + std::string(usage) + ", got '" + ctx.args[0] + "'");
+                ctx.session.apply(label, [&](Document& d) { set(d, *v); }, false);
+            }};
+}
+
 // "on", "off" or nothing (toggle).
 bool switchArg(const CommandContext& ctx, size_t i, bool current) {
     if (ctx.args.size() <= i) return !current;
@@ -93,14 +107,8 @@ void addViewCommands(CommandTable& t) {
                const bool on = switchArg(ctx, 1, ctx.session.doc.display.*o.flag);
                ctx.session.apply(o.label, [&](Document& d) { d.display.*o.flag = on; }, false);
            }});
-    t.add({.name = "shading", .label = "Shading", .usage = "lit|normal|patch|uv|zebra|gauss|mean",
-           .help = "How the surface is coloured",
-           .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 1, 1);
-               const auto m = parseShading(ctx.args[0]);
-               if (!m) throw EditError("expected lit, normal, patch, uv, zebra, gauss or mean, got '" + ctx.args[0] + "'");
-               ctx.session.apply("Shading", [&](Document& d) { d.display.shading = *m; }, false);
-           }});
+    t.add(enumSetting<ShadingMode>("shading", "Shading", "lit|normal|patch|uv|zebra|gauss|mean", "How the surface is coloured",
+                                   parseShading, [](Document& d, ShadingMode m) { d.display.shading = m; }));
     t.add({.name = "tess", .label = "Tessellation Levels", .usage = "LEVEL | O0 O1 O2 O3 I0 I1",
            .help = "Set every outer and inner level (one number), or the four outer and two inner levels",
            .run = [](CommandContext& ctx) {
@@ -117,14 +125,9 @@ void addViewCommands(CommandTable& t) {
                    d.tess.linked = ctx.args.size() == 1;
                }, false);
            }});
-    t.add({.name = "spacing", .label = "Partitioning", .usage = "equal|fractional_odd|fractional_even|pow2",
-           .help = "Spacing of the tessellator: equal, fractional odd/even (smooth level changes), pow2 (rounded up)",
-           .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 1, 1);
-               const auto sp = parseSpacing(ctx.args[0]);
-               if (!sp) throw EditError("expected equal, fractional_odd, fractional_even or pow2, got '" + ctx.args[0] + "'");
-               ctx.session.apply("Partitioning", [&](Document& d) { d.tess.spacing = *sp; }, false);
-           }});
+    t.add(enumSetting<Spacing>("spacing", "Partitioning", "equal|fractional_odd|fractional_even|pow2",
+                               "Spacing of the tessellator: equal, fractional odd/even (smooth level changes), pow2 (rounded up)",
+                               parseSpacing, [](Document& d, Spacing sp) { d.tess.spacing = sp; }));
 
     t.add(windowToggle("palette", "Command Palette...", "Help", WindowToggle::Palette, {"F3"},
                        "Search every command by name and run it (Enter)"));

@@ -1,6 +1,7 @@
 #include "core/document.hpp"
 
 #include "core/basis.hpp"
+#include "core/enum_names.hpp"
 #include "core/patch_math.h"
 
 #include <algorithm>
@@ -24,13 +25,6 @@ static_assert(uint32_t(Basis::Bezier) == gpu::kBasisBezier && uint32_t(Basis::BS
 
 namespace {
 
-template <typename E, size_t N>
-std::optional<E> parseNamed(std::string_view name, const std::array<std::string_view, N>& names) {
-    for (size_t i = 0; i < N; ++i)
-        if (names[i] == name) return static_cast<E>(i);
-    return std::nullopt;
-}
-
 constexpr std::array<std::string_view, 4> kEdgeNames{"u0", "v0", "u1", "v1"};
 constexpr std::array<std::string_view, 3> kContinuityNames{"C0", "C1", "G1"};
 constexpr std::array<std::string_view, 4> kSpacingNames{"equal", "fractional_odd", "fractional_even", "pow2"};
@@ -39,16 +33,16 @@ constexpr std::array<std::string_view, 7> kShadingNames{"lit", "normal", "patch"
 
 }  // namespace
 
-std::string_view edgeName(Edge e) { return kEdgeNames[static_cast<size_t>(e)]; }
-std::optional<Edge> parseEdge(std::string_view n) { return parseNamed<Edge>(n, kEdgeNames); }
-std::string_view continuityName(Continuity c) { return kContinuityNames[static_cast<size_t>(c)]; }
-std::optional<Continuity> parseContinuity(std::string_view n) { return parseNamed<Continuity>(n, kContinuityNames); }
-std::string_view spacingName(Spacing s) { return kSpacingNames[static_cast<size_t>(s)]; }
-std::optional<Spacing> parseSpacing(std::string_view n) { return parseNamed<Spacing>(n, kSpacingNames); }
-std::string_view adaptiveName(AdaptiveMode m) { return kAdaptiveNames[static_cast<size_t>(m)]; }
-std::optional<AdaptiveMode> parseAdaptive(std::string_view n) { return parseNamed<AdaptiveMode>(n, kAdaptiveNames); }
-std::string_view shadingName(ShadingMode m) { return kShadingNames[static_cast<size_t>(m)]; }
-std::optional<ShadingMode> parseShading(std::string_view n) { return parseNamed<ShadingMode>(n, kShadingNames); }
+std::string_view edgeName(Edge e) { return enumName(e, kEdgeNames); }
+std::optional<Edge> parseEdge(std::string_view n) { return parseEnum<Edge>(n, kEdgeNames); }
+std::string_view continuityName(Continuity c) { return enumName(c, kContinuityNames); }
+std::optional<Continuity> parseContinuity(std::string_view n) { return parseEnum<Continuity>(n, kContinuityNames); }
+std::string_view spacingName(Spacing s) { return enumName(s, kSpacingNames); }
+std::optional<Spacing> parseSpacing(std::string_view n) { return parseEnum<Spacing>(n, kSpacingNames); }
+std::string_view adaptiveName(AdaptiveMode m) { return enumName(m, kAdaptiveNames); }
+std::optional<AdaptiveMode> parseAdaptive(std::string_view n) { return parseEnum<AdaptiveMode>(n, kAdaptiveNames); }
+std::string_view shadingName(ShadingMode m) { return enumName(m, kShadingNames); }
+std::optional<ShadingMode> parseShading(std::string_view n) { return parseEnum<ShadingMode>(n, kShadingNames); }
 
 int edgeSlot(Edge e, int k, int depth) { return gpu::quadEdgeSlot(static_cast<int>(e), k, depth); }
 

@@ -196,6 +196,20 @@ inline uint64_t netWindowCount(uint32_t n, bool closed, uint32_t step) {
     return n >= 4 ? (n - 4) / step + 1 : 0;
 }
 
+// Calls f(index) for every pool index of every patch, net, triangle and curve (uint32_t& for a
+// mutable document, so f may renumber; const uint32_t& otherwise).
+template <class Doc, class F>
+void forEachPointIndex(Doc& doc, F&& f) {
+    for (auto& p : doc.patches)
+        for (auto& i : p.idx) f(i);
+    for (auto& s : doc.surfaces)
+        for (auto& i : s.idx) f(i);
+    for (auto& t : doc.triangles)
+        for (auto& i : t.idx) f(i);
+    for (auto& c : doc.curves)
+        for (auto& i : c.idx) f(i);
+}
+
 // Control points of one window.
 Net16 gatherNet(const Document& doc, const std::array<uint32_t, 16>& idx);
 

@@ -46,28 +46,21 @@ const std::string& EditHistory::undoLabel() const { return canUndo() ? steps_[cu
 const std::string& EditHistory::redoLabel() const { return canRedo() ? steps_[cursor_].label : kEmpty; }
 
 void EditHistory::undo(Document& doc) {
-    if (!canUndo()) return;
-    const Step& s = steps_[--cursor_];
-    if (s.before) {
-        doc = *s.before;
-        return;
-    }
-    for (const PointChange& c : s.points) {
-        if (c.index >= doc.points.size()) throw std::logic_error("EditHistory::undo: document does not match history");
-        doc.points[c.index] = c.before;
-    }
+    if (canUndo()) restore(steps_[--cursor_], doc, false);
 }
 
 void EditHistory::redo(Document& doc) {
-    if (!canRedo()) return;
-    const Step& s = steps_[cursor_++];
-    if (s.after) {
-        doc = *s.after;
+    if (canRedo()) restore(steps_[cursor_++], doc, true);
+}
+
+void EditHistory::restore(const Step& s, Document& doc, bool forward) {
+    if (const std::unique_ptr<Document>& whole = forward ? s.after : s.before) {
+        doc = *whole;
         return;
     }
     for (const PointChange& c : s.points) {
-        if (c.index >= doc.points.size()) throw std::logic_error("EditHistory::redo: document does not match history");
-        doc.points[c.index] = c.after;
+        if (c.index >= doc.points.size()) throw std::logic_error("EditHistory: document does not match history");
+        doc.points[c.index] = forward ? c.after : c.before;
     }
 }
 

@@ -49,6 +49,9 @@ private:
         std::unique_ptr<Document> before, after;  // used otherwise
     };
 
+    // Puts doc in the state after (forward) or before step s.
+    static void restore(const Step& s, Document& doc, bool forward);
+
     std::vector<Step> steps_;
     size_t cursor_ = 0;  // steps_[0, cursor_) are done
     int64_t savedCursor_ = 0;

@@ -68,17 +68,13 @@ void EditSession::commit(const std::string& label) {
     ++version_;
 }
 
-bool EditSession::undo() {
-    if (!history_.canUndo()) return false;
-    history_.undo(doc);
-    markCommitted();
-    changed(true);
-    return true;
-}
+bool EditSession::undo() { return step(false); }
+bool EditSession::redo() { return step(true); }
 
-bool EditSession::redo() {
-    if (!history_.canRedo()) return false;
-    history_.redo(doc);
+bool EditSession::step(bool forward) {
+    if (!(forward ? history_.canRedo() : history_.canUndo())) return false;
+    if (forward) history_.redo(doc);
+    else history_.undo(doc);
     markCommitted();
     changed(true);
     return true;

@@ -80,6 +80,7 @@ private:
     uint64_t generation_ = 0, version_ = 0, topologyVersion_ = 0, serial_ = 0;
     bool forceModified_ = false;
     void markCommitted();
+    bool step(bool forward);  // undo (false) or redo (true)
 };
 
 }  // namespace pw

@@ -132,17 +132,14 @@ std::pair<Net16, Net16> splitBezierU(const Net16& net, double u) {
 }
 
 std::pair<Net16, Net16> splitBezierV(const Net16& net, double v) {
-    Net16 a, b;
-    for (int j = 0; j < 4; ++j) {
-        const Vec3 col[4] = {net[j], net[4 + j], net[8 + j], net[12 + j]};
-        Vec3 l[4], r[4];
-        casteljau4(col, v, l, r);
-        for (int i = 0; i < 4; ++i) {
-            a[i * 4 + j] = l[i];
-            b[i * 4 + j] = r[i];
-        }
-    }
-    return {a, b};
+    auto transpose = [](const Net16& n) {
+        Net16 t;
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) t[j * 4 + i] = n[i * 4 + j];
+        return t;
+    };
+    auto [a, b] = splitBezierU(transpose(net), v);
+    return {transpose(a), transpose(b)};
 }
 
 Vec3 evaluateSharedBezierEdge(const std::array<Vec3, 4>& pts, const std::array<uint32_t, 4>& poolIdx, int k, int n) {

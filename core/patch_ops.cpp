@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "core/constraint_solver.hpp"
 #include "core/bezier_triangle.hpp"
@@ -11,9 +12,19 @@ namespace pw {
 
 namespace {
 
-void checkPatch(const Document& doc, uint32_t p) {
-    if (p >= doc.patches.size()) throw EditError("no patch " + std::to_string(p) + " (the document has " +
-                                                 std::to_string(doc.patches.size()) + ")");
+template <class Item>
+void checkItem(const std::vector<Item>& items, uint32_t i, const char* kind) {
+    if (i >= items.size())
+        throw EditError(std::string(kind) + " " + std::to_string(i) + " does not exist (the document has " + std::to_string(items.size()) + ")");
+}
+
+void checkPatch(const Document& doc, uint32_t p) { checkItem(doc.patches, p, "patch"); }
+
+// Removes item i and the pool points only it used.
+template <class Item>
+void eraseItem(Document& doc, std::vector<Item>& items, uint32_t i) {
+    items.erase(items.begin() + i);
+    compactPool(doc);
 }
 
 void checkBezier(const Document& doc, uint32_t p, const char* what) {
@@ -93,8 +104,7 @@ uint32_t duplicatePatch(Document& doc, uint32_t p, const Vec3& offset) {
 void deletePatch(Document& doc, uint32_t p) {
     checkPatch(doc, p);
     dropPatchFromJoins(doc, p);
-    doc.patches.erase(doc.patches.begin() + p);
-    compactPool(doc);
+    eraseItem(doc, doc.patches, p);
 }
 
 void flipPatch(Document& doc, uint32_t p) {
@@ -230,14 +240,11 @@ size_t joinEdges(Document& doc, uint32_t a, Edge ea, uint32_t b, Edge eb, Contin
         doc.points[ia] = 0.5 * (doc.points[ia] + doc.points[ib]);
         remap.emplace_back(ib, ia);
     }
-    for (auto [from, to] : remap) {
-        for (Patch& pt : doc.patches)
-            for (uint32_t& i : pt.idx)
-                if (i == from) i = to;
-        for (Surface& s : doc.surfaces)
-            for (uint32_t& i : s.idx)
-                if (i == from) i = to;
-    }
+    // Everything that used B's edge points (triangles and curves too) now uses A's.
+    for (auto [from, to] : remap)
+        forEachPointIndex(doc, [from = from, to = to](uint32_t& i) {
+            if (i == from) i = to;
+        });
     double alpha = 1.0;
     if (continuity == Continuity::G1) {
         double sa = 0.0, sb = 0.0;
@@ -286,10 +293,8 @@ uint32_t curveFromEdge(Document& doc, uint32_t p, Edge e) {
 }
 
 void deleteCurve(Document& doc, uint32_t c) {
-    if (c >= doc.curves.size()) throw EditError("curve " + std::to_string(c) + " does not exist (the document has " +
-                                                std::to_string(doc.curves.size()) + ")");
-    doc.curves.erase(doc.curves.begin() + c);
-    compactPool(doc);
+    checkItem(doc.curves, c, "curve");
+    eraseItem(doc, doc.curves, c);
 }
 
 uint32_t addTriangle(Document& doc, const Vec3& center, double size, bool zUp) {
@@ -312,34 +317,20 @@ uint32_t addTriangle(Document& doc, const Vec3& center, double size, bool zUp) {
     return uint32_t(doc.triangles.size() - 1);
 }
 
-namespace {
-void checkTriangle(const Document& doc, uint32_t t) {
-    if (t >= doc.triangles.size())
-        throw EditError("triangle " + std::to_string(t) + " does not exist (the document has " + std::to_string(doc.triangles.size()) + ")");
-}
-}  // namespace
 
 uint32_t duplicateTriangle(Document& doc, uint32_t t, const Vec3& offset) {
-    checkTriangle(doc, t);
+    checkItem(doc.triangles, t, "triangle");
     return duplicateWithOwnPoints(doc, doc.triangles, t, offset, "triangle");
 }
 
 void deleteTriangle(Document& doc, uint32_t t) {
-    checkTriangle(doc, t);
-    doc.triangles.erase(doc.triangles.begin() + t);
-    compactPool(doc);
+    checkItem(doc.triangles, t, "triangle");
+    eraseItem(doc, doc.triangles, t);
 }
 
 void compactPool(Document& doc) {
     std::vector<uint32_t> remap(doc.points.size(), UINT32_MAX);
-    for (const Patch& p : doc.patches)
-        for (uint32_t i : p.idx) remap[i] = 0;
-    for (const Surface& s : doc.surfaces)
-        for (uint32_t i : s.idx) remap[i] = 0;
-    for (const TrianglePatch& t : doc.triangles)
-        for (uint32_t i : t.idx) remap[i] = 0;
-    for (const BezierCurve& c : doc.curves)
-        for (uint32_t i : c.idx) remap[i] = 0;
+    forEachPointIndex(std::as_const(doc), [&](uint32_t i) { remap[i] = 0; });
     std::vector<Vec3> pts;
     pts.reserve(doc.points.size());
     for (size_t i = 0; i < doc.points.size(); ++i)
@@ -349,14 +340,7 @@ void compactPool(Document& doc) {
         }
     if (pts.size() == doc.points.size()) return;
     doc.points = std::move(pts);
-    for (Patch& p : doc.patches)
-        for (uint32_t& i : p.idx) i = remap[i];
-    for (Surface& s : doc.surfaces)
-        for (uint32_t& i : s.idx) i = remap[i];
-    for (TrianglePatch& t : doc.triangles)
-        for (uint32_t& i : t.idx) i = remap[i];
-    for (BezierCurve& c : doc.curves)
-        for (uint32_t& i : c.idx) i = remap[i];
+    forEachPointIndex(doc, [&](uint32_t& i) { i = remap[i]; });
 }
 
 }  // namespace pw

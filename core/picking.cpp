@@ -76,18 +76,9 @@ std::vector<uint32_t> pointsInBox(const Camera& cam, const std::vector<Vec3>& po
 
 std::vector<bool> usedPointMask(const Document& doc) {
     std::vector<bool> used(doc.points.size(), false);
-    for (const Patch& p : doc.patches)
-        for (uint32_t i : p.idx)
-            if (i < used.size()) used[i] = true;
-    for (const Surface& s : doc.surfaces)
-        for (uint32_t i : s.idx)
-            if (i < used.size()) used[i] = true;
-    for (const TrianglePatch& t : doc.triangles)
-        for (uint32_t i : t.idx)
-            if (i < used.size()) used[i] = true;
-    for (const BezierCurve& c : doc.curves)
-        for (uint32_t i : c.idx)
-            if (i < used.size()) used[i] = true;
+    forEachPointIndex(doc, [&](uint32_t i) {
+        if (i < used.size()) used[i] = true;
+    });
     return used;
 }
 

@@ -3,24 +3,22 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/enum_names.hpp"
 #include "core/patch_math.h"
 
 namespace pw {
 
-std::string_view domainName(DomainKind k) {
-    switch (k) {
-        case DomainKind::Quad: return "quad";
-        case DomainKind::Triangle: return "tri";
-        case DomainKind::Isoline: return "isoline";
-    }
-    return "quad";
-}
+namespace {
+constexpr std::array<std::string_view, 3> kDomainNames{"quad", "tri", "isoline"};
+constexpr std::array<std::string_view, 3> kDomainPlurals{"quads", "triangles", "isolines"};
+}  // namespace
+
+std::string_view domainName(DomainKind k) { return enumName(k, kDomainNames); }
 
 std::optional<DomainKind> parseDomain(std::string_view name) {
-    if (name == "quad" || name == "quads") return DomainKind::Quad;
-    if (name == "tri" || name == "triangle" || name == "triangles") return DomainKind::Triangle;
-    if (name == "isoline" || name == "isolines") return DomainKind::Isoline;
-    return std::nullopt;
+    if (name == "triangle") return DomainKind::Triangle;
+    if (auto k = parseEnum<DomainKind>(name, kDomainNames)) return k;
+    return parseEnum<DomainKind>(name, kDomainPlurals);
 }
 
 float controlShaderLevel(float level, Spacing s) {

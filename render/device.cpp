@@ -233,13 +233,13 @@ Device::Device(const DeviceOptions& options) {
         VkPhysicalDeviceFeatures enable{};
         enable.tessellationShader = VK_TRUE;
         enable.fillModeNonSolid = VK_TRUE;
-        enable.geometryShader = f.geometryShader;
-        enable.pipelineStatisticsQuery = f.pipelineStatisticsQuery;
-        enable.wideLines = f.wideLines;
-        enable.largePoints = f.largePoints;
-        enable.vertexPipelineStoresAndAtomics = f.vertexPipelineStoresAndAtomics;
-        enable.shaderTessellationAndGeometryPointSize = f.shaderTessellationAndGeometryPointSize;
-        enable.depthBiasClamp = f.depthBiasClamp;
+        // Optional features: enabled where present, reported in caps_ above.
+        for (VkBool32 VkPhysicalDeviceFeatures::*m :
+             {&VkPhysicalDeviceFeatures::geometryShader, &VkPhysicalDeviceFeatures::pipelineStatisticsQuery,
+              &VkPhysicalDeviceFeatures::wideLines, &VkPhysicalDeviceFeatures::largePoints,
+              &VkPhysicalDeviceFeatures::vertexPipelineStoresAndAtomics,
+              &VkPhysicalDeviceFeatures::shaderTessellationAndGeometryPointSize, &VkPhysicalDeviceFeatures::depthBiasClamp})
+            enable.*m = f.*m;
         VkPhysicalDeviceVulkan13Features e13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
         e13.dynamicRendering = VK_TRUE;
         e13.maintenance4 = f13.maintenance4;  // relaxed interface matching (point-mode TES -> normals GS)

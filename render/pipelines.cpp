@@ -20,6 +20,67 @@ std::vector<char> readFile(const std::filesystem::path& p) {
     return std::vector<char>((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
+// Where pipelines are built for: device, layout, cache and attachment formats.
+struct Targets {
+    Device& dev;
+    VkPipelineLayout layout;
+    VkPipelineCache cache;
+    VkFormat color, depth;
+    VkSampleCountFlagBits samples;
+    VkPipeline build(const PipelineDesc& pd) const { return buildPipeline(dev, layout, cache, pd, color, depth, samples); }
+};
+
+// Stages every tessellated family shares: vertex, the fragment shader per varyings set, the line
+// fragment shader and the normals geometry shader (null where the device has none).
+struct SharedStages {
+    VkShaderModule vert;
+    const VkShaderModule* frag;  // [kVaryingsVariants]
+    VkShaderModule lineFrag, geom;
+};
+
+// The pipelines of one patch kind (quad patches, Bézier triangles): shaded by surfaceIndex,
+// wireframe and normal overlays by overlayIndex.
+struct FamilyOut {
+    std::array<VkPipeline, kSpacingVariants * kLevelsVariants * kVaryingsVariants>& surface;
+    std::array<VkPipeline, kSpacingVariants * kLevelsVariants>& wire;
+    std::array<VkPipeline, kSpacingVariants * kLevelsVariants>& normals;
+};
+
+template <class Mod>
+void buildTessFamily(const Targets& t, const SharedStages& sh, uint32_t controlPoints, std::array<VkShaderModule, kLevelsVariants> tesc,
+                     const spirv::Blob* const (&tese)[kSpacingVariants][kVaryingsVariants],
+                     const spirv::Blob* const (&pointsTese)[kSpacingVariants], Mod&& mod, FamilyOut out) {
+    for (int s = 0; s < kSpacingVariants; ++s) {
+        const VkShaderModule te[kVaryingsVariants] = {mod(*tese[s][0]), mod(*tese[s][1])};
+        const VkShaderModule pte = sh.geom ? mod(*pointsTese[s]) : VK_NULL_HANDLE;
+        for (int l = 0; l < kLevelsVariants; ++l) {
+            const auto lv = LevelsVariant(l);
+            for (int v = 0; v < kVaryingsVariants; ++v) {
+                PipelineDesc pd;
+                pd.tess = true;
+                pd.patchControlPoints = controlPoints;
+                pd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, sh.vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc[size_t(l)]},
+                             {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, te[v]}, {VK_SHADER_STAGE_FRAGMENT_BIT, sh.frag[v]}};
+                out.surface[surfaceIndex(s, lv, VaryingsVariant(v))] = t.build(pd);
+                if (v != int(VaryingsVariant::Lean)) continue;
+                pd.polygon = VK_POLYGON_MODE_LINE;
+                pd.depthWrite = false;
+                pd.depthBias = true;
+                out.wire[overlayIndex(s, lv)] = t.build(pd);
+            }
+            if (!sh.geom) continue;
+            PipelineDesc nd;
+            nd.tess = true;
+            nd.patchControlPoints = controlPoints;
+            nd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, sh.vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc[size_t(l)]},
+                         {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, pte},
+                         {VK_SHADER_STAGE_GEOMETRY_BIT, sh.geom}, {VK_SHADER_STAGE_FRAGMENT_BIT, sh.lineFrag}};
+            nd.depthWrite = false;
+            out.normals[overlayIndex(s, lv)] = t.build(nd);
+        }
+    }
+}
+
 }  // namespace
 
 std::filesystem::path pipelineCacheDir() {
@@ -72,7 +133,6 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
         return modules.emplace_back(dev.device(), makeModule(dev, blob)).get();
     };
     VkShaderModule vert = mod(spirv::surface_vert);
-    const VkShaderModule tesc[kLevelsVariants] = {mod(spirv::surface_tesc_fixed), mod(spirv::surface_tesc_full)};
     const VkShaderModule frag[kVaryingsVariants] = {mod(spirv::surface_frag), mod(spirv::surface_frag_full)};
     const spirv::Blob* tese[kSpacingVariants][kVaryingsVariants] = {
         {&spirv::surface_tese_equal, &spirv::surface_tese_equal_full},
@@ -82,74 +142,19 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
     VkShaderModule lineFrag = mod(spirv::line_frag);
     VkShaderModule geom = dev.caps().geometryShader ? mod(spirv::normals_geom) : VK_NULL_HANDLE;
 
-    for (int s = 0; s < kSpacingVariants; ++s) {
-        const VkShaderModule te[kVaryingsVariants] = {mod(*tese[s][0]), mod(*tese[s][1])};
-        const VkShaderModule pte = geom ? mod(*ptese[s]) : VK_NULL_HANDLE;
-        for (int l = 0; l < kLevelsVariants; ++l) {
-            const auto lv = LevelsVariant(l);
-            for (int v = 0; v < kVaryingsVariants; ++v) {
-                PipelineDesc pd;
-                pd.tess = true;
-                pd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc[l]},
-                             {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, te[v]}, {VK_SHADER_STAGE_FRAGMENT_BIT, frag[v]}};
-                set.surface[surfaceIndex(s, lv, VaryingsVariant(v))] = buildPipeline(dev, set.layout, set.cache, pd, color, depth, samples);
-                if (v != int(VaryingsVariant::Lean)) continue;
-                pd.polygon = VK_POLYGON_MODE_LINE;
-                pd.depthWrite = false;
-                pd.depthBias = true;
-                set.wire[overlayIndex(s, lv)] = buildPipeline(dev, set.layout, set.cache, pd, color, depth, samples);
-            }
-            if (geom) {
-                PipelineDesc nd;
-                nd.tess = true;
-                nd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc[l]},
-                             {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, pte},
-                             {VK_SHADER_STAGE_GEOMETRY_BIT, geom}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
-                nd.depthWrite = false;
-                set.normals[overlayIndex(s, lv)] = buildPipeline(dev, set.layout, set.cache, nd, color, depth, samples);
-            }
-        }
-    }
+    const Targets targets{dev, set.layout, set.cache, color, depth, samples};
+    const SharedStages shared{vert, frag, lineFrag, geom};
+    buildTessFamily(targets, shared, 16, {mod(spirv::surface_tesc_fixed), mod(spirv::surface_tesc_full)}, tese, ptese, mod,
+                    {set.surface, set.wire, set.normals});
     // Bézier triangles: the same vertex and fragment shaders, their own control and evaluation shaders.
-    {
-        const VkShaderModule ttesc[kLevelsVariants] = {mod(spirv::tri_surface_tesc_fixed), mod(spirv::tri_surface_tesc_full)};
-        const spirv::Blob* ttese[kSpacingVariants][kVaryingsVariants] = {
-            {&spirv::tri_surface_tese_equal, &spirv::tri_surface_tese_equal_full},
-            {&spirv::tri_surface_tese_odd, &spirv::tri_surface_tese_odd_full},
-            {&spirv::tri_surface_tese_even, &spirv::tri_surface_tese_even_full}};
-        const spirv::Blob* tptese[kSpacingVariants] = {&spirv::tri_points_tese_equal, &spirv::tri_points_tese_odd,
-                                                       &spirv::tri_points_tese_even};
-        for (int s = 0; s < kSpacingVariants; ++s) {
-            const VkShaderModule te[kVaryingsVariants] = {mod(*ttese[s][0]), mod(*ttese[s][1])};
-            const VkShaderModule pte = geom ? mod(*tptese[s]) : VK_NULL_HANDLE;
-            for (int l = 0; l < kLevelsVariants; ++l) {
-                const auto lv = LevelsVariant(l);
-                for (int v = 0; v < kVaryingsVariants; ++v) {
-                    PipelineDesc pd;
-                    pd.tess = true;
-                    pd.patchControlPoints = 10;
-                    pd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, ttesc[l]},
-                                 {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, te[v]}, {VK_SHADER_STAGE_FRAGMENT_BIT, frag[v]}};
-                    set.triSurface[surfaceIndex(s, lv, VaryingsVariant(v))] = buildPipeline(dev, set.layout, set.cache, pd, color, depth, samples);
-                    if (v != int(VaryingsVariant::Lean)) continue;
-                    pd.polygon = VK_POLYGON_MODE_LINE;
-                    pd.depthWrite = false;
-                    pd.depthBias = true;
-                    set.triWire[overlayIndex(s, lv)] = buildPipeline(dev, set.layout, set.cache, pd, color, depth, samples);
-                }
-                if (geom) {
-                    PipelineDesc nd;
-                    nd.tess = true;
-                    nd.patchControlPoints = 10;
-                    nd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, ttesc[l]},
-                                 {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, pte},
-                                 {VK_SHADER_STAGE_GEOMETRY_BIT, geom}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
-                    nd.depthWrite = false;
-                    set.triNormals[overlayIndex(s, lv)] = buildPipeline(dev, set.layout, set.cache, nd, color, depth, samples);
-                }
-            }
-        }
-    }
+    const spirv::Blob* ttese[kSpacingVariants][kVaryingsVariants] = {
+        {&spirv::tri_surface_tese_equal, &spirv::tri_surface_tese_equal_full},
+        {&spirv::tri_surface_tese_odd, &spirv::tri_surface_tese_odd_full},
+        {&spirv::tri_surface_tese_even, &spirv::tri_surface_tese_even_full}};
+    const spirv::Blob* tptese[kSpacingVariants] = {&spirv::tri_points_tese_equal, &spirv::tri_points_tese_odd,
+                                                   &spirv::tri_points_tese_even};
+    buildTessFamily(targets, shared, 10, {mod(spirv::tri_surface_tesc_fixed), mod(spirv::tri_surface_tesc_full)}, ttese, tptese,
+                    mod, {set.triSurface, set.triWire, set.triNormals});
     // Curves and isocurves: the isoline domain; lines drawn depth-tested over the surface.
     {
         const VkShaderModule ctesc = mod(spirv::curve_tesc), itesc = mod(spirv::isocurve_tesc);
@@ -162,11 +167,11 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
             cd.depthWrite = false;
             cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, ctesc},
                          {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(*ctese[s])}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
-            set.curves[size_t(s)] = buildPipeline(dev, set.layout, set.cache, cd, color, depth, samples);
+            set.curves[size_t(s)] = targets.build(cd);
             cd.patchControlPoints = 16;
             cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, itesc},
                          {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(*itese[s])}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
-            set.isocurves[size_t(s)] = buildPipeline(dev, set.layout, set.cache, cd, color, depth, samples);
+            set.isocurves[size_t(s)] = targets.build(cd);
         }
     }
     const spirv::Blob* meshVert[kVaryingsVariants] = {&spirv::mesh_vert, &spirv::mesh_vert_full};
@@ -175,7 +180,7 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
         md.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
         md.vertexLayout = v == int(VaryingsVariant::Full) ? 1 : 3;
         md.stages = {{VK_SHADER_STAGE_VERTEX_BIT, mod(*meshVert[v])}, {VK_SHADER_STAGE_FRAGMENT_BIT, frag[v]}};
-        set.mesh[v] = buildPipeline(dev, set.layout, set.cache, md, color, depth, samples);
+        set.mesh[v] = targets.build(md);
     }
     {
         VkShaderModule gv = mod(spirv::grid_vert);
@@ -184,17 +189,17 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
         gd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, gv}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
         gd.depthTest = false;
         gd.depthWrite = false;
-        set.gridLines = buildPipeline(dev, set.layout, set.cache, gd, color, depth, samples);
+        set.gridLines = targets.build(gd);
         gd.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
-        set.gridPoints = buildPipeline(dev, set.layout, set.cache, gd, color, depth, samples);
+        set.gridPoints = targets.build(gd);
         PipelineDesc cd;
         cd.topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST;
         cd.vertexLayout = 2;
         cd.depthWrite = false;
         cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, mod(spirv::colorline_vert)}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
-        set.colorLines = buildPipeline(dev, set.layout, set.cache, cd, color, depth, samples);
+        set.colorLines = targets.build(cd);
         cd.blend = true;
-        set.groundLines = buildPipeline(dev, set.layout, set.cache, cd, color, depth, samples);
+        set.groundLines = targets.build(cd);
     }
     set.createMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     return set;

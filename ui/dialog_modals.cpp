@@ -11,6 +11,18 @@
 #include "ui/test_trace.hpp"
 
 namespace pw::ui {
+namespace {
+
+// Opens the modal `name` when `openRequest` is set (and clears it), centred in the window; true
+// while it is shown (then the caller draws it and calls ImGui::EndPopup).
+bool beginCentredModal(const char* name, bool& openRequest) {
+    if (std::exchange(openRequest, false)) ImGui::OpenPopup(name);
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    return ImGui::BeginPopupModal(name, nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+}
+
+}  // namespace
 
 void Dialogs::askToDiscard(const std::vector<std::string>& words) {
     pendingCommand_ = words;
@@ -28,14 +40,7 @@ void Dialogs::offerRecovery(std::vector<AutosaveEntry> entries) {
 }
 
 void Dialogs::drawModals(PanelContext& ctx, const std::function<void()>& recoverFirst) {
-    const ImGuiIO& io = ImGui::GetIO();
-    const ImVec2 centre(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f);
-    if (openError_) {
-        ImGui::OpenPopup("Error");
-        openError_ = false;
-    }
-    ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    if (ImGui::BeginPopupModal("Error", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    if (beginCentredModal("Error", openError_)) {
         traceModal("error");
         ImGui::PushTextWrapPos(560.0f);
         ImGui::TextUnformatted(errorMessage_.c_str());
@@ -51,12 +56,7 @@ void Dialogs::drawModals(PanelContext& ctx, const std::function<void()>& recover
         ImGui::EndPopup();
     }
 
-    if (openUnsavedPrompt_) {
-        ImGui::OpenPopup("Unsaved changes");
-        openUnsavedPrompt_ = false;
-    }
-    ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    if (beginCentredModal("Unsaved changes", openUnsavedPrompt_)) {
         traceModal("unsaved");
         ImGui::Text("Save changes to %s?", ctx.session().path().empty() ? "the untitled document" : ctx.session().path().c_str());
         if (ImGui::Button("Save", ImVec2(100, 0))) {
@@ -88,12 +88,7 @@ void Dialogs::drawModals(PanelContext& ctx, const std::function<void()>& recover
         ImGui::EndPopup();
     }
 
-    if (offerRecovery_) {
-        ImGui::OpenPopup("Recover autosave");
-        offerRecovery_ = false;
-    }
-    ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    if (ImGui::BeginPopupModal("Recover autosave", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    if (beginCentredModal("Recover autosave", offerRecovery_)) {
         if (!recoverable.empty()) {
             const AutosaveEntry& e = recoverable.front();
             ImGui::Text("Patchwork did not exit cleanly. An autosave of %s exists.",

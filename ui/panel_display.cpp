@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include "ui/imgui_tip.hpp"
+#include "ui/panel_rows.hpp"
 #include "ui/side_panels.hpp"
 #include "ui/test_trace.hpp"
 
@@ -12,16 +13,9 @@ void drawDisplayPanel(PanelContext& ctx) {
     if (!ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) return;
     EditSession& s = ctx.session();
     DisplaySettings& ds = s.doc.display;
-    auto edited = [&](bool changed, const char* label) {
-        if (changed) ctx.settingsChanged();
-        if (ImGui::IsItemDeactivatedAfterEdit() || (changed && !ImGui::IsItemActive())) s.commit(label);
-    };
+    auto edited = [&](bool changed, const char* step) { commitEdit(ctx, changed, step); };
     const char* shadings[] = {"lit", "normal", "patch id", "uv checker", "zebra", "gaussian curvature", "mean curvature"};
-    int sh = int(ds.shading);
-    if (ImGui::Combo("Shading", &sh, shadings, 7)) {
-        ds.shading = ShadingMode(sh);
-        s.commit("Shading");
-    }
+    enumCombo(ctx, "Shading", ds.shading, shadings, "Shading");
     tip("How the surface is coloured");
     auto flag = [&](const char* label, bool& v, const char* help) {
         bool b = v;

@@ -11,6 +11,51 @@
 
 namespace pw::ui {
 
+namespace {
+
+struct OwnLevelsText {
+    const char* what;    // "patch", "triangle": in the undo step names
+    const char* id;      // ImGui id suffix and trace name part
+    const char* overrideTip, *outerTip, *innerTip;
+};
+
+// The name row and the own-levels rows of a patch (4 outer + 2 inner) or a triangle (3 + 1).
+template <size_t N>
+void ownLevelsRows(PanelContext& ctx, const OwnLevelsText& t, std::string& name, std::optional<std::array<float, N>>& levels,
+                   int outerCount) {
+    EditSession& s = ctx.session();
+    const std::string what = t.what, id = t.id;
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "%s", name.c_str());
+    if (ImGui::InputText(("Name##" + id).c_str(), buf, sizeof buf)) name = buf;
+    if (ImGui::IsItemDeactivatedAfterEdit()) s.commit("Rename " + what);
+    tip("Name shown in the outliner");
+    const std::string step = (what == "patch" ? "Patch" : "Triangle") + std::string(" tessellation override");
+    bool ov = levels.has_value();
+    if (ImGui::Checkbox(("Override tessellation##" + id).c_str(), &ov)) {
+        levels.reset();
+        if (ov) levels.emplace().fill(8.0f);
+        s.commit(step);
+        ctx.documentChanged(false);
+    }
+    traceItem("inspector." + (id.empty() ? std::string("patch") : id) + "Override");
+    tip(t.overrideTip);
+    if (!levels) return;
+    const float lo = 1.0f, hi = 64.0f;
+    const int counts[2] = {outerCount, int(N) - outerCount};
+    const char* labels[2] = {"Outer##ov", "Inner##ov"};
+    const char* tips[2] = {t.outerTip, t.innerTip};
+    for (int k = 0; k < 2; ++k) {
+        float* data = levels->data() + (k == 0 ? 0 : outerCount);
+        if (ImGui::SliderScalarN((labels[k] + id).c_str(), ImGuiDataType_Float, data, counts[k], &lo, &hi, "%.0f"))
+            ctx.documentChanged(false);
+        if (ImGui::IsItemDeactivatedAfterEdit()) s.commit(step);
+        tip(tips[k]);
+    }
+}
+
+}  // namespace
+
 void InspectorPanel::setPoint(PanelContext& ctx, uint32_t p, const Vec3& position) {
     const std::string error = held_.set(ctx.session(), p, position);
     if (!error.empty()) return ctx.showError(error);
@@ -53,54 +98,17 @@ void InspectorPanel::draw(PanelContext& ctx) {
         ImGui::Separator();
         Patch& pt = doc.patches[size_t(sel.patch)];
         ImGui::Text("Patch %d  (%s)", sel.patch, basisName(pt.basis).data());
-        char name[128];
-        std::snprintf(name, sizeof name, "%s", pt.name.c_str());
-        if (ImGui::InputText("Name", name, sizeof name)) pt.name = name;
-        if (ImGui::IsItemDeactivatedAfterEdit()) s.commit("Rename patch");
-        tip("Name shown in the outliner");
-        bool ov = pt.tessOverride.has_value();
-        if (ImGui::Checkbox("Override tessellation", &ov)) {
-            if (ov) pt.tessOverride = std::array<float, 6>{8, 8, 8, 8, 8, 8};
-            else pt.tessOverride.reset();
-            s.commit("Patch tessellation override");
-            ctx.documentChanged(false);
-        }
-        tip("Give this patch its own outer/inner levels");
-        if (pt.tessOverride) {
-            if (ImGui::SliderFloat4("Outer##ov", pt.tessOverride->data(), 1.0f, 64.0f, "%.0f")) ctx.documentChanged(false);
-            if (ImGui::IsItemDeactivatedAfterEdit()) s.commit("Patch tessellation override");
-            tip("Outer levels of edges u0, v0, u1, v1");
-            if (ImGui::SliderFloat2("Inner##ov", pt.tessOverride->data() + 4, 1.0f, 64.0f, "%.0f")) ctx.documentChanged(false);
-            if (ImGui::IsItemDeactivatedAfterEdit()) s.commit("Patch tessellation override");
-            tip("Inner levels along u and v");
-        }
+        ownLevelsRows(ctx, {"patch", "patch", "Give this patch its own outer/inner levels", "Outer levels of edges u0, v0, u1, v1",
+                            "Inner levels along u and v"},
+                      pt.name, pt.tessOverride, 4);
     }
     if (sel.triangle >= 0 && sel.triangle < int(doc.triangles.size())) {
         ImGui::Separator();
         TrianglePatch& tri = doc.triangles[size_t(sel.triangle)];
         ImGui::Text("Bézier triangle %d  (10 points)", sel.triangle);
-        char name[128];
-        std::snprintf(name, sizeof name, "%s", tri.name.c_str());
-        if (ImGui::InputText("Name##tri", name, sizeof name)) tri.name = name;
-        if (ImGui::IsItemDeactivatedAfterEdit()) s.commit("Rename triangle");
-        tip("Name shown in the outliner");
-        bool ov = tri.tessOverride.has_value();
-        if (ImGui::Checkbox("Override tessellation##tri", &ov)) {
-            if (ov) tri.tessOverride = std::array<float, 4>{8, 8, 8, 8};
-            else tri.tessOverride.reset();
-            s.commit("Triangle tessellation override");
-            ctx.documentChanged(false);
-        }
-        traceItem("inspector.triOverride");
-        tip("Give this triangle its own three outer levels and inner level");
-        if (tri.tessOverride) {
-            if (ImGui::SliderFloat3("Outer##triov", tri.tessOverride->data(), 1.0f, 64.0f, "%.0f")) ctx.documentChanged(false);
-            if (ImGui::IsItemDeactivatedAfterEdit()) s.commit("Triangle tessellation override");
-            tip("Outer levels of edges u = 0, v = 0, w = 0");
-            if (ImGui::SliderFloat("Inner##triov", tri.tessOverride->data() + 3, 1.0f, 64.0f, "%.0f")) ctx.documentChanged(false);
-            if (ImGui::IsItemDeactivatedAfterEdit()) s.commit("Triangle tessellation override");
-            tip("Inner level");
-        }
+        ownLevelsRows(ctx, {"triangle", "tri", "Give this triangle its own three outer levels and inner level",
+                            "Outer levels of edges u = 0, v = 0, w = 0", "Inner level"},
+                      tri.name, tri.tessOverride, 3);
     }
 }
 

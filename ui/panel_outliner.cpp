@@ -13,41 +13,25 @@ void drawOutliner(PanelContext& ctx) {
     const Document& doc = ctx.session().doc;
     Selection& sel = ctx.session().sel;
     ImGui::BeginChild("outliner", ImVec2(0, 200), true);
-    for (size_t i = 0; i < doc.patches.size(); ++i) {
-        const Patch& p = doc.patches[i];
+    // One row per item; a click selects the item alone (a curve also selects its points).
+    auto row = [&](int& slot, size_t i, const char* fmt, auto... args) {
         char label[160];
-        std::snprintf(label, sizeof label, "%zu  %s", i, p.name.empty() ? "patch" : p.name.c_str());
-        if (ImGui::Selectable(label, sel.patch == int(i))) {
-            sel.clear();
-            sel.patch = int(i);
-        }
-    }
+        std::snprintf(label, sizeof label, fmt, i, args...);
+        if (!ImGui::Selectable(label, slot == int(i))) return false;
+        sel.clear();
+        slot = int(i);
+        return true;
+    };
+    for (size_t i = 0; i < doc.patches.size(); ++i)
+        row(sel.patch, i, "%zu  %s", doc.patches[i].name.empty() ? "patch" : doc.patches[i].name.c_str());
     for (size_t i = 0; i < doc.surfaces.size(); ++i) {
-        char label[160];
-        std::snprintf(label, sizeof label, "net %zu  %s (%ux%u, %s)", i, doc.surfaces[i].name.c_str(), doc.surfaces[i].rows,
-                      doc.surfaces[i].cols, basisName(doc.surfaces[i].basis).data());
-        if (ImGui::Selectable(label, sel.surface == int(i))) {
-            sel.clear();
-            sel.surface = int(i);
-        }
+        const Surface& n = doc.surfaces[i];
+        row(sel.surface, i, "net %zu  %s (%ux%u, %s)", n.name.c_str(), n.rows, n.cols, basisName(n.basis).data());
     }
-    for (size_t i = 0; i < doc.triangles.size(); ++i) {
-        char label[160];
-        std::snprintf(label, sizeof label, "triangle %zu  %s", i, doc.triangles[i].name.c_str());
-        if (ImGui::Selectable(label, sel.triangle == int(i))) {
-            sel.clear();
-            sel.triangle = int(i);
-        }
-    }
-    for (size_t i = 0; i < doc.curves.size(); ++i) {
-        char label[160];
-        std::snprintf(label, sizeof label, "curve %zu  %s", i, doc.curves[i].name.c_str());
-        if (ImGui::Selectable(label, sel.curve == int(i))) {
-            sel.clear();
-            sel.curve = int(i);
+    for (size_t i = 0; i < doc.triangles.size(); ++i) row(sel.triangle, i, "triangle %zu  %s", doc.triangles[i].name.c_str());
+    for (size_t i = 0; i < doc.curves.size(); ++i)
+        if (row(sel.curve, i, "curve %zu  %s", doc.curves[i].name.c_str()))
             applyBox(sel, {doc.curves[i].idx.begin(), doc.curves[i].idx.end()}, false);
-        }
-    }
     ImGui::EndChild();
     tip("Patches, net surfaces, Bézier triangles and curves of the document; click to select one");
     ImGui::Text("%zu points, %zu patches, %zu joins", doc.points.size(), doc.patches.size(), doc.joins.size());

@@ -3,6 +3,8 @@
 // inputs of a join between two boundary edges.
 #include <imgui.h>
 
+#include <string>
+
 #include <algorithm>
 
 #include "core/patch_ops.hpp"
@@ -56,21 +58,19 @@ void PatchOpsPanel::draw(PanelContext& ctx) {
     ImGui::Separator();
     ImGui::TextUnformatted("Join two boundary edges");
     const int np = int(doc.patches.size());
-    ImGui::SetNextItemWidth(60);
-    ImGui::InputInt("##ja", &joinA_, 0);
-    tip("Patch A");
+    auto patchAndEdge = [](const char* ab, int& patch, int& edge) {
+        const std::string id(ab);
+        ImGui::SetNextItemWidth(60);
+        ImGui::InputInt(("##j" + id).c_str(), &patch, 0);
+        tip(("Patch " + id).c_str());
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(60);
+        ImGui::Combo(("##je" + id).c_str(), &edge, kEdgeNames, 4);
+        tip(("Edge of patch " + id).c_str());
+    };
+    patchAndEdge("A", joinA_, joinEdgeA_);
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(60);
-    ImGui::Combo("##jea", &joinEdgeA_, kEdgeNames, 4);
-    tip("Edge of patch A");
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(60);
-    ImGui::InputInt("##jb", &joinB_, 0);
-    tip("Patch B");
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(60);
-    ImGui::Combo("##jeb", &joinEdgeB_, kEdgeNames, 4);
-    tip("Edge of patch B");
+    patchAndEdge("B", joinB_, joinEdgeB_);
     joinA_ = std::clamp(joinA_, 0, std::max(np - 1, 0));
     joinB_ = std::clamp(joinB_, 0, std::max(np - 1, 0));
     const char* kinds[] = {"C0", "C1", "G1"};

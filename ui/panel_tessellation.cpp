@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include "ui/imgui_tip.hpp"
+#include "ui/panel_rows.hpp"
 #include "ui/side_panels.hpp"
 #include "ui/test_trace.hpp"
 
@@ -12,10 +13,7 @@ void drawTessellationPanel(PanelContext& ctx) {
     if (!ImGui::CollapsingHeader("Tessellation", ImGuiTreeNodeFlags_DefaultOpen)) return;
     EditSession& s = ctx.session();
     TessSettings& ts = s.doc.tess;
-    auto edited = [&](bool changed, const char* label) {
-        if (changed) ctx.settingsChanged();
-        if (ImGui::IsItemDeactivatedAfterEdit() || (changed && !ImGui::IsItemActive())) s.commit(label);
-    };
+    auto edited = [&](bool changed, const char* step) { commitEdit(ctx, changed, step); };
     bool linked = ts.linked;
     if (ImGui::Checkbox("Link levels", &linked)) {
         ts.linked = linked;
@@ -38,18 +36,10 @@ void drawTessellationPanel(PanelContext& ctx) {
         tip("Inner levels along u and v");
     }
     const char* spacings[] = {"equal", "fractional odd", "fractional even", "pow2"};
-    int sp = int(ts.spacing);
-    if (ImGui::Combo("Partitioning", &sp, spacings, 4)) {
-        ts.spacing = Spacing(sp);
-        s.commit("Partitioning");
-    }
+    enumCombo(ctx, "Partitioning", ts.spacing, spacings, "Partitioning");
     tip("Spacing of the tessellator: equal, fractional odd/even (smooth level changes), pow2 (rounded up)");
     const char* modes[] = {"none", "distance", "screen space", "orientation"};
-    int am = int(ts.adaptive);
-    if (ImGui::Combo("Adaptive", &am, modes, 4)) {
-        ts.adaptive = AdaptiveMode(am);
-        s.commit("Adaptive mode");
-    }
+    enumCombo(ctx, "Adaptive", ts.adaptive, modes, "Adaptive mode");
     tip("Per-edge levels from the distance to the eye, the projected edge length, or the silhouette");
     if (ts.adaptive == AdaptiveMode::Distance) {
         edited(ImGui::DragFloat("Near", &ts.distanceNear, 0.05f, 0.0f, 1e6f), "Adaptive near");
