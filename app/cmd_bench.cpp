@@ -222,8 +222,7 @@ int runBench(const BenchArgs& a) {
 }  // namespace
 
 void registerBenchCommand(CLI::App& app, Action& run) {
-    auto a = std::make_shared<BenchArgs>();
-    CLI::App* cmd = app.add_subcommand("bench", "Benchmark the GPU tessellation pipeline against a plain pre-tessellated mesh");
+    const auto [cmd, a] = addSubcommand<BenchArgs>(app, run, "bench", "Benchmark the GPU tessellation pipeline against a plain pre-tessellated mesh", runBench);
     cmd->add_option("--frames", a->frames, "Measured frames per scene (default 20)");
     cmd->add_option("--scene", a->scenes, "Scene(s) to run: teapot16, teapot64, grid32, grid32-adaptive8px, grid128");
     cmd->add_option("--json", a->json, "Write the results as JSON");
@@ -236,7 +235,6 @@ void registerBenchCommand(CLI::App& app, Action& run) {
     cmd->add_option("--file", a->file, "With --editor: the document (default: the built-in teapot)");
     cmd->add_option("--level", a->level, "With --editor: the uniform tessellation level (default 16)")->check(CLI::Range(1.0f, 64.0f));
     cmd->add_option("--size", a->size, "With --editor: the window size, WIDTHxHEIGHT (default 1280x720)");
-    cmd->callback([a, &run] { run = [a] { return runBench(*a); }; });
 }
 
 }  // namespace pw::app

@@ -35,12 +35,10 @@ int runConvert(const ConvertOptions& opt) {
 }  // namespace
 
 void registerConvertCommand(CLI::App& app, Action& run) {
-    auto opt = std::make_shared<ConvertOptions>();
-    CLI::App* cmd = app.add_subcommand("convert", "Convert a document between formats, chosen by the file extensions");
+    const auto [cmd, opt] = addSubcommand<ConvertOptions>(app, run, "convert", "Convert a document between formats, chosen by the file extensions", runConvert);
     cmd->add_option("input", opt->input, "Input (.patchwork, .bpt, .gltf, .glb)")->required();
     cmd->add_option("output", opt->output, "Output (.patchwork, .bpt, .gltf, .glb); replaced atomically")->required();
     cmd->add_flag("-q,--quiet", opt->quiet, "Print nothing on success");
-    cmd->callback([opt, &run] { run = [opt] { return runConvert(*opt); }; });
 }
 
 }  // namespace pw::app

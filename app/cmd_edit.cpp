@@ -53,14 +53,12 @@ int runEdit(const EditOptions& opt) {
 }  // namespace
 
 void registerEditCommand(CLI::App& app, Action& run) {
-    auto opt = std::make_shared<EditOptions>();
-    CLI::App* cmd = app.add_subcommand("edit", "Run editor commands without a window (the names of the F1 help and the palette)");
+    const auto [cmd, opt] = addSubcommand<EditOptions>(app, run, "edit", "Run editor commands without a window (the names of the F1 help and the palette)", runEdit);
     cmd->add_option("input", opt->input, "Document to start from (.patchwork, .bpt, .gltf, .glb); default: an empty document");
     cmd->add_option("-o,--output", opt->output, "Where to write the result (.patchwork, .bpt, .gltf, .glb; by extension)")->required();
     cmd->add_option("--run", opt->script, "Script file: one command per line or ';'-separated, '#' starts a comment");
     cmd->add_option("-c,--commands", opt->commands, "Commands, ';'-separated (run after --run)");
     cmd->add_flag("-q,--quiet", opt->quiet, "Print nothing on success");
-    cmd->callback([opt, &run] { run = [opt] { return runEdit(*opt); }; });
 }
 
 }  // namespace pw::app

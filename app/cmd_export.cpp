@@ -45,8 +45,7 @@ int runExport(const ExportArgs& args) {
 }  // namespace
 
 void registerExportCommand(CLI::App& app, Action& run) {
-    auto args = std::make_shared<ExportArgs>();
-    CLI::App* cmd = app.add_subcommand("export", "Tessellate a document and write it as glTF 2.0 (.gltf or .glb)");
+    const auto [cmd, args] = addSubcommand<ExportArgs>(app, run, "export", "Tessellate a document and write it as glTF 2.0 (.gltf or .glb)", runExport);
     cmd->add_option("file", args->input, "Document to export (.patchwork, .bpt, .gltf, .glb)")->required();
     cmd->add_option("-o,--output", args->output, "Output file: .glb (binary) or .gltf (JSON, embedded buffer)")->required();
     cmd->add_option("--tess", args->tess,
@@ -54,10 +53,7 @@ void registerExportCommand(CLI::App& app, Action& run) {
                         " (default: the document's level)");
     cmd->add_flag("--merge", args->merge, "One mesh primitive for everything instead of one per patch");
     cmd->add_flag("--cage", args->cage, "Add the control cage as a LINES primitive");
-    cmd->callback([cmd, args, &run] {
-        args->tessGiven = cmd->count("--tess") > 0;
-        run = [args] { return runExport(*args); };
-    });
+    cmd->parse_complete_callback([cmd = cmd, args = args] { args->tessGiven = cmd->count("--tess") > 0; });
 }
 
 }  // namespace pw::app

@@ -124,15 +124,13 @@ int runInfo(const InfoOptions& opt) {
 }  // namespace
 
 void registerInfoCommand(CLI::App& app, Action& run) {
-    auto opt = std::make_shared<InfoOptions>();
-    CLI::App* cmd = app.add_subcommand("info", "Print counts, bounds, joins and measured continuity of a document");
+    const auto [cmd, opt] = addSubcommand<InfoOptions>(app, run, "info", "Print counts, bounds, joins and measured continuity of a document", runInfo);
     cmd->add_option("file", opt->file, "Document (.patchwork, .bpt, .gltf, .glb)")->required();
     cmd->add_flag("--json", opt->json, "Machine-readable output (JSON)");
     cmd->add_option("--samples", opt->samples, "Samples per seam for the continuity report")
         ->default_val(32)
         ->check(CLI::Range(1, 4096));
     cmd->add_flag("--no-joins", opt->noJoins, "Omit the per-join table");
-    cmd->callback([opt, &run] { run = [opt] { return runInfo(*opt); }; });
 }
 
 }  // namespace pw::app

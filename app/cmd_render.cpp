@@ -247,11 +247,9 @@ void addRenderOptions(CLI::App* cmd, RenderArgs& a) {
 }
 
 void registerRenderCommand(CLI::App& app, Action& run) {
-    auto a = std::make_shared<RenderArgs>();
-    CLI::App* cmd = app.add_subcommand("render", "Render a document offscreen on the GPU tessellation pipeline to a PNG");
+    const auto [cmd, a] = addSubcommand<RenderArgs>(app, run, "render", "Render a document offscreen on the GPU tessellation pipeline to a PNG", runRender);
     addRenderOptions(cmd, *a);
     cmd->add_option("-o,--output", a->output, "Output PNG")->required();
-    cmd->callback([a, &run] { run = [a] { return runRender(*a); }; });
 }
 
 }  // namespace pw::app

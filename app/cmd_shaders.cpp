@@ -86,14 +86,12 @@ int runShaders(const ShadersArgs& a) {
 }  // namespace
 
 void registerShadersCommand(CLI::App& app, Action& run) {
-    auto a = std::make_shared<ShadersArgs>();
-    CLI::App* cmd = app.add_subcommand("shaders", "Print the GLSL of the tessellation pipelines the given settings use, with their defines");
+    const auto [cmd, a] = addSubcommand<ShadersArgs>(app, run, "shaders", "Print the GLSL of the tessellation pipelines the given settings use, with their defines", runShaders);
     addRenderOptions(cmd, a->render);
     cmd->add_option("--stage", a->stage, "Only this stage: vert | tesc | tese | geom | frag");
     cmd->add_option("--variant", a->variant, "Print one compiled variant by name instead");
     cmd->add_flag("--list", a->list, "List the pipelines and their stage variants without the source");
     cmd->add_flag("--active-only", a->activeOnly, "Leave out the lines the defines switch off");
-    cmd->callback([a, &run] { run = [a] { return runShaders(*a); }; });
 }
 
 }  // namespace pw::app

@@ -152,8 +152,7 @@ int runSweep(const SweepArgs& a) {
 }  // namespace
 
 void registerSweepCommand(CLI::App& app, Action& run) {
-    auto a = std::make_shared<SweepArgs>();
-    CLI::App* cmd = app.add_subcommand("sweep", "Animate a tessellation level from --from to --to and write the frames as numbered PNGs");
+    const auto [cmd, a] = addSubcommand<SweepArgs>(app, run, "sweep", "Animate a tessellation level from --from to --to and write the frames as numbered PNGs", runSweep);
     addRenderOptions(cmd, a->render);
     cmd->add_option("-o,--output", a->output, "Frame file pattern with one %d or %04d, or a directory (frame_0000.png ...)")->required();
     cmd->add_option("--from", a->from, "First level, 1..64 (default 1)");
@@ -161,7 +160,6 @@ void registerSweepCommand(CLI::App& app, Action& run) {
     cmd->add_option("--seconds", a->seconds, "Length of the animation (default 3)");
     cmd->add_option("--fps", a->fps, "Frames per second (default 10)");
     cmd->add_option("--frames", a->frames, "Number of frames (overrides --seconds x --fps)");
-    cmd->callback([a, &run] { run = [a] { return runSweep(*a); }; });
 }
 
 }  // namespace pw::app

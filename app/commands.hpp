@@ -4,10 +4,24 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <memory>
+#include <string>
+#include <utility>
 
 namespace pw::app {
 
 using Action = std::function<int()>;
+
+// Adds the sub-command `name`; its options fill the returned Options, and once parsing succeeded
+// `run` calls runner on them.
+template <class Options>
+std::pair<CLI::App*, std::shared_ptr<Options>> addSubcommand(CLI::App& app, Action& run, const std::string& name,
+                                                             const std::string& description, int (*runner)(const Options&)) {
+    auto options = std::make_shared<Options>();
+    CLI::App* cmd = app.add_subcommand(name, description);
+    cmd->callback([options, runner, &run] { run = [options, runner] { return runner(*options); }; });
+    return {cmd, options};
+}
 
 void registerInfoCommand(CLI::App& app, Action& run);
 void registerExportCommand(CLI::App& app, Action& run);

@@ -159,14 +159,7 @@ void mergeCoincidentPoints(Document& doc) {
     auto rewrite = [&](uint32_t& idx) {
         if (idx < remap.size()) idx = remap[idx];
     };
-    for (Patch& patch : doc.patches)
-        for (uint32_t& idx : patch.idx) rewrite(idx);
-    for (Surface& s : doc.surfaces)
-        for (uint32_t& idx : s.idx) rewrite(idx);
-    for (TrianglePatch& t : doc.triangles)
-        for (uint32_t& idx : t.idx) rewrite(idx);
-    for (BezierCurve& c : doc.curves)
-        for (uint32_t& idx : c.idx) rewrite(idx);
+    forEachPointIndex(doc, rewrite);
     doc.points = std::move(pool);
 }
 

@@ -302,14 +302,7 @@ void tessellateWindows(const Document& doc, const std::vector<PatchInstance>& wi
         // collapsed edge makes degenerate are left out (the cell becomes one triangle of a fan).
         MeshRange& range = mesh.perWindow[w];
         range.firstIndex = static_cast<uint32_t>(mesh.indices.size());
-        const auto& P = mesh.positions;
-        auto emit = [&](uint32_t a, uint32_t b, uint32_t c) {
-            if (a == b || b == c || a == c) return;
-            if (P[a] == P[b] || P[b] == P[c] || P[a] == P[c]) return;
-            mesh.indices.push_back(a);
-            mesh.indices.push_back(b);
-            mesh.indices.push_back(c);
-        };
+        auto emit = [&](uint32_t a, uint32_t b, uint32_t c) { mesh.addTriangle(a, b, c); };
         for (int r = 0; r < L; ++r) {
             for (int c = 0; c < L; ++c) {
                 const uint32_t a = ids[r * S + c], b = ids[r * S + c + 1];

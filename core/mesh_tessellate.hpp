@@ -23,6 +23,15 @@ struct TriangleMesh {
     std::vector<uint32_t> indices;     // triangles, counter-clockwise seen from the normal side
     std::vector<MeshRange> perWindow;  // one per expandPatches() entry
     std::vector<MeshRange> perTriangle;  // one per Document::triangles entry (after the windows)
+
+    // Appends triangle (a, b, c) unless it is degenerate: a repeated index or two equal positions
+    // (a collapsed edge, as at the teapot's poles).
+    void addTriangle(uint32_t a, uint32_t b, uint32_t c) {
+        const auto& P = positions;
+        if (a == b || b == c || a == c) return;
+        if (P[a] == P[b] || P[b] == P[c] || P[a] == P[c]) return;
+        indices.insert(indices.end(), {a, b, c});
+    }
 };
 
 // level >= 1 (limits::kMaxExportLevel at most). Windows first, then the Bézier triangles

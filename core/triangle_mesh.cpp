@@ -122,12 +122,7 @@ void appendBezierTriangles(const Document& doc, int level, TriangleMesh& mesh, c
         // Two triangles per grid cell pair, counter-clockwise in (u, v), i.e. seen from du × dv.
         MeshRange& range = mesh.perTriangle[t];
         range.firstIndex = static_cast<uint32_t>(mesh.indices.size());
-        const auto& P = mesh.positions;
-        auto emit = [&](uint32_t a, uint32_t b, uint32_t c) {
-            if (a == b || b == c || a == c) return;
-            if (P[a] == P[b] || P[b] == P[c] || P[a] == P[c]) return;
-            mesh.indices.insert(mesh.indices.end(), {a, b, c});
-        };
+        auto emit = [&](uint32_t a, uint32_t b, uint32_t c) { mesh.addTriangle(a, b, c); };
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n - j; ++i) {
                 const uint32_t a = ids[triGridIndex(i, j, n)], b = ids[triGridIndex(i + 1, j, n)];

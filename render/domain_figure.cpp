@@ -22,9 +22,7 @@ std::vector<DomainStats> renderDomainFigure(DomainView& view, OffscreenTarget& t
     std::vector<DomainStats> stats;
     for (size_t i = 0; i < rects.size(); ++i) {
         DomainViewOptions o;
-        o.kind = panes[i].kind;
-        o.levels = panes[i].levels;
-        o.spacing = panes[i].spacing;
+        static_cast<DomainPane&>(o) = panes[i];
         o.rect = rects[i];
         const float px = textPixels > 0.0f ? textPixels : std::clamp(std::min(o.rect[2], o.rect[3]) / 26.0f, 11.0f, 40.0f);
         o.margin = domainLabelMargin(px);

@@ -14,12 +14,6 @@
 
 namespace pw::render {
 
-struct DomainPane {
-    DomainKind kind = DomainKind::Quad;
-    DomainLevels levels;
-    Spacing spacing = Spacing::Equal;
-};
-
 // The vertices and primitives to show for a pane: the distinct vertices of the pattern (the rules:
 // a GPU may run the evaluation shader more than once for a vertex, NVIDIA's does under fractional
 // and pow2 spacing, so invocations are not vertices) and the primitives the GPU's statistics

@@ -16,10 +16,14 @@
 
 namespace pw::render {
 
-struct DomainViewOptions {
+// The pattern one pane shows: a domain, its levels and partitioning.
+struct DomainPane {
     DomainKind kind = DomainKind::Quad;
     DomainLevels levels;
     Spacing spacing = Spacing::Equal;
+};
+
+struct DomainViewOptions : DomainPane {
     // Where the domain goes, in target pixels (x, y, width, height); the domain keeps its aspect and
     // is centred with `margin` pixels free on every side (for labels).
     std::array<float, 4> rect{0, 0, 0, 0};

@@ -14,12 +14,9 @@ class OffscreenTarget final : public RenderTarget {
 public:
     OffscreenTarget(Device& dev, uint32_t width, uint32_t height, bool msaa = true);
     ~OffscreenTarget() override;
-    OffscreenTarget(const OffscreenTarget&) = delete;
-    OffscreenTarget& operator=(const OffscreenTarget&) = delete;
 
     VkExtent2D extent() const override { return extent_; }
     VkFormat colorFormat() const override { return VK_FORMAT_R8G8B8A8_UNORM; }
-    VkFormat depthFormat() const override { return VK_FORMAT_D32_SFLOAT; }
     VkSampleCountFlagBits samples() const override { return samples_; }
     void beginRendering(VkCommandBuffer cmd, const std::array<float, 4>& clear) override;
     void pauseRendering(VkCommandBuffer cmd) override;

@@ -68,17 +68,10 @@ VkPipeline buildPipeline(Device& dev, VkPipelineLayout layout, VkPipelineCache c
     ds.depthTestEnable = d.depthTest;
     ds.depthWriteEnable = d.depthWrite;
     ds.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
-    VkPipelineColorBlendAttachmentState cb{};
-    cb.colorWriteMask = 0xf;
-    if (d.blend) {
-        cb.blendEnable = VK_TRUE;
-        cb.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
-        cb.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
-        cb.colorBlendOp = VK_BLEND_OP_ADD;
-        cb.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
-        cb.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
-        cb.alphaBlendOp = VK_BLEND_OP_ADD;
-    }
+    // Blending "over" (colour by source alpha, alpha accumulated), or none; all four channels written.
+    const VkPipelineColorBlendAttachmentState cb{VkBool32(d.blend), VK_BLEND_FACTOR_SRC_ALPHA, VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
+                                                 VK_BLEND_OP_ADD, VK_BLEND_FACTOR_ONE, VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
+                                                 VK_BLEND_OP_ADD, 0xf};
     VkPipelineColorBlendStateCreateInfo cbs{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
     cbs.attachmentCount = 1;
     cbs.pAttachments = &cb;

@@ -11,10 +11,14 @@ namespace pw::render {
 
 class RenderTarget {
 public:
+    RenderTarget() = default;
+    RenderTarget(const RenderTarget&) = delete;  // targets own their images
+    RenderTarget& operator=(const RenderTarget&) = delete;
     virtual ~RenderTarget() = default;
     virtual VkExtent2D extent() const = 0;
     virtual VkFormat colorFormat() const = 0;
-    virtual VkFormat depthFormat() const = 0;
+    // Every target's depth attachment: 32-bit float.
+    VkFormat depthFormat() const { return VK_FORMAT_D32_SFLOAT; }
     virtual VkSampleCountFlagBits samples() const = 0;
     // Transitions the attachments and starts dynamic rendering with a clear to `clear` (RGBA) and depth 1.
     virtual void beginRendering(VkCommandBuffer cmd, const std::array<float, 4>& clear) = 0;

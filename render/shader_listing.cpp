@@ -114,20 +114,16 @@ std::vector<PipelineUse> pipelinesInUse(const ShaderContext& c) {
         if (c.windows) surface("Wireframe (quad windows)", "surface_", "");
         if (c.triangles) surface("Wireframe (Bézier triangles)", "tri_surface_", "");
     }
-    if (c.display.showNormals && c.windows && c.geometryShader)
-        out.push_back({"Normal vectors (point mode)", why,
+    auto normals = [&](const std::string& name, const std::string& prefix) {
+        out.push_back({name, why,
                        {{"vertex", "surface_vert"},
-                        {"tessellation control", "surface_" + tesc},
-                        {"tessellation evaluation", "points_tese_" + sp},
+                        {"tessellation control", prefix + "surface_" + tesc},
+                        {"tessellation evaluation", prefix + "points_tese_" + sp},
                         {"geometry", "normals_geom"},
                         {"fragment", "line_frag"}}});
-    if (c.display.showNormals && c.triangles && c.geometryShader)
-        out.push_back({"Normal vectors (Bézier triangles, point mode)", why,
-                       {{"vertex", "surface_vert"},
-                        {"tessellation control", "tri_surface_" + tesc},
-                        {"tessellation evaluation", "tri_points_tese_" + sp},
-                        {"geometry", "normals_geom"},
-                        {"fragment", "line_frag"}}});
+    };
+    if (c.display.showNormals && c.windows && c.geometryShader) normals("Normal vectors (point mode)", "");
+    if (c.display.showNormals && c.triangles && c.geometryShader) normals("Normal vectors (Bézier triangles, point mode)", "tri_");
     char levels[96];
     std::snprintf(levels, sizeof levels, "isoline domain: outer level 0 = lines (%g), outer level 1 = segments (%g)",
                   double(c.tess.isolineLevels[0]), double(c.tess.isolineLevels[1]));

@@ -13,20 +13,13 @@ constexpr VkQueryPipelineStatisticFlags kStatFlags =
 }
 
 std::string statsToJson(const FrameStats& s, int indent) {
-    nlohmann::json j;
-    j["triangles"] = s.triangles();
-    j["clipping_invocations"] = s.clippingInvocations;
-    j["clipping_primitives"] = s.clippingPrimitives;
-    j["tess_eval_invocations"] = s.tesInvocations;
-    j["tess_control_patches"] = s.tcsPatches;
-    j["input_primitives"] = s.inputPrimitives;
-    j["pipeline_statistics"] = s.pipelineStatsValid;
-    j["patches"] = s.patches;
-    j["patches_culled"] = s.patchesCulled;
-    j["draws"] = s.draws;
-    j["gpu_ms"] = s.gpuMs;
-    j["wall_ms"] = s.wallMs;
-    j["submit_wait_ms"] = s.submitMs;
+    // Grouped as the stats read: pipeline counts, patches and draws, times.
+    const nlohmann::json j = {
+        {"triangles", s.triangles()}, {"clipping_invocations", s.clippingInvocations}, {"clipping_primitives", s.clippingPrimitives},
+        {"tess_eval_invocations", s.tesInvocations}, {"tess_control_patches", s.tcsPatches}, {"input_primitives", s.inputPrimitives},
+        {"pipeline_statistics", s.pipelineStatsValid},
+        {"patches", s.patches}, {"patches_culled", s.patchesCulled}, {"draws", s.draws},
+        {"gpu_ms", s.gpuMs}, {"wall_ms", s.wallMs}, {"submit_wait_ms", s.submitMs}};
     return j.dump(indent);
 }
 

@@ -32,12 +32,9 @@ public:
     // `surface` is not used (it may be VK_NULL_HANDLE) and frames go to that function instead.
     SwapchainTarget(Device& dev, VkSurfaceKHR surface, VkExtent2D framebufferSize, HostPresent hostPresent = {});
     ~SwapchainTarget() override;
-    SwapchainTarget(const SwapchainTarget&) = delete;
-    SwapchainTarget& operator=(const SwapchainTarget&) = delete;
 
     VkExtent2D extent() const override { return extent_; }
     VkFormat colorFormat() const override { return format_; }
-    VkFormat depthFormat() const override { return VK_FORMAT_D32_SFLOAT; }
     VkSampleCountFlagBits samples() const override { return VK_SAMPLE_COUNT_1_BIT; }
     void beginRendering(VkCommandBuffer cmd, const std::array<float, 4>& clear) override;
     void pauseRendering(VkCommandBuffer cmd) override;

@@ -13,7 +13,6 @@ void drawDisplayPanel(PanelContext& ctx) {
     if (!ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) return;
     EditSession& s = ctx.session();
     DisplaySettings& ds = s.doc.display;
-    auto edited = [&](bool changed, const char* step) { commitEdit(ctx, changed, step); };
     const char* shadings[] = {"lit", "normal", "patch id", "uv checker", "zebra", "gaussian curvature", "mean curvature"};
     enumCombo(ctx, "Shading", ds.shading, shadings, "Shading");
     tip("How the surface is coloured");
@@ -34,11 +33,11 @@ void drawDisplayPanel(PanelContext& ctx) {
     traceItem("display.boundaries");
     flag("Isocurves", ds.showIsocurves, "Isoparametric curves of every patch through the isoline tessellator (levels in Tessellation)");
     traceItem("display.isocurves");
-    edited(ImGui::SliderFloat("Normal length", &ds.normalLength, 0.001f, 1.0f, "%.3f", ImGuiSliderFlags_Logarithmic), "Normal length");
+    commitEdit(ctx, ImGui::SliderFloat("Normal length", &ds.normalLength, 0.001f, 1.0f, "%.3f", ImGuiSliderFlags_Logarithmic), "Normal length");
     tip("Length of the drawn normals");
-    edited(ImGui::SliderFloat3("Light", ds.lightDir.data(), -1.0f, 1.0f, "%.2f"), "Light direction");
+    commitEdit(ctx, ImGui::SliderFloat3("Light", ds.lightDir.data(), -1.0f, 1.0f, "%.2f"), "Light direction");
     tip("Direction towards the light");
-    edited(ImGui::ColorEdit3("Background", ds.background.data()), "Background");
+    commitEdit(ctx, ImGui::ColorEdit3("Background", ds.background.data()), "Background");
     tip("Viewport clear colour");
 }
 

@@ -13,7 +13,6 @@ void drawTessellationPanel(PanelContext& ctx) {
     if (!ImGui::CollapsingHeader("Tessellation", ImGuiTreeNodeFlags_DefaultOpen)) return;
     EditSession& s = ctx.session();
     TessSettings& ts = s.doc.tess;
-    auto edited = [&](bool changed, const char* step) { commitEdit(ctx, changed, step); };
     bool linked = ts.linked;
     if (ImGui::Checkbox("Link levels", &linked)) {
         ts.linked = linked;
@@ -27,12 +26,12 @@ void drawTessellationPanel(PanelContext& ctx) {
             ts.outer = {l, l, l, l};
             ts.inner = {l, l};
         }
-        edited(c, "Tessellation level");
+        commitEdit(ctx, c, "Tessellation level");
         tip("Outer and inner tessellation level (1-64)");
     } else {
-        edited(ImGui::SliderFloat4("Outer", ts.outer.data(), 1.0f, 64.0f, "%.1f"), "Outer levels");
+        commitEdit(ctx, ImGui::SliderFloat4("Outer", ts.outer.data(), 1.0f, 64.0f, "%.1f"), "Outer levels");
         tip("Outer levels: edge u=0, v=0, u=1, v=1");
-        edited(ImGui::SliderFloat2("Inner", ts.inner.data(), 1.0f, 64.0f, "%.1f"), "Inner levels");
+        commitEdit(ctx, ImGui::SliderFloat2("Inner", ts.inner.data(), 1.0f, 64.0f, "%.1f"), "Inner levels");
         tip("Inner levels along u and v");
     }
     const char* spacings[] = {"equal", "fractional odd", "fractional even", "pow2"};
@@ -42,18 +41,18 @@ void drawTessellationPanel(PanelContext& ctx) {
     enumCombo(ctx, "Adaptive", ts.adaptive, modes, "Adaptive mode");
     tip("Per-edge levels from the distance to the eye, the projected edge length, or the silhouette");
     if (ts.adaptive == AdaptiveMode::Distance) {
-        edited(ImGui::DragFloat("Near", &ts.distanceNear, 0.05f, 0.0f, 1e6f), "Adaptive near");
+        commitEdit(ctx, ImGui::DragFloat("Near", &ts.distanceNear, 0.05f, 0.0f, 1e6f), "Adaptive near");
         tip("Full level at or below this distance");
-        edited(ImGui::DragFloat("Far", &ts.distanceFar, 0.1f, 0.0f, 1e6f), "Adaptive far");
+        commitEdit(ctx, ImGui::DragFloat("Far", &ts.distanceFar, 0.1f, 0.0f, 1e6f), "Adaptive far");
         tip("Level 1 at or beyond this distance");
     }
     if (ts.adaptive == AdaptiveMode::ScreenSpace) {
-        edited(ImGui::SliderFloat("Pixels/segment", &ts.targetPixels, 1.0f, 64.0f, "%.1f"), "Target pixels");
+        commitEdit(ctx, ImGui::SliderFloat("Pixels/segment", &ts.targetPixels, 1.0f, 64.0f, "%.1f"), "Target pixels");
         tip("Target length of one segment on screen (about 8 px is the lecture advice)");
     }
-    edited(ImGui::SliderFloat("Max level", &ts.maxLevel, 1.0f, 64.0f, "%.0f"), "Max level");
+    commitEdit(ctx, ImGui::SliderFloat("Max level", &ts.maxLevel, 1.0f, 64.0f, "%.0f"), "Max level");
     tip("Upper clamp of every level");
-    edited(ImGui::SliderFloat2("Isolines", ts.isolineLevels.data(), 1.0f, 64.0f, "%.2f"), "Isoline levels");
+    commitEdit(ctx, ImGui::SliderFloat2("Isolines", ts.isolineLevels.data(), 1.0f, 64.0f, "%.2f"), "Isoline levels");
     traceItem("tess.isolines");
     tip("Isoline domain: lines (always rounded up to an integer) and segments per line (under the partitioning). "
         "Curves draw one line; the isocurve overlay draws this many per direction, the first and last on the boundary");
