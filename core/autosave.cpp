@@ -13,6 +13,7 @@
 
 #include "core/document_io.hpp"
 #include "core/file_io.hpp"
+#include "core/json_guard.hpp"
 
 namespace pw {
 
@@ -57,8 +58,7 @@ std::vector<AutosaveEntry> findRecoverableAutosaves(const fs::path& dir) {
         e.document = fs::path(p).replace_extension(".patchwork");
         if (!fs::exists(e.document, ec)) continue;
         try {
-            std::ifstream in(p);
-            const nlohmann::json j = nlohmann::json::parse(in);
+            const nlohmann::json j = parseJsonGuarded(readFileLimited(p), p.string());
             e.originalPath = j.value("original", std::string());
             e.pid = j.value("pid", 0);
             e.savedAtUnix = j.value("savedAt", 0LL);

@@ -5,35 +5,16 @@
 #include <cstring>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
+#include "core/json_guard.hpp"
 #include "core/patchwork_format.hpp"
 
 namespace pw {
 
 namespace {
-
-// tinygltf::Value → nlohmann::json (ints stay integers, reals stay doubles).
-nlohmann::json toJson(const tinygltf::Value& v) {
-    switch (v.Type()) {
-        case tinygltf::BOOL_TYPE: return v.Get<bool>();
-        case tinygltf::INT_TYPE: return v.Get<int>();
-        case tinygltf::REAL_TYPE: return v.Get<double>();
-        case tinygltf::STRING_TYPE: return v.Get<std::string>();
-        case tinygltf::ARRAY_TYPE: {
-            nlohmann::json a = nlohmann::json::array();
-            for (const tinygltf::Value& e : v.Get<tinygltf::Value::Array>()) a.push_back(toJson(e));
-            return a;
-        }
-        case tinygltf::OBJECT_TYPE: {
-            nlohmann::json o = nlohmann::json::object();
-            for (const auto& [key, e] : v.Get<tinygltf::Value::Object>()) o[key] = toJson(e);
-            return o;
-        }
-        default: return nullptr;
-    }
-}
 
 // tinygltf drops empty arrays, empty objects and nulls from extras when it reads them (and writes
 // an empty array as null). Put them back where the native format has a container or a null, using
@@ -76,15 +57,58 @@ const nlohmann::json& documentTemplate() {
     return tmpl;
 }
 
-const tinygltf::Value* findPatchworkExtras(const tinygltf::Model& model) {
-    auto look = [](const tinygltf::Value& extras) -> const tinygltf::Value* {
-        if (!extras.IsObject() || !extras.Has("patchwork")) return nullptr;
-        return &extras.Get("patchwork");
+// The JSON text of a .gltf, or the JSON chunk of a .glb (GLB header and chunk lengths checked, so a
+// truncated or lying header is refused here rather than inside the glTF reader).
+std::string_view gltfJsonText(std::string_view data, bool binary, const std::string& name) {
+    if (!binary) return data;
+    auto u32 = [&](size_t at) {
+        uint32_t v = 0;
+        std::memcpy(&v, data.data() + at, 4);
+        return v;
     };
-    if (const auto* v = look(model.asset.extras)) return v;
-    for (const tinygltf::Scene& s : model.scenes)
-        if (const auto* v = look(s.extras)) return v;
-    return look(model.extras);
+    if (data.size() < 20) throw InputError(name, "not a valid glTF binary (.glb) file: " + std::to_string(data.size()) + " bytes, shorter than its header");
+    if (u32(4) != 2) throw InputError(name, "glTF binary version " + std::to_string(u32(4)) + "; Patchwork reads version 2");
+    if (u32(8) > data.size())
+        throw InputError(name, "not a valid glTF binary (.glb) file: its header says " + std::to_string(u32(8)) + " bytes, the file has " +
+                                   std::to_string(data.size()));
+    const uint32_t jsonLength = u32(12);
+    if (u32(16) != 0x4E4F534Au) throw InputError(name, "not a valid glTF binary (.glb) file: the first chunk is not JSON");
+    if (jsonLength > data.size() - 20)
+        throw InputError(name, "not a valid glTF binary (.glb) file: the JSON chunk says " + std::to_string(jsonLength) +
+                                   " bytes, " + std::to_string(data.size() - 20) + " follow");
+    return data.substr(20, jsonLength);
+}
+
+// Checks of the glTF's own structure that the glTF reader does not make (it crashed on them).
+void checkBuffers(const nlohmann::json& gltf, const std::string& name) {
+    const auto it = gltf.find("buffers");
+    if (it == gltf.end() || !it->is_array()) return;
+    for (size_t i = 0; i < it->size(); ++i) {
+        const nlohmann::json& b = (*it)[i];
+        const std::string field = "buffers[" + std::to_string(i) + "].byteLength";
+        const auto len = b.is_object() ? b.find("byteLength") : b.end();
+        if (!b.is_object() || len == b.end()) throw InputError(name, "a buffer needs a byteLength", 0, field);
+        if (!len->is_number_integer() || len->get<int64_t>() < 1)
+            throw InputError(name, "expected an integer of at least 1 (glTF 2.0, 5.10), found " + len->dump(), 0, field);
+    }
+}
+
+// The "patchwork" extras and where they are: asset.extras, a scene's extras, or the top level's.
+std::pair<const nlohmann::json*, std::string> findPatchworkExtras(const nlohmann::json& gltf) {
+    auto look = [](const nlohmann::json& owner) -> const nlohmann::json* {
+        if (!owner.is_object()) return nullptr;
+        const auto extras = owner.find("extras");
+        if (extras == owner.end() || !extras->is_object()) return nullptr;
+        const auto p = extras->find("patchwork");
+        return p == extras->end() ? nullptr : &*p;
+    };
+    if (const auto a = gltf.find("asset"); a != gltf.end())
+        if (const auto* v = look(*a)) return {v, "asset.extras.patchwork"};
+    if (const auto sc = gltf.find("scenes"); sc != gltf.end() && sc->is_array())
+        for (size_t i = 0; i < sc->size(); ++i)
+            if (const auto* v = look((*sc)[i])) return {v, "scenes[" + std::to_string(i) + "].extras.patchwork"};
+    if (const auto* v = look(gltf)) return {v, "extras.patchwork"};
+    return {nullptr, {}};
 }
 
 // Import needs only the extras: external buffers and images are refused, images not decoded.
@@ -113,29 +137,41 @@ Document parsePatchworkGltf(std::string_view data, const std::string& name) {
     fs.WriteWholeFile = nullptr;
     loader.SetFsCallbacks(fs);
     loader.SetImageLoader(skipImage, nullptr);
+    const bool binary = data.size() >= 4 && std::memcmp(data.data(), "glTF", 4) == 0;
+    const char* kind = binary ? "binary (.glb)" : "JSON (.gltf)";
+    // Our own pass first, guarded: the glTF reader recurses without a depth limit, and reads integers
+    // as 32 bits (an index 2^32 + 1 would become 1).
+    const std::string_view jsonText = gltfJsonText(data, binary, name);
+    const nlohmann::json gltf = parseJsonGuarded(jsonText, name);
+    if (!gltf.is_object()) throw InputError(name, std::string("not a valid glTF ") + kind + " file: the JSON is not an object");
+    checkBuffers(gltf, name);
+
+    // The glTF reader checks the rest of the structure (asset, accessors, views, chunks).
     tinygltf::Model model;
     std::string err, warn;
-    const bool binary = data.size() >= 4 && std::memcmp(data.data(), "glTF", 4) == 0;
-    const bool ok =
-        binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(data.data()),
-                                             static_cast<unsigned int>(data.size()), "")
-               : loader.LoadASCIIFromString(&model, &err, &warn, data.data(), static_cast<unsigned int>(data.size()), "");
+    bool ok = false;
+    try {
+        ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(data.data()),
+                                                  static_cast<unsigned int>(data.size()), "")
+                    : loader.LoadASCIIFromString(&model, &err, &warn, data.data(), static_cast<unsigned int>(data.size()), "");
+    } catch (const std::exception& e) {
+        throw InputError(name, std::string("not a valid glTF ") + kind + " file: the glTF reader stopped on it (" + e.what() + ")");
+    }
     if (!ok) {
         while (!err.empty() && (err.back() == '\n' || err.back() == '\r')) err.pop_back();
         for (char& c : err)
             if (c == '\n') c = ' ';
-        throw InputError(name, std::string("not a valid glTF ") + (binary ? "binary (.glb)" : "JSON (.gltf)") + " file" +
-                                   (err.empty() ? std::string() : ": " + err));
+        throw InputError(name, std::string("not a valid glTF ") + kind + " file" + (err.empty() ? std::string() : ": " + err));
     }
 
-    const tinygltf::Value* extras = findPatchworkExtras(model);
+    const auto [extras, field] = findPatchworkExtras(gltf);
     if (!extras)
         throw InputError(name, "not a Patchwork glTF: it has no patchwork extras (only files exported by Patchwork "
-                               "can be imported as patches)");
-    if (!extras->IsObject()) throw InputError(name, "the patchwork extras are not an object", 0, "asset.extras.patchwork");
-    nlohmann::json json = toJson(*extras);
+                               "can be imported as patches)", 0, "asset.extras.patchwork");
+    if (!extras->is_object()) throw InputError(name, "the patchwork extras are not an object", 0, field);
+    nlohmann::json json = *extras;
     restoreDroppedEmpties(json, documentTemplate());
-    return documentFromJson(json, name);
+    return documentFromJson(json, name, field);
 }
 
 }  // namespace pw

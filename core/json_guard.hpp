@@ -1,10 +1,13 @@
-// Guards and diagnostics in front of a JSON parser (nlohmann/json builds its DOM recursively):
-// refuse absurd nesting before parsing, and turn parse errors into one line with a line number.
+// Guards and diagnostics in front of every JSON parser (nlohmann/json and tinygltf build their DOM
+// recursively): refuse absurd nesting and size before parsing, and turn parse errors into one line
+// with a line number. Every JSON Patchwork reads goes through parseJsonGuarded.
 #pragma once
 
 #include <cstddef>
 #include <string>
 #include <string_view>
+
+#include <nlohmann/json.hpp>
 
 namespace pw {
 
@@ -21,5 +24,13 @@ int lineAt(std::string_view text, size_t byte);
 // nlohmann's message without its "[json.exception.parse_error.101] parse error at line 3, column 5: "
 // prefix (callers report the line themselves), as "JSON syntax error: ...".
 std::string parseErrorReason(const std::string& what);
+
+// Parses `text` as JSON after the guards: more than limits::kMaxFileBytes or nesting deeper than
+// kMaxJsonDepth is refused before parsing. Throws InputError naming `sourceName` and the line.
+nlohmann::json parseJsonGuarded(std::string_view text, const std::string& sourceName, int maxDepth = kMaxJsonDepth);
+
+// Throws InputError naming `sourceName` and the line when `text` is larger than
+// limits::kMaxFileBytes or nests deeper than `maxDepth` (for parsers Patchwork does not own).
+void guardJsonText(std::string_view text, const std::string& sourceName, int maxDepth = kMaxJsonDepth);
 
 }  // namespace pw

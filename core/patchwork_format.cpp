@@ -89,10 +89,12 @@ std::string at(const std::string& path, size_t i) { return path + "[" + std::to_
 
 class Reader {
 public:
-    explicit Reader(const std::string& source) : source_(source) {}
+    // `prefix`: where the document sits in the file ("asset.extras.patchwork" in a glTF).
+    explicit Reader(const std::string& source, std::string prefix = {}) : source_(source), prefix_(std::move(prefix)) {}
 
     [[noreturn]] void fail(const std::string& path, const std::string& why) const {
-        throw InputError(source_, why, 0, path);
+        const std::string field = prefix_.empty() ? path : path.empty() ? prefix_ : prefix_ + (path[0] == '[' ? "" : ".") + path;
+        throw InputError(source_, why, 0, field);
     }
 
     [[noreturn]] void wrongType(const json& v, const std::string& path, const char* expected) const {
@@ -209,6 +211,7 @@ public:
 
 private:
     const std::string& source_;
+    std::string prefix_;
 };
 
 constexpr double kMinLevel = limits::kMinTessLevel, kMaxLevel = limits::kMaxTessLevel;
@@ -347,8 +350,8 @@ json documentToJson(const Document& doc) {
     return j;
 }
 
-Document documentFromJson(const json& j, const std::string& sourceName) {
-    const Reader r(sourceName);
+Document documentFromJson(const json& j, const std::string& sourceName, const std::string& fieldPrefix) {
+    const Reader r(sourceName, fieldPrefix);
     if (!j.is_object()) r.fail("", "a Patchwork document must be a JSON object, found " + Reader::describe(j));
 
     // Identification and version come first, so that a newer file gets the version message.
@@ -526,30 +529,7 @@ std::string serializeDocument(const Document& doc) {
 }
 
 Document parseDocument(std::string_view text, const std::string& sourceName) {
-    if (const size_t at = excessiveNesting(text); at != std::string_view::npos)
-        throw InputError(sourceName, "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels",
-                         lineAt(text, at));
-    json j;
-    try {
-        j = json::parse(text.begin(), text.end());
-    } catch (const json::parse_error& e) {
-        // e.byte is the 1-based position of the offending character (past the end when truncated).
-        const size_t byte = e.byte > 0 ? e.byte - 1 : 0;
-        throw InputError(sourceName, parseErrorReason(e.what()), lineAt(text, byte));
-    } catch (const json::exception& e) {
-        // E.g. "number overflow parsing '1e400'" (out_of_range.406), which carries no position:
-        // locate the quoted token in the text.
-        std::string what = e.what();
-        if (what.rfind("[json.exception.", 0) == 0 && what.find("] ") != std::string::npos)
-            what = what.substr(what.find("] ") + 2);
-        int line = 0;
-        const size_t q0 = what.find('\''), q1 = q0 == std::string::npos ? q0 : what.find('\'', q0 + 1);
-        if (q1 != std::string::npos && q1 > q0 + 1) {
-            const size_t at = text.find(what.substr(q0 + 1, q1 - q0 - 1));
-            if (at != std::string_view::npos) line = lineAt(text, at);
-        }
-        throw InputError(sourceName, "JSON error: " + what, line);
-    }
+    const json j = parseJsonGuarded(text, sourceName);
     if (!j.is_object()) {
         // Locate the offending top-level value: its first character.
         const size_t first = text.find_first_not_of(" \t\r\n");

@@ -14,8 +14,9 @@ namespace pw {
 
 nlohmann::json documentToJson(const Document& doc);
 // Validates everything (types, counts, index ranges, finite coordinates, limits.hpp); throws
-// InputError naming `sourceName` and the field path (e.g. "patches[3].idx[7]").
-Document documentFromJson(const nlohmann::json& json, const std::string& sourceName);
+// InputError naming `sourceName` and the field path (e.g. "patches[3].idx[7]"), after
+// `fieldPrefix` where the document sits inside another file.
+Document documentFromJson(const nlohmann::json& json, const std::string& sourceName, const std::string& fieldPrefix = {});
 
 std::string serializeDocument(const Document& doc);
 Document parseDocument(std::string_view text, const std::string& sourceName);  // errors carry the line

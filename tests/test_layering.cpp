@@ -97,3 +97,25 @@ TEST(Layering, UiIncludesNoAppHeader) {
     const auto v = violations("ui", {}, {"app"});
     EXPECT_TRUE(v.empty()) << ::testing::PrintToString(v);
 }
+
+// Issue 24: every JSON Patchwork reads goes through core/json_guard's size and nesting guard. A
+// parser call anywhere else fails here, unless it reads text Patchwork itself just made (listed).
+TEST(Layering, EveryJsonParserIsGuarded) {
+    const std::regex parserCall(R"(json::parse\s*\(|LoadASCIIFrom|LoadBinaryFrom|json::from_)");
+    const std::set<std::string> allowed = {
+        "core/json_guard.cpp",   // the guard itself
+        "core/gltf_import.cpp",  // tinygltf runs after parseJsonGuarded of the same JSON text
+        "app/cmd_render.cpp",    // re-reads statsToJson's own output
+    };
+    std::vector<std::string> bad;
+    for (const char* dir : {"core", "render", "ui", "app"})
+        for (const auto& e : fs::directory_iterator(repo() / dir)) {
+            const std::string rel = std::string(dir) + "/" + e.path().filename().string();
+            if (allowed.count(rel)) continue;
+            std::ifstream in(e.path());
+            std::string line;
+            for (int n = 1; std::getline(in, line); ++n)
+                if (std::regex_search(line, parserCall)) bad.push_back(rel + ":" + std::to_string(n) + ": " + line);
+        }
+    EXPECT_TRUE(bad.empty()) << ::testing::PrintToString(bad);
+}
