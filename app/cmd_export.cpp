@@ -6,6 +6,7 @@
 
 #include "app/commands.hpp"
 #include "core/document_io.hpp"
+#include "core/file_io.hpp"
 #include "core/gltf_export.hpp"
 #include "core/limits.hpp"
 
@@ -28,6 +29,7 @@ int runExport(const ExportArgs& args) {
                   << args.tess << ")\n";
         return 2;
     }
+    (void)checkOutputPath(args.output);  // refuse an unwritable output before tessellating
     const Document doc = loadDocument(args.input);
     GltfExportOptions options;
     options.level = args.tessGiven ? args.tess : 0;

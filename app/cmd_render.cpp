@@ -120,18 +120,21 @@ int runDomainRender(const RenderArgs& a, const std::vector<render::DomainPane>& 
         const render::LabelRaster labels;
         std::vector<uint8_t> rgba;
         const auto stats = render::renderDomainFigure(view, target, labels, panes, 0.0f, rgba);
-        render::writePng(a.output, w, h, rgba);
+        // The PNG and the stats appear together or not at all; what was written is said after.
+        OutputBatch out;
+        out.stage(a.output, render::encodePng(a.output, w, h, rgba));
+        std::ostringstream said;
         nlohmann::json j;
         j["device"] = dev.name();
         for (size_t i = 0; i < panes.size(); ++i) {
             const auto& p = panes[i];
             const DomainCounts want = expectedDomainCounts(p.kind, p.levels, p.spacing, float(dev.caps().maxTessLevel));
             const auto shown = render::shownCounts(stats[i], p);
-            std::cout << "wrote " << a.output << " pane " << i + 1 << ": " << domainName(p.kind) << " " << spacingName(p.spacing)
+            said << "wrote " << a.output << " pane " << i + 1 << ": " << domainName(p.kind) << " " << spacingName(p.spacing)
                       << ", " << shown[0] << " vertices, " << shown[1] << " primitives";
-            if (stats[i].valid) std::cout << " (GPU: " << stats[i].primitives << " primitives, " << stats[i].vertices << " evaluations)";
-            else std::cout << " (rules; the device has no pipeline statistics)";
-            std::cout << "\n";
+            if (stats[i].valid) said << " (GPU: " << stats[i].primitives << " primitives, " << stats[i].vertices << " evaluations)";
+            else said << " (rules; the device has no pipeline statistics)";
+            said << "\n";
             j["panes"].push_back({{"domain", domainName(p.kind)},
                                   {"spacing", spacingName(p.spacing)},
                                   {"outer", p.levels.outer},
@@ -142,7 +145,9 @@ int runDomainRender(const RenderArgs& a, const std::vector<render::DomainPane>& 
                                   {"expectedVertices", want.vertices},
                                   {"expectedPrimitives", want.primitives}});
         }
-        if (!a.stats.empty()) writeFileAtomic(a.stats, j.dump(2) + "\n");
+        if (!a.stats.empty()) out.stage(a.stats, j.dump(2) + "\n");
+        out.commit();
+        std::cout << said.str();
         rc = validationExitCode(dev, "render");
     }
     return rc;
@@ -150,6 +155,9 @@ int runDomainRender(const RenderArgs& a, const std::vector<render::DomainPane>& 
 
 int runRender(const RenderArgs& a) {
     if (a.output.empty()) bad("-o", "an output .png file is required");
+    // Refuse unwritable outputs before the work (a device node, a read-only file, a missing folder).
+    (void)checkOutputPath(a.output);
+    if (!a.stats.empty()) (void)checkOutputPath(a.stats);
     const auto [w, h] = parseImageSize("render", a.size);
     const DomainArgs dargs = domainArgs(a);
     if (wantsDomain(dargs)) {
@@ -180,23 +188,26 @@ int runRender(const RenderArgs& a) {
         render::OffscreenTarget target(dev, w, h, !a.noMsaa);
         render::Renderer renderer(dev, target);
         renderer.setDocument(doc);
+        // The PNG and the stats appear together or not at all; what was written is said after.
+        OutputBatch out;
+        std::ostringstream said;
         if (panes.empty()) {
             const render::FrameStats st = renderer.render(opt);
-            render::writePng(a.output, w, h, target.pixels());
-            std::cout << "wrote " << a.output << " (" << w << "x" << h << ", " << dev.name() << "): " << st.triangles()
+            out.stage(a.output, render::encodePng(a.output, w, h, target.pixels()));
+            said << "wrote " << a.output << " (" << w << "x" << h << ", " << dev.name() << "): " << st.triangles()
                       << " triangles, " << st.patches << " patches (" << st.patchesCulled << " culled), " << st.draws
                       << " draws, GPU " << st.gpuMs << " ms\n";
-            if (!a.stats.empty()) writeFileAtomic(a.stats, render::statsToJson(st) + "\n");
+            if (!a.stats.empty()) out.stage(a.stats, render::statsToJson(st) + "\n");
         } else {
             const render::LabelRaster labels;
             std::vector<uint8_t> rgba;
             const auto results = render::renderModelFigure(renderer, target, labels, opt, panes, 0.0f, rgba);
-            render::writePng(a.output, w, h, rgba);
+            out.stage(a.output, render::encodePng(a.output, w, h, rgba));
             nlohmann::json j;
             j["device"] = dev.name();
             for (size_t i = 0; i < results.size(); ++i) {
                 const render::PaneResult& r = results[i];
-                std::cout << "wrote " << a.output << " pane " << i + 1 << ": " << render::paneCaption(r.tess, r.stats.triangles())
+                said << "wrote " << a.output << " pane " << i + 1 << ": " << render::paneCaption(r.tess, r.stats.triangles())
                           << ", GPU " << r.stats.gpuMs << " ms\n";
                 nlohmann::json p = nlohmann::json::parse(render::statsToJson(r.stats));
                 p["spacing"] = spacingName(r.tess.spacing);
@@ -205,8 +216,10 @@ int runRender(const RenderArgs& a) {
                 p["rect"] = r.rect;
                 j["panes"].push_back(std::move(p));
             }
-            if (!a.stats.empty()) writeFileAtomic(a.stats, j.dump(2) + "\n");
+            if (!a.stats.empty()) out.stage(a.stats, j.dump(2) + "\n");
         }
+        out.commit();
+        std::cout << said.str();
         rc = validationExitCode(dev, "render");
     }
     return rc;

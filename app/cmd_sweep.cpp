@@ -14,6 +14,7 @@
 #include "core/document_io.hpp"
 #include "render/domain_labels.hpp"
 #include "core/errors.hpp"
+#include "core/file_io.hpp"
 #include "app/level_args.hpp"
 #include "core/model_builders.hpp"
 #include "render/model_figure.hpp"
@@ -46,6 +47,8 @@ public:
         }
         const std::filesystem::path dir = std::filesystem::path(pattern_).parent_path();
         std::error_code ec;
+        // Remember the folders made here, so that a failed sweep takes them away again.
+        for (std::filesystem::path d = dir; !d.empty() && !std::filesystem::exists(d, ec); d = d.parent_path()) created_.push_back(d);
         if (!dir.empty()) std::filesystem::create_directories(dir, ec);
         if (!dir.empty() && !std::filesystem::is_directory(dir))
             throw OutputError(dir.string(), "cannot create the frame directory" + (ec ? ": " + ec.message() : std::string()));
@@ -56,8 +59,15 @@ public:
         return buf;
     }
 
+    // Removes the folders the constructor made (innermost first) while they are empty.
+    void removeCreatedFolders() const {
+        std::error_code ec;
+        for (const std::filesystem::path& d : created_) std::filesystem::remove(d, ec);
+    }
+
 private:
     std::string pattern_;
+    std::vector<std::filesystem::path> created_;
 };
 
 void caption(const render::LabelRaster& labels, std::vector<uint8_t>& rgba, unsigned w, unsigned h, const std::string& text) {
@@ -66,6 +76,10 @@ void caption(const render::LabelRaster& labels, std::vector<uint8_t>& rgba, unsi
     st.box = true;
     labels.draw({w, h, rgba}, st.pixels * 0.6f, st.pixels * 0.6f, text, st);
 }
+
+int writeSweep(const SweepArgs& a, const FrameNames& names, int frames, float from, float to, unsigned w, unsigned h, bool domain,
+               const std::vector<render::DomainPane>& panes, const Document& doc, const std::vector<render::ModelPane>& modelPanes,
+               render::RenderOptions opt);
 
 int runSweep(const SweepArgs& a) {
     const std::string cmd = "sweep";
@@ -101,6 +115,19 @@ int runSweep(const SweepArgs& a) {
         opt.tess.adaptive = AdaptiveMode::None;
     }
     const FrameNames names(a.output);
+    try {
+        return writeSweep(a, names, frames, from, to, w, h, domain, panes, doc, modelPanes, opt);
+    } catch (...) {
+        names.removeCreatedFolders();
+        throw;
+    }
+}
+
+int writeSweep(const SweepArgs& a, const FrameNames& names, int frames, float from, float to, unsigned w, unsigned h, bool domain,
+               const std::vector<render::DomainPane>& panes, const Document& doc, const std::vector<render::ModelPane>& modelPanes,
+               render::RenderOptions opt) {
+    const std::string cmd = "sweep";
+    (void)checkOutputPath(names(0));  // refuse an unwritable output before the work
 
     render::DeviceOptions dopt;
     dopt.name = a.render.device;
@@ -120,6 +147,7 @@ int runSweep(const SweepArgs& a) {
             renderer->warmUp();
         }
         std::vector<uint8_t> rgba;
+        OutputBatch out;  // every frame or none (a full disk leaves no partial sweep)
         for (int k = 0; k < frames; ++k) {
             const float level = from + (to - from) * float(k) / float(frames - 1);
             std::string text = "level " + render::formatLevel(level);
@@ -140,8 +168,9 @@ int runSweep(const SweepArgs& a) {
                         " triangles";
             }
             if (modelPanes.empty()) caption(labels, rgba, w, h, text);
-            render::writePng(names(k), w, h, rgba);
+            out.stage(names(k), render::encodePng(names(k), w, h, rgba));
         }
+        out.commit();
         std::cout << "wrote " << frames << " frames (" << w << "x" << h << ", level " << render::formatLevel(from) << " to "
                   << render::formatLevel(to) << "): " << names(0) << " .. " << names(frames - 1) << "\n";
         rc = validationExitCode(dev, cmd);

@@ -1,10 +1,13 @@
-// Reading whole files with a size limit, and atomic writes (temporary file, flush, fsync, rename)
+// Reading whole files with a size limit, and writing outputs safely: checked before the work
+// (never onto a device node, FIFO or read-only file; through symlinks), written completely beside
+// the target and moved into place (temporary file, fsync, rename), several outputs all or nothing,
 // so that a failed or interrupted save never leaves a partial file or destroys the old one.
 #pragma once
 
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace pw {
 
@@ -12,8 +15,40 @@ namespace pw {
 // larger than limits::kMaxFileBytes.
 std::string readFileLimited(const std::filesystem::path& path);
 
-// Writes `data` to `path` atomically; throws OutputError naming the path on any failure, leaving
-// whatever was at `path` before untouched and no temporary file behind.
+// Where an output really goes, checked before anything is written: through a symlink to the file
+// it names; refused (OutputError naming the path) onto a device, FIFO, socket or directory, onto a
+// read-only file, into a missing or unwritable directory. Call early, before long work.
+struct OutputTarget {
+    std::filesystem::path requested, path;  // as given; after symlinks
+    bool exists = false;
+    unsigned mode = 0, uid = 0, gid = 0;  // of the existing file, kept by the new one
+    unsigned long links = 1;              // hard links of the existing file
+};
+OutputTarget checkOutputPath(const std::filesystem::path& path);
+
+// Outputs that appear together or not at all: stage() writes each one completely into a
+// temporary file beside its target (full disk, permissions found here); commit() moves them all
+// into place. A batch destroyed before commit() leaves every target as it was and no temporary
+// file. Existing files keep their permissions and owner; a file with other hard links is
+// rewritten in place, so the links keep seeing it.
+class OutputBatch {
+public:
+    OutputBatch() = default;
+    OutputBatch(const OutputBatch&) = delete;
+    OutputBatch& operator=(const OutputBatch&) = delete;
+    ~OutputBatch();
+    void stage(const std::filesystem::path& path, std::string_view data);
+    void commit();
+
+private:
+    struct Staged {
+        OutputTarget target;
+        std::filesystem::path temp;
+    };
+    std::vector<Staged> staged_;
+};
+
+// One output through an OutputBatch: whatever was at `path` stays untouched on failure.
 void writeFileAtomic(const std::filesystem::path& path, std::string_view data);
 
 // Lower-case extension with the dot, e.g. ".glb".

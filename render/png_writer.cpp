@@ -9,16 +9,19 @@
 
 namespace pw::render {
 
-void writePng(const std::filesystem::path& path, uint32_t width, uint32_t height, const std::vector<uint8_t>& rgba) {
+std::string encodePng(const std::filesystem::path& path, uint32_t width, uint32_t height, const std::vector<uint8_t>& rgba) {
     if (rgba.size() < size_t(width) * height * 4) throw OutputError(path.string(), "image buffer too small");
     std::vector<uint8_t> opaque(rgba.begin(), rgba.begin() + size_t(width) * height * 4);
     for (size_t i = 3; i < opaque.size(); i += 4) opaque[i] = 255;
-    // Encode in memory, then write atomically: a failed write leaves no partial PNG behind.
     std::string png;
     const auto append = [](void* out, void* data, int size) { static_cast<std::string*>(out)->append(static_cast<char*>(data), size_t(size)); };
     if (!stbi_write_png_to_func(append, &png, int(width), int(height), 4, opaque.data(), int(width * 4)))
         throw OutputError(path.string(), "PNG encoding failed");
-    writeFileAtomic(path, png);
+    return png;
+}
+
+void writePng(const std::filesystem::path& path, uint32_t width, uint32_t height, const std::vector<uint8_t>& rgba) {
+    writeFileAtomic(path, encodePng(path, width, height, rgba));
 }
 
 }  // namespace pw::render
