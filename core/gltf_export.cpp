@@ -7,14 +7,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 
 #include "core/bezier_curve.hpp"
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
+#include "core/glb_container.hpp"
 #include "core/limits.hpp"
 #include "core/mesh_tessellate.hpp"
 #include "core/patchwork_format.hpp"
@@ -23,39 +26,28 @@ namespace pw {
 
 namespace {
 
-// nlohmann::json → tinygltf::Value. tinygltf has no 64-bit integers: integers that fit in an int
-// stay ints, larger ones become doubles (exact up to 2^53). Doubles are kept as doubles and written
-// round-trip exact by tinygltf's JSON writer.
-tinygltf::Value toValue(const nlohmann::json& j) {
-    using T = nlohmann::json::value_t;
-    switch (j.type()) {
-        case T::boolean: return tinygltf::Value(j.get<bool>());
-        case T::number_integer: {
-            const int64_t v = j.get<int64_t>();
-            if (v >= std::numeric_limits<int>::min() && v <= std::numeric_limits<int>::max())
-                return tinygltf::Value(static_cast<int>(v));
-            return tinygltf::Value(static_cast<double>(v));
-        }
-        case T::number_unsigned: {
-            const uint64_t v = j.get<uint64_t>();
-            if (v <= static_cast<uint64_t>(std::numeric_limits<int>::max())) return tinygltf::Value(static_cast<int>(v));
-            return tinygltf::Value(static_cast<double>(v));
-        }
-        case T::number_float: return tinygltf::Value(j.get<double>());
-        case T::string: return tinygltf::Value(j.get<std::string>());
-        case T::array: {
-            tinygltf::Value::Array a;
-            a.reserve(j.size());
-            for (const auto& e : j) a.push_back(toValue(e));
-            return tinygltf::Value(std::move(a));
-        }
-        case T::object: {
-            tinygltf::Value::Object o;
-            for (auto it = j.begin(); it != j.end(); ++it) o.emplace(it.key(), toValue(it.value()));
-            return tinygltf::Value(std::move(o));
-        }
-        default: return tinygltf::Value();  // null, binary, discarded
+// The document goes into asset.extras.patchwork as JSON text spliced into tinygltf's output in
+// place of a marker: converting it to tinygltf::Value (and back to JSON inside tinygltf) took
+// ~12 GB for a million patches. The marker carries a random part, so no name can collide with it.
+std::string extrasMarker() {
+    std::random_device rd;
+    return "@patchwork-document-" + std::to_string(rd()) + "-" + std::to_string(rd()) + "@";
+}
+
+// Replaces the quoted marker in the JSON (of a .gltf, or the JSON chunk of a .glb, whose lengths
+// and padding are rebuilt) with `documentJson`.
+std::string spliceExtras(const std::string& file, bool binary, const std::string& marker, const std::string& documentJson) {
+    const std::string quoted = "\"" + marker + "\"";
+    if (!binary) {
+        const size_t at = file.find(quoted);
+        if (at == std::string::npos) throw std::logic_error("glTF export: the extras marker is missing");
+        return file.substr(0, at) + documentJson + file.substr(at + quoted.size());
     }
+    const GlbParts parts = splitGlb(file, "(glb)");
+    std::string json(parts.json);
+    const size_t at = json.find(quoted);
+    if (at == std::string::npos) throw std::logic_error("glTF export: the extras marker is missing");
+    return joinGlb(json.substr(0, at) + documentJson + json.substr(at + quoted.size()), parts.rest);
 }
 
 size_t align4(size_t n) { return (n + 3) & ~size_t{3}; }
@@ -134,12 +126,23 @@ std::string exportGltfBytes(const Document& doc, bool binary, const GltfExportOp
     GltfExportStats st;
     st.level = level;
 
+    // What Patchwork writes it must read back: refuse before tessellating when even the mesh alone
+    // could pass the file limit (measured exactly again once serialised).
+    if (const MeshBound bound = meshBound(doc, level); bound.bytes > double(limits::kMaxFileBytes)) {
+        const int fits = highestLevelWithin(doc, double(limits::kMaxFileBytes));
+        throw std::length_error("at level " + std::to_string(level) + " the mesh could take " +
+                                std::to_string(uint64_t(bound.bytes) >> 20) + " MiB, more than the " +
+                                std::to_string(limits::kMaxFileBytes >> 20) + " MiB Patchwork reads back; " +
+                                (fits > 0 ? "use --tess " + std::to_string(fits) + " or lower" : "the document is too large to export"));
+    }
+
     tinygltf::Model model;
+    const std::string marker = extrasMarker();
     model.asset.version = "2.0";
     model.asset.generator = "Patchwork";
     {
         tinygltf::Value::Object extras;
-        extras.emplace("patchwork", toValue(documentToJson(doc)));
+        extras.emplace("patchwork", tinygltf::Value(marker));
         model.asset.extras = tinygltf::Value(std::move(extras));
     }
     model.buffers.emplace_back();
@@ -271,7 +274,10 @@ std::string exportGltfBytes(const Document& doc, bool binary, const GltfExportOp
     tinygltf::TinyGLTF writer;
     if (!writer.WriteGltfSceneToStream(&model, out, /*prettyPrint=*/!binary, /*writeBinary=*/binary) || !out)
         throw OutputError(binary ? "(glb)" : "(gltf)", "tinygltf could not serialise the model");
-    std::string bytes = std::move(out).str();
+    std::string bytes = spliceExtras(std::move(out).str(), binary, marker, documentToJson(doc).dump());
+    if (bytes.size() > limits::kMaxFileBytes)
+        throw std::length_error("the file would be " + std::to_string(bytes.size() >> 20) + " MiB, more than the " +
+                                std::to_string(limits::kMaxFileBytes >> 20) + " MiB Patchwork reads back; use a lower level");
     st.bytes = bytes.size();
     if (stats) *stats = st;
     return bytes;

@@ -9,6 +9,7 @@
 
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
+#include "core/glb_container.hpp"
 #include "core/json_guard.hpp"
 #include "core/patchwork_format.hpp"
 
@@ -57,28 +58,6 @@ const nlohmann::json& documentTemplate() {
     return tmpl;
 }
 
-// The JSON text of a .gltf, or the JSON chunk of a .glb (GLB header and chunk lengths checked, so a
-// truncated or lying header is refused here rather than inside the glTF reader).
-std::string_view gltfJsonText(std::string_view data, bool binary, const std::string& name) {
-    if (!binary) return data;
-    auto u32 = [&](size_t at) {
-        uint32_t v = 0;
-        std::memcpy(&v, data.data() + at, 4);
-        return v;
-    };
-    if (data.size() < 20) throw InputError(name, "not a valid glTF binary (.glb) file: " + std::to_string(data.size()) + " bytes, shorter than its header");
-    if (u32(4) != 2) throw InputError(name, "glTF binary version " + std::to_string(u32(4)) + "; Patchwork reads version 2");
-    if (u32(8) > data.size())
-        throw InputError(name, "not a valid glTF binary (.glb) file: its header says " + std::to_string(u32(8)) + " bytes, the file has " +
-                                   std::to_string(data.size()));
-    const uint32_t jsonLength = u32(12);
-    if (u32(16) != 0x4E4F534Au) throw InputError(name, "not a valid glTF binary (.glb) file: the first chunk is not JSON");
-    if (jsonLength > data.size() - 20)
-        throw InputError(name, "not a valid glTF binary (.glb) file: the JSON chunk says " + std::to_string(jsonLength) +
-                                   " bytes, " + std::to_string(data.size() - 20) + " follow");
-    return data.substr(20, jsonLength);
-}
-
 // Checks of the glTF's own structure that the glTF reader does not make (it crashed on them).
 void checkBuffers(const nlohmann::json& gltf, const std::string& name) {
     const auto it = gltf.find("buffers");
@@ -94,8 +73,8 @@ void checkBuffers(const nlohmann::json& gltf, const std::string& name) {
 }
 
 // The "patchwork" extras and where they are: asset.extras, a scene's extras, or the top level's.
-std::pair<const nlohmann::json*, std::string> findPatchworkExtras(const nlohmann::json& gltf) {
-    auto look = [](const nlohmann::json& owner) -> const nlohmann::json* {
+std::pair<nlohmann::json*, std::string> findPatchworkExtras(nlohmann::json& gltf) {
+    auto look = [](nlohmann::json& owner) -> nlohmann::json* {
         if (!owner.is_object()) return nullptr;
         const auto extras = owner.find("extras");
         if (extras == owner.end() || !extras->is_object()) return nullptr;
@@ -103,11 +82,11 @@ std::pair<const nlohmann::json*, std::string> findPatchworkExtras(const nlohmann
         return p == extras->end() ? nullptr : &*p;
     };
     if (const auto a = gltf.find("asset"); a != gltf.end())
-        if (const auto* v = look(*a)) return {v, "asset.extras.patchwork"};
+        if (auto* v = look(*a)) return {v, "asset.extras.patchwork"};
     if (const auto sc = gltf.find("scenes"); sc != gltf.end() && sc->is_array())
         for (size_t i = 0; i < sc->size(); ++i)
-            if (const auto* v = look((*sc)[i])) return {v, "scenes[" + std::to_string(i) + "].extras.patchwork"};
-    if (const auto* v = look(gltf)) return {v, "extras.patchwork"};
+            if (auto* v = look((*sc)[i])) return {v, "scenes[" + std::to_string(i) + "].extras.patchwork"};
+    if (auto* v = look(gltf)) return {v, "extras.patchwork"};
     return {nullptr, {}};
 }
 
@@ -141,19 +120,27 @@ Document parsePatchworkGltf(std::string_view data, const std::string& name) {
     const char* kind = binary ? "binary (.glb)" : "JSON (.gltf)";
     // Our own pass first, guarded: the glTF reader recurses without a depth limit, and reads integers
     // as 32 bits (an index 2^32 + 1 would become 1).
-    const std::string_view jsonText = gltfJsonText(data, binary, name);
-    const nlohmann::json gltf = parseJsonGuarded(jsonText, name);
+    const GlbParts glb = binary ? splitGlb(data, name) : GlbParts{data, {}};
+    nlohmann::json gltf = parseJsonGuarded(glb.json, name);
     if (!gltf.is_object()) throw InputError(name, std::string("not a valid glTF ") + kind + " file: the JSON is not an object");
     checkBuffers(gltf, name);
 
-    // The glTF reader checks the rest of the structure (asset, accessors, views, chunks).
+    // The document leaves the DOM here; the glTF reader then checks the rest of the structure
+    // (asset, accessors, views, chunks) without it: its own DOM of a million patches took 4 GB.
+    auto [extras, field] = findPatchworkExtras(gltf);
+    nlohmann::json json;
+    if (extras) {
+        json = std::move(*extras);
+        *extras = nlohmann::json::object();
+    }
+    const std::string rest = binary ? joinGlb(gltf.dump(), glb.rest) : gltf.dump();
     tinygltf::Model model;
     std::string err, warn;
     bool ok = false;
     try {
-        ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(data.data()),
-                                                  static_cast<unsigned int>(data.size()), "")
-                    : loader.LoadASCIIFromString(&model, &err, &warn, data.data(), static_cast<unsigned int>(data.size()), "");
+        ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(rest.data()),
+                                                  static_cast<unsigned int>(rest.size()), "")
+                    : loader.LoadASCIIFromString(&model, &err, &warn, rest.data(), static_cast<unsigned int>(rest.size()), "");
     } catch (const std::exception& e) {
         throw InputError(name, std::string("not a valid glTF ") + kind + " file: the glTF reader stopped on it (" + e.what() + ")");
     }
@@ -164,12 +151,10 @@ Document parsePatchworkGltf(std::string_view data, const std::string& name) {
         throw InputError(name, std::string("not a valid glTF ") + kind + " file" + (err.empty() ? std::string() : ": " + err));
     }
 
-    const auto [extras, field] = findPatchworkExtras(gltf);
     if (!extras)
         throw InputError(name, "not a Patchwork glTF: it has no patchwork extras (only files exported by Patchwork "
                                "can be imported as patches)", 0, "asset.extras.patchwork");
-    if (!extras->is_object()) throw InputError(name, "the patchwork extras are not an object", 0, field);
-    nlohmann::json json = *extras;
+    if (!json.is_object()) throw InputError(name, "the patchwork extras are not an object", 0, field);
     restoreDroppedEmpties(json, documentTemplate());
     return documentFromJson(json, name, field);
 }

@@ -349,6 +349,24 @@ void removeUnusedVertices(TriangleMesh& mesh) {
 
 }  // namespace
 
+MeshBound meshBound(const Document& doc, int level) {
+    double windows = double(doc.patches.size());
+    for (const Surface& surf : doc.surfaces)
+        windows += double(netWindowCount(surf.rows, surf.closedV, 1)) * double(netWindowCount(surf.cols, surf.closedU, 1));
+    const double L = level, S = L + 1.0, tris = double(doc.triangles.size());
+    MeshBound b;
+    b.vertices = windows * S * S + tris * S * (S + 1) / 2;
+    b.triangles = windows * 2 * L * L + tris * L * L;
+    b.bytes = b.vertices * 32 + b.triangles * 12;
+    return b;
+}
+
+int highestLevelWithin(const Document& doc, double maxBytes) {
+    int best = 0;
+    for (int l = 1; l <= limits::kMaxExportLevel && meshBound(doc, l).bytes <= maxBytes; ++l) best = l;
+    return best;
+}
+
 TriangleMesh tessellateDocument(const Document& doc, int level) {
     if (level < 1 || level > limits::kMaxExportLevel)
         throw std::invalid_argument("tessellation level " + std::to_string(level) + " is outside 1.." +

@@ -34,6 +34,17 @@ struct TriangleMesh {
     }
 };
 
+// Upper bounds of what tessellateDocument(doc, level) makes, from the counts alone (nothing is
+// tessellated or allocated): (level+1)^2 vertices and 2 level^2 triangles a window, (level+1)(level+2)/2
+// and level^2 a Bézier triangle. bytes: positions, normals and UVs (32 bytes a vertex) and indices.
+struct MeshBound {
+    double vertices = 0, triangles = 0, bytes = 0;
+};
+MeshBound meshBound(const Document& doc, int level);
+// The highest level (>= 1, or 0 when even level 1 does not fit) whose meshBound bytes stay within
+// maxBytes.
+int highestLevelWithin(const Document& doc, double maxBytes);
+
 // level >= 1 (limits::kMaxExportLevel at most). Windows first, then the Bézier triangles
 // (triangle_mesh.hpp), each triangle as level² triangles.
 TriangleMesh tessellateDocument(const Document& doc, int level);

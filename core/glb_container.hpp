@@ -1,0 +1,23 @@
+// The GLB container (glTF 2.0, section 4.4): a 12-byte header, a JSON chunk, an optional BIN chunk.
+// Split with every length checked (InputError naming the file), and joined again around new JSON
+// (the exporter splices the document into the JSON; the importer hands the glTF reader the file
+// without it).
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace pw {
+
+struct GlbParts {
+    std::string_view json;  // the JSON chunk's bytes (padding included)
+    std::string_view rest;  // every chunk after it (the BIN chunk with its header), as stored
+};
+
+GlbParts splitGlb(std::string_view file, const std::string& sourceName);
+
+// A GLB of `json` (padded with spaces to 4 bytes) followed by `rest` as split. Throws
+// std::length_error past the 4 GiB a GLB can describe.
+std::string joinGlb(std::string json, std::string_view rest);
+
+}  // namespace pw

@@ -1,0 +1,59 @@
+// Issue 24: Patchwork never writes a file it refuses to read, and refuses before allocating. A
+// 2 000-patch export at --tess 256 reached 14 GB before its refusal; 20 000 patches at the default
+// level wrote a 325 MB .glb that `info` then refused (limit 256 MB).
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "core/errors.hpp"
+#include "core/file_io.hpp"
+#include "core/gltf_export.hpp"
+#include "core/gltf_import.hpp"
+#include "core/limits.hpp"
+#include "core/mesh_tessellate.hpp"
+#include "core/model_builders.hpp"
+#include "support.hpp"
+
+using namespace pw;
+
+TEST(ExportLimits, BoundsHoldForWhatTessellationMakes) {
+    Document doc = makePatchGrid(3, 2);
+    for (int level : {1, 2, 7, 16}) {
+        const MeshBound b = meshBound(doc, level);
+        const TriangleMesh m = tessellateDocument(doc, level);
+        EXPECT_LE(double(m.positions.size()), b.vertices) << level;
+        EXPECT_LE(double(m.indices.size() / 3), b.triangles) << level;
+        EXPECT_EQ(double(m.indices.size() / 3), b.triangles) << level;  // a flat grid has no degenerate triangle
+    }
+}
+
+TEST(ExportLimits, AnExportPastTheReadLimitIsRefusedBeforeTessellating) {
+    const Document doc = makePatchGrid(45, 45);  // 2 025 patches
+    const int fits = highestLevelWithin(doc, double(limits::kMaxFileBytes));
+    ASSERT_GT(fits, 1);
+    EXPECT_LE(meshBound(doc, fits).bytes, double(limits::kMaxFileBytes));
+    EXPECT_GT(meshBound(doc, fits + 1).bytes, double(limits::kMaxFileBytes));
+    const auto dir = test::freshTempDir("export-limits");
+    GltfExportOptions o;
+    o.level = 256;
+    try {
+        exportGltf(doc, dir / "big.glb", o);
+        FAIL() << "exported past the read limit";
+    } catch (const OutputError& e) {
+        const std::string msg = e.what();
+        EXPECT_NE(msg.find("big.glb"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("use --tess " + std::to_string(fits) + " or lower"), std::string::npos) << msg;
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "big.glb"));
+}
+
+// The document travels as JSON text spliced into the glTF, not through tinygltf's values: it comes
+// back whole from both containers, empty arrays and all.
+TEST(ExportLimits, SplicedDocumentRoundTrips) {
+    Document doc = makePatchGrid(2, 2);
+    doc.name = "@patchwork-document-1-2@";  // looks like the marker; must not confuse the splice
+    for (bool binary : {false, true}) {
+        const std::string bytes = exportGltfBytes(doc, binary, GltfExportOptions{});
+        EXPECT_EQ(parsePatchworkGltf(bytes, binary ? "x.glb" : "x.gltf"), doc) << binary;
+    }
+}
