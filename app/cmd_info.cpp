@@ -8,6 +8,7 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "core/errors.hpp"
 #include "core/constraint_solver.hpp"
 #include "core/continuity_report.hpp"
 #include "core/document_io.hpp"
@@ -85,7 +86,7 @@ int runInfo(const InfoOptions& opt) {
         return 0;
     }
 
-    std::cout << opt.file << (doc.name.empty() ? "" : "  (\"" + doc.name + "\")") << "\n";
+    std::cout << printable(opt.file) << (doc.name.empty() ? "" : "  (\"" + printable(doc.name) + "\")") << "\n";
     std::cout << "  points      " << doc.points.size() << "\n";
     std::cout << "  patches     " << doc.patches.size() << "\n";
     std::cout << "  surfaces    " << doc.surfaces.size() << "\n";

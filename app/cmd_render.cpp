@@ -69,10 +69,7 @@ render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& do
         o.tess.adaptive = *m;
     }
     if (!a.targetPx.empty()) {
-        float px = 0;
-        try { px = std::stof(a.targetPx); } catch (const std::exception&) { px = NAN; }
-        if (!std::isfinite(px) || px < 0.5f || px > 1000.0f) bad("--target-px", "'" + a.targetPx + "' must be from 0.5 to 1000");
-        o.tess.targetPixels = px;
+        o.tess.targetPixels = float(parseNumber("render", "--target-px", a.targetPx, 0.5, 1000.0));
     }
     if (!a.maxLevel.empty()) o.tess.maxLevel = parseLevel("--max-level", a.maxLevel);
     if (!a.isolines.empty()) {

@@ -23,6 +23,10 @@ std::pair<CLI::App*, std::shared_ptr<Options>> addSubcommand(CLI::App& app, Acti
     return {cmd, options};
 }
 
+// Every numeric option of every sub-command (CLI11 type INT, UINT, FLOAT, NUMBER) takes plain
+// decimals only: CLI11 alone reads "0x20" as 32 and "0b11" as 3.
+void requirePlainDecimals(CLI::App& app);
+
 void registerInfoCommand(CLI::App& app, Action& run);
 void registerExportCommand(CLI::App& app, Action& run);
 void registerConvertCommand(CLI::App& app, Action& run);

@@ -1,6 +1,10 @@
 #include "app/level_args.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include <cmath>
+#include <cstdlib>
+#include <regex>
 #include <sstream>
 
 #include "core/errors.hpp"
@@ -12,15 +16,26 @@ void badOption(const std::string& command, const std::string& option, const std:
     throw InputError(command, option + ": " + what);
 }
 
-float parseLevel(const std::string& command, const std::string& option, const std::string& text) {
-    float v = 0.0f;
-    try {
-        size_t used = 0;
-        v = std::stof(text, &used);
-        if (used != text.size()) throw std::invalid_argument("trailing");
-    } catch (const std::exception&) {
-        badOption(command, option, "'" + text + "' is not a number");
+bool isPlainDecimal(const std::string& text) {
+    static const std::regex decimal(R"(^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?$)");
+    return std::regex_match(text, decimal);
+}
+
+double parseNumber(const std::string& command, const std::string& option, const std::string& text, double lo, double hi) {
+    // Plain decimal only: std::stod would take "0x20", "inf", " 4" and stop quietly at "0.5abc".
+    if (!isPlainDecimal(text)) badOption(command, option, "'" + text + "' is not a decimal number");
+    const double v = std::strtod(text.c_str(), nullptr);
+    if (!std::isfinite(v) || v < lo || v > hi) {
+        std::ostringstream range;
+        range << "'" << text << "' must be from " << lo << " to " << hi;
+        badOption(command, option, range.str());
     }
+    return v;
+}
+
+float parseLevel(const std::string& command, const std::string& option, const std::string& text) {
+    if (!isPlainDecimal(text)) badOption(command, option, "'" + text + "' is not a number");
+    const float v = std::strtof(text.c_str(), nullptr);
     if (!std::isfinite(v) || v < limits::kMinTessLevel || v > limits::kMaxTessLevel)
         badOption(command, option, "tessellation level '" + text + "' must be from 1 to 64");
     return v;
@@ -71,6 +86,20 @@ std::vector<PaneSpec> parsePaneSpecs(const std::string& command, const std::stri
     }
     if (out.empty() || out.size() > 4) badOption(command, option, "give 1 to 4 panes, e.g. equal,fractional_odd:4.5");
     return out;
+}
+
+}  // namespace pw::app
+
+namespace pw::app {
+
+void requirePlainDecimals(CLI::App& app) {
+    const CLI::Validator decimal(
+        [](std::string& text) { return isPlainDecimal(text) ? std::string() : "'" + text + "' is not a decimal number"; }, "", "decimal");
+    for (CLI::Option* opt : app.get_options()) {
+        const std::string type = opt->get_type_name();
+        if (type == "INT" || type == "UINT" || type == "FLOAT" || type == "NUMBER") opt->check(decimal);
+    }
+    for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) requirePlainDecimals(*sub);
 }
 
 }  // namespace pw::app

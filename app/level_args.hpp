@@ -12,6 +12,10 @@ namespace pw::app {
 
 [[noreturn]] void badOption(const std::string& command, const std::string& option, const std::string& what);
 
+// True for a plain decimal number ("4", "-0.5", "1e3"); not "0x20", "inf", " 4" or "0.5abc".
+bool isPlainDecimal(const std::string& text);
+// A plain decimal number from lo to hi, or badOption naming the option and the range.
+double parseNumber(const std::string& command, const std::string& option, const std::string& text, double lo, double hi);
 float parseLevel(const std::string& command, const std::string& option, const std::string& text);
 // Exactly `count` comma-separated levels.
 std::vector<float> parseLevels(const std::string& command, const std::string& option, const std::string& text, size_t count);

@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
     pw::app::registerShadersCommand(app, run);
     pw::app::registerEditCommand(app, run);
 
+    pw::app::requirePlainDecimals(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

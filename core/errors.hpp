@@ -4,8 +4,14 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace pw {
+
+// `text` with control characters (below 0x20, and 0x7f) written as \xNN, so that a name or path
+// from a file cannot move the cursor, clear the screen or retitle the terminal when printed. Every
+// error message goes through it; so does anything else that prints a name.
+std::string printable(std::string_view text);
 
 class InputError : public std::runtime_error {
 public:

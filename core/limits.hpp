@@ -16,5 +16,8 @@ inline constexpr double kMaxCoordinate = 1e9;                        // |x|, |y|
 inline constexpr float kMinTessLevel = 1.0f;
 inline constexpr float kMaxTessLevel = 64.0f;  // Vulkan's guaranteed maxTessellationGenerationLevel
 inline constexpr int kMaxExportLevel = 256;    // CPU tessellation for export
+// A perspective camera's vertical field of view, degrees, in (0, kMaxFovYDeg]: at 180 the
+// projection is singular (it rendered blank).
+inline constexpr double kMaxFovYDeg = 170.0;
 
 }  // namespace pw::limits

@@ -273,7 +273,7 @@ Camera readCamera(const Reader& r, const json& v, const std::string& path) {
     r.optional(v, path, "distance", [&](const json& x, const std::string& p) { c.distance = r.numberInRange(x, p, 0, 1e12, true); });
     r.optional(v, path, "yawDeg", [&](const json& x, const std::string& p) { c.yawDeg = r.numberInRange(x, p, -1e6, 1e6); });
     r.optional(v, path, "pitchDeg", [&](const json& x, const std::string& p) { c.pitchDeg = r.numberInRange(x, p, -1e6, 1e6); });
-    r.optional(v, path, "fovYDeg", [&](const json& x, const std::string& p) { c.fovYDeg = r.numberInRange(x, p, 0, 180, true); });
+    r.optional(v, path, "fovYDeg", [&](const json& x, const std::string& p) { c.fovYDeg = r.numberInRange(x, p, 0, limits::kMaxFovYDeg, true); });
     r.optional(v, path, "orthographic", [&](const json& x, const std::string& p) { c.orthographic = r.boolean(x, p); });
     r.optional(v, path, "zUp", [&](const json& x, const std::string& p) { c.zUp = r.boolean(x, p); });
     return c;
