@@ -28,16 +28,26 @@ public:
     explicit Autosaver(std::filesystem::path dir = autosaveDirectory(), int pid = 0);
     // Writes the document now (atomic). Throws OutputError when the directory cannot be written.
     void save(const Document& doc, const std::string& originalPath);
-    // Removes this process's autosave (after a save or a clean exit).
+    // Removes this process's autosave (after a save or a clean exit), and an adopted one.
     void discard();
+    // The editor recovered `recovered`: keep its files until this autosaver's next successful save()
+    // or discard(), so that a second crash in between does not lose the recovered work.
+    void adopt(const AutosaveEntry& recovered);
     const std::filesystem::path& documentPath() const { return doc_; }
 
 private:
     std::filesystem::path dir_, doc_, note_;
     int pid_;
+    std::optional<AutosaveEntry> adopted_;
 };
 
-// Autosaves left by processes that no longer run, newest first.
+// Creates `dir` as a folder only this user can enter (0700), or checks an existing one: a real
+// folder owned by this user, made private if it is not. Throws OutputError naming it otherwise.
+void ensurePrivateDirectory(const std::filesystem::path& dir);
+bool isPrivateDirectory(const std::filesystem::path& dir);
+
+// Autosaves left by processes that no longer run, newest first; none from a folder that is not
+// private (another user could have planted them).
 std::vector<AutosaveEntry> findRecoverableAutosaves(const std::filesystem::path& dir = autosaveDirectory());
 // Deletes an entry's files.
 void removeAutosave(const AutosaveEntry& e);

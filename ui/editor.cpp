@@ -142,7 +142,9 @@ void Editor::recoverAutosave() {
     try {
         setDocument(loadDocument(e.document), e.originalPath);
         session_.setForceModified(true);  // the recovered state differs from the file on disk
-        removeAutosave(e);
+        // Kept until the work is safe elsewhere (a save, or this editor's own autosave): a second
+        // crash before then must not lose it.
+        autosaver_.adopt(e);
         recoverable.erase(recoverable.begin());
         status("Recovered autosave of " + (e.originalPath.empty() ? std::string("untitled") : e.originalPath));
     } catch (const std::exception& ex) {
@@ -158,11 +160,12 @@ void Editor::idleTick() {
     try {
         const Document out = session_.documentToSave();
         autosaver_.save(out, session_.path());
+        autosaveError_.clear();
     } catch (const std::exception& e) {
-        status_ = std::string("Autosave failed: ") + e.what();
-        statusTime_ = now;
+        autosaveError_ = std::string("Autosave failed: ") + e.what();
     }
 }
+
 
 int Editor::run() {
     window_.run(*this);
@@ -199,6 +202,10 @@ void Editor::drawUi() {
     if (!status_.empty() && std::chrono::steady_clock::now() - statusTime_ < std::chrono::seconds(6))
         ImGui::GetForegroundDrawList()->AddText(ImVec2(layout().left + 12.0f, io.DisplaySize.y - 24.0f), IM_COL32(220, 220, 220, 255),
                                                 status_.c_str());
+    // A failed autosave stays in view, above the status line, until an autosave succeeds.
+    if (!autosaveError_.empty())
+        ImGui::GetForegroundDrawList()->AddText(ImVec2(layout().left + 12.0f, io.DisplaySize.y - 44.0f), IM_COL32(255, 120, 90, 255),
+                                                autosaveError_.c_str());
 }
 
 void Editor::drawFrame() {

@@ -162,6 +162,7 @@ private:
     std::vector<std::string> recent_;
     std::string status_;
     std::chrono::steady_clock::time_point statusTime_;
+    std::string autosaveError_;                   // shown until an autosave succeeds
 
     // The panels.
     TestTrace trace_;
