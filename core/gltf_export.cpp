@@ -126,12 +126,15 @@ std::string exportGltfBytes(const Document& doc, bool binary, const GltfExportOp
     GltfExportStats st;
     st.level = level;
 
-    // What Patchwork writes it must read back: refuse before tessellating when even the mesh alone
-    // could pass the file limit (measured exactly again once serialised).
-    if (const MeshBound bound = meshBound(doc, level); bound.bytes > double(limits::kMaxFileBytes)) {
-        const int fits = highestLevelWithin(doc, double(limits::kMaxFileBytes));
-        throw std::length_error("at level " + std::to_string(level) + " the mesh could take " +
-                                std::to_string(uint64_t(bound.bytes) >> 20) + " MiB, more than the " +
+    // What Patchwork writes it must read back: refuse before tessellating when the document's JSON
+    // and the mesh (base64 in a .gltf) could pass the file limit (measured exactly again once
+    // serialised).
+    const std::string documentJson = documentToJson(doc).dump();
+    const double meshFactor = binary ? 1.0 : 4.0 / 3.0, room = double(limits::kMaxFileBytes) - double(documentJson.size());
+    if (const MeshBound bound = meshBound(doc, level); bound.bytes * meshFactor > room) {
+        const int fits = room > 0 ? highestLevelWithin(doc, room / meshFactor) : 0;
+        throw std::length_error("at level " + std::to_string(level) + " the file could take " +
+                                std::to_string((uint64_t(bound.bytes * meshFactor) + documentJson.size()) >> 20) + " MiB, more than the " +
                                 std::to_string(limits::kMaxFileBytes >> 20) + " MiB Patchwork reads back; " +
                                 (fits > 0 ? "use --tess " + std::to_string(fits) + " or lower" : "the document is too large to export"));
     }
@@ -274,7 +277,7 @@ std::string exportGltfBytes(const Document& doc, bool binary, const GltfExportOp
     tinygltf::TinyGLTF writer;
     if (!writer.WriteGltfSceneToStream(&model, out, /*prettyPrint=*/!binary, /*writeBinary=*/binary) || !out)
         throw OutputError(binary ? "(glb)" : "(gltf)", "tinygltf could not serialise the model");
-    std::string bytes = spliceExtras(std::move(out).str(), binary, marker, documentToJson(doc).dump());
+    std::string bytes = spliceExtras(std::move(out).str(), binary, marker, documentJson);
     if (bytes.size() > limits::kMaxFileBytes)
         throw std::length_error("the file would be " + std::to_string(bytes.size() >> 20) + " MiB, more than the " +
                                 std::to_string(limits::kMaxFileBytes >> 20) + " MiB Patchwork reads back; use a lower level");
