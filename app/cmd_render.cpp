@@ -206,7 +206,7 @@ int runRender(const RenderArgs& a) {
                 const render::PaneResult& r = results[i];
                 said << "wrote " << a.output << " pane " << i + 1 << ": " << render::paneCaption(r.tess, r.stats.triangles())
                           << ", GPU " << r.stats.gpuMs << " ms\n";
-                nlohmann::json p = nlohmann::json::parse(render::statsToJson(r.stats));
+                nlohmann::json p = render::statsJson(r.stats);
                 p["spacing"] = spacingName(r.tess.spacing);
                 p["outer"] = r.tess.outer;
                 p["inner"] = r.tess.inner;

@@ -59,11 +59,15 @@ public:
         return buf;
     }
 
-    // Removes the folders the constructor made (innermost first) while they are empty.
-    void removeCreatedFolders() const {
+    FrameNames(const FrameNames&) = delete;
+    FrameNames& operator=(const FrameNames&) = delete;
+    // Takes away the folders the constructor made (innermost first, while empty), unless the sweep
+    // was written (keepFolders).
+    ~FrameNames() {
         std::error_code ec;
         for (const std::filesystem::path& d : created_) std::filesystem::remove(d, ec);
     }
+    void keepFolders() { created_.clear(); }
 
 private:
     std::string pattern_;
@@ -76,10 +80,6 @@ void caption(const render::LabelRaster& labels, std::vector<uint8_t>& rgba, unsi
     st.box = true;
     labels.draw({w, h, rgba}, st.pixels * 0.6f, st.pixels * 0.6f, text, st);
 }
-
-int writeSweep(const SweepArgs& a, const FrameNames& names, int frames, float from, float to, unsigned w, unsigned h, bool domain,
-               const std::vector<render::DomainPane>& panes, const Document& doc, const std::vector<render::ModelPane>& modelPanes,
-               render::RenderOptions opt);
 
 int runSweep(const SweepArgs& a) {
     const std::string cmd = "sweep";
@@ -114,19 +114,7 @@ int runSweep(const SweepArgs& a) {
         if (a.render.overlay.empty()) opt.display.showWireframe = true;  // popping and sliding show in the wireframe
         opt.tess.adaptive = AdaptiveMode::None;
     }
-    const FrameNames names(a.output);
-    try {
-        return writeSweep(a, names, frames, from, to, w, h, domain, panes, doc, modelPanes, opt);
-    } catch (...) {
-        names.removeCreatedFolders();
-        throw;
-    }
-}
-
-int writeSweep(const SweepArgs& a, const FrameNames& names, int frames, float from, float to, unsigned w, unsigned h, bool domain,
-               const std::vector<render::DomainPane>& panes, const Document& doc, const std::vector<render::ModelPane>& modelPanes,
-               render::RenderOptions opt) {
-    const std::string cmd = "sweep";
+    FrameNames names(a.output);
     (void)checkOutputPath(names(0));  // refuse an unwritable output before the work
 
     render::DeviceOptions dopt;
@@ -171,6 +159,7 @@ int writeSweep(const SweepArgs& a, const FrameNames& names, int frames, float fr
             out.stage(names(k), render::encodePng(names(k), w, h, rgba));
         }
         out.commit();
+        names.keepFolders();
         std::cout << "wrote " << frames << " frames (" << w << "x" << h << ", level " << render::formatLevel(from) << " to "
                   << render::formatLevel(to) << "): " << names(0) << " .. " << names(frames - 1) << "\n";
         rc = validationExitCode(dev, cmd);

@@ -131,8 +131,7 @@ void OutputBatch::stage(const std::filesystem::path& path, std::string_view data
 
 void OutputBatch::commit() {
     std::error_code ec;
-    for (size_t i = 0; i < staged_.size(); ++i) {
-        const Staged& s = staged_[i];
+    for (const Staged& s : staged_) {
         if (s.target.links > 1) {
             // Other names share this file: replace its bytes in place so they keep seeing it. The
             // complete copy already exists (staged), so a full disk was found before this point.

@@ -37,17 +37,18 @@ std::string extrasMarker() {
 // Replaces the quoted marker in the JSON (of a .gltf, or the JSON chunk of a .glb, whose lengths
 // and padding are rebuilt) with `documentJson`.
 std::string spliceExtras(const std::string& file, bool binary, const std::string& marker, const std::string& documentJson) {
-    const std::string quoted = "\"" + marker + "\"";
-    if (!binary) {
-        const size_t at = file.find(quoted);
-        if (at == std::string::npos) throw std::logic_error("glTF export: the extras marker is missing");
-        return file.substr(0, at) + documentJson + file.substr(at + quoted.size());
-    }
+    auto splice = [&](std::string_view json) {
+        const std::string quoted = "\"" + marker + "\"";
+        const size_t at = json.find(quoted);
+        if (at == std::string_view::npos) throw std::logic_error("glTF export: the extras marker is missing");
+        std::string out(json.substr(0, at));
+        out += documentJson;
+        out += json.substr(at + quoted.size());
+        return out;
+    };
+    if (!binary) return splice(file);
     const GlbParts parts = splitGlb(file, "(glb)");
-    std::string json(parts.json);
-    const size_t at = json.find(quoted);
-    if (at == std::string::npos) throw std::logic_error("glTF export: the extras marker is missing");
-    return joinGlb(json.substr(0, at) + documentJson + json.substr(at + quoted.size()), parts.rest);
+    return joinGlb(splice(parts.json), parts.rest);
 }
 
 size_t align4(size_t n) { return (n + 3) & ~size_t{3}; }

@@ -17,9 +17,10 @@ namespace pw {
 
 namespace {
 
-// tinygltf drops empty arrays, empty objects and nulls from extras when it reads them (and writes
-// an empty array as null). Put them back where the native format has a container or a null, using
-// documentToJson of a document with one of everything as the template of the keys.
+// Files exported before the document was spliced in as text went through tinygltf's writer, which
+// drops empty objects and nulls from extras and writes an empty array as null. Put them back where
+// the native format has a container or a null, using documentToJson of a document with one of
+// everything as the template of the keys.
 void restoreDroppedEmpties(nlohmann::json& j, const nlohmann::json& tmpl) {
     if (!j.is_object() || !tmpl.is_object()) return;
     for (auto it = tmpl.begin(); it != tmpl.end(); ++it) {

@@ -48,6 +48,7 @@ size_t excessiveNesting(std::string_view text, int maxDepth) {
     return std::string_view::npos;
 }
 
+namespace {
 void guardJsonText(std::string_view text, const std::string& sourceName, int maxDepth) {
     if (text.size() > limits::kMaxFileBytes)
         throw InputError(sourceName, "JSON is " + std::to_string(text.size()) + " bytes; the limit is " +
@@ -55,6 +56,7 @@ void guardJsonText(std::string_view text, const std::string& sourceName, int max
     if (const size_t at = excessiveNesting(text, maxDepth); at != std::string_view::npos)
         throw InputError(sourceName, "JSON nested deeper than " + std::to_string(maxDepth) + " levels", lineAt(text, at));
 }
+}  // namespace
 
 nlohmann::json parseJsonGuarded(std::string_view text, const std::string& sourceName, int maxDepth) {
     guardJsonText(text, sourceName, maxDepth);

@@ -29,8 +29,4 @@ std::string parseErrorReason(const std::string& what);
 // kMaxJsonDepth is refused before parsing. Throws InputError naming `sourceName` and the line.
 nlohmann::json parseJsonGuarded(std::string_view text, const std::string& sourceName, int maxDepth = kMaxJsonDepth);
 
-// Throws InputError naming `sourceName` and the line when `text` is larger than
-// limits::kMaxFileBytes or nests deeper than `maxDepth` (for parsers Patchwork does not own).
-void guardJsonText(std::string_view text, const std::string& sourceName, int maxDepth = kMaxJsonDepth);
-
 }  // namespace pw

@@ -372,9 +372,7 @@ TriangleMesh tessellateDocument(const Document& doc, int level) {
         throw std::invalid_argument("tessellation level " + std::to_string(level) + " is outside 1.." +
                                     std::to_string(limits::kMaxExportLevel));
     const std::vector<PatchInstance> windows = expandPatches(doc);
-    const double S = level + 1.0;
-    const double maxVertices = static_cast<double>(windows.size()) * S * S + static_cast<double>(doc.triangles.size()) * S * (S + 1) / 2;
-    if (maxVertices >= 4294967295.0)
+    if (meshBound(doc, level).vertices >= 4294967295.0)
         throw std::length_error(std::to_string(windows.size() + doc.triangles.size()) + " patches at level " +
                                 std::to_string(level) + " would need more than 2^32 vertices; use a lower level");
     TriangleMesh mesh;

@@ -12,16 +12,17 @@ constexpr VkQueryPipelineStatisticFlags kStatFlags =
     VK_QUERY_PIPELINE_STATISTIC_TESSELLATION_EVALUATION_SHADER_INVOCATIONS_BIT;
 }
 
-std::string statsToJson(const FrameStats& s, int indent) {
+nlohmann::json statsJson(const FrameStats& s) {
     // Grouped as the stats read: pipeline counts, patches and draws, times.
-    const nlohmann::json j = {
+    return {
         {"triangles", s.triangles()}, {"clipping_invocations", s.clippingInvocations}, {"clipping_primitives", s.clippingPrimitives},
         {"tess_eval_invocations", s.tesInvocations}, {"tess_control_patches", s.tcsPatches}, {"input_primitives", s.inputPrimitives},
         {"pipeline_statistics", s.pipelineStatsValid},
         {"patches", s.patches}, {"patches_culled", s.patchesCulled}, {"draws", s.draws},
         {"gpu_ms", s.gpuMs}, {"wall_ms", s.wallMs}, {"submit_wait_ms", s.submitMs}};
-    return j.dump(indent);
 }
+
+std::string statsToJson(const FrameStats& s, int indent) { return statsJson(s).dump(indent); }
 
 FrameQueries::FrameQueries(Device& dev) : dev_(dev) {
     if (dev.caps().timestamps) {

@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "render/device.hpp"
 #include "render/vk_owned.hpp"
 
@@ -29,7 +31,8 @@ struct FrameStats {
     uint64_t triangles() const { return clippingInvocations; }
 };
 
-std::string statsToJson(const FrameStats& s, int indent = 2);
+nlohmann::json statsJson(const FrameStats& s);
+std::string statsToJson(const FrameStats& s, int indent = 2);  // statsJson, dumped
 
 class FrameQueries {
 public:
