@@ -15,12 +15,6 @@ namespace {
 
 std::string bin() { return patchworkBinary().string(); }
 
-size_t entries(const fs::path& dir) {
-    size_t n = 0;
-    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++n;
-    return n;
-}
-
 // `render -o ok.png --stats nodir/s.json` exited 2 but left ok.png behind.
 TEST(CliOutputs, RenderWithAnUnwritableStatsFileWritesNoPng) {
     const fs::path dir = freshTempDir("out-render");
@@ -29,7 +23,7 @@ TEST(CliOutputs, RenderWithAnUnwritableStatsFileWritesNoPng) {
                                        (dir / "nodir" / "s.json").string());
         EXPECT_EQ(r.exitCode, 2) << kind << r.output;
         EXPECT_NE(r.output.find("nodir"), std::string::npos) << r.output;
-        EXPECT_EQ(entries(dir), 0u) << kind;
+        EXPECT_EQ(entryCount(dir), 0u) << kind;
     }
 }
 
@@ -40,7 +34,7 @@ TEST(CliOutputs, RenderOntoAFifoIsRefusedAndTheFifoStays) {
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_NE(r.output.find("a FIFO"), std::string::npos) << r.output;
     EXPECT_TRUE(fs::is_fifo(dir / "x.png"));
-    EXPECT_EQ(entries(dir), 1u);
+    EXPECT_EQ(entryCount(dir), 1u);
 }
 
 // A sweep that fails at frame 3 of 5 (the frame's name is taken by a FIFO) leaves no frame, and
@@ -51,14 +45,14 @@ TEST(CliOutputs, SweepIsAllFramesOrNone) {
     const RunResult r = runCommand(bin() + " sweep --domain quad --from 1 --to 5 --frames 5 --size 64x64 -o " + (dir / "f%02d.png").string());
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_NE(r.output.find("f02.png"), std::string::npos) << r.output;
-    EXPECT_EQ(entries(dir), 1u);  // the FIFO only
+    EXPECT_EQ(entryCount(dir), 1u);  // the FIFO only
 
     // A failure after the frame folders were made (no such device) takes them away again.
     const RunResult m = runCommand(bin() + " sweep --domain quad --from 1 --to 5 --frames 5 --size 64x64 --device no-such-gpu-xyz -o " +
                                    (dir / "new" / "deeper").string());
     EXPECT_NE(m.exitCode, 0) << m.output;
     EXPECT_FALSE(fs::exists(dir / "new")) << m.output;
-    EXPECT_EQ(entries(dir), 1u);
+    EXPECT_EQ(entryCount(dir), 1u);
 }
 
 }  // namespace

@@ -21,11 +21,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
 // Leftover temporary files of interrupted saves in dir (".<name>.tmp<n>").
 int temporaries(const fs::path& dir) {
     int n = 0;
@@ -49,7 +44,7 @@ TEST(AtomicSave, KilledInTheMiddleOfASaveLeavesTheOldFileIntact) {
     const auto t0 = std::chrono::steady_clock::now();
     pw::writeFileAtomic(target, oldData);
     const double saveUs = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
-    ASSERT_EQ(slurp(target), oldData);
+    ASSERT_EQ(pw::test::readBytes(target), oldData);
 
     std::mt19937 rng(42);
     std::uniform_real_distribution<double> when(0.0, 1.2 * saveUs);
@@ -69,7 +64,7 @@ TEST(AtomicSave, KilledInTheMiddleOfASaveLeavesTheOldFileIntact) {
         kill(child, SIGKILL);
         int status = 0;
         waitpid(child, &status, 0);
-        const std::string now = slurp(target);
+        const std::string now = pw::test::readBytes(target);
         ASSERT_TRUE(now == oldData || now == newData) << "trial " << trial << ": the file holds " << now.size()
                                                       << " bytes of neither version";
         const bool killed = WIFSIGNALED(status);

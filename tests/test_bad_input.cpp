@@ -159,13 +159,6 @@ std::string quote(const fs::path& p) {
 
 std::string bin() { return quote(patchworkBinary()); }
 
-std::string readAll(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
 std::vector<std::string> listDir(const fs::path& dir) {
     std::vector<std::string> names;
     for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
@@ -344,7 +337,7 @@ TEST(BadInputCli, FailedConversionLeavesExistingOutputIntact) {
         const auto r = test::runCommand(bin() + " convert " + quote(in) + " " + quote(target));
         SCOPED_TRACE(out);
         expectOneLineError(r, in.string());
-        EXPECT_EQ(readAll(target), "ORIGINAL CONTENT\n");
+        EXPECT_EQ(test::readBytes(target), "ORIGINAL CONTENT\n");
     }
     // Unknown output type: refused before anything is read or written.
     const auto r = test::runCommand(bin() + " convert " + quote(test::dataDir() / "teapot.bpt") + " " + quote(dir / "x.obj"));

@@ -19,17 +19,6 @@ using namespace pw;
 
 namespace {
 
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-size_t entries(const fs::path& dir) {
-    size_t n = 0;
-    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++n;
-    return n;
-}
-
 std::string outputError(const fs::path& p, std::string_view data) {
     try {
         writeFileAtomic(p, data);
@@ -48,9 +37,9 @@ TEST(OutputFiles, WritesThroughASymlinkToItsTarget) {
     fs::create_symlink("real/a.txt", dir / "link.txt");
     writeFileAtomic(dir / "link.txt", "new");
     EXPECT_TRUE(fs::is_symlink(dir / "link.txt"));
-    EXPECT_EQ(slurp(dir / "real" / "a.txt"), "new");
-    EXPECT_EQ(entries(dir), 2u);
-    EXPECT_EQ(entries(dir / "real"), 1u);
+    EXPECT_EQ(test::readBytes(dir / "real" / "a.txt"), "new");
+    EXPECT_EQ(test::entryCount(dir), 2u);
+    EXPECT_EQ(test::entryCount(dir / "real"), 1u);
 }
 
 TEST(OutputFiles, RefusesADanglingSymlink) {
@@ -58,7 +47,7 @@ TEST(OutputFiles, RefusesADanglingSymlink) {
     fs::create_symlink("nowhere/x.txt", dir / "link.txt");
     EXPECT_NE(outputError(dir / "link.txt", "x").find("link.txt"), std::string::npos);
     EXPECT_TRUE(fs::is_symlink(dir / "link.txt"));
-    EXPECT_EQ(entries(dir), 1u);
+    EXPECT_EQ(test::entryCount(dir), 1u);
 }
 
 TEST(OutputFiles, RefusesAFifoAndADeviceNode) {
@@ -76,7 +65,7 @@ TEST(OutputFiles, RefusesAFifoAndADeviceNode) {
     // Through a symlink too.
     fs::create_symlink("fifo", dir / "to-fifo");
     EXPECT_NE(outputError(dir / "to-fifo", "x").find("a FIFO"), std::string::npos);
-    EXPECT_EQ(entries(dir), fs::exists(dir / "null") ? 3u : 2u);
+    EXPECT_EQ(test::entryCount(dir), fs::exists(dir / "null") ? 3u : 2u);
 }
 
 TEST(OutputFiles, RefusesAReadOnlyFileAndKeepsIt) {
@@ -84,8 +73,8 @@ TEST(OutputFiles, RefusesAReadOnlyFileAndKeepsIt) {
     writeFileAtomic(dir / "ro.txt", "keep");
     fs::permissions(dir / "ro.txt", fs::perms::owner_read | fs::perms::group_read);
     EXPECT_NE(outputError(dir / "ro.txt", "lost").find("read-only"), std::string::npos);
-    EXPECT_EQ(slurp(dir / "ro.txt"), "keep");
-    EXPECT_EQ(entries(dir), 1u);
+    EXPECT_EQ(test::readBytes(dir / "ro.txt"), "keep");
+    EXPECT_EQ(test::entryCount(dir), 1u);
 }
 
 TEST(OutputFiles, KeepsPermissions) {
@@ -94,7 +83,7 @@ TEST(OutputFiles, KeepsPermissions) {
     fs::permissions(dir / "secret.txt", fs::perms::owner_read | fs::perms::owner_write);
     writeFileAtomic(dir / "secret.txt", "b");
     EXPECT_EQ(fs::status(dir / "secret.txt").permissions(), fs::perms::owner_read | fs::perms::owner_write);
-    EXPECT_EQ(slurp(dir / "secret.txt"), "b");
+    EXPECT_EQ(test::readBytes(dir / "secret.txt"), "b");
 }
 
 TEST(OutputFiles, KeepsHardLinks) {
@@ -102,9 +91,9 @@ TEST(OutputFiles, KeepsHardLinks) {
     writeFileAtomic(dir / "a.txt", "old");
     fs::create_hard_link(dir / "a.txt", dir / "b.txt");
     writeFileAtomic(dir / "a.txt", "new and longer");
-    EXPECT_EQ(slurp(dir / "b.txt"), "new and longer");
+    EXPECT_EQ(test::readBytes(dir / "b.txt"), "new and longer");
     EXPECT_EQ(fs::hard_link_count(dir / "a.txt"), 2u);
-    EXPECT_EQ(entries(dir), 2u);
+    EXPECT_EQ(test::entryCount(dir), 2u);
 }
 
 TEST(OutputFiles, ABatchIsAllOrNothing) {
@@ -116,15 +105,15 @@ TEST(OutputFiles, ABatchIsAllOrNothing) {
         batch.stage(dir / "two.txt", "new two");
         EXPECT_THROW(batch.stage(dir / "missing" / "three.txt", "x"), OutputError);
     }  // not committed
-    EXPECT_EQ(slurp(dir / "one.txt"), "old one");
+    EXPECT_EQ(test::readBytes(dir / "one.txt"), "old one");
     EXPECT_FALSE(fs::exists(dir / "two.txt"));
-    EXPECT_EQ(entries(dir), 1u);  // no temporary file left
+    EXPECT_EQ(test::entryCount(dir), 1u);  // no temporary file left
     OutputBatch batch;
     batch.stage(dir / "one.txt", "new one");
     batch.stage(dir / "two.txt", "new two");
-    EXPECT_EQ(slurp(dir / "one.txt"), "old one");  // nothing visible before commit
+    EXPECT_EQ(test::readBytes(dir / "one.txt"), "old one");  // nothing visible before commit
     batch.commit();
-    EXPECT_EQ(slurp(dir / "one.txt"), "new one");
-    EXPECT_EQ(slurp(dir / "two.txt"), "new two");
-    EXPECT_EQ(entries(dir), 2u);
+    EXPECT_EQ(test::readBytes(dir / "one.txt"), "new one");
+    EXPECT_EQ(test::readBytes(dir / "two.txt"), "new two");
+    EXPECT_EQ(test::entryCount(dir), 2u);
 }
