@@ -10,14 +10,17 @@ namespace pw {
 
 namespace {
 constexpr uint32_t kJsonChunk = 0x4E4F534Au;  // "JSON"
+constexpr uint32_t kBinChunk = 0x004E4942u;   // "BIN\0"
+
+uint32_t u32At(std::string_view data, size_t at) {
+    uint32_t v = 0;
+    std::memcpy(&v, data.data() + at, 4);
+    return v;
+}
 }
 
 GlbParts splitGlb(std::string_view data, const std::string& name) {
-    auto u32 = [&](size_t at) {
-        uint32_t v = 0;
-        std::memcpy(&v, data.data() + at, 4);
-        return v;
-    };
+    auto u32 = [&](size_t at) { return u32At(data, at); };
     if (data.size() < 20)
         throw InputError(name, "not a valid glTF binary (.glb) file: " + std::to_string(data.size()) + " bytes, shorter than its header");
     if (u32(4) != 2) throw InputError(name, "glTF binary version " + std::to_string(u32(4)) + "; Patchwork reads version 2");
@@ -30,6 +33,15 @@ GlbParts splitGlb(std::string_view data, const std::string& name) {
         throw InputError(name, "not a valid glTF binary (.glb) file: the JSON chunk says " + std::to_string(jsonLength) +
                                    " bytes, " + std::to_string(data.size() - 20) + " follow");
     return {data.substr(20, jsonLength), data.substr(20 + size_t(jsonLength))};
+}
+
+size_t binChunkBytes(std::string_view rest, const std::string& name) {
+    if (rest.size() < 8 || u32At(rest, 4) != kBinChunk) return 0;
+    const uint32_t length = u32At(rest, 0);
+    if (length > rest.size() - 8)
+        throw InputError(name, "not a valid glTF binary (.glb) file: the BIN chunk says " + std::to_string(length) + " bytes, " +
+                                   std::to_string(rest.size() - 8) + " follow");
+    return length;
 }
 
 std::string joinGlb(std::string json, std::string_view rest) {

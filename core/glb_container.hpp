@@ -4,6 +4,7 @@
 // without it).
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -15,6 +16,10 @@ struct GlbParts {
 };
 
 GlbParts splitGlb(std::string_view file, const std::string& sourceName);
+
+// The data size of the BIN chunk that starts `rest` (0 when there is none); InputError when the
+// chunk says more than the file holds.
+size_t binChunkBytes(std::string_view rest, const std::string& sourceName);
 
 // A GLB of `json` (padded with spaces to 4 bytes) followed by `rest` as split. Throws
 // std::length_error past the 4 GiB a GLB can describe.

@@ -10,6 +10,7 @@
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
 #include "core/glb_container.hpp"
+#include "core/gltf_structure.hpp"
 #include "core/json_guard.hpp"
 #include "core/patchwork_format.hpp"
 
@@ -57,20 +58,6 @@ const nlohmann::json& documentTemplate() {
         return documentToJson(d);
     }();
     return tmpl;
-}
-
-// Checks of the glTF's own structure that the glTF reader does not make (it crashed on them).
-void checkBuffers(const nlohmann::json& gltf, const std::string& name) {
-    const auto it = gltf.find("buffers");
-    if (it == gltf.end() || !it->is_array()) return;
-    for (size_t i = 0; i < it->size(); ++i) {
-        const nlohmann::json& b = (*it)[i];
-        const std::string field = "buffers[" + std::to_string(i) + "].byteLength";
-        const auto len = b.is_object() ? b.find("byteLength") : b.end();
-        if (!b.is_object() || len == b.end()) throw InputError(name, "a buffer needs a byteLength", 0, field);
-        if (!len->is_number_integer() || len->get<int64_t>() < 1)
-            throw InputError(name, "expected an integer of at least 1 (glTF 2.0, 5.10), found " + len->dump(), 0, field);
-    }
 }
 
 // The "patchwork" extras and where they are: asset.extras, a scene's extras, or the top level's.
@@ -124,7 +111,7 @@ Document parsePatchworkGltf(std::string_view data, const std::string& name) {
     const GlbParts glb = binary ? splitGlb(data, name) : GlbParts{data, {}};
     nlohmann::json gltf = parseJsonGuarded(glb.json, name);
     if (!gltf.is_object()) throw InputError(name, std::string("not a valid glTF ") + kind + " file: the JSON is not an object");
-    checkBuffers(gltf, name);
+    checkGltfStructure(gltf, name, binary, binary ? binChunkBytes(glb.rest, name) : 0);
 
     // The document leaves the DOM here; the glTF reader then checks the rest of the structure
     // (asset, accessors, views, chunks) without it: its own DOM of a million patches took 4 GB.

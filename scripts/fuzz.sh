@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # Runs the libFuzzer targets (.bpt, .patchwork and glTF loaders, with round-trip checks) of the
 # clang sanitizer build (scripts/sanitize.sh builds it if needed) for a bounded time each on their
-# seed corpora (tests/corpus and data/). Usage: scripts/fuzz.sh [SECONDS_PER_TARGET]
+# seed corpora (tests/corpus and data/), with the dictionaries fuzz/*.dict. Usage: scripts/fuzz.sh [SECONDS_PER_TARGET]
 # Crashes are written to build-asan/crashes/; a crash makes the script exit non-zero. Every crash
 # found so far is a file in tests/corpus/bad, replayed by the test suite.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 seconds=${1:-60}
 build=${PATCHWORK_ASAN_BUILD_DIR:-$root/build-asan}
-"$root/scripts/sanitize.sh" --build-only
+"$root/scripts/sanitize.sh" --fuzz-only
 mkdir -p "$build/crashes"
 
 # Seed corpora: the good files we ship plus the bad-input corpus; a working copy per target, so
@@ -25,7 +25,7 @@ seed gltf "$root"/tests/corpus/good/*.gltf "$root"/tests/corpus/good/*.glb "$roo
 status=0
 for t in bpt patchwork gltf; do
   echo "fuzz: $t for ${seconds}s"
-  if ! "$build/fuzz/fuzz_$t" -max_total_time="$seconds" -max_len=65536 -rss_limit_mb=4096 -timeout=20 \
+  if ! "$build/fuzz/fuzz_$t" -dict="$root/fuzz/$t.dict" -max_total_time="$seconds" -max_len=65536 -rss_limit_mb=4096 -timeout=20 \
         -artifact_prefix="$build/crashes/$t-" -print_final_stats=1 "$build/corpus-$t" >"$build/fuzz_$t.log" 2>&1; then
     status=1
     echo "fuzz: $t FOUND A PROBLEM:" >&2
