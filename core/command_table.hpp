@@ -32,6 +32,9 @@ public:
     // Writes `doc` to `path` (by extension). A script host keeps every write until the script ended
     // well, so that a failing script leaves no file behind.
     virtual void write(const Document& doc, const std::string& path) = 0;
+    // An export (a copy of the document, not its file): a window writes it in the background and
+    // reports when it is done; a script host writes it like any other output.
+    virtual void exportFile(const Document& doc, const std::string& path) { write(doc, path); }
     // After `save` wrote the document to `path` (the session has taken it as its file when the
     // format keeps everything): a window updates its title, recent files and autosave.
     virtual void saved(const std::string& path) { (void)path; }

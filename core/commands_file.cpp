@@ -88,7 +88,7 @@ void addFileCommands(CommandTable& t) {
                const std::filesystem::path p = ctx.args[0];
                const std::string ext = p.extension().string();
                if (ext != ".gltf" && ext != ".glb") throw EditError("'" + ctx.args[0] + "' is not a .gltf or .glb file");
-               ctx.host.write(ctx.session.documentToSave(), ctx.args[0]);
+               ctx.host.exportFile(ctx.session.documentToSave(), ctx.args[0]);
            }});
     t.add({.name = "screenshot", .label = "Save Screenshot...", .menu = "File", .usage = "[FILE]",
            .help = "Save the 3D viewport (without panels) as a PNG",

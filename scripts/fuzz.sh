@@ -31,6 +31,6 @@ for t in bpt patchwork gltf; do
     echo "fuzz: $t FOUND A PROBLEM:" >&2
     grep -E "ERROR|SUMMARY|Test unit written" "$build/fuzz_$t.log" | head -n 10 >&2
   fi
-  grep -E "stat::number_of_executed_units|stat::new_units_added|cov:" "$build/fuzz_$t.log" | tail -n 3 | sed "s/^/  /"
+  grep -E "stat::number_of_executed_units|stat::new_units_added|cov:" "$build/fuzz_$t.log" | tail -n 3 | sed "s/^/  /" || true
 done
 exit $status

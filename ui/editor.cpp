@@ -5,11 +5,13 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 
 #include "core/camera_math.hpp"
 #include "core/document_io.hpp"
+#include "core/errors.hpp"
 #include "core/file_io.hpp"
 #include "core/picking.hpp"
 #include "render/device.hpp"
@@ -153,6 +155,13 @@ void Editor::recoverAutosave() {
 }
 
 void Editor::idleTick() {
+    for (const BackgroundWriter::Result& r : exports_.takeFinished()) {
+        if (r.error.empty())
+            status("Exported " + r.path);
+        else
+            showError(r.error);
+        wake();
+    }
     const auto now = std::chrono::steady_clock::now();
     if (std::chrono::duration<double>(now - lastAutosave_).count() < autosaveSeconds_) return;
     lastAutosave_ = now;
@@ -170,7 +179,15 @@ void Editor::idleTick() {
 int Editor::run() {
     window_.run(*this);
     autosaver_.discard();
-    return 0;
+    if (exports_.pending()) std::fprintf(stderr, "patchwork: finishing the export of %s\n", printable(exports_.current()).c_str());
+    exports_.waitIdle();
+    int status = 0;
+    for (const BackgroundWriter::Result& r : exports_.takeFinished())
+        if (!r.error.empty()) {
+            std::fprintf(stderr, "patchwork: %s\n", r.error.c_str());
+            status = 2;
+        }
+    return status;
 }
 
 render::RenderOptions Editor::viewOptions() const {
@@ -197,11 +214,17 @@ void Editor::drawUi() {
     dialogs_.drawModals(*this, [this] { recoverAutosave(); });
     if (showHelp_) drawHelp(*this, showHelp_);
     if (palette_.open) palette_.draw(*this);
-    // Status line.
+    // Status line: the last message for 6 s, and a running export for as long as it runs.
     const ImGuiIO& io = ImGui::GetIO();
-    if (!status_.empty() && std::chrono::steady_clock::now() - statusTime_ < std::chrono::seconds(6))
+    std::string line = std::chrono::steady_clock::now() - statusTime_ < std::chrono::seconds(6) ? status_ : std::string();
+    if (const std::string exporting = exports_.current(); !exporting.empty() && line.rfind("Exporting ", 0) != 0) {
+        const size_t more = exports_.pending() - 1;
+        line += (line.empty() ? "" : "   |   ") + ("Exporting " + exporting) +
+                (more ? " (" + std::to_string(more) + " more queued)" : std::string()) + "...";
+    }
+    if (!line.empty())
         ImGui::GetForegroundDrawList()->AddText(ImVec2(layout().left + 12.0f, io.DisplaySize.y - 24.0f), IM_COL32(220, 220, 220, 255),
-                                                status_.c_str());
+                                                line.c_str());
     // A failed autosave stays in view, above the status line, until an autosave succeeds.
     if (!autosaveError_.empty())
         ImGui::GetForegroundDrawList()->AddText(ImVec2(layout().left + 12.0f, io.DisplaySize.y - 44.0f), IM_COL32(255, 120, 90, 255),

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/autosave.hpp"
+#include "core/background_writer.hpp"
 #include "core/command_table.hpp"
 #include "core/drag_controller.hpp"
 #include "core/edit_session.hpp"
@@ -97,6 +98,7 @@ private:
     bool hasWindow() const override { return true; }
     bool confirmDiscard(const std::vector<std::string>& words) override;
     void write(const Document& doc, const std::string& path) override;
+    void exportFile(const Document& doc, const std::string& path) override;
     void saved(const std::string& path) override;
     void fileDialog(FileDialogKind kind) override;
     void toggle(WindowToggle which) override;
@@ -163,6 +165,7 @@ private:
     std::string status_;
     std::chrono::steady_clock::time_point statusTime_;
     std::string autosaveError_;                   // shown until an autosave succeeds
+    BackgroundWriter exports_;                    // exports, written while the window goes on
 
     // The panels.
     TestTrace trace_;

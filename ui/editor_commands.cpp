@@ -7,6 +7,7 @@
 #include <ctime>
 
 #include "core/document_io.hpp"
+#include "core/file_io.hpp"
 #include "ui/app_window.hpp"
 #include "ui/editor.hpp"
 #include "ui/shortcuts.hpp"
@@ -42,6 +43,12 @@ bool Editor::confirmDiscard(const std::vector<std::string>& words) {
 }
 
 void Editor::write(const Document& doc, const std::string& path) { saveDocument(doc, path, session_.exportOptions); }
+
+void Editor::exportFile(const Document& doc, const std::string& path) {
+    checkOutputPath(path);  // a path that cannot be written is refused now, not seconds later
+    const size_t ahead = exports_.enqueue(doc, path, session_.exportOptions);
+    status(ahead ? "Exporting " + path + " after " + std::to_string(ahead) + " other export(s)" : "Exporting " + path + "...");
+}
 
 void Editor::saved(const std::string& path) {
     addRecent(path);
