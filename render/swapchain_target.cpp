@@ -275,7 +275,9 @@ void SwapchainTarget::endRendering(VkCommandBuffer cmd) {
 }
 
 std::vector<uint8_t> SwapchainTarget::readCurrentImage() {
-    if (!transferSrc_ || !swapchain_) return {};
+    // Host presentation draws into one image of its own (always TRANSFER_SRC); a swapchain's images
+    // only where the surface allows it.
+    if (!transferSrc_ || (!swapchain_ && !hostPresent_) || images_.empty()) return {};
     const VkDeviceSize bytes = VkDeviceSize(extent_.width) * extent_.height * 4;
     Buffer buf = createBuffer(dev_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
     VkImage img = images_[current_];

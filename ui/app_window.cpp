@@ -13,6 +13,7 @@
 
 #include "core/errors.hpp"
 #include "render/device.hpp"
+#include "core/file_io.hpp"
 #include "render/png_writer.hpp"
 #include "render/swapchain_target.hpp"
 #include "ui/imgui_layer.hpp"
@@ -286,10 +287,20 @@ void AppWindow::presentEmpty() {
     target_->submitAndPresent(imgui_->record({}, {}));
 }
 
-void AppWindow::writeScreenshot(const std::string& path) {
+void AppWindow::writeScreenshot(const std::string& path, float cropLeft, float cropRight) {
+    checkOutputPath(path);
     const std::vector<uint8_t> px = target_->readCurrentImage();
     if (px.empty()) throw OutputError(path, "the swapchain images cannot be read back on this device");
-    render::writePng(path, target_->extent().width, target_->extent().height, px);
+    // The crop is in window units; the image is in framebuffer pixels (HiDPI scales them).
+    const uint32_t w = target_->extent().width, h = target_->extent().height;
+    const double scale = double(w) / std::max(1, windowSize()[0]);
+    const uint32_t x0 = std::min(w - 1, uint32_t(std::max(0.0, cropLeft * scale)));
+    const uint32_t x1 = std::max(x0 + 1, w - std::min(w - x0 - 1, uint32_t(std::max(0.0, cropRight * scale))));
+    std::vector<uint8_t> out;
+    out.reserve(size_t(x1 - x0) * h * 4);
+    for (uint32_t y = 0; y < h; ++y)
+        out.insert(out.end(), px.begin() + (size_t(y) * w + x0) * 4, px.begin() + (size_t(y) * w + x1) * 4);
+    render::writePng(path, x1 - x0, h, out);
 }
 
 }  // namespace pw::ui

@@ -85,7 +85,9 @@ public:
     void present(std::span<const std::array<float, 4>> fills);
     void presentEmpty();  // an acquired image with nothing more drawn (the first frame)
     // The image drawn this frame as a PNG (throws OutputError where it cannot be read back).
-    void writeScreenshot(const std::string& path);
+    // The image drawn so far (the 3D view, before the panels), without `cropLeft` and `cropRight`
+    // window units at the sides (where the panels go), as a PNG.
+    void writeScreenshot(const std::string& path, float cropLeft = 0.0f, float cropRight = 0.0f);
 
 private:
     explicit AppWindow(GLFWwindow* window);

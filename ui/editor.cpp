@@ -256,7 +256,7 @@ void Editor::drawFrame() {
     if (screenshotRequested_) {
         screenshotRequested_ = false;
         try {
-            window_.writeScreenshot(screenshotPath_);
+            window_.writeScreenshot(screenshotPath_, layout().left, layout().right);
             status("Screenshot saved to " + screenshotPath_);
         } catch (const std::exception& e) {
             showError(std::string("Could not save the screenshot.\n\n") + e.what());

@@ -217,6 +217,21 @@ xdotool key ctrl+z
 wait_for "t['tessOuter'] != [3, 3, 3, 3]"
 xdotool key ctrl+z
 wait_for "t['patches'] == 32"
+# The screenshot command (F12's) reads the 3D view back on lavapipe too (issue 19: it failed with
+# "the swapchain images cannot be read back"), without the side panels.
+xdotool key F3
+wait_for "t['palette']"
+sleep 0.3
+xdotool type --delay 30 "screenshot $WORK/view.png"
+xdotool key Return
+for i in $(seq 100); do [ -s "$WORK/view.png" ] && break; sleep 0.1; done
+python3 - "$WORK/view.png" <<'PY' || fail "screenshot missing or not cropped to the 3D view"
+import struct, sys
+head = open(sys.argv[1], 'rb').read(24)
+assert head[:8] == b'\x89PNG\r\n\x1a\n', head
+w, h = struct.unpack('>II', head[16:24])
+assert 300 < w < 1000 and h >= 700, (w, h)
+PY
 xdotool key F1
 wait_for "t['help']"
 import -window root "$WORK/help.png"
