@@ -21,6 +21,7 @@ Dialogs::Dialogs() : browseDir_(fs::current_path()) {}
 void Dialogs::openFileDialog(FileDialogKind kind, const std::string& documentName) {
     const std::string name = documentName.empty() ? "untitled" : documentName;
     fileName_[0] = 0;
+    focusName_ = true;
     switch (kind) {
         case FileDialogKind::Open: fileMode_ = FileDialogMode::Open; break;
         case FileDialogKind::Import: fileMode_ = FileDialogMode::Import; break;
@@ -73,7 +74,10 @@ void Dialogs::drawFileBrowser(PanelContext& ctx) {
     }
     if (ec) ImGui::TextDisabled("(cannot list: %s)", ec.message().c_str());
     ImGui::EndChild();
-    ImGui::InputText("File name", fileName_, sizeof fileName_);
+    // As in any file dialog, the name field starts with the keyboard and its text selected: typing
+    // replaces the offered name.
+    if (std::exchange(focusName_, false)) ImGui::SetKeyboardFocusHere();
+    ImGui::InputText("File name", fileName_, sizeof fileName_, ImGuiInputTextFlags_AutoSelectAll);
     traceItem("file.name");
     tip("Name in the directory above, or an absolute path");
     if (fileMode_ == FileDialogMode::ExportGltf || fileMode_ == FileDialogMode::SaveAs) {

@@ -59,7 +59,9 @@ void Dialogs::drawModals(PanelContext& ctx, const std::function<void()>& recover
     if (beginCentredModal("Unsaved changes", openUnsavedPrompt_)) {
         traceModal("unsaved");
         ImGui::Text("Save changes to %s?", ctx.session().path().empty() ? "the untitled document" : ctx.session().path().c_str());
-        if (ImGui::Button("Save", ImVec2(100, 0))) {
+        const bool save = ImGui::Button("Save", ImVec2(100, 0));
+        traceItem("unsaved.save");
+        if (save) {
             ImGui::CloseCurrentPopup();
             if (!ctx.session().path().empty() && saveKeepsEverything(ctx.session().path())) {
                 ctx.runCommand(std::vector<std::string>{"save"});

@@ -240,10 +240,31 @@ wait_for "not t['help']"
 check_validation
 say "palette ran 'Flat Patch' and 'tess 3'; F1 opened and closed the command list"
 
-# --- 7. quit asks about unsaved changes -------------------------------------------------------
+# --- 7. the unsaved-changes prompt: Save then goes on with New, and with Quit on an untitled ------
+# document once the Save As dialog has written it (issue 19: it saved but never quit).
+xdotool key ctrl+n
+wait_for "t['modal'] == 'unsaved'"
+click_item unsaved.save
+wait_for "t['modal'] == '' and t['file'] == '' and t['patches'] == 1 and not t['modified']"
+python3 - "$BIN" "$WORK/model.patchwork" <<'PY' || fail "Save from the prompt did not write model.patchwork"
+import json, subprocess, sys
+info = json.loads(subprocess.run([sys.argv[1], 'info', '--json', sys.argv[2]], capture_output=True, check=True, text=True).stdout)
+assert info['patches'] == 32, info['patches']
+PY
+xdotool key F3
+wait_for "t['palette']"
+sleep 0.3
+xdotool type --delay 30 "tess 5"
+xdotool key Return
+wait_for "not t['palette'] and t['modified']"
 xdotool key ctrl+q
 wait_for "t['modal'] == 'unsaved'"
-click_item unsaved.discard
+click_item unsaved.save
+wait_for "t['modal'] == 'file'"
+sleep 0.3   # the name field has the keyboard, the offered name selected: typing replaces it
+xdotool type --delay 20 "$WORK/untitled.patchwork"
+sleep 0.3
+click_item file.ok
 for i in $(seq 100); do kill -0 "$EDITOR_PID" 2>/dev/null || break; sleep 0.1; done
 if kill -0 "$EDITOR_PID" 2>/dev/null; then fail "editor did not quit"; fi
 wait "$EDITOR_PID" && RC=0 || RC=$?
@@ -251,4 +272,11 @@ EDITOR_PID=""
 [ "$RC" = "0" ] || fail "editor exit code $RC"
 if grep -qi "validation" "$WORK/editor.err"; then fail "validation output on stderr"; fi
 ls "$XDG_STATE_HOME"/patchwork/autosave-*.patchwork >/dev/null 2>&1 && fail "clean exit left an autosave"
+python3 - "$BIN" "$WORK/untitled.patchwork" <<'PY' || fail "Quit's Save As did not write the new document"
+import json, subprocess, sys
+info = json.loads(subprocess.run([sys.argv[1], 'info', '--json', sys.argv[2]], capture_output=True, check=True, text=True).stdout)
+assert info['patches'] == 1, info
+assert json.load(open(sys.argv[2]))['tess']['outer'] == [5, 5, 5, 5]
+PY
+say "Save in the prompt went on with New, and with Quit after Save As"
 say "PASS"
