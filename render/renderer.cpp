@@ -281,6 +281,7 @@ FrameStats Renderer::render(const RenderOptions& opt) {
     if (ds.showNormals && !opt.plainMesh && pipes_.normals[overlayIndex(variant, levels)]) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.normals[overlayIndex(variant, levels)]);
         gpu::DrawPush np;
+        np.drawMode = gpu::kDrawFlatColour;  // an overlay: the control shader counts culled patches once, in the surface pass
         np.color = {0.2f, 0.9f, 1.0f, 1.0f};
         stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, np, bounds, budget);
         if (m.scene.triangleCount && pipes_.triNormals[overlayIndex(variant, levels)]) {

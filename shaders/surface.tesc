@@ -117,7 +117,7 @@ void main() {
         for (int e = 0; e < 4; ++e) gl_TessLevelOuter[e] = 0.0;
         gl_TessLevelInner[0] = 0.0;
         gl_TessLevelInner[1] = 0.0;
-        atomicAdd(counters.culled, 1u);
+        if (draw.drawMode == kDrawShaded) atomicAdd(counters.culled, 1u);  // once, not again for each overlay
     }
 #endif
 }

@@ -103,7 +103,7 @@ void main() {
     if (cull) {
         for (int e = 0; e < 3; ++e) gl_TessLevelOuter[e] = 0.0;
         gl_TessLevelInner[0] = 0.0;
-        atomicAdd(counters.culled, 1u);
+        if (draw.drawMode == kDrawShaded) atomicAdd(counters.culled, 1u);  // once, not again for each overlay
     }
 #endif
 }

@@ -167,6 +167,13 @@ TEST_F(RenderStats, CurvedPatchesOnBothSidesOfTheSilhouetteAreKept) {
     const Rendered rb = off.render(b);
     EXPECT_EQ(rb.stats.patchesCulled, 16u);
     EXPECT_EQ(rb.stats.tesInvocations, 0u);
+    // Issue 19: the wireframe and normals overlays run the same control shader; they counted the
+    // culled patches again ("Patches 2 (culled 4)").
+    b.display.showWireframe = true;
+    b.display.showNormals = true;
+    const Rendered overlays = off.render(b);
+    EXPECT_EQ(overlays.stats.patches, 16u);
+    EXPECT_EQ(overlays.stats.patchesCulled, 16u);
 }
 
 TEST_F(RenderStats, OffscreenPatchIsCulled) {
