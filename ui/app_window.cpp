@@ -6,6 +6,8 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -13,6 +15,7 @@
 
 #include "core/errors.hpp"
 #include "render/device.hpp"
+#include "core/autosave.hpp"
 #include "core/file_io.hpp"
 #include "render/png_writer.hpp"
 #include "render/swapchain_target.hpp"
@@ -53,11 +56,27 @@ const char* kNoDisplay =
     "patchwork: no display (DISPLAY/WAYLAND_DISPLAY unset or unreachable); use `patchwork render FILE -o out.png` for "
     "headless images\n";
 
-// 1600x900, or 90 % of the monitor's work area where that is smaller (the size is scaled by the
-// content scale, GLFW_SCALE_TO_MONITOR); PATCHWORK_WINDOW_SIZE overrides unless the size is fixed.
+// Where the size of the last editor window is kept ("WIDTHxHEIGHT" before content scaling).
+std::filesystem::path windowSizeFile() { return autosaveDirectory() / "window.txt"; }
+
+std::optional<std::array<int, 2>> rememberedWindowSize() {
+    std::ifstream in(windowSizeFile());
+    int w = 0, h = 0;
+    char x = 0;
+    if (!(in >> w >> x >> h) || x != 'x' || w < 640 || h < 400 || w > 16384 || h > 16384) return std::nullopt;
+    return std::array<int, 2>{w, h};
+}
+
+// The size the window had, or 1600x900 the first time; at most 90 % of the monitor's work area
+// (the size is scaled by the content scale, GLFW_SCALE_TO_MONITOR); PATCHWORK_WINDOW_SIZE
+// overrides unless the size is fixed.
 std::array<int, 2> windowSizeToOpen(const std::optional<std::array<int, 2>>& fixed) {
     if (fixed) return *fixed;
     int width = 1600, height = 900;
+    if (const auto last = rememberedWindowSize()) {
+        width = (*last)[0];
+        height = (*last)[1];
+    }
     if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
         int wx = 0, wy = 0, ww = 0, wh = 0;
         float sx = 1.0f, sy = 1.0f;
@@ -112,6 +131,7 @@ int AppWindow::open(const std::optional<std::array<int, 2>>& fixed, const std::f
     try {
         AppWindow app(window);
         rc = body(app);
+        if (!fixed) app.rememberSize();
     } catch (...) {
         glfwDestroyWindow(window);
         glfwTerminate();
@@ -120,6 +140,20 @@ int AppWindow::open(const std::optional<std::array<int, 2>>& fixed, const std::f
     glfwDestroyWindow(window);
     glfwTerminate();
     return rc;
+}
+
+void AppWindow::rememberSize() const {
+    const auto [w, h] = windowSize();
+    float sx = 1.0f, sy = 1.0f;
+    glfwGetWindowContentScale(window_, &sx, &sy);
+    if (w <= 0 || h <= 0 || glfwGetWindowAttrib(window_, GLFW_ICONIFIED)) return;
+    try {
+        ensurePrivateDirectory(windowSizeFile().parent_path());
+        writeFileAtomic(windowSizeFile(), std::to_string(int(float(w) / std::max(sx, 1.0f))) + "x" +
+                                              std::to_string(int(float(h) / std::max(sy, 1.0f))) + "\n");
+    } catch (const std::exception&) {
+        // A convenience, like the recent files: an unwritable state directory is not an error.
+    }
 }
 
 AppWindow::AppWindow(GLFWwindow* window) : window_(window) {

@@ -87,6 +87,8 @@ public:
     // The image drawn this frame as a PNG (throws OutputError where it cannot be read back).
     // The image drawn so far (the 3D view, before the panels), without `cropLeft` and `cropRight`
     // window units at the sides (where the panels go), as a PNG.
+    // Keeps the window's size for the next start (the state directory's window.txt).
+    void rememberSize() const;
     void writeScreenshot(const std::string& path, float cropLeft = 0.0f, float cropRight = 0.0f);
 
 private:

@@ -279,4 +279,13 @@ assert info['patches'] == 1, info
 assert json.load(open(sys.argv[2]))['tess']['outer'] == [5, 5, 5, 5]
 PY
 say "Save in the prompt went on with New, and with Quit after Save As"
+
+# --- 8. the window opens at the size it had (issue 19) ------------------------------------------
+[ "$(cat "$XDG_STATE_HOME/patchwork/window.txt")" = "1200x760" ] || fail "window size not kept: $(cat "$XDG_STATE_HOME/patchwork/window.txt")"
+printf '900x650\n' > "$XDG_STATE_HOME/patchwork/window.txt"
+PATCHWORK_WINDOW_SIZE= start_editor
+geometry=$(xdotool getwindowgeometry "$WID" | sed -n 's/.*Geometry: //p')
+[ "$geometry" = "900x650" ] || fail "window opened at $geometry, not the remembered 900x650"
+quit_editor
+say "window size remembered: $geometry"
 say "PASS"
