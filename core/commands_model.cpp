@@ -5,6 +5,7 @@
 #include "core/command_table.hpp"
 #include "core/net_ops.hpp"
 #include "core/patch_ops.hpp"
+#include "core/placement.hpp"
 
 namespace pw {
 
@@ -52,7 +53,7 @@ void deleteSelection(Document& d, const Selection& sel) {
 }
 
 // A command that adds one item of the model's scale at the 3D cursor (`add(doc, centre, size, zUp)`
-// returns its index) and selects it as `field`.
+// returns its index), beside the model where the cursor is inside it, and selects it as `field`.
 Command addAtCursor(const char* name, const char* label, const char* help, const char* undoLabel, int Selection::*field,
                     uint32_t (*add)(Document&, const Vec3&, double, bool)) {
     return {.name = name, .label = label, .menu = "Add", .help = help,
@@ -60,7 +61,11 @@ Command addAtCursor(const char* name, const char* label, const char* help, const
                 expectArgs(ctx, 0, 0);
                 EditSession& s = ctx.session;
                 int created = -1;
-                s.apply(undoLabel, [&](Document& d) { created = int(add(d, s.cursor, newItemSize(d), s.camera.zUp)); });
+                s.apply(undoLabel, [&](Document& d) {
+                    const size_t first = d.points.size();
+                    created = int(add(d, s.cursor, newItemSize(d), s.camera.zUp));
+                    moveClearOfExisting(d, first);
+                });
                 s.sel.clear();
                 s.sel.*field = created;
             }};
@@ -115,7 +120,9 @@ void addModelCommands(CommandTable& t) {
                }
                int created = -1;
                s.apply("Add net", [&](Document& d) {
+                   const size_t first = d.points.size();
                    created = int(addNetSurface(d, rows, cols, shape, basis, s.cursor, newItemSize(d), s.camera.zUp));
+                   moveClearOfExisting(d, first);
                });
                s.sel.clear();
                s.sel.surface = created;

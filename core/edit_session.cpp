@@ -4,6 +4,7 @@
 
 #include "core/document_io.hpp"
 #include "core/patch_ops.hpp"
+#include "core/placement.hpp"
 
 namespace pw {
 
@@ -54,7 +55,11 @@ void EditSession::open(const std::string& path) { reset(loadDocument(path), path
 MergedRange EditSession::import(const std::string& path) {
     const Document from = loadDocument(path);
     MergedRange r;
-    apply("Import " + std::filesystem::path(path).filename().string(), [&](Document& d) { r = mergeDocument(d, from); });
+    // Beside what is there, never inside it (the file's own coordinates where they are clear).
+    apply("Import " + std::filesystem::path(path).filename().string(), [&](Document& d) {
+        r = mergeDocument(d, from);
+        moveClearOfExisting(d, r.firstPoint);
+    });
     // The imported content arrives selected: its points, and the patch when it is the only thing.
     sel.clear();
     for (uint32_t i = 0; i < r.pointCount; ++i) sel.points.push_back(r.firstPoint + i);

@@ -95,8 +95,11 @@ IDX=$(python3 - "$WORK/trace.json" "$RX" "$RY" "$RW" "$RH" <<'PY'
 import json, sys
 t = json.load(open(sys.argv[1]))
 x, y, w, h = map(float, sys.argv[2:])
-best = min((abs(p[0] - x - w / 2) + abs(p[1] - y - h / 2), i) for i, p in enumerate(t['points'])
-           if p and x + 40 < p[0] < x + w - 40 and y + 80 < p[1] < y + h - 40)
+pts = t['points']
+# Only points with no other point within 8 px: on the teapot's seams points coincide on screen.
+alone = lambda i, p: all(j == i or not q or abs(q[0] - p[0]) + abs(q[1] - p[1]) > 8 for j, q in enumerate(pts))
+best = min((abs(p[0] - x - w / 2) + abs(p[1] - y - h / 2), i) for i, p in enumerate(pts)
+           if p and x + 40 < p[0] < x + w - 40 and y + 80 < p[1] < y + h - 40 and alone(i, p))
 print(best[1])
 PY
 )
