@@ -19,7 +19,8 @@ public:
     void write(const Document&, const std::string&) override {}
 };
 
-Bounds boxOf(const Document& d, const std::array<uint32_t, 16>& idx) {
+template <class Indices>
+Bounds boxOf(const Document& d, const Indices& idx) {
     std::vector<Vec3> pts;
     for (uint32_t i : idx) pts.push_back(d.points[i]);
     return computeBounds(pts);
@@ -70,14 +71,9 @@ TEST(Placement, AddCommandsAndImportNeverLandInsideTheModel) {
     // Every item's box is apart from every other's.
     std::vector<Bounds> boxes;
     for (const auto& p : s.doc.patches) boxes.push_back(boxOf(s.doc, p.idx));
-    auto boxOfIdx = [&](const auto& idx) {
-        std::vector<Vec3> pts;
-        for (uint32_t i : idx) pts.push_back(s.doc.points[i]);
-        return computeBounds(pts);
-    };
-    for (const auto& n : s.doc.surfaces) boxes.push_back(boxOfIdx(n.idx));
-    for (const auto& t : s.doc.triangles) boxes.push_back(boxOfIdx(t.idx));
-    for (const auto& c : s.doc.curves) boxes.push_back(boxOfIdx(c.idx));
+    for (const auto& n : s.doc.surfaces) boxes.push_back(boxOf(s.doc, n.idx));
+    for (const auto& t : s.doc.triangles) boxes.push_back(boxOf(s.doc, t.idx));
+    for (const auto& c : s.doc.curves) boxes.push_back(boxOf(s.doc, c.idx));
     ASSERT_GE(boxes.size(), 10u);
     for (size_t i = 0; i < boxes.size(); ++i)
         for (size_t j = i + 1; j < boxes.size(); ++j) EXPECT_TRUE(apart(boxes[i], boxes[j])) << i << " and " << j;

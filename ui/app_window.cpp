@@ -6,17 +6,17 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <filesystem>
-#include <fstream>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <thread>
 
-#include "core/errors.hpp"
-#include "render/device.hpp"
 #include "core/autosave.hpp"
+#include "core/errors.hpp"
 #include "core/file_io.hpp"
+#include "render/device.hpp"
 #include "render/png_writer.hpp"
 #include "render/swapchain_target.hpp"
 #include "ui/imgui_layer.hpp"

@@ -84,12 +84,12 @@ public:
     // colour (ImGui's textured background quads cost ~1.5 ms a frame on CPU devices), and present.
     void present(std::span<const std::array<float, 4>> fills);
     void presentEmpty();  // an acquired image with nothing more drawn (the first frame)
-    // The image drawn this frame as a PNG (throws OutputError where it cannot be read back).
-    // The image drawn so far (the 3D view, before the panels), without `cropLeft` and `cropRight`
-    // window units at the sides (where the panels go), as a PNG.
+    // The image drawn so far this frame (the 3D view, before the panels) as a PNG, without
+    // `cropLeft` and `cropRight` window units at the sides (where the panels go). Throws
+    // OutputError where it cannot be read back.
+    void writeScreenshot(const std::string& path, float cropLeft = 0.0f, float cropRight = 0.0f);
     // Keeps the window's size for the next start (the state directory's window.txt).
     void rememberSize() const;
-    void writeScreenshot(const std::string& path, float cropLeft = 0.0f, float cropRight = 0.0f);
 
 private:
     explicit AppWindow(GLFWwindow* window);

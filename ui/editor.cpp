@@ -217,7 +217,7 @@ void Editor::drawUi() {
     // Status line: the last message for 6 s, and a running export for as long as it runs.
     const ImGuiIO& io = ImGui::GetIO();
     std::string line = std::chrono::steady_clock::now() - statusTime_ < std::chrono::seconds(6) ? status_ : std::string();
-    if (const std::string exporting = exports_.current(); !exporting.empty() && line.rfind("Exporting ", 0) != 0) {
+    if (const std::string exporting = exports_.current(); !exporting.empty()) {
         const size_t more = exports_.pending() - 1;
         line += (line.empty() ? "" : "   |   ") + ("Exporting " + exporting) +
                 (more ? " (" + std::to_string(more) + " more queued)" : std::string()) + "...";

@@ -46,8 +46,8 @@ void Editor::write(const Document& doc, const std::string& path) { saveDocument(
 
 void Editor::exportFile(const Document& doc, const std::string& path) {
     checkOutputPath(path);  // a path that cannot be written is refused now, not seconds later
-    const size_t ahead = exports_.enqueue(doc, path, session_.exportOptions);
-    status(ahead ? "Exporting " + path + " after " + std::to_string(ahead) + " other export(s)" : "Exporting " + path + "...");
+    exports_.enqueue(doc, path, session_.exportOptions);  // the status line shows it until it is done
+    wake();
 }
 
 void Editor::saved(const std::string& path) {
