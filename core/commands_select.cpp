@@ -83,13 +83,6 @@ void transformSelection(CommandContext& ctx, const std::string& label, const std
     }, false);
 }
 
-Vec3 pivot(const EditSession& s) {
-    Vec3 c(0.0);
-    const std::vector<uint32_t> pts = s.selectedPoints();
-    for (uint32_t p : pts) c += s.doc.points[p];
-    return pts.empty() ? c : c / double(pts.size());
-}
-
 int axisIndex(const std::string& word) {
     if (word == "x" || word == "X") return 0;
     if (word == "y" || word == "Y") return 1;
@@ -113,24 +106,42 @@ void addSelectCommands(CommandTable& t) {
                transformSelection(ctx, "Move", [d](const Vec3& p) { return p + d; });
            }});
     t.add({.name = "rotate", .label = "Rotate", .usage = "X|Y|Z DEG",
-           .help = "Rotate the selection about an axis through its median point; joins are held",
+           .help = "Rotate the selection about an axis through the pivot (median, active or 3D cursor); joins are held",
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 2, 2);
                Vec3 axis(0.0);
                axis[axisIndex(ctx.args[0])] = 1.0;
                const double rad = glm::radians(commandNumber(ctx.args[1], "DEG"));
-               const Vec3 c = pivot(ctx.session);
+               const Vec3 c = ctx.session.transformPivot();
                const glm::dmat4 m = glm::rotate(glm::dmat4(1.0), rad, axis);
                transformSelection(ctx, "Rotate", [&](const Vec3& p) { return c + Vec3(m * glm::dvec4(p - c, 0.0)); });
            }});
     t.add({.name = "scale", .label = "Scale", .usage = "S | SX SY SZ",
-           .help = "Scale the selection about its median point; joins are held",
+           .help = "Scale the selection about the pivot (median, active or 3D cursor); joins are held",
            .run = [](CommandContext& ctx) {
                if (ctx.args.size() != 1) expectArgs(ctx, 3, 3);
                Vec3 s(commandNumber(ctx.args[0], "S"));
                if (ctx.args.size() == 3) s = Vec3(commandNumber(ctx.args[0], "SX"), commandNumber(ctx.args[1], "SY"), commandNumber(ctx.args[2], "SZ"));
-               const Vec3 c = pivot(ctx.session);
+               const Vec3 c = ctx.session.transformPivot();
                transformSelection(ctx, "Scale", [&](const Vec3& p) { return c + s * (p - c); });
+           }});
+    t.add({.name = "pivot", .label = "Pivot", .menu = "Select", .usage = "median|active|cursor",
+           .help = "What rotate and scale turn about: the median of the selection, the active point or item, or the 3D cursor",
+           .bindings = {{"Pivot: Median", "median", {}}, {"Pivot: Active", "active", {}}, {"Pivot: 3D Cursor", "cursor", {}}},
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 1, 1);
+               const auto m = parsePivot(ctx.args[0]);
+               if (!m) throw EditError("expected median, active or cursor, got '" + ctx.args[0] + "'");
+               ctx.session.pivot = *m;
+           }});
+    t.add({.name = "snap", .label = "Snap To", .menu = "Select", .usage = "grid|points|edges|surfaces",
+           .help = "What a move snaps to while Ctrl is held: grid increments, control points, boundary edges or surfaces",
+           .bindings = {{"Snap: Grid", "grid", {}}, {"Snap: Points", "points", {}}, {"Snap: Edges", "edges", {}}, {"Snap: Surfaces", "surfaces", {}}},
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 1, 1);
+               const auto m = parseSnapTarget(ctx.args[0]);
+               if (!m) throw EditError("expected grid, points, edges or surfaces, got '" + ctx.args[0] + "'");
+               ctx.session.snap = *m;
            }});
     t.add({.name = "cursor", .label = "Place 3D Cursor", .usage = "X Y Z",
            .help = "Place the 3D cursor, where new patches, triangles, curves and nets appear",

@@ -1,10 +1,14 @@
-// Point drags and held point edits: the projection of the mouse onto the drag plane or axis, and
-// the solver that keeps the joins (core/drag_controller.hpp).
+// Transforms with the joins held: the mouse projected onto the drag plane or axis, turned into an
+// angle or a factor about the pivot, typed values and snapping; and held point edits
+// (core/drag_controller.hpp).
 #include "core/drag_controller.hpp"
 
 #include <cmath>
 #include <cstdio>
 
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/camera_math.hpp"
 #include "core/limits.hpp"
 #include "core/picking.hpp"
 #include "core/point_upload.hpp"
@@ -19,17 +23,39 @@ Vec3 axisVector(int axis) {
     return a;
 }
 
+// The fastest an axis drag may go, in multiples of a drag in the view plane: an axis that points
+// nearly along the view would otherwise turn a few pixels into a jump to the horizon.
+constexpr double kMaxAxisRate = 4.0;
+
+double wrapAngle(double a) {
+    while (a > M_PI) a -= 2.0 * M_PI;
+    while (a <= -M_PI) a += 2.0 * M_PI;
+    return a;
+}
+
+const char* kindName(TransformKind k) { return k == TransformKind::Move ? "Move" : k == TransformKind::Rotate ? "Rotate" : "Scale"; }
+
 }  // namespace
 
 bool DragController::begin(const Document& doc, const Selection& sel, const DragView& view, double x, double y, bool grab) {
+    return begin(doc, TransformStart{sel.points, selectionCentroid(doc, Selection{.points = sel.points}), TransformKind::Move, grab}, view, x, y);
+}
+
+bool DragController::begin(const Document& doc, const TransformStart& start, const DragView& view, double x, double y) {
+    const SnapTarget snap = snapTarget_;
     *this = DragController{};
-    if (sel.points.empty()) return false;
-    grab_ = grab;
+    snapTarget_ = snap;
+    if (start.points.empty()) return false;
+    kind_ = start.kind;
+    grab_ = start.grab;
     start_ = doc.points;
     uploaded_ = doc.points;
-    moved_ = sel.points;
-    solver_ = std::make_unique<DragSolver>(doc, moved_);  // factorised once per drag
-    anchor_ = selectionCentroid(doc, sel);
+    moved_ = start.points;
+    movedMask_.assign(doc.points.size(), false);
+    for (uint32_t p : moved_)
+        if (p < movedMask_.size()) movedMask_[p] = true;
+    solver_ = std::make_unique<DragSolver>(doc, moved_);  // factorised once per transform
+    anchor_ = start.pivot;
     Vec3 r, u, f;
     cameraAxes(view.camera, r, u, f);
     planeNormal_ = f;
@@ -37,45 +63,189 @@ bool DragController::begin(const Document& doc, const Selection& sel, const Drag
     startY_ = y;
     const Ray ray = rayThroughPixel(view.camera, x, y, view.width, view.height);
     startHit_ = intersectPlane(ray, anchor_, f).value_or(anchor_);
+    const auto c = projectToPixel(viewMatrices(view.camera, double(view.width) / std::max(view.height, 1)), anchor_, view.width, view.height);
+    prevMouseAngle_ = c ? std::atan2(y - c->y, x - c->x) : 0.0;
     return true;
+}
+
+void DragController::setAxis(int axis, bool plane) {
+    axis_ = axis < 0 || axis > 2 ? -1 : axis;
+    plane_ = axis_ >= 0 && plane;
+}
+
+void DragController::toggleAxis(int axis, bool plane) {
+    if (axis_ == axis && plane_ == plane) setAxis(-1);
+    else setAxis(axis, plane);
+}
+
+void DragController::typeChar(char c) {
+    if ((c >= '0' && c <= '9') || c == '.' || (c == '-' && typed_.empty())) typed_ += c;
+    else if (c == '-' && typed_ == "-") typed_.clear();
+}
+
+void DragController::backspace() {
+    if (!typed_.empty()) typed_.pop_back();
+}
+
+std::optional<double> DragController::typedValue() const {
+    if (typed_.empty() || typed_ == "-" || typed_ == "." || typed_ == "-.") return std::nullopt;
+    char* end = nullptr;
+    const double v = std::strtod(typed_.c_str(), &end);
+    if (end != typed_.c_str() + typed_.size() || !std::isfinite(v)) return std::nullopt;
+    return v;
+}
+
+std::optional<Vec3> DragController::moveOffset(const Document& doc, const DragView& view, double x, double y, bool snap) const {
+    // The offset a constraint allows of a free offset d.
+    const auto constrain = [&](Vec3 d) {
+        if (axis_ < 0) return d;
+        const Vec3 a = axisVector(axis_);
+        return plane_ ? d - a * glm::dot(d, a) : a * glm::dot(d, a);
+    };
+    if (const auto v = typedValue()) return axisVector(axis_ < 0 ? 0 : plane_ ? (axis_ + 1) % 3 : axis_) * *v;
+    if (snap && snapTarget_ != SnapTarget::Grid) {
+        const auto target = snapPoint(doc, movedMask_, snapTarget_, view.camera, view.width, view.height, x, y);
+        if (target) return constrain(*target - anchor_);
+    }
+    const Ray ray = rayThroughPixel(view.camera, x, y, view.width, view.height);
+    const Ray r0 = rayThroughPixel(view.camera, startX_, startY_, view.width, view.height);
+    Vec3 delta(0.0);
+    const auto viewPlaneDelta = [&]() -> std::optional<Vec3> {
+        const auto hit = intersectPlane(ray, anchor_, planeNormal_);
+        if (!hit) return std::nullopt;
+        return *hit - startHit_;
+    };
+    if (axis_ < 0) {
+        const auto d = viewPlaneDelta();
+        if (!d) return std::nullopt;
+        delta = *d;
+    } else if (plane_) {
+        const Vec3 n = axisVector(axis_);
+        const auto a = intersectPlane(ray, anchor_, n), b = intersectPlane(r0, anchor_, n);
+        if (std::abs(glm::dot(n, planeNormal_)) > 0.2 && a && b) {
+            delta = *a - *b;
+        } else {  // the plane is seen edge-on: the view-plane move, flattened into it
+            const auto d = viewPlaneDelta();
+            if (!d) return std::nullopt;
+            delta = constrain(*d);
+        }
+    } else {
+        // Along the axis under the mouse, exactly, while the axis shows on screen; an axis nearly
+        // along the view moves at most kMaxAxisRate times as fast as a move in the view plane.
+        const Vec3 a = axisVector(axis_);
+        const ViewMatrices vm = viewMatrices(view.camera, double(view.width) / std::max(view.height, 1));
+        Vec3 right, up, fwd;
+        cameraAxes(view.camera, right, up, fwd);
+        const double len = std::max(view.camera.distance, 1e-9) * 1e-3;
+        const auto p0 = projectToPixel(vm, anchor_, view.width, view.height);
+        const auto pa = projectToPixel(vm, anchor_ + a * len, view.width, view.height);
+        const auto pr = projectToPixel(vm, anchor_ + right * len, view.width, view.height);
+        if (!p0 || !pa || !pr) return std::nullopt;
+        const glm::dvec2 s = (*pa - *p0) / len;          // pixels per unit along the axis
+        const double perUnit = glm::length(*pr - *p0) / len;  // pixels per unit across the view
+        if (glm::length(s) >= perUnit / kMaxAxisRate) {
+            delta = closestPointOnAxis(ray, anchor_, a) - closestPointOnAxis(r0, anchor_, a);
+        } else {
+            glm::dvec2 dir = glm::length(s) > 1e-9 * perUnit ? s / glm::length(s)
+                                                             : glm::dvec2(0.0, glm::dot(a, fwd) < 0.0 ? -1.0 : 1.0);
+            delta = a * (glm::dot(glm::dvec2(x - startX_, y - startY_), dir) * kMaxAxisRate / std::max(perUnit, 1e-300));
+        }
+    }
+    if (snap && snapTarget_ == SnapTarget::Grid) {  // the moved centre on the grid
+        const Vec3 snapped = snapToGrid(anchor_ + delta, niceGridStep(modelSize(doc)) / 5.0);
+        delta = constrain(snapped - anchor_) + (delta - constrain(delta));
+    }
+    return delta;
 }
 
 bool DragController::update(Document& doc, const DragView& view, double x, double y, bool snap) {
     if (!active()) return false;
-    const Ray ray = rayThroughPixel(view.camera, x, y, view.width, view.height);
-    Vec3 delta(0.0);
-    if (axis_ < 0) {
-        const auto hit = intersectPlane(ray, anchor_, planeNormal_);
-        if (!hit) return false;
-        delta = *hit - startHit_;
+    doc.points = start_;  // snapping looks at the document as it was
+    std::function<Vec3(const Vec3&)> f;
+    if (kind_ == TransformKind::Move) {
+        const auto d = moveOffset(doc, view, x, y, snap);
+        if (!d) return false;
+        lastOffset_ = *d;
+        f = [d = *d](const Vec3& p) { return p + d; };
     } else {
-        const Vec3 a = axisVector(axis_);
-        const Ray r0 = rayThroughPixel(view.camera, startX_, startY_, view.width, view.height);
-        delta = closestPointOnAxis(ray, anchor_, a) - closestPointOnAxis(r0, anchor_, a);
+        const ViewMatrices vm = viewMatrices(view.camera, double(view.width) / std::max(view.height, 1));
+        const glm::dvec2 c = projectToPixel(vm, anchor_, view.width, view.height).value_or(glm::dvec2(view.width, view.height) * 0.5);
+        const auto v = typedValue();
+        if (kind_ == TransformKind::Rotate) {
+            Vec3 right, up, fwd;
+            cameraAxes(view.camera, right, up, fwd);
+            const Vec3 axis = axis_ < 0 ? -fwd : axisVector(axis_);
+            // The mouse's angle about the pivot, accumulated so that turns past 180° go on.
+            const double a = std::atan2(y - c.y, x - c.x);
+            accumAngle_ += wrapAngle(a - prevMouseAngle_);
+            prevMouseAngle_ = a;
+            // Screen angles grow clockwise (y down); a positive turn about an axis towards the
+            // viewer shows counter-clockwise.
+            double deg = -glm::degrees(accumAngle_) * (glm::dot(axis, -fwd) >= 0.0 ? 1.0 : -1.0);
+            if (v) deg = *v;
+            else if (snap) deg = 5.0 * std::round(deg / 5.0);
+            lastAngle_ = deg;
+            const glm::dmat4 m = glm::rotate(glm::dmat4(1.0), glm::radians(deg), axis);
+            f = [m, c0 = anchor_](const Vec3& p) { return c0 + Vec3(m * glm::dvec4(p - c0, 0.0)); };
+        } else {
+            const double d0 = std::max(std::hypot(startX_ - c.x, startY_ - c.y), 5.0);
+            double k = std::hypot(x - c.x, y - c.y) / d0;
+            if (v) k = *v;
+            else if (snap) k = 0.1 * std::round(k / 0.1);
+            Vec3 s(k);
+            if (axis_ >= 0) {
+                s = plane_ ? Vec3(k) : Vec3(1.0);
+                s[axis_] = plane_ ? 1.0 : k;
+            }
+            lastScale_ = s;
+            f = [s, c0 = anchor_](const Vec3& p) { return c0 + s * (p - c0); };
+        }
     }
-    if (snap) {  // the moved centre on the grid
-        const Vec3 snapped = snapToGrid(anchor_ + delta, niceGridStep(modelSize(doc)) / 5.0);
-        if (axis_ < 0)
-            delta = snapped - anchor_;
-        else
-            delta[axis_] = snapped[axis_] - anchor_[axis_];
-    }
-    doc.points = start_;
-    for (uint32_t p : moved_) doc.points[p] = start_[p] + delta;
+    for (uint32_t p : moved_) doc.points[p] = f(start_[p]);
     solver_->project(doc.points);
     takeChangedPoints(uploaded_, doc.points, changed_);
     return true;
 }
 
+std::string DragController::status() const {
+    char buf[200];
+    const char* where = axis_ < 0 ? (kind_ == TransformKind::Move ? " in the view plane" : kind_ == TransformKind::Rotate ? " about the view axis" : "")
+                        : plane_ ? (axis_ == 0 ? " in the YZ plane" : axis_ == 1 ? " in the ZX plane" : " in the XY plane")
+                        : kind_ == TransformKind::Move ? (axis_ == 0 ? " along X" : axis_ == 1 ? " along Y" : " along Z")
+                        : kind_ == TransformKind::Rotate ? (axis_ == 0 ? " about X" : axis_ == 1 ? " about Y" : " about Z")
+                                                         : (axis_ == 0 ? " along X" : axis_ == 1 ? " along Y" : " along Z");
+    std::string value;
+    if (kind_ == TransformKind::Move) {
+        std::snprintf(buf, sizeof buf, "%.4g, %.4g, %.4g", lastOffset_.x, lastOffset_.y, lastOffset_.z);
+        value = buf;
+    } else if (kind_ == TransformKind::Rotate) {
+        std::snprintf(buf, sizeof buf, "%.4g°", lastAngle_);
+        value = buf;
+    } else {
+        const double k = axis_ >= 0 && !plane_ ? lastScale_[axis_] : plane_ ? lastScale_[(axis_ + 1) % 3] : lastScale_.x;
+        std::snprintf(buf, sizeof buf, "×%.4g", k);
+        value = buf;
+    }
+    std::snprintf(buf, sizeof buf, "%s %zu point%s%s: %s", kindName(kind_), moved_.size(), moved_.size() == 1 ? "" : "s", where, value.c_str());
+    std::string out = buf;
+    if (!typed_.empty()) out += "  [typed " + typed_ + "]";
+    return out;
+}
+
 void DragController::finish(EditSession& session) {
     const size_t n = moved_.size();
+    const std::string kind = kindName(kind_);
+    const SnapTarget snap = snapTarget_;
     *this = DragController{};
-    if (session.doc.points != session.committed().points) session.commit(n == 1 ? "Move point" : "Move " + std::to_string(n) + " points");
+    snapTarget_ = snap;
+    if (session.doc.points != session.committed().points) session.commit(n == 1 ? kind + " point" : kind + " " + std::to_string(n) + " points");
 }
 
 void DragController::cancel(Document& doc) {
     if (!start_.empty()) doc.points = start_;
+    const SnapTarget snap = snapTarget_;
     *this = DragController{};
+    snapTarget_ = snap;
 }
 
 std::string HeldPointEdit::set(EditSession& session, uint32_t point, const Vec3& position) {

@@ -1,13 +1,17 @@
-// Moving control points with the joins held, without a window: the editor's point drags (in the
-// view plane, or along an axis after X/Y/Z; Ctrl snaps) and its numeric point edits. Mouse
-// positions are pixels of a view (camera + size); the solver (core/constraint_solver.hpp) is
-// factorised once per drag and moves the neighbours so that every join holds; a finished drag is
-// one undo step of the session. The editor (ui/viewport.cpp) feeds it the mouse; tests drive it
-// directly (tests/test_drag_controller.cpp).
+// Transforms of the selection with the joins held, without a window: the editor's G / R / S and
+// point drags (in the view plane, along X/Y/Z, or in the plane normal to one after Shift+X/Y/Z;
+// typed values; Ctrl snaps to the grid, to points, edges or surfaces) and its numeric point edits.
+// Mouse positions are pixels of a view (camera + size); the solver (core/constraint_solver.hpp) is
+// factorised once per transform and moves the neighbours so that every join holds (a whole joined
+// group moved rigidly needs no correction); a finished transform is one undo step of the session.
+// The editor (ui/viewport.cpp) feeds it the mouse and keys; tests drive it directly
+// (tests/test_drag_controller.cpp, tests/test_transforms.cpp).
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +19,7 @@
 #include "core/document.hpp"
 #include "core/edit_session.hpp"
 #include "core/selection.hpp"
+#include "core/snapping.hpp"
 
 namespace pw {
 
@@ -24,48 +29,89 @@ struct DragView {
     int width = 1, height = 1;
 };
 
+enum class TransformKind { Move, Rotate, Scale };
+
+struct TransformStart {
+    std::vector<uint32_t> points;  // the points the transform moves (fixed in the solver)
+    Vec3 pivot{0.0};               // rotate / scale about this point; moves keep it as the anchor
+    TransformKind kind = TransformKind::Move;
+    bool grab = false;             // started by a key (G/R/S, no button held): click or Enter confirms
+};
+
 class DragController {
 public:
-    // Starts moving the selection's points (sel.points) from the mouse at (x, y): they move in the
-    // plane through their centroid facing the camera. `grab`: started by the G key (no button
-    // held). Returns false, starting nothing, when no point is selected.
+    // Starts the transform with the mouse at (x, y). Returns false, starting nothing, when no point
+    // is given.
+    bool begin(const Document& doc, const TransformStart& start, const DragView& view, double x, double y);
+    // A move of sel.points about their centroid (a left drag on a selected point).
     bool begin(const Document& doc, const Selection& sel, const DragView& view, double x, double y, bool grab);
     bool active() const { return solver_ != nullptr; }
     bool grab() const { return grab_; }
+    TransformKind kind() const { return kind_; }
 
-    // -1: free (the view plane); 0, 1, 2: along X, Y, Z through the centroid.
+    // The constraint: axis() -1 is free (the view plane for moves, the view axis for rotations,
+    // uniform for scales); 0, 1, 2 is X, Y, Z. plane(): Shift+key, the plane normal to that axis
+    // (moves and scales in the other two).
     int axis() const { return axis_; }
-    void setAxis(int axis) { axis_ = axis < 0 || axis > 2 ? -1 : axis; }
-    void toggleAxis(int axis) { setAxis(axis_ == axis ? -1 : axis); }
+    bool plane() const { return plane_; }
+    void setAxis(int axis, bool plane = false);
+    void toggleAxis(int axis, bool plane = false);  // the same key again frees the transform
 
-    // Moves the points to follow the mouse at (x, y): the moved points by the mouse's offset on
-    // the plane (or axis) from where the drag started, every other point by the solver. `snap`:
-    // the centroid lands on a grid of a fifth of niceGridStep(modelSize). Returns false and leaves
-    // `doc` alone when the mouse ray misses the drag plane.
+    // Typed value (Blender's "G X 2 Enter"): digits, '.', '-' and Backspace edit it; while it reads
+    // as a number it replaces the mouse: a distance along the axis (X when free, the plane's first
+    // axis), degrees, or a factor.
+    const std::string& typed() const { return typed_; }
+    void typeChar(char c);
+    void backspace();
+
+    SnapTarget snapTarget() const { return snapTarget_; }
+    void setSnapTarget(SnapTarget t) { snapTarget_ = t; }
+
+    // Moves the points for the mouse at (x, y): the moved points by the transform, every other
+    // point by the solver. `snap` (Ctrl): moves land on the snap target (the grid of a fifth of
+    // niceGridStep(modelSize), a point, an edge or a surface of the unmoved items), rotations on
+    // 5° steps, scales on 0.1 steps. Returns false and leaves `doc` alone when the mouse ray misses
+    // the drag plane.
     bool update(Document& doc, const DragView& view, double x, double y, bool snap);
     // The pool entries update() changed since the one before (a partial GPU upload).
     const std::vector<uint32_t>& changed() const { return changed_; }
 
-    // Ends the drag: one undo step ("Move point", "Move N points") when any point moved.
+    // Ends the transform: one undo step ("Move point", "Rotate 16 points", ...) when any point moved.
     void finish(EditSession& session);
-    // Ends the drag with every point where it was at begin().
+    // Ends the transform with every point where it was at begin().
     void cancel(Document& doc);
 
-    const Vec3& anchor() const { return anchor_; }  // the moved points' centroid at begin()
+    const Vec3& anchor() const { return anchor_; }  // the pivot (moves: the moved points' centroid)
     size_t movedCount() const { return moved_.size(); }
+    // One line for the editor's mode line: "Move 16 points along X: 2.5 (typed)".
+    std::string status() const;
+    // The last applied offset, angle (degrees) and factors.
+    const Vec3& lastOffset() const { return lastOffset_; }
+    double lastAngle() const { return lastAngle_; }
+    const Vec3& lastScale() const { return lastScale_; }
 
 private:
     std::vector<Vec3> start_;      // the whole pool at begin()
-    std::vector<uint32_t> moved_;  // the points the user moves (fixed in the solver)
+    std::vector<uint32_t> moved_;
+    std::vector<bool> movedMask_;
     std::unique_ptr<DragSolver> solver_;
+    TransformKind kind_ = TransformKind::Move;
     Vec3 anchor_{0.0};
     Vec3 planeNormal_{0.0, 0.0, 1.0};
     Vec3 startHit_{0.0};           // where the start ray met the drag plane
     double startX_ = 0, startY_ = 0;
     int axis_ = -1;
+    bool plane_ = false;
     bool grab_ = false;
+    std::string typed_;
+    SnapTarget snapTarget_ = SnapTarget::Grid;
+    Vec3 lastOffset_{0.0}, lastScale_{1.0};
+    double lastAngle_ = 0.0;
+    double prevMouseAngle_ = 0.0, accumAngle_ = 0.0;  // rotations: the mouse's turn about the pivot
     std::vector<Vec3> uploaded_;   // the pool as of the last changed() list
     std::vector<uint32_t> changed_;
+    std::optional<double> typedValue() const;
+    std::optional<Vec3> moveOffset(const Document& doc, const DragView& view, double x, double y, bool snap) const;
 };
 
 // Numeric edits of one point (the inspector's fields) with the joins held: the point goes where it

@@ -118,4 +118,6 @@ std::vector<uint32_t> EditSession::selectedPoints() const {
     return out;
 }
 
+Vec3 EditSession::transformPivot() const { return pw::transformPivot(doc, sel, selectedPoints(), pivot, cursor); }
+
 }  // namespace pw

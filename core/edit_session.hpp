@@ -14,6 +14,7 @@
 #include "core/edit_history.hpp"
 #include "core/gltf_export.hpp"
 #include "core/selection.hpp"
+#include "core/snapping.hpp"
 
 namespace pw {
 
@@ -27,6 +28,8 @@ public:
     Selection sel;
     Camera camera;
     Vec3 cursor{0.0};  // the 3D cursor: where new geometry is placed
+    PivotMode pivot = PivotMode::Median;  // what rotate and scale turn about
+    SnapTarget snap = SnapTarget::Grid;   // what moves snap to while Ctrl is held
     Edge activeEdge = Edge::U1;  // the selected patch's edge nearest the last surface click (extrude, unjoin)
     GltfExportOptions exportOptions;
 
@@ -72,6 +75,8 @@ public:
     // The points a transform of the selection moves: the selected points, and every point of the
     // selected patch, net, triangle or curve. Sorted, unique.
     std::vector<uint32_t> selectedPoints() const;
+    // The pivot of a transform of selectedPoints() under `pivot`.
+    Vec3 transformPivot() const;
 
 private:
     Document committed_;

@@ -118,7 +118,13 @@ bool raySphereMayHit(const Ray& ray, It first, It last) {
 }
 }  // namespace
 
-std::optional<SurfaceHit> pickSurface(const Document& doc, const Ray& ray, int level) {
+std::optional<SurfaceHit> pickSurface(const Document& doc, const Ray& ray, int level, const std::vector<bool>* skip) {
+    const auto skipped = [&](const auto& idx) {
+        if (!skip) return false;
+        for (uint32_t p : idx)
+            if (p < skip->size() && (*skip)[p]) return true;
+        return false;
+    };
     level = std::clamp(level, 1, 64);
     const std::vector<PatchInstance> inst = expandPatches(doc);
     std::optional<SurfaceHit> best;
@@ -126,6 +132,7 @@ std::optional<SurfaceHit> pickSurface(const Document& doc, const Ray& ray, int l
     GridWeights weights;
     for (size_t w = 0; w < inst.size(); ++w) {
         const PatchInstance& pi = inst[w];
+        if (skipped(pi.idx)) continue;
         const Net16 net = gatherNet(doc, pi.idx);
         // Bounding-sphere rejection first (the control net bounds the Bézier/spline window).
         if (!raySphereMayHit(ray, net.begin(), net.end())) continue;
@@ -150,6 +157,7 @@ std::optional<SurfaceHit> pickSurface(const Document& doc, const Ray& ray, int l
     std::vector<TriPoint> tgrid;
     for (size_t k = 0; k < doc.triangles.size(); ++k) {
         const TrianglePatch& tri = doc.triangles[k];
+        if (skipped(tri.idx)) continue;
         const Net10 net = gatherTriangleNet(doc, tri.idx);
         if (!raySphereMayHit(ray, net.begin(), net.end())) continue;
         evaluateTriangleGrid(net, tri.idx, level, tgrid);

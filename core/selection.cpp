@@ -1,9 +1,11 @@
 #include "core/selection.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "core/camera_math.hpp"
+#include "core/enum_names.hpp"
 
 namespace pw {
 
@@ -13,14 +15,18 @@ void applyClick(Selection& sel, int picked, bool shift) {
     if (!shift) {
         sel.points.clear();
         if (picked >= 0) sel.points.push_back(uint32_t(picked));
+        sel.active = picked;
         return;
     }
     if (picked < 0) return;
     const auto it = std::lower_bound(sel.points.begin(), sel.points.end(), uint32_t(picked));
-    if (it != sel.points.end() && *it == uint32_t(picked))
+    if (it != sel.points.end() && *it == uint32_t(picked)) {
         sel.points.erase(it);
-    else
+        if (sel.active == picked) sel.active = -1;
+    } else {
         sel.points.insert(it, uint32_t(picked));
+        sel.active = picked;
+    }
 }
 
 void applyBox(Selection& sel, const std::vector<uint32_t>& boxed, bool shift) {
@@ -36,6 +42,37 @@ void clampSelection(Selection& sel, const Document& doc) {
     if (sel.surface >= int(doc.surfaces.size())) sel.surface = -1;
     if (sel.curve >= int(doc.curves.size())) sel.curve = -1;
     if (sel.triangle >= int(doc.triangles.size())) sel.triangle = -1;
+    if (sel.active >= int(doc.points.size())) sel.active = -1;
+}
+
+namespace {
+constexpr std::array<std::string_view, 3> kPivotNames{"median", "active", "cursor"};
+
+template <class Idx>
+Vec3 centre(const Document& doc, const Idx& idx) {
+    Vec3 c(0.0);
+    for (uint32_t p : idx) c += doc.points[p];
+    return c / double(idx.size());
+}
+}  // namespace
+
+std::string_view pivotName(PivotMode m) { return enumName(m, kPivotNames); }
+std::optional<PivotMode> parsePivot(std::string_view name) { return parseEnum<PivotMode>(name, kPivotNames); }
+
+Vec3 transformPivot(const Document& doc, const Selection& sel, const std::vector<uint32_t>& moved, PivotMode mode, const Vec3& cursor) {
+    if (mode == PivotMode::Cursor) return cursor;
+    if (mode == PivotMode::Active) {
+        if (sel.active >= 0 && size_t(sel.active) < doc.points.size() && sel.contains(uint32_t(sel.active))) return doc.points[size_t(sel.active)];
+        if (sel.patch >= 0 && size_t(sel.patch) < doc.patches.size()) return centre(doc, doc.patches[size_t(sel.patch)].idx);
+        if (sel.surface >= 0 && size_t(sel.surface) < doc.surfaces.size()) return centre(doc, doc.surfaces[size_t(sel.surface)].idx);
+        if (sel.triangle >= 0 && size_t(sel.triangle) < doc.triangles.size()) return centre(doc, doc.triangles[size_t(sel.triangle)].idx);
+        if (sel.curve >= 0 && size_t(sel.curve) < doc.curves.size()) return centre(doc, doc.curves[size_t(sel.curve)].idx);
+    }
+    Vec3 c(0.0);
+    size_t n = 0;
+    for (uint32_t p : moved)
+        if (p < doc.points.size()) c += doc.points[p], ++n;
+    return n ? c / double(n) : c;
 }
 
 namespace {

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <string_view>
 #include <vector>
 
 #include "core/document.hpp"
@@ -15,10 +17,11 @@ struct Selection {
     int surface = -1;              // Document::surfaces index (a net), -1 = none
     int curve = -1;                // Document::curves index, -1 = none
     int triangle = -1;             // Document::triangles index (a Bézier triangle), -1 = none
+    int active = -1;               // the active point: the last one clicked (pivot "active"), -1 = none
 
     bool contains(uint32_t p) const;
     bool empty() const { return points.empty() && patch < 0 && surface < 0 && curve < 0 && triangle < 0; }
-    void clear() { points.clear(); patch = -1; surface = -1; curve = -1; triangle = -1; }
+    void clear() { points.clear(); patch = -1; surface = -1; curve = -1; triangle = -1; active = -1; }
     bool operator==(const Selection&) const = default;
 };
 
@@ -32,6 +35,14 @@ void clampSelection(Selection& sel, const Document& doc);
 
 // Mean of the selected points (or of the selected patch's, net's or triangle's points); the origin when empty.
 Vec3 selectionCentroid(const Document& doc, const Selection& sel);
+// What rotations and scales turn about (Blender's pivot point): the median of the moved points,
+// the active element (the last clicked point, else the selected patch's, net's, triangle's or
+// curve's centre, else the median) or the 3D cursor.
+enum class PivotMode { Median, Active, Cursor };
+std::string_view pivotName(PivotMode m);  // "median", "active", "cursor"
+std::optional<PivotMode> parsePivot(std::string_view name);
+Vec3 transformPivot(const Document& doc, const Selection& sel, const std::vector<uint32_t>& moved, PivotMode mode, const Vec3& cursor);
+
 // Bounds of what F frames: the selected points, else the selected patch, net or triangle, else the whole model.
 Bounds frameTargetBounds(const Document& doc, const Selection& sel);
 

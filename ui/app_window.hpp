@@ -66,6 +66,7 @@ public:
     // press and release between two frames would be lost); the benchmark injects keys here too.
     void keyEvent(int key, int mods) { keyQueue_.emplace_back(key, mods); }
     bool keyPressed(int key, int mods) const;  // `key` with exactly `mods` queued this frame
+    const std::vector<std::pair<int, int>>& queuedKeys() const { return keyQueue_; }  // in the order pressed
     // Where the left button went down this frame (a press and a move can arrive in one frame).
     std::optional<std::array<double, 2>> leftPress() const;
     void leftPressAt(double x, double y) { leftPress_ = {x, y}, leftPressed_ = true; }

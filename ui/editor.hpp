@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
+
 #include "core/autosave.hpp"
 #include "core/background_writer.hpp"
 #include "core/command_table.hpp"
@@ -117,7 +119,14 @@ private:
 
     // viewport.cpp: input; viewport_overlays.cpp: what is drawn over the 3D view
     void viewportInput();
-    void beginDrag(bool grab);
+    // A transform of the selection: a left drag on a selected point or a gizmo handle (`grab`
+    // false, the button held; `axis` 0..2 for an arrow), or G / R / S (`grab` true).
+    void beginDrag(bool grab, TransformKind kind = TransformKind::Move, int axis = -1);
+    void transformKeys(double mx, double my);  // during a transform: axes, planes, typed values
+    // The move gizmo at the pivot, in pane pixels: the centre, then the X, Y and Z arrow tips
+    // (nullopt when there is nothing to transform or the pivot is behind the camera).
+    std::optional<std::array<glm::dvec2, 4>> gizmoHandles(int width, int height) const;
+    int gizmoHit(double mx, double my) const;  // -1 none, 0..2 an arrow, 3 the centre
     void updateDrag(double mx, double my);
     void finishDrag();
     void cancelDrag();
@@ -143,6 +152,7 @@ private:
     Interaction mode_ = Interaction::None;
     DragController drag_;
     int hovered_ = -1;
+    int hoveredGizmo_ = -1;
     double pressX_ = 0, pressY_ = 0;
     bool pressShift_ = false;
     double lastX_ = 0, lastY_ = 0;

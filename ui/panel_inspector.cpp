@@ -1,9 +1,12 @@
-// The Inspector (left panel): the selected point's position (dragged or typed, the joins held by
+// The Inspector (left panel): the transform pivot and snap target, the selected point's position (dragged or typed, the joins held by
 // core/drag_controller.hpp's HeldPointEdit), the selected patch's or triangle's name and own
 // tessellation levels.
 #include <imgui.h>
 
 #include <cstdio>
+#include <initializer_list>
+#include <string>
+#include <string_view>
 
 #include "ui/imgui_tip.hpp"
 #include "ui/side_panels.hpp"
@@ -62,12 +65,41 @@ void InspectorPanel::setPoint(PanelContext& ctx, uint32_t p, const Vec3& positio
     ctx.documentChanged(false);
 }
 
+namespace {
+// Pivot and snap target: the `pivot` and `snap` commands, as two combos on one row.
+void transformRow(PanelContext& ctx) {
+    const EditSession& s = ctx.session();
+    const float w = ImGui::GetContentRegionAvail().x * 0.5f - ImGui::GetStyle().ItemSpacing.x;
+    const auto combo = [&](const char* id, const char* label, std::string_view current, std::initializer_list<std::string_view> names,
+                           const char* command, const char* help) {
+        ImGui::SetNextItemWidth(w * 0.6f);
+        if (ImGui::BeginCombo(id, std::string(current).c_str())) {
+            for (std::string_view n : names)
+                if (ImGui::Selectable(std::string(n).c_str(), n == current)) ctx.runCommand({command, std::string(n)});
+            ImGui::EndCombo();
+        }
+        traceItem(id);
+        tip(help);
+        ImGui::SameLine();
+        ImGui::TextUnformatted(label);
+    };
+    combo("##pivot", "Pivot", pivotName(s.pivot), {"median", "active", "cursor"}, "pivot",
+          "What R (rotate) and S (scale) turn about: the selection's median, the active point or item, or the 3D cursor");
+    ImGui::SameLine();
+    combo("##snap", "Snap", snapTargetName(s.snap), {"grid", "points", "edges", "surfaces"}, "snap",
+          "What a move snaps to while Ctrl is held");
+}
+}  // namespace
+
 void InspectorPanel::draw(PanelContext& ctx) {
     if (!ImGui::CollapsingHeader("Inspector", ImGuiTreeNodeFlags_DefaultOpen)) return;
     EditSession& s = ctx.session();
     Document& doc = s.doc;
     const Selection& sel = s.sel;
-    if (sel.points.size() == 1 && !ctx.interacting()) {
+    transformRow(ctx);
+    if (sel.points.size() == 1) {
+        // The same rows while a drag runs (read-only then): the panel keeps its layout.
+        ImGui::BeginDisabled(ctx.interacting());
         const uint32_t p = sel.points.front();
         ImGui::Text("Point %u", p);
         double v[3] = {doc.points[p].x, doc.points[p].y, doc.points[p].z};
@@ -87,6 +119,7 @@ void InspectorPanel::draw(PanelContext& ctx) {
         }
         traceItem("inspector.set");
         tip("Type exact coordinates and press Enter; joins are held");
+        ImGui::EndDisabled();
     } else if (sel.points.size() > 1) {
         const Vec3 c = selectionCentroid(doc, sel);
         ImGui::Text("%zu points selected", sel.points.size());

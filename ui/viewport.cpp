@@ -1,6 +1,7 @@
 // Viewport input (Blender conventions, DESIGN §6): hover, navigation (wheel zoom, middle orbit,
 // Shift+middle pan, Alt+left orbit), click / Shift+click / box selection, surface picks, and point
-// drags (a left drag on a selected point, or G) through core/drag_controller.hpp: X/Y/Z constrain,
+// transforms (a left drag on a selected point or a gizmo handle; G / R / S) through
+// core/drag_controller.hpp: X/Y/Z constrain to an axis, Shift+X/Y/Z to a plane, digits type a value,
 // Ctrl snaps, Esc or right click cancels. Mouse positions are relative to the pane the mouse works
 // in (ui/view_panes.cpp).
 #include <GLFW/glfw3.h>
@@ -64,28 +65,31 @@ void Editor::viewportInput() {
         const bool dragging = mode_ == Interaction::DragPoints || mode_ == Interaction::Grab;
         if (!dragging) {
             if (mode_ == Interaction::None) runShortcuts();
-            if (keyPressed(GLFW_KEY_G, 0) && !sel_.points.empty() && mode_ == Interaction::None) {
-                pressX_ = mx;
-                pressY_ = my;
-                beginDrag(true);
+            if (mode_ == Interaction::None && !session_.selectedPoints().empty()) {
+                const int keys[3] = {GLFW_KEY_G, GLFW_KEY_R, GLFW_KEY_S};
+                const TransformKind kinds[3] = {TransformKind::Move, TransformKind::Rotate, TransformKind::Scale};
+                for (int k = 0; k < 3 && mode_ == Interaction::None; ++k)
+                    if (keyPressed(keys[k], 0)) {
+                        pressX_ = mx;
+                        pressY_ = my;
+                        beginDrag(true, kinds[k]);
+                    }
             }
             if (mode_ == Interaction::None && keyPressed(GLFW_KEY_ESCAPE, 0) && !palette_.open) sel_.clear();
         } else {
-            for (int a = 0; a < 3; ++a)
-                if (keyPressed(GLFW_KEY_X + a, 0)) {
-                    drag_.toggleAxis(a);
-                    updateDrag(mx, my);
-                }
-            if (keyPressed(GLFW_KEY_ESCAPE, 0)) cancelDrag();
-            if (mode_ == Interaction::Grab && (keyPressed(GLFW_KEY_ENTER, 0) || keyPressed(GLFW_KEY_KP_ENTER, 0))) finishDrag();
+            transformKeys(mx, my);
         }
     }
 
     // Step 2: hover highlight.
-    if (mode_ == Interaction::None && !overUi && mouseValid)
-        hovered_ = pickPoint(cam_, doc_.points, mx, my, W, H, kPickRadiusPx, &usedMask_);
-    else if (mode_ == Interaction::None)
-        hovered_ = -1;
+    if (mode_ == Interaction::None && !overUi && mouseValid) {
+        // The gizmo's arrows come before points; a point under its centre ring comes first.
+        hoveredGizmo_ = gizmoHit(mx, my);
+        hovered_ = hoveredGizmo_ >= 0 && hoveredGizmo_ < 3 ? -1 : pickPoint(cam_, doc_.points, mx, my, W, H, kPickRadiusPx, &usedMask_);
+        if (hovered_ >= 0) hoveredGizmo_ = -1;
+    } else if (mode_ == Interaction::None) {
+        hovered_ = hoveredGizmo_ = -1;
+    }
 
     // Step 3: navigation — wheel zoom, middle orbit / Shift+middle pan, Alt+left orbit.
     if (!overUi && mouseValid && io.MouseWheel != 0.0f) zoomCamera(cam_, io.MouseWheel);
@@ -113,7 +117,12 @@ void Editor::viewportInput() {
                 pressX_ = press ? (*press)[0] - viewArea_[0] : mx;
                 pressY_ = press ? (*press)[1] - viewArea_[1] : my;
                 pressShift_ = io.KeyShift;
-                hovered_ = pickPoint(cam_, doc_.points, pressX_, pressY_, W, H, kPickRadiusPx, &usedMask_);
+                const int g = pressShift_ ? -1 : gizmoHit(pressX_, pressY_);
+                hovered_ = g >= 0 && g < 3 ? -1 : pickPoint(cam_, doc_.points, pressX_, pressY_, W, H, kPickRadiusPx, &usedMask_);
+                if (g >= 0 && hovered_ < 0) {  // a gizmo handle: its arrow's axis, or the centre's view plane
+                    beginDrag(false, TransformKind::Move, g < 3 ? g : -1);
+                    break;
+                }
                 if (hovered_ >= 0) {
                     const bool was = sel_.contains(uint32_t(hovered_));
                     if (pressShift_ || !was) applyClick(sel_, hovered_, pressShift_);
@@ -179,8 +188,36 @@ void Editor::viewportInput() {
     lastX_ = mx, lastY_ = my;
 }
 
-void Editor::beginDrag(bool grab) {
-    if (drag_.begin(doc_, sel_, dragView(), pressX_, pressY_, grab)) mode_ = grab ? Interaction::Grab : Interaction::DragPoints;
+void Editor::beginDrag(bool grab, TransformKind kind, int axis) {
+    TransformStart start{session_.selectedPoints(), session_.transformPivot(), kind, grab};
+    // A move started on a point carries that point (it is what snaps); G moves the pivot.
+    if (kind == TransformKind::Move && !grab && hovered_ >= 0 && size_t(hovered_) < doc_.points.size()) start.pivot = doc_.points[size_t(hovered_)];
+    drag_.setSnapTarget(session_.snap);
+    if (!drag_.begin(doc_, start, dragView(), pressX_, pressY_)) return;
+    mode_ = grab ? Interaction::Grab : Interaction::DragPoints;
+    if (axis >= 0) drag_.setAxis(axis);
+}
+
+void Editor::transformKeys(double mx, double my) {
+    bool changed = false;
+    for (int a = 0; a < 3; ++a) {
+        if (keyPressed(GLFW_KEY_X + a, 0)) drag_.toggleAxis(a), changed = true;
+        if (keyPressed(GLFW_KEY_X + a, GLFW_MOD_SHIFT)) drag_.toggleAxis(a, true), changed = true;
+    }
+    if (mode_ == Interaction::Grab)  // typed values: "G X 2 Enter", the keys in the order they came
+        for (const auto& [key, mods] : window_.queuedKeys()) {
+            if (mods & (GLFW_MOD_CONTROL | GLFW_MOD_ALT | GLFW_MOD_SUPER)) continue;
+            char c = 0;
+            if (key >= GLFW_KEY_0 && key <= GLFW_KEY_9 && !(mods & GLFW_MOD_SHIFT)) c = char('0' + key - GLFW_KEY_0);
+            else if (key >= GLFW_KEY_KP_0 && key <= GLFW_KEY_KP_9) c = char('0' + key - GLFW_KEY_KP_0);
+            else if (key == GLFW_KEY_PERIOD || key == GLFW_KEY_KP_DECIMAL) c = '.';
+            else if (key == GLFW_KEY_MINUS || key == GLFW_KEY_KP_SUBTRACT) c = '-';
+            if (c) drag_.typeChar(c), changed = true;
+            else if (key == GLFW_KEY_BACKSPACE) drag_.backspace(), changed = true;
+        }
+    if (changed) updateDrag(mx, my);
+    if (keyPressed(GLFW_KEY_ESCAPE, 0)) cancelDrag();
+    else if (mode_ == Interaction::Grab && (keyPressed(GLFW_KEY_ENTER, 0) || keyPressed(GLFW_KEY_KP_ENTER, 0))) finishDrag();
 }
 
 void Editor::updateDrag(double mx, double my) {

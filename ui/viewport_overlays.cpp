@@ -1,12 +1,14 @@
 // The viewport's overlays, drawn with ImGui's background draw list in every pane: the selected
-// patch's or triangle's boundary, selected and hovered points, the axis line of a constrained drag,
-// the box of a box selection, the axis gizmo; and the mode line of a drag. (The ground grid is
+// patch's or triangle's boundary, selected and hovered points, the axis lines of a constrained
+// transform, the move gizmo at the pivot (and its hit test), the box of a box selection, the axis
+// gizmo; and the mode line of a transform. (The ground grid is
 // drawn by the renderer, depth-tested.)
 #include <imgui.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <optional>
+#include <string>
 
 #include "core/bezier_triangle.hpp"
 #include "core/camera_math.hpp"
@@ -14,6 +16,58 @@
 #include "ui/editor.hpp"
 
 namespace pw::ui {
+
+namespace {
+constexpr ImU32 kAxisColours[3] = {IM_COL32(230, 60, 60, 230), IM_COL32(60, 210, 60, 230), IM_COL32(70, 120, 255, 230)};
+constexpr float kGizmoLengthPx = 80.0f;
+constexpr double kGizmoGrabPx = 7.0;
+
+double segmentDistance(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
+    const glm::dvec2 ab = b - a;
+    const double t = glm::dot(ab, ab) > 0.0 ? std::clamp(glm::dot(p - a, ab) / glm::dot(ab, ab), 0.0, 1.0) : 0.0;
+    return glm::length(p - (a + t * ab));
+}
+}  // namespace
+
+std::optional<std::array<glm::dvec2, 4>> Editor::gizmoHandles(int width, int height) const {
+    if (session_.selectedPoints().empty()) return std::nullopt;
+    const Vec3 pivot = mode_ == Interaction::None ? session_.transformPivot() : drag_.anchor();
+    const ViewMatrices vm = viewMatrices(cam_, double(width) / std::max(height, 1));
+    Vec3 right, up, fwd;
+    cameraAxes(cam_, right, up, fwd);
+    const double len = std::max(cam_.distance, 1e-9) * 1e-3;
+    const auto p0 = projectToPixel(vm, pivot, width, height), pr = projectToPixel(vm, pivot + right * len, width, height);
+    if (!p0 || !pr) return std::nullopt;
+    const double perUnit = glm::length(*pr - *p0) / len;
+    std::array<glm::dvec2, 4> out{*p0, *p0, *p0, *p0};
+    for (int a = 0; a < 3; ++a) {
+        Vec3 axis(0.0);
+        axis[a] = 1.0;
+        // An arrow as long as the axis shows: full length across the view, short along it.
+        if (const auto pa = projectToPixel(vm, pivot + axis * len, width, height); pa && perUnit > 0.0)
+            out[size_t(a + 1)] = *p0 + (*pa - *p0) / len / perUnit * double(kGizmoLengthPx * window_.uiScale());
+    }
+    return out;
+}
+
+int Editor::gizmoHit(double mx, double my) const {
+    const auto [W, H] = viewSize();
+    const auto g = gizmoHandles(W, H);
+    if (!g) return -1;
+    const glm::dvec2 m(mx, my);
+    const double r = kGizmoGrabPx * window_.uiScale();
+    int best = -1;
+    double bestD = r;
+    for (int a = 0; a < 3; ++a) {
+        // The outer two thirds of an arrow: the centre is the free move's.
+        const glm::dvec2 from = (*g)[0] + ((*g)[size_t(a + 1)] - (*g)[0]) / 3.0;
+        if (glm::length((*g)[size_t(a + 1)] - (*g)[0]) < 12.0) continue;  // seen end-on
+        const double d = segmentDistance(m, from, (*g)[size_t(a + 1)]);
+        if (d < bestD) bestD = d, best = a;
+    }
+    if (best < 0 && glm::length(m - (*g)[0]) < 1.6 * r) best = 3;
+    return best;
+}
 
 void Editor::drawViewportOverlays() {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
@@ -28,16 +82,14 @@ void Editor::drawViewportOverlays() {
     }
 
     // Mode line.
-    const char* modeText = nullptr;
-    char buf[160];
     if (mode_ == Interaction::Grab || mode_ == Interaction::DragPoints) {
-        std::snprintf(buf, sizeof buf, "%s %zu point(s)%s   X/Y/Z axis · Ctrl snap · Esc/right click cancel%s",
-                      mode_ == Interaction::Grab ? "Grab" : "Drag", drag_.movedCount(),
-                      drag_.axis() < 0 ? " in the view plane" : drag_.axis() == 0 ? " along X" : drag_.axis() == 1 ? " along Y" : " along Z",
-                      mode_ == Interaction::Grab ? " · click/Enter confirm" : "");
-        modeText = buf;
+        const std::string hint = "X/Y/Z axis · Shift+X/Y/Z plane · Ctrl snap (" + std::string(snapTargetName(session_.snap)) + ")" +
+                                 (mode_ == Interaction::Grab ? " · type a value · click/Enter confirm" : "") + " · Esc/right click cancel";
+        const std::string text = drag_.status() + "\n" + hint;
+        const float x = float(sidePanels_.layout().left) + 12.0f;
+        const float wrap = std::max(ImGui::GetIO().DisplaySize.x - float(sidePanels_.layout().right) - x - 12.0f, 100.0f);
+        dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(x, 30.0f), IM_COL32(255, 230, 120, 255), text.c_str(), nullptr, wrap);
     }
-    if (modeText) dl->AddText(ImVec2(float(sidePanels_.layout().left) + 12.0f, 30.0f), IM_COL32(255, 230, 120, 255), modeText);
 }
 
 void Editor::drawPaneOverlays(const std::array<float, 4>& pane, bool active) {
@@ -105,13 +157,33 @@ void Editor::drawPaneOverlays(const std::array<float, 4>& pane, bool active) {
         if (auto s = proj(doc_.points[size_t(hovered_)]))
             dl->AddCircle(ImVec2(float(s->x), float(s->y)), 8.0f, IM_COL32(255, 255, 255, 255), 16, 2.0f);
 
-    // Axis constraint line during a drag.
-    if ((mode_ == Interaction::DragPoints || mode_ == Interaction::Grab) && drag_.axis() >= 0) {
-        Vec3 a(0.0);
-        a[drag_.axis()] = 2.0 * modelSize(doc_);
-        const ImU32 col = drag_.axis() == 0 ? IM_COL32(230, 60, 60, 220) : drag_.axis() == 1 ? IM_COL32(60, 210, 60, 220) : IM_COL32(70, 120, 255, 220);
-        line(drag_.anchor() - a, drag_.anchor() + a, col, 1.5f);
-    }
+    // Axis constraint line (or the plane's two axes) during a transform.
+    if ((mode_ == Interaction::DragPoints || mode_ == Interaction::Grab) && drag_.axis() >= 0)
+        for (int k = 0; k < 3; ++k) {
+            if (drag_.plane() ? k == drag_.axis() : k != drag_.axis()) continue;
+            Vec3 a(0.0);
+            a[k] = 2.0 * modelSize(doc_);
+            line(drag_.anchor() - a, drag_.anchor() + a, kAxisColours[k], 1.5f);
+        }
+
+    // The move gizmo at the pivot: arrows along X, Y, Z (drag one to move along it), the centre
+    // ring moves in the view plane; a rotation or scale shows its pivot and the mouse's lever.
+    if (active && (mode_ == Interaction::None || mode_ == Interaction::Grab || mode_ == Interaction::DragPoints))
+        if (const auto g = gizmoHandles(W, H)) {
+            const ImVec2 c(float((*g)[0].x) + pane[0], float((*g)[0].y) + pane[1]);
+            if (mode_ == Interaction::None) {
+                for (int a = 0; a < 3; ++a) {
+                    const ImVec2 e(float((*g)[size_t(a + 1)].x) + pane[0], float((*g)[size_t(a + 1)].y) + pane[1]);
+                    const bool hot = hoveredGizmo_ == a;
+                    dl->AddLine(c, e, hot ? IM_COL32(255, 255, 255, 255) : kAxisColours[a], hot ? 4.0f : 2.5f);
+                    dl->AddCircleFilled(e, hot ? 6.0f : 4.5f, hot ? IM_COL32(255, 255, 255, 255) : kAxisColours[a]);
+                }
+                dl->AddCircle(c, 9.0f, hoveredGizmo_ == 3 ? IM_COL32(255, 255, 255, 255) : IM_COL32(230, 230, 230, 200), 24, 2.0f);
+            } else if (drag_.kind() != TransformKind::Move) {
+                dl->AddCircleFilled(c, 4.0f, IM_COL32(255, 230, 120, 255));
+                dl->AddLine(c, io.MousePos, IM_COL32(255, 230, 120, 160), 1.0f);
+            }
+        }
 
     // Box selection rectangle.
     if (mode_ == Interaction::BoxSelect && active) {
