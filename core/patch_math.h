@@ -102,6 +102,13 @@ PW_FN vec3 canonicalBoundaryPoint(vec3 q0, vec3 q1, vec3 q2, vec3 q3, float t, b
     return r;
 }
 
+// The outer level of an edge under the shared-edge rule (core/edge_levels.hpp): `stored` as is when
+// the edge's level is fixed (every window on it has its own levels), else the level the settings
+// give (`computed`, the same on both sides) raised to `stored` (the windows' largest own level).
+PW_FN float sharedEdgeLevel(float computed, float stored, bool fixedLevel) {
+    return fixedLevel ? stored : max(computed, stored);
+}
+
 // The level a control shader hands the tessellator for requested level f (DESIGN §3): equal ceil(f)
 // in [1, 64]; fractional_odd f in [1, 63]; fractional_even f in [2, 64] (the tessellator rounds
 // those); pow2 the next power of two of ceil(f) in [1, 64]. NaN counts as 1.

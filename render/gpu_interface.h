@@ -32,8 +32,8 @@ PW_BLOCK(layout(set = 0, binding = 0, std140) uniform Frame, FrameUniforms) {
 
 // binding 1: per-patch tessellation overrides, indexed by patchBase + gl_PrimitiveID.
 struct PatchData {
-    vec4 outer PW_INIT(0.0f);
-    vec4 inner PW_INIT(0.0f);  // xy inner levels, z > 0.5: override active
+    vec4 outer PW_INIT(0.0f);  // per edge: the fixed level, or the least level (core/edge_levels.hpp)
+    vec4 inner PW_INIT(0.0f);  // xy own inner levels, z > 0.5: they apply; w: the fixed edges' bit mask
 };
 
 // binding 2: statistics the shaders write (patches culled this frame).

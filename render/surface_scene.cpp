@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/edge_levels.hpp"
+
 namespace pw::render {
 
 glm::mat4 basisPushMatrix(Basis basis, double tension) {
@@ -25,23 +27,23 @@ SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc) {
     const std::vector<PatchInstance> inst = expandPatches(doc);
     std::vector<uint32_t> idx;
     idx.reserve(inst.size() * 16);
-    std::vector<gpu::PatchData> pd(inst.size());
+    // Per window, then per triangle: the levels of the shared-edge rule (core/edge_levels.hpp).
+    const std::vector<WindowLevels> levels = resolveEdgeLevels(doc, inst);
+    std::vector<gpu::PatchData> pd(levels.size());
     s.overrideLevel.assign(inst.size(), 0.0f);
+    for (size_t w = 0; w < levels.size(); ++w) {
+        const WindowLevels& l = levels[w];
+        pd[w].outer = {l.outer[0], l.outer[1], l.outer[2], l.outer[3]};
+        pd[w].inner = {l.inner ? (*l.inner)[0] : 0.0f, l.inner ? (*l.inner)[1] : 0.0f, l.inner ? 1.0f : 0.0f, float(l.fixedMask)};
+        float most = 0.0f;
+        for (float f : l.outer) most = std::max(most, f);
+        if (l.inner) most = std::max({most, (*l.inner)[0], (*l.inner)[1]});
+        s.overrideMax = std::max(s.overrideMax, most);
+        if (w < inst.size()) s.overrideLevel[w] = most;
+    }
     for (size_t w = 0; w < inst.size(); ++w) {
         const PatchInstance& pi = inst[w];
         idx.insert(idx.end(), pi.idx.begin(), pi.idx.end());
-        if (pi.patch >= 0) {
-            const auto& ov = doc.patches[size_t(pi.patch)].tessOverride;
-            if (ov) {
-                const auto& o = *ov;
-                pd[w].outer = {o[0], o[1], o[2], o[3]};
-                pd[w].inner = {o[4], o[5], 1.0f, 0.0f};
-                for (float f : o) {
-                    s.overrideMax = std::max(s.overrideMax, f);
-                    s.overrideLevel[w] = std::max(s.overrideLevel[w], f);
-                }
-            }
-        }
         const uint32_t kind = pi.basis == Basis::Bezier ? 0u : pi.basis == Basis::BSpline ? 1u : 2u;
         if (s.runs.empty() || s.runs.back().basisKind != kind ||
             (kind == 2u && inst[s.runs.back().first].tension != pi.tension)) {
@@ -52,17 +54,7 @@ SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc) {
     // Bézier triangles after the windows: indices in their own buffer, overrides appended.
     std::vector<uint32_t> triIdx;
     triIdx.reserve(doc.triangles.size() * 10);
-    for (const TrianglePatch& t : doc.triangles) {
-        triIdx.insert(triIdx.end(), t.idx.begin(), t.idx.end());
-        gpu::PatchData tp;
-        if (t.tessOverride) {
-            const auto& o = *t.tessOverride;
-            tp.outer = {o[0], o[1], o[2], 0.0f};
-            tp.inner = {o[3], 0.0f, 1.0f, 0.0f};
-            for (float f : o) s.overrideMax = std::max(s.overrideMax, f);
-        }
-        pd.push_back(tp);
-    }
+    for (const TrianglePatch& t : doc.triangles) triIdx.insert(triIdx.end(), t.idx.begin(), t.idx.end());
     s.triangleCount = uint32_t(doc.triangles.size());
     if (!triIdx.empty()) s.triIndices = uploadStatic(dev, triIdx, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     std::vector<uint32_t> curveIdx;

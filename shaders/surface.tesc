@@ -85,27 +85,37 @@ void main() {
             flip |= 1u << uint(e);
     edgeFlipPatch = flip;
 
+    // The settings' levels (uniform or adaptive), then the shared-edge rule: an edge whose windows
+    // all have their own levels takes the largest of those, any other edge at least that much
+    // (core/edge_levels.hpp), so both sides of a shared edge agree.
     PatchData pd = patches[draw.patchBase + uint(gl_PrimitiveID)];
     float o[4];
     float in0, in1;
-    if (pd.inner.z > 0.5) {
-        o[0] = pd.outer.x; o[1] = pd.outer.y; o[2] = pd.outer.z; o[3] = pd.outer.w;
-        in0 = pd.inner.x; in1 = pd.inner.y;
-    } else
+    bool adaptive = false;
 #ifdef ADAPTIVE_AND_CULLING
-    if (frame.modes.y == kAdaptiveNone)
+    adaptive = frame.modes.y != kAdaptiveNone;
 #endif
-    {
+    if (!adaptive) {
         o[0] = frame.outer.x; o[1] = frame.outer.y; o[2] = frame.outer.z; o[3] = frame.outer.w;
-        in0 = frame.inner.x; in1 = frame.inner.y;
     }
 #ifdef ADAPTIVE_AND_CULLING
     else {
         for (int e = 0; e < 4; ++e) o[e] = clamp(adaptiveLevel(e), 1.0, frame.inner.z);
-        in0 = max(o[1], o[3]);  // inner[0] subdivides along u, like the v0 and v1 edges
-        in1 = max(o[0], o[2]);
     }
 #endif
+    uint fixedMask = uint(pd.inner.w + 0.5);
+    o[0] = sharedEdgeLevel(o[0], pd.outer.x, (fixedMask & 1u) != 0u);
+    o[1] = sharedEdgeLevel(o[1], pd.outer.y, (fixedMask & 2u) != 0u);
+    o[2] = sharedEdgeLevel(o[2], pd.outer.z, (fixedMask & 4u) != 0u);
+    o[3] = sharedEdgeLevel(o[3], pd.outer.w, (fixedMask & 8u) != 0u);
+    if (pd.inner.z > 0.5) {  // the window's own inner levels
+        in0 = pd.inner.x; in1 = pd.inner.y;
+    } else if (adaptive) {
+        in0 = max(o[1], o[3]);  // inner[0] subdivides along u, like the v0 and v1 edges
+        in1 = max(o[0], o[2]);
+    } else {
+        in0 = frame.inner.x; in1 = frame.inner.y;
+    }
     for (int e = 0; e < 4; ++e) gl_TessLevelOuter[e] = roundLevel(o[e]);
     gl_TessLevelInner[0] = roundLevel(in0);
     gl_TessLevelInner[1] = roundLevel(in1);

@@ -72,26 +72,29 @@ void main() {
         if (reversedEdge(triEdgeSlot(e, 0), triEdgeSlot(e, 1), triEdgeSlot(e, 2), triEdgeSlot(e, 3))) flip |= 1u << uint(e);
     edgeFlipPatch = flip;
 
+    // The settings' levels, then the shared-edge rule (core/edge_levels.hpp), as in surface.tesc.
     PatchData pd = patches[draw.patchBase + uint(gl_PrimitiveID)];
     float o[3];
     float in0;
-    if (pd.inner.z > 0.5) {
-        o[0] = pd.outer.x; o[1] = pd.outer.y; o[2] = pd.outer.z;
-        in0 = pd.inner.x;
-    } else
+    bool adaptive = false;
 #ifdef ADAPTIVE_AND_CULLING
-    if (frame.modes.y == kAdaptiveNone)
+    adaptive = frame.modes.y != kAdaptiveNone;
 #endif
-    {
+    if (!adaptive) {
         o[0] = frame.outer.x; o[1] = frame.outer.y; o[2] = frame.outer.z;
-        in0 = frame.inner.x;
     }
 #ifdef ADAPTIVE_AND_CULLING
     else {
         for (int e = 0; e < 3; ++e) o[e] = clamp(adaptiveLevel(e), 1.0, frame.inner.z);
-        in0 = max(o[0], max(o[1], o[2]));
     }
 #endif
+    uint fixedMask = uint(pd.inner.w + 0.5);
+    o[0] = sharedEdgeLevel(o[0], pd.outer.x, (fixedMask & 1u) != 0u);
+    o[1] = sharedEdgeLevel(o[1], pd.outer.y, (fixedMask & 2u) != 0u);
+    o[2] = sharedEdgeLevel(o[2], pd.outer.z, (fixedMask & 4u) != 0u);
+    if (pd.inner.z > 0.5) in0 = pd.inner.x;  // the triangle's own inner level
+    else if (adaptive) in0 = max(o[0], max(o[1], o[2]));
+    else in0 = frame.inner.x;
     for (int e = 0; e < 3; ++e) gl_TessLevelOuter[e] = roundLevel(o[e]);
     gl_TessLevelOuter[3] = 0.0;
     gl_TessLevelInner[0] = roundLevel(in0);

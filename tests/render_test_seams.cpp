@@ -26,7 +26,10 @@ bool insideConvex(const std::array<glm::dvec2, 4>& q, glm::dvec2 p) {
     return true;
 }
 
-// Counts background pixels inside the projected grid, shrunk by 10 % towards its centre (the wave bends the projected boundary).
+// Counts background pixels inside the projected grid, shrunk by 10 % towards its centre (the wave
+// bends the projected boundary), that the background around the model does not reach (4-connected):
+// a crack between two patches is closed at their shared corners, while the space between a coarse
+// outer boundary and its curve opens to the outside.
 size_t holesInside(const Rendered& r, const render::RenderOptions& o, const Document& doc, int rows, int cols) {
     const ViewMatrices vm = viewMatrices(o.camera, double(r.image.w) / r.image.h);
     const int lc = 3 * cols + 1;
@@ -38,13 +41,29 @@ size_t holesInside(const Rendered& r, const render::RenderOptions& o, const Docu
         centre += q[size_t(i)] * 0.25;
     }
     for (auto& p : q) p = centre + (p - centre) * 0.90;
+    const int W = int(r.image.w), H = int(r.image.h);
+    const auto background = [&](int x, int y) { return sameColor(r.image.at(x, y), doc.display.background, 6); };
+    std::vector<uint8_t> outside(size_t(W) * H, 0);
+    std::vector<std::pair<int, int>> stack;
+    const auto reach = [&](int x, int y) {
+        if (x < 0 || y < 0 || x >= W || y >= H || outside[size_t(y) * W + x] || !background(x, y)) return;
+        outside[size_t(y) * W + x] = 1;
+        stack.push_back({x, y});
+    };
+    for (int x = 0; x < W; ++x) reach(x, 0), reach(x, H - 1);
+    for (int y = 0; y < H; ++y) reach(0, y), reach(W - 1, y);
+    while (!stack.empty()) {
+        const auto [x, y] = stack.back();
+        stack.pop_back();
+        reach(x + 1, y), reach(x - 1, y), reach(x, y + 1), reach(x, y - 1);
+    }
     size_t holes = 0;
     std::vector<uint8_t> marked = r.image.rgba;
-    for (uint32_t y = 0; y < r.image.h; ++y)
-        for (uint32_t x = 0; x < r.image.w; ++x)
-            if (insideConvex(q, {x + 0.5, y + 0.5}) && sameColor(r.image.at(int(x), int(y)), doc.display.background, 6)) {
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x)
+            if (insideConvex(q, {x + 0.5, y + 0.5}) && background(x, y) && !outside[size_t(y) * W + x]) {
                 ++holes;
-                uint8_t* m = &marked[(size_t(y) * r.image.w + x) * 4];
+                uint8_t* m = &marked[(size_t(y) * r.image.w + size_t(x)) * 4];
                 m[0] = 255, m[1] = 0, m[2] = 255;
             }
     if (holes && std::getenv("PATCHWORK_TEST_DUMP"))  // look at the holes (magenta)
@@ -83,6 +102,33 @@ TEST_F(RenderSeams, DistanceAdaptiveGridHasNoCracks) {
     o.tess.spacing = Spacing::FractionalOdd;
     const Rendered r = off.render(o);
     EXPECT_EQ(holesInside(r, o, doc, rows, cols), 0u);
+}
+
+// The level belongs to the edge (core/edge_levels.hpp): patches with their own levels (2 next to
+// 16, and next to patches without) meet without a crack under every partitioning and adaptive mode.
+TEST_F(RenderSeams, MixedPerPatchLevelsHaveNoCracks) {
+    const int rows = 4, cols = 4;
+    Document doc = makePatchGrid(rows, cols);
+    for (size_t p = 0; p < doc.patches.size(); ++p) {
+        const size_t r = p / size_t(cols), c = p % size_t(cols);
+        if ((r + c) % 3 == 0) doc.patches[p].tessOverride = std::array<float, 6>{2, 2, 2, 2, 2, 2};
+        else if ((r + c) % 3 == 1) doc.patches[p].tessOverride = std::array<float, 6>{16, 5, 16, 5, 9, 9};
+    }
+    Offscreen off(640, 480, false);
+    off.setDocument(doc);
+    for (AdaptiveMode a : {AdaptiveMode::None, AdaptiveMode::Distance, AdaptiveMode::ScreenSpace, AdaptiveMode::Orientation})
+        for (Spacing s : {Spacing::Equal, Spacing::FractionalOdd, Spacing::FractionalEven, Spacing::Pow2}) {
+            render::RenderOptions o = plainOptions(doc, 7, 640.0 / 480.0, "top");
+            o.camera.pitchDeg = 55;
+            o.camera.distance *= 0.8;
+            o.tess.adaptive = a;
+            o.tess.targetPixels = 10.0f;
+            o.tess.distanceNear = float(o.camera.distance * 0.7);
+            o.tess.distanceFar = float(o.camera.distance * 1.5);
+            o.tess.spacing = s;
+            const Rendered r = off.render(o);
+            EXPECT_EQ(holesInside(r, o, doc, rows, cols), 0u) << adaptiveName(a) << " " << spacingName(s);
+        }
 }
 
 TEST_F(RenderSeams, BatchedLargeModelMatchesPlainMesh) {
