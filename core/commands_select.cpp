@@ -9,6 +9,7 @@
 #include "core/constraint_solver.hpp"
 #include "core/patch_ops.hpp"
 #include "core/picking.hpp"
+#include "core/selection_ops.hpp"
 
 namespace pw {
 
@@ -45,10 +46,19 @@ void select(CommandContext& ctx) {
         expectArgs(ctx, 1, 1);
         sel.clear();
         if (what == "all") {
-            const std::vector<bool> used = usedPointMask(doc);
-            for (size_t i = 0; i < used.size(); ++i)
-                if (used[i]) sel.points.push_back(uint32_t(i));
+            const std::vector<bool> shown = visiblePointMask(doc);
+            for (size_t i = 0; i < shown.size(); ++i)
+                if (shown[i]) sel.points.push_back(uint32_t(i));
         }
+        return;
+    }
+    if (what == "linked" || what == "invert") {
+        expectArgs(ctx, 1, 1);
+        const std::vector<uint32_t> from = ctx.session.selectedPoints();
+        if (what == "linked" && from.empty()) throw EditError("nothing is selected: select a point or an item to extend");
+        std::vector<uint32_t> pts = what == "linked" ? linkedPoints(doc, from) : invertedPoints(doc, from);
+        sel.clear();
+        sel.points = std::move(pts);
         return;
     }
     expectArgs(ctx, 2, 2);
@@ -65,7 +75,7 @@ void select(CommandContext& ctx) {
     } else if (what == "curve") {
         selectItems(sel, doc.curves, list, "curve", &Selection::curve);
     } else {
-        throw EditError("expected all, none, point, patch, net, triangle or curve, got '" + what + "'");
+        throw EditError("expected all, none, linked, invert, point, patch, net, triangle or curve, got '" + what + "'");
     }
     std::sort(sel.points.begin(), sel.points.end());
     sel.points.erase(std::unique(sel.points.begin(), sel.points.end()), sel.points.end());
@@ -94,9 +104,10 @@ int axisIndex(const std::string& word) {
 
 void addSelectCommands(CommandTable& t) {
     t.add({.name = "select", .label = "Select", .menu = "Select",
-           .usage = "all|none|point N[,N...]|patch N[,N...]|net N|triangle N|curve N",
-           .help = "Select control points, or whole patches, nets, triangles or curves by number",
-           .bindings = {{"Select All", "all", {"A"}}, {"Select None", "none", {"Alt+A"}}},
+           .usage = "all|none|linked|invert|point N[,N...]|patch N[,N...]|net N|triangle N|curve N",
+           .help = "Select control points, or whole patches, nets, triangles or curves by number; linked: everything connected to the selection; invert",
+           .bindings = {{"Select All", "all", {"A"}}, {"Select None", "none", {"Alt+A"}}, {"Select Linked", "linked", {"L", "Ctrl+L"}},
+                        {"Invert Selection", "invert", {"Ctrl+I"}}},
            .run = select});
     t.add({.name = "move", .label = "Move", .usage = "DX DY DZ",
            .help = "Move the selection by a vector; joins are held",
@@ -124,6 +135,31 @@ void addSelectCommands(CommandTable& t) {
                if (ctx.args.size() == 3) s = Vec3(commandNumber(ctx.args[0], "SX"), commandNumber(ctx.args[1], "SY"), commandNumber(ctx.args[2], "SZ"));
                const Vec3 c = ctx.session.transformPivot();
                transformSelection(ctx, "Scale", [&](const Vec3& p) { return c + s * (p - c); });
+           }});
+    t.add({.name = "hide", .label = "Hide", .menu = "Select", .usage = "[unselected]",
+           .help = "Hide the selected items (or every item the selection does not touch); hidden items are not drawn or picked",
+           .bindings = {{"Hide Selected", "", {"H"}}, {"Hide Unselected", "unselected", {"Shift+H"}}},
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 0, 1);
+               if (ctx.args.size() == 1 && ctx.args[0] != "unselected") throw EditError("expected 'unselected' or nothing, got '" + ctx.args[0] + "'");
+               const bool unselected = ctx.args.size() == 1;
+               const std::vector<uint32_t> pts = ctx.session.selectedPoints();
+               if (pts.empty()) throw EditError("nothing is selected (select what to hide, or what to keep for 'hide unselected')");
+               const Selection sel = ctx.session.sel;
+               ctx.session.apply(unselected ? "Hide unselected" : "Hide", [&](Document& d) {
+                   if (hideItems(d, sel, pts, unselected) == 0) throw EditError("the selection covers no whole item to hide");
+               });
+               if (!unselected) ctx.session.sel.clear();
+           }});
+    t.add({.name = "unhide", .label = "Reveal Hidden", .menu = "Select",
+           .help = "Show every hidden item again and select it",
+           .bindings = {{"", "", {"Alt+H"}}},
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 0, 0);
+               std::vector<uint32_t> revealed;
+               ctx.session.apply("Reveal hidden", [&](Document& d) { revealed = revealItems(d); });
+               ctx.session.sel.clear();
+               ctx.session.sel.points = std::move(revealed);
            }});
     t.add({.name = "pivot", .label = "Pivot", .menu = "Select", .usage = "median|active|cursor",
            .help = "What rotate and scale turn about: the median of the selection, the active point or item, or the 3D cursor",

@@ -42,6 +42,7 @@ struct Patch {
     std::string name;
     // Per-patch tessellation override: four outer and two inner levels.
     std::optional<std::array<float, 6>> tessOverride;
+    bool hidden = false;  // H: not drawn, not picked (saved with the document)
     bool operator==(const Patch&) const = default;
 };
 
@@ -58,6 +59,7 @@ struct TrianglePatch {
     std::string name;
     // Per-patch tessellation override: three outer levels (edges 0, 1, 2) and one inner.
     std::optional<std::array<float, 4>> tessOverride;
+    bool hidden = false;
     bool operator==(const TrianglePatch&) const = default;
 };
 
@@ -66,6 +68,7 @@ struct TrianglePatch {
 struct BezierCurve {
     std::array<uint32_t, 4> idx{};
     std::string name;
+    bool hidden = false;
     bool operator==(const BezierCurve&) const = default;
 };
 
@@ -82,6 +85,7 @@ struct Surface {
     // between its neighbours); otherwise the windows meet C0.
     bool keepC1 = false;
     std::string name;
+    bool hidden = false;
     bool operator==(const Surface&) const = default;
 };
 

@@ -297,6 +297,7 @@ json documentToJson(const Document& doc) {
     for (const Patch& p : doc.patches) {
         json o{{"idx", p.idx}, {"basis", basisName(p.basis)}, {"tension", p.tension}, {"name", p.name}};
         if (p.tessOverride) o["tess"] = floatArray(*p.tessOverride);
+        if (p.hidden) o["hidden"] = true;
         patches.push_back(std::move(o));
     }
     j["patches"] = std::move(patches);
@@ -312,6 +313,7 @@ json documentToJson(const Document& doc) {
                                 {"closedV", s.closedV},
                                 {"keepC1", s.keepC1},
                                 {"name", s.name}});
+        if (s.hidden) surfaces.back()["hidden"] = true;
     }
     j["surfaces"] = std::move(surfaces);
 
@@ -334,13 +336,17 @@ json documentToJson(const Document& doc) {
         for (const TrianglePatch& t : doc.triangles) {
             json o{{"idx", t.idx}, {"name", t.name}};
             if (t.tessOverride) o["tess"] = floatArray(*t.tessOverride);
+            if (t.hidden) o["hidden"] = true;
             triangles.push_back(std::move(o));
         }
         j["triangles"] = std::move(triangles);
     }
     if (!doc.curves.empty()) {
         json curves = json::array();
-        for (const BezierCurve& c : doc.curves) curves.push_back(json{{"idx", c.idx}, {"name", c.name}});
+        for (const BezierCurve& c : doc.curves) {
+            curves.push_back(json{{"idx", c.idx}, {"name", c.name}});
+            if (c.hidden) curves.back()["hidden"] = true;
+        }
         j["curves"] = std::move(curves);
     }
 
@@ -395,6 +401,7 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
         r.optional(o, path, "basis", [&](const json& x, const std::string& p) { patch.basis = r.named<Basis>(x, p, parseBasis, kBases); });
         r.optional(o, path, "tension", [&](const json& x, const std::string& p) { patch.tension = r.numberInRange(x, p, -1e3, 1e3); });
         r.optional(o, path, "name", [&](const json& x, const std::string& p) { patch.name = r.string(x, p); });
+        r.optional(o, path, "hidden", [&](const json& x, const std::string& p) { patch.hidden = r.boolean(x, p); });
         r.optional(o, path, "tess", [&](const json& x, const std::string& p) {
             if (x.is_null()) return;
             std::array<float, 6> levels{};
@@ -421,6 +428,7 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
             r.optional(o, path, "closedU", [&](const json& x, const std::string& p) { s.closedU = r.boolean(x, p); });
             r.optional(o, path, "closedV", [&](const json& x, const std::string& p) { s.closedV = r.boolean(x, p); });
             r.optional(o, path, "name", [&](const json& x, const std::string& p) { s.name = r.string(x, p); });
+            r.optional(o, path, "hidden", [&](const json& x, const std::string& p) { s.hidden = r.boolean(x, p); });
             const size_t n = static_cast<size_t>(s.rows) * s.cols;
             const std::string ip = at(path, "idx");
             const json& idx = r.fixedArray(*r.member(o, path, "idx", true), ip, n);
@@ -468,6 +476,7 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
             const json& idx = r.fixedArray(*r.member(o, path, "idx", true), ip, 10);
             for (size_t k = 0; k < 10; ++k) t.idx[k] = static_cast<uint32_t>(r.index(idx[k], at(ip, k), nPoints, "point index"));
             r.optional(o, path, "name", [&](const json& x, const std::string& p) { t.name = r.string(x, p); });
+            r.optional(o, path, "hidden", [&](const json& x, const std::string& p) { t.hidden = r.boolean(x, p); });
             r.optional(o, path, "tess", [&](const json& x, const std::string& p) {
                 if (x.is_null()) return;
                 std::array<float, 4> levels{};
@@ -489,6 +498,7 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
             const json& idx = r.fixedArray(*r.member(o, path, "idx", true), ip, 4);
             for (size_t k = 0; k < 4; ++k) c.idx[k] = static_cast<uint32_t>(r.index(idx[k], at(ip, k), nPoints, "point index"));
             r.optional(o, path, "name", [&](const json& x, const std::string& p) { c.name = r.string(x, p); });
+            r.optional(o, path, "hidden", [&](const json& x, const std::string& p) { c.hidden = r.boolean(x, p); });
         }
     }
 

@@ -132,7 +132,7 @@ std::optional<SurfaceHit> pickSurface(const Document& doc, const Ray& ray, int l
     GridWeights weights;
     for (size_t w = 0; w < inst.size(); ++w) {
         const PatchInstance& pi = inst[w];
-        if (skipped(pi.idx)) continue;
+        if (skipped(pi.idx) || (pi.patch >= 0 && doc.patches[size_t(pi.patch)].hidden) || (pi.surface >= 0 && doc.surfaces[size_t(pi.surface)].hidden)) continue;
         const Net16 net = gatherNet(doc, pi.idx);
         // Bounding-sphere rejection first (the control net bounds the Bézier/spline window).
         if (!raySphereMayHit(ray, net.begin(), net.end())) continue;
@@ -157,7 +157,7 @@ std::optional<SurfaceHit> pickSurface(const Document& doc, const Ray& ray, int l
     std::vector<TriPoint> tgrid;
     for (size_t k = 0; k < doc.triangles.size(); ++k) {
         const TrianglePatch& tri = doc.triangles[k];
-        if (skipped(tri.idx)) continue;
+        if (skipped(tri.idx) || tri.hidden) continue;
         const Net10 net = gatherTriangleNet(doc, tri.idx);
         if (!raySphereMayHit(ray, net.begin(), net.end())) continue;
         evaluateTriangleGrid(net, tri.idx, level, tgrid);

@@ -51,7 +51,7 @@ struct SurfaceHit {
     double u = 0.0, v = 0.0;  // window parameters, or a triangle's barycentric u, v
 };
 // Nearest hit of the ray with the surface: each window tessellated as a `level` x `level` grid,
-// each Bézier triangle as its barycentric grid at `level`. `skip` (a pool mask): windows and
+// each Bézier triangle as its barycentric grid at `level`; hidden items are not hit. `skip` (a pool mask): windows and
 // triangles with a control point in it are not hit (what a transform moves, when snapping).
 std::optional<SurfaceHit> pickSurface(const Document& doc, const Ray& ray, int level = 12, const std::vector<bool>* skip = nullptr);
 

@@ -10,6 +10,7 @@
 #include "core/enum_names.hpp"
 #include "core/patch_eval.hpp"
 #include "core/picking.hpp"
+#include "core/selection_ops.hpp"
 
 namespace pw {
 
@@ -71,7 +72,7 @@ std::optional<Vec3> snapPoint(const Document& doc, const std::vector<bool>& move
     switch (target) {
         case SnapTarget::Grid: return std::nullopt;
         case SnapTarget::Points: {
-            std::vector<bool> mask = usedPointMask(doc);
+            std::vector<bool> mask = visiblePointMask(doc);
             for (size_t i = 0; i < mask.size() && i < moved.size(); ++i) mask[i] = mask[i] && !moved[i];
             const int p = pickPoint(cam, doc.points, x, y, width, height, radiusPx, &mask);
             if (p < 0) return std::nullopt;
@@ -81,7 +82,9 @@ std::optional<Vec3> snapPoint(const Document& doc, const std::vector<bool>& move
             const ViewMatrices vm = viewMatrices(cam, double(width) / std::max(height, 1));
             EdgeSearch s{vm, width, height, {x, y}, radiusPx * radiusPx, std::nullopt};
             for (const PatchInstance& pi : expandPatches(doc)) {
-                if (touchesMoved(pi.idx, moved)) continue;
+                if (touchesMoved(pi.idx, moved) || (pi.patch >= 0 && doc.patches[size_t(pi.patch)].hidden) ||
+                    (pi.surface >= 0 && doc.surfaces[size_t(pi.surface)].hidden))
+                    continue;
                 const Net16 net = gatherNet(doc, pi.idx);
                 const auto eval = [&](double u, double v) { return evaluateNet(net, pi.basis, pi.tension, u, v).p; };
                 s.curve([&](double t) { return eval(0.0, t); });
@@ -90,7 +93,7 @@ std::optional<Vec3> snapPoint(const Document& doc, const std::vector<bool>& move
                 s.curve([&](double t) { return eval(t, 1.0); });
             }
             for (const TrianglePatch& tri : doc.triangles) {
-                if (touchesMoved(tri.idx, moved)) continue;
+                if (touchesMoved(tri.idx, moved) || tri.hidden) continue;
                 const Net10 net = gatherTriangleNet(doc, tri.idx);
                 s.curve([&](double t) { return evaluateTriangle(net, 0.0, t).p; });        // u = 0
                 s.curve([&](double t) { return evaluateTriangle(net, t, 0.0).p; });        // v = 0

@@ -20,7 +20,7 @@ std::optional<SnapTarget> parseSnapTarget(std::string_view name);
 //   Points:   the nearest used pool point within `radiusPx` of the mouse;
 //   Edges:    the nearest point of a window's or triangle's boundary curve within `radiusPx`;
 //   Surfaces: where the mouse ray first meets a surface.
-// Items with a point in `moved` (a pool mask) are left out, and so are moved points. nullopt:
+// Items with a point in `moved` (a pool mask) are left out, and so are moved points and hidden items. nullopt:
 // nothing there, the move is not snapped.
 std::optional<Vec3> snapPoint(const Document& doc, const std::vector<bool>& moved, SnapTarget target,
                               const Camera& cam, int width, int height, double x, double y, double radiusPx = 12.0);

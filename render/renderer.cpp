@@ -330,7 +330,12 @@ FrameStats Renderer::render(const RenderOptions& opt) {
         gp.drawMode = gpu::kDrawGridPoints;
         gp.color = {0.1f, 0.1f, 0.1f, 1.0f};
         vkCmdPushConstants(cmd, pipes_.layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(gp), &gp);
-        vkCmdDraw(cmd, m.scene.pointCount, 1, 0, 0);
+        if (m.scene.shownPointCount) {  // only the points of shown items (gl_VertexIndex is still the pool index)
+            vkCmdBindIndexBuffer(cmd, m.scene.shownPoints.buffer, 0, VK_INDEX_TYPE_UINT32);
+            vkCmdDrawIndexed(cmd, m.scene.shownPointCount, 1, 0, 0, 0);
+        } else {
+            vkCmdDraw(cmd, m.scene.pointCount, 1, 0, 0);
+        }
         stats.draws += 2;
     }
     target_.endRendering(cmd);

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/edge_levels.hpp"
+#include "core/picking.hpp"
 
 namespace pw::render {
 
@@ -70,6 +71,14 @@ SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc) {
     s.pool = uploadHostWritten(dev, pts, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
     s.indices = uploadStatic(dev, idx, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     s.patchData = uploadStatic(dev, pd, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    const std::vector<bool> used = usedPointMask(doc);
+    std::vector<uint32_t> shown;
+    for (uint32_t p = 0; p < used.size(); ++p)
+        if (used[p]) shown.push_back(p);
+    if (!shown.empty() && shown.size() < doc.points.size()) {
+        s.shownPoints = uploadStatic(dev, shown, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+        s.shownPointCount = uint32_t(shown.size());
+    }
     return s;
 }
 

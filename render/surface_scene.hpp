@@ -38,6 +38,10 @@ struct SurfaceScene {
     // Bézier curves: 4 uint32 pool indices each (isoline domain, render/triangle_draws.hpp).
     Buffer curveIndices;
     uint32_t curveCount = 0;
+    // The control points drawn: when some pool points belong to no item (hidden items, orphans), the
+    // pool indices of those that do; otherwise empty and every point is drawn.
+    Buffer shownPoints;
+    uint32_t shownPointCount = 0;
 };
 
 SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc);

@@ -14,6 +14,7 @@
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
 #include "core/picking.hpp"
+#include "core/selection_ops.hpp"
 #include "render/device.hpp"
 #include "render/renderer.hpp"
 #include "render/swapchain_target.hpp"
@@ -92,8 +93,15 @@ void Editor::documentReplaced() {
 }
 
 void Editor::documentChanged(bool topology) {
-    renderer_->setDocument(doc_);
-    if (topology) usedMask_ = usedPointMask(doc_);
+    // Hidden items are neither drawn nor picked: the renderer gets the shown document (same pool).
+    if (anyHidden(doc_)) {
+        const Document shown = visibleDocument(doc_);
+        renderer_->setDocument(shown);
+        if (topology) usedMask_ = usedPointMask(shown);
+    } else {
+        renderer_->setDocument(doc_);
+        if (topology) usedMask_ = usedPointMask(doc_);
+    }
     clampSelection(sel_, doc_);
     seenVersion_ = session_.version();
     seenTopology_ = session_.topologyVersion();
