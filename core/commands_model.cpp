@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/command_table.hpp"
+#include "core/mirror.hpp"
 #include "core/net_ops.hpp"
 #include "core/patch_ops.hpp"
 #include "core/placement.hpp"
@@ -158,6 +159,23 @@ void addModelCommands(CommandTable& t) {
                    s.sel.clear();
                    s.sel.patch = created;
                }
+           }});
+    t.add({.name = "mirror", .label = "Mirror", .menu = "Edit", .usage = "X|Y|Z",
+           .help = "Copy the selected patches, triangles and curves reflected across the plane through the 3D cursor normal to X, Y or Z, "
+                   "joined where they meet the plane (C1 where the rows there are perpendicular to it)",
+           .bindings = {{"Mirror X", "X", {}}, {"Mirror Y", "Y", {}}, {"Mirror Z", "Z", {}}},
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 1, 1);
+               const std::string& a = ctx.args[0];
+               const int axis = a == "X" || a == "x" ? 0 : a == "Y" || a == "y" ? 1 : a == "Z" || a == "z" ? 2 : -1;
+               if (axis < 0) throw EditError("expected an axis X, Y or Z, got '" + a + "'");
+               EditSession& s = ctx.session;
+               const std::vector<uint32_t> selected = s.selectedPoints();
+               MirrorResult made;
+               s.apply("Mirror " + std::string(1, char('X' + axis)), [&](Document& d) { made = mirrorItems(d, selected, axis, s.cursor[axis]); });
+               s.sel.clear();
+               s.sel.points = made.points;
+               if (made.patches.size() == 1) s.sel.patch = int(made.patches[0]);
            }});
     t.add({.name = "flip", .label = "Flip", .menu = "Patch", .help = "Reverse the selected patch's u direction so its normal points the other way",
            .enabled = hasPatch,
