@@ -1,4 +1,4 @@
-// One mouse move of an editor drag on makePatchGrid(32, 32) (1 024 patches, 9 409 points), through
+// One mouse move of an editor drag (or R rotation) on makePatchGrid(32, 32) (1 024 patches, 9 409 points), through
 // the editor's own DragController (core/drag_controller.hpp): the dragged points follow the mouse
 // on the view plane, the solver (factorised at drag start) holds the joins, and only the points that
 // changed since the last move are written into the mapped float3 pool buffer. Budget: <= 1 ms CPU.
@@ -16,7 +16,7 @@ namespace {
 constexpr int kGrid = 32;
 uint32_t lat(int r, int c) { return static_cast<uint32_t>(r * (3 * kGrid + 1) + c); }
 
-void runDrag(benchmark::State& state, const std::vector<uint32_t>& dragged) {
+void runDrag(benchmark::State& state, const std::vector<uint32_t>& dragged, pw::TransformKind kind = pw::TransformKind::Move) {
     pw::Document doc = pw::makePatchGrid(kGrid, kGrid);
     pw::DragView view;
     view.width = 1280;
@@ -26,7 +26,8 @@ void runDrag(benchmark::State& state, const std::vector<uint32_t>& dragged) {
     sel.points = dragged;
     pw::DragController drag;
     const double x0 = 640, y0 = 360;
-    if (!drag.begin(doc, sel, view, x0, y0, true)) return state.SkipWithError("the drag did not start");
+    const pw::Vec3 pivot = pw::transformPivot(doc, sel, dragged, pw::PivotMode::Median, pw::Vec3(0.0));
+    if (!drag.begin(doc, pw::TransformStart{dragged, pivot, kind, true}, view, x0 + 40.0, y0)) return state.SkipWithError("the drag did not start");
     std::vector<float> gpuPool(3 * doc.points.size());  // stands in for the mapped vertex buffer
     size_t totalChanged = 0;
     int step = 0;
@@ -58,5 +59,17 @@ void BM_EditorDragMove_Grid32_Box16(benchmark::State& state) {
     runDrag(state, sel);
 }
 BENCHMARK(BM_EditorDragMove_Grid32_Box16)->Unit(benchmark::kMicrosecond);
+
+// A whole lattice row (97 points across 32 patches, boundary row of a seam): the case.
+std::vector<uint32_t> wholeRow(int r) {
+    std::vector<uint32_t> sel;
+    for (int c = 0; c <= 3 * kGrid; ++c) sel.push_back(lat(r, c));
+    return sel;
+}
+void BM_EditorDragMove_Grid32_Row(benchmark::State& state) { runDrag(state, wholeRow(48)); }
+BENCHMARK(BM_EditorDragMove_Grid32_Row)->Unit(benchmark::kMicrosecond);
+// The same row rotated (R) about its median.
+void BM_EditorDragRotate_Grid32_Row(benchmark::State& state) { runDrag(state, wholeRow(48), pw::TransformKind::Rotate); }
+BENCHMARK(BM_EditorDragRotate_Grid32_Row)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
