@@ -73,4 +73,9 @@ RunResult runCommand(const std::string& shellCommand) {
     return r;
 }
 
+void runEditScript(EditSession& session, const std::string& script) {
+    NoWritesHost host;
+    makeCommandTable().runScript(session, host, script, "test");
+}
+
 }  // namespace pw::test

@@ -5,7 +5,9 @@
 #include <filesystem>
 #include <string>
 
+#include "core/command_table.hpp"
 #include "core/document.hpp"
+#include "core/edit_session.hpp"
 
 namespace pw::test {
 
@@ -21,5 +23,13 @@ struct RunResult {
     std::string output;  // stdout and stderr together
 };
 RunResult runCommand(const std::string& shellCommand);
+
+// A command host that writes nothing (scripts whose saves are not the point).
+class NoWritesHost final : public CommandHost {
+public:
+    void write(const Document&, const std::string&) override {}
+};
+// Runs `script` (';'-separated commands) on the session through the command table, as `patchwork edit` does.
+void runEditScript(EditSession& session, const std::string& script);
 
 }  // namespace pw::test

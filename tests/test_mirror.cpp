@@ -13,19 +13,13 @@
 #include "core/patch_eval.hpp"
 #include "core/patch_ops.hpp"
 
+#include "support.hpp"
+
 using namespace pw;
 
 namespace {
 
-class NoWrites final : public CommandHost {
-public:
-    void write(const Document&, const std::string&) override {}
-};
-
-void run(EditSession& s, const std::string& script) {
-    NoWrites host;
-    makeCommandTable().runScript(s, host, script, "test");
-}
+void run(EditSession& s, const std::string& script) { test::runEditScript(s, script); }
 
 Vec3 reflect(Vec3 v, int axis) {
     v[axis] = -v[axis];

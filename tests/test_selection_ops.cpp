@@ -14,19 +14,13 @@
 #include "core/picking.hpp"
 #include "core/selection_ops.hpp"
 
+#include "support.hpp"
+
 using namespace pw;
 
 namespace {
 
-class NoWrites final : public CommandHost {
-public:
-    void write(const Document&, const std::string&) override {}
-};
-
-void run(EditSession& s, const std::string& script) {
-    NoWrites host;
-    makeCommandTable().runScript(s, host, script, "test");
-}
+void run(EditSession& s, const std::string& script) { test::runEditScript(s, script); }
 
 // A C1-joined 2x2 grid (points 0..48) and a separate flat patch beside it (patch 4).
 EditSession gridAndPatch() {

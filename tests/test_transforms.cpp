@@ -19,6 +19,8 @@
 #include "core/patch_ops.hpp"
 #include "core/picking.hpp"
 
+#include "support.hpp"
+
 using namespace pw;
 
 namespace {
@@ -57,15 +59,7 @@ Vec3 rotatedAbout(const Vec3& p, const Vec3& c, const Vec3& axis, double deg) {
     return c + Vec3(glm::rotate(glm::dmat4(1.0), glm::radians(deg), axis) * glm::dvec4(p - c, 0.0));
 }
 
-class NoWrites final : public CommandHost {
-public:
-    void write(const Document&, const std::string&) override {}
-};
-
-void run(EditSession& s, const std::string& script) {
-    NoWrites host;
-    makeCommandTable().runScript(s, host, script, "test");
-}
+void run(EditSession& s, const std::string& script) { test::runEditScript(s, script); }
 
 }  // namespace
 
