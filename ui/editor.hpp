@@ -123,6 +123,7 @@ private:
     // false, the button held; `axis` 0..2 for an arrow), or G / R / S (`grab` true).
     void beginDrag(bool grab, TransformKind kind = TransformKind::Move, int axis = -1);
     void transformKeys(double mx, double my);  // during a transform: axes, planes, typed values
+    void placeCursor(double mx, double my);    // Shift+right click: the 3D cursor on a point or surface
     // The move gizmo at the pivot, in pane pixels: the centre, then the X, Y and Z arrow tips
     // (nullopt when there is nothing to transform or the pivot is behind the camera).
     std::optional<std::array<glm::dvec2, 4>> gizmoHandles(int width, int height) const;

@@ -3,17 +3,19 @@
 // transforms (a left drag on a selected point or a gizmo handle; G / R / S) through
 // core/drag_controller.hpp: X/Y/Z constrain to an axis, Shift+X/Y/Z to a plane, digits type a value,
 // Ctrl snaps, Esc or right click cancels. Mouse positions are relative to the pane the mouse works
-// in (ui/view_panes.cpp).
+// in (ui/view_panes.cpp). Shift+right click places the 3D cursor.
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include "core/camera_math.hpp"
 #include "core/patch_ops.hpp"
 #include "core/picking.hpp"
+#include "core/snapping.hpp"
 #include "render/renderer.hpp"
 #include "ui/app_window.hpp"
 #include "ui/editor.hpp"
@@ -112,6 +114,10 @@ void Editor::viewportInput() {
     // Step 4: selection and point drags.
     switch (mode_) {
         case Interaction::None:
+            if (!overUi && mouseValid && io.KeyShift && ImGui::IsMouseClicked(ImGuiMouseButton_Right)) {
+                placeCursor(mx, my);
+                break;
+            }
             if (!overUi && mouseValid && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
                 const auto press = window_.leftPress();
                 pressX_ = press ? (*press)[0] - viewArea_[0] : mx;
@@ -196,6 +202,25 @@ void Editor::beginDrag(bool grab, TransformKind kind, int axis) {
     if (!drag_.begin(doc_, start, dragView(), pressX_, pressY_)) return;
     mode_ = grab ? Interaction::Grab : Interaction::DragPoints;
     if (axis >= 0) drag_.setAxis(axis);
+}
+
+void Editor::placeCursor(double mx, double my) {
+    // Shift+right click (Blender): on the control point under the mouse, else where the mouse ray
+    // meets a surface, else in the plane through the cursor facing the view. It runs the `cursor`
+    // command, so the status line and scripts agree.
+    const auto [W, H] = viewSize();
+    const std::vector<bool> none;
+    std::optional<Vec3> at = snapPoint(doc_, none, SnapTarget::Points, cam_, W, H, mx, my, kPickRadiusPx);
+    if (!at) at = snapPoint(doc_, none, SnapTarget::Surfaces, cam_, W, H, mx, my);
+    if (!at) {
+        Vec3 r, u, f;
+        cameraAxes(cam_, r, u, f);
+        at = intersectPlane(rayThroughPixel(cam_, mx, my, W, H), session_.cursor, f);
+    }
+    if (!at) return;
+    char x[32], y[32], z[32];
+    std::snprintf(x, sizeof x, "%.17g", at->x), std::snprintf(y, sizeof y, "%.17g", at->y), std::snprintf(z, sizeof z, "%.17g", at->z);
+    runCommand({"cursor", x, y, z});
 }
 
 void Editor::transformKeys(double mx, double my) {

@@ -1,6 +1,6 @@
 // The viewport's overlays, drawn with ImGui's background draw list in every pane: the selected
 // patch's or triangle's boundary, selected and hovered points, the axis lines of a constrained
-// transform, the move gizmo at the pivot (and its hit test), the box of a box selection, the axis
+// transform, the move gizmo at the pivot (and its hit test), the 3D cursor, the box of a box selection, the axis
 // gizmo; and the mode line of a transform. (The ground grid is
 // drawn by the renderer, depth-tested.)
 #include <imgui.h>
@@ -184,6 +184,17 @@ void Editor::drawPaneOverlays(const std::array<float, 4>& pane, bool active) {
                 dl->AddLine(c, io.MousePos, IM_COL32(255, 230, 120, 160), 1.0f);
             }
         }
+
+    // The 3D cursor: where new items appear, the mirror plane's point and a pivot.
+    if (const auto c = proj(session_.cursor)) {
+        const ImVec2 p(float(c->x), float(c->y));
+        dl->AddCircle(p, 9.0f, IM_COL32(230, 60, 60, 230), 24, 2.0f);
+        dl->AddCircle(p, 9.0f, IM_COL32(255, 255, 255, 200), 12, 1.0f);
+        dl->AddLine(ImVec2(p.x - 14.0f, p.y), ImVec2(p.x - 5.0f, p.y), IM_COL32(20, 20, 20, 230), 1.5f);
+        dl->AddLine(ImVec2(p.x + 5.0f, p.y), ImVec2(p.x + 14.0f, p.y), IM_COL32(20, 20, 20, 230), 1.5f);
+        dl->AddLine(ImVec2(p.x, p.y - 14.0f), ImVec2(p.x, p.y - 5.0f), IM_COL32(20, 20, 20, 230), 1.5f);
+        dl->AddLine(ImVec2(p.x, p.y + 5.0f), ImVec2(p.x, p.y + 14.0f), IM_COL32(20, 20, 20, 230), 1.5f);
+    }
 
     // Box selection rectangle.
     if (mode_ == Interaction::BoxSelect && active) {
