@@ -86,6 +86,10 @@ std::vector<PatchInstance> expandPatches(const Document& doc) {
     return out;
 }
 
+bool windowHidden(const Document& doc, const PatchInstance& w) {
+    return (w.patch >= 0 && doc.patches[size_t(w.patch)].hidden) || (w.surface >= 0 && doc.surfaces[size_t(w.surface)].hidden);
+}
+
 Net16 gatherNet(const Document& doc, const std::array<uint32_t, 16>& idx) {
     Net16 net;
     for (int k = 0; k < 16; ++k) net[k] = doc.points[idx[k]];

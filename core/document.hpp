@@ -190,6 +190,8 @@ struct PatchInstance {
 
 // Every patch followed by every window of every surface, in a stable order.
 std::vector<PatchInstance> expandPatches(const Document& doc);
+// True when the window's patch or net is hidden (H).
+bool windowHidden(const Document& doc, const PatchInstance& w);
 
 // Window step along a net: 3 for Bézier (windows share their boundary rows), 1 for splines.
 inline uint32_t netStep(Basis b) { return b == Basis::Bezier ? 3u : 1u; }

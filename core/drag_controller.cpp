@@ -35,6 +35,11 @@ double wrapAngle(double a) {
 
 const char* kindName(TransformKind k) { return k == TransformKind::Move ? "Move" : k == TransformKind::Rotate ? "Rotate" : "Scale"; }
 
+// Where `p` shows in the view's pixels (nullopt behind the eye).
+std::optional<glm::dvec2> pixelOf(const DragView& view, const Vec3& p) {
+    return projectToPixel(viewMatrices(view.camera, double(view.width) / std::max(view.height, 1)), p, view.width, view.height);
+}
+
 }  // namespace
 
 bool DragController::begin(const Document& doc, const Selection& sel, const DragView& view, double x, double y, bool grab) {
@@ -42,10 +47,9 @@ bool DragController::begin(const Document& doc, const Selection& sel, const Drag
 }
 
 bool DragController::begin(const Document& doc, const TransformStart& start, const DragView& view, double x, double y) {
-    const SnapTarget snap = snapTarget_;
     *this = DragController{};
-    snapTarget_ = snap;
     if (start.points.empty()) return false;
+    snapTarget_ = start.snap;
     kind_ = start.kind;
     grab_ = start.grab;
     start_ = doc.points;
@@ -63,7 +67,7 @@ bool DragController::begin(const Document& doc, const TransformStart& start, con
     startY_ = y;
     const Ray ray = rayThroughPixel(view.camera, x, y, view.width, view.height);
     startHit_ = intersectPlane(ray, anchor_, f).value_or(anchor_);
-    const auto c = projectToPixel(viewMatrices(view.camera, double(view.width) / std::max(view.height, 1)), anchor_, view.width, view.height);
+    const auto c = pixelOf(view, anchor_);
     prevMouseAngle_ = c ? std::atan2(y - c->y, x - c->x) : 0.0;
     return true;
 }
@@ -133,19 +137,15 @@ std::optional<Vec3> DragController::moveOffset(const Document& doc, const DragVi
         // Along the axis under the mouse, exactly, while the axis shows on screen; an axis nearly
         // along the view moves at most kMaxAxisRate times as fast as a move in the view plane.
         const Vec3 a = axisVector(axis_);
-        const ViewMatrices vm = viewMatrices(view.camera, double(view.width) / std::max(view.height, 1));
-        Vec3 right, up, fwd;
-        cameraAxes(view.camera, right, up, fwd);
-        const double len = std::max(view.camera.distance, 1e-9) * 1e-3;
-        const auto p0 = projectToPixel(vm, anchor_, view.width, view.height);
-        const auto pa = projectToPixel(vm, anchor_ + a * len, view.width, view.height);
-        const auto pr = projectToPixel(vm, anchor_ + right * len, view.width, view.height);
-        if (!p0 || !pa || !pr) return std::nullopt;
-        const glm::dvec2 s = (*pa - *p0) / len;          // pixels per unit along the axis
-        const double perUnit = glm::length(*pr - *p0) / len;  // pixels per unit across the view
+        const auto screen = axisOnScreen(view.camera, view.width, view.height, anchor_, a);
+        if (!screen) return std::nullopt;
+        const glm::dvec2 s = screen->alongPx;
+        const double perUnit = screen->acrossPx;
         if (glm::length(s) >= perUnit / kMaxAxisRate) {
             delta = closestPointOnAxis(ray, anchor_, a) - closestPointOnAxis(r0, anchor_, a);
         } else {
+            Vec3 right, up, fwd;
+            cameraAxes(view.camera, right, up, fwd);
             glm::dvec2 dir = glm::length(s) > 1e-9 * perUnit ? s / glm::length(s)
                                                              : glm::dvec2(0.0, glm::dot(a, fwd) < 0.0 ? -1.0 : 1.0);
             delta = a * (glm::dot(glm::dvec2(x - startX_, y - startY_), dir) * kMaxAxisRate / std::max(perUnit, 1e-300));
@@ -168,8 +168,7 @@ bool DragController::update(Document& doc, const DragView& view, double x, doubl
         lastOffset_ = *d;
         f = [d = *d](const Vec3& p) { return p + d; };
     } else {
-        const ViewMatrices vm = viewMatrices(view.camera, double(view.width) / std::max(view.height, 1));
-        const glm::dvec2 c = projectToPixel(vm, anchor_, view.width, view.height).value_or(glm::dvec2(view.width, view.height) * 0.5);
+        const glm::dvec2 c = pixelOf(view, anchor_).value_or(glm::dvec2(view.width, view.height) * 0.5);
         const auto v = typedValue();
         if (kind_ == TransformKind::Rotate) {
             Vec3 right, up, fwd;
@@ -208,24 +207,17 @@ bool DragController::update(Document& doc, const DragView& view, double x, doubl
 }
 
 std::string DragController::status() const {
+    static const char* const kAxis[3] = {"X", "Y", "Z"};
+    static const char* const kPlane[3] = {"YZ", "ZX", "XY"};
+    char where[32] = "";
+    if (axis_ < 0) std::snprintf(where, sizeof where, "%s", kind_ == TransformKind::Move ? " in the view plane" : kind_ == TransformKind::Rotate ? " about the view axis" : "");
+    else if (plane_) std::snprintf(where, sizeof where, " in the %s plane", kPlane[axis_]);
+    else std::snprintf(where, sizeof where, " %s %s", kind_ == TransformKind::Rotate ? "about" : "along", kAxis[axis_]);
     char buf[200];
-    const char* where = axis_ < 0 ? (kind_ == TransformKind::Move ? " in the view plane" : kind_ == TransformKind::Rotate ? " about the view axis" : "")
-                        : plane_ ? (axis_ == 0 ? " in the YZ plane" : axis_ == 1 ? " in the ZX plane" : " in the XY plane")
-                        : kind_ == TransformKind::Move ? (axis_ == 0 ? " along X" : axis_ == 1 ? " along Y" : " along Z")
-                        : kind_ == TransformKind::Rotate ? (axis_ == 0 ? " about X" : axis_ == 1 ? " about Y" : " about Z")
-                                                         : (axis_ == 0 ? " along X" : axis_ == 1 ? " along Y" : " along Z");
-    std::string value;
-    if (kind_ == TransformKind::Move) {
-        std::snprintf(buf, sizeof buf, "%.4g, %.4g, %.4g", lastOffset_.x, lastOffset_.y, lastOffset_.z);
-        value = buf;
-    } else if (kind_ == TransformKind::Rotate) {
-        std::snprintf(buf, sizeof buf, "%.4g°", lastAngle_);
-        value = buf;
-    } else {
-        const double k = axis_ >= 0 && !plane_ ? lastScale_[axis_] : plane_ ? lastScale_[(axis_ + 1) % 3] : lastScale_.x;
-        std::snprintf(buf, sizeof buf, "×%.4g", k);
-        value = buf;
-    }
+    if (kind_ == TransformKind::Move) std::snprintf(buf, sizeof buf, "%.4g, %.4g, %.4g", lastOffset_.x, lastOffset_.y, lastOffset_.z);
+    else if (kind_ == TransformKind::Rotate) std::snprintf(buf, sizeof buf, "%.4g°", lastAngle_);
+    else std::snprintf(buf, sizeof buf, "×%.4g", lastScale_[axis_ < 0 ? 0 : plane_ ? (axis_ + 1) % 3 : axis_]);
+    const std::string value = buf;
     std::snprintf(buf, sizeof buf, "%s %zu point%s%s: %s", kindName(kind_), moved_.size(), moved_.size() == 1 ? "" : "s", where, value.c_str());
     std::string out = buf;
     if (!typed_.empty()) out += "  [typed " + typed_ + "]";
@@ -235,17 +227,13 @@ std::string DragController::status() const {
 void DragController::finish(EditSession& session) {
     const size_t n = moved_.size();
     const std::string kind = kindName(kind_);
-    const SnapTarget snap = snapTarget_;
     *this = DragController{};
-    snapTarget_ = snap;
     if (session.doc.points != session.committed().points) session.commit(n == 1 ? kind + " point" : kind + " " + std::to_string(n) + " points");
 }
 
 void DragController::cancel(Document& doc) {
     if (!start_.empty()) doc.points = start_;
-    const SnapTarget snap = snapTarget_;
     *this = DragController{};
-    snapTarget_ = snap;
 }
 
 std::string HeldPointEdit::set(EditSession& session, uint32_t point, const Vec3& position) {

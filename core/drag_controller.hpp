@@ -36,6 +36,7 @@ struct TransformStart {
     Vec3 pivot{0.0};               // rotate / scale about this point; moves keep it as the anchor
     TransformKind kind = TransformKind::Move;
     bool grab = false;             // started by a key (G/R/S, no button held): click or Enter confirms
+    SnapTarget snap = SnapTarget::Grid;  // what Ctrl snaps a move to
 };
 
 class DragController {
@@ -65,7 +66,6 @@ public:
     void backspace();
 
     SnapTarget snapTarget() const { return snapTarget_; }
-    void setSnapTarget(SnapTarget t) { snapTarget_ = t; }
 
     // Moves the points for the mouse at (x, y): the moved points by the transform, every other
     // point by the solver. `snap` (Ctrl): moves land on the snap target (the grid of a fifth of

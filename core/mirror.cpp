@@ -46,14 +46,12 @@ MirrorResult mirrorItems(Document& doc, const std::vector<uint32_t>& selected, i
     };
     MirrorResult r;
     const uint32_t firstPatch = uint32_t(doc.patches.size());
-    std::map<uint32_t, uint32_t> newPatch;
     for (uint32_t i : patches) {
         Patch m = doc.patches[i];
         // Reflection turns the surface inside out; reversing u turns it back.
         for (int row = 0; row < 4; ++row)
             for (int col = 0; col < 4; ++col) m.idx[size_t(row * 4 + col)] = mirrored(doc.patches[i].idx[size_t(row * 4 + 3 - col)]);
         m.name = (m.name.empty() ? "patch " + std::to_string(i) : m.name) + " mirror";
-        newPatch[i] = uint32_t(doc.patches.size());
         r.patches.push_back(uint32_t(doc.patches.size()));
         doc.patches.push_back(std::move(m));
     }

@@ -9,6 +9,7 @@
 
 #include "core/bezier_triangle.hpp"
 #include "core/patch_eval.hpp"
+#include "core/selection.hpp"
 
 namespace pw {
 
@@ -119,12 +120,7 @@ bool raySphereMayHit(const Ray& ray, It first, It last) {
 }  // namespace
 
 std::optional<SurfaceHit> pickSurface(const Document& doc, const Ray& ray, int level, const std::vector<bool>* skip) {
-    const auto skipped = [&](const auto& idx) {
-        if (!skip) return false;
-        for (uint32_t p : idx)
-            if (p < skip->size() && (*skip)[p]) return true;
-        return false;
-    };
+    const auto skipped = [&](const auto& idx) { return skip && usesAnyPoint(idx, *skip); };
     level = std::clamp(level, 1, 64);
     const std::vector<PatchInstance> inst = expandPatches(doc);
     std::optional<SurfaceHit> best;
@@ -132,7 +128,7 @@ std::optional<SurfaceHit> pickSurface(const Document& doc, const Ray& ray, int l
     GridWeights weights;
     for (size_t w = 0; w < inst.size(); ++w) {
         const PatchInstance& pi = inst[w];
-        if (skipped(pi.idx) || (pi.patch >= 0 && doc.patches[size_t(pi.patch)].hidden) || (pi.surface >= 0 && doc.surfaces[size_t(pi.surface)].hidden)) continue;
+        if (skipped(pi.idx) || windowHidden(doc, pi)) continue;
         const Net16 net = gatherNet(doc, pi.idx);
         // Bounding-sphere rejection first (the control net bounds the Bézier/spline window).
         if (!raySphereMayHit(ray, net.begin(), net.end())) continue;
@@ -180,6 +176,18 @@ std::optional<glm::dvec3> intersectPlane(const Ray& ray, const glm::dvec3& point
     const double t = glm::dot(point - ray.origin, normal) / denom;
     if (t < 0.0) return std::nullopt;
     return ray.origin + ray.dir * t;
+}
+
+std::optional<AxisOnScreen> axisOnScreen(const Camera& cam, int width, int height, const glm::dvec3& at, const glm::dvec3& axis) {
+    const ViewMatrices vm = viewMatrices(cam, double(width) / std::max(height, 1));
+    glm::dvec3 right, up, fwd;
+    cameraAxes(cam, right, up, fwd);
+    const double len = std::max(cam.distance, 1e-9) * 1e-3;  // short enough to stay in front of the eye
+    const auto p0 = projectToPixel(vm, at, width, height);
+    const auto pa = projectToPixel(vm, at + axis * len, width, height);
+    const auto pr = projectToPixel(vm, at + right * len, width, height);
+    if (!p0 || !pa || !pr) return std::nullopt;
+    return AxisOnScreen{(*pa - *p0) / len, glm::length(*pr - *p0) / len};
 }
 
 glm::dvec3 closestPointOnAxis(const Ray& ray, const glm::dvec3& origin, const glm::dvec3& axis) {

@@ -58,6 +58,23 @@ std::optional<SurfaceHit> pickSurface(const Document& doc, const Ray& ray, int l
 // Where the ray meets the plane through `point` with normal `normal` (nullopt when parallel or behind).
 std::optional<glm::dvec3> intersectPlane(const Ray& ray, const glm::dvec3& point, const glm::dvec3& normal);
 
+// How a direction through `at` shows on screen: pixels per world unit along it (a 2-D vector, y
+// down) and pixels per world unit across the view there. The axis drag's rate bound and the move
+// gizmo's arrows both use it. nullopt when `at` is behind the camera.
+struct AxisOnScreen {
+    glm::dvec2 alongPx{0.0};
+    double acrossPx = 0.0;
+};
+std::optional<AxisOnScreen> axisOnScreen(const Camera& cam, int width, int height, const glm::dvec3& at, const glm::dvec3& axis);
+
+// True when any of the pool indices `idx` is set in `mask` (indices past its end count as unset).
+template <class Idx>
+bool usesAnyPoint(const Idx& idx, const std::vector<bool>& mask) {
+    for (uint32_t p : idx)
+        if (p < mask.size() && mask[p]) return true;
+    return false;
+}
+
 // Point on the line (origin, axis) closest to the ray.
 glm::dvec3 closestPointOnAxis(const Ray& ray, const glm::dvec3& origin, const glm::dvec3& axis);
 

@@ -47,13 +47,6 @@ void clampSelection(Selection& sel, const Document& doc) {
 
 namespace {
 constexpr std::array<std::string_view, 3> kPivotNames{"median", "active", "cursor"};
-
-template <class Idx>
-Vec3 centre(const Document& doc, const Idx& idx) {
-    Vec3 c(0.0);
-    for (uint32_t p : idx) c += doc.points[p];
-    return c / double(idx.size());
-}
 }  // namespace
 
 std::string_view pivotName(PivotMode m) { return enumName(m, kPivotNames); }
@@ -63,20 +56,15 @@ Vec3 transformPivot(const Document& doc, const Selection& sel, const std::vector
     if (mode == PivotMode::Cursor) return cursor;
     if (mode == PivotMode::Active) {
         if (sel.active >= 0 && size_t(sel.active) < doc.points.size() && sel.contains(uint32_t(sel.active))) return doc.points[size_t(sel.active)];
-        if (sel.patch >= 0 && size_t(sel.patch) < doc.patches.size()) return centre(doc, doc.patches[size_t(sel.patch)].idx);
-        if (sel.surface >= 0 && size_t(sel.surface) < doc.surfaces.size()) return centre(doc, doc.surfaces[size_t(sel.surface)].idx);
-        if (sel.triangle >= 0 && size_t(sel.triangle) < doc.triangles.size()) return centre(doc, doc.triangles[size_t(sel.triangle)].idx);
-        if (sel.curve >= 0 && size_t(sel.curve) < doc.curves.size()) return centre(doc, doc.curves[size_t(sel.curve)].idx);
+        Selection item = sel;  // the selected patch, net, triangle or curve: its centre
+        item.points.clear();
+        if (!item.empty()) return selectionCentroid(doc, item);
     }
-    Vec3 c(0.0);
-    size_t n = 0;
-    for (uint32_t p : moved)
-        if (p < doc.points.size()) c += doc.points[p], ++n;
-    return n ? c / double(n) : c;
+    return selectionCentroid(doc, Selection{.points = moved});
 }
 
 namespace {
-// The selected points, else the points of the selected patch, net or triangle.
+// The selected points, else the points of the selected patch, net, triangle or curve.
 std::vector<Vec3> selectedPositions(const Document& doc, const Selection& sel) {
     std::vector<Vec3> pts;
     auto add = [&](uint32_t p) {
@@ -89,6 +77,8 @@ std::vector<Vec3> selectedPositions(const Document& doc, const Selection& sel) {
         for (uint32_t p : doc.surfaces[size_t(sel.surface)].idx) add(p);
     if (pts.empty() && sel.triangle >= 0 && sel.triangle < int(doc.triangles.size()))
         for (uint32_t p : doc.triangles[size_t(sel.triangle)].idx) add(p);
+    if (pts.empty() && sel.curve >= 0 && sel.curve < int(doc.curves.size()))
+        for (uint32_t p : doc.curves[size_t(sel.curve)].idx) add(p);
     return pts;
 }
 }  // namespace

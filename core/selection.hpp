@@ -33,7 +33,7 @@ void applyBox(Selection& sel, const std::vector<uint32_t>& boxed, bool shift);
 // Drops indices that no longer exist (after an edit shrank the pool or the patch list).
 void clampSelection(Selection& sel, const Document& doc);
 
-// Mean of the selected points (or of the selected patch's, net's or triangle's points); the origin when empty.
+// Mean of the selected points (or of the selected patch's, net's, triangle's or curve's points); the origin when empty.
 Vec3 selectionCentroid(const Document& doc, const Selection& sel);
 // What rotations and scales turn about (Blender's pivot point): the median of the moved points,
 // the active element (the last clicked point, else the selected patch's, net's, triangle's or
@@ -43,7 +43,7 @@ std::string_view pivotName(PivotMode m);  // "median", "active", "cursor"
 std::optional<PivotMode> parsePivot(std::string_view name);
 Vec3 transformPivot(const Document& doc, const Selection& sel, const std::vector<uint32_t>& moved, PivotMode mode, const Vec3& cursor);
 
-// Bounds of what F frames: the selected points, else the selected patch, net or triangle, else the whole model.
+// Bounds of what F frames: the selected points, else the selected patch, net, triangle or curve, else the whole model.
 Bounds frameTargetBounds(const Document& doc, const Selection& sel);
 
 // --- Camera navigation (pixel deltas, y down) ---

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <numeric>
 
-#include "core/picking.hpp"
 
 namespace pw {
 
@@ -57,7 +56,16 @@ Document visibleDocument(const Document& doc) {
     return out;
 }
 
-std::vector<bool> visiblePointMask(const Document& doc) { return usedPointMask(anyHidden(doc) ? visibleDocument(doc) : doc); }
+std::vector<bool> visiblePointMask(const Document& doc) {
+    std::vector<bool> shown(doc.points.size(), false);
+    forEachList(doc, [&](const auto& items, int) {
+        for (const auto& it : items)
+            if (!it.hidden)
+                for (uint32_t p : it.idx)
+                    if (p < shown.size()) shown[p] = true;
+    });
+    return shown;
+}
 
 std::vector<uint32_t> linkedPoints(const Document& doc, const std::vector<uint32_t>& selected) {
     // Union-find over pool points: every shown item ties its points together.

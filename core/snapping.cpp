@@ -18,13 +18,6 @@ namespace {
 
 constexpr std::array<std::string_view, 4> kSnapNames{"grid", "points", "edges", "surfaces"};
 
-template <class Idx>
-bool touchesMoved(const Idx& idx, const std::vector<bool>& moved) {
-    for (uint32_t p : idx)
-        if (p < moved.size() && moved[p]) return true;
-    return false;
-}
-
 // The nearest point, in pixels, of boundary curves given as parameter → point functions.
 struct EdgeSearch {
     const ViewMatrices& vm;
@@ -82,9 +75,7 @@ std::optional<Vec3> snapPoint(const Document& doc, const std::vector<bool>& move
             const ViewMatrices vm = viewMatrices(cam, double(width) / std::max(height, 1));
             EdgeSearch s{vm, width, height, {x, y}, radiusPx * radiusPx, std::nullopt};
             for (const PatchInstance& pi : expandPatches(doc)) {
-                if (touchesMoved(pi.idx, moved) || (pi.patch >= 0 && doc.patches[size_t(pi.patch)].hidden) ||
-                    (pi.surface >= 0 && doc.surfaces[size_t(pi.surface)].hidden))
-                    continue;
+                if (usesAnyPoint(pi.idx, moved) || windowHidden(doc, pi)) continue;
                 const Net16 net = gatherNet(doc, pi.idx);
                 const auto eval = [&](double u, double v) { return evaluateNet(net, pi.basis, pi.tension, u, v).p; };
                 s.curve([&](double t) { return eval(0.0, t); });
@@ -93,7 +84,7 @@ std::optional<Vec3> snapPoint(const Document& doc, const std::vector<bool>& move
                 s.curve([&](double t) { return eval(t, 1.0); });
             }
             for (const TrianglePatch& tri : doc.triangles) {
-                if (touchesMoved(tri.idx, moved) || tri.hidden) continue;
+                if (usesAnyPoint(tri.idx, moved) || tri.hidden) continue;
                 const Net10 net = gatherTriangleNet(doc, tri.idx);
                 s.curve([&](double t) { return evaluateTriangle(net, 0.0, t).p; });        // u = 0
                 s.curve([&](double t) { return evaluateTriangle(net, t, 0.0).p; });        // v = 0

@@ -275,7 +275,7 @@ TEST(Transforms, SnapsToPointsEdgesAndSurfacesOfOtherItems) {
     const std::vector<Vec3> before = s.doc.points;
 
     DragController d;
-    d.setSnapTarget(SnapTarget::Points);
+    start.snap = SnapTarget::Points;
     ASSERT_TRUE(d.begin(s.doc, start, view, from.x, from.y));
     ASSERT_TRUE(d.update(s.doc, view, to.x + 5.0, to.y - 4.0, true));  // near, not on it
     EXPECT_EQ(s.doc.points[grabbed], target);
@@ -290,7 +290,7 @@ TEST(Transforms, SnapsToPointsEdgesAndSurfacesOfOtherItems) {
     d.cancel(s.doc);
 
     // Edges: the mouse near the middle of patch 1's v = 0 edge lands on that curve.
-    d.setSnapTarget(SnapTarget::Edges);
+    start.snap = SnapTarget::Edges;
     ASSERT_TRUE(d.begin(s.doc, start, view, from.x, from.y));
     const glm::dvec2 edgeMid = pixel(view, Vec3(3.3, -1.0, 0.5));
     ASSERT_TRUE(d.update(s.doc, view, edgeMid.x, edgeMid.y + 6.0, true));
@@ -300,7 +300,7 @@ TEST(Transforms, SnapsToPointsEdgesAndSurfacesOfOtherItems) {
     d.cancel(s.doc);
 
     // Surfaces: where the ray meets patch 1 (z = 0.5), not the moved patch 0 under the mouse.
-    d.setSnapTarget(SnapTarget::Surfaces);
+    start.snap = SnapTarget::Surfaces;
     ASSERT_TRUE(d.begin(s.doc, start, view, from.x, from.y));
     const glm::dvec2 onSurface = pixel(view, Vec3(2.6, 0.3, 0.5));
     ASSERT_TRUE(d.update(s.doc, view, onSurface.x, onSurface.y, true));

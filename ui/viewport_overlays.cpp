@@ -13,6 +13,7 @@
 #include "core/bezier_triangle.hpp"
 #include "core/camera_math.hpp"
 #include "core/patch_eval.hpp"
+#include "core/picking.hpp"
 #include "ui/editor.hpp"
 
 namespace pw::ui {
@@ -32,20 +33,15 @@ double segmentDistance(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec
 std::optional<std::array<glm::dvec2, 4>> Editor::gizmoHandles(int width, int height) const {
     if (session_.selectedPoints().empty()) return std::nullopt;
     const Vec3 pivot = mode_ == Interaction::None ? session_.transformPivot() : drag_.anchor();
-    const ViewMatrices vm = viewMatrices(cam_, double(width) / std::max(height, 1));
-    Vec3 right, up, fwd;
-    cameraAxes(cam_, right, up, fwd);
-    const double len = std::max(cam_.distance, 1e-9) * 1e-3;
-    const auto p0 = projectToPixel(vm, pivot, width, height), pr = projectToPixel(vm, pivot + right * len, width, height);
-    if (!p0 || !pr) return std::nullopt;
-    const double perUnit = glm::length(*pr - *p0) / len;
+    const auto p0 = projectToPixel(viewMatrices(cam_, double(width) / std::max(height, 1)), pivot, width, height);
+    if (!p0) return std::nullopt;
     std::array<glm::dvec2, 4> out{*p0, *p0, *p0, *p0};
     for (int a = 0; a < 3; ++a) {
         Vec3 axis(0.0);
         axis[a] = 1.0;
         // An arrow as long as the axis shows: full length across the view, short along it.
-        if (const auto pa = projectToPixel(vm, pivot + axis * len, width, height); pa && perUnit > 0.0)
-            out[size_t(a + 1)] = *p0 + (*pa - *p0) / len / perUnit * double(kGizmoLengthPx * window_.uiScale());
+        if (const auto s = axisOnScreen(cam_, width, height, pivot, axis); s && s->acrossPx > 0.0)
+            out[size_t(a + 1)] = *p0 + s->alongPx / s->acrossPx * double(kGizmoLengthPx * window_.uiScale());
     }
     return out;
 }
