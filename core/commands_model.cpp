@@ -200,7 +200,8 @@ void addModelCommands(CommandTable& t) {
                ctx.session.apply("Split patch", [&](Document& d) { splitPatch(d, p, dir == "u", t); });
            }});
     t.add({.name = "join", .label = "Join", .menu = "Patch", .usage = "A:EDGE B:EDGE C0|C1|G1",
-           .help = "Join an edge of patch A to an edge of patch B (edges u0 v0 u1 v1) with C0, C1 or G1 continuity",
+           .help = "Join an edge of patch A to an edge of patch B (edges u0 v0 u1 v1) with C0, C1 or G1 continuity; B is turned to "
+                   "lie beyond the seam with agreeing normals, and when the edges do not meet A stays and B's boundary and tangent rows move onto it (Match)",
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 3, 3);
                const Document& doc = ctx.session.doc;

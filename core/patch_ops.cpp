@@ -218,44 +218,144 @@ std::pair<uint32_t, uint32_t> splitPatch(Document& doc, uint32_t p, bool alongU,
     return {p, q};
 }
 
-size_t joinEdges(Document& doc, uint32_t a, Edge ea, uint32_t b, Edge eb, Continuity continuity) {
+namespace {
+
+// +1 when walking edge e with k increasing runs counter-clockwise around the (u, v) square (the
+// boundary loop of the normal du × dv), -1 when it runs clockwise.
+int loopSign(Edge e) { return e == Edge::V0 || e == Edge::U1 ? 1 : -1; }
+
+// The nearer way to pair the end points of a's edge ea with b's edge eb (true: k with 3 - k).
+bool pairsReversed(const Document& doc, const Patch& A, Edge ea, const Patch& B, Edge eb) {
+    auto pa = [&](int k) { return doc.points[A.idx[size_t(edgeSlot(ea, k, 0))]]; };
+    auto pb = [&](int k) { return doc.points[B.idx[size_t(edgeSlot(eb, k, 0))]]; };
+    const double straight = glm::length(pa(0) - pb(0)) + glm::length(pa(3) - pb(3));
+    const double crossed = glm::length(pa(0) - pb(3)) + glm::length(pa(3) - pb(0));
+    return crossed < straight;
+}
+
+// True when patch b uses no point that another patch, net, triangle or curve uses, apart from
+// those of edge eb, and has no join: it can be turned over without disturbing anything else.
+bool patchIsFree(const Document& doc, uint32_t b, Edge eb) {
+    for (const Join& j : doc.joins)
+        if (j.patchA == b || j.patchB == b) return false;
+    std::vector<uint8_t> mine(doc.points.size(), 0);
+    for (uint32_t i : doc.patches[b].idx) mine[i] = 1;
+    for (int k = 0; k < 4; ++k) mine[doc.patches[b].idx[size_t(edgeSlot(eb, k, 0))]] = 0;
+    bool shared = false;
+    for (size_t p = 0; p < doc.patches.size(); ++p)
+        if (p != b)
+            for (uint32_t i : doc.patches[p].idx) shared = shared || mine[i];
+    for (const Surface& s : doc.surfaces)
+        for (uint32_t i : s.idx) shared = shared || (i < mine.size() && mine[i]);
+    for (const TrianglePatch& t : doc.triangles)
+        for (uint32_t i : t.idx) shared = shared || mine[i];
+    for (const BezierCurve& c : doc.curves)
+        for (uint32_t i : c.idx) shared = shared || mine[i];
+    return !shared;
+}
+
+}  // namespace
+
+JoinPlan planJoin(const Document& doc, uint32_t a, Edge ea, uint32_t b, Edge eb) {
+    const Patch& A = doc.patches[a];
+    const Patch& B = doc.patches[b];
+    JoinPlan plan;
+    plan.edgeB = eb;
+    plan.reversed = pairsReversed(doc, A, ea, B, eb);
+    const bool free = patchIsFree(doc, b, eb);
+    // Normals agree across a seam when the two boundary loops walk it in opposite directions.
+    if (loopSign(ea) * loopSign(eb) * (plan.reversed ? -1 : 1) > 0 && free) {
+        plan.flipB = true;  // reversing u turns the normal over; the u edges swap names
+        if (eb == Edge::U0 || eb == Edge::U1) plan.edgeB = eb == Edge::U0 ? Edge::U1 : Edge::U0;
+        plan.reversed = eb == Edge::U0 || eb == Edge::U1 ? plan.reversed : !plan.reversed;
+    }
+    // Sides: A's outward direction at the seam against the way B extends from its edge.
+    auto slotB = [&](int k, int d) {
+        // After the flip (not applied yet) the slot of plan.edgeB's k-th point at depth d.
+        const int s = edgeSlot(plan.edgeB, k, d);
+        return plan.flipB ? (s / 4) * 4 + 3 - s % 4 : s;
+    };
+    Vec3 out(0.0), chord = doc.points[A.idx[size_t(edgeSlot(ea, 3, 0))]] - doc.points[A.idx[size_t(edgeSlot(ea, 0, 0))]];
+    double side = 0.0, gap = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        const int kb = plan.reversed ? 3 - k : k;
+        const Vec3 a0 = doc.points[A.idx[size_t(edgeSlot(ea, k, 0))]], a1 = doc.points[A.idx[size_t(edgeSlot(ea, k, 1))]];
+        const Vec3 b0 = doc.points[B.idx[size_t(slotB(kb, 0))]];
+        out += a0 - a1;
+        for (int d = 1; d < 4; ++d) side += glm::dot(a0 - a1, doc.points[B.idx[size_t(slotB(kb, d))]] - b0);
+        gap = std::max(gap, glm::length(a0 - b0));
+    }
+    plan.match = gap > 1e-6 * std::max(1.0, glm::length(chord));
+    if (glm::dot(chord, chord) > 0.0) out -= glm::dot(out, chord) / glm::dot(chord, chord) * chord;
+    if (side < 0.0 && glm::length(out) > 1e-12) {
+        if (!free)
+            throw EditError("patch " + std::to_string(b) + " lies back over patch " + std::to_string(a) +
+                            " at that seam and is joined to other patches, so it cannot be turned over; pick the other edge or unjoin it first");
+        plan.reflectB = true;
+        plan.reflectNormal = glm::normalize(out);
+    }
+    return plan;
+}
+
+size_t joinEdges(Document& doc, uint32_t a, Edge ea, uint32_t b, Edge ebPicked, Continuity continuity) {
     checkBezier(doc, a, "join");
     checkBezier(doc, b, "join");
     if (a == b) throw EditError("join needs two different patches");
-    if (findJoin(doc, a, ea) >= 0 || findJoin(doc, b, eb) >= 0) throw EditError("one of the edges is already joined; unjoin it first");
+    if (findJoin(doc, a, ea) >= 0 || findJoin(doc, b, ebPicked) >= 0) throw EditError("one of the edges is already joined; unjoin it first");
+    const JoinPlan plan = planJoin(doc, a, ea, b, ebPicked);
+    const Edge eb = plan.edgeB;
+    const bool reversed = plan.reversed;
+    if (plan.flipB) flipPatch(doc, b);
     const Patch& A = doc.patches[a];
     const Patch& B = doc.patches[b];
     auto pa = [&](int k, int d) { return doc.points[A.idx[size_t(edgeSlot(ea, k, d))]]; };
-    auto pb = [&](int k, int d) { return doc.points[B.idx[size_t(edgeSlot(eb, k, d))]]; };
-    // Direction: pair the end points the nearer way.
-    const double straight = glm::length(pa(0, 0) - pb(0, 0)) + glm::length(pa(3, 0) - pb(3, 0));
-    const double crossed = glm::length(pa(0, 0) - pb(3, 0)) + glm::length(pa(3, 0) - pb(0, 0));
-    const bool reversed = crossed < straight;
-    // Merge: B's edge entries become A's, both at the midpoint.
+    auto ib = [&](int k, int d) { return B.idx[size_t(edgeSlot(eb, reversed ? 3 - k : k, d))]; };
+    if (plan.reflectB) {  // B turned over its own edge, to the far side of the seam
+        const Vec3 n = plan.reflectNormal;
+        for (int k = 0; k < 4; ++k)
+            for (int d = 1; d < 4; ++d) {
+                Vec3& q = doc.points[ib(k, d)];
+                const Vec3 r = q - doc.points[ib(k, 0)];
+                q -= 2.0 * glm::dot(r, n) * n;
+            }
+    }
+    double alpha = 1.0;
+    if (continuity == Continuity::G1) {
+        double sa = 0.0, sb = 0.0;
+        for (int k = 0; k < 4; ++k) {
+            sa += glm::length(pa(k, 0) - pa(k, 1));
+            sb += glm::length(doc.points[ib(k, 1)] - doc.points[ib(k, 0)]);
+        }
+        alpha = sa > 1e-12 && sb > 1e-12 ? sb / sa : 1.0;
+    }
+    std::vector<uint32_t> fixed;
+    if (plan.match) {
+        // Match (Rhino's MatchSrf): A stays; B's boundary row goes onto A's edge, its tangent row
+        // moves with it (C0) or onto A's continuation (C1, G1).
+        for (int k = 0; k < 4; ++k) {
+            const Vec3 shift = pa(k, 0) - doc.points[ib(k, 0)];
+            doc.points[ib(k, 1)] = continuity == Continuity::C0 ? doc.points[ib(k, 1)] + shift : pa(k, 0) + alpha * (pa(k, 0) - pa(k, 1));
+            doc.points[ib(k, 0)] = pa(k, 0);
+            fixed.push_back(A.idx[size_t(edgeSlot(ea, k, 0))]);
+            fixed.push_back(A.idx[size_t(edgeSlot(ea, k, 1))]);
+        }
+    }
+    // Merge: B's edge entries become A's (at the midpoints when they nearly met).
     std::vector<std::pair<uint32_t, uint32_t>> remap;
     for (int k = 0; k < 4; ++k) {
         const uint32_t ia = A.idx[size_t(edgeSlot(ea, k, 0))];
-        const uint32_t ib = B.idx[size_t(edgeSlot(eb, reversed ? 3 - k : k, 0))];
-        if (ia == ib) continue;
-        doc.points[ia] = 0.5 * (doc.points[ia] + doc.points[ib]);
-        remap.emplace_back(ib, ia);
+        const uint32_t ibk = ib(k, 0);
+        if (ia == ibk) continue;
+        doc.points[ia] = 0.5 * (doc.points[ia] + doc.points[ibk]);
+        remap.emplace_back(ibk, ia);
     }
     // Everything that used B's edge points (triangles and curves too) now uses A's.
     for (auto [from, to] : remap)
         forEachPointIndex(doc, [from = from, to = to](uint32_t& i) {
             if (i == from) i = to;
         });
-    double alpha = 1.0;
-    if (continuity == Continuity::G1) {
-        double sa = 0.0, sb = 0.0;
-        for (int k = 0; k < 4; ++k) {
-            sa += glm::length(pa(k, 0) - pa(k, 1));
-            sb += glm::length(pb(reversed ? 3 - k : k, 1) - pb(reversed ? 3 - k : k, 0));
-        }
-        alpha = sa > 1e-12 && sb > 1e-12 ? sb / sa : 1.0;
-    }
     doc.joins.push_back(Join{a, ea, b, eb, reversed, continuity, alpha});
-    projectConstraints(doc, {});
+    projectConstraints(doc, fixed);
     compactPool(doc);
     return doc.joins.size() - 1;
 }

@@ -44,10 +44,29 @@ uint32_t extrudeEdge(Document& doc, uint32_t p, Edge e);
 // kept joins get their ratio rescaled (the halves' tangent rows are shorter), so C1 becomes G1.
 std::pair<uint32_t, uint32_t> splitPatch(Document& doc, uint32_t p, bool alongU, double t);
 
-// Joins edge ea of patch a to edge eb of patch b: the edge points are merged into a's pool entries
-// (placed at the midpoints; direction chosen by the nearer end points), the join recorded with
-// `continuity` (G1: alpha from the current tangent lengths) and the constraints projected.
-// Returns the new join index.
+// How a join of edge ea of patch a to edge eb of patch b goes (Rhino's Join and MatchSrf, with
+// the orientation chosen so the patches end up on opposite sides of the seam, never folded):
+// - the end points pair the nearer way (`reversed`);
+// - when b is free (no joins, no point shared beyond that edge) and its normal would disagree with
+//   a's across the seam, b's u direction is reversed first (`flipB`; a u edge then changes name);
+// - when b extends back over a (its rows lie on a's side of the seam), free b is turned over its
+//   own edge (`reflectB`, mirrored in the plane with normal `reflectNormal`); a b that is not free
+//   is refused;
+// - when the edges do not meet (`match`), a stays and b's boundary row moves onto a's edge, its
+//   tangent row with it (C0) or onto a's continuation (C1, G1); else the edges merge at midpoints.
+struct JoinPlan {
+    Edge edgeB = Edge::U0;  // b's edge after the flip
+    bool reversed = false;
+    bool flipB = false;
+    bool reflectB = false;
+    Vec3 reflectNormal{0.0};
+    bool match = false;
+};
+JoinPlan planJoin(const Document& doc, uint32_t a, Edge ea, uint32_t b, Edge eb);
+
+// Joins edge ea of patch a to edge eb of patch b as planJoin says, records the join with
+// `continuity` (G1: alpha from the current tangent lengths) and projects the constraints (a's
+// rows at the seam fixed when matching). Returns the new join index.
 size_t joinEdges(Document& doc, uint32_t a, Edge ea, uint32_t b, Edge eb, Continuity continuity);
 
 // Removes join j; patch B of the join gets its own copies of the edge points, so the patches can

@@ -1,0 +1,73 @@
+#include "core/edge_pick.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/patch_eval.hpp"
+#include "core/patch_ops.hpp"
+#include "core/picking.hpp"
+
+namespace pw {
+
+std::vector<Vec3> boundaryCurve(const Document& doc, uint32_t p, Edge e, int n) {
+    const Patch& pt = doc.patches[p];
+    const Net16 net = gatherNet(doc, pt.idx);
+    std::vector<Vec3> out;
+    out.reserve(size_t(n + 1));
+    for (int s = 0; s <= n; ++s) {
+        const double t = double(s) / n;
+        const double u = e == Edge::U0 ? 0.0 : e == Edge::U1 ? 1.0 : t, v = e == Edge::V0 ? 0.0 : e == Edge::V1 ? 1.0 : t;
+        out.push_back(evaluateNet(net, pt.basis, pt.tension, u, v).p);
+    }
+    return out;
+}
+
+namespace {
+
+double segmentDistance(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
+    const glm::dvec2 ab = b - a;
+    const double t = glm::dot(ab, ab) > 0.0 ? std::clamp(glm::dot(p - a, ab) / glm::dot(ab, ab), 0.0, 1.0) : 0.0;
+    return glm::length(p - (a + t * ab));
+}
+
+}  // namespace
+
+std::optional<PatchEdge> pickBoundaryEdge(const Document& doc, const Camera& cam, double x, double y, int width, int height,
+                                          double radiusPx, int skipPatch) {
+    const ViewMatrices vm = viewMatrices(cam, double(width) / std::max(height, 1));
+    const glm::dvec2 m(x, y);
+    struct Candidate {
+        PatchEdge edge;
+        double distance;
+    };
+    std::vector<Candidate> near;
+    for (uint32_t p = 0; p < doc.patches.size(); ++p) {
+        const Patch& pt = doc.patches[p];
+        if (int(p) == skipPatch || pt.hidden || pt.basis != Basis::Bezier) continue;
+        for (int e = 0; e < 4; ++e) {
+            if (findJoin(doc, p, Edge(e)) >= 0) continue;
+            const std::vector<Vec3> curve = boundaryCurve(doc, p, Edge(e));
+            double best = radiusPx;
+            std::optional<glm::dvec2> prev;
+            for (const Vec3& q : curve) {
+                const auto s = projectToPixel(vm, q, width, height);
+                if (s && prev) best = std::min(best, segmentDistance(m, *prev, *s));
+                prev = s;
+            }
+            if (best < radiusPx) near.push_back({{p, Edge(e)}, best});
+        }
+    }
+    if (near.empty()) return std::nullopt;
+    const auto nearest = std::min_element(near.begin(), near.end(), [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; });
+    // Edges within 2 px of the nearest lie on top of each other: the patch under the mouse wins.
+    if (near.size() < 2) return nearest->edge;
+    if (const auto hit = pickSurface(doc, rayThroughPixel(cam, x, y, width, height)); hit && hit->patch >= 0)
+        for (const Candidate& c : near)
+            if (int(c.edge.patch) == hit->patch && c.distance <= nearest->distance + 2.0) return c.edge;
+    return nearest->edge;
+}
+
+std::string patchEdgeName(const PatchEdge& e) { return std::to_string(e.patch) + ":" + std::string(edgeName(e.edge)); }
+
+}  // namespace pw
