@@ -118,6 +118,13 @@ uint32_t commandIndex(const std::string& word, size_t count, const char* what) {
     return uint32_t(v);
 }
 
+Command windowToggle(const char* name, const char* label, const char* menu, WindowToggle which, std::vector<std::string> keys,
+                     const char* help) {
+    return {.name = name, .label = label, .menu = menu, .help = help, .bindings = {{"", "", std::move(keys)}}, .windowOnly = true,
+            .checked = [which](const EditSession&, const CommandHost& h) { return h.toggled(which); },
+            .run = [which](CommandContext& ctx) { ctx.host.toggle(which); }};
+}
+
 void expectArgs(const CommandContext& ctx, size_t min, size_t max) {
     const size_t n = ctx.args.size();
     if (n >= min && n <= max) return;

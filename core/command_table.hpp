@@ -19,7 +19,7 @@ namespace pw {
 
 // What the editor window does for commands; a script host keeps the defaults.
 enum class FileDialogKind { Open, SaveAs, Import, ExportGltf, Screenshot };
-enum class WindowToggle { Help, Palette, Presentation, DomainView, ShaderPanel, GroundGrid };
+enum class WindowToggle { Help, Palette, Presentation, DomainView, ShaderPanel, GroundGrid, JoinTool };
 
 class CommandHost {
 public:
@@ -118,5 +118,8 @@ void addViewCommands(CommandTable& t);       // core/commands_view.cpp: views, f
 double commandNumber(const std::string& word, const char* what);
 uint32_t commandIndex(const std::string& word, size_t count, const char* what);
 void expectArgs(const CommandContext& ctx, size_t min, size_t max);
+// A window-only command that toggles `which` (checked in the menus while it is on), bound to `keys`.
+Command windowToggle(const char* name, const char* label, const char* menu, WindowToggle which, std::vector<std::string> keys,
+                     const char* help);
 
 }  // namespace pw

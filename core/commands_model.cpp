@@ -210,6 +210,9 @@ void addModelCommands(CommandTable& t) {
                if (!c) throw EditError("expected C0, C1 or G1, got '" + ctx.args[2] + "'");
                ctx.session.apply("Join edges", [&](Document& d) { joinEdges(d, a.first, a.second, b.first, b.second, *c); });
            }});
+    t.add(windowToggle("join-pick", "Join by Picking", "Patch", WindowToggle::JoinTool, {"J"},
+                       "Hover an open edge and click it, then click the edge to join it to; the join shows at once (C1) "
+                       "and the panel changes its continuity, keeps it (Enter) or takes it back (Esc). It runs `join`"));
     t.add({.name = "unjoin", .label = "Unjoin Edge", .menu = "Patch", .usage = "[A:EDGE]",
            .help = "Remove the join on an edge (default: the selected patch's highlighted edge); the patches can then move apart",
            .run = [](CommandContext& ctx) {

@@ -52,13 +52,6 @@ bool switchArg(const CommandContext& ctx, size_t i, bool current) {
     throw EditError("expected on or off, got '" + ctx.args[i] + "'");
 }
 
-Command windowToggle(const char* name, const char* label, const char* menu, WindowToggle which, std::vector<std::string> keys,
-                     const char* help) {
-    return {.name = name, .label = label, .menu = menu, .help = help, .bindings = {{"", "", std::move(keys)}}, .windowOnly = true,
-            .checked = [which](const EditSession&, const CommandHost& h) { return h.toggled(which); },
-            .run = [which](CommandContext& ctx) { ctx.host.toggle(which); }};
-}
-
 }  // namespace
 
 void addViewCommands(CommandTable& t) {

@@ -222,6 +222,7 @@ void Editor::drawUi() {
     dialogs_.drawModals(*this, [this] { recoverAutosave(); });
     if (showHelp_) drawHelp(*this, showHelp_);
     if (palette_.open) palette_.draw(*this);
+    drawJoinPanel();
     // Status line: the last message for 6 s, and a running export for as long as it runs.
     const ImGuiIO& io = ImGui::GetIO();
     std::string line = std::chrono::steady_clock::now() - statusTime_ < std::chrono::seconds(6) ? status_ : std::string();

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -18,6 +19,7 @@
 #include "core/background_writer.hpp"
 #include "core/command_table.hpp"
 #include "core/drag_controller.hpp"
+#include "core/edge_pick.hpp"
 #include "core/edit_session.hpp"
 #include "ui/app_window.hpp"
 #include "ui/command_panels.hpp"
@@ -134,6 +136,22 @@ private:
     DragView dragView() const;            // the interaction pane as the drag sees it
     std::array<int, 2> viewSize() const;  // the interaction pane's width and height in pixels, at least 1
     void drawViewportOverlays();
+    // join_tool.cpp: join by picking (J). The join runs at once as a preview; the panel changes its
+    // continuity, keeps it or takes it back.
+    struct JoinTool {
+        bool on = false;
+        std::optional<PatchEdge> first, hover;  // the first pick; the open edge under the mouse
+        bool preview = false;                    // the join a-b is applied, waiting for Apply or Cancel
+        PatchEdge a, b;
+        Continuity continuity = Continuity::C1;
+        uint64_t version = 0;  // the session's version right after the preview ran
+    };
+    void setJoinTool(bool on);
+    void joinToolInput(double mx, double my, bool overUi);
+    void joinPreview(Continuity c);   // runs `join a b c`
+    void endJoinPreview(bool keep);   // keep it, or undo it and go back to the second pick
+    void drawJoinPanel();
+    void drawJoinOverlay(const std::function<void(const Vec3&, const Vec3&, unsigned, float)>& line) const;
     void drawPaneOverlays(const std::array<float, 4>& pane, bool active);  // selection, gizmo of one pane
 
     AppWindow& window_;
@@ -154,6 +172,7 @@ private:
     DragController drag_;
     int hovered_ = -1;
     int hoveredGizmo_ = -1;
+    JoinTool join_;
     double pressX_ = 0, pressY_ = 0;
     bool pressShift_ = false;
     double lastX_ = 0, lastY_ = 0;

@@ -69,6 +69,7 @@ void Editor::toggle(WindowToggle which) {
         case WindowToggle::DomainView: teaching_.showDomain = !teaching_.showDomain; break;
         case WindowToggle::ShaderPanel: shaders_.open = !shaders_.open; break;
         case WindowToggle::GroundGrid: showGround_ = !showGround_; break;
+        case WindowToggle::JoinTool: setJoinTool(!join_.on); break;
     }
     wake();
 }
@@ -81,6 +82,7 @@ bool Editor::toggled(WindowToggle which) const {
         case WindowToggle::DomainView: return teaching_.showDomain;
         case WindowToggle::ShaderPanel: return shaders_.open;
         case WindowToggle::GroundGrid: return showGround_;
+        case WindowToggle::JoinTool: return join_.on;
     }
     return false;
 }

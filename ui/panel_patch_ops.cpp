@@ -56,7 +56,8 @@ void PatchOpsPanel::draw(PanelContext& ctx) {
     commandButton(ctx, "Delete triangle", "delete", "op.deleteTriangle");
     ImGui::EndDisabled();
     ImGui::Separator();
-    ImGui::TextUnformatted("Join two boundary edges");
+    commandButton(ctx, "Join by picking (J)", "join-pick", "op.joinPick");
+    ImGui::TextUnformatted("or join two boundary edges by number");
     const int np = int(doc.patches.size());
     auto patchAndEdge = [](const char* ab, int& patch, int& edge) {
         const std::string id(ab);

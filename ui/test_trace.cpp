@@ -98,6 +98,9 @@ void TestTrace::write(const Editor& e) {
     j["validationMessages"] = render::Device::validationMessageCount();
     j["patches"] = doc.patches.size();
     j["joins"] = doc.joins.size();
+    auto edgeJson = [](const std::optional<PatchEdge>& pe) { return pe ? nlohmann::json(patchEdgeName(*pe)) : nlohmann::json(nullptr); };
+    j["joinTool"] = {{"on", e.join_.on}, {"first", edgeJson(e.join_.first)}, {"hover", edgeJson(e.join_.hover)},
+                     {"preview", e.join_.preview}, {"continuity", std::string(continuityName(e.join_.continuity))}};
     j["surfaces"] = doc.surfaces.size();
     j["curves"] = doc.curves.size();
     j["bezierTriangles"] = doc.triangles.size();

@@ -67,6 +67,7 @@ void Editor::viewportInput() {
         const bool dragging = mode_ == Interaction::DragPoints || mode_ == Interaction::Grab;
         if (!dragging) {
             if (mode_ == Interaction::None) runShortcuts();
+            if (mode_ == Interaction::None && join_.on) joinToolInput(mx, my, overUi);
             if (mode_ == Interaction::None && !session_.selectedPoints().empty()) {
                 const int keys[3] = {GLFW_KEY_G, GLFW_KEY_R, GLFW_KEY_S};
                 const TransformKind kinds[3] = {TransformKind::Move, TransformKind::Rotate, TransformKind::Scale};
@@ -77,7 +78,7 @@ void Editor::viewportInput() {
                         beginDrag(true, kinds[k]);
                     }
             }
-            if (mode_ == Interaction::None && keyPressed(GLFW_KEY_ESCAPE, 0) && !palette_.open) sel_.clear();
+            if (mode_ == Interaction::None && !join_.on && keyPressed(GLFW_KEY_ESCAPE, 0) && !palette_.open) sel_.clear();
         } else {
             transformKeys(mx, my);
         }
@@ -118,6 +119,7 @@ void Editor::viewportInput() {
                 placeCursor(mx, my);
                 break;
             }
+            if (!overUi && mouseValid && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && join_.on && !io.KeyAlt) break;  // the join tool's
             if (!overUi && mouseValid && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
                 const auto press = window_.leftPress();
                 pressX_ = press ? (*press)[0] - viewArea_[0] : mx;

@@ -103,6 +103,8 @@ void Editor::drawPaneOverlays(const std::array<float, 4>& pane, bool active) {
         if (pa && pb) dl->AddLine(ImVec2(float(pa->x), float(pa->y)), ImVec2(float(pb->x), float(pb->y)), col, th);
     };
 
+    drawJoinOverlay(line);
+
     // Selected patch: its boundary curves.
     if (sel_.patch >= 0 && sel_.patch < int(doc_.patches.size())) {
         const Patch& pt = doc_.patches[size_t(sel_.patch)];
