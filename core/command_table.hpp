@@ -19,7 +19,7 @@ namespace pw {
 
 // What the editor window does for commands; a script host keeps the defaults.
 enum class FileDialogKind { Open, SaveAs, Import, ExportGltf, Screenshot };
-enum class WindowToggle { Help, Palette, Presentation, DomainView, ShaderPanel, GroundGrid, JoinTool };
+enum class WindowToggle { Help, Palette, Presentation, DomainView, ShaderPanel, GroundGrid, JoinTool, XRay };
 
 class CommandHost {
 public:

@@ -81,6 +81,8 @@ void addViewCommands(CommandTable& t) {
                const Bounds box = frameTargetBounds(ctx.session.doc, ctx.session.sel);
                if (!ctx.host.frame(box)) ctx.session.camera = frameBounds(ctx.session.camera, box, 16.0 / 9.0);
            }});
+    t.add(windowToggle("xray", "Select Through (X-ray)", "View", WindowToggle::XRay, {"Alt+Z"},
+                       "Box selection takes the points behind the surface too (off: only the points you can see)"));
     t.add(windowToggle("ground-grid", "Ground Grid", "View", WindowToggle::GroundGrid, {}, "Show the ground-plane grid"));
     t.add(windowToggle("domain-view", "Domain View", "View", WindowToggle::DomainView, {},
                        "The parametric domain tessellated by the GPU with the current levels (Teaching panel for more)"));

@@ -178,6 +178,7 @@ private:
     double lastX_ = 0, lastY_ = 0;
     std::array<float, 4> viewArea_{0, 0, 1, 1};  // this frame's interaction pane (window pixels)
     bool showGround_ = true;
+    bool xray_ = false;  // box selection through the surface
 
     // The frame.
     uint64_t frameCount_ = 0;

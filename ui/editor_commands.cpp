@@ -70,6 +70,7 @@ void Editor::toggle(WindowToggle which) {
         case WindowToggle::ShaderPanel: shaders_.open = !shaders_.open; break;
         case WindowToggle::GroundGrid: showGround_ = !showGround_; break;
         case WindowToggle::JoinTool: setJoinTool(!join_.on); break;
+        case WindowToggle::XRay: xray_ = !xray_; break;
     }
     wake();
 }
@@ -83,6 +84,7 @@ bool Editor::toggled(WindowToggle which) const {
         case WindowToggle::ShaderPanel: return shaders_.open;
         case WindowToggle::GroundGrid: return showGround_;
         case WindowToggle::JoinTool: return join_.on;
+        case WindowToggle::XRay: return xray_;
     }
     return false;
 }

@@ -14,6 +14,7 @@
 
 #include "core/camera_math.hpp"
 #include "core/patch_ops.hpp"
+#include "core/occlusion.hpp"
 #include "core/picking.hpp"
 #include "core/snapping.hpp"
 #include "render/renderer.hpp"
@@ -187,7 +188,10 @@ void Editor::viewportInput() {
                         sel_.patch = sel_.surface = sel_.triangle = -1;
                     }
                 } else {
-                    applyBox(sel_, pointsInBox(cam_, doc_.points, {pressX_, pressY_}, {mx, my}, W, H, &usedMask_), pressShift_);
+                    // Only the points you can see, unless X-ray (Alt+Z) selects through.
+                    std::vector<uint32_t> boxed = pointsInBox(cam_, doc_.points, {pressX_, pressY_}, {mx, my}, W, H, &usedMask_);
+                    if (!xray_) boxed = unoccludedPoints(doc_, cam_, W, H, boxed);
+                    applyBox(sel_, boxed, pressShift_);
                 }
             }
             break;
