@@ -10,6 +10,7 @@
 #include "core/patch_ops.hpp"
 #include "core/picking.hpp"
 #include "core/selection_ops.hpp"
+#include "core/symmetry.hpp"
 
 namespace pw {
 
@@ -86,9 +87,12 @@ void select(CommandContext& ctx) {
 void transformSelection(CommandContext& ctx, const std::string& label, const std::function<Vec3(const Vec3&)>& f) {
     const std::vector<uint32_t> moved = ctx.session.selectedPoints();
     if (moved.empty()) throw EditError("nothing is selected (select points, a patch, a net, a triangle or a curve first)");
+    const Symmetry sym = ctx.session.symmetry;
     ctx.session.apply(label, [&](Document& d) {
-        const DragSolver solver(d, moved);
+        const SymmetryPairs pairs = symmetryPairs(d, moved, sym);
+        const DragSolver solver(d, pairs.driven(moved));
         for (uint32_t p : moved) d.points[p] = f(d.points[p]);
+        applySymmetry(d.points, pairs, sym);
         solver.project(d.points);
     }, false);
 }
@@ -169,6 +173,19 @@ void addSelectCommands(CommandTable& t) {
                const auto m = parsePivot(ctx.args[0]);
                if (!m) throw EditError("expected median, active or cursor, got '" + ctx.args[0] + "'");
                ctx.session.pivot = *m;
+           }});
+    t.add({.name = "symmetry", .label = "Symmetry", .menu = "Select", .usage = "X|Y|Z|off",
+           .help = "Live symmetry: every transform moves each point's mirror partner across the plane normal to the axis through "
+                   "the 3D cursor, and points on that plane stay on it",
+           .bindings = {{"Symmetry: Off", "off", {}}, {"Symmetry: X", "X", {}}, {"Symmetry: Y", "Y", {}}, {"Symmetry: Z", "Z", {}}},
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 1, 1);
+               if (ctx.args[0] == "off") {
+                   ctx.session.symmetry = {};
+                   return;
+               }
+               const int a = axisIndex(ctx.args[0]);
+               ctx.session.symmetry = Symmetry{a, ctx.session.cursor[a]};
            }});
     t.add({.name = "snap", .label = "Snap To", .menu = "Select", .usage = "grid|points|edges|surfaces",
            .help = "What a move snaps to while Ctrl is held: grid increments, control points, boundary edges or surfaces",

@@ -55,10 +55,13 @@ bool DragController::begin(const Document& doc, const TransformStart& start, con
     start_ = doc.points;
     uploaded_ = doc.points;
     moved_ = start.points;
+    symmetry_ = start.symmetry;
+    pairs_ = symmetryPairs(doc, moved_, symmetry_);
+    const std::vector<uint32_t> driven = pairs_.driven(moved_);
     movedMask_.assign(doc.points.size(), false);
-    for (uint32_t p : moved_)
+    for (uint32_t p : driven)
         if (p < movedMask_.size()) movedMask_[p] = true;
-    solver_ = std::make_unique<DragSolver>(doc, moved_);  // factorised once per transform
+    solver_ = std::make_unique<DragSolver>(doc, driven);  // factorised once per transform
     anchor_ = start.pivot;
     Vec3 r, u, f;
     cameraAxes(view.camera, r, u, f);
@@ -201,6 +204,7 @@ bool DragController::update(Document& doc, const DragView& view, double x, doubl
         }
     }
     for (uint32_t p : moved_) doc.points[p] = f(start_[p]);
+    applySymmetry(doc.points, pairs_, symmetry_);
     solver_->project(doc.points);
     takeChangedPoints(uploaded_, doc.points, changed_);
     return true;
@@ -244,13 +248,16 @@ std::string HeldPointEdit::set(EditSession& session, uint32_t point, const Vec3&
                           limits::kMaxCoordinate, position[k]);
             return msg;
         }
-    if (!solver_ || point_ != point || generation_ != session.generation()) {
-        solver_ = std::make_unique<DragSolver>(session.committed(), std::vector<uint32_t>{point});
+    if (!solver_ || point_ != point || generation_ != session.generation() || symmetry_ != session.symmetry) {
+        pairs_ = symmetryPairs(session.committed(), {point}, session.symmetry);
+        solver_ = std::make_unique<DragSolver>(session.committed(), pairs_.driven({point}));
         point_ = point;
         generation_ = session.generation();
+        symmetry_ = session.symmetry;
     }
     std::vector<Vec3> pts = session.committed().points;
     pts[point] = position;
+    applySymmetry(pts, pairs_, symmetry_);
     solver_->project(pts);
     session.doc.points = std::move(pts);
     return "";

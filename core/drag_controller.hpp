@@ -20,6 +20,7 @@
 #include "core/edit_session.hpp"
 #include "core/selection.hpp"
 #include "core/snapping.hpp"
+#include "core/symmetry.hpp"
 
 namespace pw {
 
@@ -37,6 +38,7 @@ struct TransformStart {
     TransformKind kind = TransformKind::Move;
     bool grab = false;             // started by a key (G/R/S, no button held): click or Enter confirms
     SnapTarget snap = SnapTarget::Grid;  // what Ctrl snaps a move to
+    Symmetry symmetry;             // on: each point's mirror partner follows (core/symmetry.hpp)
 };
 
 class DragController {
@@ -93,7 +95,9 @@ public:
 private:
     std::vector<Vec3> start_;      // the whole pool at begin()
     std::vector<uint32_t> moved_;
-    std::vector<bool> movedMask_;
+    std::vector<bool> movedMask_;  // what the transform drives: the moved points and their mirror partners
+    Symmetry symmetry_;
+    SymmetryPairs pairs_;
     std::unique_ptr<DragSolver> solver_;
     TransformKind kind_ = TransformKind::Move;
     Vec3 anchor_{0.0};
@@ -119,7 +123,8 @@ private:
 // factorisation is kept while the same point is edited against the same committed state.
 class HeldPointEdit {
 public:
-    // Writes session.doc.points; commit() is the caller's. Returns "" or, for a coordinate that is
+    // Writes session.doc.points (the point's mirror partner too under the session's symmetry);
+    // commit() is the caller's. Returns "" or, for a coordinate that is
     // not finite or beyond limits::kMaxCoordinate, the message (and changes nothing).
     std::string set(EditSession& session, uint32_t point, const Vec3& position);
     void reset() { solver_.reset(); }  // another document
@@ -128,6 +133,8 @@ private:
     std::unique_ptr<DragSolver> solver_;
     uint32_t point_ = 0;
     uint64_t generation_ = 0;
+    Symmetry symmetry_;
+    SymmetryPairs pairs_;
 };
 
 }  // namespace pw

@@ -15,6 +15,7 @@
 #include "core/gltf_export.hpp"
 #include "core/selection.hpp"
 #include "core/snapping.hpp"
+#include "core/symmetry.hpp"
 
 namespace pw {
 
@@ -30,6 +31,7 @@ public:
     Vec3 cursor{0.0};  // the 3D cursor: where new geometry is placed
     PivotMode pivot = PivotMode::Median;  // what rotate and scale turn about
     SnapTarget snap = SnapTarget::Grid;   // what moves snap to while Ctrl is held
+    Symmetry symmetry;                    // live symmetry: transforms mirror each point's partner
     Edge activeEdge = Edge::U1;  // the selected patch's edge nearest the last surface click (extrude, unjoin)
     GltfExportOptions exportOptions;
 

@@ -66,7 +66,7 @@ void InspectorPanel::setPoint(PanelContext& ctx, uint32_t p, const Vec3& positio
 }
 
 namespace {
-// Pivot and snap target: the `pivot` and `snap` commands, as two combos on one row.
+// Pivot and snap target (one row), symmetry (the next): the `pivot`, `snap` and `symmetry` commands as combos.
 void transformRow(PanelContext& ctx) {
     const EditSession& s = ctx.session();
     const float w = ImGui::GetContentRegionAvail().x * 0.5f - ImGui::GetStyle().ItemSpacing.x;
@@ -88,6 +88,13 @@ void transformRow(PanelContext& ctx) {
     ImGui::SameLine();
     combo("##snap", "Snap", snapTargetName(s.snap), {"grid", "points", "edges", "surfaces"}, "snap",
           "What a move snaps to while Ctrl is held");
+    const std::string sym = symmetryName(s.symmetry);
+    combo("##symmetry", "Symmetry", sym, {"off", "X", "Y", "Z"}, "symmetry",
+          "Live symmetry: each moved point's mirror partner follows across the plane through the 3D cursor (set when chosen)");
+    if (s.symmetry.on()) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("%c = %.4g", char('x' + s.symmetry.axis), s.symmetry.offset);
+    }
 }
 }  // namespace
 

@@ -81,7 +81,7 @@ void Editor::drawViewportOverlays() {
     if (mode_ == Interaction::Grab || mode_ == Interaction::DragPoints) {
         const std::string hint = "X/Y/Z axis · Shift+X/Y/Z plane · Ctrl snap (" + std::string(snapTargetName(session_.snap)) + ")" +
                                  (mode_ == Interaction::Grab ? " · type a value · click/Enter confirm" : "") + " · Esc/right click cancel";
-        const std::string text = drag_.status() + "\n" + hint;
+        const std::string text = drag_.status() + (session_.symmetry.on() ? " · symmetry " + symmetryName(session_.symmetry) : "") + "\n" + hint;
         const float x = float(sidePanels_.layout().left) + 12.0f;
         const float wrap = std::max(ImGui::GetIO().DisplaySize.x - float(sidePanels_.layout().right) - x - 12.0f, 100.0f);
         dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(x, 30.0f), IM_COL32(255, 230, 120, 255), text.c_str(), nullptr, wrap);
