@@ -173,6 +173,7 @@ private:
     int hovered_ = -1;
     int hoveredGizmo_ = -1;
     JoinTool join_;
+    bool grabAfterShortcut_ = false;  // the last shortcut was Shift+D: grab the copy
     double pressX_ = 0, pressY_ = 0;
     bool pressShift_ = false;
     double lastX_ = 0, lastY_ = 0;

@@ -30,7 +30,11 @@ void Editor::runShortcuts() {
         if (window_.keyPressed(k.key, k.mods)) {
             const std::vector<std::string> words = splitCommandWords(k.line);
             const Command* c = commands_.find(words.front());
-            if (c && commands_.isEnabled(*c, session_)) runCommand(words);
+            if (!c || !commands_.isEnabled(*c, session_)) continue;
+            const uint64_t before = session_.version();
+            runCommand(words);
+            // Shift+D (Blender): the copy follows the mouse at once; Esc leaves it where it appeared.
+            grabAfterShortcut_ = words.front() == "duplicate" && session_.version() != before;
         }
 }
 

@@ -11,7 +11,9 @@ namespace pw::ui {
 void drawMenuBar(PanelContext& ctx, CommandPalette& palette, const std::vector<std::string>& recent) {
     if (!ImGui::BeginMainMenuBar()) return;
     for (const std::string& menu : ctx.commands().menus()) {
-        if (!ImGui::BeginMenu(menu.c_str())) continue;
+        const bool open = ImGui::BeginMenu(menu.c_str());
+        traceItem("menubar." + menu);
+        if (!open) continue;
         for (const Command& c : ctx.commands().commands()) {
             if (c.menu != menu) continue;
             const bool enabled = ctx.commands().isEnabled(c, ctx.session());

@@ -25,7 +25,7 @@ void PatchOpsPanel::draw(PanelContext& ctx) {
     const Document& doc = s.doc;
     const Selection& sel = s.sel;
     // Each button runs its command: disabled when the command is.
-    commandButton(ctx, "Add flat patch", "add-patch");
+    commandButton(ctx, "Add flat patch", "add-patch", "op.addPatch");
     sameLineIfFits("Add curve");
     commandButton(ctx, "Add curve", "add-curve", "op.addCurve");
     sameLineIfFits("Duplicate");

@@ -98,6 +98,9 @@ void TestTrace::write(const Editor& e) {
     j["validationMessages"] = render::Device::validationMessageCount();
     j["patches"] = doc.patches.size();
     j["joins"] = doc.joins.size();
+    j["patchIdx"] = nlohmann::json::array();
+    for (const Patch& p : doc.patches) j["patchIdx"].push_back(p.idx);
+    j["cursor"] = {e.session_.cursor.x, e.session_.cursor.y, e.session_.cursor.z};
     auto edgeJson = [](const std::optional<PatchEdge>& pe) { return pe ? nlohmann::json(patchEdgeName(*pe)) : nlohmann::json(nullptr); };
     j["joinTool"] = {{"on", e.join_.on}, {"first", edgeJson(e.join_.first)}, {"hover", edgeJson(e.join_.hover)},
                      {"preview", e.join_.preview}, {"continuity", std::string(continuityName(e.join_.continuity))}};

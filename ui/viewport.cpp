@@ -68,6 +68,12 @@ void Editor::viewportInput() {
         const bool dragging = mode_ == Interaction::DragPoints || mode_ == Interaction::Grab;
         if (!dragging) {
             if (mode_ == Interaction::None) runShortcuts();
+            if (mode_ == Interaction::None && grabAfterShortcut_ && mouseValid) {
+                pressX_ = mx;
+                pressY_ = my;
+                beginDrag(true, TransformKind::Move);
+            }
+            grabAfterShortcut_ = false;
             if (mode_ == Interaction::None && join_.on) joinToolInput(mx, my, overUi);
             if (mode_ == Interaction::None && !session_.selectedPoints().empty()) {
                 const int keys[3] = {GLFW_KEY_G, GLFW_KEY_R, GLFW_KEY_S};
@@ -216,6 +222,7 @@ void Editor::placeCursor(double mx, double my) {
     const auto [W, H] = viewSize();
     const std::vector<bool> none;
     std::optional<Vec3> at = snapPoint(doc_, none, SnapTarget::Points, cam_, W, H, mx, my, kPickRadiusPx);
+    const bool onPoint = at.has_value();
     if (!at) at = snapPoint(doc_, none, SnapTarget::Surfaces, cam_, W, H, mx, my);
     if (!at) {
         Vec3 r, u, f;
@@ -223,6 +230,8 @@ void Editor::placeCursor(double mx, double my) {
         at = intersectPlane(rayThroughPixel(cam_, mx, my, W, H), session_.cursor, f);
     }
     if (!at) return;
+    // Ctrl (Blender): on the grid of a move's Ctrl snap, unless it landed on a point.
+    if (ImGui::GetIO().KeyCtrl && !onPoint) at = snapToGrid(*at, niceGridStep(modelSize(doc_)) / 5.0);
     char x[32], y[32], z[32];
     std::snprintf(x, sizeof x, "%.17g", at->x), std::snprintf(y, sizeof y, "%.17g", at->y), std::snprintf(z, sizeof z, "%.17g", at->z);
     runCommand({"cursor", x, y, z});
