@@ -23,16 +23,6 @@ std::vector<Vec3> boundaryCurve(const Document& doc, uint32_t p, Edge e, int n) 
     return out;
 }
 
-namespace {
-
-double segmentDistance(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
-    const glm::dvec2 ab = b - a;
-    const double t = glm::dot(ab, ab) > 0.0 ? std::clamp(glm::dot(p - a, ab) / glm::dot(ab, ab), 0.0, 1.0) : 0.0;
-    return glm::length(p - (a + t * ab));
-}
-
-}  // namespace
-
 std::optional<PatchEdge> pickBoundaryEdge(const Document& doc, const Camera& cam, double x, double y, int width, int height,
                                           double radiusPx, int skipPatch) {
     const ViewMatrices vm = viewMatrices(cam, double(width) / std::max(height, 1));

@@ -170,6 +170,12 @@ std::optional<SurfaceHit> pickSurface(const Document& doc, const Ray& ray, int l
     return best;
 }
 
+double segmentDistance(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
+    const glm::dvec2 ab = b - a;
+    const double t = glm::dot(ab, ab) > 0.0 ? std::clamp(glm::dot(p - a, ab) / glm::dot(ab, ab), 0.0, 1.0) : 0.0;
+    return glm::length(p - (a + t * ab));
+}
+
 std::optional<glm::dvec3> intersectPlane(const Ray& ray, const glm::dvec3& point, const glm::dvec3& normal) {
     const double denom = glm::dot(ray.dir, normal);
     if (std::abs(denom) < 1e-12) return std::nullopt;

@@ -55,6 +55,9 @@ struct SurfaceHit {
 // triangles with a control point in it are not hit (what a transform moves, when snapping).
 std::optional<SurfaceHit> pickSurface(const Document& doc, const Ray& ray, int level = 12, const std::vector<bool>* skip = nullptr);
 
+// Distance in pixels from p to the segment a-b (the join tool's edges, the gizmo's arrows).
+double segmentDistance(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b);
+
 // Where the ray meets the plane through `point` with normal `normal` (nullopt when parallel or behind).
 std::optional<glm::dvec3> intersectPlane(const Ray& ray, const glm::dvec3& point, const glm::dvec3& normal);
 

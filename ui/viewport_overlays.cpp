@@ -23,11 +23,6 @@ constexpr ImU32 kAxisColours[3] = {IM_COL32(230, 60, 60, 230), IM_COL32(60, 210,
 constexpr float kGizmoLengthPx = 80.0f;
 constexpr double kGizmoGrabPx = 7.0;
 
-double segmentDistance(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
-    const glm::dvec2 ab = b - a;
-    const double t = glm::dot(ab, ab) > 0.0 ? std::clamp(glm::dot(p - a, ab) / glm::dot(ab, ab), 0.0, 1.0) : 0.0;
-    return glm::length(p - (a + t * ab));
-}
 }  // namespace
 
 std::optional<std::array<glm::dvec2, 4>> Editor::gizmoHandles(int width, int height) const {
@@ -105,31 +100,14 @@ void Editor::drawPaneOverlays(const std::array<float, 4>& pane, bool active) {
 
     drawJoinOverlay(line);
 
-    // Selected patch: its boundary curves.
-    if (sel_.patch >= 0 && sel_.patch < int(doc_.patches.size())) {
-        const Patch& pt = doc_.patches[size_t(sel_.patch)];
-        const Net16 net = gatherNet(doc_, pt.idx);
-        const int n = 24;
+    // Selected patch: its boundary curves, the highlighted edge (extrude, unjoin) brighter.
+    if (sel_.patch >= 0 && sel_.patch < int(doc_.patches.size()))
         for (int e = 0; e < 4; ++e) {
             const bool hl = e == int(lastEdge_);
-            for (int k = 0; k < n; ++k) {
-                auto uv = [&](int s, double& u, double& v) {
-                    const double t = double(s) / n;
-                    switch (e) {
-                        case 0: u = 0, v = t; break;
-                        case 1: u = t, v = 0; break;
-                        case 2: u = 1, v = t; break;
-                        default: u = t, v = 1; break;
-                    }
-                };
-                double u0, v0, u1, v1;
-                uv(k, u0, v0);
-                uv(k + 1, u1, v1);
-                line(evaluateNet(net, pt.basis, pt.tension, u0, v0).p, evaluateNet(net, pt.basis, pt.tension, u1, v1).p,
-                     hl ? IM_COL32(255, 120, 255, 255) : IM_COL32(80, 220, 255, 255), hl ? 4.0f : 2.5f);
-            }
+            const std::vector<Vec3> c = boundaryCurve(doc_, uint32_t(sel_.patch), Edge(e));
+            for (size_t k = 0; k + 1 < c.size(); ++k)
+                line(c[k], c[k + 1], hl ? IM_COL32(255, 120, 255, 255) : IM_COL32(80, 220, 255, 255), hl ? 4.0f : 2.5f);
         }
-    }
 
     // Selected Bézier triangle: its three boundary curves.
     if (sel_.triangle >= 0 && sel_.triangle < int(doc_.triangles.size())) {
