@@ -256,6 +256,10 @@ std::string exportGltfBytes(const Document& doc, bool binary, const GltfExportOp
 
     tinygltf::Node node;
     node.name = documentName(doc);
+    // glTF is +Y up: a Z-up document turns -90° about X (+Z to +Y, -Y, its front, to +Z) in the
+    // node, so three.js, Blender and assimp show it upright while the vertices stay exactly the
+    // document's surface (and the import, which reads the document from the extras, stays exact).
+    if (doc.camera.zUp) node.rotation = {-0.70710678118654752, 0.0, 0.0, 0.70710678118654752};
     if (!gmesh.primitives.empty()) {
         model.meshes.push_back(std::move(gmesh));
         node.mesh = 0;
