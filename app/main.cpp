@@ -10,6 +10,7 @@
 int main(int argc, char** argv) {
     CLI::App app{"Patchwork — a Bézier/spline patch editor on the GPU tessellation pipeline"};
     app.require_subcommand(0, 1);
+    app.set_version_flag("--version", "patchwork " PATCHWORK_VERSION);
     std::string file;
     app.add_option("file", file, "Document to open (.patchwork, .bpt, .gltf, .glb); default: the built-in teapot");
 

@@ -62,3 +62,9 @@ TEST(EditCli, BadLineExitsTwoAndWritesNothing) {
     EXPECT_EQ(r3.exitCode, 2);
     EXPECT_FALSE(fs::exists(dir / "x.txt"));
 }
+
+TEST(EditCli, VersionPrintsTheProjectVersion) {
+    const auto r = test::runCommand(bin() + " --version");
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_EQ(r.output, "patchwork " PATCHWORK_VERSION "\n");
+}
