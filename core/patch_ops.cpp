@@ -238,20 +238,17 @@ bool pairsReversed(const Document& doc, const Patch& A, Edge ea, const Patch& B,
 bool patchIsFree(const Document& doc, uint32_t b, Edge eb) {
     for (const Join& j : doc.joins)
         if (j.patchA == b || j.patchB == b) return false;
-    std::vector<uint8_t> mine(doc.points.size(), 0);
-    for (uint32_t i : doc.patches[b].idx) mine[i] = 1;
-    for (int k = 0; k < 4; ++k) mine[doc.patches[b].idx[size_t(edgeSlot(eb, k, 0))]] = 0;
-    bool shared = false;
-    for (size_t p = 0; p < doc.patches.size(); ++p)
-        if (p != b)
-            for (uint32_t i : doc.patches[p].idx) shared = shared || mine[i];
-    for (const Surface& s : doc.surfaces)
-        for (uint32_t i : s.idx) shared = shared || (i < mine.size() && mine[i]);
-    for (const TrianglePatch& t : doc.triangles)
-        for (uint32_t i : t.idx) shared = shared || mine[i];
-    for (const BezierCurve& c : doc.curves)
-        for (uint32_t i : c.idx) shared = shared || mine[i];
-    return !shared;
+    // Uses of each point by every item, less b's own: what is left is another item's.
+    std::vector<uint32_t> uses(doc.points.size(), 0);
+    forEachPointIndex(doc, [&](uint32_t i) {
+        if (i < uses.size()) ++uses[i];
+    });
+    const Patch& B = doc.patches[b];
+    for (uint32_t i : B.idx) --uses[i];
+    for (int k = 0; k < 4; ++k) uses[B.idx[size_t(edgeSlot(eb, k, 0))]] = 0;
+    for (uint32_t i : B.idx)
+        if (uses[i] > 0) return false;
+    return true;
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/picking.hpp"
+
 namespace pw {
 
 std::string symmetryName(const Symmetry& s) { return s.on() ? std::string(1, char('X' + s.axis)) : "off"; }
@@ -26,10 +28,8 @@ SymmetryPairs symmetryPairs(const Document& doc, const std::vector<uint32_t>& mo
     SymmetryPairs out;
     if (!s.on()) return out;
     const double tol = 1e-6 * std::max(modelSize(doc), 1e-9);
-    std::vector<bool> used(doc.points.size(), false), isMoved(doc.points.size(), false);
-    forEachPointIndex(doc, [&](uint32_t i) {
-        if (i < used.size()) used[i] = true;
-    });
+    const std::vector<bool> used = usedPointMask(doc);
+    std::vector<bool> isMoved(doc.points.size(), false);
     for (uint32_t p : moved)
         if (p < isMoved.size()) isMoved[p] = true;
     // Candidates sorted by the mirror axis: each search looks at a thin slab only.

@@ -104,7 +104,7 @@ void Editor::drawJoinPanel() {
         for (Continuity c : {Continuity::C0, Continuity::C1, Continuity::G1}) {
             ImGui::SameLine();
             if (ImGui::RadioButton(std::string(continuityName(c)).c_str(), join_.continuity == c) && join_.continuity != c) {
-                if (session_.version() == join_.version) runCommand({"undo"});
+                endJoinPreview(false);  // take it back, run it again with c
                 joinPreview(c);
             }
             traceItem("join." + std::string(continuityName(c)));
