@@ -1,8 +1,10 @@
 // `patchwork convert IN OUT`: any loadable document to any savable one, by extension (.patchwork,
-// .bpt, .gltf, .glb). glTF output uses the default export options. The output is written
+// .bpt, .gltf, .glb). glTF output uses the input's export options when it is a Patchwork glTF, else
+// the defaults. The output is written
 // atomically: on any error nothing is left at OUT (an existing file there stays as it was).
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "app/commands.hpp"
@@ -24,8 +26,9 @@ int runConvert(const ConvertOptions& opt) {
     const std::string ext = lowerExtension(opt.output);
     if (ext != ".patchwork" && ext != ".bpt" && ext != ".gltf" && ext != ".glb")
         throw OutputError(opt.output, "unknown file type '" + ext + "'; Patchwork writes .patchwork, .bpt, .gltf or .glb");
-    const Document doc = loadDocument(opt.input);
-    saveDocument(doc, opt.output);
+    std::optional<GltfExportOptions> stored;
+    const Document doc = loadDocument(opt.input, &stored);
+    saveDocument(doc, opt.output, stored.value_or(GltfExportOptions{}));
     if (!opt.quiet)
         std::cout << "wrote " << opt.output << " (" << doc.patches.size() << " patches, " << doc.surfaces.size()
                   << " surfaces, " << doc.points.size() << " points, " << doc.joins.size() << " joins)\n";

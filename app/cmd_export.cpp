@@ -1,7 +1,10 @@
-// `patchwork export FILE -o OUT [--tess N] [--merge] [--cage]`: tessellates the document and writes a
-// glTF 2.0 file (.gltf with an embedded buffer, or .glb) that also carries the editable patches.
+// `patchwork export FILE -o OUT [--tess N] [--primitives surfaces|patches|single] [--cage]`:
+// tessellates the document and writes a glTF 2.0 file (.gltf with an embedded buffer, or .glb) that
+// also carries the editable patches. Options not given come from FILE's own export options when it
+// is a Patchwork glTF (so re-exporting it without flags writes the same file), else the defaults.
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "app/commands.hpp"
@@ -19,8 +22,9 @@ struct ExportArgs {
     std::string output;
     int tess = 0;  // 0 = the document's level
     bool tessGiven = false;
-    bool merge = false;
+    std::string primitives;  // empty: not given
     bool cage = false;
+    bool cageGiven = false;
 };
 
 int runExport(const ExportArgs& args) {
@@ -29,18 +33,28 @@ int runExport(const ExportArgs& args) {
                   << args.tess << ")\n";
         return 2;
     }
+    const auto grouping = args.primitives.empty() ? std::nullopt : parseMeshGrouping(args.primitives);
+    if (!args.primitives.empty() && !grouping) {
+        std::cerr << "patchwork export: --primitives must be surfaces, patches or single (got " << args.primitives << ")\n";
+        return 2;
+    }
     (void)checkOutputPath(args.output);  // refuse an unwritable output before tessellating
-    const Document doc = loadDocument(args.input);
-    GltfExportOptions options;
-    options.level = args.tessGiven ? args.tess : 0;
-    options.merge = args.merge;
-    options.cage = args.cage;
+    std::optional<GltfExportOptions> stored;
+    const Document doc = loadDocument(args.input, &stored);
+    GltfExportOptions options = stored.value_or(GltfExportOptions{});
+    if (args.tessGiven) options.level = args.tess;
+    if (grouping) options.primitives = *grouping;
+    if (args.cageGiven) options.cage = args.cage;
     const GltfExportStats stats = exportGltfWithStats(doc, args.output, options);
     std::cout << "wrote " << args.output << ": " << stats.triangles << " triangles, " << stats.vertices << " vertices";
-    if (args.cage) std::cout << ", " << stats.cageSegments << " cage segments";
+    if (options.cage) std::cout << ", " << stats.cageSegments << " cage segments";
     if (stats.curveSegments) std::cout << ", " << stats.curveSegments << " curve segments";
     std::cout << ", " << stats.bytes << " bytes (level " << stats.level << ", "
-              << (args.merge ? "one merged primitive" : "one primitive per patch") << ")\n";
+              << stats.primitives << (stats.primitives == 1 ? " primitive" : " primitives") << " ("
+              << (options.primitives == MeshGrouping::Surfaces  ? "one per connected surface"
+                  : options.primitives == MeshGrouping::Patches ? "one per patch"
+                                                                : "all in one")
+              << "), " << stats.openSurfaces << " open and double-sided)\n";
     return 0;
 }
 
@@ -53,9 +67,14 @@ void registerExportCommand(CLI::App& app, Action& run) {
     cmd->add_option("--tess", args->tess,
                     "Tessellation level per patch side, 1.." + std::to_string(limits::kMaxExportLevel) +
                         " (default: the document's level)");
-    cmd->add_flag("--merge", args->merge, "One mesh primitive for everything instead of one per patch");
-    cmd->add_flag("--cage", args->cage, "Add the control cage as a LINES primitive");
-    cmd->parse_complete_callback([cmd = cmd, args = args] { args->tessGiven = cmd->count("--tess") > 0; });
+    cmd->add_option("--primitives", args->primitives,
+                    "surfaces: one welded primitive per connected surface (default); patches: one per patch, each with "
+                    "its own vertices; single: one for everything");
+    cmd->add_flag("--cage,!--no-cage", args->cage, "Add the control cage as lines in its own node (unlit)");
+    cmd->parse_complete_callback([cmd = cmd, args = args] {
+        args->tessGiven = cmd->count("--tess") > 0;
+        args->cageGiven = cmd->count("--cage") + cmd->count("--no-cage") > 0;
+    });
 }
 
 }  // namespace pw::app

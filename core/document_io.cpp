@@ -14,11 +14,12 @@ namespace {
 constexpr const char* kLoadable = ".patchwork, .bpt, .gltf or .glb";
 }
 
-Document loadDocument(const std::filesystem::path& path) {
+Document loadDocument(const std::filesystem::path& path, std::optional<GltfExportOptions>* exportOptions) {
     const std::string ext = lowerExtension(path);
+    if (exportOptions) exportOptions->reset();
     if (ext == ".patchwork") return parseDocument(readFileLimited(path), path.string());
     if (ext == ".bpt") return loadBpt(path);
-    if (ext == ".gltf" || ext == ".glb") return importPatchworkGltf(path);
+    if (ext == ".gltf" || ext == ".glb") return importPatchworkGltf(path, exportOptions);
     throw InputError(path.string(), "unknown file type '" + ext + "'; Patchwork reads " + kLoadable);
 }
 

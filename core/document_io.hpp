@@ -3,13 +3,15 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 
 #include "core/document.hpp"
 #include "core/gltf_export.hpp"
 
 namespace pw {
 
-Document loadDocument(const std::filesystem::path& path);
+// exportOptions (when given): the options a Patchwork glTF was exported with, else nullopt.
+Document loadDocument(const std::filesystem::path& path, std::optional<GltfExportOptions>* exportOptions = nullptr);
 void saveDocument(const Document& doc, const std::filesystem::path& path, const GltfExportOptions& gltf = {});
 
 // Formats that keep everything a document holds (patches, nets, triangles, curves, joins):

@@ -50,7 +50,11 @@ void EditSession::newDocument() {
     reset(std::move(d), "");
 }
 
-void EditSession::open(const std::string& path) { reset(loadDocument(path), path); }
+void EditSession::open(const std::string& path) {
+    std::optional<GltfExportOptions> stored;  // a Patchwork glTF saves back with its own export options
+    reset(loadDocument(path, &stored), path);
+    if (stored) exportOptions = *stored;
+}
 
 MergedRange EditSession::import(const std::string& path) {
     const Document from = loadDocument(path);

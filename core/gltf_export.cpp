@@ -1,6 +1,7 @@
-// glTF 2.0 export through tinygltf (DESIGN §5): the welded mesh in one buffer (POSITION, NORMAL,
-// TEXCOORD_0, indices; optional control cage as LINES), one scene, one node, one mesh, one
-// material, and the editable document in asset.extras.patchwork.
+// glTF 2.0 export through tinygltf (DESIGN §5): one buffer; a root node (turning a Z-up document
+// to glTF's +Y up) with a surface node (one primitive per connected surface, patch, or all, each
+// with its own POSITION / NORMAL / TEXCOORD_0 range), a control-cage node and a curves node (LINES,
+// unlit); the editable document in asset.extras.patchwork and the options in patchworkExport.
 #include "core/gltf_export.hpp"
 
 #include <tiny_gltf.h>
@@ -19,6 +20,7 @@
 #include "core/file_io.hpp"
 #include "core/glb_container.hpp"
 #include "core/limits.hpp"
+#include "core/mesh_split.hpp"
 #include "core/mesh_tessellate.hpp"
 #include "core/patchwork_format.hpp"
 
@@ -54,7 +56,8 @@ std::string spliceExtras(const std::string& file, bool binary, const std::string
 size_t align4(size_t n) { return (n + 3) & ~size_t{3}; }
 
 // Appends a block to the buffer (4-byte aligned) and a bufferView over it; returns the view index.
-int addView(tinygltf::Model& model, const void* data, size_t bytes, int target) {
+// Vertex views give their stride (the validator wants it when several accessors share a view).
+int addView(tinygltf::Model& model, const void* data, size_t bytes, int target, int stride = 0) {
     std::vector<unsigned char>& buf = model.buffers[0].data;
     const size_t offset = align4(buf.size());
     buf.resize(offset, 0);
@@ -65,6 +68,7 @@ int addView(tinygltf::Model& model, const void* data, size_t bytes, int target) 
     view.byteOffset = offset;
     view.byteLength = bytes;
     view.target = target;
+    view.byteStride = stride;
     model.bufferViews.push_back(view);
     return static_cast<int>(model.bufferViews.size()) - 1;
 }
@@ -81,12 +85,12 @@ int addAccessor(tinygltf::Model& model, int view, size_t byteOffset, int compone
 }
 
 // POSITION needs min and max; they are computed from the stored floats, so they match exactly.
-void setMinMax(tinygltf::Accessor& acc, const std::vector<std::array<float, 3>>& positions) {
-    std::array<float, 3> lo = positions.front(), hi = positions.front();
-    for (const auto& p : positions)
+void setMinMax(tinygltf::Accessor& acc, const std::array<float, 3>* positions, size_t count) {
+    std::array<float, 3> lo = positions[0], hi = positions[0];
+    for (size_t i = 0; i < count; ++i)
         for (int k = 0; k < 3; ++k) {
-            lo[k] = std::min(lo[k], p[k]);
-            hi[k] = std::max(hi[k], p[k]);
+            lo[k] = std::min(lo[k], positions[i][k]);
+            hi[k] = std::max(hi[k], positions[i][k]);
         }
     acc.minValues = {lo[0], lo[1], lo[2]};
     acc.maxValues = {hi[0], hi[1], hi[2]};
@@ -109,7 +113,81 @@ int addIndexView(tinygltf::Model& model, const std::vector<uint32_t>& indices, s
 
 std::string documentName(const Document& doc) { return doc.name.empty() ? std::string("Patchwork") : doc.name; }
 
+int addSurfaceMaterial(tinygltf::Model& model, bool doubleSided) {
+    tinygltf::Material material;
+    material.name = doubleSided ? "Patchwork surface (open, double-sided)" : "Patchwork surface";
+    material.pbrMetallicRoughness.baseColorFactor = {0.8, 0.8, 0.8, 1.0};
+    material.pbrMetallicRoughness.metallicFactor = 0.0;
+    material.pbrMetallicRoughness.roughnessFactor = 0.5;
+    material.doubleSided = doubleSided;
+    model.materials.push_back(material);
+    return static_cast<int>(model.materials.size()) - 1;
+}
+
+// Lines are not lit (KHR_materials_unlit; readers without it fall back to the base colour).
+int addLineMaterial(tinygltf::Model& model, const std::string& name, std::vector<double> color) {
+    tinygltf::Material material;
+    material.name = name;
+    material.pbrMetallicRoughness.baseColorFactor = std::move(color);
+    material.pbrMetallicRoughness.metallicFactor = 0.0;
+    material.pbrMetallicRoughness.roughnessFactor = 1.0;
+    material.extensions["KHR_materials_unlit"] = tinygltf::Value(tinygltf::Value::Object{});
+    if (std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(), "KHR_materials_unlit") == model.extensionsUsed.end())
+        model.extensionsUsed.push_back("KHR_materials_unlit");
+    model.materials.push_back(material);
+    return static_cast<int>(model.materials.size()) - 1;
+}
+
+// A mesh of one LINES primitive over its own positions.
+tinygltf::Mesh linesMesh(tinygltf::Model& model, const std::vector<std::array<float, 3>>& positions,
+                         const std::vector<uint32_t>& indices, int material) {
+    const size_t nv = positions.size();
+    const int posView = addView(model, positions.data(), nv * 12, TINYGLTF_TARGET_ARRAY_BUFFER);
+    const int posAcc = addAccessor(model, posView, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, nv);
+    setMinMax(model.accessors[posAcc], positions.data(), nv);
+    int componentType = 0;
+    size_t componentSize = 0;
+    const int idxView = addIndexView(model, indices, nv, componentType, componentSize);
+    tinygltf::Primitive prim;
+    prim.attributes["POSITION"] = posAcc;
+    prim.indices = addAccessor(model, idxView, 0, componentType, TINYGLTF_TYPE_SCALAR, indices.size());
+    prim.mode = TINYGLTF_MODE_LINE;
+    prim.material = material;
+    tinygltf::Mesh mesh;
+    mesh.primitives.push_back(std::move(prim));
+    return mesh;
+}
+
+tinygltf::Value exportOptionsValue(const GltfExportOptions& o) {
+    tinygltf::Value::Object v;
+    v.emplace("level", tinygltf::Value(o.level));
+    v.emplace("primitives", tinygltf::Value(std::string(meshGroupingName(o.primitives))));
+    v.emplace("cage", tinygltf::Value(o.cage));
+    return tinygltf::Value(std::move(v));
+}
+
 }  // namespace
+
+std::optional<GltfExportOptions> exportOptionsFromJson(const nlohmann::json& j, const std::string& source) {
+    const std::string at = "asset.extras.patchworkExport";
+    if (!j.is_object()) throw InputError(source, "the export options are not an object", 0, at);
+    GltfExportOptions o;
+    if (const auto l = j.find("level"); l != j.end()) {
+        if (!l->is_number_integer() || l->get<int64_t>() < 0 || l->get<int64_t>() > limits::kMaxExportLevel)
+            throw InputError(source, "must be an integer from 0 to " + std::to_string(limits::kMaxExportLevel), 0, at + ".level");
+        o.level = l->get<int>();
+    }
+    if (const auto p = j.find("primitives"); p != j.end()) {
+        const auto g = p->is_string() ? parseMeshGrouping(p->get<std::string>()) : std::nullopt;
+        if (!g) throw InputError(source, "must be \"surfaces\", \"patches\" or \"single\"", 0, at + ".primitives");
+        o.primitives = *g;
+    }
+    if (const auto c = j.find("cage"); c != j.end()) {
+        if (!c->is_boolean()) throw InputError(source, "must be true or false", 0, at + ".cage");
+        o.cage = c->get<bool>();
+    }
+    return o;
+}
 
 int resolveExportLevel(const Document& doc, int requested) {
     double level = requested;
@@ -145,108 +223,91 @@ std::string exportGltfBytes(const Document& doc, bool binary, const GltfExportOp
     model.asset.version = "2.0";
     model.asset.generator = "Patchwork";
     {
+        GltfExportOptions used = options;
+        used.level = level;
         tinygltf::Value::Object extras;
         extras.emplace("patchwork", tinygltf::Value(marker));
+        extras.emplace("patchworkExport", exportOptionsValue(used));
         model.asset.extras = tinygltf::Value(std::move(extras));
     }
     model.buffers.emplace_back();
 
-    tinygltf::Mesh gmesh;
-    gmesh.name = documentName(doc);
+    tinygltf::Node root;
+    root.name = documentName(doc);
+    // glTF is +Y up: a Z-up document turns -90° about X (+Z to +Y, -Y, its front, to +Z) in the
+    // root node, so three.js, Blender and assimp show it upright while the vertices stay exactly the
+    // document's surface (and the import, which reads the document from the extras, stays exact).
+    if (doc.camera.zUp) root.rotation = {-0.70710678118654752, 0.0, 0.0, 0.70710678118654752};
+    model.nodes.push_back(root);
+    auto addMeshNode = [&](tinygltf::Mesh&& mesh, const std::string& what) {
+        mesh.name = documentName(doc) + " " + what;
+        model.meshes.push_back(std::move(mesh));
+        tinygltf::Node node;
+        node.name = documentName(doc) + " " + what;
+        node.mesh = static_cast<int>(model.meshes.size()) - 1;
+        model.nodes.push_back(std::move(node));
+        model.nodes[0].children.push_back(static_cast<int>(model.nodes.size()) - 1);
+    };
     const CageLines cage = options.cage ? controlCage(doc) : CageLines{};
-    const size_t cageBytes = cage.positions.size() * 12 + cage.indices.size() * 4 + 16;
 
-    // The surface: shared POSITION / NORMAL / TEXCOORD_0, and per window (or merged) triangle lists.
+    // The surface: one primitive per group (connected surface, patch, or all), each with its own
+    // vertices; open surfaces (a boundary edge anywhere) are double-sided.
     {
-        TriangleMesh mesh = tessellateDocument(doc, level);
+        SplitMesh mesh = splitMesh(tessellateDocument(doc, level), options.primitives);
         st.triangles = mesh.indices.size() / 3;
         st.vertices = mesh.positions.size();
+        st.primitives = mesh.groups.size();
         if (!mesh.indices.empty()) {
             const size_t nv = mesh.positions.size();
-            model.buffers[0].data.reserve(nv * 32 + mesh.indices.size() * 4 + cageBytes + 64);
-            const int posView = addView(model, mesh.positions.data(), nv * 12, TINYGLTF_TARGET_ARRAY_BUFFER);
-            const int nrmView = addView(model, mesh.normals.data(), nv * 12, TINYGLTF_TARGET_ARRAY_BUFFER);
-            const int uvView = addView(model, mesh.uvs.data(), nv * 8, TINYGLTF_TARGET_ARRAY_BUFFER);
-            const int posAcc = addAccessor(model, posView, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, nv);
-            setMinMax(model.accessors[posAcc], mesh.positions);
-            const int nrmAcc = addAccessor(model, nrmView, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, nv);
-            const int uvAcc = addAccessor(model, uvView, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, nv);
+            model.buffers[0].data.reserve(nv * 32 + mesh.indices.size() * 4 + cage.positions.size() * 12 +
+                                          cage.indices.size() * 4 + 64);
+            const int posView = addView(model, mesh.positions.data(), nv * 12, TINYGLTF_TARGET_ARRAY_BUFFER, 12);
+            const int nrmView = addView(model, mesh.normals.data(), nv * 12, TINYGLTF_TARGET_ARRAY_BUFFER, 12);
+            const int uvView = addView(model, mesh.uvs.data(), nv * 8, TINYGLTF_TARGET_ARRAY_BUFFER, 8);
+            uint32_t largest = 0;
+            for (const MeshGroup& g : mesh.groups) largest = std::max(largest, g.vertexCount);
             int componentType = 0;
             size_t componentSize = 0;
-            const int idxView = addIndexView(model, mesh.indices, nv, componentType, componentSize);
-
-            tinygltf::Material material;
-            material.name = "Patchwork surface";
-            material.pbrMetallicRoughness.baseColorFactor = {0.8, 0.8, 0.8, 1.0};
-            material.pbrMetallicRoughness.metallicFactor = 0.0;
-            material.pbrMetallicRoughness.roughnessFactor = 0.5;
-            material.doubleSided = false;
-            model.materials.push_back(material);
-
-            auto addPrimitive = [&](size_t firstIndex, size_t count) {
+            const int idxView = addIndexView(model, mesh.indices, largest, componentType, componentSize);
+            int material[2] = {-1, -1};  // single-sided, double-sided
+            tinygltf::Mesh gmesh;
+            for (const MeshGroup& g : mesh.groups) {
                 tinygltf::Primitive prim;
-                prim.attributes["POSITION"] = posAcc;
-                prim.attributes["NORMAL"] = nrmAcc;
-                prim.attributes["TEXCOORD_0"] = uvAcc;
-                prim.indices = addAccessor(model, idxView, firstIndex * componentSize, componentType, TINYGLTF_TYPE_SCALAR, count);
-                prim.material = 0;
+                prim.attributes["POSITION"] = addAccessor(model, posView, g.firstVertex * 12, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, g.vertexCount);
+                setMinMax(model.accessors.back(), mesh.positions.data() + g.firstVertex, g.vertexCount);
+                prim.attributes["NORMAL"] = addAccessor(model, nrmView, g.firstVertex * 12, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, g.vertexCount);
+                prim.attributes["TEXCOORD_0"] = addAccessor(model, uvView, g.firstVertex * 8, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, g.vertexCount);
+                prim.indices = addAccessor(model, idxView, g.firstIndex * componentSize, componentType, TINYGLTF_TYPE_SCALAR, g.indexCount);
+                int& m = material[g.closed ? 0 : 1];
+                if (m < 0) m = addSurfaceMaterial(model, !g.closed);
+                prim.material = m;
                 prim.mode = TINYGLTF_MODE_TRIANGLES;
                 gmesh.primitives.push_back(std::move(prim));
-            };
-            if (options.merge) {
-                addPrimitive(0, mesh.indices.size());
-            } else {
-                for (const MeshRange& r : mesh.perWindow)
-                    if (r.indexCount > 0) addPrimitive(r.firstIndex, r.indexCount);
-                for (const MeshRange& r : mesh.perTriangle)
-                    if (r.indexCount > 0) addPrimitive(r.firstIndex, r.indexCount);
+                if (!g.closed) ++st.openSurfaces;
             }
+            addMeshNode(std::move(gmesh), "surface");
         }
     }  // the mesh's memory is released here, before serialising
 
-    // The control cage: a LINES primitive with its own positions and no material.
+    // The control cage: LINES with their own positions and an unlit material, in their own node.
     if (options.cage) {
         st.cageSegments = cage.indices.size() / 2;
-        if (!cage.indices.empty()) {
-            const size_t nv = cage.positions.size();
-            const int posView = addView(model, cage.positions.data(), nv * 12, TINYGLTF_TARGET_ARRAY_BUFFER);
-            const int posAcc = addAccessor(model, posView, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, nv);
-            setMinMax(model.accessors[posAcc], cage.positions);
-            int componentType = 0;
-            size_t componentSize = 0;
-            const int idxView = addIndexView(model, cage.indices, nv, componentType, componentSize);
-            tinygltf::Primitive prim;
-            prim.attributes["POSITION"] = posAcc;
-            prim.indices = addAccessor(model, idxView, 0, componentType, TINYGLTF_TYPE_SCALAR, cage.indices.size());
-            prim.mode = TINYGLTF_MODE_LINE;
-            gmesh.primitives.push_back(std::move(prim));
-        }
+        if (!cage.indices.empty()) addMeshNode(linesMesh(model, cage.positions, cage.indices, addLineMaterial(model, "Patchwork control cage", {0.25, 0.35, 0.55, 1.0})), "control cage");
     }
 
-    // Bézier curves: one LINE_STRIP each, `level` segments, on one shared position accessor.
+    // Bézier curves: `level` segments each, as LINES (pairs), unlit, in their own node.
     if (!doc.curves.empty()) {
         std::vector<std::array<float, 3>> positions;
+        std::vector<uint32_t> indices;
         positions.reserve(doc.curves.size() * size_t(level + 1));
-        for (const BezierCurve& c : doc.curves)
+        indices.reserve(doc.curves.size() * size_t(level) * 2);
+        for (const BezierCurve& c : doc.curves) {
+            const auto first = uint32_t(positions.size());
             for (const Vec3& q : sampleCurve(curvePoints(doc, c), level)) positions.push_back({float(q.x), float(q.y), float(q.z)});
-        std::vector<uint32_t> indices(positions.size());
-        for (size_t i = 0; i < indices.size(); ++i) indices[i] = uint32_t(i);
-        const size_t nv = positions.size();
-        const int posView = addView(model, positions.data(), nv * 12, TINYGLTF_TARGET_ARRAY_BUFFER);
-        const int posAcc = addAccessor(model, posView, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, nv);
-        setMinMax(model.accessors[posAcc], positions);
-        int componentType = 0;
-        size_t componentSize = 0;
-        const int idxView = addIndexView(model, indices, nv, componentType, componentSize);
-        const size_t perCurve = size_t(level) + 1;
-        for (size_t c = 0; c < doc.curves.size(); ++c) {
-            tinygltf::Primitive prim;
-            prim.attributes["POSITION"] = posAcc;
-            prim.indices = addAccessor(model, idxView, c * perCurve * componentSize, componentType, TINYGLTF_TYPE_SCALAR, perCurve);
-            prim.mode = TINYGLTF_MODE_LINE_STRIP;
-            gmesh.primitives.push_back(std::move(prim));
+            for (uint32_t i = first + 1; i < positions.size(); ++i) indices.insert(indices.end(), {i - 1, i});
         }
-        st.curveSegments = doc.curves.size() * size_t(level);
+        st.curveSegments = indices.size() / 2;
+        addMeshNode(linesMesh(model, positions, indices, addLineMaterial(model, "Patchwork curves", {0.85, 0.45, 0.1, 1.0})), "curves");
     }
 
     // The buffer's length is a multiple of 4 (GLB chunk alignment); an empty buffer is left out.
@@ -254,17 +315,6 @@ std::string exportGltfBytes(const Document& doc, bool binary, const GltfExportOp
     buf.resize(align4(buf.size()), 0);
     if (buf.empty()) model.buffers.clear();
 
-    tinygltf::Node node;
-    node.name = documentName(doc);
-    // glTF is +Y up: a Z-up document turns -90° about X (+Z to +Y, -Y, its front, to +Z) in the
-    // node, so three.js, Blender and assimp show it upright while the vertices stay exactly the
-    // document's surface (and the import, which reads the document from the extras, stays exact).
-    if (doc.camera.zUp) node.rotation = {-0.70710678118654752, 0.0, 0.0, 0.70710678118654752};
-    if (!gmesh.primitives.empty()) {
-        model.meshes.push_back(std::move(gmesh));
-        node.mesh = 0;
-    }
-    model.nodes.push_back(std::move(node));
     tinygltf::Scene scene;
     scene.name = documentName(doc);
     scene.nodes = {0};

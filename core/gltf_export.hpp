@@ -5,15 +5,25 @@
 #include <filesystem>
 #include <string>
 
+#include <nlohmann/json_fwd.hpp>
+#include <optional>
+
 #include "core/document.hpp"
+#include "core/mesh_split.hpp"
 
 namespace pw {
 
 struct GltfExportOptions {
-    int level = 0;       // tessellation level; 0 = the document's (max of its uniform levels, rounded up)
-    bool merge = false;  // one mesh primitive for everything instead of one per patch
-    bool cage = false;   // add the control cage as a LINES primitive
+    int level = 0;  // tessellation level; 0 = the document's (max of its uniform levels, rounded up)
+    MeshGrouping primitives = MeshGrouping::Surfaces;  // one primitive per connected surface, patch, or one
+    bool cage = false;  // add the control cage (LINES, its own node)
+    bool operator==(const GltfExportOptions&) const = default;
 };
+
+// The options an export used, kept in asset.extras.patchworkExport ({"level", "primitives",
+// "cage"}) so a re-export without flags writes the same file. nullopt when the extras have none;
+// InputError naming `field` when they are malformed.
+std::optional<GltfExportOptions> exportOptionsFromJson(const nlohmann::json& j, const std::string& source);
 
 // The file's bytes: binary (.glb) or JSON (.gltf, buffer as a data URI). The editable document
 // (documentToJson) is stored in the asset's extras under "patchwork".
@@ -26,7 +36,9 @@ void exportGltf(const Document& doc, const std::filesystem::path& path, const Gl
 struct GltfExportStats {
     int level = 0;            // the tessellation level used
     size_t triangles = 0;
-    size_t vertices = 0;      // of the surface mesh (welded)
+    size_t vertices = 0;      // of the surface mesh (welded within each primitive)
+    size_t primitives = 0;    // surface primitives
+    size_t openSurfaces = 0;  // of them, open (double-sided)
     size_t cageSegments = 0;  // 0 without the cage
     size_t curveSegments = 0;  // line-strip segments of the document's Bézier curves
     size_t bytes = 0;         // size of the file

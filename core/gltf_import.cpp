@@ -91,11 +91,11 @@ bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int
 
 }  // namespace
 
-Document importPatchworkGltf(const std::filesystem::path& path) {
-    return parsePatchworkGltf(readFileLimited(path), path.string());
+Document importPatchworkGltf(const std::filesystem::path& path, std::optional<GltfExportOptions>* exportOptions) {
+    return parsePatchworkGltf(readFileLimited(path), path.string(), exportOptions);
 }
 
-Document parsePatchworkGltf(std::string_view data, const std::string& name) {
+Document parsePatchworkGltf(std::string_view data, const std::string& name, std::optional<GltfExportOptions>* exportOptions) {
     tinygltf::TinyGLTF loader;
     tinygltf::FsCallbacks fs{};
     fs.FileExists = fileNeverExists;
@@ -116,6 +116,10 @@ Document parsePatchworkGltf(std::string_view data, const std::string& name) {
     // The document leaves the DOM here; the glTF reader then checks the rest of the structure
     // (asset, accessors, views, chunks) without it: its own DOM of a million patches took 4 GB.
     auto [extras, field] = findPatchworkExtras(gltf);
+    std::optional<GltfExportOptions> options;
+    if (const auto a = gltf.find("asset"); a != gltf.end() && a->is_object())
+        if (const auto x = a->find("extras"); x != a->end() && x->is_object())
+            if (const auto o = x->find("patchworkExport"); o != x->end()) options = exportOptionsFromJson(*o, name);
     nlohmann::json json;
     if (extras) {
         json = std::move(*extras);
@@ -144,7 +148,9 @@ Document parsePatchworkGltf(std::string_view data, const std::string& name) {
                                "can be imported as patches)", 0, "asset.extras.patchwork");
     if (!json.is_object()) throw InputError(name, "the patchwork extras are not an object", 0, field);
     restoreDroppedEmpties(json, documentTemplate());
-    return documentFromJson(json, name, field);
+    Document doc = documentFromJson(json, name, field);
+    if (exportOptions) *exportOptions = options;
+    return doc;
 }
 
 }  // namespace pw

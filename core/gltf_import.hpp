@@ -3,17 +3,22 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 
 #include "core/document.hpp"
+#include "core/gltf_export.hpp"
 
 namespace pw {
 
-Document importPatchworkGltf(const std::filesystem::path& path);
+// exportOptions (when given) receives the options the file was exported with (extras
+// patchworkExport), or nullopt for a file without them.
+Document importPatchworkGltf(const std::filesystem::path& path, std::optional<GltfExportOptions>* exportOptions = nullptr);
 
 // The same from the file's bytes (.glb when they start with "glTF", else JSON). Reads no other
 // file and decodes no image: a hostile glTF cannot make Patchwork open paths its URIs name.
-Document parsePatchworkGltf(std::string_view data, const std::string& sourceName);
+Document parsePatchworkGltf(std::string_view data, const std::string& sourceName,
+                            std::optional<GltfExportOptions>* exportOptions = nullptr);
 
 }  // namespace pw

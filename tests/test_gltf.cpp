@@ -1,5 +1,5 @@
-// glTF 2.0 export and import (DESIGN §5): the tea set at several levels, .glb and .gltf, per-patch or
-// merged, with or without the control cage, passes the Khronos validator with no errors and no
+// glTF 2.0 export and import (DESIGN §5): the tea set at several levels, .glb and .gltf, one primitive
+// per connected surface, per patch or one, with or without the control cage, passes the Khronos validator with no errors and no
 // warnings; the file carries the editable document; import restores it; the command line refuses
 // bad levels and unwritable paths.
 #include <gtest/gtest.h>
@@ -12,6 +12,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -96,36 +97,80 @@ std::vector<std::array<float, 3>> readVec3(const tinygltf::Model& model, int acc
     return out;
 }
 
-void checkStructure(const fs::path& path, bool merge, bool cage, size_t patches) {
+// The mesh of the root's child node named "<document> <what>", or nullptr.
+const tinygltf::Mesh* childMesh(const tinygltf::Model& model, const std::string& what) {
+    if (model.nodes.empty()) return nullptr;
+    for (int c : model.nodes[0].children) {
+        const tinygltf::Node& n = model.nodes[size_t(c)];
+        if (n.name.size() > what.size() && n.name.compare(n.name.size() - what.size(), what.size(), what) == 0 && n.mesh >= 0)
+            return &model.meshes[size_t(n.mesh)];
+    }
+    return nullptr;
+}
+
+template <typename T>
+std::vector<uint32_t> readIndicesAs(const tinygltf::Model& model, const tinygltf::Accessor& acc) {
+    const tinygltf::BufferView& view = model.bufferViews[acc.bufferView];
+    const unsigned char* base = model.buffers[view.buffer].data.data() + view.byteOffset + acc.byteOffset;
+    std::vector<uint32_t> out(acc.count);
+    for (size_t i = 0; i < acc.count; ++i) {
+        T v;
+        std::memcpy(&v, base + i * sizeof(T), sizeof(T));
+        out[i] = v;
+    }
+    return out;
+}
+std::vector<uint32_t> readIndices(const tinygltf::Model& model, int accessor) {
+    const tinygltf::Accessor& acc = model.accessors[size_t(accessor)];
+    return acc.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? readIndicesAs<uint16_t>(model, acc)
+                                                                     : readIndicesAs<uint32_t>(model, acc);
+}
+
+// Layout: a root node with the surface (and cage) children; one surface primitive per group, each
+// indexing exactly its own vertices (all of them); POSITION min/max exact; open groups double-sided.
+void checkStructure(const fs::path& path, pw::MeshGrouping grouping, bool cage, size_t patches, size_t surfaces) {
     SCOPED_TRACE(path.string());
     const tinygltf::Model model = loadWithTinygltf(path);
     EXPECT_EQ(model.asset.generator, "Patchwork");
     EXPECT_EQ(model.asset.version, "2.0");
     ASSERT_EQ(model.scenes.size(), 1u);
-    ASSERT_EQ(model.nodes.size(), 1u);
-    ASSERT_EQ(model.meshes.size(), 1u);
-    ASSERT_EQ(model.materials.size(), 1u);
-    EXPECT_FALSE(model.materials[0].doubleSided);
+    ASSERT_EQ(model.scenes[0].nodes, std::vector<int>{0});
+    ASSERT_EQ(model.nodes.size(), cage ? 3u : 2u);
+    EXPECT_EQ(model.nodes[0].mesh, -1);
+    ASSERT_EQ(model.meshes.size(), cage ? 2u : 1u);
     EXPECT_TRUE(model.asset.extras.Has("patchwork"));
-    const auto& prims = model.meshes[0].primitives;
-    ASSERT_EQ(prims.size(), (merge ? 1 : patches) + (cage ? 1 : 0));
-    size_t lines = 0;
-    for (const tinygltf::Primitive& p : prims) {
-        ASSERT_TRUE(p.mode == TINYGLTF_MODE_TRIANGLES || p.mode == TINYGLTF_MODE_LINE);
-        if (p.mode == TINYGLTF_MODE_LINE) {
-            ++lines;
-            EXPECT_EQ(p.attributes.count("NORMAL"), 0u);
-        } else {
-            EXPECT_EQ(p.material, 0);
-            EXPECT_EQ(p.attributes.count("NORMAL"), 1u);
-            EXPECT_EQ(p.attributes.count("TEXCOORD_0"), 1u);
-        }
-        const tinygltf::Accessor& idx = model.accessors[p.indices];
-        EXPECT_TRUE(idx.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT ||
-                    idx.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
-        // POSITION min/max are exactly the extremes of the stored floats.
+    ASSERT_TRUE(model.asset.extras.Has("patchworkExport"));
+    EXPECT_EQ(model.asset.extras.Get("patchworkExport").Get("primitives").Get<std::string>(), pw::meshGroupingName(grouping));
+    EXPECT_EQ(model.asset.extras.Get("patchworkExport").Get("cage").Get<bool>(), cage);
+    const tinygltf::Mesh* surface = childMesh(model, " surface");
+    ASSERT_NE(surface, nullptr);
+    const size_t want = grouping == pw::MeshGrouping::Single ? 1 : grouping == pw::MeshGrouping::Patches ? patches : surfaces;
+    ASSERT_EQ(surface->primitives.size(), want);
+    for (const tinygltf::Primitive& p : surface->primitives) {
+        ASSERT_EQ(p.mode, TINYGLTF_MODE_TRIANGLES);
+        EXPECT_EQ(p.attributes.count("NORMAL"), 1u);
+        EXPECT_EQ(p.attributes.count("TEXCOORD_0"), 1u);
+        ASSERT_GE(p.material, 0);
+        EXPECT_EQ(model.materials[size_t(p.material)].extensions.count("KHR_materials_unlit"), 0u);
         const int posAcc = p.attributes.at("POSITION");
         const auto pos = readVec3(model, posAcc);
+        const auto idx = readIndices(model, p.indices);
+        std::vector<bool> used(pos.size(), false);
+        for (uint32_t i : idx) {
+            ASSERT_LT(i, pos.size());
+            used[i] = true;
+        }
+        EXPECT_TRUE(std::all_of(used.begin(), used.end(), [](bool u) { return u; })) << "a primitive carries a vertex it does not use";
+        // Open (an edge, by position, used once) exactly when double-sided.
+        std::map<std::pair<std::array<float, 3>, std::array<float, 3>>, int> edges;
+        for (size_t t = 0; t + 2 < idx.size(); t += 3)
+            for (int k = 0; k < 3; ++k) {
+                auto a = pos[idx[t + size_t(k)]], b = pos[idx[t + size_t(k + 1) % 3]];
+                if (b < a) std::swap(a, b);
+                ++edges[{a, b}];
+            }
+        const bool open = std::any_of(edges.begin(), edges.end(), [](const auto& e) { return e.second != 2; });
+        EXPECT_EQ(model.materials[size_t(p.material)].doubleSided, open);
         std::array<float, 3> lo = pos.front(), hi = pos.front();
         for (const auto& q : pos)
             for (int k = 0; k < 3; ++k) {
@@ -140,30 +185,44 @@ void checkStructure(const fs::path& path, bool merge, bool cage, size_t patches)
             EXPECT_EQ(pa.maxValues[k], static_cast<double>(hi[k]));
         }
     }
-    EXPECT_EQ(lines, cage ? 1u : 0u);
+    const tinygltf::Mesh* lines = childMesh(model, " control cage");
+    ASSERT_EQ(lines != nullptr, cage);
+    if (cage) {
+        ASSERT_EQ(lines->primitives.size(), 1u);
+        EXPECT_EQ(lines->primitives[0].mode, TINYGLTF_MODE_LINE);
+        EXPECT_EQ(lines->primitives[0].attributes.count("NORMAL"), 0u);
+        ASSERT_GE(lines->primitives[0].material, 0);
+        EXPECT_EQ(model.materials[size_t(lines->primitives[0].material)].extensions.count("KHR_materials_unlit"), 1u);
+        EXPECT_EQ(std::count(model.extensionsUsed.begin(), model.extensionsUsed.end(), "KHR_materials_unlit"), 1);
+    }
 }
+
+constexpr pw::MeshGrouping kGroupings[] = {pw::MeshGrouping::Surfaces, pw::MeshGrouping::Patches, pw::MeshGrouping::Single};
 
 TEST(Gltf, ValidatorIsInstalled) { EXPECT_FALSE(validatorScript().empty()); }
 
 TEST(Gltf, TeaSetExportsAreValidAndRoundTrip) {
+    // Connected surfaces (by shared vertex positions): the teapot's rim, body, bottom and handle
+    // (the handle's ends meet body vertices), its spout, its lid; the cup (handle included) and the
+    // spoon are one each.
     const fs::path dir = pw::test::freshTempDir("gltf-teaset");
-    for (const std::string name : {"teapot", "teacup", "teaspoon"}) {
+    for (const auto& [name, surfaces] : {std::pair<std::string, size_t>{"teapot", 3}, {"teacup", 1}, {"teaspoon", 1}}) {
         const pw::Document doc = loadModel(name);
         std::vector<fs::path> files;
         for (int level : {1, 4, 16}) {
             for (const std::string ext : {".glb", ".gltf"}) {
-                for (bool merge : {false, true}) {
+                for (pw::MeshGrouping grouping : kGroupings) {
                     for (bool cage : {false, true}) {
-                        const fs::path out = dir / (name + "-L" + std::to_string(level) + (merge ? "-merge" : "") +
+                        const fs::path out = dir / (name + "-L" + std::to_string(level) + "-" + pw::meshGroupingName(grouping) +
                                                     (cage ? "-cage" : "") + ext);
                         pw::GltfExportOptions options;
                         options.level = level;
-                        options.merge = merge;
+                        options.primitives = grouping;
                         options.cage = cage;
                         pw::exportGltf(doc, out, options);
                         ASSERT_TRUE(fs::exists(out));
                         files.push_back(out);
-                        checkStructure(out, merge, cage, doc.patches.size());
+                        checkStructure(out, grouping, cage, doc.patches.size(), surfaces);
                         // The editable document comes back unchanged.
                         const pw::Document back = pw::importPatchworkGltf(out);
                         EXPECT_TRUE(back == doc) << out << ": imported document differs";
@@ -195,21 +254,20 @@ TEST(Gltf, BezierTriangleExportsAreValidAndRoundTrip) {
     int n = 0;
     for (const pw::Document& doc : {pw::makeTriangleDome(1.0, 0.5), mixed}) {
         for (int level : {1, 5, 16}) {
-            for (bool merge : {false, true}) {
-                const fs::path out = dir / ("tri" + std::to_string(n++) + (merge ? "-merge" : "") + (level == 5 ? ".gltf" : ".glb"));
+            for (pw::MeshGrouping grouping : kGroupings) {
+                const fs::path out = dir / ("tri" + std::to_string(n++) + "-" + pw::meshGroupingName(grouping) + (level == 5 ? ".gltf" : ".glb"));
                 pw::GltfExportOptions options;
                 options.level = level;
-                options.merge = merge;
+                options.primitives = grouping;
                 options.cage = level == 5;
                 pw::GltfExportStats stats;
                 stats = pw::exportGltfWithStats(doc, out, options);
                 if (doc.patches.empty()) {
                     EXPECT_EQ(stats.triangles, size_t(6 * level * level));
                 }
-                const tinygltf::Model model = loadWithTinygltf(out);
-                ASSERT_EQ(model.meshes.size(), 1u);
-                const size_t surfacePrims = merge ? 1 : doc.patches.size() + doc.triangles.size();
-                EXPECT_EQ(model.meshes[0].primitives.size(), surfacePrims + (options.cage ? 1 : 0));
+                // The dome is one surface; beside the teapot's three it makes four.
+                const size_t surfaces = doc.patches.empty() ? 1 : 4;
+                checkStructure(out, grouping, options.cage, doc.patches.size() + doc.triangles.size(), surfaces);
                 EXPECT_TRUE(pw::importPatchworkGltf(out) == doc) << out;
                 files.push_back(out);
             }
@@ -219,9 +277,10 @@ TEST(Gltf, BezierTriangleExportsAreValidAndRoundTrip) {
     fs::remove_all(dir);
 }
 
-TEST(Gltf, BezierCurvesExportAsLineStripsAndRoundTrip) {
-    // Two curves alone, and a curve on a teapot edge beside the teapot: one LINE_STRIP of level + 1
-    // points per curve, at the curve's samples; the document comes back from the extras; valid.
+TEST(Gltf, BezierCurvesExportAsLinesAndRoundTrip) {
+    // Two curves alone, and a curve on a teapot edge beside the teapot: in a "curves" node, one
+    // unlit LINES primitive, level + 1 points per curve at the curve's samples joined in pairs; the
+    // document comes back from the extras; valid.
     const fs::path dir = pw::test::freshTempDir("gltf-curves");
     pw::Document alone;
     pw::addCurve(alone, pw::Vec3(0.0), 2.0);
@@ -238,19 +297,21 @@ TEST(Gltf, BezierCurvesExportAsLineStripsAndRoundTrip) {
             const pw::GltfExportStats stats = pw::exportGltfWithStats(doc, out, options);
             EXPECT_EQ(stats.curveSegments, doc.curves.size() * size_t(level));
             const tinygltf::Model model = loadWithTinygltf(out);
-            ASSERT_EQ(model.meshes.size(), 1u);
-            std::vector<const tinygltf::Primitive*> strips;
-            for (const auto& prim : model.meshes[0].primitives)
-                if (prim.mode == TINYGLTF_MODE_LINE_STRIP) strips.push_back(&prim);
-            ASSERT_EQ(strips.size(), doc.curves.size());
-            const auto positions = readVec3(model, strips[0]->attributes.at("POSITION"));
-            for (size_t c = 0; c < strips.size(); ++c) {
-                const tinygltf::Accessor& idx = model.accessors[size_t(strips[c]->indices)];
-                EXPECT_EQ(idx.count, size_t(level) + 1);
+            const tinygltf::Mesh* curves = childMesh(model, " curves");
+            ASSERT_NE(curves, nullptr);
+            ASSERT_EQ(curves->primitives.size(), 1u);
+            const tinygltf::Primitive& prim = curves->primitives[0];
+            EXPECT_EQ(prim.mode, TINYGLTF_MODE_LINE);
+            EXPECT_EQ(model.materials[size_t(prim.material)].extensions.count("KHR_materials_unlit"), 1u);
+            const auto positions = readVec3(model, prim.attributes.at("POSITION"));
+            const auto idx = readIndices(model, prim.indices);
+            ASSERT_EQ(idx.size(), 2 * doc.curves.size() * size_t(level));
+            for (size_t c = 0; c < doc.curves.size(); ++c) {
                 const auto want = pw::sampleCurve(pw::curvePoints(doc, doc.curves[c]), level);
-                const size_t first = c * (size_t(level) + 1);  // the strips follow one another
-                for (size_t k = 0; k < want.size(); ++k)
-                    for (int a = 0; a < 3; ++a) EXPECT_FLOAT_EQ(positions[first + k][size_t(a)], float(want[k][a]));
+                for (size_t k = 0; k + 1 < want.size(); ++k)  // segment k of curve c joins its samples k and k + 1
+                    for (size_t e = 0; e < 2; ++e)
+                        for (int a = 0; a < 3; ++a)
+                            EXPECT_FLOAT_EQ(positions[idx[2 * (c * size_t(level) + k) + e]][size_t(a)], float(want[k + e][a]));
             }
             EXPECT_TRUE(pw::importPatchworkGltf(out) == doc) << out;
             files.push_back(out);
@@ -434,7 +495,7 @@ TEST(GltfCli, ExportWritesAValidFileThatImportsBack) {
     ASSERT_TRUE(fs::exists(bin)) << bin << " is not built (build the patchwork target, or run scripts/test.sh)";
     const fs::path input = pw::test::dataDir() / "teapot.bpt";
     const fs::path glb = dir / "pot.glb", gltf = dir / "pot.gltf";
-    auto r = pw::test::runCommand(quote(bin) + " export " + quote(input) + " -o " + quote(glb) + " --tess 4 --merge --cage");
+    auto r = pw::test::runCommand(quote(bin) + " export " + quote(input) + " -o " + quote(glb) + " --tess 4 --primitives single --cage");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("992 triangles"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("vertices"), std::string::npos) << r.output;
@@ -442,17 +503,32 @@ TEST(GltfCli, ExportWritesAValidFileThatImportsBack) {
     r = pw::test::runCommand(quote(bin) + " export " + quote(input) + " -o " + quote(gltf));
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("level 16"), std::string::npos) << r.output;
-    checkStructure(glb, true, true, 32);
-    checkStructure(gltf, false, false, 32);
+    EXPECT_NE(r.output.find("3 primitives (one per connected surface), 3 open and double-sided"), std::string::npos) << r.output;
+    checkStructure(glb, pw::MeshGrouping::Single, true, 32, 3);
+    checkStructure(gltf, pw::MeshGrouping::Surfaces, false, 32, 3);
     expectValid({glb, gltf});
     const pw::Document original = pw::loadBpt(input);
     EXPECT_TRUE(pw::importPatchworkGltf(glb) == original);
     EXPECT_TRUE(pw::importPatchworkGltf(gltf) == original);
-    // Re-exporting the imported glTF gives the same document again.
-    const fs::path again = dir / "again.glb";
+    // Re-exporting the imported glTF gives the same document again; without flags, the same file
+    // (its options come from its extras); a flag given overrides only itself.
+    const fs::path again = dir / "again.glb", same = dir / "same.glb", sameText = dir / "same.gltf";
     r = pw::test::runCommand(quote(bin) + " export " + quote(glb) + " -o " + quote(again) + " --tess 2");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_TRUE(pw::importPatchworkGltf(again) == original);
+    checkStructure(again, pw::MeshGrouping::Single, true, 32, 3);
+    r = pw::test::runCommand(quote(bin) + " export " + quote(glb) + " -o " + quote(same));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(pw::test::readBytes(same), pw::test::readBytes(glb));
+    r = pw::test::runCommand(quote(bin) + " export " + quote(gltf) + " -o " + quote(sameText));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(pw::test::readBytes(sameText), pw::test::readBytes(gltf));
+    r = pw::test::runCommand(quote(bin) + " convert " + quote(glb) + " " + quote(same));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(pw::test::readBytes(same), pw::test::readBytes(glb));
+    r = pw::test::runCommand(quote(bin) + " export " + quote(glb) + " -o " + quote(same) + " --primitives nonsense");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("--primitives"), std::string::npos) << r.output;
     fs::remove_all(dir);
 }
 

@@ -85,8 +85,14 @@ void Dialogs::drawFileBrowser(PanelContext& ctx) {
         ImGui::SliderInt("Export level", &ctx.session().exportOptions.level, 0, limits::kMaxExportLevel);
         tip("glTF tessellation level (0: the document's level)");
         ImGui::SameLine();
-        ImGui::Checkbox("Merge", &ctx.session().exportOptions.merge);
-        tip("One mesh primitive for everything");
+        {
+            static const char* kPrimitives[] = {"Per surface", "Per patch", "Single"};
+            int g = static_cast<int>(ctx.session().exportOptions.primitives);
+            ImGui::SetNextItemWidth(110);
+            if (ImGui::Combo("Primitives", &g, kPrimitives, 3)) ctx.session().exportOptions.primitives = static_cast<MeshGrouping>(g);
+            tip("Per surface: one welded primitive per connected surface (what Blender and assimp expect)\n"
+                "Per patch: one primitive per patch, each with its own vertices\nSingle: one primitive for everything");
+        }
         ImGui::SameLine();
         ImGui::Checkbox("Cage", &ctx.session().exportOptions.cage);
         tip("Also export the control cage as lines");

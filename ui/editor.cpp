@@ -58,8 +58,11 @@ Editor::Editor(AppWindow& window, const std::string& file) : window_(window) {
     // A bad file on the command line throws InputError: reported with exit 2 like the other commands.
     if (file.empty())
         setDocument(builtinTeapot(), "");
-    else
-        setDocument(loadDocument(file), file);
+    else {
+        std::optional<GltfExportOptions> stored;  // a Patchwork glTF saves back with its own export options
+        setDocument(loadDocument(file, &stored), file);
+        if (stored) session_.exportOptions = *stored;
+    }
     // Warm the pipelines on the first acquired image (the first real frame then pays no JIT), and
     // present it through the normal path.
     if (window_.acquire()) {
