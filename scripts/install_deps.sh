@@ -2,8 +2,8 @@
 # Installs the Debian/Ubuntu packages Patchwork needs that are not installed yet. Idempotent and
 # quiet: prints one line when everything is present. Usage: scripts/install_deps.sh [--tests]
 #   --tests  also what the test suite needs (validation layers, Xvfb, xdotool, ImageMagick, a window
-#            manager (openbox) for minimise tests, clang with libFuzzer, Node.js
-#            for the Khronos glTF validator).
+#            manager (openbox) for minimise tests, clang with libFuzzer, desktop-file-validate for
+#            the installed desktop entry, Node.js for the Khronos glTF validator).
 set -euo pipefail
 
 build_packages=(
@@ -12,8 +12,9 @@ build_packages=(
   libglfw3-dev libx11-dev libxext-dev libxrandr-dev libimgui-dev libglm-dev libeigen3-dev libtinygltf-dev
   nlohmann-json3-dev libstb-dev libcli11-dev fonts-dejavu-core
   libgtest-dev libbenchmark-dev
+  help2man
 )
-test_packages=(vulkan-validationlayers vulkan-tools xvfb xdotool imagemagick openbox clang libclang-rt-dev)
+test_packages=(vulkan-validationlayers vulkan-tools xvfb xdotool imagemagick openbox clang libclang-rt-dev desktop-file-utils)
 
 wanted=("${build_packages[@]}")
 if [[ "${1:-}" == "--tests" ]]; then
