@@ -24,11 +24,12 @@ struct ConvertOptions {
 int runConvert(const ConvertOptions& opt) {
     // Refuse an unknown output type before doing any work.
     const std::string ext = lowerExtension(opt.output);
-    if (ext != ".patchwork" && ext != ".bpt" && ext != ".gltf" && ext != ".glb")
-        throw OutputError(opt.output, "unknown file type '" + ext + "'; Patchwork writes .patchwork, .bpt, .gltf or .glb");
-    std::optional<GltfExportOptions> stored;
-    const Document doc = loadDocument(opt.input, &stored);
-    saveDocument(doc, opt.output, stored.value_or(GltfExportOptions{}));
+    if (ext != ".patchwork" && ext != ".bpt" && ext != ".gltf" && ext != ".glb" && ext != ".step" && ext != ".stp")
+        throw OutputError(opt.output, "unknown file type '" + ext + "'; Patchwork writes .patchwork, .bpt, .gltf, .glb, .step or .stp");
+    LoadReport report;
+    const Document doc = loadDocument(opt.input, &report);
+    for (const std::string& note : report.notes) std::cerr << "patchwork convert: " << opt.input << ": " << note << "\n";
+    saveDocument(doc, opt.output, report.exportOptions.value_or(GltfExportOptions{}));
     if (!opt.quiet)
         std::cout << "wrote " << opt.output << " (" << doc.patches.size() << " patches, " << doc.surfaces.size()
                   << " surfaces, " << doc.points.size() << " points, " << doc.joins.size() << " joins)\n";

@@ -12,6 +12,7 @@
 #include "core/file_io.hpp"
 #include "core/gltf_export.hpp"
 #include "core/limits.hpp"
+#include "core/step_export.hpp"
 
 namespace pw::app {
 
@@ -25,9 +26,31 @@ struct ExportArgs {
     std::string primitives;  // empty: not given
     bool cage = false;
     bool cageGiven = false;
+    std::string schema = "ap214";
 };
 
+int runStepExport(const ExportArgs& args) {
+    if (args.schema != "ap214" && args.schema != "ap242") {
+        std::cerr << "patchwork export: --schema must be ap214 or ap242 (got " << args.schema << ")\n";
+        return 2;
+    }
+    (void)checkOutputPath(args.output);
+    LoadReport report;
+    const Document doc = loadDocument(args.input, &report);
+    for (const std::string& note : report.notes) std::cerr << "patchwork export: " << args.input << ": " << note << "\n";
+    StepExportOptions options;
+    options.schema = args.schema == "ap242" ? StepSchema::AP242 : StepSchema::AP214;
+    const StepExportStats stats = exportStep(doc, args.output, options);
+    std::cout << "wrote " << args.output << ": " << stats.faces << " exact faces in " << stats.shells
+              << (stats.shells == 1 ? " shell, " : " shells, ") << stats.sharedEdges << " shared edges, " << stats.freeEdges
+              << " free, " << stats.degenerateEdges << " collapsed, " << stats.bytes << " bytes (" << (args.schema == "ap242" ? "AP242" : "AP214")
+              << ")\n";
+    return 0;
+}
+
 int runExport(const ExportArgs& args) {
+    const std::string ext = lowerExtension(args.output);
+    if (ext == ".step" || ext == ".stp") return runStepExport(args);
     if (args.tessGiven && (args.tess < 1 || args.tess > limits::kMaxExportLevel)) {
         std::cerr << "patchwork export: --tess must be an integer from 1 to " << limits::kMaxExportLevel << " (got "
                   << args.tess << ")\n";
@@ -39,9 +62,10 @@ int runExport(const ExportArgs& args) {
         return 2;
     }
     (void)checkOutputPath(args.output);  // refuse an unwritable output before tessellating
-    std::optional<GltfExportOptions> stored;
-    const Document doc = loadDocument(args.input, &stored);
-    GltfExportOptions options = stored.value_or(GltfExportOptions{});
+    LoadReport report;
+    const Document doc = loadDocument(args.input, &report);
+    for (const std::string& note : report.notes) std::cerr << "patchwork export: " << args.input << ": " << note << "\n";
+    GltfExportOptions options = report.exportOptions.value_or(GltfExportOptions{});
     if (args.tessGiven) options.level = args.tess;
     if (grouping) options.primitives = *grouping;
     if (args.cageGiven) options.cage = args.cage;
@@ -61,9 +85,11 @@ int runExport(const ExportArgs& args) {
 }  // namespace
 
 void registerExportCommand(CLI::App& app, Action& run) {
-    const auto [cmd, args] = addSubcommand<ExportArgs>(app, run, "export", "Tessellate a document and write it as glTF 2.0 (.gltf or .glb)", runExport);
+    const auto [cmd, args] = addSubcommand<ExportArgs>(app, run, "export", "Write a document as glTF 2.0 (.gltf, .glb; tessellated) or STEP (.step, .stp; exact surfaces)", runExport);
     cmd->add_option("file", args->input, "Document to export (.patchwork, .bpt, .gltf, .glb)")->required();
-    cmd->add_option("-o,--output", args->output, "Output file: .glb (binary) or .gltf (JSON, embedded buffer)")->required();
+    cmd->add_option("-o,--output", args->output,
+                    "Output file: .glb (binary glTF), .gltf (JSON glTF, embedded buffer), .step or .stp (exact surfaces)")
+        ->required();
     cmd->add_option("--tess", args->tess,
                     "Tessellation level per patch side, 1.." + std::to_string(limits::kMaxExportLevel) +
                         " (default: the document's level)");
@@ -71,6 +97,7 @@ void registerExportCommand(CLI::App& app, Action& run) {
                     "surfaces: one welded primitive per connected surface (default); patches: one per patch, each with "
                     "its own vertices; single: one for everything");
     cmd->add_flag("--cage,!--no-cage", args->cage, "Add the control cage as lines in its own node (unlit)");
+    cmd->add_option("--schema", args->schema, "STEP application protocol: ap214 (default) or ap242");
     cmd->parse_complete_callback([cmd = cmd, args = args] {
         args->tessGiven = cmd->count("--tess") > 0;
         args->cageGiven = cmd->count("--cage") + cmd->count("--no-cage") > 0;

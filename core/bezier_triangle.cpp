@@ -111,4 +111,33 @@ void evaluateTriangleGrid(const Net10& net, const std::array<uint32_t, 10>& pool
     }
 }
 
+Net16 triangleAsCollapsedQuad(const Net10& net) {
+    // Interpolation at s, t in {0, 1/3, 2/3, 1} is exact for a bicubic: P = B⁻¹ S B⁻ᵀ with B the
+    // cubic Bernstein basis at those nodes.
+    static constexpr double kInv[4][4] = {{1, 0, 0, 0}, {-5.0 / 6, 3, -1.5, 1.0 / 3}, {1.0 / 3, -1.5, 3, -5.0 / 6}, {0, 0, 0, 1}};
+    auto build = [&](bool flip) {
+        std::array<std::array<Vec3, 4>, 4> S;  // [s node][t node]
+        for (int a = 0; a < 4; ++a)
+            for (int b = 0; b < 4; ++b) {
+                const double sv = a / 3.0, tv = (flip ? 3 - b : b) / 3.0;
+                S[a][b] = a == 0 ? net[0] : evaluateTriangleBernsteinSum(net, 1.0 - sv, sv * (1.0 - tv), sv * tv);
+            }
+        Net16 out;
+        for (int i = 0; i < 4; ++i)      // t
+            for (int j = 0; j < 4; ++j) {  // s
+                Vec3 sum(0.0);
+                for (int a = 0; a < 4; ++a)
+                    for (int b = 0; b < 4; ++b) sum += kInv[j][a] * kInv[i][b] * S[a][b];
+                out[size_t(i * 4 + j)] = j == 0 ? net[0] : sum;
+            }
+        return out;
+    };
+    Net16 quad = build(false);
+    // Orientation: compare normals at the middle of the triangle's image.
+    const SurfacePoint q = evaluateNet(quad, Basis::Bezier, 0.5, 0.5, 0.5);
+    const TriPoint t = evaluateTriangle(net, 0.5, 0.25, 0.25);
+    if (glm::dot(glm::cross(q.du, q.dv), t.n) < 0.0) quad = build(true);
+    return quad;
+}
+
 }  // namespace pw

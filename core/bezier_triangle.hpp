@@ -68,4 +68,11 @@ std::array<int, 2> triGridEdgePoint(int edge, int k, int n);
 // alone (evaluateSharedBezierEdge), so neighbours sharing the edge get bit-identical positions.
 void evaluateTriangleGrid(const Net10& net, const std::array<uint32_t, 10>& poolIdx, int n, std::vector<TriPoint>& out);
 
+// The same surface as a bicubic patch with a collapsed edge (what CAD formats without triangles
+// take): the cubic composed with (s, t) -> (u, v, w) = (1 - s, s (1 - t), s t), which is bilinear,
+// so the result is exactly bicubic. Row-major like Patch::idx (row i = t, column j = s); column 0
+// (s = 0) is the u = 1 corner b300 four times. The rows run so that the patch's normal
+// (∂/∂s × ∂/∂t) agrees with the triangle's.
+Net16 triangleAsCollapsedQuad(const Net10& net);
+
 }  // namespace pw

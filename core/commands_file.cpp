@@ -46,8 +46,8 @@ void addFileCommands(CommandTable& t) {
                if (!mayReplace(ctx)) return;
                if (ctx.args.empty())
                    ctx.host.fileDialog(FileDialogKind::Open);
-               else
-                   ctx.session.open(ctx.args[0]);
+               else if (const auto notes = ctx.session.open(ctx.args[0]); !notes.empty())
+                   ctx.host.status(std::to_string(notes.size()) + (notes.size() == 1 ? " face" : " faces") + " not imported; " + notes.front());
            }});
     t.add({.name = "open-notes-patch", .label = "Open the Notes' Bézier Patch",
            .help = "Replace the document with the 16-point Bézier patch of the lecture notes",

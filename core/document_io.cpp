@@ -7,19 +7,28 @@
 #include "core/file_io.hpp"
 #include "core/gltf_import.hpp"
 #include "core/patchwork_format.hpp"
+#include "core/step_export.hpp"
+#include "core/step_import.hpp"
 
 namespace pw {
 
 namespace {
-constexpr const char* kLoadable = ".patchwork, .bpt, .gltf or .glb";
+constexpr const char* kLoadable = ".patchwork, .bpt, .gltf, .glb, .step, .stp, .iges or .igs";
+constexpr const char* kSavable = ".patchwork, .bpt, .gltf, .glb, .step or .stp";
 }
 
-Document loadDocument(const std::filesystem::path& path, std::optional<GltfExportOptions>* exportOptions) {
+Document loadDocument(const std::filesystem::path& path, LoadReport* report) {
     const std::string ext = lowerExtension(path);
-    if (exportOptions) exportOptions->reset();
+    if (report) *report = LoadReport{};
     if (ext == ".patchwork") return parseDocument(readFileLimited(path), path.string());
     if (ext == ".bpt") return loadBpt(path);
-    if (ext == ".gltf" || ext == ".glb") return importPatchworkGltf(path, exportOptions);
+    if (ext == ".gltf" || ext == ".glb") return importPatchworkGltf(path, report ? &report->exportOptions : nullptr);
+    if (ext == ".step" || ext == ".stp" || ext == ".iges" || ext == ".igs") {
+        CadImportReport cad;
+        Document doc = importCadSurfaces(path, &cad);
+        if (report) report->notes = std::move(cad.notes);
+        return doc;
+    }
     throw InputError(path.string(), "unknown file type '" + ext + "'; Patchwork reads " + kLoadable);
 }
 
@@ -38,8 +47,10 @@ void saveDocument(const Document& doc, const std::filesystem::path& path, const 
         writeFileAtomic(path, text);
     } else if (ext == ".gltf" || ext == ".glb") {
         exportGltf(doc, path, gltf);
+    } else if (ext == ".step" || ext == ".stp") {
+        exportStep(doc, path);
     } else {
-        throw OutputError(path.string(), "unknown file type '" + ext + "'; Patchwork writes " + kLoadable);
+        throw OutputError(path.string(), "unknown file type '" + ext + "'; Patchwork writes " + kSavable);
     }
 }
 

@@ -1,17 +1,25 @@
 // Load and save by file extension: .patchwork (native), .bpt (tea set), .gltf/.glb (export, and
-// import of Patchwork glTF files whose extras carry the patches). Saves are atomic.
+// import of Patchwork glTF files whose extras carry the patches), .step/.stp (export and import of
+// exact surfaces), .iges/.igs (import). Saves are atomic.
 #pragma once
 
 #include <filesystem>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "core/document.hpp"
 #include "core/gltf_export.hpp"
 
 namespace pw {
 
-// exportOptions (when given): the options a Patchwork glTF was exported with, else nullopt.
-Document loadDocument(const std::filesystem::path& path, std::optional<GltfExportOptions>* exportOptions = nullptr);
+// What a load learnt beside the document.
+struct LoadReport {
+    std::optional<GltfExportOptions> exportOptions;  // a Patchwork glTF's own export options
+    std::vector<std::string> notes;                  // what was skipped (STEP/IGES faces) and why
+};
+
+Document loadDocument(const std::filesystem::path& path, LoadReport* report = nullptr);
 void saveDocument(const Document& doc, const std::filesystem::path& path, const GltfExportOptions& gltf = {});
 
 // Formats that keep everything a document holds (patches, nets, triangles, curves, joins):

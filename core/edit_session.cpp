@@ -50,10 +50,11 @@ void EditSession::newDocument() {
     reset(std::move(d), "");
 }
 
-void EditSession::open(const std::string& path) {
-    std::optional<GltfExportOptions> stored;  // a Patchwork glTF saves back with its own export options
-    reset(loadDocument(path, &stored), path);
-    if (stored) exportOptions = *stored;
+std::vector<std::string> EditSession::open(const std::string& path) {
+    LoadReport report;  // a Patchwork glTF saves back with its own export options
+    reset(loadDocument(path, &report), path);
+    if (report.exportOptions) exportOptions = *report.exportOptions;
+    return std::move(report.notes);
 }
 
 MergedRange EditSession::import(const std::string& path) {

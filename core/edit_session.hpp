@@ -52,7 +52,7 @@ public:
     // document, selection cleared.
     void reset(Document d, const std::string& path);
     void newDocument();             // untitled, one flat patch (File > New)
-    void open(const std::string& path);
+    std::vector<std::string> open(const std::string& path);  // returns what the load skipped and why (STEP/IGES faces)
     // Adds a file's content (every kind, with its joins) as one undo step and selects it.
     MergedRange import(const std::string& path);
 

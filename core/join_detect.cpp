@@ -127,7 +127,7 @@ std::vector<Join> detectJoins(const Document& doc, JoinDetectOptions options) {
     return joins;
 }
 
-void mergeCoincidentPoints(Document& doc) {
+void mergeCoincidentPoints(Document& doc, double tolerance) {
     // Key: the coordinates' bit patterns, with -0.0 folded into +0.0 (equal values, one point).
     struct Key {
         uint64_t x, y, z;
@@ -143,17 +143,46 @@ void mergeCoincidentPoints(Document& doc) {
     };
     auto bits = [](double v) { return std::bit_cast<uint64_t>(v == 0.0 ? 0.0 : v); };
 
-    std::unordered_map<Key, uint32_t, KeyHash> first;
-    first.reserve(doc.points.size());
     std::vector<uint32_t> remap(doc.points.size());
     std::vector<Vec3> pool;
     pool.reserve(doc.points.size());
-    for (size_t i = 0; i < doc.points.size(); ++i) {
-        const Vec3& p = doc.points[i];
-        const Key key{bits(p.x), bits(p.y), bits(p.z)};
-        auto [it, inserted] = first.emplace(key, static_cast<uint32_t>(pool.size()));
-        if (inserted) pool.push_back(p);
-        remap[i] = it->second;
+    if (tolerance > 0.0) {
+        // Cells of the tolerance's size: a point within it of a kept one lies in one of the 27
+        // cells around it.
+        std::unordered_map<Key, std::vector<uint32_t>, KeyHash> cells;
+        auto cell = [&](const Vec3& p, int dx, int dy, int dz) {
+            return Key{uint64_t(int64_t(std::floor(p.x / tolerance)) + dx), uint64_t(int64_t(std::floor(p.y / tolerance)) + dy),
+                       uint64_t(int64_t(std::floor(p.z / tolerance)) + dz)};
+        };
+        for (size_t i = 0; i < doc.points.size(); ++i) {
+            const Vec3& p = doc.points[i];
+            uint32_t found = UINT32_MAX;
+            for (int dx = -1; dx <= 1 && found == UINT32_MAX; ++dx)
+                for (int dy = -1; dy <= 1 && found == UINT32_MAX; ++dy)
+                    for (int dz = -1; dz <= 1 && found == UINT32_MAX; ++dz)
+                        if (const auto it = cells.find(cell(p, dx, dy, dz)); it != cells.end())
+                            for (uint32_t q : it->second)
+                                if (glm::length(pool[q] - p) <= tolerance) {
+                                    found = q;
+                                    break;
+                                }
+            if (found == UINT32_MAX) {
+                found = static_cast<uint32_t>(pool.size());
+                pool.push_back(p);
+                cells[cell(p, 0, 0, 0)].push_back(found);
+            }
+            remap[i] = found;
+        }
+    } else {
+        std::unordered_map<Key, uint32_t, KeyHash> first;
+        first.reserve(doc.points.size());
+        for (size_t i = 0; i < doc.points.size(); ++i) {
+            const Vec3& p = doc.points[i];
+            const Key key{bits(p.x), bits(p.y), bits(p.z)};
+            auto [it, inserted] = first.emplace(key, static_cast<uint32_t>(pool.size()));
+            if (inserted) pool.push_back(p);
+            remap[i] = it->second;
+        }
     }
     if (pool.size() == doc.points.size()) return;
     auto rewrite = [&](uint32_t& idx) {

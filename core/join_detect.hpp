@@ -18,7 +18,8 @@ struct JoinDetectOptions {
 std::vector<Join> detectJoins(const Document& doc, JoinDetectOptions options = {});
 
 // Pool entries with bit-identical coordinates (-0.0 counting as +0.0) merged into one, keeping the
-// first; patch and surface indices rewritten.
-void mergeCoincidentPoints(Document& doc);
+// first; patch and surface indices rewritten. With a tolerance > 0, a point within that distance of
+// an earlier kept one merges into it (files whose shared corners differ in the last digits: STEP).
+void mergeCoincidentPoints(Document& doc, double tolerance = 0.0);
 
 }  // namespace pw

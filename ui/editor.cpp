@@ -59,9 +59,11 @@ Editor::Editor(AppWindow& window, const std::string& file) : window_(window) {
     if (file.empty())
         setDocument(builtinTeapot(), "");
     else {
-        std::optional<GltfExportOptions> stored;  // a Patchwork glTF saves back with its own export options
-        setDocument(loadDocument(file, &stored), file);
-        if (stored) session_.exportOptions = *stored;
+        LoadReport report;  // a Patchwork glTF saves back with its own export options
+        setDocument(loadDocument(file, &report), file);
+        if (report.exportOptions) session_.exportOptions = *report.exportOptions;
+        if (!report.notes.empty())
+            status(std::to_string(report.notes.size()) + (report.notes.size() == 1 ? " face" : " faces") + " not imported; " + report.notes.front());
     }
     // Warm the pipelines on the first acquired image (the first real frame then pays no JIT), and
     // present it through the normal path.
