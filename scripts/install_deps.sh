@@ -3,7 +3,8 @@
 # quiet: prints one line when everything is present. Usage: scripts/install_deps.sh [--tests]
 #   --tests  also what the test suite needs (validation layers, Xvfb, xdotool, ImageMagick, a window
 #            manager (openbox) for minimise tests, clang with libFuzzer, desktop-file-validate for
-#            the installed desktop entry, Node.js for the Khronos glTF validator).
+#            the installed desktop entry, assimp as an independent reader of the glTF and OBJ
+#            exports, Node.js for the Khronos glTF validator).
 set -euo pipefail
 
 build_packages=(
@@ -13,8 +14,9 @@ build_packages=(
   nlohmann-json3-dev libstb-dev libcli11-dev fonts-dejavu-core
   libgtest-dev libbenchmark-dev
   help2man
+  libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev
 )
-test_packages=(vulkan-validationlayers vulkan-tools xvfb xdotool imagemagick openbox clang libclang-rt-dev desktop-file-utils)
+test_packages=(vulkan-validationlayers vulkan-tools xvfb xdotool imagemagick openbox clang libclang-rt-dev desktop-file-utils assimp-utils)
 
 wanted=("${build_packages[@]}")
 if [[ "${1:-}" == "--tests" ]]; then
