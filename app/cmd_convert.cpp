@@ -24,8 +24,8 @@ struct ConvertOptions {
 int runConvert(const ConvertOptions& opt) {
     // Refuse an unknown output type before doing any work.
     const std::string ext = lowerExtension(opt.output);
-    if (ext != ".patchwork" && ext != ".bpt" && ext != ".gltf" && ext != ".glb" && ext != ".step" && ext != ".stp")
-        throw OutputError(opt.output, "unknown file type '" + ext + "'; Patchwork writes .patchwork, .bpt, .gltf, .glb, .step or .stp");
+    if (ext != ".patchwork" && ext != ".bpt" && ext != ".gltf" && ext != ".glb" && ext != ".obj" && ext != ".step" && ext != ".stp")
+        throw OutputError(opt.output, "unknown file type '" + ext + "'; Patchwork writes .patchwork, .bpt, .gltf, .glb, .obj, .step or .stp");
     LoadReport report;
     const Document doc = loadDocument(opt.input, &report);
     for (const std::string& note : report.notes) std::cerr << "patchwork convert: " << opt.input << ": " << note << "\n";

@@ -2,6 +2,7 @@
 // tessellates the document and writes a glTF 2.0 file (.gltf with an embedded buffer, or .glb) that
 // also carries the editable patches. Options not given come from FILE's own export options when it
 // is a Patchwork glTF (so re-exporting it without flags writes the same file), else the defaults.
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -12,6 +13,7 @@
 #include "core/file_io.hpp"
 #include "core/gltf_export.hpp"
 #include "core/limits.hpp"
+#include "core/obj_export.hpp"
 #include "core/step_export.hpp"
 
 namespace pw::app {
@@ -48,9 +50,31 @@ int runStepExport(const ExportArgs& args) {
     return 0;
 }
 
+int runObjExport(const ExportArgs& args) {
+    if (args.tessGiven && (args.tess < 1 || args.tess > limits::kMaxExportLevel)) {
+        std::cerr << "patchwork export: --tess must be an integer from 1 to " << limits::kMaxExportLevel << " (got "
+                  << args.tess << ")\n";
+        return 2;
+    }
+    (void)checkOutputPath(args.output);
+    LoadReport report;
+    const Document doc = loadDocument(args.input, &report);
+    for (const std::string& note : report.notes) std::cerr << "patchwork export: " << args.input << ": " << note << "\n";
+    const ObjExportStats stats = exportObj(doc, args.output, args.tessGiven ? args.tess : 0);
+    std::filesystem::path mtl = args.output;
+    mtl.replace_extension(".mtl");
+    std::cout << "wrote " << args.output << " and " << mtl.filename().string() << ": " << stats.triangles << " triangles, "
+              << stats.positions << " positions, " << stats.normals << " normals, " << stats.uvs << " texture coordinates, "
+              << stats.groups << " groups";
+    if (stats.lineSegments) std::cout << ", " << stats.lineSegments << " curve segments";
+    std::cout << ", " << stats.bytes << " bytes (level " << stats.level << ")\n";
+    return 0;
+}
+
 int runExport(const ExportArgs& args) {
     const std::string ext = lowerExtension(args.output);
     if (ext == ".step" || ext == ".stp") return runStepExport(args);
+    if (ext == ".obj") return runObjExport(args);
     if (args.tessGiven && (args.tess < 1 || args.tess > limits::kMaxExportLevel)) {
         std::cerr << "patchwork export: --tess must be an integer from 1 to " << limits::kMaxExportLevel << " (got "
                   << args.tess << ")\n";
@@ -85,10 +109,11 @@ int runExport(const ExportArgs& args) {
 }  // namespace
 
 void registerExportCommand(CLI::App& app, Action& run) {
-    const auto [cmd, args] = addSubcommand<ExportArgs>(app, run, "export", "Write a document as glTF 2.0 (.gltf, .glb; tessellated) or STEP (.step, .stp; exact surfaces)", runExport);
+    const auto [cmd, args] = addSubcommand<ExportArgs>(app, run, "export", "Write a document as glTF 2.0 (.gltf, .glb) or OBJ (.obj), tessellated, or STEP (.step, .stp), exact", runExport);
     cmd->add_option("file", args->input, "Document to export (.patchwork, .bpt, .gltf, .glb)")->required();
     cmd->add_option("-o,--output", args->output,
-                    "Output file: .glb (binary glTF), .gltf (JSON glTF, embedded buffer), .step or .stp (exact surfaces)")
+                    "Output file: .glb (binary glTF), .gltf (JSON glTF, embedded buffer), .obj (+ .mtl beside it), .step or "
+                    ".stp (exact surfaces)")
         ->required();
     cmd->add_option("--tess", args->tess,
                     "Tessellation level per patch side, 1.." + std::to_string(limits::kMaxExportLevel) +

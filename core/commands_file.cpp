@@ -80,14 +80,16 @@ void addFileCommands(CommandTable& t) {
            .help = "Save under a new name (.patchwork, .bpt, .gltf, .glb)",
            .bindings = {{"", "", {"Ctrl+Shift+S"}}}, .windowOnly = true,
            .run = [](CommandContext& ctx) { ctx.host.fileDialog(FileDialogKind::SaveAs); }});
-    t.add({.name = "export-gltf", .label = "Export glTF...", .menu = "File", .usage = "[FILE]",
-           .help = "Tessellate and write a glTF 2.0 mesh (.gltf or .glb; the patches kept in extras)",
+    t.add({.name = "export-gltf", .label = "Export...", .menu = "File", .usage = "[FILE]",
+           .help = "Write a glTF 2.0 (.gltf, .glb; the patches kept in extras) or OBJ (.obj + .mtl) mesh, or exact "
+                   "STEP surfaces (.step, .stp)",
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, ctx.host.hasWindow() ? 0 : 1, 1);
                if (ctx.args.empty()) return ctx.host.fileDialog(FileDialogKind::ExportGltf);
                const std::filesystem::path p = ctx.args[0];
                const std::string ext = p.extension().string();
-               if (ext != ".gltf" && ext != ".glb") throw EditError("'" + ctx.args[0] + "' is not a .gltf or .glb file");
+               if (ext != ".gltf" && ext != ".glb" && ext != ".obj" && ext != ".step" && ext != ".stp")
+                   throw EditError("'" + ctx.args[0] + "' is not a .gltf, .glb, .obj, .step or .stp file");
                ctx.host.exportFile(ctx.session.documentToSave(), ctx.args[0]);
            }});
     t.add({.name = "screenshot", .label = "Save Screenshot...", .menu = "File", .usage = "[FILE]",

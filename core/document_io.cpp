@@ -6,6 +6,7 @@
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
 #include "core/gltf_import.hpp"
+#include "core/obj_export.hpp"
 #include "core/patchwork_format.hpp"
 #include "core/step_export.hpp"
 #include "core/step_import.hpp"
@@ -14,7 +15,7 @@ namespace pw {
 
 namespace {
 constexpr const char* kLoadable = ".patchwork, .bpt, .gltf, .glb, .step, .stp, .iges or .igs";
-constexpr const char* kSavable = ".patchwork, .bpt, .gltf, .glb, .step or .stp";
+constexpr const char* kSavable = ".patchwork, .bpt, .gltf, .glb, .obj, .step or .stp";
 }
 
 Document loadDocument(const std::filesystem::path& path, LoadReport* report) {
@@ -49,6 +50,8 @@ void saveDocument(const Document& doc, const std::filesystem::path& path, const 
         exportGltf(doc, path, gltf);
     } else if (ext == ".step" || ext == ".stp") {
         exportStep(doc, path);
+    } else if (ext == ".obj") {
+        exportObj(doc, path, gltf.level);
     } else {
         throw OutputError(path.string(), "unknown file type '" + ext + "'; Patchwork writes " + kSavable);
     }

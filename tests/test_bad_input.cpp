@@ -340,8 +340,8 @@ TEST(BadInputCli, FailedConversionLeavesExistingOutputIntact) {
         EXPECT_EQ(test::readBytes(target), "ORIGINAL CONTENT\n");
     }
     // Unknown output type: refused before anything is read or written.
-    const auto r = test::runCommand(bin() + " convert " + quote(test::dataDir() / "teapot.bpt") + " " + quote(dir / "x.obj"));
-    expectOneLineError(r, (dir / "x.obj").string());
+    const auto r = test::runCommand(bin() + " convert " + quote(test::dataDir() / "teapot.bpt") + " " + quote(dir / "x.fbx"));
+    expectOneLineError(r, (dir / "x.fbx").string());
     EXPECT_EQ(listDir(dir), (std::vector<std::string>{"keep.bpt", "keep.glb", "keep.patchwork"}));
 }
 

@@ -490,17 +490,17 @@ TEST(DocumentIo, BuiltinTeapotEqualsTheDataFile) {
 
 TEST(DocumentIo, UnknownExtensionNamesSupportedOnes) {
     try {
-        loadDocument("model.obj");
+        loadDocument("model.fbx");
         FAIL();
     } catch (const InputError& e) {
         const std::string m = e.what();
-        EXPECT_NE(m.find("model.obj"), std::string::npos);
+        EXPECT_NE(m.find("model.fbx"), std::string::npos);
         EXPECT_NE(m.find(".patchwork"), std::string::npos);
         EXPECT_NE(m.find(".bpt"), std::string::npos);
         EXPECT_NE(m.find(".glb"), std::string::npos);
     }
     const auto dir = test::freshTempDir("ext");
-    EXPECT_THROW(saveDocument(builtinTeapot(), dir / "x.obj"), OutputError);
+    EXPECT_THROW(saveDocument(builtinTeapot(), dir / "x.fbx"), OutputError);
     EXPECT_TRUE(std::filesystem::is_empty(dir));
 }
 

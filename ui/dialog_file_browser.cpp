@@ -1,4 +1,4 @@
-// The file browser (ui/dialogs.hpp): Open, Import, Save As, Export glTF (with the export options)
+// The file browser (ui/dialogs.hpp): Open, Import, Save As, Export (glTF, OBJ, STEP; with the export options)
 // and Save Screenshot; OK runs the matching command.
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -42,7 +42,7 @@ void Dialogs::openFileDialog(FileDialogKind kind, const std::string& documentNam
 
 void Dialogs::drawFileBrowser(PanelContext& ctx) {
     if (fileMode_ == FileDialogMode::None) return;
-    const char* titles[] = {"", "Open", "Save As", "Import", "Export glTF", "Save Screenshot"};
+    const char* titles[] = {"", "Open", "Save As", "Import", "Export (.glb, .gltf, .obj, .step)", "Save Screenshot"};
     const char* title = titles[int(fileMode_)];
     ImGui::OpenPopup("File browser");
     const ImGuiIO& io = ImGui::GetIO();
