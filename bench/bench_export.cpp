@@ -1,6 +1,8 @@
 // glTF export of a C1-joined 32×32 patch grid at level 32 (1 024 windows, ~2.1 M triangles) to .glb:
-// time per export and peak memory; and CPU evaluation throughput (grid points with normals, single
-// random points). Targets: export ≤ 1.5 s, ≥ 20 M grid points with normals per second per core.
+// time per export and peak memory; the teapot at level 64 in each format (glb, gltf, OBJ, STEP),
+// in memory, against its bare CPU tessellation (the floor every mesh format pays); and CPU
+// evaluation throughput (grid points with normals, single random points). Targets: export ≤ 1.5 s,
+// ≥ 20 M grid points with normals per second per core.
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 #include <unistd.h>
@@ -11,6 +13,9 @@
 #include <vector>
 
 #include "core/document_io.hpp"
+#include "core/mesh_tessellate.hpp"
+#include "core/obj_export.hpp"
+#include "core/step_export.hpp"
 #include "core/gltf_export.hpp"
 #include "core/model_builders.hpp"
 #include "core/patch_eval.hpp"
@@ -74,6 +79,28 @@ TeapotNets teapotNets() {
     }
     return t;
 }
+
+// The teapot at level 64 (32 windows, 261 632 triangles), in memory (no disk).
+enum class Format { Tessellate, Glb, Gltf, Obj, Step };
+void BM_TeapotLevel64(benchmark::State& state) {
+    const pw::Document doc = pw::builtinTeapot();
+    const auto format = static_cast<Format>(state.range(0));
+    size_t bytes = 0;
+    for (auto _ : state) {
+        switch (format) {
+            case Format::Tessellate: bytes = pw::tessellateDocument(doc, 64).indices.size() * 4; break;
+            case Format::Glb: bytes = pw::exportGltfBytes(doc, true, {64, pw::MeshGrouping::Surfaces, false}).size(); break;
+            case Format::Gltf: bytes = pw::exportGltfBytes(doc, false, {64, pw::MeshGrouping::Surfaces, false}).size(); break;
+            case Format::Obj: bytes = pw::exportObjText(doc, 64, "teapot.mtl").obj.size(); break;
+            case Format::Step: bytes = pw::exportStepText(doc, {}).size(); break;
+        }
+        benchmark::DoNotOptimize(bytes);
+    }
+    static const char* names[] = {"tessellate only (floor)", "glb", "gltf", "obj", "step (exact, no level)"};
+    state.SetLabel(names[state.range(0)]);
+    state.counters["output_MiB"] = static_cast<double>(bytes) / (1024.0 * 1024.0);
+}
+BENCHMARK(BM_TeapotLevel64)->DenseRange(0, 4)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
 
 // evaluateGrid on the 32 teapot patches at level 64: 65 × 65 points with derivatives and normals each.
 void BM_EvaluateGrid(benchmark::State& state) {

@@ -384,3 +384,30 @@ TEST(StepCli, ExportConvertAndBadInput) {
     EXPECT_FALSE(fs::exists(dir / "x.step"));
     fs::remove_all(dir);
 }
+
+TEST(StepImport, DamagedFilesAreRefusedNamingTheFile) {
+    // A valid export cut at several places, a STEP header with nothing after it, and an IGES file
+    // of text: each is refused with InputError naming the file (or skips every face), never a crash.
+    const fs::path dir = pw::test::freshTempDir("step-damaged");
+    pw::exportStep(teapot(), dir / "pot.step");
+    const std::string whole = pw::test::readBytes(dir / "pot.step");
+    std::vector<std::pair<std::string, std::string>> files = {
+        {"header.step", "ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\nENDSEC;\nEND-ISO-10303-21;\n"},
+        {"text.igs", "this is not IGES\n"},
+        {"empty.stp", ""},
+    };
+    for (double cut : {0.1, 0.5, 0.9}) files.push_back({"cut" + std::to_string(int(cut * 10)) + ".step", whole.substr(0, size_t(cut * double(whole.size())))});
+    for (const auto& [name, text] : files) {
+        SCOPED_TRACE(name);
+        std::ofstream(dir / name, std::ios::binary) << text;
+        try {
+            pw::CadImportReport report;
+            const pw::Document doc = pw::importCadSurfaces(dir / name, &report);
+            // A cut late enough may still hold whole faces: then they are exact patches.
+            EXPECT_GT(doc.patches.size(), 0u);
+        } catch (const pw::InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+        }
+    }
+    fs::remove_all(dir);
+}
