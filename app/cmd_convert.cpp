@@ -23,9 +23,8 @@ struct ConvertOptions {
 
 int runConvert(const ConvertOptions& opt) {
     // Refuse an unknown output type before doing any work.
-    const std::string ext = lowerExtension(opt.output);
-    if (ext != ".patchwork" && ext != ".bpt" && ext != ".gltf" && ext != ".glb" && ext != ".obj" && ext != ".step" && ext != ".stp")
-        throw OutputError(opt.output, "unknown file type '" + ext + "'; Patchwork writes .patchwork, .bpt, .gltf, .glb, .obj, .step or .stp");
+    if (!canSave(opt.output))
+        throw OutputError(opt.output, "unknown file type '" + lowerExtension(opt.output) + "'; Patchwork writes " + savableExtensions());
     LoadReport report;
     const Document doc = loadDocument(opt.input, &report);
     for (const std::string& note : report.notes) std::cerr << "patchwork convert: " << opt.input << ": " << note << "\n";

@@ -31,15 +31,22 @@ struct ExportArgs {
     std::string schema = "ap214";
 };
 
+// The document to export, after refusing an unwritable output (before any work); what the load
+// skipped goes to stderr.
+Document loadForExport(const ExportArgs& args, LoadReport& report) {
+    (void)checkOutputPath(args.output);
+    Document doc = loadDocument(args.input, &report);
+    for (const std::string& note : report.notes) std::cerr << "patchwork export: " << args.input << ": " << note << "\n";
+    return doc;
+}
+
 int runStepExport(const ExportArgs& args) {
     if (args.schema != "ap214" && args.schema != "ap242") {
         std::cerr << "patchwork export: --schema must be ap214 or ap242 (got " << args.schema << ")\n";
         return 2;
     }
-    (void)checkOutputPath(args.output);
     LoadReport report;
-    const Document doc = loadDocument(args.input, &report);
-    for (const std::string& note : report.notes) std::cerr << "patchwork export: " << args.input << ": " << note << "\n";
+    const Document doc = loadForExport(args, report);
     StepExportOptions options;
     options.schema = args.schema == "ap242" ? StepSchema::AP242 : StepSchema::AP214;
     const StepExportStats stats = exportStep(doc, args.output, options);
@@ -51,15 +58,8 @@ int runStepExport(const ExportArgs& args) {
 }
 
 int runObjExport(const ExportArgs& args) {
-    if (args.tessGiven && (args.tess < 1 || args.tess > limits::kMaxExportLevel)) {
-        std::cerr << "patchwork export: --tess must be an integer from 1 to " << limits::kMaxExportLevel << " (got "
-                  << args.tess << ")\n";
-        return 2;
-    }
-    (void)checkOutputPath(args.output);
     LoadReport report;
-    const Document doc = loadDocument(args.input, &report);
-    for (const std::string& note : report.notes) std::cerr << "patchwork export: " << args.input << ": " << note << "\n";
+    const Document doc = loadForExport(args, report);
     const ObjExportStats stats = exportObj(doc, args.output, args.tessGiven ? args.tess : 0);
     std::filesystem::path mtl = args.output;
     mtl.replace_extension(".mtl");
@@ -71,24 +71,14 @@ int runObjExport(const ExportArgs& args) {
     return 0;
 }
 
-int runExport(const ExportArgs& args) {
-    const std::string ext = lowerExtension(args.output);
-    if (ext == ".step" || ext == ".stp") return runStepExport(args);
-    if (ext == ".obj") return runObjExport(args);
-    if (args.tessGiven && (args.tess < 1 || args.tess > limits::kMaxExportLevel)) {
-        std::cerr << "patchwork export: --tess must be an integer from 1 to " << limits::kMaxExportLevel << " (got "
-                  << args.tess << ")\n";
-        return 2;
-    }
+int runGltfExport(const ExportArgs& args) {
     const auto grouping = args.primitives.empty() ? std::nullopt : parseMeshGrouping(args.primitives);
     if (!args.primitives.empty() && !grouping) {
         std::cerr << "patchwork export: --primitives must be surfaces, patches or single (got " << args.primitives << ")\n";
         return 2;
     }
-    (void)checkOutputPath(args.output);  // refuse an unwritable output before tessellating
     LoadReport report;
-    const Document doc = loadDocument(args.input, &report);
-    for (const std::string& note : report.notes) std::cerr << "patchwork export: " << args.input << ": " << note << "\n";
+    const Document doc = loadForExport(args, report);
     GltfExportOptions options = report.exportOptions.value_or(GltfExportOptions{});
     if (args.tessGiven) options.level = args.tess;
     if (grouping) options.primitives = *grouping;
@@ -104,6 +94,17 @@ int runExport(const ExportArgs& args) {
                                                                 : "all in one")
               << "), " << stats.openSurfaces << " open and double-sided)\n";
     return 0;
+}
+
+int runExport(const ExportArgs& args) {
+    const std::string ext = lowerExtension(args.output);
+    if (ext == ".step" || ext == ".stp") return runStepExport(args);  // exact: no level
+    if (args.tessGiven && (args.tess < 1 || args.tess > limits::kMaxExportLevel)) {
+        std::cerr << "patchwork export: --tess must be an integer from 1 to " << limits::kMaxExportLevel << " (got "
+                  << args.tess << ")\n";
+        return 2;
+    }
+    return ext == ".obj" ? runObjExport(args) : runGltfExport(args);
 }
 
 }  // namespace

@@ -47,7 +47,7 @@ void addFileCommands(CommandTable& t) {
                if (ctx.args.empty())
                    ctx.host.fileDialog(FileDialogKind::Open);
                else if (const auto notes = ctx.session.open(ctx.args[0]); !notes.empty())
-                   ctx.host.status(std::to_string(notes.size()) + (notes.size() == 1 ? " face" : " faces") + " not imported; " + notes.front());
+                   ctx.host.status(skippedSummary(notes));
            }});
     t.add({.name = "open-notes-patch", .label = "Open the Notes' Bézier Patch",
            .help = "Replace the document with the 16-point Bézier patch of the lecture notes",

@@ -57,6 +57,20 @@ void saveDocument(const Document& doc, const std::filesystem::path& path, const 
     }
 }
 
+const char* savableExtensions() { return kSavable; }
+
+bool canSave(const std::filesystem::path& path) {
+    const std::string ext = lowerExtension(path);
+    for (const char* e : {".patchwork", ".bpt", ".gltf", ".glb", ".obj", ".step", ".stp"})
+        if (ext == e) return true;
+    return false;
+}
+
+std::string skippedSummary(const std::vector<std::string>& notes) {
+    if (notes.empty()) return {};
+    return std::to_string(notes.size()) + (notes.size() == 1 ? " face" : " faces") + " not imported; " + notes.front();
+}
+
 bool saveKeepsEverything(const std::filesystem::path& path) {
     const std::string ext = lowerExtension(path);
     return ext == ".patchwork" || ext == ".gltf" || ext == ".glb";

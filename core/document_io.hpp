@@ -22,6 +22,14 @@ struct LoadReport {
 Document loadDocument(const std::filesystem::path& path, LoadReport* report = nullptr);
 void saveDocument(const Document& doc, const std::filesystem::path& path, const GltfExportOptions& gltf = {});
 
+// The extensions saveDocument writes (".patchwork, .bpt, ... or .stp"), and whether it writes `path`'s.
+const char* savableExtensions();
+bool canSave(const std::filesystem::path& path);
+
+// One status line for what a load skipped ("2 faces not imported; face 3 skipped: ..."), or "" when
+// nothing was.
+std::string skippedSummary(const std::vector<std::string>& notes);
+
 // Formats that keep everything a document holds (patches, nets, triangles, curves, joins):
 // .patchwork, .gltf and .glb. Writing another (.bpt) is an export: Save asks for a name instead.
 bool saveKeepsEverything(const std::filesystem::path& path);

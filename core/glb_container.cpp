@@ -45,6 +45,7 @@ size_t binChunkBytes(std::string_view rest, const std::string& name) {
 }
 
 std::string joinGlb(std::string json, std::string_view rest) {
+    while (!json.empty() && json.back() == ' ') json.pop_back();  // padding it came with
     while (json.size() % 4) json += ' ';
     if (20.0 + double(json.size()) + double(rest.size()) > double(UINT32_MAX))
         throw std::length_error("the file would pass the 4 GiB a .glb can hold");

@@ -21,8 +21,9 @@ GlbParts splitGlb(std::string_view file, const std::string& sourceName);
 // chunk says more than the file holds.
 size_t binChunkBytes(std::string_view rest, const std::string& sourceName);
 
-// A GLB of `json` (padded with spaces to 4 bytes) followed by `rest` as split. Throws
-// std::length_error past the 4 GiB a GLB can describe.
+// A GLB of `json` (padded with spaces to 4 bytes) followed by `rest` as split. Trailing spaces
+// `json` already has (a split chunk's padding) are dropped first, so the bytes depend on the JSON
+// alone. Throws std::length_error past the 4 GiB a GLB can describe.
 std::string joinGlb(std::string json, std::string_view rest);
 
 }  // namespace pw

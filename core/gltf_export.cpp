@@ -50,11 +50,7 @@ std::string spliceExtras(const std::string& file, bool binary, const std::string
     };
     if (!binary) return splice(file);
     const GlbParts parts = splitGlb(file, "(glb)");
-    // tinygltf padded the chunk to the marker's length, which is random: drop that padding so
-    // joinGlb pads the final JSON alone (the same document gives the same bytes).
-    std::string_view json = parts.json;
-    while (!json.empty() && json.back() == ' ') json.remove_suffix(1);
-    return joinGlb(splice(json), parts.rest);
+    return joinGlb(splice(parts.json), parts.rest);  // padded anew: tinygltf's followed the random marker
 }
 
 size_t align4(size_t n) { return (n + 3) & ~size_t{3}; }

@@ -37,13 +37,13 @@ std::vector<uint32_t> dedupe(const std::vector<T>& values, std::vector<T>& disti
     return id;
 }
 
-std::string groupName(const Document& doc, const PatchInstance& w, size_t item) {
+// A window is a patch's (its name, or patch_N) or a net's (surface_S_ROW_COL).
+std::string groupName(const Document& doc, const PatchInstance& w) {
     if (w.patch >= 0) {
         const std::string& name = doc.patches[size_t(w.patch)].name;
         return name.empty() ? "patch_" + std::to_string(w.patch) : name;
     }
-    if (w.surface >= 0) return "surface_" + std::to_string(w.surface) + "_" + std::to_string(w.windowRow) + "_" + std::to_string(w.windowCol);
-    return "window_" + std::to_string(item);
+    return "surface_" + std::to_string(w.surface) + "_" + std::to_string(w.windowRow) + "_" + std::to_string(w.windowCol);
 }
 
 }  // namespace
@@ -102,7 +102,7 @@ ObjFiles exportObjText(const Document& doc, int requestedLevel, const std::strin
         }
     };
     const std::vector<PatchInstance> windows = expandPatches(doc);
-    for (size_t w = 0; w < mesh.perWindow.size(); ++w) faces(mesh.perWindow[w], groupName(doc, windows[w], w));
+    for (size_t w = 0; w < mesh.perWindow.size(); ++w) faces(mesh.perWindow[w], groupName(doc, windows[w]));
     for (size_t t = 0; t < mesh.perTriangle.size(); ++t)
         faces(mesh.perTriangle[t], doc.triangles[t].name.empty() ? "triangle_" + std::to_string(t) : doc.triangles[t].name);
     if (!curveIds.empty()) o += "usemtl patchwork_curves\n";

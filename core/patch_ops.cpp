@@ -107,13 +107,16 @@ void deletePatch(Document& doc, uint32_t p) {
     eraseItem(doc, doc.patches, p);
 }
 
+namespace {
+// Where flipPatch moves net slot s (0..15, row-major): the same row, the column mirrored.
+int flippedSlot(int s) { return (s / 4) * 4 + 3 - s % 4; }
+}  // namespace
+
 void flipPatch(Document& doc, uint32_t p) {
     checkPatch(doc, p);
     Patch& pt = doc.patches[p];
-    for (int i = 0; i < 4; ++i) {
-        std::swap(pt.idx[size_t(i * 4 + 0)], pt.idx[size_t(i * 4 + 3)]);
-        std::swap(pt.idx[size_t(i * 4 + 1)], pt.idx[size_t(i * 4 + 2)]);
-    }
+    for (int s = 0; s < 16; ++s)
+        if (s % 4 < 2) std::swap(pt.idx[size_t(s)], pt.idx[size_t(flippedSlot(s))]);
     if (pt.tessOverride) {
         auto& o = *pt.tessOverride;
         std::swap(o[0], o[2]);  // outer u=0 <-> u=1
@@ -270,7 +273,7 @@ JoinPlan planJoin(const Document& doc, uint32_t a, Edge ea, uint32_t b, Edge eb)
     auto slotB = [&](int k, int d) {
         // After the flip (not applied yet) the slot of plan.edgeB's k-th point at depth d.
         const int s = edgeSlot(plan.edgeB, k, d);
-        return plan.flipB ? (s / 4) * 4 + 3 - s % 4 : s;
+        return plan.flipB ? flippedSlot(s) : s;
     };
     Vec3 out(0.0), chord = doc.points[A.idx[size_t(edgeSlot(ea, 3, 0))]] - doc.points[A.idx[size_t(edgeSlot(ea, 0, 0))]];
     double side = 0.0, gap = 0.0;

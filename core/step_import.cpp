@@ -187,7 +187,7 @@ Document importCadSurfaces(const std::filesystem::path& path, CadImportReport* r
             std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) > limits::kMaxCoordinate)
             throw InputError(path.string(), "a control point is not finite or too large");
     const Bounds box = computeBounds(doc.points);
-    mergeCoincidentPoints(doc, 1e-9 * std::max(box.diagonal(), 1e-300));
+    mergeCoincidentPoints(doc, 1e-9 * modelSize(doc));
     doc.joins = detectJoins(doc);
     doc.name = path.stem().string();
     doc.camera.zUp = true;  // CAD systems are Z-up

@@ -59,11 +59,9 @@ Editor::Editor(AppWindow& window, const std::string& file) : window_(window) {
     if (file.empty())
         setDocument(builtinTeapot(), "");
     else {
-        LoadReport report;  // a Patchwork glTF saves back with its own export options
-        setDocument(loadDocument(file, &report), file);
-        if (report.exportOptions) session_.exportOptions = *report.exportOptions;
-        if (!report.notes.empty())
-            status(std::to_string(report.notes.size()) + (report.notes.size() == 1 ? " face" : " faces") + " not imported; " + report.notes.front());
+        const std::vector<std::string> notes = session_.open(file);  // as File > Open
+        documentReplaced();
+        if (!notes.empty()) status(skippedSummary(notes));
     }
     // Warm the pipelines on the first acquired image (the first real frame then pays no JIT), and
     // present it through the normal path.
