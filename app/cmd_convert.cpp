@@ -1,6 +1,6 @@
 // `patchwork convert IN OUT`: any loadable document to any savable one, by extension (.patchwork,
 // .bpt, .gltf, .glb). glTF output uses the input's export options when it is a Patchwork glTF, else
-// the defaults. The output is written
+// the defaults (one exported as displayed is tessellated on the GPU again). The output is written
 // atomically: on any error nothing is left at OUT (an existing file there stays as it was).
 #include <iostream>
 #include <memory>
@@ -8,6 +8,7 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "app/displayed_mesh.hpp"
 #include "core/document_io.hpp"
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
@@ -28,7 +29,15 @@ int runConvert(const ConvertOptions& opt) {
     LoadReport report;
     const Document doc = loadDocument(opt.input, &report);
     for (const std::string& note : report.notes) std::cerr << "patchwork convert: " << opt.input << ": " << note << "\n";
-    saveDocument(doc, opt.output, report.exportOptions.value_or(GltfExportOptions{}));
+    const GltfExportOptions options = report.exportOptions.value_or(GltfExportOptions{});
+    std::optional<TriangleMesh> displayed;  // a glTF exported as displayed is written so again
+    const std::string ext = lowerExtension(opt.output);
+    if (options.asDisplayed && (ext == ".glb" || ext == ".gltf" || ext == ".obj")) {
+        DisplayedMeshRequest request;
+        request.viewport = options.viewport[0] > 0 && options.viewport[1] > 0 ? options.viewport : request.viewport;
+        displayed = captureDisplayedMesh(doc, request).mesh;
+    }
+    saveDocument(doc, opt.output, options, displayed ? &*displayed : nullptr);
     if (!opt.quiet)
         std::cout << "wrote " << opt.output << " (" << doc.patches.size() << " patches, " << doc.surfaces.size()
                   << " surfaces, " << doc.points.size() << " points, " << doc.joins.size() << " joins)\n";

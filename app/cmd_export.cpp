@@ -1,6 +1,7 @@
-// `patchwork export FILE -o OUT [--tess N] [--primitives surfaces|patches|single] [--cage]`:
-// tessellates the document and writes a glTF 2.0 file (.gltf with an embedded buffer, or .glb) that
-// also carries the editable patches. Options not given come from FILE's own export options when it
+// `patchwork export FILE -o OUT [--tess N | --as-displayed [--size WxH] [--device NAME]]
+// [--primitives surfaces|patches|single] [--cage]`: tessellates the document and writes a glTF 2.0
+// file (.gltf with an embedded buffer, or .glb) that also carries the editable patches, or OBJ; or
+// exact STEP. --as-displayed writes the triangles the GPU draws for the document's view (app/displayed_mesh). Options not given come from FILE's own export options when it
 // is a Patchwork glTF (so re-exporting it without flags writes the same file), else the defaults.
 #include <filesystem>
 #include <iostream>
@@ -9,12 +10,15 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "app/displayed_mesh.hpp"
+#include "app/level_args.hpp"
 #include "core/document_io.hpp"
 #include "core/file_io.hpp"
 #include "core/gltf_export.hpp"
 #include "core/limits.hpp"
 #include "core/obj_export.hpp"
 #include "core/step_export.hpp"
+#include "render/device.hpp"
 
 namespace pw::app {
 
@@ -29,7 +33,37 @@ struct ExportArgs {
     bool cage = false;
     bool cageGiven = false;
     std::string schema = "ap214";
+    bool asDisplayed = false;
+    bool asDisplayedGiven = false;
+    std::string size;  // WxH, empty: the file's own (as displayed before) or 1280x720
+    std::string device;
+    bool validation = false;
 };
+
+// The surface as displayed, when asked for (or when FILE was exported so and no --tess overrides
+// it): captured on the GPU, described on stdout. nullopt: tessellate at the level.
+std::optional<TriangleMesh> displayedMesh(const ExportArgs& args, const Document& doc, GltfExportOptions& options) {
+    const bool wanted = args.asDisplayedGiven ? args.asDisplayed : options.asDisplayed && !args.tessGiven;
+    options.asDisplayed = wanted;
+    if (!wanted) {
+        options.viewport = {0, 0};
+        return std::nullopt;
+    }
+    DisplayedMeshRequest request;
+    if (!args.size.empty()) {
+        const auto [w, h] = parseImageSize("export", args.size);
+        request.viewport = {int(w), int(h)};
+    } else if (options.viewport[0] > 0 && options.viewport[1] > 0) {
+        request.viewport = options.viewport;
+    }
+    options.viewport = request.viewport;
+    request.device = args.device;
+    request.validation = args.validation;
+    std::string deviceName;
+    render::CapturedSurface captured = captureDisplayedMesh(doc, request, &deviceName);
+    std::cout << describeCapture(captured, request, deviceName) << "\n";
+    return std::move(captured.mesh);
+}
 
 // The document to export, after refusing an unwritable output (before any work); what the load
 // skipped goes to stderr.
@@ -60,14 +94,16 @@ int runStepExport(const ExportArgs& args) {
 int runObjExport(const ExportArgs& args) {
     LoadReport report;
     const Document doc = loadForExport(args, report);
-    const ObjExportStats stats = exportObj(doc, args.output, args.tessGiven ? args.tess : 0);
+    GltfExportOptions options = report.exportOptions.value_or(GltfExportOptions{});
+    std::optional<TriangleMesh> displayed = displayedMesh(args, doc, options);
+    const ObjExportStats stats = exportObj(doc, args.output, args.tessGiven ? args.tess : 0, displayed ? &*displayed : nullptr);
     std::filesystem::path mtl = args.output;
     mtl.replace_extension(".mtl");
     std::cout << "wrote " << args.output << " and " << mtl.filename().string() << ": " << stats.triangles << " triangles, "
               << stats.positions << " positions, " << stats.normals << " normals, " << stats.uvs << " texture coordinates, "
               << stats.groups << " groups";
     if (stats.lineSegments) std::cout << ", " << stats.lineSegments << " curve segments";
-    std::cout << ", " << stats.bytes << " bytes (level " << stats.level << ")\n";
+    std::cout << ", " << stats.bytes << " bytes (" << (stats.asDisplayed ? std::string("as displayed") : "level " + std::to_string(stats.level)) << ")\n";
     return 0;
 }
 
@@ -83,11 +119,12 @@ int runGltfExport(const ExportArgs& args) {
     if (args.tessGiven) options.level = args.tess;
     if (grouping) options.primitives = *grouping;
     if (args.cageGiven) options.cage = args.cage;
-    const GltfExportStats stats = exportGltfWithStats(doc, args.output, options);
+    std::optional<TriangleMesh> displayed = displayedMesh(args, doc, options);
+    const GltfExportStats stats = exportGltfWithStats(doc, args.output, options, displayed ? &*displayed : nullptr);
     std::cout << "wrote " << args.output << ": " << stats.triangles << " triangles, " << stats.vertices << " vertices";
     if (options.cage) std::cout << ", " << stats.cageSegments << " cage segments";
     if (stats.curveSegments) std::cout << ", " << stats.curveSegments << " curve segments";
-    std::cout << ", " << stats.bytes << " bytes (level " << stats.level << ", "
+    std::cout << ", " << stats.bytes << " bytes (" << (options.asDisplayed ? std::string("as displayed") : "level " + std::to_string(stats.level)) << ", "
               << stats.primitives << (stats.primitives == 1 ? " primitive" : " primitives") << " ("
               << (options.primitives == MeshGrouping::Surfaces  ? "one per connected surface"
                   : options.primitives == MeshGrouping::Patches ? "one per patch"
@@ -98,13 +135,28 @@ int runGltfExport(const ExportArgs& args) {
 
 int runExport(const ExportArgs& args) {
     const std::string ext = lowerExtension(args.output);
-    if (ext == ".step" || ext == ".stp") return runStepExport(args);  // exact: no level
+    if (ext == ".step" || ext == ".stp") {
+        if (args.asDisplayedGiven && args.asDisplayed) {
+            std::cerr << "patchwork export: --as-displayed applies to tessellated exports (.glb, .gltf, .obj); STEP is exact\n";
+            return 2;
+        }
+        return runStepExport(args);  // exact: no level
+    }
+    if (args.tessGiven && args.asDisplayedGiven && args.asDisplayed) {
+        std::cerr << "patchwork export: --tess and --as-displayed exclude each other (the displayed levels are the document's)\n";
+        return 2;
+    }
     if (args.tessGiven && (args.tess < 1 || args.tess > limits::kMaxExportLevel)) {
         std::cerr << "patchwork export: --tess must be an integer from 1 to " << limits::kMaxExportLevel << " (got "
                   << args.tess << ")\n";
         return 2;
     }
-    return ext == ".obj" ? runObjExport(args) : runGltfExport(args);
+    const int rc = ext == ".obj" ? runObjExport(args) : runGltfExport(args);
+    if (rc == 0 && (args.validation || render::validationRequestedByEnv()) && render::Device::validationMessageCount() > 0) {
+        std::cerr << "patchwork export: " << render::Device::validationMessageCount() << " Vulkan validation message(s)\n";
+        return 1;
+    }
+    return rc;
 }
 
 }  // namespace
@@ -124,9 +176,16 @@ void registerExportCommand(CLI::App& app, Action& run) {
                     "its own vertices; single: one for everything");
     cmd->add_flag("--cage,!--no-cage", args->cage, "Add the control cage as lines in its own node (unlit)");
     cmd->add_option("--schema", args->schema, "STEP application protocol: ap214 (default) or ap242");
+    cmd->add_flag("--as-displayed,!--no-as-displayed", args->asDisplayed,
+                  "The triangles the GPU draws for the document's view (its per-edge levels, partitioning, adaptive "
+                  "levels and culling from its camera), read back from the tessellator and welded");
+    cmd->add_option("--size", args->size, "With --as-displayed: the view's size WIDTHxHEIGHT (default 1280x720)");
+    cmd->add_option("--device", args->device, "With --as-displayed: Vulkan device, substring of its name");
+    cmd->add_flag("--validation", args->validation, "With --as-displayed: Khronos validation layer; exit 1 on any message");
     cmd->parse_complete_callback([cmd = cmd, args = args] {
         args->tessGiven = cmd->count("--tess") > 0;
         args->cageGiven = cmd->count("--cage") + cmd->count("--no-cage") > 0;
+        args->asDisplayedGiven = cmd->count("--as-displayed") + cmd->count("--no-as-displayed") > 0;
     });
 }
 

@@ -33,8 +33,12 @@ Document loadDocument(const std::filesystem::path& path, LoadReport* report) {
     throw InputError(path.string(), "unknown file type '" + ext + "'; Patchwork reads " + kLoadable);
 }
 
-void saveDocument(const Document& doc, const std::filesystem::path& path, const GltfExportOptions& gltf) {
+void saveDocument(const Document& doc, const std::filesystem::path& path, const GltfExportOptions& gltf, TriangleMesh* displayed) {
     const std::string ext = lowerExtension(path);
+    const bool tessellated = ext == ".gltf" || ext == ".glb" || ext == ".obj";
+    if (tessellated && gltf.asDisplayed && !displayed)
+        throw OutputError(path.string(), "the surface as displayed comes from the GPU; export it with `patchwork export "
+                                         "--as-displayed` or the editor's File > Export As Displayed");
     if (ext == ".patchwork") {
         writeFileAtomic(path, serializeDocument(doc));
     } else if (ext == ".bpt") {
@@ -47,11 +51,11 @@ void saveDocument(const Document& doc, const std::filesystem::path& path, const 
         }
         writeFileAtomic(path, text);
     } else if (ext == ".gltf" || ext == ".glb") {
-        exportGltf(doc, path, gltf);
+        exportGltfWithStats(doc, path, gltf, gltf.asDisplayed ? displayed : nullptr);
     } else if (ext == ".step" || ext == ".stp") {
         exportStep(doc, path);
     } else if (ext == ".obj") {
-        exportObj(doc, path, gltf.level);
+        exportObj(doc, path, gltf.level, gltf.asDisplayed ? displayed : nullptr);
     } else {
         throw OutputError(path.string(), "unknown file type '" + ext + "'; Patchwork writes " + kSavable);
     }

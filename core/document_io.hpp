@@ -20,7 +20,10 @@ struct LoadReport {
 };
 
 Document loadDocument(const std::filesystem::path& path, LoadReport* report = nullptr);
-void saveDocument(const Document& doc, const std::filesystem::path& path, const GltfExportOptions& gltf = {});
+// A glTF or OBJ with gltf.asDisplayed writes `displayed` (the GPU's tessellation, captured by the
+// caller with render/; consumed); without it such a save is refused (OutputError naming the path).
+void saveDocument(const Document& doc, const std::filesystem::path& path, const GltfExportOptions& gltf = {},
+                  TriangleMesh* displayed = nullptr);
 
 // The extensions saveDocument writes (".patchwork, .bpt, ... or .stp"), and whether it writes `path`'s.
 const char* savableExtensions();

@@ -163,6 +163,10 @@ tinygltf::Value exportOptionsValue(const GltfExportOptions& o) {
     v.emplace("level", tinygltf::Value(o.level));
     v.emplace("primitives", tinygltf::Value(std::string(meshGroupingName(o.primitives))));
     v.emplace("cage", tinygltf::Value(o.cage));
+    if (o.asDisplayed) {
+        v.emplace("asDisplayed", tinygltf::Value(true));
+        v.emplace("viewport", tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(o.viewport[0]), tinygltf::Value(o.viewport[1])}));
+    }
     return tinygltf::Value(std::move(v));
 }
 
@@ -186,6 +190,16 @@ std::optional<GltfExportOptions> exportOptionsFromJson(const nlohmann::json& j, 
         if (!c->is_boolean()) throw InputError(source, "must be true or false", 0, at + ".cage");
         o.cage = c->get<bool>();
     }
+    if (const auto d = j.find("asDisplayed"); d != j.end()) {
+        if (!d->is_boolean()) throw InputError(source, "must be true or false", 0, at + ".asDisplayed");
+        o.asDisplayed = d->get<bool>();
+    }
+    if (const auto v = j.find("viewport"); v != j.end()) {
+        const auto size = [](const nlohmann::json& e) { return e.is_number_integer() && e.get<int64_t>() >= 1 && e.get<int64_t>() <= 16384; };
+        if (!v->is_array() || v->size() != 2 || !size((*v)[0]) || !size((*v)[1]))
+            throw InputError(source, "must be [width, height] in pixels, each 1 to 16384", 0, at + ".viewport");
+        o.viewport = {(*v)[0].get<int>(), (*v)[1].get<int>()};
+    }
     return o;
 }
 
@@ -200,7 +214,10 @@ int resolveExportLevel(const Document& doc, int requested) {
     return static_cast<int>(std::clamp(level, 1.0, static_cast<double>(limits::kMaxExportLevel)));
 }
 
-std::string exportGltfBytes(const Document& doc, bool binary, const GltfExportOptions& options, GltfExportStats* stats) {
+std::string exportGltfBytes(const Document& doc, bool binary, const GltfExportOptions& options, GltfExportStats* stats,
+                            TriangleMesh* displayed) {
+    if (options.asDisplayed != (displayed != nullptr))
+        throw std::invalid_argument(displayed ? "a displayed mesh without asDisplayed" : "asDisplayed without the displayed mesh");
     const int level = resolveExportLevel(doc, options.level);
     GltfExportStats st;
     st.level = level;
@@ -210,7 +227,13 @@ std::string exportGltfBytes(const Document& doc, bool binary, const GltfExportOp
     // serialised).
     const std::string documentJson = documentToJson(doc).dump();
     const double meshFactor = binary ? 1.0 : 4.0 / 3.0, room = double(limits::kMaxFileBytes) - double(documentJson.size());
-    if (const MeshBound bound = meshBound(doc, level); bound.bytes * meshFactor > room) {
+    if (displayed) {
+        const double bytes = double(displayed->positions.size()) * 32 + double(displayed->indices.size()) * 4;
+        if (bytes * meshFactor > room)
+            throw std::length_error("the displayed surface would take " + std::to_string(uint64_t(bytes * meshFactor) >> 20) +
+                                    " MiB, more than the " + std::to_string(limits::kMaxFileBytes >> 20) +
+                                    " MiB Patchwork reads back; lower the document's levels");
+    } else if (const MeshBound bound = meshBound(doc, level); bound.bytes * meshFactor > room) {
         const int fits = room > 0 ? highestLevelWithin(doc, room / meshFactor) : 0;
         throw std::length_error("at level " + std::to_string(level) + " the file could take " +
                                 std::to_string((uint64_t(bound.bytes * meshFactor) + documentJson.size()) >> 20) + " MiB, more than the " +
@@ -253,7 +276,7 @@ std::string exportGltfBytes(const Document& doc, bool binary, const GltfExportOp
     // The surface: one primitive per group (connected surface, patch, or all), each with its own
     // vertices; open surfaces (a boundary edge anywhere) are double-sided.
     {
-        SplitMesh mesh = splitMesh(tessellateDocument(doc, level), options.primitives);
+        SplitMesh mesh = splitMesh(displayed ? std::move(*displayed) : tessellateDocument(doc, level), options.primitives);
         st.triangles = mesh.indices.size() / 3;
         st.vertices = mesh.positions.size();
         st.primitives = mesh.groups.size();
@@ -345,14 +368,15 @@ std::string exportGltfBytes(const Document& doc, bool binary, const GltfExportOp
     return exportGltfBytes(doc, binary, options, nullptr);
 }
 
-GltfExportStats exportGltfWithStats(const Document& doc, const std::filesystem::path& path, const GltfExportOptions& options) {
+GltfExportStats exportGltfWithStats(const Document& doc, const std::filesystem::path& path, const GltfExportOptions& options,
+                                    TriangleMesh* displayed) {
     const std::string ext = lowerExtension(path);
     if (ext != ".glb" && ext != ".gltf")
         throw OutputError(path.string(), "unknown glTF extension '" + ext + "' (use .gltf or .glb)");
     GltfExportStats stats;
     std::string bytes;
     try {
-        bytes = exportGltfBytes(doc, ext == ".glb", options, &stats);
+        bytes = exportGltfBytes(doc, ext == ".glb", options, &stats, displayed);
     } catch (const std::length_error& e) {
         throw OutputError(path.string(), e.what());
     } catch (const std::bad_alloc&) {

@@ -1,6 +1,7 @@
 // glTF 2.0 export (.gltf with an embedded buffer, or .glb) through tinygltf (DESIGN §5).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -17,11 +18,15 @@ struct GltfExportOptions {
     int level = 0;  // tessellation level; 0 = the document's (max of its uniform levels, rounded up)
     MeshGrouping primitives = MeshGrouping::Surfaces;  // one primitive per connected surface, patch, or one
     bool cage = false;  // add the control cage (LINES, its own node)
+    // The surface as the GPU tessellated it for the document's view (per-edge, adaptive levels;
+    // render/surface_capture), passed in as `displayed`; `level` then only samples the curves.
+    bool asDisplayed = false;
+    std::array<int, 2> viewport{0, 0};  // as displayed: the view's size in pixels (screen-space levels)
     bool operator==(const GltfExportOptions&) const = default;
 };
 
 // The options an export used, kept in asset.extras.patchworkExport ({"level", "primitives",
-// "cage"}) so a re-export without flags writes the same file. nullopt when the extras have none;
+// "cage"}, and "asDisplayed": true with "viewport": [w, h] when it was) so a re-export without flags writes the same file. nullopt when the extras have none;
 // InputError naming `field` when they are malformed.
 std::optional<GltfExportOptions> exportOptionsFromJson(const nlohmann::json& j, const std::string& source);
 
@@ -48,8 +53,11 @@ struct GltfExportStats {
 // up; clamped to [1, limits::kMaxExportLevel].
 int resolveExportLevel(const Document& doc, int requested);
 
-// Same as above, also reporting what was written.
-std::string exportGltfBytes(const Document& doc, bool binary, const GltfExportOptions& options, GltfExportStats* stats);
-GltfExportStats exportGltfWithStats(const Document& doc, const std::filesystem::path& path, const GltfExportOptions& options);
+// Same as above, also reporting what was written. With options.asDisplayed, `displayed` is the
+// surface mesh (consumed) instead of tessellateDocument at the level (std::invalid_argument if absent).
+std::string exportGltfBytes(const Document& doc, bool binary, const GltfExportOptions& options, GltfExportStats* stats,
+                            TriangleMesh* displayed = nullptr);
+GltfExportStats exportGltfWithStats(const Document& doc, const std::filesystem::path& path, const GltfExportOptions& options,
+                                    TriangleMesh* displayed = nullptr);
 
 }  // namespace pw

@@ -48,14 +48,16 @@ std::string groupName(const Document& doc, const PatchInstance& w) {
 
 }  // namespace
 
-ObjFiles exportObjText(const Document& doc, int requestedLevel, const std::string& mtlName, ObjExportStats* stats) {
+ObjFiles exportObjText(const Document& doc, int requestedLevel, const std::string& mtlName, ObjExportStats* stats,
+                       TriangleMesh* displayed) {
     const int level = resolveExportLevel(doc, requestedLevel);
     ObjExportStats st;
     st.level = level;
+    st.asDisplayed = displayed != nullptr;
     const bool turn = doc.camera.zUp;
     auto up = [&](std::array<float, 3> p) { return turn ? std::array<float, 3>{p[0], p[2], -p[1]} : p; };
 
-    TriangleMesh mesh = tessellateDocument(doc, level);
+    TriangleMesh mesh = displayed ? std::move(*displayed) : tessellateDocument(doc, level);
     for (auto& p : mesh.positions) p = up(p);
     for (auto& n : mesh.normals) n = up(n);
     std::vector<std::array<float, 3>> positions, normals;
@@ -67,7 +69,8 @@ ObjFiles exportObjText(const Document& doc, int requestedLevel, const std::strin
     ObjFiles f;
     std::string& o = f.obj;
     o.reserve(positions.size() * 40 + normals.size() * 40 + uvs.size() * 28 + mesh.indices.size() * 12 + 1024);
-    o += "# Patchwork " + std::string(doc.name.empty() ? "document" : doc.name) + ", level " + std::to_string(level) + "\n";
+    o += "# Patchwork " + std::string(doc.name.empty() ? "document" : doc.name) +
+         (displayed ? std::string(", as displayed (the GPU's tessellation)") : ", level " + std::to_string(level)) + "\n";
     if (turn) o += "# Z-up document written +Y up: (x, y, z) -> (x, z, -y)\n";
     o += "mtllib " + mtlName + "\n";
     for (const auto& p : positions) put(o, "v %.9g %.9g %.9g\n", p[0], p[1], p[2]);
@@ -126,14 +129,14 @@ ObjFiles exportObjText(const Document& doc, int requestedLevel, const std::strin
     return f;
 }
 
-ObjExportStats exportObj(const Document& doc, const std::filesystem::path& path, int level) {
+ObjExportStats exportObj(const Document& doc, const std::filesystem::path& path, int level, TriangleMesh* displayed) {
     if (lowerExtension(path) != ".obj") throw OutputError(path.string(), "an OBJ export needs the extension .obj");
     std::filesystem::path mtl = path;
     mtl.replace_extension(".mtl");
     ObjExportStats stats;
     ObjFiles files;
     try {
-        files = exportObjText(doc, level, mtl.filename().string(), &stats);
+        files = exportObjText(doc, level, mtl.filename().string(), &stats, displayed);
     } catch (const std::bad_alloc&) {
         throw OutputError(path.string(), "not enough memory for the mesh at level " + std::to_string(resolveExportLevel(doc, level)));
     }

@@ -10,11 +10,13 @@
 #include <string>
 
 #include "core/document.hpp"
+#include "core/mesh_tessellate.hpp"
 
 namespace pw {
 
 struct ObjExportStats {
     int level = 0;
+    bool asDisplayed = false;
     size_t positions = 0, normals = 0, uvs = 0, triangles = 0, groups = 0, lineSegments = 0;
     size_t bytes = 0;  // OBJ and MTL together
 };
@@ -24,11 +26,13 @@ struct ObjFiles {
 };
 
 // `mtlName` is the file name the OBJ's mtllib line refers to. level as in glTF export (0: the
-// document's).
-ObjFiles exportObjText(const Document& doc, int level, const std::string& mtlName, ObjExportStats* stats = nullptr);
+// document's). With `displayed` (the surface as the GPU tessellated it, render/surface_capture;
+// consumed), that mesh is written instead of tessellateDocument's and `level` only samples curves.
+ObjFiles exportObjText(const Document& doc, int level, const std::string& mtlName, ObjExportStats* stats = nullptr,
+                       TriangleMesh* displayed = nullptr);
 
 // Writes PATH (.obj) and the MTL beside it (same stem, .mtl), each atomically; on failure neither is
 // left changed. Throws OutputError naming the path.
-ObjExportStats exportObj(const Document& doc, const std::filesystem::path& path, int level = 0);
+ObjExportStats exportObj(const Document& doc, const std::filesystem::path& path, int level = 0, TriangleMesh* displayed = nullptr);
 
 }  // namespace pw

@@ -67,6 +67,16 @@ bool hasLayer(const char* name) {
     return false;
 }
 
+bool hasDeviceExtension(VkPhysicalDevice d, const char* name) {
+    uint32_t n = 0;
+    vkEnumerateDeviceExtensionProperties(d, nullptr, &n, nullptr);
+    std::vector<VkExtensionProperties> ext(n);
+    vkEnumerateDeviceExtensionProperties(d, nullptr, &n, ext.data());
+    for (auto& e : ext)
+        if (std::strcmp(e.extensionName, name) == 0) return true;
+    return false;
+}
+
 int typeRank(VkPhysicalDeviceType t) {
     switch (t) {
         case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 0;
@@ -243,6 +253,21 @@ Device::Device(const DeviceOptions& options) {
         VkPhysicalDeviceVulkan13Features e13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
         e13.dynamicRendering = VK_TRUE;
         e13.maintenance4 = f13.maintenance4;  // relaxed interface matching (point-mode TES -> normals GS)
+        // Transform feedback (optional): the tessellator's triangles read back for export.
+        std::vector<const char*> extensions = options.deviceExtensions;
+        VkPhysicalDeviceTransformFeedbackFeaturesEXT exfb{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TRANSFORM_FEEDBACK_FEATURES_EXT};
+        if (hasDeviceExtension(physical_, VK_EXT_TRANSFORM_FEEDBACK_EXTENSION_NAME)) {
+            VkPhysicalDeviceTransformFeedbackFeaturesEXT fx{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TRANSFORM_FEEDBACK_FEATURES_EXT};
+            VkPhysicalDeviceFeatures2 q{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+            q.pNext = &fx;
+            vkGetPhysicalDeviceFeatures2(physical_, &q);
+            if (fx.transformFeedback) {
+                exfb.transformFeedback = VK_TRUE;
+                e13.pNext = &exfb;
+                extensions.push_back(VK_EXT_TRANSFORM_FEEDBACK_EXTENSION_NAME);
+                caps_.transformFeedback = true;
+            }
+        }
         VkPhysicalDeviceFeatures2 e2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
         e2.features = enable;
         e2.pNext = &e13;
@@ -255,10 +280,17 @@ Device::Device(const DeviceOptions& options) {
         dci.pNext = &e2;
         dci.queueCreateInfoCount = 1;
         dci.pQueueCreateInfos = &qci;
-        dci.enabledExtensionCount = uint32_t(options.deviceExtensions.size());
-        dci.ppEnabledExtensionNames = options.deviceExtensions.data();
+        dci.enabledExtensionCount = uint32_t(extensions.size());
+        dci.ppEnabledExtensionNames = extensions.data();
         VK_CHECK(vkCreateDevice(physical_, &dci, nullptr, &device_));
         vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+        if (caps_.transformFeedback) {
+            xfb_.bind = reinterpret_cast<PFN_vkCmdBindTransformFeedbackBuffersEXT>(
+                vkGetDeviceProcAddr(device_, "vkCmdBindTransformFeedbackBuffersEXT"));
+            xfb_.begin = reinterpret_cast<PFN_vkCmdBeginTransformFeedbackEXT>(vkGetDeviceProcAddr(device_, "vkCmdBeginTransformFeedbackEXT"));
+            xfb_.end = reinterpret_cast<PFN_vkCmdEndTransformFeedbackEXT>(vkGetDeviceProcAddr(device_, "vkCmdEndTransformFeedbackEXT"));
+            caps_.transformFeedback = xfb_.bind && xfb_.begin && xfb_.end;
+        }
 
         VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
         pci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;

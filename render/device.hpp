@@ -31,6 +31,7 @@ struct DeviceCaps {
     bool largePoints = false;
     bool storesAndAtomics = false;  // vertexPipelineStoresAndAtomics: culled-patch counter
     bool tessGeomPointSize = false;
+    bool transformFeedback = false;  // VK_EXT_transform_feedback: export as displayed (render/surface_capture)
     float timestampPeriodNs = 1.0f;
     uint32_t maxTessLevel = 64;
     VkSampleCountFlagBits maxSamples = VK_SAMPLE_COUNT_1_BIT;  // colour and depth, at most 4
@@ -58,6 +59,13 @@ public:
     uint32_t queueFamily() const { return queueFamily_; }
     VkCommandPool commandPool() const { return pool_; }
     const DeviceCaps& caps() const { return caps_; }
+    // VK_EXT_transform_feedback's commands (null unless caps().transformFeedback).
+    struct TransformFeedbackFns {
+        PFN_vkCmdBindTransformFeedbackBuffersEXT bind = nullptr;
+        PFN_vkCmdBeginTransformFeedbackEXT begin = nullptr;
+        PFN_vkCmdEndTransformFeedbackEXT end = nullptr;
+    };
+    const TransformFeedbackFns& transformFeedback() const { return xfb_; }
     const VkPhysicalDeviceProperties& properties() const { return props_; }
     std::string name() const { return props_.deviceName; }
     // Evaluation vertices per draw: kCpuDrawVertexBudget on CPU implementations (lavapipe), 0 =
@@ -97,6 +105,7 @@ private:
     VkPhysicalDeviceProperties props_{};
     VkPhysicalDeviceMemoryProperties memProps_{};
     DeviceCaps caps_;
+    TransformFeedbackFns xfb_;
 };
 
 }  // namespace pw::render

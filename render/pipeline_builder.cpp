@@ -55,6 +55,7 @@ VkPipeline buildPipeline(Device& dev, VkPipelineLayout layout, VkPipelineCache c
     vp.viewportCount = 1;
     vp.scissorCount = 1;
     VkPipelineRasterizationStateCreateInfo rs{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+    rs.rasterizerDiscardEnable = d.rasterizerDiscard;
     rs.polygonMode = d.polygon;
     rs.cullMode = VK_CULL_MODE_NONE;
     rs.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;

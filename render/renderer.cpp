@@ -1,4 +1,5 @@
 #include "render/renderer.hpp"
+#include "render/renderer_impl.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -39,21 +40,6 @@ VkRect2D paneRect(const RenderOptions& opt, VkExtent2D extent) {
     return {{x0, y0}, {uint32_t(x1 - x0), uint32_t(y1 - y0)}};
 }
 
-struct Renderer::Impl {
-    SurfaceScene scene;
-    OverlayScene overlays;
-    PlainMesh mesh;
-    Buffer frameUbo, counters;
-    Buffer ground;  // ground grid vertices (position + rgba) for groundStep / groundZUp
-    uint32_t groundVertexCount = 0;
-    double groundStep = 0.0;
-    bool groundZUp = true;
-    OwnedDescriptorPool descPool;
-    VkDescriptorSet set = VK_NULL_HANDLE;  // freed with descPool
-    std::unique_ptr<FrameQueries> queries;
-    OwnedCommandBuffer cmd;
-    OwnedFence fence;
-};
 
 namespace {
 
@@ -135,16 +121,12 @@ void Renderer::updatePoints(const std::vector<Vec3>& points, const std::vector<u
     }
 }
 
-FrameStats Renderer::render(const RenderOptions& opt) {
+Renderer::FramePlan Renderer::prepareFrame(const RenderOptions& opt, VkRect2D area) {
     Impl& m = *impl_;
-    FrameStats stats;
-    const auto t0 = std::chrono::steady_clock::now();
-    const VkRect2D area = paneRect(opt, target_.extent());
-    const VkExtent2D ext = area.extent;  // the pane's size: aspect, pixel sizes
+    const VkExtent2D ext = area.extent;
     const TessSettings& ts = opt.tess;
     const DisplaySettings& ds = opt.display;
-
-    // Step 1: frame uniforms.
+    FramePlan plan;
     const ViewMatrices vm = viewMatrices(opt.camera, double(ext.width) / double(ext.height));
     gpu::FrameUniforms fu{};
     fu.viewProj = vm.viewProj;
@@ -178,6 +160,28 @@ FrameStats Renderer::render(const RenderOptions& opt) {
               opt.selectedPoint >= 0 ? uint32_t(opt.selectedPoint) : gpu::kNoPoint, m.scene.pointCount, 0u};
     fu.isoline = {ts.isolineLevels[0], ts.isolineLevels[1], 0.0f, 0.0f};
     std::memcpy(m.frameUbo.mapped, &fu, sizeof(fu));
+    plan.vm = vm;
+    plan.variant = spacingVariant(ts.spacing);
+    plan.levels = levelsVariant(ts);
+    plan.maxLevel = maxLevel;
+    plan.budget = dev_.drawVertexBudget();
+    plan.perDraw = patchesPerDraw(maxSegments(ts, m.scene.overrideMax, maxLevel), plan.budget);
+    if (ts.adaptive != AdaptiveMode::None)
+        plan.levelBounds = adaptiveLevelBounds(m.scene, ts, vm, float(ext.width), float(ext.height), maxLevel);
+    return plan;
+}
+
+FrameStats Renderer::render(const RenderOptions& opt) {
+    Impl& m = *impl_;
+    FrameStats stats;
+    const auto t0 = std::chrono::steady_clock::now();
+    const VkRect2D area = paneRect(opt, target_.extent());
+    const VkExtent2D ext = area.extent;  // the pane's size: aspect, pixel sizes
+    const TessSettings& ts = opt.tess;
+    const DisplaySettings& ds = opt.display;
+
+    // Step 1: frame uniforms, shader variants, batching.
+    const FramePlan plan = prepareFrame(opt, area);
 
     // Step 2: record.
     VkCommandBuffer cmd = m.cmd;
@@ -211,15 +215,11 @@ FrameStats Renderer::render(const RenderOptions& opt) {
     vkCmdSetScissor(cmd, 0, 1, &scissor);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.layout, 0, 1, &m.set, 0, nullptr);
 
-    const int variant = spacingVariant(ts.spacing);
-    const LevelsVariant levels = levelsVariant(ts);
+    const int variant = plan.variant;
+    const LevelsVariant levels = plan.levels;
     const VaryingsVariant varyings = varyingsVariant(ds.shading);
-    const uint32_t budget = dev_.drawVertexBudget();
-    const uint32_t perDraw = patchesPerDraw(maxSegments(ts, m.scene.overrideMax, maxLevel), budget);
-    std::vector<uint8_t> levelBounds;  // adaptive: batch by this frame's levels, not by the worst case
-    if (ts.adaptive != AdaptiveMode::None)
-        levelBounds = adaptiveLevelBounds(m.scene, ts, vm, float(ext.width), float(ext.height), maxLevel);
-    const std::vector<uint8_t>* bounds = levelBounds.empty() ? nullptr : &levelBounds;
+    const uint32_t budget = plan.budget, perDraw = plan.perDraw;
+    const std::vector<uint8_t>* bounds = plan.bounds();
     gpu::DrawPush push;
 
     // Step 3: the surface (statistics cover this pass only).

@@ -42,6 +42,15 @@ VkRect2D paneRect(const RenderOptions& opt, VkExtent2D extent);
 
 RenderOptions optionsFromDocument(const Document& doc);
 
+// What the GPU's tessellator made for the surface (Bézier windows, net windows, Bézier triangles),
+// read back through transform feedback and welded (core/mesh_weld.hpp): Renderer::captureSurface.
+struct CapturedSurface {
+    TriangleMesh mesh;
+    uint64_t gpuTriangles = 0;   // triangles the tessellator emitted
+    size_t degenerate = 0;       // of them, collapsed at poles and left out of the mesh
+    uint32_t patchesCulled = 0;  // patches the control shader culled (culling on: facing away, off screen)
+};
+
 class Renderer {
 public:
     Renderer(Device& dev, RenderTarget& target);
@@ -56,6 +65,10 @@ public:
     // one given to setDocument; boundary overlays refresh at the next setDocument.
     void updatePoints(const std::vector<Vec3>& points, const std::vector<uint32_t>& changed);
     FrameStats render(const RenderOptions& opt);
+    // The surface `render(opt)` would draw, triangle for triangle, as a welded mesh in document
+    // coordinates (render/surface_capture.cpp). InputError (exit 2) when the device has no
+    // transform feedback (VK_EXT_transform_feedback).
+    CapturedSurface captureSurface(const RenderOptions& opt);
     // Draws one frame with every pipeline variant so the first real frame does not pay for shader JIT.
     void warmUp();
 
@@ -64,6 +77,9 @@ public:
 
 private:
     struct Impl;
+    struct FramePlan;
+    // Writes the frame uniforms for `opt` drawn into `area` and plans the draws.
+    FramePlan prepareFrame(const RenderOptions& opt, VkRect2D area);
     Device& dev_;
     RenderTarget& target_;
     PipelineSet pipes_;

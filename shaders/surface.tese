@@ -17,13 +17,19 @@ layout(quads, SPACING, ccw) in;
 
 layout(location = 1) patch in float netScalePatch;  // largest extent of the net (control shader)
 layout(location = 2) patch in uint edgeFlipPatch;    // bit e: evaluate boundary e reversed (control shader)
-#ifdef POINT_MODE
-layout(location = 0) out vec3 outPos;  // the normal-vector overlay's base point
+#ifdef CAPTURE  // export as displayed: position, normal, UV and patch id into transform feedback (36 bytes a vertex)
+layout(xfb_buffer = 0, xfb_stride = 36) out;
+#define XFB(offset) , xfb_buffer = 0, xfb_offset = offset
+#else
+#define XFB(offset)
 #endif
-layout(location = 1) out vec3 outNormal;
+#if defined(POINT_MODE) || defined(CAPTURE)
+layout(location = 0 XFB(0)) out vec3 outPos;  // the normal-vector overlay's base point; the captured position
+#endif
+layout(location = 1 XFB(12)) out vec3 outNormal;
 #ifdef FULL_VARYINGS
-layout(location = 2) out vec2 outUV;
-layout(location = 3) flat out uint outPatch;
+layout(location = 2 XFB(24)) out vec2 outUV;
+layout(location = 3 XFB(32)) flat out uint outPatch;
 layout(location = 4) out vec2 outCurv;  // Gaussian, mean
 #endif
 
@@ -121,7 +127,7 @@ void main() {
     }
     vec3 n = normalAt(u, v, d);
 
-#ifdef POINT_MODE
+#if defined(POINT_MODE) || defined(CAPTURE)
     outPos = p;
 #endif
     outNormal = n;

@@ -65,6 +65,8 @@ public:
         r.image.rgba = target_.pixels();
         return r;
     }
+    // The surface render(o) draws, read back through transform feedback and welded.
+    render::CapturedSurface capture(const render::RenderOptions& o) { return renderer_.captureSurface(o); }
     uint32_t width() const { return target_.extent().width; }
     uint32_t height() const { return target_.extent().height; }
 

@@ -1,0 +1,50 @@
+// The renderer's private state and per-frame setup, shared by its two files: renderer.cpp (frames)
+// and surface_capture.cpp (the tessellator's triangles read back through transform feedback).
+#pragma once
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "core/camera_math.hpp"
+#include "render/buffers.hpp"
+#include "render/overlays.hpp"
+#include "render/pipelines.hpp"
+#include "render/plain_mesh.hpp"
+#include "render/renderer.hpp"
+#include "render/stats.hpp"
+#include "render/surface_scene.hpp"
+#include "render/vk_owned.hpp"
+
+namespace pw::render {
+
+struct Renderer::Impl {
+    SurfaceScene scene;
+    OverlayScene overlays;
+    PlainMesh mesh;
+    Buffer frameUbo, counters;
+    Buffer ground;  // ground grid vertices (position + rgba) for groundStep / groundZUp
+    uint32_t groundVertexCount = 0;
+    double groundStep = 0.0;
+    bool groundZUp = true;
+    OwnedDescriptorPool descPool;
+    VkDescriptorSet set = VK_NULL_HANDLE;  // freed with descPool
+    std::unique_ptr<FrameQueries> queries;
+    OwnedCommandBuffer cmd;
+    OwnedFence fence;
+    // Transform-feedback pipelines (windows, then Bézier triangles; by overlayIndex), made on first capture.
+    std::array<OwnedPipeline, kSpacingVariants * kLevelsVariants> captureWindows, captureTriangles;
+};
+
+// What a frame's draws need besides the frame uniforms (written by Renderer::prepareFrame).
+struct Renderer::FramePlan {
+    ViewMatrices vm;
+    int variant = 0;  // spacing variant
+    LevelsVariant levels = LevelsVariant::Fixed;
+    float maxLevel = 64.0f;
+    uint32_t budget = 0, perDraw = 1;  // evaluation vertices per draw (0: no limit), windows per draw
+    std::vector<uint8_t> levelBounds;  // adaptive: batch by this frame's levels, not by the worst case
+    const std::vector<uint8_t>* bounds() const { return levelBounds.empty() ? nullptr : &levelBounds; }
+};
+
+}  // namespace pw::render

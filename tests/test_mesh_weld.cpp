@@ -1,0 +1,81 @@
+// weldTriangleSoup (core/mesh_weld.hpp): the captured triangle soup becomes the export mesh.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "core/mesh_weld.hpp"
+
+namespace pw::test {
+namespace {
+
+SoupVertex v(float x, float y, float z, uint32_t item, float nx = 0, float ny = 0, float nz = 1) {
+    return SoupVertex{{x, y, z}, {nx, ny, nz}, {x, y}, item};
+}
+
+TEST(MeshWeld, SharedEdgesWeldWithinTheToleranceAndOnlyThere) {
+    // Two windows sharing the edge x = 1; the second's copy of it is off by float rounding.
+    const float e = 1e-7f;
+    const std::vector<SoupVertex> soup = {v(0, 0, 0, 0), v(1, 0, 0, 0), v(1, 1, 0, 0),
+                                          v(1 + e, 0, 0, 1), v(2, 0, 0, 1), v(1, 1 + e, 0, 1)};
+    const TriangleMesh m = weldTriangleSoup(soup, 2, 0, 1e-6);
+    EXPECT_EQ(m.positions.size(), 4u);
+    ASSERT_EQ(m.indices.size(), 6u);
+    EXPECT_EQ(m.indices[1], m.indices[3]);
+    EXPECT_EQ(m.indices[2], m.indices[5]);
+    ASSERT_EQ(m.perWindow.size(), 2u);
+    EXPECT_EQ(m.perWindow[1].firstIndex, 3u);
+    // With no tolerance only bit-identical positions weld.
+    EXPECT_EQ(weldTriangleSoup(soup, 2, 0, 0.0).positions.size(), 6u);
+}
+
+TEST(MeshWeld, CreasesKeepTheirNormalsAndSmoothSeamsAverageThem) {
+    // A crease (normals 90 degrees apart) along x = 1 ...
+    std::vector<SoupVertex> soup = {v(0, 0, 0, 0), v(1, 0, 0, 0), v(1, 1, 0, 0),
+                                    v(1, 0, 0, 1, 1, 0, 0), v(1, 0, -1, 1, 1, 0, 0), v(1, 1, 0, 1, 1, 0, 0)};
+    EXPECT_EQ(weldTriangleSoup(soup, 2, 0, 1e-6).positions.size(), 6u);
+    // ... and a seam whose sides' normals differ by 0.5 degrees: one vertex, the normals averaged.
+    const float c = std::cos(0.0087266f), d = std::sin(0.0087266f);
+    soup = {v(0, 0, 0, 0, 0, 0, 1), v(1, 0, 0, 0, 0, 0, 1), v(1, 1, 0, 0, 0, 0, 1),
+            v(1, 0, 0, 1, d, 0, c), v(2, 0, 0, 1, d, 0, c), v(1, 1, 0, 1, d, 0, c)};
+    const TriangleMesh m = weldTriangleSoup(soup, 2, 0, 1e-6);
+    EXPECT_EQ(m.positions.size(), 4u);
+    const auto& n = m.normals[m.indices[1]];
+    EXPECT_NEAR(n[0], std::sin(0.0043633f), 1e-6);
+    EXPECT_NEAR(n[0] * n[0] + n[1] * n[1] + n[2] * n[2], 1.0f, 1e-6);
+}
+
+TEST(MeshWeld, TrianglesCollapsedByTheWeldAreLeftOutWithTheirVertices) {
+    // A pole: the last two corners agree only to rounding, so the triangle collapses.
+    const std::vector<SoupVertex> soup = {v(0, 0, 0, 0), v(1, 0, 0, 0), v(1, 1e-9f, 0, 0), v(0, 0, 0, 1), v(1, 0, 0, 1), v(0, 1, 0, 1)};
+    WeldStats st;
+    const TriangleMesh m = weldTriangleSoup(soup, 1, 1, 1e-6, &st);
+    EXPECT_EQ(st.soupTriangles, 2u);
+    EXPECT_EQ(st.degenerateTriangles, 1u);
+    EXPECT_EQ(m.indices.size(), 3u);
+    EXPECT_EQ(m.positions.size(), 3u);  // no vertex only the dropped triangle used
+    ASSERT_EQ(m.perWindow.size(), 1u);
+    ASSERT_EQ(m.perTriangle.size(), 1u);
+    EXPECT_EQ(m.perWindow[0].indexCount, 0u);
+    EXPECT_EQ(m.perTriangle[0].indexCount, 3u);
+}
+
+TEST(MeshWeld, TrianglesAreGroupedByItemKeepingTheirOrder) {
+    const std::vector<SoupVertex> soup = {v(0, 0, 0, 1), v(1, 0, 0, 1), v(0, 1, 0, 1), v(5, 0, 0, 0), v(6, 0, 0, 0), v(5, 1, 0, 0),
+                                          v(0, 2, 0, 1), v(1, 2, 0, 1), v(0, 3, 0, 1)};
+    const TriangleMesh m = weldTriangleSoup(soup, 2, 0, 1e-6);
+    ASSERT_EQ(m.perWindow.size(), 2u);
+    EXPECT_EQ(m.perWindow[0].indexCount, 3u);
+    EXPECT_EQ(m.perWindow[1].firstIndex, 3u);
+    EXPECT_EQ(m.perWindow[1].indexCount, 6u);
+    EXPECT_EQ(m.positions[m.indices[0]][0], 5.0f);
+    EXPECT_EQ(m.positions[m.indices[6]][1], 2.0f);  // item 1's second triangle stays second
+}
+
+TEST(MeshWeld, MalformedSoupsAreRefused) {
+    EXPECT_THROW(weldTriangleSoup({v(0, 0, 0, 0), v(1, 0, 0, 0)}, 1, 0, 1e-6), std::invalid_argument);
+    EXPECT_THROW(weldTriangleSoup({v(0, 0, 0, 3), v(1, 0, 0, 3), v(0, 1, 0, 3)}, 1, 1, 1e-6), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace pw::test
