@@ -78,4 +78,50 @@ void runEditScript(EditSession& session, const std::string& script) {
     makeCommandTable().runScript(session, host, script, "test");
 }
 
+namespace {
+std::string shellQuote(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+}  // namespace
+
+// The validator script, or an empty path after reporting a failure that says how to install it.
+// Never skips: a missing validator is a failure of the test set-up.
+std::filesystem::path gltfValidatorScript() {
+    const char* env = std::getenv("PATCHWORK_GLTF_VALIDATOR");
+    if (!env || !*env) {
+        ADD_FAILURE() << "PATCHWORK_GLTF_VALIDATOR is not set: run the tests through ctest (scripts/test.sh)";
+        return {};
+    }
+    const std::filesystem::path script = env;
+    if (!std::filesystem::exists(script)) {
+        ADD_FAILURE() << script << " does not exist";
+        return {};
+    }
+    const auto node = runCommand("node --version");
+    if (node.exitCode != 0) {
+        ADD_FAILURE() << "node is not available (" << node.output << "): run scripts/test.sh, which installs the glTF "
+                         "validator (npm install --prefix tests/gltf)";
+        return {};
+    }
+    if (!std::filesystem::exists(script.parent_path() / "node_modules" / "gltf-validator" / "package.json")) {
+        ADD_FAILURE() << "the npm package gltf-validator is not installed in " << script.parent_path()
+                      << ": run scripts/test.sh (it runs npm install --prefix tests/gltf)";
+        return {};
+    }
+    return script;
+}
+
+// Runs the validator on the files (one node process for all); expects 0 errors and 0 warnings each.
+void expectValidGltf(const std::vector<std::filesystem::path>& files) {
+    const std::filesystem::path script = gltfValidatorScript();
+    if (script.empty()) return;
+    std::string cmd = "node " + shellQuote(script);
+    for (const std::filesystem::path& f : files) cmd += " " + shellQuote(f);
+    const auto r = runCommand(cmd);
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    size_t okErrors = 0, okWarnings = 0;
+    for (size_t pos = 0; (pos = r.output.find("numErrors: 0\n", pos)) != std::string::npos; ++pos) ++okErrors;
+    for (size_t pos = 0; (pos = r.output.find("numWarnings: 0\n", pos)) != std::string::npos; ++pos) ++okWarnings;
+    EXPECT_EQ(okErrors, files.size()) << r.output;
+    EXPECT_EQ(okWarnings, files.size()) << r.output;
+}
+
 }  // namespace pw::test

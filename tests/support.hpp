@@ -32,4 +32,10 @@ public:
 // Runs `script` (';'-separated commands) on the session through the command table, as `patchwork edit` does.
 void runEditScript(EditSession& session, const std::string& script);
 
+// Runs the Khronos glTF validator (PATCHWORK_GLTF_VALIDATOR, one node process) on the files and
+// expects 0 errors and 0 warnings each; a missing validator or node is a failure, never a skip.
+void expectValidGltf(const std::vector<std::filesystem::path>& files);
+// The validator script, or an empty path after a failure saying how to install it.
+std::filesystem::path gltfValidatorScript();
+
 }  // namespace pw::test

@@ -33,48 +33,6 @@ namespace {
 
 std::string quote(const fs::path& p) { return "'" + p.string() + "'"; }
 
-// The validator script, or an empty path after reporting a failure that says how to install it.
-// Never skips: a missing validator is a failure of the test set-up.
-fs::path validatorScript() {
-    const char* env = std::getenv("PATCHWORK_GLTF_VALIDATOR");
-    if (!env || !*env) {
-        ADD_FAILURE() << "PATCHWORK_GLTF_VALIDATOR is not set: run the tests through ctest (scripts/test.sh)";
-        return {};
-    }
-    const fs::path script = env;
-    if (!fs::exists(script)) {
-        ADD_FAILURE() << script << " does not exist";
-        return {};
-    }
-    const auto node = pw::test::runCommand("node --version");
-    if (node.exitCode != 0) {
-        ADD_FAILURE() << "node is not available (" << node.output << "): run scripts/test.sh, which installs the glTF "
-                         "validator (npm install --prefix tests/gltf)";
-        return {};
-    }
-    if (!fs::exists(script.parent_path() / "node_modules" / "gltf-validator" / "package.json")) {
-        ADD_FAILURE() << "the npm package gltf-validator is not installed in " << script.parent_path()
-                      << ": run scripts/test.sh (it runs npm install --prefix tests/gltf)";
-        return {};
-    }
-    return script;
-}
-
-// Runs the validator on the files (one node process for all); expects 0 errors and 0 warnings each.
-void expectValid(const std::vector<fs::path>& files) {
-    const fs::path script = validatorScript();
-    if (script.empty()) return;
-    std::string cmd = "node " + quote(script);
-    for (const fs::path& f : files) cmd += " " + quote(f);
-    const auto r = pw::test::runCommand(cmd);
-    EXPECT_EQ(r.exitCode, 0) << r.output;
-    size_t okErrors = 0, okWarnings = 0;
-    for (size_t pos = 0; (pos = r.output.find("numErrors: 0\n", pos)) != std::string::npos; ++pos) ++okErrors;
-    for (size_t pos = 0; (pos = r.output.find("numWarnings: 0\n", pos)) != std::string::npos; ++pos) ++okWarnings;
-    EXPECT_EQ(okErrors, files.size()) << r.output;
-    EXPECT_EQ(okWarnings, files.size()) << r.output;
-}
-
 pw::Document loadModel(const std::string& name) { return pw::loadBpt(pw::test::dataDir() / (name + ".bpt")); }
 
 tinygltf::Model loadWithTinygltf(const fs::path& path) {
@@ -199,7 +157,7 @@ void checkStructure(const fs::path& path, pw::MeshGrouping grouping, bool cage, 
 
 constexpr pw::MeshGrouping kGroupings[] = {pw::MeshGrouping::Surfaces, pw::MeshGrouping::Patches, pw::MeshGrouping::Single};
 
-TEST(Gltf, ValidatorIsInstalled) { EXPECT_FALSE(validatorScript().empty()); }
+TEST(Gltf, ValidatorIsInstalled) { EXPECT_FALSE(pw::test::gltfValidatorScript().empty()); }
 
 TEST(Gltf, TeaSetExportsAreValidAndRoundTrip) {
     // Connected surfaces (by shared vertex positions): the teapot's rim, body, bottom and handle
@@ -231,7 +189,7 @@ TEST(Gltf, TeaSetExportsAreValidAndRoundTrip) {
             }
         }
         SCOPED_TRACE(name);
-        expectValid(files);
+        pw::test::expectValidGltf(files);
     }
     fs::remove_all(dir);
 }
@@ -273,7 +231,7 @@ TEST(Gltf, BezierTriangleExportsAreValidAndRoundTrip) {
             }
         }
     }
-    expectValid(files);
+    pw::test::expectValidGltf(files);
     fs::remove_all(dir);
 }
 
@@ -317,7 +275,7 @@ TEST(Gltf, BezierCurvesExportAsLinesAndRoundTrip) {
             files.push_back(out);
         }
     }
-    expectValid(files);
+    pw::test::expectValidGltf(files);
     fs::remove_all(dir);
 }
 
@@ -337,7 +295,7 @@ TEST(Gltf, SingleFileValidationAndTheDocumentsLevel) {
     EXPECT_EQ(stats.level, 8);
     EXPECT_EQ(stats.triangles, static_cast<size_t>(32 * 2 * 8 * 8 - 8 * 8));
     EXPECT_EQ(stats.bytes, fs::file_size(out));
-    const fs::path script = validatorScript();
+    const fs::path script = pw::test::gltfValidatorScript();
     if (!script.empty()) {
         const auto r = pw::test::runCommand("node " + quote(script) + " " + quote(out));
         EXPECT_EQ(r.exitCode, 0) << r.output;
@@ -410,7 +368,7 @@ TEST(Gltf, SurfacesAndAnEmptyDocumentExportValid) {
         files.push_back(none);
         EXPECT_TRUE(pw::importPatchworkGltf(none) == empty) << none;
     }
-    expectValid(files);
+    pw::test::expectValidGltf(files);
     fs::remove_all(dir);
 }
 
@@ -424,7 +382,7 @@ TEST(Gltf, ValidatorReportsAnInvalidFile) {
                           R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"}],)"
                           R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"mode":-1}]}],)"
                           R"("nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0})";
-    const fs::path script = validatorScript();
+    const fs::path script = pw::test::gltfValidatorScript();
     if (!script.empty()) {
         const auto r = pw::test::runCommand("node " + quote(script) + " " + quote(bad));
         EXPECT_NE(r.exitCode, 0) << r.output;
@@ -506,7 +464,7 @@ TEST(GltfCli, ExportWritesAValidFileThatImportsBack) {
     EXPECT_NE(r.output.find("3 primitives (one per connected surface), 3 open and double-sided"), std::string::npos) << r.output;
     checkStructure(glb, pw::MeshGrouping::Single, true, 32, 3);
     checkStructure(gltf, pw::MeshGrouping::Surfaces, false, 32, 3);
-    expectValid({glb, gltf});
+    pw::test::expectValidGltf({glb, gltf});
     const pw::Document original = pw::loadBpt(input);
     EXPECT_TRUE(pw::importPatchworkGltf(glb) == original);
     EXPECT_TRUE(pw::importPatchworkGltf(gltf) == original);
