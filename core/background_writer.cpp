@@ -18,12 +18,12 @@ BackgroundWriter::~BackgroundWriter() {
     worker_.join();
 }
 
-size_t BackgroundWriter::enqueue(Document doc, std::string path, GltfExportOptions options) {
+size_t BackgroundWriter::enqueue(Document doc, std::string path, GltfExportOptions options, std::optional<TriangleMesh> displayed) {
     size_t ahead = 0;
     {
         const std::lock_guard lock(mutex_);
         ahead = queue_.size();
-        queue_.push_back({std::move(doc), std::move(path), options});
+        queue_.push_back({std::move(doc), std::move(path), options, std::move(displayed)});
     }
     wake_.notify_all();
     return ahead;
@@ -54,11 +54,11 @@ void BackgroundWriter::work() {
     for (;;) {
         wake_.wait(lock, [this] { return stop_ || !queue_.empty(); });
         if (queue_.empty()) return;  // stop_ with nothing left to write
-        const Job& job = queue_.front();  // stays put: only this thread pops
+        Job& job = queue_.front();  // stays put: only this thread pops
         lock.unlock();
         Result r{job.path, {}};
         try {
-            saveDocument(job.doc, job.path, job.options);
+            saveDocument(job.doc, job.path, job.options, job.displayed ? &*job.displayed : nullptr);
         } catch (const std::exception& e) {
             r.error = e.what();
         }

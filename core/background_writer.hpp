@@ -6,12 +6,14 @@
 #include <condition_variable>
 #include <deque>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "core/document.hpp"
 #include "core/gltf_export.hpp"
+#include "core/mesh_tessellate.hpp"
 
 namespace pw {
 
@@ -27,8 +29,9 @@ public:
     BackgroundWriter(const BackgroundWriter&) = delete;
     BackgroundWriter& operator=(const BackgroundWriter&) = delete;
 
-    // Queues `doc` (a copy) for `path`; returns how many writes are ahead of it.
-    size_t enqueue(Document doc, std::string path, GltfExportOptions options);
+    // Queues `doc` (a copy) for `path`; returns how many writes are ahead of it. `displayed`: the
+    // surface mesh of an export as displayed (options.asDisplayed), captured on the render thread.
+    size_t enqueue(Document doc, std::string path, GltfExportOptions options, std::optional<TriangleMesh> displayed = std::nullopt);
     // The writes finished since the last call, in order.
     std::vector<Result> takeFinished();
     // The path being written or waiting, first in line ("" when idle), and how many are pending.
@@ -42,6 +45,7 @@ private:
         Document doc;
         std::string path;
         GltfExportOptions options;
+        std::optional<TriangleMesh> displayed;
     };
     void work();
 

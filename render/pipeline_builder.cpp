@@ -81,7 +81,7 @@ VkPipeline buildPipeline(Device& dev, VkPipelineLayout layout, VkPipelineCache c
     dy.dynamicStateCount = 2;
     dy.pDynamicStates = dyn;
     VkPipelineRenderingCreateInfo rci{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
-    rci.colorAttachmentCount = 1;
+    rci.colorAttachmentCount = color == VK_FORMAT_UNDEFINED ? 0 : 1;  // none: rendering without attachments
     rci.pColorAttachmentFormats = &color;
     rci.depthAttachmentFormat = depth;
 

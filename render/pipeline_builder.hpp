@@ -27,8 +27,8 @@ struct PipelineDesc {
 
 VkShaderModule makeModule(Device& dev, const spirv::Blob& blob);
 
-// A pipeline for dynamic rendering into one colour attachment of `color` and a `depth` attachment,
-// with dynamic viewport and scissor.
+// A pipeline for dynamic rendering into one colour attachment of `color` and a `depth` attachment
+// (VK_FORMAT_UNDEFINED for both: no attachments), with dynamic viewport and scissor.
 VkPipeline buildPipeline(Device& dev, VkPipelineLayout layout, VkPipelineCache cache, const PipelineDesc& d, VkFormat color,
                          VkFormat depth, VkSampleCountFlagBits samples);
 

@@ -62,12 +62,14 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
         pd.patchControlPoints = 16;
         pd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc},
                      {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, tese}};
-        const VkFormat color = target_.colorFormat(), depth = target_.depthFormat();
-        m.captureWindows[slot] = OwnedPipeline(dev_.device(), buildPipeline(dev_, pipes_.layout, pipes_.cache, pd, color, depth, target_.samples()));
+        // Rendering without attachments: nothing is drawn, so the capture never touches the target
+        // (the editor's swapchain image belongs to its frame).
+        const VkFormat none = VK_FORMAT_UNDEFINED;
+        m.captureWindows[slot] = OwnedPipeline(dev_.device(), buildPipeline(dev_, pipes_.layout, pipes_.cache, pd, none, none, VK_SAMPLE_COUNT_1_BIT));
         pd.patchControlPoints = 10;
         pd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, ttesc},
                      {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, ttese}};
-        m.captureTriangles[slot] = OwnedPipeline(dev_.device(), buildPipeline(dev_, pipes_.layout, pipes_.cache, pd, color, depth, target_.samples()));
+        m.captureTriangles[slot] = OwnedPipeline(dev_.device(), buildPipeline(dev_, pipes_.layout, pipes_.cache, pd, none, none, VK_SAMPLE_COUNT_1_BIT));
     }
 
     // The first try holds the bound from the largest segment count these settings can give (capped:
@@ -101,7 +103,10 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
                              VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT, 0, 1, &mb, 0, nullptr, 0,
                              nullptr);
         vkCmdBeginQuery(cmd, query, 0, 0);  // outside rendering, like the statistics query
-        target_.beginRendering(cmd, {0.0f, 0.0f, 0.0f, 1.0f});
+        VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
+        ri.renderArea = area;
+        ri.layerCount = 1;
+        vkCmdBeginRendering(cmd, &ri);
         const VkViewport viewport{float(area.offset.x), float(area.offset.y), float(area.extent.width), float(area.extent.height), 0.0f, 1.0f};
         vkCmdSetViewport(cmd, 0, 1, &viewport);
         vkCmdSetScissor(cmd, 0, 1, &area);
@@ -115,13 +120,13 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
         recordSurfaceDraws(cmd, pipes_.layout, m.scene, plan.perDraw, push, plan.bounds(), plan.budget);
         xfb.end(cmd, 0, 1, counter.buffer.ptr(), &zero);
         if (m.scene.triangleCount) {
-            target_.pauseRendering(cmd);  // no barriers inside dynamic rendering
+            vkCmdEndRendering(cmd);  // no barriers inside dynamic rendering
             VkMemoryBarrier cb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
             cb.srcAccessMask = VK_ACCESS_TRANSFORM_FEEDBACK_COUNTER_WRITE_BIT_EXT;
             cb.dstAccessMask = VK_ACCESS_TRANSFORM_FEEDBACK_COUNTER_READ_BIT_EXT;
             vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFORM_FEEDBACK_BIT_EXT, VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT, 0, 1, &cb, 0,
                                  nullptr, 0, nullptr);
-            target_.resumeRendering(cmd);
+            vkCmdBeginRendering(cmd, &ri);
             vkCmdSetViewport(cmd, 0, 1, &viewport);
             vkCmdSetScissor(cmd, 0, 1, &area);
             vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.layout, 0, 1, &m.set, 0, nullptr);
@@ -130,7 +135,7 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
             recordTriangleDraws(cmd, pipes_.layout, m.scene, plan.perDraw, push);
             xfb.end(cmd, 0, 1, counter.buffer.ptr(), &zero);
         }
-        target_.endRendering(cmd);
+        vkCmdEndRendering(cmd);
         vkCmdEndQuery(cmd, query, 0);
         VkMemoryBarrier hb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
         hb.srcAccessMask = VK_ACCESS_TRANSFORM_FEEDBACK_WRITE_BIT_EXT | VK_ACCESS_TRANSFORM_FEEDBACK_COUNTER_WRITE_BIT_EXT |

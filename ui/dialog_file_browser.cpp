@@ -81,9 +81,17 @@ void Dialogs::drawFileBrowser(PanelContext& ctx) {
     traceItem("file.name");
     tip("Name in the directory above, or an absolute path");
     if (fileMode_ == FileDialogMode::ExportGltf || fileMode_ == FileDialogMode::SaveAs) {
+        GltfExportOptions& eo = ctx.session().exportOptions;
+        ImGui::Checkbox("As displayed", &eo.asDisplayed);
+        traceItem("file.as_displayed");
+        tip("The triangles the 3D view draws: the document's per-edge levels, partitioning, adaptive levels and\n"
+            "culling from this camera, read back from the GPU's tessellator (glTF and OBJ)");
+        ImGui::SameLine();
+        if (eo.asDisplayed) ImGui::BeginDisabled();
         ImGui::SetNextItemWidth(120);
-        ImGui::SliderInt("Export level", &ctx.session().exportOptions.level, 0, limits::kMaxExportLevel);
-        tip("glTF tessellation level (0: the document's level)");
+        ImGui::SliderInt("Export level", &eo.level, 0, limits::kMaxExportLevel);
+        if (eo.asDisplayed) ImGui::EndDisabled();
+        tip("glTF and OBJ tessellation level (0: the document's level)");
         ImGui::SameLine();
         {
             static const char* kPrimitives[] = {"Per surface", "Per patch", "Single"};

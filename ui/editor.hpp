@@ -103,6 +103,9 @@ private:
     bool confirmDiscard(const std::vector<std::string>& words) override;
     void write(const Document& doc, const std::string& path) override;
     void exportFile(const Document& doc, const std::string& path) override;
+    // With options.asDisplayed and a tessellated format: the surface the 3D view draws (captured
+    // now), options.viewport set, and `doc` reduced to the shown items; otherwise nullopt.
+    std::optional<TriangleMesh> displayedMesh(Document& doc, GltfExportOptions& options, const std::string& path);
     void saved(const std::string& path) override;
     void fileDialog(FileDialogKind kind) override;
     void toggle(WindowToggle which) override;

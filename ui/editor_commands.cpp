@@ -8,6 +8,8 @@
 
 #include "core/document_io.hpp"
 #include "core/file_io.hpp"
+#include "core/selection_ops.hpp"
+#include "render/swapchain_target.hpp"
 #include "ui/app_window.hpp"
 #include "ui/editor.hpp"
 #include "ui/shortcuts.hpp"
@@ -46,11 +48,32 @@ bool Editor::confirmDiscard(const std::vector<std::string>& words) {
     return false;
 }
 
-void Editor::write(const Document& doc, const std::string& path) { saveDocument(doc, path, session_.exportOptions); }
+std::optional<TriangleMesh> Editor::displayedMesh(Document& doc, GltfExportOptions& options, const std::string& path) {
+    const std::string ext = lowerExtension(path);
+    if (!options.asDisplayed || (ext != ".glb" && ext != ".gltf" && ext != ".obj")) return std::nullopt;
+    // What the 3D view draws now, from the GPU; hidden items are not drawn, so not exported.
+    render::CapturedSurface c = renderer_->captureSurface(viewOptions());
+    const VkExtent2D e = window_.target().extent();
+    options.viewport = {int(e.width), int(e.height)};
+    if (anyHidden(doc)) doc = visibleDocument(doc);
+    status("As displayed: " + std::to_string(c.gpuTriangles) + " triangles from the tessellator" +
+              (c.patchesCulled ? ", " + std::to_string(c.patchesCulled) + " patches culled as on screen" : std::string()));
+    return std::move(c.mesh);
+}
+
+void Editor::write(const Document& doc, const std::string& path) {
+    Document copy = doc;
+    GltfExportOptions options = session_.exportOptions;
+    std::optional<TriangleMesh> displayed = displayedMesh(copy, options, path);
+    saveDocument(copy, path, options, displayed ? &*displayed : nullptr);
+}
 
 void Editor::exportFile(const Document& doc, const std::string& path) {
     checkOutputPath(path);  // a path that cannot be written is refused now, not seconds later
-    exports_.enqueue(doc, path, session_.exportOptions);  // the status line shows it until it is done
+    Document copy = doc;
+    GltfExportOptions options = session_.exportOptions;
+    std::optional<TriangleMesh> displayed = displayedMesh(copy, options, path);  // on this thread: it uses the GPU
+    exports_.enqueue(std::move(copy), path, options, std::move(displayed));  // the status line shows it until it is done
     wake();
 }
 
