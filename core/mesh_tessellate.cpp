@@ -325,7 +325,8 @@ void tessellateWindows(const Document& doc, const std::vector<PatchInstance>& wi
 
 }
 
-// Vertices no triangle uses (a window collapsed to a line or a point) are removed.
+}  // namespace
+
 void removeUnusedVertices(TriangleMesh& mesh) {
     std::vector<uint8_t> used(mesh.positions.size(), 0);
     for (uint32_t i : mesh.indices) used[i] = 1;
@@ -346,8 +347,6 @@ void removeUnusedVertices(TriangleMesh& mesh) {
         for (uint32_t& i : mesh.indices) i = remap[i];
     }
 }
-
-}  // namespace
 
 MeshBound meshBound(const Document& doc, int level) {
     double windows = double(doc.patches.size());

@@ -49,6 +49,10 @@ int highestLevelWithin(const Document& doc, double maxBytes);
 // (triangle_mesh.hpp), each triangle as level² triangles.
 TriangleMesh tessellateDocument(const Document& doc, int level);
 
+// Removes the vertices no triangle uses (a window collapsed to a line or a point, triangles left
+// out as degenerate) and renumbers the indices.
+void removeUnusedVertices(TriangleMesh& mesh);
+
 // The control cage: pool points and the line segments of every window's 4x4 net and every
 // triangle's net (deduplicated).
 struct CageLines {

@@ -132,22 +132,7 @@ TriangleMesh weldTriangleSoup(const std::vector<SoupVertex>& soup, size_t window
         const double len = std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
         if (len > 1e-12) mesh.normals[v] = {float(s[0] / len), float(s[1] / len), float(s[2] / len)};
     }
-    // Vertices only degenerate triangles used are dropped.
-    std::vector<uint32_t> remap(mesh.positions.size(), UINT32_MAX);
-    for (uint32_t i : mesh.indices) remap[i] = 0;
-    uint32_t kept = 0;
-    for (size_t v = 0; v < remap.size(); ++v) {
-        if (remap[v] == UINT32_MAX) continue;
-        remap[v] = kept;
-        mesh.positions[kept] = mesh.positions[v];
-        mesh.normals[kept] = mesh.normals[v];
-        mesh.uvs[kept] = mesh.uvs[v];
-        ++kept;
-    }
-    mesh.positions.resize(kept);
-    mesh.normals.resize(kept);
-    mesh.uvs.resize(kept);
-    for (uint32_t& i : mesh.indices) i = remap[i];
+    removeUnusedVertices(mesh);  // those only collapsed triangles used
     if (stats) *stats = st;
     return mesh;
 }

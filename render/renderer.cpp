@@ -345,12 +345,7 @@ FrameStats Renderer::render(const RenderOptions& opt) {
 
     // Step 5: submit and wait.
     const auto t1 = std::chrono::steady_clock::now();
-    VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-    si.commandBufferCount = 1;
-    si.pCommandBuffers = &cmd;
-    VK_CHECK(vkResetFences(dev_.device(), 1, m.fence.ptr()));
-    VK_CHECK(vkQueueSubmit(dev_.queue(), 1, &si, m.fence));
-    VK_CHECK(vkWaitForFences(dev_.device(), 1, m.fence.ptr(), VK_TRUE, UINT64_MAX));
+    submitAndWait(dev_, cmd, m.fence);
     const auto t2 = std::chrono::steady_clock::now();
     stats.wallMs = std::chrono::duration<double, std::milli>(t2 - t0).count();
     stats.submitMs = std::chrono::duration<double, std::milli>(t2 - t1).count();

@@ -14,6 +14,7 @@
 #include "render/renderer.hpp"
 #include "render/stats.hpp"
 #include "render/surface_scene.hpp"
+#include "render/vk_check.hpp"
 #include "render/vk_owned.hpp"
 
 namespace pw::render {
@@ -35,6 +36,16 @@ struct Renderer::Impl {
     // Transform-feedback pipelines (windows, then Bézier triangles; by overlayIndex), made on first capture.
     std::array<OwnedPipeline, kSpacingVariants * kLevelsVariants> captureWindows, captureTriangles;
 };
+
+// Submits `cmd` to the device's queue and waits for it on `fence` (reset first).
+inline void submitAndWait(Device& dev, VkCommandBuffer cmd, VkFence fence) {
+    VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    si.commandBufferCount = 1;
+    si.pCommandBuffers = &cmd;
+    VK_CHECK(vkResetFences(dev.device(), 1, &fence));
+    VK_CHECK(vkQueueSubmit(dev.queue(), 1, &si, fence));
+    VK_CHECK(vkWaitForFences(dev.device(), 1, &fence, VK_TRUE, UINT64_MAX));
+}
 
 // What a frame's draws need besides the frame uniforms (written by Renderer::prepareFrame).
 struct Renderer::FramePlan {

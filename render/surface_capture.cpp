@@ -144,12 +144,7 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
         vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFORM_FEEDBACK_BIT_EXT | VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT,
                              VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &hb, 0, nullptr, 0, nullptr);
         VK_CHECK(vkEndCommandBuffer(cmd));
-        VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-        si.commandBufferCount = 1;
-        si.pCommandBuffers = &cmd;
-        VK_CHECK(vkResetFences(dev_.device(), 1, m.fence.ptr()));
-        VK_CHECK(vkQueueSubmit(dev_.queue(), 1, &si, m.fence));
-        VK_CHECK(vkWaitForFences(dev_.device(), 1, m.fence.ptr(), VK_TRUE, UINT64_MAX));
+        submitAndWait(dev_, cmd, m.fence);
 
         uint64_t prims[2] = {0, 0};  // written, needed
         VK_CHECK(vkGetQueryPoolResults(dev_.device(), query, 0, 1, sizeof(prims), prims, sizeof(prims),
