@@ -247,11 +247,10 @@ sleep 0.3
 xdotool type --delay 30 "export-gltf"
 xdotool key Return
 wait_for "t['modal'] == 'file' and 'file.as_displayed' in t['items']"
-click_item file.as_displayed
-click_item file.name
-sleep 0.3
-xdotool key ctrl+a
+sleep 0.3   # the name field has the keyboard, the offered name selected: typing replaces it
 xdotool type --delay 20 "$WORK/shown.glb"
+sleep 0.3
+click_item file.as_displayed
 sleep 0.3
 click_item file.ok
 for i in $(seq 300); do [ -s "$WORK/shown.glb" ] && [ -z "$(trace "t.get('exporting', '')")" ] && break; sleep 0.1; done
