@@ -31,12 +31,7 @@ int runConvert(const ConvertOptions& opt) {
     for (const std::string& note : report.notes) std::cerr << "patchwork convert: " << opt.input << ": " << note << "\n";
     const GltfExportOptions options = report.exportOptions.value_or(GltfExportOptions{});
     std::optional<TriangleMesh> displayed;  // a glTF exported as displayed is written so again
-    const std::string ext = lowerExtension(opt.output);
-    if (options.asDisplayed && (ext == ".glb" || ext == ".gltf" || ext == ".obj")) {
-        DisplayedMeshRequest request;
-        request.viewport = options.viewport[0] > 0 && options.viewport[1] > 0 ? options.viewport : request.viewport;
-        displayed = captureDisplayedMesh(doc, request).mesh;
-    }
+    if (options.asDisplayed && isMeshFormat(opt.output)) displayed = captureDisplayedMesh(doc, displayedMeshRequest(options)).mesh;
     saveDocument(doc, opt.output, options, displayed ? &*displayed : nullptr);
     if (!opt.quiet)
         std::cout << "wrote " << opt.output << " (" << doc.patches.size() << " patches, " << doc.surfaces.size()

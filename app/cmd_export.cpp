@@ -49,12 +49,10 @@ std::optional<TriangleMesh> displayedMesh(const ExportArgs& args, const Document
         options.viewport = {0, 0};
         return std::nullopt;
     }
-    DisplayedMeshRequest request;
+    DisplayedMeshRequest request = displayedMeshRequest(options);
     if (!args.size.empty()) {
         const auto [w, h] = parseImageSize("export", args.size);
         request.viewport = {int(w), int(h)};
-    } else if (options.viewport[0] > 0 && options.viewport[1] > 0) {
-        request.viewport = options.viewport;
     }
     options.viewport = request.viewport;
     request.device = args.device;

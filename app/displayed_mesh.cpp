@@ -5,6 +5,12 @@
 
 namespace pw::app {
 
+DisplayedMeshRequest displayedMeshRequest(const GltfExportOptions& stored) {
+    DisplayedMeshRequest request;
+    if (stored.viewport[0] > 0 && stored.viewport[1] > 0) request.viewport = stored.viewport;
+    return request;
+}
+
 render::CapturedSurface captureDisplayedMesh(const Document& doc, const DisplayedMeshRequest& request, std::string* deviceName) {
     render::DeviceOptions dopt;
     dopt.name = request.device;

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/document.hpp"
+#include "core/gltf_export.hpp"
 #include "render/renderer.hpp"
 
 namespace pw::app {
@@ -17,6 +18,10 @@ struct DisplayedMeshRequest {
     std::string device;                      // substring of the Vulkan device's name; empty = best available
     bool validation = false;
 };
+
+// The request a file exported as displayed asks for again: its stored viewport (when it has one)
+// on the best device.
+DisplayedMeshRequest displayedMeshRequest(const GltfExportOptions& stored);
 
 // InputError (exit 2) when no device can capture (no Vulkan device, no transform feedback).
 render::CapturedSurface captureDisplayedMesh(const Document& doc, const DisplayedMeshRequest& request, std::string* deviceName = nullptr);

@@ -35,8 +35,7 @@ Document loadDocument(const std::filesystem::path& path, LoadReport* report) {
 
 void saveDocument(const Document& doc, const std::filesystem::path& path, const GltfExportOptions& gltf, TriangleMesh* displayed) {
     const std::string ext = lowerExtension(path);
-    const bool tessellated = ext == ".gltf" || ext == ".glb" || ext == ".obj";
-    if (tessellated && gltf.asDisplayed && !displayed)
+    if (isMeshFormat(path) && gltf.asDisplayed && !displayed)
         throw OutputError(path.string(), "the surface as displayed comes from the GPU; export it with `patchwork export "
                                          "--as-displayed` or the editor's File > Export As Displayed");
     if (ext == ".patchwork") {
@@ -62,6 +61,11 @@ void saveDocument(const Document& doc, const std::filesystem::path& path, const 
 }
 
 const char* savableExtensions() { return kSavable; }
+
+bool isMeshFormat(const std::filesystem::path& path) {
+    const std::string ext = lowerExtension(path);
+    return ext == ".gltf" || ext == ".glb" || ext == ".obj";
+}
 
 bool canSave(const std::filesystem::path& path) {
     const std::string ext = lowerExtension(path);

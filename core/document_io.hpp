@@ -28,6 +28,9 @@ void saveDocument(const Document& doc, const std::filesystem::path& path, const 
 // The extensions saveDocument writes (".patchwork, .bpt, ... or .stp"), and whether it writes `path`'s.
 const char* savableExtensions();
 bool canSave(const std::filesystem::path& path);
+// Whether saveDocument writes `path` as a tessellated mesh (.gltf, .glb, .obj): the formats an
+// export as displayed applies to.
+bool isMeshFormat(const std::filesystem::path& path);
 
 // One status line for what a load skipped ("2 faces not imported; face 3 skipped: ..."), or "" when
 // nothing was.

@@ -40,7 +40,6 @@ VkRect2D paneRect(const RenderOptions& opt, VkExtent2D extent) {
     return {{x0, y0}, {uint32_t(x1 - x0), uint32_t(y1 - y0)}};
 }
 
-
 namespace {
 
 void writeDescriptors(Device& dev, VkDescriptorSet set, const Buffer& ubo, const Buffer& patches, const Buffer& counters) {

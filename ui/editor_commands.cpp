@@ -49,8 +49,7 @@ bool Editor::confirmDiscard(const std::vector<std::string>& words) {
 }
 
 std::optional<TriangleMesh> Editor::displayedMesh(Document& doc, GltfExportOptions& options, const std::string& path) {
-    const std::string ext = lowerExtension(path);
-    if (!options.asDisplayed || (ext != ".glb" && ext != ".gltf" && ext != ".obj")) return std::nullopt;
+    if (!options.asDisplayed || !isMeshFormat(path)) return std::nullopt;
     // What the 3D view draws now, from the GPU; hidden items are not drawn, so not exported.
     render::CapturedSurface c = renderer_->captureSurface(viewOptions());
     const VkExtent2D e = window_.target().extent();
