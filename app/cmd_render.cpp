@@ -16,6 +16,7 @@
 #include "app/domain_args.hpp"
 #include "app/render_args.hpp"
 #include "render/domain_figure.hpp"
+#include "render/figure_vector.hpp"
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
 #include "app/level_args.hpp"
@@ -117,9 +118,20 @@ int runDomainRender(const RenderArgs& a, const std::vector<render::DomainPane>& 
         const render::LabelRaster labels;
         std::vector<uint8_t> rgba;
         const auto stats = render::renderDomainFigure(view, target, labels, panes, 0.0f, rgba);
-        // The PNG and the stats appear together or not at all; what was written is said after.
+        // The figure and the stats appear together or not at all; what was written is said after.
         OutputBatch out;
-        out.stage(a.output, render::encodePng(a.output, w, h, rgba));
+        if (const auto vector = render::vectorFormatFor(a.output)) {
+            // SVG or PDF: the primitives the tessellator made, read back, one path each.
+            std::vector<render::DomainPattern> patterns;
+            std::vector<std::array<uint64_t, 2>> counts;
+            for (size_t i = 0; i < panes.size(); ++i) {
+                patterns.push_back(view.capture(panes[i]));
+                counts.push_back(render::shownCounts(stats[i], panes[i]));
+            }
+            out.stage(a.output, render::domainFigureVector(*vector, w, h, render::layoutDomainFigure(panes, w, h, 0.0f), patterns, counts));
+        } else {
+            out.stage(a.output, render::encodePng(a.output, w, h, rgba));
+        }
         std::ostringstream said;
         nlohmann::json j;
         j["device"] = dev.name();
@@ -151,7 +163,7 @@ int runDomainRender(const RenderArgs& a, const std::vector<render::DomainPane>& 
 }
 
 int runRender(const RenderArgs& a) {
-    if (a.output.empty()) bad("-o", "an output .png file is required");
+    if (a.output.empty()) bad("-o", "an output .png (or, for a domain figure, .svg or .pdf) file is required");
     // Refuse unwritable outputs before the work (a device node, a read-only file, a missing folder).
     (void)checkOutputPath(a.output);
     if (!a.stats.empty()) (void)checkOutputPath(a.stats);
@@ -161,6 +173,8 @@ int runRender(const RenderArgs& a) {
         if (!a.input.empty()) bad("--domain", "a domain figure draws no document; leave out the file");
         return runDomainRender(a, domainPanes("render", dargs), w, h);
     }
+    if (render::vectorFormatFor(a.output))
+        bad("-o", "'" + a.output + "': SVG and PDF figures are of the tessellated domain (--domain, --preset); write the model as .png");
     const Document doc = a.input.empty() ? builtinTeapot() : loadDocument(a.input);
     // --compare: the model in 2 or 4 panes, each with its own partitioning (and level).
     std::vector<render::ModelPane> panes;
@@ -257,9 +271,9 @@ void addRenderOptions(CLI::App* cmd, RenderArgs& a) {
 }
 
 void registerRenderCommand(CLI::App& app, Action& run) {
-    const auto [cmd, a] = addSubcommand<RenderArgs>(app, run, "render", "Render a document offscreen on the GPU tessellation pipeline to a PNG", runRender);
+    const auto [cmd, a] = addSubcommand<RenderArgs>(app, run, "render", "Render a document offscreen on the GPU tessellation pipeline to a PNG (domain figures also SVG, PDF)", runRender);
     addRenderOptions(cmd, *a);
-    cmd->add_option("-o,--output", a->output, "Output PNG")->required();
+    cmd->add_option("-o,--output", a->output, "Output PNG; a domain figure also .svg or .pdf (vector paths, one per triangle)")->required();
 }
 
 }  // namespace pw::app

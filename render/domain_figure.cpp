@@ -12,24 +12,38 @@ std::array<uint64_t, 2> shownCounts(const DomainStats& gpu, const DomainPane& pa
     return {c.vertices, gpu.valid ? gpu.primitives : c.primitives};
 }
 
+TextStyle domainLabelStyle(DomainLabel::Role role, float textPixels) {
+    TextStyle st;
+    st.pixels = role == DomainLabel::Role::Title ? textPixels * 1.1f : textPixels;
+    if (role == DomainLabel::Role::Edge) st.color = {150, 30, 20, 255};
+    return st;
+}
+
+DomainFigureLayout layoutDomainFigure(const std::vector<DomainPane>& panes, uint32_t width, uint32_t height, float textPixels) {
+    DomainFigureLayout l;
+    l.rects = splitPanes(int(panes.size()), {0.0f, 0.0f, float(width), float(height)});
+    for (size_t i = 0; i < l.rects.size(); ++i) {
+        DomainViewOptions o;
+        static_cast<DomainPane&>(o) = panes[i];
+        o.rect = l.rects[i];
+        const float px = textPixels > 0.0f ? textPixels : std::clamp(std::min(o.rect[2], o.rect[3]) / 26.0f, 11.0f, 40.0f);
+        o.margin = domainLabelMargin(px);
+        l.textPixels.push_back(px);
+        o.pointSize = std::clamp(px * 0.3f, 3.0f, 9.0f);
+        l.panes.push_back(o);
+    }
+    return l;
+}
+
 std::vector<DomainStats> renderDomainFigure(DomainView& view, OffscreenTarget& target, const LabelRaster& labels,
                                             const std::vector<DomainPane>& panes, float textPixels,
                                             std::vector<uint8_t>& rgba) {
     const VkExtent2D ext = target.extent();
-    const auto rects = splitPanes(int(panes.size()), {0.0f, 0.0f, float(ext.width), float(ext.height)});
-    std::vector<DomainViewOptions> opts;
-    std::vector<float> textSizes;
+    const DomainFigureLayout layout = layoutDomainFigure(panes, ext.width, ext.height, textPixels);
+    const auto& opts = layout.panes;
+    const auto& textSizes = layout.textPixels;
+    const auto& rects = layout.rects;
     std::vector<DomainStats> stats;
-    for (size_t i = 0; i < rects.size(); ++i) {
-        DomainViewOptions o;
-        static_cast<DomainPane&>(o) = panes[i];
-        o.rect = rects[i];
-        const float px = textPixels > 0.0f ? textPixels : std::clamp(std::min(o.rect[2], o.rect[3]) / 26.0f, 11.0f, 40.0f);
-        o.margin = domainLabelMargin(px);
-        textSizes.push_back(px);
-        o.pointSize = std::clamp(px * 0.3f, 3.0f, 9.0f);
-        opts.push_back(o);
-    }
     stats = view.draw(target, opts, true);
     rgba = target.pixels();
     PixelImage img{ext.width, ext.height, rgba};
@@ -37,10 +51,7 @@ std::vector<DomainStats> renderDomainFigure(DomainView& view, OffscreenTarget& t
         const float px = textSizes[i];
         const auto counts = shownCounts(stats[i], panes[i]);
         for (const DomainLabel& l : domainLabels(opts[i], counts[0], counts[1], px)) {
-            TextStyle st;
-            st.pixels = l.role == DomainLabel::Role::Title ? px * 1.1f : px;
-            if (l.role == DomainLabel::Role::Edge) st.color = {150, 30, 20, 255};
-            labels.draw(img, l.x, l.y, l.text, st, l.ax, l.ay);
+            labels.draw(img, l.x, l.y, l.text, domainLabelStyle(l.role, px), l.ax, l.ay);
         }
     }
     drawPaneDividers(rgba, ext.width, ext.height, rects);

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "render/domain_labels.hpp"
 #include "render/domain_view.hpp"
 #include "render/label_raster.hpp"
 #include "render/offscreen_target.hpp"
@@ -19,6 +20,18 @@ namespace pw::render {
 // and pow2 spacing, so invocations are not vertices) and the primitives the GPU's statistics
 // counted (the rules' where the device has no statistics).
 std::array<uint64_t, 2> shownCounts(const DomainStats& gpu, const DomainPane& pane);
+
+// Where each pane of a `width` x `height` figure goes, with its text size (`textPixels`, 0: from the
+// pane size), label margin and dot size: shared by the PNG and the vector figures.
+struct DomainFigureLayout {
+    std::vector<std::array<float, 4>> rects;
+    std::vector<DomainViewOptions> panes;
+    std::vector<float> textPixels;
+};
+DomainFigureLayout layoutDomainFigure(const std::vector<DomainPane>& panes, uint32_t width, uint32_t height, float textPixels);
+
+// How a label of this role is drawn at `textPixels` (titles larger, edge levels red).
+TextStyle domainLabelStyle(DomainLabel::Role role, float textPixels);
 
 // Draws the panes into `target` (which must read back), labels them with `labels` at `textPixels`
 // line height (0: from the pane size), and returns the statistics per pane; the labelled image is

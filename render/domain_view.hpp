@@ -36,6 +36,17 @@ struct DomainViewOptions : DomainPane {
     float pointSize = 5.0f;  // pixels, where the device can size points from the evaluation stage
 };
 
+// The primitives the tessellator made for one pane, in domain coordinates (x right, y up; the
+// triangle domain is the equilateral triangle of the pictures): 3 points a triangle, or 2 a line
+// segment of the isoline domain, in the order the GPU emitted them.
+struct DomainPattern {
+    DomainKind kind = DomainKind::Quad;
+    int vertsPerPrimitive = 3;
+    std::vector<std::array<float, 2>> points;
+    size_t primitives() const { return points.size() / size_t(vertsPerPrimitive); }
+    std::vector<std::array<float, 2>> distinctPoints() const;  // each domain point once (sorted)
+};
+
 struct DomainStats {
     bool valid = false;       // pipeline statistics available
     uint64_t vertices = 0;    // tessellation evaluation invocations
@@ -69,8 +80,13 @@ public:
 
     bool pointsSupported() const { return pointsSupported_; }
 
+    // The pane's pattern read back through transform feedback (render/domain_capture.cpp): what
+    // vector figures draw. Throws InputError on a device without VK_EXT_transform_feedback.
+    DomainPattern capture(const DomainPane& pane);
+
 private:
     VkPipeline pipeline(DomainKind kind, Spacing spacing, int pass) const;  // pass 0 fill, 1 lines, 2 points
+    VkPipeline capturePipeline(DomainKind kind, Spacing spacing);          // built on first use
     void recordPass(VkCommandBuffer cmd, const DomainViewOptions& o, int pass, const DomainPlacement& at,
                     const std::array<float, 4>& color, VkExtent2D extent) const;
 
@@ -78,6 +94,7 @@ private:
     OwnedPipelineLayout layout_;
     // [domain][spacing][pass]
     std::array<std::array<std::array<OwnedPipeline, 3>, 3>, 3> pipes_;
+    std::array<std::array<OwnedPipeline, 3>, 3> capturePipes_;  // [domain][spacing]
     VkFormat color_, depth_;
     VkSampleCountFlagBits samples_;
     bool pointsSupported_ = false;

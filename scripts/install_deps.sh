@@ -4,7 +4,8 @@
 #   --tests  also what the test suite needs (validation layers, Xvfb, xdotool, ImageMagick, a window
 #            manager (openbox) for minimise tests, clang with libFuzzer, desktop-file-validate for
 #            the installed desktop entry, assimp as an independent reader of the glTF and OBJ
-#            exports, Node.js for the Khronos glTF validator).
+#            exports, rsvg-convert and xmllint as independent readers of the SVG figures, ffprobe
+#            (with ffmpeg, which sweeps use) for the animations, Node.js for the glTF validator).
 set -euo pipefail
 
 build_packages=(
@@ -14,9 +15,10 @@ build_packages=(
   nlohmann-json3-dev libstb-dev libcli11-dev fonts-dejavu-core
   libgtest-dev libbenchmark-dev
   help2man
+  libcairo2-dev ffmpeg
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev
 )
-test_packages=(vulkan-validationlayers vulkan-tools xvfb xdotool imagemagick openbox clang libclang-rt-dev desktop-file-utils assimp-utils)
+test_packages=(vulkan-validationlayers vulkan-tools xvfb xdotool imagemagick openbox clang libclang-rt-dev desktop-file-utils assimp-utils librsvg2-bin libxml2-utils)
 
 wanted=("${build_packages[@]}")
 if [[ "${1:-}" == "--tests" ]]; then

@@ -2,7 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 // Domain view: the tessellation coordinate itself is the position, so the picture is exactly the
 // pattern the fixed tessellator generated. Built per domain (-DDOMAIN=quads|triangles|isolines) and
-// partitioning (-DSPACING=...), with -DPOINT_SIZE for the vertex-dot pass.
+// partitioning (-DSPACING=...), with -DPOINT_SIZE for the vertex-dot pass and -DCAPTURE for
+// vector figures.
 #include "domain_common.glsl"
 
 #ifdef POINT_SIZE
@@ -11,6 +12,9 @@ layout(DOMAIN, SPACING, point_mode) in;  // the vertex dots: each domain point o
 layout(DOMAIN, SPACING, ccw) in;
 #endif
 layout(location = 0) out vec4 outColor;
+#ifdef CAPTURE  // vector figures: each primitive's domain points (x right, y up), 8 bytes a vertex
+layout(location = 1, xfb_buffer = 0, xfb_offset = 0, xfb_stride = 8) out vec2 outDomain;
+#endif
 
 void main() {
 #ifdef TRIANGLE_DOMAIN
@@ -24,6 +28,9 @@ void main() {
 #endif
     gl_Position = vec4(p * dp.transform.xy + dp.transform.zw, 0.0, 1.0);
     outColor = dp.color;
+#ifdef CAPTURE
+    outDomain = p;
+#endif
 #ifdef POINT_SIZE
     gl_PointSize = dp.point.x;
 #endif
