@@ -2,12 +2,14 @@
 // to B and writes the frames as a numbered PNG sequence, headless: the model (with its wireframe,
 // so vertices popping in under integer spacing and sliding in under fractional spacing show), or a
 // domain figure (--domain / --preset); --compare puts panes with their own partitioning side by
-// side. Each frame (or pane) is captioned with its level and triangle count.
+// side. Each frame (or pane) is captioned with its level and triangle count. An output ending in
+// .gif, .mp4 or .webm is one animation at --fps instead (render/animation_writer.hpp).
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <regex>
 
 #include "app/commands.hpp"
@@ -20,6 +22,7 @@
 #include "render/model_figure.hpp"
 #include "render/offscreen_target.hpp"
 #include "render/png_writer.hpp"
+#include "render/animation_writer.hpp"
 #include "app/render_args.hpp"
 
 namespace pw::app {
@@ -114,8 +117,11 @@ int runSweep(const SweepArgs& a) {
         if (a.render.overlay.empty()) opt.display.showWireframe = true;  // popping and sliding show in the wireframe
         opt.tess.adaptive = AdaptiveMode::None;
     }
-    FrameNames names(a.output);
-    (void)checkOutputPath(names(0));  // refuse an unwritable output before the work
+    // An animation (.gif, .mp4, .webm: one file through ffmpeg), or numbered PNG frames.
+    const std::optional<render::AnimationFormat> animation = render::animationFormatFor(a.output);
+    std::unique_ptr<FrameNames> names;
+    if (!animation) names = std::make_unique<FrameNames>(a.output);
+    (void)checkOutputPath(animation ? a.output : (*names)(0));  // refuse an unwritable output before the work
 
     render::DeviceOptions dopt;
     dopt.name = a.render.device;
@@ -136,6 +142,8 @@ int runSweep(const SweepArgs& a) {
         }
         std::vector<uint8_t> rgba;
         OutputBatch out;  // every frame or none (a full disk leaves no partial sweep)
+        std::unique_ptr<render::AnimationEncoder> encoder;
+        if (animation) encoder = std::make_unique<render::AnimationEncoder>(a.output, *animation, w, h, a.fps);
         for (int k = 0; k < frames; ++k) {
             const float level = from + (to - from) * float(k) / float(frames - 1);
             std::string text = "level " + render::formatLevel(level);
@@ -156,12 +164,19 @@ int runSweep(const SweepArgs& a) {
                         " triangles";
             }
             if (modelPanes.empty()) caption(labels, rgba, w, h, text);
-            out.stage(names(k), render::encodePng(names(k), w, h, rgba));
+            if (encoder) encoder->addFrame(rgba);
+            else out.stage((*names)(k), render::encodePng((*names)(k), w, h, rgba));
         }
+        if (encoder) out.stage(a.output, encoder->finish());
         out.commit();
-        names.keepFolders();
         std::cout << "wrote " << frames << " frames (" << w << "x" << h << ", level " << render::formatLevel(from) << " to "
-                  << render::formatLevel(to) << "): " << names(0) << " .. " << names(frames - 1) << "\n";
+                  << render::formatLevel(to) << "): ";
+        if (names) {
+            names->keepFolders();
+            std::cout << (*names)(0) << " .. " << (*names)(frames - 1) << "\n";
+        } else {
+            std::cout << a.output << " at " << a.fps << " frames per second\n";
+        }
         rc = validationExitCode(dev, cmd);
     }
     return rc;
@@ -170,9 +185,9 @@ int runSweep(const SweepArgs& a) {
 }  // namespace
 
 void registerSweepCommand(CLI::App& app, Action& run) {
-    const auto [cmd, a] = addSubcommand<SweepArgs>(app, run, "sweep", "Animate a tessellation level from --from to --to and write the frames as numbered PNGs", runSweep);
+    const auto [cmd, a] = addSubcommand<SweepArgs>(app, run, "sweep", "Animate a tessellation level from --from to --to: a GIF, MP4 or WebM, or numbered PNG frames", runSweep);
     addRenderOptions(cmd, a->render);
-    cmd->add_option("-o,--output", a->output, "Frame file pattern with one %d or %04d, or a directory (frame_0000.png ...)")->required();
+    cmd->add_option("-o,--output", a->output, "An animation (.gif, .mp4, .webm; encoded by ffmpeg), a frame file pattern with one %d or %04d, or a directory (frame_0000.png ...)")->required();
     cmd->add_option("--from", a->from, "First level, 1..64 (default 1)");
     cmd->add_option("--to", a->to, "Last level, 1..64 (default 16)");
     cmd->add_option("--seconds", a->seconds, "Length of the animation (default 3)");

@@ -5,18 +5,17 @@
 #include <cairo.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
 
+#include "core/file_io.hpp"
 #include "render/pane_layout.hpp"
 
 namespace pw::render {
 
 std::optional<VectorFormat> vectorFormatFor(const std::string& path) {
-    std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : std::string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    const std::string ext = lowerExtension(path);
     if (ext == ".svg") return VectorFormat::Svg;
     if (ext == ".pdf") return VectorFormat::Pdf;
     return std::nullopt;
