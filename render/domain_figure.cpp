@@ -50,7 +50,8 @@ std::vector<DomainStats> renderDomainFigure(DomainView& view, OffscreenTarget& t
     for (size_t i = 0; i < opts.size(); ++i) {
         const float px = textSizes[i];
         const auto counts = shownCounts(stats[i], panes[i]);
-        for (const DomainLabel& l : domainLabels(opts[i], counts[0], counts[1], px)) {
+        const auto widthOf = [&](const std::string& t) { return labels.measure(t, px)[0]; };
+        for (const DomainLabel& l : domainLabels(opts[i], counts[0], counts[1], px, widthOf)) {
             labels.draw(img, l.x, l.y, l.text, domainLabelStyle(l.role, px), l.ax, l.ay);
         }
     }

@@ -30,7 +30,8 @@ std::string edgeText(float level, Spacing spacing, bool integerSpacing, float ma
 
 }  // namespace
 
-std::vector<DomainLabel> domainLabels(const DomainViewOptions& o, uint64_t vertices, uint64_t primitives, float textPixels) {
+std::vector<DomainLabel> domainLabels(const DomainViewOptions& o, uint64_t vertices, uint64_t primitives, float textPixels,
+                                      const std::function<float(const std::string&)>& widthOf) {
     std::vector<DomainLabel> out;
     const DomainPlacement at = placeDomain(o);
     const float gap = std::ceil(textPixels * 0.45f);
@@ -81,8 +82,15 @@ std::vector<DomainLabel> domainLabels(const DomainViewOptions& o, uint64_t verti
     cap.x = bottom[0];
     cap.y = bottom[1] + gap + textPixels * 1.25f;
     cap.ax = 0.5f;
-    cap.text = (inner.empty() ? "" : inner + "  \u00b7  ") + std::string(spacingName(o.spacing)) + "  \u00b7  " +
-               std::to_string(vertices) + " vertices, " + std::to_string(primitives) + " " + primitiveWord;
+    const std::string settings = (inner.empty() ? "" : inner + "  \u00b7  ") + std::string(spacingName(o.spacing));
+    const std::string counts = std::to_string(vertices) + " vertices, " + std::to_string(primitives) + " " + primitiveWord;
+    cap.text = settings + "  \u00b7  " + counts;
+    if (widthOf && widthOf(cap.text) > o.rect[2] - textPixels) {  // two lines where one does not fit the pane
+        cap.text = settings;
+        out.push_back(cap);
+        cap.y += textPixels * 1.2f;
+        cap.text = counts;
+    }
     out.push_back(cap);
     const float domainHeight = o.kind == DomainKind::Triangle ? 0.8660254f : 1.0f;
     const auto top = at.toPixels(0.5f, domainHeight);

@@ -4,6 +4,7 @@
 // LabelRaster) and by the editor's domain panel (drawn by ImGui), so both say the same.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,10 @@ std::string formatLevel(float level);
 // Labels for the domain drawn with `o`; `counts` are the vertices and primitives to show (the GPU's
 // pipeline statistics, or the rules' prediction where the device has none); `textPixels` is the
 // line height the caller draws with (captions stack below the domain by it).
-std::vector<DomainLabel> domainLabels(const DomainViewOptions& o, uint64_t vertices, uint64_t primitives, float textPixels);
+// `widthOf` (optional) measures a text at `textPixels`: a caption wider than the pane is then split
+// into two lines (levels and partitioning; counts), so neighbouring panes' captions never meet.
+std::vector<DomainLabel> domainLabels(const DomainViewOptions& o, uint64_t vertices, uint64_t primitives, float textPixels,
+                                      const std::function<float(const std::string&)>& widthOf = {});
 
 // The margin a domain view needs around the domain for its labels at this text size.
 float domainLabelMargin(float textPixels);

@@ -88,7 +88,10 @@ void drawPane(cairo_t* cr, const DomainViewOptions& o, const DomainPattern& patt
         cairo_arc(cr, px[0], px[1], 0.5 * o.pointSize, 0.0, 2.0 * M_PI);
     }
     cairo_fill(cr);
-    for (const DomainLabel& l : domainLabels(o, counts[0], counts[1], textPixels))
+    // Lines broken where the PNG figure breaks them (its measure).
+    static const LabelRaster raster;
+    const auto widthOf = [&](const std::string& t) { return raster.measure(t, textPixels)[0]; };
+    for (const DomainLabel& l : domainLabels(o, counts[0], counts[1], textPixels, widthOf))
         drawText(cr, l.x, l.y, l.text, domainLabelStyle(l.role, textPixels), l.ax, l.ay);
     cairo_restore(cr);
 }

@@ -203,6 +203,7 @@ int Editor::run() {
 
 render::RenderOptions Editor::viewOptions() const {
     render::RenderOptions o = render::optionsFromDocument(doc_);
+    o.tess = teaching_.shownTess(doc_.tess);  // a preset or sweep shows its own levels
     o.camera = cam_;
     o.hoveredPoint = hovered_;
     o.selectedPoint = sel_.points.empty() ? -1 : int(sel_.points.front());
@@ -220,7 +221,7 @@ void Editor::drawUi() {
         sidePanels_.drawRight(*this, teaching_);
     }
     teaching_.drawDomainWindow(*this);
-    shaders_.draw(*this, window_.device().caps().geometryShader, teaching_.domainPanes);
+    shaders_.draw(*this, window_.device().caps().geometryShader, teaching_.shownTess(doc_.tess), teaching_.domainPanes);
     dialogs_.drawFileBrowser(*this);
     dialogs_.drawModals(*this, [this] { recoverAutosave(); });
     if (showHelp_) drawHelp(*this, showHelp_);

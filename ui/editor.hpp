@@ -175,6 +175,7 @@ private:
     DragController drag_;
     int hovered_ = -1;
     int hoveredGizmo_ = -1;
+    std::array<float, 4> axisGizmoRect_{0, 0, 0, 0};  // where the axis gizmo went last frame (x, y, w, h; the test trace)
     JoinTool join_;
     bool grabAfterShortcut_ = false;  // the last shortcut was Shift+D: grab the copy
     double pressX_ = 0, pressY_ = 0;

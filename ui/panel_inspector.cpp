@@ -72,7 +72,7 @@ void transformRow(PanelContext& ctx) {
     const float w = ImGui::GetContentRegionAvail().x * 0.5f - ImGui::GetStyle().ItemSpacing.x;
     const auto combo = [&](const char* id, const char* label, std::string_view current, std::initializer_list<std::string_view> names,
                            const char* command, const char* help) {
-        ImGui::SetNextItemWidth(w * 0.6f);
+        ImGui::SetNextItemWidth(std::max(40.0f, w - ImGui::CalcTextSize(label).x - ImGui::GetStyle().ItemSpacing.x));  // the label stays whole
         if (ImGui::BeginCombo(id, std::string(current).c_str())) {
             for (std::string_view n : names)
                 if (ImGui::Selectable(std::string(n).c_str(), n == current)) ctx.runCommand({command, std::string(n)});

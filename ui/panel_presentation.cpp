@@ -2,6 +2,7 @@
 // large type, high contrast, no editing panels.
 #include <imgui.h>
 
+#include <algorithm>
 #include <string>
 
 #include "render/domain_labels.hpp"
@@ -12,7 +13,7 @@
 namespace pw::ui {
 
 void Teaching::drawPresentationOverlay(PanelContext& ctx) {
-    const TessSettings& ts = ctx.session().doc.tess;
+    const TessSettings ts = shownTess(ctx.session().doc.tess);
     const render::FrameStats& stats = ctx.frameReport().stats;
     ImGui::SetNextWindowPos(ImVec2(16.0f, 16.0f));
     ImGui::SetNextWindowBgAlpha(0.85f);
@@ -20,7 +21,11 @@ void Teaching::drawPresentationOverlay(PanelContext& ctx) {
                                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
     if (ImGui::Begin("##presentation", nullptr, flags)) {
         ImGui::PushFont(window_.imgui().presentationFont());
-        ImGui::SetWindowFontScale(presentationScale / 3.0f);
+        // The text scale is relative to an 800-pixel-high window: a projector's 1920 x 1080 gets
+        // it larger, a 1024 x 640 window smaller, so the overlay keeps its share of the screen.
+        const float windowScale = std::clamp(ImGui::GetIO().DisplaySize.y / 800.0f, 0.6f, 3.0f);
+        ImGui::SetWindowFontScale(presentationScale / 3.0f * windowScale);
+        if (lesson.active) ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.1f, 1.0f), "%s", lesson.name.c_str());
         ImGui::Text("outer %s  %s  %s  %s", render::formatLevel(ts.outer[0]).c_str(), render::formatLevel(ts.outer[1]).c_str(),
                     render::formatLevel(ts.outer[2]).c_str(), render::formatLevel(ts.outer[3]).c_str());
         ImGui::Text("inner %s  %s", render::formatLevel(ts.inner[0]).c_str(), render::formatLevel(ts.inner[1]).c_str());

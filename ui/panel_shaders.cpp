@@ -32,7 +32,7 @@ std::string listingText(const render::ShaderListing& l, bool activeOnly) {
 
 }  // namespace
 
-void ShaderPanel::draw(PanelContext& ctx, bool geometryShader, const std::vector<render::DomainViewOptions>& domainPanes) {
+void ShaderPanel::draw(PanelContext& ctx, bool geometryShader, const TessSettings& shownTess, const std::vector<render::DomainViewOptions>& domainPanes) {
     shown.clear();
     variantsInUse.clear();
     if (!open) return;
@@ -48,7 +48,7 @@ void ShaderPanel::draw(PanelContext& ctx, bool geometryShader, const std::vector
         return;
     }
     render::ShaderContext c;
-    c.tess = ctx.session().doc.tess;
+    c.tess = shownTess;  // a preset or sweep of the Teaching panel shows its own levels
     c.display = ctx.session().doc.display;
     c.windows = !ctx.session().doc.patches.empty() || !ctx.session().doc.surfaces.empty();
     c.triangles = !ctx.session().doc.triangles.empty();

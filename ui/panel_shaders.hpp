@@ -18,7 +18,7 @@ namespace pw::ui {
 class ShaderPanel {
 public:
     // `geometryShader`: the device has them (the normal vectors' pipeline differs without).
-    void draw(PanelContext& ctx, bool geometryShader, const std::vector<render::DomainViewOptions>& domainPanes);
+    void draw(PanelContext& ctx, bool geometryShader, const TessSettings& shownTess, const std::vector<render::DomainViewOptions>& domainPanes);
 
     bool open = false;
     std::string shown;                   // the variant on screen this frame ("" = closed)

@@ -38,9 +38,33 @@ void Teaching::setPresentation(PanelContext& ctx, bool on) {
     ctx.wake();
 }
 
+TessSettings Teaching::shownTess(const TessSettings& doc) const {
+    if (!lesson.active) return doc;
+    TessSettings t = doc;
+    t.adaptive = AdaptiveMode::None;
+    t.outer = lesson.outer;
+    t.inner = lesson.inner;
+    t.spacing = lesson.spacing;
+    return t;
+}
+
+void Teaching::endLesson(PanelContext& ctx, bool keep) {
+    if (!lesson.active) return;
+    sweep.playing = false;
+    if (keep) {
+        TessSettings& ts = ctx.session().doc.tess;
+        ts = shownTess(ts);
+        ts.linked = false;
+        ctx.settingsChanged();
+        ctx.session().commit(lesson.name + " levels");
+    }
+    lesson.active = false;
+    ctx.wake();
+}
+
 void Teaching::input(PanelContext& ctx) {
     if (!sweep.playing) return;
-    // The sweep drives the uniform level; one undo step when it stops.
+    // The sweep drives the lesson's uniform level (the document's levels stay as they are).
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - sweep.start).count();
     double f = t / std::max(0.05f, sweep.seconds);
     if (f >= 1.0) {
@@ -53,11 +77,8 @@ void Teaching::input(PanelContext& ctx) {
         }
     }
     sweep.level = sweep.from + (sweep.to - sweep.from) * float(f);
-    ctx.session().doc.tess.adaptive = AdaptiveMode::None;
-    ctx.session().doc.tess.outer = {sweep.level, sweep.level, sweep.level, sweep.level};
-    ctx.session().doc.tess.inner = {sweep.level, sweep.level};
-    ctx.settingsChanged();
-    if (!sweep.playing) ctx.session().commit("Sweep level");
+    const Spacing spacing = lesson.active ? lesson.spacing : ctx.session().doc.tess.spacing;
+    lesson = {true, "Sweep", {sweep.level, sweep.level, sweep.level, sweep.level}, {sweep.level, sweep.level}, spacing};
     ctx.wake();
 }
 
@@ -118,38 +139,48 @@ void Teaching::drawControls(PanelContext& ctx) {
         for (const TessPreset& p : presets) {
             const bool chosen = ImGui::Selectable(p.label.c_str());
             traceItem("preset." + p.name);
-            if (chosen) {
+            if (chosen) {  // shown as a lesson: the document keeps its levels
                 const auto& L = p.levels;
-                ts.adaptive = AdaptiveMode::None;
-                ts.linked = false;
-                ts.spacing = p.spacing;
-                ts.outer = L.outer;
-                ts.inner = L.inner;
+                sweep.playing = false;
+                lesson = {true, "Preset " + p.label, L.outer, L.inner, p.spacing};
                 if (p.kind == DomainKind::Triangle) {  // the quad's unused 4th edge and 2nd inner follow
-                    ts.outer[3] = L.outer[2];
-                    ts.inner[1] = L.inner[0];
+                    lesson.outer[3] = L.outer[2];
+                    lesson.inner[1] = L.inner[0];
                 }
                 domainKind = int(p.kind);
                 paneCount = 1;
                 showDomain = true;
-                ctx.settingsChanged();
-                ctx.session().commit("Preset " + p.label);
+                ctx.wake();
             }
             tip(p.note.c_str());
         }
         ImGui::Separator();
         if (ImGui::Selectable("Bézier patch of the notes")) ctx.runLine("open-notes-patch");
         tip("The notes' 16 control points at level 25 (replaces the document; asks first if it has changes)");
-        if (ImGui::Selectable("Distance formula of the notes")) {
+        if (ImGui::Selectable("Distance formula of the notes")) {  // adaptivity is the document's: a visible undo step
+            endLesson(ctx, false);
             applyNotesDistanceFormula(ts);
             ctx.settingsChanged();
             ctx.session().commit("Distance formula");
+            ctx.host().status("The notes' distance formula is now the document's adaptive tessellation (Ctrl+Z undoes it)");
         }
-        tip("level = 64 * saturate((d1 - d) / (d1 - d0)) per edge, d0 = 20, d1 = 100");
+        tip("Sets the document's adaptive tessellation: level = 64 * saturate((d1 - d) / (d1 - d0)) per edge, d0 = 20, d1 = 100 (one undo step)");
         ImGui::EndCombo();
     }
     traceItem("teach.preset");
-    tip("Factor sets and models from the lecture notes");
+    tip("Factor sets from the lecture notes, shown without changing the document's levels");
+    if (lesson.active) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.3f, 1.0f));
+        ImGui::TextWrapped("Showing %s; the document keeps its own levels.", lesson.name.c_str());
+        ImGui::PopStyleColor();
+        if (ImGui::Button("Back to document")) endLesson(ctx, false);
+        traceItem("teach.lessonBack");
+        tip("Show the document's own levels again");
+        ImGui::SameLine();
+        if (ImGui::Button("Keep in document")) endLesson(ctx, true);
+        traceItem("teach.lessonKeep");
+        tip("Make these levels the document's (one undo step)");
+    }
 
     // Sweep.
     ImGui::DragFloatRange2("From / to", &sweep.from, &sweep.to, 0.05f, 1.0f, 64.0f, "%.2f", "%.2f", ImGuiSliderFlags_AlwaysClamp);
@@ -164,12 +195,10 @@ void Teaching::drawControls(PanelContext& ctx) {
             sweep.start = std::chrono::steady_clock::now() -
                            std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(f * sweep.seconds));
             ctx.wake();
-        } else {
-            ctx.session().commit("Sweep level");
         }
     }
     traceItem("teach.play");
-    tip("Play or pause the sweep: integer spacing pops vertices in, fractional spacing slides them");
+    tip("Play or pause the sweep: integer spacing pops vertices in, fractional spacing slides them (the document's levels stay)");
     ImGui::SameLine();
     ImGui::Checkbox("Loop", &sweep.loop);
     tip("Start again at the first value");

@@ -37,11 +37,14 @@ void SidePanels::drawRight(PanelContext& ctx, Teaching& teaching) {
     const float w = std::min(330.0f * ctx.uiScale(), io.DisplaySize.x * 0.3f);
     layout_.right = w;
     begin("Properties", io.DisplaySize.x - w, w);
+    // Room right of the widgets for the longest label, so no label is clipped in a narrow window.
+    ImGui::PushItemWidth(-(ImGui::CalcTextSize("Normal length").x + 2.0f * ImGui::GetStyle().ItemInnerSpacing.x));
     drawTessellationPanel(ctx);
     drawDisplayPanel(ctx);
     drawStatsPanel(ctx.frameReport());
     continuity_.draw(ctx);
     teaching.drawControls(ctx);
+    ImGui::PopItemWidth();
     ImGui::End();
 }
 

@@ -11,6 +11,7 @@
 #include <array>
 #include <chrono>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "render/domain_view.hpp"
@@ -63,6 +64,8 @@ public:
     int activePane = 0;
     std::vector<render::PaneResult> viewPanes;             // what each split pane drew last frame
     std::vector<render::DomainViewOptions> domainPanes;    // this frame's panes, framebuffer pixels
+    std::array<float, 4> windowRect{0, 0, 0, 0};            // the domain window (x, y, w, h), 0 when hidden
+    std::vector<std::array<float, 4>> labelBoxes;           // where its labels went (x, y, w, h; the test trace)
     std::vector<render::DomainStats> domainStats;
     struct Sweep {
         bool playing = false, loop = true;
@@ -70,6 +73,22 @@ public:
         std::chrono::steady_clock::time_point start;
     } sweep;
     float presentationScale = 2.0f;
+
+    // The levels a preset or the sweep shows, apart from the document's, which stay the user's:
+    // while active the 3D view, the domain view, the shader panel and presentation mode show these
+    // (panel_teaching.cpp); "Back to document" drops them, "Keep in document" makes them one undo
+    // step. Nothing else edits the document's levels from here.
+    struct Lesson {
+        bool active = false;
+        std::string name;  // "Preset quad {1,2,3,4 | 4,4}", "Sweep"
+        std::array<float, 4> outer{};
+        std::array<float, 2> inner{};
+        Spacing spacing = Spacing::Equal;
+    } lesson;
+    // `doc` with the lesson's levels and partitioning (and no adaptivity) while one is active.
+    TessSettings shownTess(const TessSettings& doc) const;
+    // Ends the lesson; with `keep` its levels become the document's (one undo step).
+    void endLesson(PanelContext& ctx, bool keep);
 
 private:
     AppWindow& window_;

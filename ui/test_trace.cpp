@@ -68,6 +68,7 @@ void TestTrace::write(const Editor& e) {
     j["textInput"] = ImGui::GetIO().WantTextInput;
     j["presentation"] = teaching.presentation;
     j["tessOuter"] = doc.tess.outer;
+    j["lesson"] = {{"active", teaching.lesson.active}, {"name", teaching.lesson.name}, {"outer", teaching.shownTess(doc.tess).outer}};
     j["sweep"] = {{"playing", teaching.sweep.playing}, {"level", teaching.sweep.level}};
     j["domain"] = nlohmann::json::array();
     for (size_t i = 0; i < teaching.domainPanes.size() && i < teaching.domainStats.size(); ++i) {
@@ -85,6 +86,8 @@ void TestTrace::write(const Editor& e) {
                                   {"rect", viewRects[i]},
                                   {"triangles", teaching.viewPanes[i].stats.triangles()}});
     j["activePane"] = teaching.activePane;
+    j["layout"] = {{"domainWindow", teaching.windowRect}, {"domainLabels", teaching.labelBoxes}, {"axisGizmo", e.axisGizmoRect_},
+                   {"left", e.layout().left}, {"right", e.layout().right}};
     j["shaders"] = {{"open", e.shaders_.open}, {"shown", e.shaders_.shown}, {"inUse", e.shaders_.variantsInUse}};
     j["items"] = items_;
     j["unsavedPrompt"] = e.dialogs_.unsavedPromptOpen();

@@ -181,9 +181,26 @@ void Editor::drawPaneOverlays(const std::array<float, 4>& pane, bool active) {
                     IM_COL32(120, 170, 255, 200));
     }
 
-    // Axis gizmo (bottom left of the viewport, right of the left panel).
-    {
-        const ImVec2 c(pane[0] + (teaching_.viewSplit() ? 0.0f : float(sidePanels_.layout().left)) + 60.0f, pane[1] + float(H) - 60.0f);
+    // Axis gizmo: bottom left of the viewport (right of the left panel), or another corner of it
+    // where the domain view window is, or none where that covers every corner.
+    const float left = pane[0] + (teaching_.viewSplit() ? 0.0f : float(sidePanels_.layout().left));
+    const float right = pane[0] + float(W) - (teaching_.viewSplit() ? 0.0f : float(sidePanels_.layout().right));
+    const float top = pane[1] + ImGui::GetFrameHeight(), bottom = pane[1] + float(H);
+    const std::array<float, 4>& avoid = teaching_.windowRect;
+    std::optional<ImVec2> corner;
+    for (const ImVec2 c : {ImVec2(left + 60.0f, bottom - 60.0f), ImVec2(right - 60.0f, bottom - 60.0f), ImVec2(right - 60.0f, top + 60.0f),
+                           ImVec2(left + 60.0f, top + 60.0f)}) {
+        const bool clear = avoid[2] <= 0.0f || c.x + 54.0f < avoid[0] || c.x - 54.0f > avoid[0] + avoid[2] || c.y + 54.0f < avoid[1] ||
+                           c.y - 54.0f > avoid[1] + avoid[3];
+        if (clear) {
+            corner = c;
+            break;
+        }
+    }
+    axisGizmoRect_ = {0, 0, 0, 0};
+    if (corner) {
+        const ImVec2 c = *corner;
+        axisGizmoRect_ = {c.x - 52.0f, c.y - 52.0f, 104.0f, 104.0f};
         const float len = 40.0f;
         struct Ax { glm::vec3 v; ImU32 col; const char* name; };
         Ax axes[3] = {{glm::vec3(vm.view * glm::vec4(1, 0, 0, 0)), IM_COL32(230, 70, 70, 255), "X"},

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The teaching features in the running editor, under Xvfb with the validation layer on: the domain
-# view's GPU counts match the tessellation rules for the document's levels, live as a preset changes
-# them and across comparison panes; the sweep animates the level and pausing leaves one undo step;
+# view's GPU counts match the tessellation rules for the document's levels, live as a preset shows
+# them (as a lesson: the document's levels stay; "Keep in document" is one undo step) and across
+# comparison panes; the sweep animates the lesson's level and leaves the document alone;
 # the shader panel shows the variants the settings select;
 # presentation mode (F5) hides the panels and comes back. Screenshots in WORK_DIR.
 # Usage: editor_teaching_e2e.sh PATCHWORK_BINARY DATA_DIR WORK_DIR
@@ -25,11 +26,25 @@ say "domain view: 289 vertices, 512 triangles at level 16"
 # A preset of the notes: quad {1,2,3,4 | 4,4} -> 19 vertices, 26 triangles.
 click_item teach.preset
 wait_for "'preset.quad-1_2_3_4-4_4' in t['items']"
-click_item preset.quad-1_2_3_4-4_4
-wait_for "t['tessOuter'] == [1, 2, 3, 4] and t['domain'][0]['vertices'] == 19 and t['domain'][0]['primitives'] == 26"
-import -window root "$WORK/preset.png"
-say "preset quad {1,2,3,4 | 4,4}: 19 vertices, 26 triangles"
 STEPS=$(trace "t['undoSteps']")
+click_item preset.quad-1_2_3_4-4_4
+# Shown as a lesson: the view and the domain use the preset's levels, the document keeps its own.
+wait_for "t['lesson']['active'] and t['lesson']['outer'] == [1, 2, 3, 4] and t['domain'][0]['vertices'] == 19 and t['domain'][0]['primitives'] == 26"
+wait_for "t['tessOuter'] == [16, 16, 16, 16] and t['undoSteps'] == $STEPS and not t['modified']"
+import -window root "$WORK/preset.png"
+say "preset quad {1,2,3,4 | 4,4}: 19 vertices, 26 triangles; the document's levels untouched"
+# "Keep in document": one undo step; undo brings the document's levels back.
+xdotool mousemove --sync 1030 500
+for i in 1 2 3 4 5 6; do xdotool click 5; sleep 0.05; done
+wait_for "t['items']['teach.lessonKeep'][1] < 740"
+click_item teach.lessonKeep
+wait_for "not t['lesson']['active'] and t['tessOuter'] == [1, 2, 3, 4] and t['undoSteps'] == $STEPS + 1"
+xdotool mousemove --sync 640 700
+xdotool key ctrl+z
+wait_for "t['tessOuter'] == [16, 16, 16, 16] and t['domain'][0]['vertices'] == 289"
+say "keep in document: one undo step, undone"
+for i in 1 2 3 4 5 6; do xdotool mousemove --sync 1030 300; xdotool click 4; sleep 0.05; done
+wait_for "t['items']['teach.preset'][1] > 60"
 
 # Shader panel: the stages in use follow the settings. The teapot draws with the fixed-level-free
 # control shader (off-screen culling on) and equal spacing; the domain pane adds its own pipeline.
@@ -46,8 +61,9 @@ import -window root "$WORK/shaders.png"
 say "shader panel: surface_tese_equal, then surface_tese_odd after the fractional_odd preset"
 
 # The isoline domain on the model: the isocurve overlay, then a Bézier curve; both show up in the
-# shader panel with the document's partitioning, and adding the curve is one undo step.
-STEPS=$(trace "t['undoSteps']")
+# shader panel with the document's partitioning, and adding the curve is one undo step. (The kept
+# preset's undone step is dropped by the next edit.)
+STEPS=$(trace "t['undoSteps'] - 1")
 click_item display.isocurves
 wait_for "t['isocurves'] and 'isocurve_tese_odd' in t['shaders']['inUse']"
 click_item op.addCurve
@@ -125,7 +141,7 @@ click_item teach.domain
 wait_for "len(t['viewPanes']) == 0 and len(t['domain']) == 1"
 check_validation
 say "split view: equal and fractional_odd panes counted apart, a pane's own level, a drag in pane 2"
-STEPS=$(trace "t['undoSteps'] - 1")  # the undone drag is dropped by the next edit
+STEPS=$(trace "t['undoSteps']")  # the sweep edits nothing, so the undone drag stays redoable
 
 # Sweep: play, the level moves; pause, one undo step more. (Scroll the properties panel so that the
 # sweep controls are in view.)
@@ -135,9 +151,14 @@ wait_for "t['items']['teach.play'][1] < 740"
 click_item teach.play
 wait_for "t['sweep']['playing'] and t['sweep']['level'] > 2"
 click_item teach.play
-wait_for "not t['sweep']['playing'] and t['undoSteps'] == $STEPS + 1"
+# The sweep drives the lesson's levels: no undo step, the document's levels as they were.
+wait_for "not t['sweep']['playing'] and t['undoSteps'] == $STEPS and t['lesson']['active'] and t['lesson']['name'] == 'Sweep'"
+wait_for "t['tessOuter'] == [16, 16, 16, 16]"
 wait_for "all(d['vertices'] == d['expectedVertices'] and d['primitives'] == d['expectedPrimitives'] for d in t['domain'])"
-say "sweep stopped at level $(trace "round(t['sweep']['level'], 2)"); counts still follow the rules"
+say "sweep stopped at level $(trace "round(t['sweep']['level'], 2)"); counts still follow the rules; the document unchanged"
+click_item teach.lessonBack
+wait_for "not t['lesson']['active'] and t['lesson']['outer'] == [16, 16, 16, 16]"
+say "back to the document's levels"
 
 # Presentation mode hides the panels (their items vanish from the trace) and F5 brings them back.
 xdotool mousemove --sync 640 700
