@@ -16,6 +16,7 @@
 #include "app/domain_args.hpp"
 #include "app/render_args.hpp"
 #include "render/domain_figure.hpp"
+#include "render/domain_figure_file.hpp"
 #include "render/figure_vector.hpp"
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
@@ -113,25 +114,11 @@ int runDomainRender(const RenderArgs& a, const std::vector<render::DomainPane>& 
     int rc = 0;
     {
         render::Device dev(dopt);
-        render::OffscreenTarget target(dev, w, h, !a.noMsaa);
-        render::DomainView view(dev, target.colorFormat(), target.depthFormat(), target.samples());
-        const render::LabelRaster labels;
-        std::vector<uint8_t> rgba;
-        const auto stats = render::renderDomainFigure(view, target, labels, panes, 0.0f, rgba);
+        const render::DomainFigureFile figure = render::encodeDomainFigure(dev, a.output, w, h, panes, !a.noMsaa);
+        const auto& stats = figure.stats;
         // The figure and the stats appear together or not at all; what was written is said after.
         OutputBatch out;
-        if (const auto vector = render::vectorFormatFor(a.output)) {
-            // SVG or PDF: the primitives the tessellator made, read back, one path each.
-            std::vector<render::DomainPattern> patterns;
-            std::vector<std::array<uint64_t, 2>> counts;
-            for (size_t i = 0; i < panes.size(); ++i) {
-                patterns.push_back(view.capture(panes[i]));
-                counts.push_back(render::shownCounts(stats[i], panes[i]));
-            }
-            out.stage(a.output, render::domainFigureVector(*vector, w, h, render::layoutDomainFigure(panes, w, h, 0.0f), patterns, counts));
-        } else {
-            out.stage(a.output, render::encodePng(a.output, w, h, rgba));
-        }
+        out.stage(a.output, figure.bytes);
         std::ostringstream said;
         nlohmann::json j;
         j["device"] = dev.name();

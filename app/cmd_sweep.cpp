@@ -22,6 +22,7 @@
 #include "render/model_figure.hpp"
 #include "render/offscreen_target.hpp"
 #include "render/png_writer.hpp"
+#include "render/sweep_figure.hpp"
 #include "render/animation_writer.hpp"
 #include "app/render_args.hpp"
 
@@ -77,13 +78,6 @@ private:
     std::vector<std::filesystem::path> created_;
 };
 
-void caption(const render::LabelRaster& labels, std::vector<uint8_t>& rgba, unsigned w, unsigned h, const std::string& text) {
-    render::TextStyle st;
-    st.pixels = std::clamp(float(h) / 24.0f, 12.0f, 40.0f);
-    st.box = true;
-    labels.draw({w, h, rgba}, st.pixels * 0.6f, st.pixels * 0.6f, text, st);
-}
-
 int runSweep(const SweepArgs& a) {
     const std::string cmd = "sweep";
     if (!a.render.tess.empty() || !a.render.outer.empty() || !a.render.inner.empty())
@@ -115,7 +109,6 @@ int runSweep(const SweepArgs& a) {
         const auto [paneW, paneH] = render::paneSize(int(modelPanes.size()), w, h);  // the camera is framed for a pane
         opt = buildRenderOptions(a.render, doc, paneW, paneH);
         if (a.render.overlay.empty()) opt.display.showWireframe = true;  // popping and sliding show in the wireframe
-        opt.tess.adaptive = AdaptiveMode::None;
     }
     // An animation (.gif, .mp4, .webm: one file through ffmpeg), or numbered PNG frames.
     const std::optional<render::AnimationFormat> animation = render::animationFormatFor(a.output);
@@ -123,50 +116,31 @@ int runSweep(const SweepArgs& a) {
     if (!animation) names = std::make_unique<FrameNames>(a.output);
     (void)checkOutputPath(animation ? a.output : (*names)(0));  // refuse an unwritable output before the work
 
+    render::SweepSpec spec;
+    spec.width = w;
+    spec.height = h;
+    spec.from = from;
+    spec.to = to;
+    spec.frames = frames;
+    spec.msaa = !a.render.noMsaa;
+    spec.domainPanes = panes;
+    spec.document = &doc;
+    spec.options = opt;
+    spec.modelPanes = modelPanes;
+
     render::DeviceOptions dopt;
     dopt.name = a.render.device;
     dopt.validation = a.render.validation;
     int rc = 0;
     {
         render::Device dev(dopt);
-        render::OffscreenTarget target(dev, w, h, !a.render.noMsaa);
-        const render::LabelRaster labels;
-        std::unique_ptr<render::DomainView> view;
-        std::unique_ptr<render::Renderer> renderer;
-        if (domain) {
-            view = std::make_unique<render::DomainView>(dev, target.colorFormat(), target.depthFormat(), target.samples());
-        } else {
-            renderer = std::make_unique<render::Renderer>(dev, target);
-            renderer->setDocument(doc);
-            renderer->warmUp();
-        }
-        std::vector<uint8_t> rgba;
         OutputBatch out;  // every frame or none (a full disk leaves no partial sweep)
         std::unique_ptr<render::AnimationEncoder> encoder;
         if (animation) encoder = std::make_unique<render::AnimationEncoder>(a.output, *animation, w, h, a.fps);
-        for (int k = 0; k < frames; ++k) {
-            const float level = from + (to - from) * float(k) / float(frames - 1);
-            std::string text = "level " + render::formatLevel(level);
-            if (domain) {
-                std::vector<render::DomainPane> now = panes;
-                for (auto& p : now) p.levels = withUniformLevel(p.levels, level);
-                render::renderDomainFigure(*view, target, labels, now, 0.0f, rgba);
-            } else if (!modelPanes.empty()) {
-                opt.tess.outer = {level, level, level, level};
-                opt.tess.inner = {level, level};
-                render::renderModelFigure(*renderer, target, labels, opt, modelPanes, 0.0f, rgba);  // each pane captioned
-            } else {
-                opt.tess.outer = {level, level, level, level};
-                opt.tess.inner = {level, level};
-                const render::FrameStats st = renderer->render(opt);
-                rgba = target.pixels();
-                text += "  \u00b7  " + std::string(spacingName(opt.tess.spacing)) + "  \u00b7  " + std::to_string(st.triangles()) +
-                        " triangles";
-            }
-            if (modelPanes.empty()) caption(labels, rgba, w, h, text);
+        render::renderSweep(dev, spec, [&](int k, const std::vector<uint8_t>& rgba) {
             if (encoder) encoder->addFrame(rgba);
             else out.stage((*names)(k), render::encodePng((*names)(k), w, h, rgba));
-        }
+        });
         if (encoder) out.stage(a.output, encoder->finish());
         out.commit();
         std::cout << "wrote " << frames << " frames (" << w << "x" << h << ", level " << render::formatLevel(from) << " to "
