@@ -18,7 +18,7 @@
 namespace pw {
 
 // What the editor window does for commands; a script host keeps the defaults.
-enum class FileDialogKind { Open, SaveAs, Import, ExportGltf, Screenshot };
+enum class FileDialogKind { Open, SaveAs, Import, ExportGltf, Screenshot, DomainFigure, SweepAnimation };
 enum class WindowToggle { Help, Palette, Presentation, DomainView, ShaderPanel, GroundGrid, JoinTool, XRay };
 
 class CommandHost {
@@ -44,6 +44,10 @@ public:
     virtual bool toggled(WindowToggle) const { return false; }
     virtual void quit() {}
     virtual void screenshot(const std::string& path) { (void)path; }
+    // The domain view as a figure (.svg, .pdf, .png) and the Teaching sweep as an animation (.gif,
+    // .mp4, .webm), as `render` and `sweep` write them.
+    virtual void domainFigure(const std::string& path) { (void)path; }
+    virtual void sweepAnimation(const std::string& path) { (void)path; }
     // Fits `box` into the 3D view (a window knows its panels and panes); false: no view, the
     // command frames for a 16:9 image.
     virtual bool frame(const Bounds& box) { (void)box; return false; }

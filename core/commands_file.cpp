@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "core/command_table.hpp"
+#include "core/file_io.hpp"
 #include "core/document_io.hpp"
 #include "core/patch_ops.hpp"
 #include "core/tess_presets.hpp"
@@ -98,6 +99,28 @@ void addFileCommands(CommandTable& t) {
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 0, 1);
                ctx.host.screenshot(ctx.args.empty() ? std::string() : ctx.args[0]);
+           }});
+    t.add({.name = "domain-figure", .label = "Save Domain Figure...", .menu = "File", .usage = "[FILE]",
+           .help = "Save the domain view (its panes, levels and counts) as a vector figure for slides: .svg or .pdf (every "
+                   "triangle one path), or .png",
+           .windowOnly = true,
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 0, 1);
+               if (ctx.args.empty()) return ctx.host.fileDialog(FileDialogKind::DomainFigure);
+               const std::string ext = lowerExtension(ctx.args[0]);
+               if (ext != ".svg" && ext != ".pdf" && ext != ".png") throw EditError("'" + ctx.args[0] + "' is not a .svg, .pdf or .png file");
+               ctx.host.domainFigure(ctx.args[0]);
+           }});
+    t.add({.name = "sweep-animation", .label = "Save Sweep Animation...", .menu = "File", .usage = "[FILE]",
+           .help = "Save the Teaching panel's level sweep (from, to, seconds) as an animation at 10 frames a second: the domain "
+                   "view's panes when it is open, else the 3D view; .gif, .mp4 or .webm",
+           .windowOnly = true,
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 0, 1);
+               if (ctx.args.empty()) return ctx.host.fileDialog(FileDialogKind::SweepAnimation);
+               const std::string ext = lowerExtension(ctx.args[0]);
+               if (ext != ".gif" && ext != ".mp4" && ext != ".webm") throw EditError("'" + ctx.args[0] + "' is not a .gif, .mp4 or .webm file");
+               ctx.host.sweepAnimation(ctx.args[0]);
            }});
     t.add({.name = "quit", .label = "Quit", .menu = "File", .help = "Close the editor (asks about unsaved changes)",
            .bindings = {{"", "", {"Ctrl+Q"}}}, .windowOnly = true,

@@ -37,12 +37,21 @@ void Dialogs::openFileDialog(FileDialogKind kind, const std::string& documentNam
             fileMode_ = FileDialogMode::Screenshot;
             std::snprintf(fileName_, sizeof fileName_, "screenshot.png");
             break;
+        case FileDialogKind::DomainFigure:
+            fileMode_ = FileDialogMode::DomainFigure;
+            std::snprintf(fileName_, sizeof fileName_, "domain.svg");
+            break;
+        case FileDialogKind::SweepAnimation:
+            fileMode_ = FileDialogMode::SweepAnimation;
+            std::snprintf(fileName_, sizeof fileName_, "sweep.gif");
+            break;
     }
 }
 
 void Dialogs::drawFileBrowser(PanelContext& ctx) {
     if (fileMode_ == FileDialogMode::None) return;
-    const char* titles[] = {"", "Open", "Save As", "Import", "Export (.glb, .gltf, .obj, .step)", "Save Screenshot"};
+    const char* titles[] = {"", "Open", "Save As", "Import", "Export (.glb, .gltf, .obj, .step)", "Save Screenshot",
+                            "Save Domain Figure (.svg, .pdf, .png)", "Save Sweep Animation (.gif, .mp4, .webm)"};
     const char* title = titles[int(fileMode_)];
     ImGui::OpenPopup("File browser");
     const ImGuiIO& io = ImGui::GetIO();
@@ -122,6 +131,8 @@ void Dialogs::drawFileBrowser(PanelContext& ctx) {
         else if (m == FileDialogMode::Import) ctx.runCommand({"import", p.string()});
         else if (m == FileDialogMode::ExportGltf) ctx.runCommand({"export-gltf", p.string()});
         else if (m == FileDialogMode::Screenshot) ctx.runCommand({"screenshot", p.string()});
+        else if (m == FileDialogMode::DomainFigure) ctx.runCommand({"domain-figure", p.string()});
+        else if (m == FileDialogMode::SweepAnimation) ctx.runCommand({"sweep-animation", p.string()});
         else if (m == FileDialogMode::SaveAs) {
             ctx.runCommand({"save", p.string()});
             // Save from the unsaved-changes prompt of an untitled document: go on with New / Open / Quit.

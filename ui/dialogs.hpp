@@ -13,7 +13,7 @@
 
 namespace pw::ui {
 
-enum class FileDialogMode { None, Open, SaveAs, Import, ExportGltf, Screenshot };
+enum class FileDialogMode { None, Open, SaveAs, Import, ExportGltf, Screenshot, DomainFigure, SweepAnimation };
 
 class Dialogs {
 public:

@@ -114,6 +114,8 @@ private:
     void screenshot(const std::string& path) override;
     bool frame(const Bounds& box) override;
     void status(const std::string& message) override;
+    void domainFigure(const std::string& path) override;    // editor_figures.cpp
+    void sweepAnimation(const std::string& path) override;  // editor_figures.cpp
     struct KeyBinding {
         int key = 0, mods = 0;
         std::string line;  // the command line it runs

@@ -98,6 +98,8 @@ void Teaching::drawControls(PanelContext& ctx) {
     ImGui::Checkbox("Shaders", &shadersOpen_);
     traceItem("teach.shaders");
     tip("The GLSL of the tessellation stages in use, read-only, with the active defines");
+    ImGui::SameLine();
+    commandButton(ctx, "Save figure...", "domain-figure", "teach.saveFigure");
     ImGui::TextUnformatted("Panes");
     for (int n : {1, 2, 4}) {
         ImGui::SameLine();
@@ -204,6 +206,7 @@ void Teaching::drawControls(PanelContext& ctx) {
     tip("Start again at the first value");
     ImGui::SameLine();
     ImGui::Text("level %.2f", double(sweep.level));
+    commandButton(ctx, "Save animation...", "sweep-animation", "teach.saveAnimation");
 
     bool present = presentation;
     if (ImGui::Checkbox("Presentation (F5)", &present)) setPresentation(ctx, present);

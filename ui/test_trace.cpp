@@ -69,7 +69,7 @@ void TestTrace::write(const Editor& e) {
     j["presentation"] = teaching.presentation;
     j["tessOuter"] = doc.tess.outer;
     j["lesson"] = {{"active", teaching.lesson.active}, {"name", teaching.lesson.name}, {"outer", teaching.shownTess(doc.tess).outer}};
-    j["sweep"] = {{"playing", teaching.sweep.playing}, {"level", teaching.sweep.level}};
+    j["sweep"] = {{"playing", teaching.sweep.playing}, {"level", teaching.sweep.level}, {"seconds", teaching.sweep.seconds}};
     j["domain"] = nlohmann::json::array();
     for (size_t i = 0; i < teaching.domainPanes.size() && i < teaching.domainStats.size(); ++i) {
         const auto& o = teaching.domainPanes[i];

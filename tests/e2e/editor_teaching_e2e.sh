@@ -12,6 +12,7 @@ WORK=$3
 rm -rf "$WORK"
 mkdir -p "$WORK"
 source "$(dirname "$0")/e2e_lib.sh"
+for tool in xmllint ffprobe; do command -v $tool >/dev/null || missing_tool $tool; done
 
 start_editor
 check_validation
@@ -159,6 +160,39 @@ say "sweep stopped at level $(trace "round(t['sweep']['level'], 2)"); counts sti
 click_item teach.lessonBack
 wait_for "not t['lesson']['active'] and t['lesson']['outer'] == [16, 16, 16, 16]"
 say "back to the document's levels"
+
+# Figures for slides from the editor: the domain view (one pane, the document's level 16) as an SVG
+# with one closed path per triangle the GPU made, and the sweep as a GIF with one frame per step
+# (10 a second).
+WANT=$(trace "t['domain'][0]['primitives']")
+xdotool mousemove --sync 640 700
+xdotool key F3
+wait_for "t['palette']"
+sleep 0.3
+xdotool type --delay 30 "domain-figure $WORK/domain.svg"
+xdotool key Return
+for i in $(seq 150); do [ -s "$WORK/domain.svg" ] && break; sleep 0.1; done
+xmllint --noout "$WORK/domain.svg" || fail "the domain figure is not well-formed SVG"
+python3 - "$WORK/domain.svg" "$WANT" <<'PY' || fail "the domain figure's paths"
+import re, sys
+svg = open(sys.argv[1]).read()
+page = svg[svg.index('</defs>'):]
+tri = re.compile(r'^M [-0-9.e]+ [-0-9.e]+ L [-0-9.e]+ [-0-9.e]+ L [-0-9.e]+ [-0-9.e]+ Z( M [-0-9.e]+ [-0-9.e]+)? ?$')
+n = sum(1 for d in re.findall(r'<path[^>]* d="([^"]*)"', page) if tri.match(d))
+assert n == int(sys.argv[2]), (n, sys.argv[2])
+print("domain.svg:", n, "triangle paths")
+PY
+FRAMES=$(trace "round(t['sweep']['seconds'] * 10) + 1")
+xdotool key F3
+wait_for "t['palette']"
+sleep 0.3
+xdotool type --delay 30 "sweep-animation $WORK/sweep.gif"
+xdotool key Return
+for i in $(seq 600); do [ -s "$WORK/sweep.gif" ] && break; sleep 0.1; done
+GOT=$(ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 "$WORK/sweep.gif")
+[ "$GOT" = "$FRAMES" ] || fail "sweep.gif has $GOT frames, not $FRAMES"
+check_validation
+say "domain figure as SVG ($WANT triangle paths) and the sweep as a GIF of $FRAMES frames, from the editor"
 
 # Presentation mode hides the panels (their items vanish from the trace) and F5 brings them back.
 xdotool mousemove --sync 640 700
