@@ -35,6 +35,7 @@ void Teaching::drawPresentationOverlay(PanelContext& ctx) {
         ImGui::Text("%llu evaluations", static_cast<unsigned long long>(stats.tesInvocations));
         if (sweep.playing) ImGui::Text("sweep %.2f", double(sweep.level));
         ImGui::PopFont();
+        overlaySize = {ImGui::GetWindowSize().x, ImGui::GetWindowSize().y};
     }
     ImGui::End();
 }

@@ -23,8 +23,9 @@ missing_tool() {
 }
 for tool in Xvfb xdotool python3; do command -v $tool >/dev/null || missing_tool $tool; done
 
-# Xvfb picks a free display number itself (-displayfd) so parallel runs cannot collide.
-Xvfb -displayfd 3 -screen 0 1280x800x24 -nolisten tcp 3>"$WORK/display" >"$WORK/xvfb.log" 2>&1 &
+# Xvfb picks a free display number itself (-displayfd) so parallel runs cannot collide; E2E_SCREEN
+# sets its size (default 1280x800).
+Xvfb -displayfd 3 -screen 0 ${E2E_SCREEN:-1280x800}x24 -nolisten tcp 3>"$WORK/display" >"$WORK/xvfb.log" 2>&1 &
 XVFB=$!
 for i in $(seq 100); do [ -s "$WORK/display" ] && break; sleep 0.1; done
 DNUM=$(head -1 "$WORK/display" | tr -d '[:space:]')
