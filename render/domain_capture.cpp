@@ -10,6 +10,7 @@
 #include "render/domain_interface.h"
 #include "render/domain_view.hpp"
 #include "render/pipeline_builder.hpp"
+#include "render/stats.hpp"
 #include "render/shader_variants.hpp"
 #include "shaders/spirv.hpp"
 
@@ -65,11 +66,7 @@ DomainPattern DomainView::capture(const DomainPane& pane) {
     const DomainCounts want = expectedDomainCounts(pane.kind, pane.levels, pane.spacing, float(dev_.caps().maxTessLevel));
     if (want.culled) return out;
 
-    VkQueryPoolCreateInfo qci{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
-    qci.queryType = VK_QUERY_TYPE_TRANSFORM_FEEDBACK_STREAM_EXT;
-    qci.queryCount = 1;
-    OwnedQueryPool query;
-    VK_CHECK(vkCreateQueryPool(dev_.device(), &qci, nullptr, query.replace(dev_.device())));
+    const OwnedQueryPool query = makeTransformFeedbackQuery(dev_);
     const Device::TransformFeedbackFns& xfb = dev_.transformFeedback();
     // Room for the rules' count (and then some); when the query says more were made, once more at
     // the exact size.
@@ -101,9 +98,7 @@ DomainPattern DomainView::capture(const DomainPane& pane) {
             vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFORM_FEEDBACK_BIT_EXT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &hb, 0, nullptr, 0,
                                  nullptr);
         });
-        uint64_t prims[2] = {0, 0};  // written, needed
-        VK_CHECK(vkGetQueryPoolResults(dev_.device(), query, 0, 1, sizeof prims, prims, sizeof prims,
-                                       VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+        const std::array<uint64_t, 2> prims = readTransformFeedbackQuery(dev_, query);  // written, needed
         if (prims[1] > prims[0]) {
             if (attempt > 0)
                 throw OutputError("(capture)", "the GPU made " + std::to_string(prims[1]) + " primitives but wrote only " +

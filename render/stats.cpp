@@ -1,5 +1,7 @@
 #include "render/stats.hpp"
 
+#include "render/vk_check.hpp"
+
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 
@@ -79,6 +81,22 @@ void FrameQueries::read(FrameStats& out) {
             out.tesInvocations = r[4];
         }
     }
+}
+
+OwnedQueryPool makeTransformFeedbackQuery(Device& dev) {
+    VkQueryPoolCreateInfo qci{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+    qci.queryType = VK_QUERY_TYPE_TRANSFORM_FEEDBACK_STREAM_EXT;
+    qci.queryCount = 1;
+    OwnedQueryPool query;
+    VK_CHECK(vkCreateQueryPool(dev.device(), &qci, nullptr, query.replace(dev.device())));
+    return query;
+}
+
+std::array<uint64_t, 2> readTransformFeedbackQuery(Device& dev, VkQueryPool pool) {
+    std::array<uint64_t, 2> prims{0, 0};
+    VK_CHECK(vkGetQueryPoolResults(dev.device(), pool, 0, 1, sizeof prims, prims.data(), sizeof prims,
+                                   VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+    return prims;
 }
 
 }  // namespace pw::render

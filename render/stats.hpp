@@ -5,6 +5,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <array>
 #include <cstdint>
 #include <string>
 
@@ -54,5 +55,10 @@ private:
     Device& dev_;
     OwnedQueryPool ts_, stats_;
 };
+
+// A transform-feedback stream query (the exports' and vector figures' captures): created, and
+// read as {primitives written, primitives the draw needed} (waits for the result).
+OwnedQueryPool makeTransformFeedbackQuery(Device& dev);
+std::array<uint64_t, 2> readTransformFeedbackQuery(Device& dev, VkQueryPool pool);
 
 }  // namespace pw::render

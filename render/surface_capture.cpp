@@ -11,6 +11,7 @@
 #include "core/errors.hpp"
 #include "core/mesh_weld.hpp"
 #include "render/pipeline_builder.hpp"
+#include "render/stats.hpp"
 #include "render/renderer.hpp"
 #include "render/renderer_impl.hpp"
 #include "render/triangle_draws.hpp"
@@ -79,11 +80,7 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
     VkDeviceSize capacity = std::clamp<VkDeviceSize>(captureBound(m.scene, std::max(segments, 1) + 1), 3 * kStride, VkDeviceSize(256) << 20);
     Buffer counter = createBuffer(dev_, 16, VK_BUFFER_USAGE_TRANSFORM_FEEDBACK_COUNTER_BUFFER_BIT_EXT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                   MemoryUse::Readback);
-    VkQueryPoolCreateInfo qci{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
-    qci.queryType = VK_QUERY_TYPE_TRANSFORM_FEEDBACK_STREAM_EXT;
-    qci.queryCount = 1;
-    OwnedQueryPool query;
-    VK_CHECK(vkCreateQueryPool(dev_.device(), &qci, nullptr, query.replace(dev_.device())));
+    const OwnedQueryPool query = makeTransformFeedbackQuery(dev_);
     const Device::TransformFeedbackFns& xfb = dev_.transformFeedback();
 
     for (int attempt = 0;; ++attempt) {
@@ -146,9 +143,7 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
         VK_CHECK(vkEndCommandBuffer(cmd));
         submitAndWait(dev_, cmd, m.fence);
 
-        uint64_t prims[2] = {0, 0};  // written, needed
-        VK_CHECK(vkGetQueryPoolResults(dev_.device(), query, 0, 1, sizeof(prims), prims, sizeof(prims),
-                                       VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+        const std::array<uint64_t, 2> prims = readTransformFeedbackQuery(dev_, query);  // written, needed
         if (prims[1] > prims[0]) {
             if (attempt > 0)
                 throw OutputError("(capture)", "the GPU made " + std::to_string(prims[1]) + " triangles but wrote only " +

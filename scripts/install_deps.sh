@@ -4,8 +4,9 @@
 #   --tests  also what the test suite needs (validation layers, Xvfb, xdotool, ImageMagick, a window
 #            manager (openbox) for minimise tests, clang with libFuzzer, desktop-file-validate for
 #            the installed desktop entry, assimp as an independent reader of the glTF and OBJ
-#            exports, rsvg-convert and xmllint as independent readers of the SVG figures, ffprobe
-#            (with ffmpeg, which sweeps use) for the animations, Node.js for the glTF validator).
+#            exports, rsvg-convert, xmllint and pdftoppm as independent readers of the SVG and PDF
+#            figures, ffprobe (with ffmpeg, which sweeps use) for the animations, Node.js for the
+#            glTF validator).
 set -euo pipefail
 
 build_packages=(
@@ -18,7 +19,7 @@ build_packages=(
   libcairo2-dev ffmpeg
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev
 )
-test_packages=(vulkan-validationlayers vulkan-tools xvfb xdotool imagemagick openbox clang libclang-rt-dev desktop-file-utils assimp-utils librsvg2-bin libxml2-utils)
+test_packages=(vulkan-validationlayers vulkan-tools xvfb xdotool imagemagick openbox clang libclang-rt-dev desktop-file-utils assimp-utils librsvg2-bin libxml2-utils poppler-utils)
 
 wanted=("${build_packages[@]}")
 if [[ "${1:-}" == "--tests" ]]; then

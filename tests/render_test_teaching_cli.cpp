@@ -2,7 +2,6 @@
 // the rounding rules, labels drawn), `sweep` (numbered frames), `presets`; bad options are exit 2
 // naming the option, and write nothing. Validation layer on (non-zero exit on any message).
 #include <gtest/gtest.h>
-#include <stb_image.h>
 
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -16,21 +15,6 @@ namespace pw::test {
 namespace {
 
 std::string bin() { return "PATCHWORK_VALIDATION=1 " + patchworkBinary().string(); }
-
-struct Png {
-    int w = 0, h = 0;
-    std::vector<uint8_t> rgba;
-    const uint8_t* at(int x, int y) const { return &rgba[(size_t(y) * size_t(w) + size_t(x)) * 4]; }
-};
-
-Png loadPng(const std::filesystem::path& p) {
-    Png img;
-    int n = 0;
-    unsigned char* data = stbi_load(p.c_str(), &img.w, &img.h, &n, 4);
-    if (data) img.rgba.assign(data, data + size_t(img.w) * size_t(img.h) * 4);
-    stbi_image_free(data);
-    return img;
-}
 
 // Pixels of the edge-label colour (render/domain_figure.cpp: dark red text) inside a rectangle.
 size_t labelPixels(const Png& img, int x0, int y0, int x1, int y1) {

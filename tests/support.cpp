@@ -1,5 +1,7 @@
 #include "support.hpp"
 
+#include <stb_image.h>
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -122,6 +124,16 @@ void expectValidGltf(const std::vector<std::filesystem::path>& files) {
     for (size_t pos = 0; (pos = r.output.find("numWarnings: 0\n", pos)) != std::string::npos; ++pos) ++okWarnings;
     EXPECT_EQ(okErrors, files.size()) << r.output;
     EXPECT_EQ(okWarnings, files.size()) << r.output;
+}
+
+Png loadPng(const std::filesystem::path& file) {
+    Png img;
+    int n = 0;
+    unsigned char* data = stbi_load(file.c_str(), &img.w, &img.h, &n, 4);
+    if (data) img.rgba.assign(data, data + size_t(img.w) * size_t(img.h) * 4);
+    else img.w = img.h = 0;
+    stbi_image_free(data);
+    return img;
 }
 
 }  // namespace pw::test

@@ -18,6 +18,14 @@ std::filesystem::path freshTempDir(const std::string& tag);  // empty, unique pe
 std::string readBytes(const std::filesystem::path& file);      // the whole file ("" when missing)
 size_t entryCount(const std::filesystem::path& dir);           // files, folders and links in dir
 
+// A PNG read with stb_image as RGBA8 (w = h = 0 when it cannot be read).
+struct Png {
+    int w = 0, h = 0;
+    std::vector<uint8_t> rgba;
+    const uint8_t* at(int x, int y) const { return &rgba[(size_t(y) * size_t(w) + size_t(x)) * 4]; }
+};
+Png loadPng(const std::filesystem::path& file);
+
 struct RunResult {
     int exitCode = -1;
     std::string output;  // stdout and stderr together

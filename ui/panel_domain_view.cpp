@@ -29,7 +29,9 @@ void Teaching::drawDomainWindow(PanelContext& ctx) {
         // Kept between the side panels and under the menu bar at any window size (the panels
         // would hide part of it, and the 3D view's axis gizmo moves out of its way).
         {
-            const float x0 = layout.left + 4.0f, x1 = io.DisplaySize.x - layout.right - 4.0f;
+            // In presentation mode the panels are gone; the levels overlay (top left) is kept clear.
+            const float x0 = presentation ? 16.0f + overlaySize[0] + 8.0f : layout.left + 4.0f;
+            const float x1 = presentation ? io.DisplaySize.x - 4.0f : io.DisplaySize.x - layout.right - 4.0f;
             const float y0 = ImGui::GetFrameHeight() + 4.0f, y1 = io.DisplaySize.y - 4.0f;
             const ImVec2 size(std::min(ImGui::GetWindowSize().x, std::max(160.0f, x1 - x0)),
                               std::min(ImGui::GetWindowSize().y, std::max(160.0f, y1 - y0)));

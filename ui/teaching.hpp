@@ -74,6 +74,7 @@ public:
     } sweep;
     float presentationScale = 2.0f;
     std::array<float, 2> overlaySize{0, 0};  // the presentation overlay's size last frame (the test trace)
+    float overlayTextRight = 0.0f;           // where its widest line ends, from the overlay's left edge
 
     // The levels a preset or the sweep shows, apart from the document's, which stay the user's:
     // while active the 3D view, the domain view, the shader panel and presentation mode show these

@@ -67,7 +67,7 @@ void TestTrace::write(const Editor& e) {
     j["modal"] = modal_;
     j["textInput"] = ImGui::GetIO().WantTextInput;
     j["presentation"] = teaching.presentation;
-    j["presentationOverlay"] = teaching.overlaySize;
+    j["presentationOverlay"] = {teaching.overlaySize[0], teaching.overlaySize[1], teaching.overlayTextRight};
     j["tessOuter"] = doc.tess.outer;
     j["lesson"] = {{"active", teaching.lesson.active}, {"name", teaching.lesson.name}, {"outer", teaching.shownTess(doc.tess).outer}};
     j["sweep"] = {{"playing", teaching.sweep.playing}, {"level", teaching.sweep.level}, {"seconds", teaching.sweep.seconds}};

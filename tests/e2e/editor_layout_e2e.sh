@@ -2,7 +2,8 @@
 # The teaching layout at three window sizes (1024x640, 1280x800, 1920x1080), under Xvfb with the
 # validation layer on: the domain view in four panes stays between the side panels, its labels
 # (edge levels, captions, titles) neither overlap one another nor leave their pane, the axis gizmo
-# keeps out of the domain window, and presentation mode's text grows with the window.
+# keeps out of the domain window, and presentation mode's text grows with the window, is not
+# clipped and is not covered by the domain window.
 # Screenshots in WORK_DIR (layout-WxH.png, presentation-WxH.png).
 # Usage: editor_layout_e2e.sh PATCHWORK_BINARY DATA_DIR WORK_DIR
 set -euo pipefail
@@ -62,7 +63,9 @@ PY
     wait_for "t['presentation'] and t['presentationOverlay'][1] > 0"
     import -window root -crop "${SIZE}+0+0" "$WORK/presentation-$SIZE.png"
     sleep 0.3
-HEIGHT=$(trace "round(t['presentationOverlay'][1])")
+    # Its text fits (nothing clipped) and the domain window keeps clear of it.
+    wait_for "t['presentationOverlay'][2] <= t['presentationOverlay'][0] and (t['layout']['domainWindow'][0] >= 16 + t['presentationOverlay'][0])"
+    HEIGHT=$(trace "round(t['presentationOverlay'][1])")
     [ "$HEIGHT" -gt "$PRESENT_PREV" ] || fail "presentation text did not grow at $SIZE ($HEIGHT <= $PRESENT_PREV)"
     PRESENT_PREV=$HEIGHT
     xdotool key F5
