@@ -139,7 +139,7 @@ int runSweep(const SweepArgs& a) {
         if (animation) encoder = std::make_unique<render::AnimationEncoder>(a.output, *animation, w, h, a.fps);
         render::renderSweep(dev, spec, [&](int k, const std::vector<uint8_t>& rgba) {
             if (encoder) encoder->addFrame(rgba);
-            else out.stage((*names)(k), render::encodePng((*names)(k), w, h, rgba));
+            else out.stage((*names)(k), render::encodePng((*names)(k), spec.width, spec.height, rgba));
         });
         if (encoder) out.stage(a.output, encoder->finish());
         out.commit();
