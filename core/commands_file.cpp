@@ -1,6 +1,8 @@
 // File and history commands: new, open, import, save, save-as, export-gltf, screenshot, quit,
 // undo, redo.
 #include <filesystem>
+#include <initializer_list>
+#include <optional>
 
 #include "core/command_table.hpp"
 #include "core/file_io.hpp"
@@ -21,6 +23,24 @@ bool mayReplace(CommandContext& ctx) {
     std::vector<std::string> words{ctx.command.name};
     words.insert(words.end(), ctx.args.begin(), ctx.args.end());
     return ctx.host.confirmDiscard(words);
+}
+
+// A window's "save as" of a figure: without an argument its file dialog opens (nothing to write
+// yet); with one, the path, which must end in one of `extensions` (any case).
+std::optional<std::string> outputArgument(CommandContext& ctx, FileDialogKind dialog, std::initializer_list<const char*> extensions) {
+    expectArgs(ctx, 0, 1);
+    if (ctx.args.empty()) {
+        ctx.host.fileDialog(dialog);
+        return std::nullopt;
+    }
+    const std::string ext = lowerExtension(ctx.args[0]);
+    std::string names;  // ".svg, .pdf or .png"
+    for (size_t i = 0; i < extensions.size(); ++i) {
+        const char* e = extensions.begin()[i];
+        if (ext == e) return ctx.args[0];
+        names += (i == 0 ? "" : i + 1 == extensions.size() ? " or " : ", ") + std::string(e);
+    }
+    throw EditError("'" + ctx.args[0] + "' is not a " + names + " file");
 }
 
 void save(CommandContext& ctx, const std::string& path) {
@@ -105,22 +125,16 @@ void addFileCommands(CommandTable& t) {
                    "triangle one path), or .png",
            .windowOnly = true,
            .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 0, 1);
-               if (ctx.args.empty()) return ctx.host.fileDialog(FileDialogKind::DomainFigure);
-               const std::string ext = lowerExtension(ctx.args[0]);
-               if (ext != ".svg" && ext != ".pdf" && ext != ".png") throw EditError("'" + ctx.args[0] + "' is not a .svg, .pdf or .png file");
-               ctx.host.domainFigure(ctx.args[0]);
+               if (const auto path = outputArgument(ctx, FileDialogKind::DomainFigure, {".svg", ".pdf", ".png"}))
+                   ctx.host.domainFigure(*path);
            }});
     t.add({.name = "sweep-animation", .label = "Save Sweep Animation...", .menu = "File", .usage = "[FILE]",
            .help = "Save the Teaching panel's level sweep (from, to, seconds) as an animation at 10 frames a second: the domain "
                    "view's panes when it is open, else the 3D view; .gif, .mp4 or .webm",
            .windowOnly = true,
            .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 0, 1);
-               if (ctx.args.empty()) return ctx.host.fileDialog(FileDialogKind::SweepAnimation);
-               const std::string ext = lowerExtension(ctx.args[0]);
-               if (ext != ".gif" && ext != ".mp4" && ext != ".webm") throw EditError("'" + ctx.args[0] + "' is not a .gif, .mp4 or .webm file");
-               ctx.host.sweepAnimation(ctx.args[0]);
+               if (const auto path = outputArgument(ctx, FileDialogKind::SweepAnimation, {".gif", ".mp4", ".webm"}))
+                   ctx.host.sweepAnimation(*path);
            }});
     t.add({.name = "quit", .label = "Quit", .menu = "File", .help = "Close the editor (asks about unsaved changes)",
            .bindings = {{"", "", {"Ctrl+Q"}}}, .windowOnly = true,

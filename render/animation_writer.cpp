@@ -69,7 +69,6 @@ AnimationEncoder::AnimationEncoder(const std::filesystem::path& output, Animatio
     std::string tmpl = (std::filesystem::temp_directory_path() / "patchwork-animation-XXXXXX").string();
     if (!mkdtemp(tmpl.data())) throw OutputError(output.string(), std::string("cannot make a temporary folder: ") + std::strerror(errno));
     dir_ = tmpl;
-    extension_ = lowerExtension(output);
     const char* program = std::getenv("PATCHWORK_FFMPEG");
     const std::string ffmpeg = program && *program ? program : "ffmpeg";
     char rate[32];
@@ -79,7 +78,7 @@ AnimationEncoder::AnimationEncoder(const std::filesystem::path& output, Animatio
                                      "pipe:0"};
     for (std::string& a : encodeArgs(format)) args.push_back(std::move(a));
     args.push_back("-y");
-    args.push_back((dir_ / ("out" + extension_)).string());
+    args.push_back(encodedFile().string());
 
     int fds[2];
     if (pipe2(fds, O_CLOEXEC) != 0) {
@@ -108,6 +107,8 @@ AnimationEncoder::AnimationEncoder(const std::filesystem::path& output, Animatio
 }
 
 AnimationEncoder::~AnimationEncoder() { stop(); }
+
+std::filesystem::path AnimationEncoder::encodedFile() const { return dir_ / ("out" + lowerExtension(output_)); }
 
 void AnimationEncoder::stop() {
     if (pipe_ >= 0) close(pipe_);
@@ -138,7 +139,6 @@ void AnimationEncoder::addFrame(const std::vector<uint8_t>& rgba) {
         p += n;
         left -= size_t(n);
     }
-    ++frames_;
 }
 
 std::string AnimationEncoder::finish() {
@@ -149,7 +149,7 @@ std::string AnimationEncoder::finish() {
     }
     child_ = -1;
     const std::string log = slurp(dir_ / "ffmpeg.log");
-    const std::string bytes = slurp(dir_ / ("out" + extension_));
+    const std::string bytes = slurp(encodedFile());
     stop();
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || bytes.empty())
         throw OutputError(output_.string(), "ffmpeg could not encode the animation" + (log.empty() ? std::string() : ": " + tailOf(log, 3)));

@@ -33,16 +33,14 @@ public:
     void addFrame(const std::vector<uint8_t>& rgba);
     // Ends the stream and returns the encoded file; throws OutputError with ffmpeg's message.
     std::string finish();
-    int frames() const { return frames_; }
 
 private:
     void stop();
+    std::filesystem::path encodedFile() const;  // ffmpeg's output in the temporary folder
     std::filesystem::path output_, dir_;
     uint32_t width_, height_;
     int pipe_ = -1;
     pid_t child_ = -1;
-    int frames_ = 0;
-    std::string extension_;
 };
 
 }  // namespace pw::render

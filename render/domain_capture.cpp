@@ -60,8 +60,7 @@ DomainPattern DomainView::capture(const DomainPane& pane) {
     out.vertsPerPrimitive = pane.kind == DomainKind::Isoline ? 2 : 3;
     const VkPipeline pipe = capturePipeline(pane.kind, pane.spacing);
     gpu::DomainPush push{};
-    for (int e = 0; e < 4; ++e) push.outer[e] = pane.levels.outer[size_t(e)];
-    push.inner = {pane.levels.inner[0], pane.levels.inner[1], pane.spacing == Spacing::Pow2 ? 1.0f : 0.0f, 0.0f};
+    setDomainLevels(push, pane);
     push.transform = {1.0f, 1.0f, 0.0f, 0.0f};
     const DomainCounts want = expectedDomainCounts(pane.kind, pane.levels, pane.spacing, float(dev_.caps().maxTessLevel));
     if (want.culled) return out;

@@ -41,21 +41,18 @@ std::vector<DomainStats> renderDomainFigure(DomainView& view, OffscreenTarget& t
     const VkExtent2D ext = target.extent();
     const DomainFigureLayout layout = layoutDomainFigure(panes, ext.width, ext.height, textPixels);
     const auto& opts = layout.panes;
-    const auto& textSizes = layout.textPixels;
-    const auto& rects = layout.rects;
-    std::vector<DomainStats> stats;
-    stats = view.draw(target, opts, true);
+    const std::vector<DomainStats> stats = view.draw(target, opts, true);
     rgba = target.pixels();
     PixelImage img{ext.width, ext.height, rgba};
     for (size_t i = 0; i < opts.size(); ++i) {
-        const float px = textSizes[i];
+        const float px = layout.textPixels[i];
         const auto counts = shownCounts(stats[i], panes[i]);
         const auto widthOf = [&](const std::string& t) { return labels.measure(t, px)[0]; };
         for (const DomainLabel& l : domainLabels(opts[i], counts[0], counts[1], px, widthOf)) {
             labels.draw(img, l.x, l.y, l.text, domainLabelStyle(l.role, px), l.ax, l.ay);
         }
     }
-    drawPaneDividers(rgba, ext.width, ext.height, rects);
+    drawPaneDividers(rgba, ext.width, ext.height, layout.rects);
     return stats;
 }
 

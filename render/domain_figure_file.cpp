@@ -12,22 +12,27 @@ DomainFigureFile encodeDomainFigure(Device& dev, const std::filesystem::path& ou
                                     const std::vector<DomainPane>& panes, bool msaa) {
     OffscreenTarget target(dev, w, h, msaa);
     DomainView view(dev, target.colorFormat(), target.depthFormat(), target.samples());
-    const LabelRaster labels;
-    std::vector<uint8_t> rgba;
     DomainFigureFile f;
-    f.stats = renderDomainFigure(view, target, labels, panes, 0.0f, rgba);
-    if (const auto vector = vectorFormatFor(output.string())) {
-        // The primitives the tessellator made, read back, one path each.
-        std::vector<DomainPattern> patterns;
-        std::vector<std::array<uint64_t, 2>> counts;
-        for (size_t i = 0; i < panes.size(); ++i) {
-            patterns.push_back(view.capture(panes[i]));
-            counts.push_back(shownCounts(f.stats[i], panes[i]));
-        }
-        f.bytes = domainFigureVector(*vector, w, h, layoutDomainFigure(panes, w, h, 0.0f), patterns, counts);
-    } else {
+    const auto vector = vectorFormatFor(output.string());
+    if (!vector) {
+        const LabelRaster labels;
+        std::vector<uint8_t> rgba;
+        f.stats = renderDomainFigure(view, target, labels, panes, 0.0f, rgba);
         f.bytes = encodePng(output.string(), w, h, rgba);
+        return f;
     }
+    // SVG or PDF: the panes drawn once for their statistics (no pixels read back, no labels
+    // rasterised), and the primitives the tessellator made read back, one path each.
+    const DomainFigureLayout layout = layoutDomainFigure(panes, w, h, 0.0f);
+    target.setReadback(false);
+    f.stats = view.draw(target, layout.panes, true);
+    std::vector<DomainPattern> patterns;
+    std::vector<std::array<uint64_t, 2>> counts;
+    for (size_t i = 0; i < panes.size(); ++i) {
+        patterns.push_back(view.capture(panes[i]));
+        counts.push_back(shownCounts(f.stats[i], panes[i]));
+    }
+    f.bytes = domainFigureVector(*vector, w, h, layout, patterns, counts);
     return f;
 }
 

@@ -43,6 +43,11 @@ std::vector<DomainStats> readStats(Device& dev, VkQueryPool pool, uint32_t count
 
 }  // namespace
 
+void setDomainLevels(gpu::DomainPush& push, const DomainPane& pane) {
+    for (int e = 0; e < 4; ++e) push.outer[e] = pane.levels.outer[size_t(e)];
+    push.inner = {pane.levels.inner[0], pane.levels.inner[1], pane.spacing == Spacing::Pow2 ? 1.0f : 0.0f, 0.0f};
+}
+
 DomainPlacement placeDomain(const DomainViewOptions& o) {
     const float w = std::max(1.0f, o.rect[2] - 2.0f * o.margin), h = std::max(1.0f, o.rect[3] - 2.0f * o.margin);
     const float domainH = o.kind == DomainKind::Triangle ? kTriangleHeight : 1.0f;
@@ -110,8 +115,7 @@ void DomainView::recordPass(VkCommandBuffer cmd, const DomainViewOptions& o, int
     // Domain (x, y) -> pixels (originX + x size, originY - y size) -> clip ([-1, 1], y down).
     const float sx = 2.0f / float(extent.width), sy = 2.0f / float(extent.height);
     gpu::DomainPush push{};
-    for (int e = 0; e < 4; ++e) push.outer[e] = o.levels.outer[size_t(e)];
-    push.inner = {o.levels.inner[0], o.levels.inner[1], o.spacing == Spacing::Pow2 ? 1.0f : 0.0f, 0.0f};
+    setDomainLevels(push, o);
     push.transform = {at.size * sx, -at.size * sy, at.originX * sx - 1.0f, at.originY * sy - 1.0f};
     push.color = {color[0], color[1], color[2], color[3]};
     push.point = {o.pointSize, 0, 0, 0};

@@ -14,6 +14,10 @@
 #include "render/render_target.hpp"
 #include "core/tess_domain.hpp"
 
+namespace pw::gpu {
+struct DomainPush;
+}
+
 namespace pw::render {
 
 // The pattern one pane shows: a domain, its levels and partitioning.
@@ -22,6 +26,10 @@ struct DomainPane {
     DomainLevels levels;
     Spacing spacing = Spacing::Equal;
 };
+
+// The pane's levels in the push constants the domain shaders read: outer, inner and the pow2 flag
+// (drawn panes and captured ones alike).
+void setDomainLevels(gpu::DomainPush& push, const DomainPane& pane);
 
 struct DomainViewOptions : DomainPane {
     // Where the domain goes, in target pixels (x, y, width, height); the domain keeps its aspect and

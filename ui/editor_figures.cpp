@@ -26,8 +26,7 @@ constexpr double kAnimationFps = 10.0;
 std::vector<render::DomainPane> shownDomainPanes(const Teaching& t, uint32_t& w, uint32_t& h) {
     if (t.domainPanes.empty())
         throw EditError("the domain view is not open: show it first (Teaching > Domain view), with the panes the figure should have");
-    std::vector<render::DomainPane> panes;
-    for (const auto& o : t.domainPanes) panes.push_back({o.kind, o.levels, o.spacing});
+    std::vector<render::DomainPane> panes(t.domainPanes.begin(), t.domainPanes.end());
     const float aspect = t.windowRect[2] > 0.0f ? std::clamp(t.windowRect[3] / t.windowRect[2], 0.3f, 1.5f) : 0.75f;
     w = 1280;
     h = uint32_t(std::lround(1280.0f * aspect)) & ~1u;

@@ -61,10 +61,10 @@ void Teaching::drawDomainWindow(PanelContext& ctx) {
                 // A label still wider than its pane (a very narrow window) is drawn smaller to fit.
                 const ImVec2 full = ImGui::CalcTextSize(l.text.c_str());
                 const float fit = std::min(1.0f, (o.rect[2] - 4.0f) / std::max(1.0f, full.x));
-                const ImVec2 size(full.x * fit, full.y * fit);
+                const ImVec2 size(full.x * fit, full.y * fit), at(l.x - l.ax * size.x, l.y - l.ay * size.y);
                 const ImU32 col = l.role == render::DomainLabel::Role::Edge ? IM_COL32(170, 30, 20, 255) : IM_COL32(25, 30, 40, 255);
-                dl->AddText(ImGui::GetFont(), px * fit, ImVec2(l.x - l.ax * size.x, l.y - l.ay * size.y), col, l.text.c_str());
-                labelBoxes.push_back({l.x - l.ax * size.x, l.y - l.ay * size.y, size.x, size.y});
+                dl->AddText(ImGui::GetFont(), px * fit, at, col, l.text.c_str());
+                labelBoxes.push_back({at.x, at.y, size.x, size.y});
             }
             // In framebuffer pixels for the GPU pass.
             o.rect = {o.rect[0] * sx, o.rect[1] * sy, o.rect[2] * sx, o.rect[3] * sy};

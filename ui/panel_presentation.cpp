@@ -25,25 +25,18 @@ void Teaching::drawPresentationOverlay(PanelContext& ctx) {
         // it larger, a 1024 x 640 window smaller, so the overlay keeps its share of the screen.
         const float windowScale = std::clamp(ImGui::GetIO().DisplaySize.y / 800.0f, 0.6f, 3.0f);
         ImGui::SetWindowFontScale(presentationScale / 3.0f * windowScale);
-        float textRight = 0.0f;  // the right end of the widest line (the test trace checks it fits)
-        const auto measured = [&] { textRight = std::max(textRight, ImGui::GetItemRectMax().x); };
-        if (lesson.active) {
-            ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.1f, 1.0f), "%s", lesson.name.c_str());
-            measured();
-        }
+        ImGui::BeginGroup();  // one item around the lines: where the widest ends (the test trace checks it fits)
+        if (lesson.active) ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.1f, 1.0f), "%s", lesson.name.c_str());
         ImGui::Text("outer %s  %s  %s  %s", render::formatLevel(ts.outer[0]).c_str(), render::formatLevel(ts.outer[1]).c_str(),
                     render::formatLevel(ts.outer[2]).c_str(), render::formatLevel(ts.outer[3]).c_str());
-        measured();
         ImGui::Text("inner %s  %s", render::formatLevel(ts.inner[0]).c_str(), render::formatLevel(ts.inner[1]).c_str());
-        measured();
         ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.1f, 1.0f), "%s%s", spacingName(ts.spacing).data(),
                            ts.adaptive == AdaptiveMode::None ? "" : (std::string(", adaptive ") + adaptiveName(ts.adaptive).data()).c_str());
-        measured();
         ImGui::Text("%llu triangles", static_cast<unsigned long long>(stats.triangles()));
-        measured();
         ImGui::Text("%llu evaluations", static_cast<unsigned long long>(stats.tesInvocations));
-        measured();
         if (sweep.playing) ImGui::Text("sweep %.2f", double(sweep.level));
+        ImGui::EndGroup();
+        const float textRight = ImGui::GetItemRectMax().x;
         ImGui::PopFont();
         // Auto-resize fits the window to last frame's text: while it is still growing (the scale
         // just changed), draw another frame so the text is never left clipped.
