@@ -22,6 +22,7 @@
 #include "core/file_io.hpp"
 #include "core/mesh_tessellate.hpp"
 #include "core/model_builders.hpp"
+#include "core/terrain.hpp"
 #include "render/offscreen_target.hpp"
 #include "render/renderer.hpp"
 
@@ -53,6 +54,7 @@ struct Scene {
     bool grid = false;
     bool bigOnly = false;  // only on real GPUs unless named
     std::string comparedTo;  // adaptive: the uniform scene with the same view
+    bool terrain = false;  // the terrain's own table (runTerrain), only when named
 };
 
 std::vector<Scene> allScenes() {
@@ -62,6 +64,7 @@ std::vector<Scene> allScenes() {
         {"grid32", [] { return makePatchGrid(32, 32); }, 16, false, false, false, ""},
         {"grid32-adaptive8px", [] { return makePatchGrid(32, 32); }, 16, true, false, false, "grid32"},
         {"grid128", [] { return makePatchGrid(128, 128); }, 16, false, false, true, ""},
+        {"terrain", [] { return makeTerrainDocument(); }, 64, true, false, true, "", true},
     };
 }
 
@@ -120,6 +123,50 @@ int runEditorBench(const BenchArgs& a) {
 #endif
 }
 
+// The lecture notes' terrain (core/terrain.hpp): one row per view (near the ground, far above) and
+// culling (off, on) with distance-adaptive levels, after the uniform level 64 reference; triangles,
+// culled patches and GPU time, and what adaptivity and culling saved.
+nlohmann::json runTerrain(render::Renderer& renderer, int frames) {
+    const Document doc = makeTerrainDocument();
+    renderer.setDocument(doc, std::make_shared<const HeightMap>(makeTerrainHeightMap()));
+    render::RenderOptions base = render::optionsFromDocument(doc);
+    base.display.showGrid = false;
+    Camera far = base.camera;
+    far.target = {0.0, 0.0, 0.0};
+    far.distance = 420.0;
+    far.pitchDeg = 50.0;
+    struct Row { const char* name; bool nearView, adaptive, cull; };
+    const Row rows[] = {{"near uniform 64", true, false, false}, {"near adaptive", true, true, false}, {"near adaptive+cull", true, true, true},
+                        {"far adaptive", false, true, false}, {"far adaptive+cull", false, true, true}};
+    std::vector<render::RenderOptions> variants;
+    for (const Row& r : rows) {
+        render::RenderOptions o = base;
+        if (!r.nearView) o.camera = far;
+        o.tess.adaptive = r.adaptive ? AdaptiveMode::Distance : AdaptiveMode::None;
+        o.tess.outer = {64, 64, 64, 64};
+        o.tess.inner = {64, 64};
+        o.tess.cullOffscreen = r.cull;
+        o.tess.cullBackfaces = false;
+        variants.push_back(o);
+    }
+    const std::vector<Measure> m = measureInterleaved(renderer, variants, frames);
+    std::printf("terrain: %zu patches, %ux%u height map; distance-adaptive levels (d0 %.0f, d1 %.0f), off-screen culling\n",
+                expandPatches(doc).size(), 512u, 512u, doc.tess.distanceNear, doc.tess.distanceFar);
+    std::printf("%-20s %9s %9s %11s %8s %9s\n", "view", "wall ms", "gpu ms", "triangles", "culled", "vs unif.");
+    nlohmann::json j = nlohmann::json::array();
+    for (size_t i = 0; i < m.size(); ++i) {
+        const render::FrameStats s = renderer.render(variants[i]);  // the counters of this view
+        const double fewer = m[i].triangles ? double(m[0].triangles) / double(m[i].triangles) : 0.0;
+        std::printf("%-20s %9.2f %9.2f %11llu %8u %8.1fx\n", rows[i].name, m[i].wall, m[i].gpu, (unsigned long long)m[i].triangles,
+                    s.patchesCulled, fewer);
+        j.push_back({{"view", rows[i].name}, {"near", rows[i].nearView}, {"adaptive", rows[i].adaptive}, {"cull", rows[i].cull},
+                     {"wall_ms", m[i].wall}, {"gpu_ms", m[i].gpu}, {"triangles", m[i].triangles}, {"patches_culled", s.patchesCulled},
+                     {"displaced_edges", s.displacedEdges}, {"fewer_triangles_than_uniform", fewer}});
+    }
+    std::fflush(stdout);
+    return j;
+}
+
 int runBench(const BenchArgs& a) {
     if (a.frames < 1 || a.frames > 100000) throw InputError("bench", "--frames: must be from 1 to 100000");
     if (a.editor) return runEditorBench(a);
@@ -151,7 +198,13 @@ int runBench(const BenchArgs& a) {
     for (const Scene& sc : scenes) {
         const bool named = std::find(a.scenes.begin(), a.scenes.end(), sc.name) != a.scenes.end();
         if (!a.scenes.empty() && !named) continue;
-        if (a.scenes.empty() && sc.bigOnly && cpuDevice) continue;
+        if (a.scenes.empty() && (sc.terrain || (sc.bigOnly && cpuDevice))) continue;
+        if (sc.terrain) {
+            if (!warmed) renderer.warmUp();
+            warmed = true;
+            out.push_back({{"scene", sc.name}, {"views", runTerrain(renderer, a.frames)}});
+            continue;
+        }
         const Document doc = sc.make();
         renderer.setDocument(doc);
         if (!warmed) {  // every pipeline variant once, so no measured frame pays for shader JIT
@@ -224,7 +277,8 @@ int runBench(const BenchArgs& a) {
 void registerBenchCommand(CLI::App& app, Action& run) {
     const auto [cmd, a] = addSubcommand<BenchArgs>(app, run, "bench", "Benchmark the GPU tessellation pipeline against a plain pre-tessellated mesh", runBench);
     cmd->add_option("--frames", a->frames, "Measured frames per scene (default 20)");
-    cmd->add_option("--scene", a->scenes, "Scene(s) to run: teapot16, teapot64, grid32, grid32-adaptive8px, grid128");
+    cmd->add_option("--scene", a->scenes, "Scene(s) to run: teapot16, teapot64, grid32, grid32-adaptive8px, grid128, terrain (only when named: "
+                    "near and far, culling off and on)");
     cmd->add_option("--json", a->json, "Write the results as JSON");
     cmd->add_option("--device", a->device, "Vulkan device: substring of its name");
     cmd->add_flag("--validation", a->validation, "Enable the Vulkan validation layer");

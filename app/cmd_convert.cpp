@@ -8,6 +8,7 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "app/displacement_args.hpp"
 #include "app/displayed_mesh.hpp"
 #include "core/document_io.hpp"
 #include "core/errors.hpp"
@@ -31,7 +32,11 @@ int runConvert(const ConvertOptions& opt) {
     for (const std::string& note : report.notes) std::cerr << "patchwork convert: " << opt.input << ": " << note << "\n";
     const GltfExportOptions options = report.exportOptions.value_or(GltfExportOptions{});
     std::optional<TriangleMesh> displayed;  // a glTF exported as displayed is written so again
-    if (options.asDisplayed && isMeshFormat(opt.output)) displayed = captureDisplayedMesh(doc, displayedMeshRequest(options)).mesh;
+    if ((options.asDisplayed || doc.displacement.active()) && isMeshFormat(opt.output)) {  // displaced: only the GPU displaces
+        DisplayedMeshRequest request = displayedMeshRequest(options);
+        request.map = loadDocumentHeightMap(doc, opt.input);
+        displayed = captureDisplayedMesh(doc, request).mesh;
+    }
     saveDocument(doc, opt.output, options, displayed ? &*displayed : nullptr);
     if (!opt.quiet)
         std::cout << "wrote " << opt.output << " (" << doc.patches.size() << " patches, " << doc.surfaces.size()

@@ -10,9 +10,11 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "app/displacement_args.hpp"
 #include "app/displayed_mesh.hpp"
 #include "app/level_args.hpp"
 #include "core/document_io.hpp"
+#include "core/errors.hpp"
 #include "core/file_io.hpp"
 #include "core/gltf_export.hpp"
 #include "core/limits.hpp"
@@ -38,12 +40,22 @@ struct ExportArgs {
     std::string size;  // WxH, empty: the file's own (as displayed before) or 1280x720
     std::string device;
     bool validation = false;
+    DisplacementArgs displacement;
 };
 
 // The surface as displayed, when asked for (or when FILE was exported so and no --tess overrides
 // it): captured on the GPU, described on stdout. nullopt: tessellate at the level.
-std::optional<TriangleMesh> displayedMesh(const ExportArgs& args, const Document& doc, GltfExportOptions& options) {
-    const bool wanted = args.asDisplayedGiven ? args.asDisplayed : options.asDisplayed && !args.tessGiven;
+std::optional<TriangleMesh> displayedMesh(const ExportArgs& args, const Document& docIn, GltfExportOptions& options) {
+    Document doc = docIn;
+    const bool displaced = doc.displacement.active();
+    if (displaced && args.asDisplayedGiven && !args.asDisplayed)
+        throw InputError("export", "--no-as-displayed: a displaced surface is exported as displayed (only the GPU displaces it)");
+    if (displaced && args.tessGiven) {  // --tess: uniform levels for the displaced surface
+        doc.tess.outer = {float(args.tess), float(args.tess), float(args.tess), float(args.tess)};
+        doc.tess.inner = {float(args.tess), float(args.tess)};
+        doc.tess.adaptive = AdaptiveMode::None;
+    }
+    const bool wanted = displaced || (args.asDisplayedGiven ? args.asDisplayed : options.asDisplayed && !args.tessGiven);
     options.asDisplayed = wanted;
     if (!wanted) {
         options.viewport = {0, 0};
@@ -57,6 +69,7 @@ std::optional<TriangleMesh> displayedMesh(const ExportArgs& args, const Document
     options.viewport = request.viewport;
     request.device = args.device;
     request.validation = args.validation;
+    request.map = loadDocumentHeightMap(doc, args.input);
     std::string deviceName;
     render::CapturedSurface captured = captureDisplayedMesh(doc, request, &deviceName);
     std::cout << describeCapture(captured, request, deviceName) << "\n";
@@ -69,6 +82,8 @@ Document loadForExport(const ExportArgs& args, LoadReport& report) {
     (void)checkOutputPath(args.output);
     Document doc = loadDocument(args.input, &report);
     for (const std::string& note : report.notes) std::cerr << "patchwork export: " << args.input << ": " << note << "\n";
+    applyDisplacementArgs("export", args.displacement, doc);
+    (void)loadDocumentHeightMap(doc, args.input);  // an unreadable map is refused before any work
     return doc;
 }
 
@@ -79,6 +94,8 @@ int runStepExport(const ExportArgs& args) {
     }
     LoadReport report;
     const Document doc = loadForExport(args, report);
+    if (doc.displacement.active())
+        std::cerr << "patchwork export: STEP holds the exact patches without their displacement (a height map is not a surface STEP can carry)\n";
     StepExportOptions options;
     options.schema = args.schema == "ap242" ? StepSchema::AP242 : StepSchema::AP214;
     const StepExportStats stats = exportStep(doc, args.output, options);
@@ -179,6 +196,7 @@ void registerExportCommand(CLI::App& app, Action& run) {
                   "levels and culling from its camera), read back from the tessellator and welded");
     cmd->add_option("--size", args->size, "With --as-displayed: the view's size WIDTHxHEIGHT (default 1280x720)");
     cmd->add_option("--device", args->device, "With --as-displayed: Vulkan device, substring of its name");
+    addDisplacementOptions(cmd, args->displacement);
     cmd->add_flag("--validation", args->validation, "With --as-displayed: Khronos validation layer; exit 1 on any message");
     cmd->parse_complete_callback([cmd = cmd, args = args] {
         args->tessGiven = cmd->count("--tess") > 0;

@@ -162,7 +162,9 @@ int runRender(const RenderArgs& a) {
     }
     if (render::vectorFormatFor(a.output))
         bad("-o", "'" + a.output + "': SVG and PDF figures are of the tessellated domain (--domain, --preset); write the model as .png");
-    const Document doc = a.input.empty() ? builtinTeapot() : loadDocument(a.input);
+    Document doc = a.input.empty() ? builtinTeapot() : loadDocument(a.input);
+    applyDisplacementArgs("render", a.displacement, doc);
+    const std::shared_ptr<const HeightMap> map = loadDocumentHeightMap(doc, a.input);
     // --compare: the model in 2 or 4 panes, each with its own partitioning (and level).
     std::vector<render::ModelPane> panes;
     for (const PaneSpec& p : a.compare.empty() ? std::vector<PaneSpec>{} : parsePaneSpecs("render", "--compare", a.compare))
@@ -185,7 +187,7 @@ int runRender(const RenderArgs& a) {
             std::cerr << "patchwork render: level " << highest << " clamped to the device maximum " << dev.caps().maxTessLevel << "\n";
         render::OffscreenTarget target(dev, w, h, !a.noMsaa);
         render::Renderer renderer(dev, target);
-        renderer.setDocument(doc);
+        renderer.setDocument(doc, map);
         // The PNG and the stats appear together or not at all; what was written is said after.
         OutputBatch out;
         std::ostringstream said;
@@ -255,6 +257,7 @@ void addRenderOptions(CLI::App* cmd, RenderArgs& a) {
     cmd->add_flag("--cull", a.cull, "Cull back-facing patches (conservative normal-cone test)");
     cmd->add_flag("--validation", a.validation, "Enable the Vulkan validation layer (also PATCHWORK_VALIDATION=1)");
     cmd->add_flag("--no-msaa", a.noMsaa, "Single-sample rendering");
+    addDisplacementOptions(cmd, a.displacement);
 }
 
 void registerRenderCommand(CLI::App& app, Action& run) {

@@ -20,7 +20,7 @@ render::CapturedSurface captureDisplayedMesh(const Document& doc, const Displaye
     // Single-sampled: nothing is rasterised, the target only gives the view its size.
     render::OffscreenTarget target(dev, uint32_t(request.viewport[0]), uint32_t(request.viewport[1]), /*msaa=*/false);
     render::Renderer renderer(dev, target);
-    renderer.setDocument(doc);
+    renderer.setDocument(doc, request.map);
     return renderer.captureSurface(render::optionsFromDocument(doc));
 }
 
@@ -29,6 +29,7 @@ std::string describeCapture(const render::CapturedSurface& c, const DisplayedMes
                     deviceName + ": " + std::to_string(c.gpuTriangles) + " triangles from the tessellator";
     if (c.degenerate) s += " (" + std::to_string(c.degenerate) + " collapsed at poles left out)";
     if (c.patchesCulled) s += ", " + std::to_string(c.patchesCulled) + " patches culled as on screen";
+    if (request.map) s += ", displaced by " + request.map->source;
     return s;
 }
 

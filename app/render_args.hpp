@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/document.hpp"
+#include "app/displacement_args.hpp"
 #include "app/domain_args.hpp"
 #include "render/renderer.hpp"
 
@@ -15,6 +16,7 @@ struct RenderArgs {
     std::string input, output = "", size = "1280x720", tess, outer, inner, spacing, adaptive, shading, overlay, view, stats,
                 device, targetPx, maxLevel, domain, preset, compare, isolines;
     bool cull = false, validation = false, noMsaa = false;
+    DisplacementArgs displacement;
 };
 
 // Registers every shared option on `cmd` (not -o: each command says what it writes).

@@ -139,6 +139,7 @@ CommandTable makeCommandTable() {
     addSelectCommands(t);
     addModelCommands(t);
     addViewCommands(t);
+    addDisplacementCommands(t);
     return t;
 }
 

@@ -18,7 +18,7 @@
 namespace pw {
 
 // What the editor window does for commands; a script host keeps the defaults.
-enum class FileDialogKind { Open, SaveAs, Import, ExportGltf, Screenshot, DomainFigure, SweepAnimation };
+enum class FileDialogKind { Open, SaveAs, Import, ExportGltf, Screenshot, DomainFigure, SweepAnimation, HeightMap };
 enum class WindowToggle { Help, Palette, Presentation, DomainView, ShaderPanel, GroundGrid, JoinTool, XRay };
 
 class CommandHost {
@@ -117,6 +117,7 @@ void addFileCommands(CommandTable& t);       // core/commands_file.cpp: new, ope
 void addSelectCommands(CommandTable& t);     // core/commands_select.cpp: select, move, rotate, scale, cursor
 void addModelCommands(CommandTable& t);      // core/commands_model.cpp: add, delete, duplicate, join, split, …
 void addViewCommands(CommandTable& t);       // core/commands_view.cpp: views, frame, overlays, shading, levels
+void addDisplacementCommands(CommandTable& t);  // core/commands_displacement.cpp: height map, scale, bias, mapping
 
 // Argument parsing for commands: a number, an index, an "A:EDGE" pair; EditError naming the word.
 double commandNumber(const std::string& word, const char* what);

@@ -30,6 +30,7 @@ constexpr std::array<std::string_view, 3> kContinuityNames{"C0", "C1", "G1"};
 constexpr std::array<std::string_view, 4> kSpacingNames{"equal", "fractional_odd", "fractional_even", "pow2"};
 constexpr std::array<std::string_view, 4> kAdaptiveNames{"none", "distance", "screen", "orientation"};
 constexpr std::array<std::string_view, 7> kShadingNames{"lit", "normal", "patch", "uv", "zebra", "gauss", "mean"};
+constexpr std::array<std::string_view, 2> kMappingNames{"patch", "planar"};
 
 }  // namespace
 
@@ -43,6 +44,9 @@ std::string_view adaptiveName(AdaptiveMode m) { return enumName(m, kAdaptiveName
 std::optional<AdaptiveMode> parseAdaptive(std::string_view n) { return parseEnum<AdaptiveMode>(n, kAdaptiveNames); }
 std::string_view shadingName(ShadingMode m) { return enumName(m, kShadingNames); }
 std::optional<ShadingMode> parseShading(std::string_view n) { return parseEnum<ShadingMode>(n, kShadingNames); }
+
+std::string_view displacementMappingName(DisplacementMapping m) { return enumName(m, kMappingNames); }
+std::optional<DisplacementMapping> parseDisplacementMapping(std::string_view n) { return parseEnum<DisplacementMapping>(n, kMappingNames); }
 
 int edgeSlot(Edge e, int k, int depth) { return gpu::quadEdgeSlot(static_cast<int>(e), k, depth); }
 

@@ -34,6 +34,33 @@ enum class Continuity : uint8_t { C0, C1, G1 };
 std::string_view continuityName(Continuity c);  // "C0", "C1", "G1"
 std::optional<Continuity> parseContinuity(std::string_view name);
 
+// Displacement along the normal by a height map (DESIGN §11): height = scale * map(uv) + bias, the
+// map read as 0..1 (8- or 16-bit PNG). UVs are the window's parameters (a net's windows tile the map
+// in net order, so neighbours sample the same texels along their shared edge) or a planar projection
+// along the up axis over a rectangle (the model's bounds when none is set), which depends on the
+// position alone and so agrees across every seam.
+enum class DisplacementMapping : uint8_t { Patch, Planar };
+std::string_view displacementMappingName(DisplacementMapping m);  // "patch", "planar"
+std::optional<DisplacementMapping> parseDisplacementMapping(std::string_view name);
+
+struct DisplacementOverride {
+    float scale = 0.0f;
+    float bias = 0.0f;
+    bool operator==(const DisplacementOverride&) const = default;
+};
+
+struct DisplacementSettings {
+    std::string map;  // PNG path as written in the document (relative: to the document's folder); "" = none
+    float scale = 0.0f;
+    float bias = 0.0f;
+    DisplacementMapping mapping = DisplacementMapping::Planar;
+    // Planar: the rectangle (x0, y0, width, height) of the ground plane (x-y for Z-up documents,
+    // x-z for Y-up) the map covers; none = the model's bounding box.
+    std::optional<std::array<double, 4>> rect;
+    bool active() const { return !map.empty(); }
+    bool operator==(const DisplacementSettings&) const = default;
+};
+
 // A bicubic patch: 16 indices into the pool, row-major (i = v row, j = u column).
 struct Patch {
     std::array<uint32_t, 16> idx{};
@@ -43,6 +70,7 @@ struct Patch {
     // Per-patch tessellation override: four outer and two inner levels.
     std::optional<std::array<float, 6>> tessOverride;
     bool hidden = false;  // H: not drawn, not picked (saved with the document)
+    std::optional<DisplacementOverride> displacement;  // own scale and bias (else the document's)
     bool operator==(const Patch&) const = default;
 };
 
@@ -60,6 +88,7 @@ struct TrianglePatch {
     // Per-patch tessellation override: three outer levels (edges 0, 1, 2) and one inner.
     std::optional<std::array<float, 4>> tessOverride;
     bool hidden = false;
+    std::optional<DisplacementOverride> displacement;
     bool operator==(const TrianglePatch&) const = default;
 };
 
@@ -86,6 +115,7 @@ struct Surface {
     bool keepC1 = false;
     std::string name;
     bool hidden = false;
+    std::optional<DisplacementOverride> displacement;  // for every window of the net
     bool operator==(const Surface&) const = default;
 };
 
@@ -174,6 +204,7 @@ struct Document {
     // documents without triangles keep working).
     std::vector<TrianglePatch> triangles;
     std::vector<BezierCurve> curves;  // cubic Bézier curves (isoline domain)
+    DisplacementSettings displacement;
 
     bool operator==(const Document&) const = default;
 };

@@ -155,6 +155,17 @@ PW_FN float adaptiveEdgeLevel(vec3 p0, vec3 p1, vec3 p2, vec3 p3, uint mode, flo
     return maxLevel * clamp(2.0f * length(side) / chord, 0.0f, 1.0f);
 }
 
+// Displacement-adaptive level of one boundary (DESIGN §11): n straight segments miss the displaced
+// edge by about detail / (8 n^2) world units (detail: core/height_map.hpp edgeDetail, times |scale|),
+// which at `pxPerUnit` pixels per world unit stays under `tolPx` pixels from
+// n = sqrt(detail * pxPerUnit / (8 tolPx)); never more segments than the texels the edge crosses.
+// From the edge's canonical points and its stored detail only, so both windows on it agree.
+PW_FN float displacementEdgeLevel(float detail, float texels, float pxPerUnit, float tolPx) {
+    float n = sqrt(max(detail * pxPerUnit, 0.0f) / (8.0f * max(tolPx, 1e-3f)));
+    return min(n, max(texels, 1.0f));
+}
+PW_CONST float kDisplacementTolerancePx = 0.5f;
+
 PW_END_NAMESPACE
 
 #endif  // PW_PATCH_MATH_H

@@ -81,6 +81,17 @@ json cameraJson(const Camera& c) {
                 {"zUp", c.zUp}};
 }
 
+json displacementJson(const DisplacementSettings& d) {
+    json j{{"map", d.map}, {"scale", floatJson(d.scale)}, {"bias", floatJson(d.bias)}, {"mapping", displacementMappingName(d.mapping)}};
+    if (d.rect) j["rect"] = {(*d.rect)[0], (*d.rect)[1], (*d.rect)[2], (*d.rect)[3]};
+    return j;
+}
+
+// A patch's, net's or triangle's own displacement: [scale, bias].
+void putOverride(json& o, const std::optional<DisplacementOverride>& d) {
+    if (d) o["displacement"] = {floatJson(d->scale), floatJson(d->bias)};
+}
+
 // ---------------------------------------------------------------------------------------------
 // Reading
 
@@ -263,6 +274,33 @@ DisplaySettings readDisplay(const Reader& r, const json& v, const std::string& p
     return d;
 }
 
+DisplacementSettings readDisplacement(const Reader& r, const json& v, const std::string& path) {
+    r.object(v, path);
+    DisplacementSettings d;
+    r.optional(v, path, "map", [&](const json& x, const std::string& p) { d.map = r.string(x, p); });
+    r.optional(v, path, "scale", [&](const json& x, const std::string& p) { d.scale = r.floatValue(x, p, -1e9, 1e9); });
+    r.optional(v, path, "bias", [&](const json& x, const std::string& p) { d.bias = r.floatValue(x, p, -1e9, 1e9); });
+    r.optional(v, path, "mapping", [&](const json& x, const std::string& p) {
+        d.mapping = r.named<DisplacementMapping>(x, p, parseDisplacementMapping, "patch, planar");
+    });
+    r.optional(v, path, "rect", [&](const json& x, const std::string& p) {
+        r.fixedArray(x, p, 4);
+        std::array<double, 4> rect{};
+        for (size_t i = 0; i < 4; ++i) rect[i] = i < 2 ? r.coordinate(x[i], at(p, i)) : r.numberInRange(x[i], at(p, i), 0, 1e9, true);
+        d.rect = rect;
+    });
+    return d;
+}
+
+void readOverride(const Reader& r, const json& o, const std::string& path, std::optional<DisplacementOverride>& out) {
+    r.optional(o, path, "displacement", [&](const json& x, const std::string& p) {
+        if (x.is_null()) return;
+        std::array<float, 2> sb{};
+        readFloats(r, x, p, sb, -1e9, 1e9);
+        out = DisplacementOverride{sb[0], sb[1]};
+    });
+}
+
 Camera readCamera(const Reader& r, const json& v, const std::string& path) {
     r.object(v, path);
     Camera c;
@@ -298,6 +336,7 @@ json documentToJson(const Document& doc) {
         json o{{"idx", p.idx}, {"basis", basisName(p.basis)}, {"tension", p.tension}, {"name", p.name}};
         if (p.tessOverride) o["tess"] = floatArray(*p.tessOverride);
         if (p.hidden) o["hidden"] = true;
+        putOverride(o, p.displacement);
         patches.push_back(std::move(o));
     }
     j["patches"] = std::move(patches);
@@ -314,6 +353,7 @@ json documentToJson(const Document& doc) {
                                 {"keepC1", s.keepC1},
                                 {"name", s.name}});
         if (s.hidden) surfaces.back()["hidden"] = true;
+        putOverride(surfaces.back(), s.displacement);
     }
     j["surfaces"] = std::move(surfaces);
 
@@ -337,6 +377,7 @@ json documentToJson(const Document& doc) {
             json o{{"idx", t.idx}, {"name", t.name}};
             if (t.tessOverride) o["tess"] = floatArray(*t.tessOverride);
             if (t.hidden) o["hidden"] = true;
+            putOverride(o, t.displacement);
             triangles.push_back(std::move(o));
         }
         j["triangles"] = std::move(triangles);
@@ -353,6 +394,7 @@ json documentToJson(const Document& doc) {
     j["tess"] = tessJson(doc.tess);
     j["display"] = displayJson(doc.display);
     j["camera"] = cameraJson(doc.camera);
+    if (doc.displacement != DisplacementSettings{}) j["displacement"] = displacementJson(doc.displacement);  // older files stay as they were
     return j;
 }
 
@@ -408,6 +450,7 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
             readFloats(r, x, p, levels, kMinLevel, kMaxLevel);
             patch.tessOverride = levels;
         });
+        readOverride(r, o, path, patch.displacement);
     }
 
     // Surfaces.
@@ -435,6 +478,7 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
             s.idx.resize(n);
             for (size_t k = 0; k < n; ++k) s.idx[k] = static_cast<uint32_t>(r.index(idx[k], at(ip, k), nPoints, "point index"));
             r.optional(o, path, "keepC1", [&](const json& x, const std::string& p) { s.keepC1 = r.boolean(x, p); });
+            readOverride(r, o, path, s.displacement);
             const uint32_t step = netStep(s.basis);
             windows += netWindowCount(s.rows, s.closedV, step) * netWindowCount(s.cols, s.closedU, step);
             if (windows > limits::kMaxPatches)
@@ -483,6 +527,7 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
                 readFloats(r, x, p, levels, kMinLevel, kMaxLevel);
                 t.tessOverride = levels;
             });
+            readOverride(r, o, path, t.displacement);
         }
     }
 
@@ -505,6 +550,7 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
     if (const json* v = r.member(j, "", "tess", false)) doc.tess = readTess(r, *v, "tess");
     if (const json* v = r.member(j, "", "display", false)) doc.display = readDisplay(r, *v, "display");
     if (const json* v = r.member(j, "", "camera", false)) doc.camera = readCamera(r, *v, "camera");
+    if (const json* v = r.member(j, "", "displacement", false)) doc.displacement = readDisplacement(r, *v, "displacement");
     return doc;
 }
 
@@ -514,7 +560,7 @@ std::string serializeDocument(const Document& doc) {
     auto dump = [](const json& v) { return v.dump(-1, ' ', false, json::error_handler_t::replace); };
     std::string out = "{\n";
     bool first = true;
-    for (const char* key : {"format", "version", "name", "points", "patches", "surfaces", "joins", "triangles", "curves", "tess", "display", "camera"}) {
+    for (const char* key : {"format", "version", "name", "points", "patches", "surfaces", "joins", "triangles", "curves", "tess", "display", "camera", "displacement"}) {
         auto it = j.find(key);
         if (it == j.end()) continue;
         if (!first) out += ",\n";

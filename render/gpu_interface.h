@@ -28,19 +28,31 @@ PW_BLOCK(layout(set = 0, binding = 0, std140) uniform Frame, FrameUniforms) {
     vec4 rayY;
     vec4 rayZ;
     vec4 isoline;    // isoline domain (curves, isocurves): x lines, y segments
+    // Displacement (the -DDISPLACE evaluation shaders, DESIGN §11): x scale, y bias (the document's),
+    // z mapping (0 the window's parameters, 1 planar), w 1 for a Z-up document (planar over x-y,
+    // else x-z).
+    vec4 displace;
+    vec4 planar;     // planar mapping: xy the rectangle's corner, zw 1 / its size
 } PW_END_BLOCK(frame)
 
 // binding 1: per-patch tessellation overrides, indexed by patchBase + gl_PrimitiveID.
 struct PatchData {
     vec4 outer PW_INIT(0.0f);  // per edge: the fixed level, or the least level (core/edge_levels.hpp)
     vec4 inner PW_INIT(0.0f);  // xy own inner levels, z > 0.5: they apply; w: the fixed edges' bit mask
+    // Displacement: the map rectangle of the window under the patch mapping (u, v) -> mix(xy, zw);
+    // its own scale and bias (z > 0.5: they apply, else the document's); per edge (u0, v0, u1, v1)
+    // the map's detail (core/height_map.hpp, before |scale|) and the texels the edge crosses.
+    vec4 uvRect PW_INIT(0.0f);
+    vec4 disp PW_INIT(0.0f);
+    vec4 detail PW_INIT(0.0f);
+    vec4 texels PW_INIT(0.0f);
 };
 
 // binding 2: statistics the shaders write (patches culled this frame).
 PW_BLOCK(layout(set = 0, binding = 2, std430) buffer Counters, GpuCounters) {
     uint culled;
-    uint pad0;
-    uint pad1;
+    uint displacedEdges;     // window edges whose level the height map's detail raised (surface pass)
+    uint displacementLevel;  // the largest such level
     uint pad2;
 } PW_END_BLOCK(counters)
 
@@ -57,8 +69,8 @@ PW_BLOCK(layout(push_constant) uniform Draw, DrawPush) {
 PW_END_NAMESPACE
 
 #ifdef __cplusplus
-static_assert(sizeof(pw::gpu::FrameUniforms) == 2 * 64 + 12 * 16);
-static_assert(sizeof(pw::gpu::PatchData) == 32);
+static_assert(sizeof(pw::gpu::FrameUniforms) == 2 * 64 + 14 * 16);
+static_assert(sizeof(pw::gpu::PatchData) == 96);
 static_assert(sizeof(pw::gpu::GpuCounters) == 16);
 static_assert(sizeof(pw::gpu::DrawPush) == 96);
 #endif

@@ -3,6 +3,7 @@
 #include "render/vk_owned.hpp"
 
 #include <chrono>
+#include <functional>
 #include <cstdlib>
 #include <fstream>
 #include <vector>
@@ -46,6 +47,8 @@ struct FamilyOut {
     std::array<VkPipeline, kSpacingVariants * kLevelsVariants>& normals;
 };
 
+using ModuleMaker = std::function<VkShaderModule(const spirv::Blob&)>;
+
 template <class Mod>
 void buildTessFamily(const Targets& t, const SharedStages& sh, uint32_t controlPoints, std::array<VkShaderModule, kLevelsVariants> tesc,
                      const spirv::Blob* const (&tese)[kSpacingVariants][kVaryingsVariants],
@@ -81,6 +84,42 @@ void buildTessFamily(const Targets& t, const SharedStages& sh, uint32_t controlP
     }
 }
 
+// The quad and triangle surface families, plain or displaced (-DDISPLACE evaluation shaders).
+void buildSurfaceFamilies(const Targets& t, SurfacePipelines& out, bool displaced, const ModuleMaker& mod) {
+    Device& dev = t.dev;
+    VkShaderModule vert = mod(spirv::surface_vert);
+    const VkShaderModule frag[kVaryingsVariants] = {mod(spirv::surface_frag), mod(spirv::surface_frag_full)};
+    VkShaderModule lineFrag = mod(spirv::line_frag);
+    VkShaderModule geom = dev.caps().geometryShader ? mod(spirv::normals_geom) : VK_NULL_HANDLE;
+    const SharedStages shared{vert, frag, lineFrag, geom};
+    using spirv::Blob;
+    const Blob* tese[2][kSpacingVariants][kVaryingsVariants] = {
+        {{&spirv::surface_tese_equal, &spirv::surface_tese_equal_full},
+         {&spirv::surface_tese_odd, &spirv::surface_tese_odd_full},
+         {&spirv::surface_tese_even, &spirv::surface_tese_even_full}},
+        {{&spirv::surface_tese_equal_disp, &spirv::surface_tese_equal_full_disp},
+         {&spirv::surface_tese_odd_disp, &spirv::surface_tese_odd_full_disp},
+         {&spirv::surface_tese_even_disp, &spirv::surface_tese_even_full_disp}}};
+    const Blob* ptese[2][kSpacingVariants] = {{&spirv::points_tese_equal, &spirv::points_tese_odd, &spirv::points_tese_even},
+                                              {&spirv::points_tese_equal_disp, &spirv::points_tese_odd_disp, &spirv::points_tese_even_disp}};
+    const int d = displaced ? 1 : 0;
+    buildTessFamily(t, shared, 16, {mod(spirv::surface_tesc_fixed), mod(spirv::surface_tesc_full)}, tese[d], ptese[d], mod,
+                    {out.surface, out.wire, out.normals});
+    // Bézier triangles: the same vertex and fragment shaders, their own control and evaluation shaders.
+    const Blob* ttese[2][kSpacingVariants][kVaryingsVariants] = {
+        {{&spirv::tri_surface_tese_equal, &spirv::tri_surface_tese_equal_full},
+         {&spirv::tri_surface_tese_odd, &spirv::tri_surface_tese_odd_full},
+         {&spirv::tri_surface_tese_even, &spirv::tri_surface_tese_even_full}},
+        {{&spirv::tri_surface_tese_equal_disp, &spirv::tri_surface_tese_equal_full_disp},
+         {&spirv::tri_surface_tese_odd_disp, &spirv::tri_surface_tese_odd_full_disp},
+         {&spirv::tri_surface_tese_even_disp, &spirv::tri_surface_tese_even_full_disp}}};
+    const Blob* tptese[2][kSpacingVariants] = {
+        {&spirv::tri_points_tese_equal, &spirv::tri_points_tese_odd, &spirv::tri_points_tese_even},
+        {&spirv::tri_points_tese_equal_disp, &spirv::tri_points_tese_odd_disp, &spirv::tri_points_tese_even_disp}};
+    buildTessFamily(t, shared, 10, {mod(spirv::tri_surface_tesc_fixed), mod(spirv::tri_surface_tesc_full)}, ttese[d], tptese[d],
+                    mod, {out.triSurface, out.triWire, out.triNormals});
+}
+
 }  // namespace
 
 std::filesystem::path pipelineCacheDir() {
@@ -108,15 +147,16 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
         VK_CHECK(vkCreatePipelineCache(d, &pc, nullptr, &set.cache));
     }
 
-    // Descriptor set layout: 0 frame uniforms, 1 per-patch levels, 2 counters.
+    // Descriptor set layout: 0 frame uniforms, 1 per-patch levels, 2 counters, 3 the height map.
     const VkShaderStageFlags all = VK_SHADER_STAGE_ALL_GRAPHICS;
-    VkDescriptorSetLayoutBinding b[3] = {
+    VkDescriptorSetLayoutBinding b[4] = {
         {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, all, nullptr},
         {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr},
         {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr},
+        {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, all, nullptr},
     };
     VkDescriptorSetLayoutCreateInfo dl{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    dl.bindingCount = 3;
+    dl.bindingCount = 4;
     dl.pBindings = b;
     VK_CHECK(vkCreateDescriptorSetLayout(d, &dl, nullptr, &set.setLayout));
     VkPushConstantRange pr{all, 0, sizeof(gpu::DrawPush)};
@@ -134,27 +174,12 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
     };
     VkShaderModule vert = mod(spirv::surface_vert);
     const VkShaderModule frag[kVaryingsVariants] = {mod(spirv::surface_frag), mod(spirv::surface_frag_full)};
-    const spirv::Blob* tese[kSpacingVariants][kVaryingsVariants] = {
-        {&spirv::surface_tese_equal, &spirv::surface_tese_equal_full},
-        {&spirv::surface_tese_odd, &spirv::surface_tese_odd_full},
-        {&spirv::surface_tese_even, &spirv::surface_tese_even_full}};
-    const spirv::Blob* ptese[kSpacingVariants] = {&spirv::points_tese_equal, &spirv::points_tese_odd, &spirv::points_tese_even};
     VkShaderModule lineFrag = mod(spirv::line_frag);
-    VkShaderModule geom = dev.caps().geometryShader ? mod(spirv::normals_geom) : VK_NULL_HANDLE;
-
+    set.colorFormat = color;
+    set.depthFormat = depth;
+    set.samples = samples;
     const Targets targets{dev, set.layout, set.cache, color, depth, samples};
-    const SharedStages shared{vert, frag, lineFrag, geom};
-    buildTessFamily(targets, shared, 16, {mod(spirv::surface_tesc_fixed), mod(spirv::surface_tesc_full)}, tese, ptese, mod,
-                    {set.surface, set.wire, set.normals});
-    // Bézier triangles: the same vertex and fragment shaders, their own control and evaluation shaders.
-    const spirv::Blob* ttese[kSpacingVariants][kVaryingsVariants] = {
-        {&spirv::tri_surface_tese_equal, &spirv::tri_surface_tese_equal_full},
-        {&spirv::tri_surface_tese_odd, &spirv::tri_surface_tese_odd_full},
-        {&spirv::tri_surface_tese_even, &spirv::tri_surface_tese_even_full}};
-    const spirv::Blob* tptese[kSpacingVariants] = {&spirv::tri_points_tese_equal, &spirv::tri_points_tese_odd,
-                                                   &spirv::tri_points_tese_even};
-    buildTessFamily(targets, shared, 10, {mod(spirv::tri_surface_tesc_fixed), mod(spirv::tri_surface_tesc_full)}, ttese, tptese,
-                    mod, {set.triSurface, set.triWire, set.triNormals});
+    buildSurfaceFamilies(targets, set.tess[0], false, mod);
     // Curves and isocurves: the isoline domain; lines drawn depth-tested over the surface.
     {
         const VkShaderModule ctesc = mod(spirv::curve_tesc), itesc = mod(spirv::isocurve_tesc);
@@ -205,6 +230,15 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
     return set;
 }
 
+void ensureDisplacedPipelines(Device& dev, PipelineSet& set) {
+    if (set.tess[1].surface[0]) return;
+    const auto t0 = std::chrono::steady_clock::now();
+    std::vector<OwnedShaderModule> modules;
+    auto mod = [&](const spirv::Blob& blob) { return modules.emplace_back(dev.device(), makeModule(dev, blob)).get(); };
+    buildSurfaceFamilies({dev, set.layout, set.cache, set.colorFormat, set.depthFormat, set.samples}, set.tess[1], true, mod);
+    set.createMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
 PipelineSet& PipelineSet::operator=(PipelineSet&& o) noexcept {
     if (this != &o) {
         release();
@@ -239,12 +273,14 @@ void PipelineSet::release() {
         if (p) vkDestroyPipeline(d, p, nullptr);
         p = VK_NULL_HANDLE;
     };
-    for (auto& p : set.surface) kill(p);
-    for (auto& p : set.wire) kill(p);
-    for (auto& p : set.normals) kill(p);
-    for (auto& p : set.triSurface) kill(p);
-    for (auto& p : set.triWire) kill(p);
-    for (auto& p : set.triNormals) kill(p);
+    for (SurfacePipelines& f : set.tess) {
+        for (auto& p : f.surface) kill(p);
+        for (auto& p : f.wire) kill(p);
+        for (auto& p : f.normals) kill(p);
+        for (auto& p : f.triSurface) kill(p);
+        for (auto& p : f.triWire) kill(p);
+        for (auto& p : f.triNormals) kill(p);
+    }
     for (auto& p : set.curves) kill(p);
     for (auto& p : set.isocurves) kill(p);
     for (auto& p : set.mesh) kill(p);

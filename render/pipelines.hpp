@@ -35,10 +35,8 @@ constexpr size_t surfaceIndex(int spacing, LevelsVariant l, VaryingsVariant v) {
 // Index of the wireframe or normal-overlay pipeline (lean varyings) for a spacing and levels variant.
 constexpr size_t overlayIndex(int spacing, LevelsVariant l) { return size_t(spacing) * kLevelsVariants + size_t(l); }
 
-// The handles of every pipeline of the renderer (PipelineSet owns them).
-struct PipelineHandles {
-    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;  // 0: frame UBO, 1: patch data, 2: counters
-    VkPipelineLayout layout = VK_NULL_HANDLE;          // + gpu::DrawPush push constants
+// The pipelines of the tessellated surfaces, for one evaluation-shader family (plain or displaced).
+struct SurfacePipelines {
     // shaded tessellated surface, by surfaceIndex
     std::array<VkPipeline, kSpacingVariants * kLevelsVariants * kVaryingsVariants> surface{};
     // by overlayIndex: the surface as polygonMode LINE + depth bias; point-mode evaluation +
@@ -48,6 +46,15 @@ struct PipelineHandles {
     // normal vectors (if supported) by overlayIndex.
     std::array<VkPipeline, kSpacingVariants * kLevelsVariants * kVaryingsVariants> triSurface{};
     std::array<VkPipeline, kSpacingVariants * kLevelsVariants> triWire{}, triNormals{};
+};
+
+// The handles of every pipeline of the renderer (PipelineSet owns them).
+struct PipelineHandles {
+    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;  // 0: frame UBO, 1: patch data, 2: counters, 3: height map
+    VkPipelineLayout layout = VK_NULL_HANDLE;          // + gpu::DrawPush push constants
+    // The tessellated surfaces, plain (tess[0], made up front) and displaced by the height map
+    // (tess[1], made on first use: ensureDisplacedPipelines).
+    std::array<SurfacePipelines, 2> tess{};
     // The isoline domain, by spacing variant: Bézier curves (4 points) and the isocurve overlay of
     // every window (16 points).
     std::array<VkPipeline, kSpacingVariants> curves{}, isocurves{};
@@ -58,6 +65,8 @@ struct PipelineHandles {
     VkPipeline groundLines = VK_NULL_HANDLE; // coloured translucent lines, depth-tested (the editor's ground grid)
     VkPipelineCache cache = VK_NULL_HANDLE;
     std::filesystem::path cacheFile;
+    VkFormat colorFormat = VK_FORMAT_UNDEFINED, depthFormat = VK_FORMAT_UNDEFINED;  // what the pipelines draw into
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     double createMs = 0.0;  // time spent creating all pipelines
 };
 
@@ -82,5 +91,7 @@ private:
 std::filesystem::path pipelineCacheDir();
 
 PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampleCountFlagBits samples);
+// Builds set.tess[1], the displaced surfaces, unless they exist (the first frame with a height map).
+void ensureDisplacedPipelines(Device& dev, PipelineSet& set);
 
 }  // namespace pw::render

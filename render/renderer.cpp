@@ -10,6 +10,7 @@
 #include <glm/matrix.hpp>
 
 #include "render/adaptive_bounds.hpp"
+#include "core/displacement.hpp"
 #include "render/buffers.hpp"
 #include "render/vk_owned.hpp"
 #include "core/camera_math.hpp"
@@ -28,6 +29,8 @@ RenderOptions optionsFromDocument(const Document& doc) {
     o.tess = doc.tess;
     o.display = doc.display;
     o.camera = doc.camera;
+    o.displacementScale = doc.displacement.scale;
+    o.displacementBias = doc.displacement.bias;
     return o;
 }
 
@@ -42,11 +45,12 @@ VkRect2D paneRect(const RenderOptions& opt, VkExtent2D extent) {
 
 namespace {
 
-void writeDescriptors(Device& dev, VkDescriptorSet set, const Buffer& ubo, const Buffer& patches, const Buffer& counters) {
+void writeDescriptors(Device& dev, VkDescriptorSet set, const Buffer& ubo, const Buffer& patches, const Buffer& counters,
+                      const HeightTexture& height) {
     VkDescriptorBufferInfo infos[3] = {{ubo.buffer, 0, VK_WHOLE_SIZE},
                                        {patches.buffer, 0, VK_WHOLE_SIZE},
                                        {counters.buffer, 0, VK_WHOLE_SIZE}};
-    VkWriteDescriptorSet w[3];
+    VkWriteDescriptorSet w[4];
     for (uint32_t i = 0; i < 3; ++i) {
         w[i] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         w[i].dstSet = set;
@@ -55,7 +59,14 @@ void writeDescriptors(Device& dev, VkDescriptorSet set, const Buffer& ubo, const
         w[i].descriptorType = i == 0 ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
         w[i].pBufferInfo = &infos[i];
     }
-    vkUpdateDescriptorSets(dev.device(), 3, w, 0, nullptr);
+    const VkDescriptorImageInfo image{height.sampler, height.image.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    w[3] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    w[3].dstSet = set;
+    w[3].dstBinding = 3;
+    w[3].descriptorCount = 1;
+    w[3].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    w[3].pImageInfo = &image;
+    vkUpdateDescriptorSets(dev.device(), 4, w, 0, nullptr);
 }
 
 }  // namespace
@@ -69,10 +80,12 @@ Renderer::Renderer(Device& dev, RenderTarget& target)
     std::memset(m.counters.mapped, 0, 16);
     m.scene.patchData = uploadStatic(dev, std::vector<gpu::PatchData>(1), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
 
-    VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2}};
+    m.height = uploadHeightTexture(dev, nullptr);
+    VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2},
+                                     {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
     VkDescriptorPoolCreateInfo dp{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     dp.maxSets = 1;
-    dp.poolSizeCount = 2;
+    dp.poolSizeCount = 3;
     dp.pPoolSizes = sizes;
     VK_CHECK(vkCreateDescriptorPool(dev.device(), &dp, nullptr, m.descPool.replace(dev.device())));
     VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
@@ -80,7 +93,7 @@ Renderer::Renderer(Device& dev, RenderTarget& target)
     ai.descriptorSetCount = 1;
     ai.pSetLayouts = &pipes_.setLayout;
     VK_CHECK(vkAllocateDescriptorSets(dev.device(), &ai, &m.set));
-    writeDescriptors(dev, m.set, m.frameUbo, m.scene.patchData, m.counters);
+    writeDescriptors(dev, m.set, m.frameUbo, m.scene.patchData, m.counters, m.height);
 
     m.queries = std::make_unique<FrameQueries>(dev);
     m.cmd = OwnedCommandBuffer(dev.device(), dev.commandPool());
@@ -93,12 +106,23 @@ Renderer::~Renderer() {
     impl_.reset();  // buffers, queries, pool, fence: each frees itself; then the pipelines
 }
 
-void Renderer::setDocument(const Document& doc) {
+void Renderer::setDocument(const Document& doc, std::shared_ptr<const HeightMap> map) {
     vkDeviceWaitIdle(dev_.device());
     Impl& m = *impl_;
-    m.scene = uploadSurfaceScene(dev_, doc);
+    const DisplacementSettings& ds = doc.displacement;
+    if (!ds.active() || (map && map->empty())) map.reset();
+    if (map != m.map) {
+        m.height = uploadHeightTexture(dev_, map.get());
+        m.map = map;
+    }
+    m.displaced = bool(m.map);
+    m.scene = uploadSurfaceScene(dev_, doc, m.map.get());
     m.overlays = uploadOverlayScene(dev_, doc);
-    writeDescriptors(dev_, m.set, m.frameUbo, m.scene.patchData, m.counters);
+    const std::array<double, 4> rect = planarRect(doc);
+    m.displace = {0.0f, 0.0f, ds.mapping == DisplacementMapping::Planar ? 1.0f : 0.0f, doc.camera.zUp ? 1.0f : 0.0f};
+    m.planar = {float(rect[0]), float(rect[1]), float(1.0 / rect[2]), float(1.0 / rect[3])};
+    if (m.displaced) ensureDisplacedPipelines(dev_, pipes_);
+    writeDescriptors(dev_, m.set, m.frameUbo, m.scene.patchData, m.counters, m.height);
     modelSize_ = pw::modelSize(doc);
 }
 
@@ -158,6 +182,8 @@ Renderer::FramePlan Renderer::prepareFrame(const RenderOptions& opt, VkRect2D ar
     fu.sel = {opt.hoveredPoint >= 0 ? uint32_t(opt.hoveredPoint) : gpu::kNoPoint,
               opt.selectedPoint >= 0 ? uint32_t(opt.selectedPoint) : gpu::kNoPoint, m.scene.pointCount, 0u};
     fu.isoline = {ts.isolineLevels[0], ts.isolineLevels[1], 0.0f, 0.0f};
+    fu.displace = {opt.displacementScale, opt.displacementBias, m.displace.z, m.displace.w};
+    fu.planar = m.planar;
     std::memcpy(m.frameUbo.mapped, &fu, sizeof(fu));
     plan.vm = vm;
     plan.variant = spacingVariant(ts.spacing);
@@ -165,7 +191,8 @@ Renderer::FramePlan Renderer::prepareFrame(const RenderOptions& opt, VkRect2D ar
     plan.maxLevel = maxLevel;
     plan.budget = dev_.drawVertexBudget();
     plan.perDraw = patchesPerDraw(maxSegments(ts, m.scene.overrideMax, maxLevel), plan.budget);
-    if (ts.adaptive != AdaptiveMode::None)
+    // (Displaced windows batch by the worst case: the map's detail may raise any edge to the maximum.)
+    if (ts.adaptive != AdaptiveMode::None && !m.displaced)
         plan.levelBounds = adaptiveLevelBounds(m.scene, ts, vm, float(ext.width), float(ext.height), maxLevel);
     return plan;
 }
@@ -220,6 +247,7 @@ FrameStats Renderer::render(const RenderOptions& opt) {
     const uint32_t budget = plan.budget, perDraw = plan.perDraw;
     const std::vector<uint8_t>* bounds = plan.bounds();
     gpu::DrawPush push;
+    const SurfacePipelines& fam = pipes_.tess[m.displaced ? 1 : 0];
 
     // Step 3: the surface (statistics cover this pass only).
     if (opt.plainMesh) {
@@ -229,11 +257,11 @@ FrameStats Renderer::render(const RenderOptions& opt) {
         recordPlainMesh(cmd, m.mesh);
         stats.draws = m.mesh.indexCount ? 1 : 0;
     } else {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.surface[surfaceIndex(variant, levels, varyings)]);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fam.surface[surfaceIndex(variant, levels, varyings)]);
         stats.draws = recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, push, bounds, budget);
         stats.patches = m.scene.windowCount;
         if (m.scene.triangleCount) {  // Bézier triangles after the windows, inside the same statistics
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.triSurface[surfaceIndex(variant, levels, varyings)]);
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fam.triSurface[surfaceIndex(variant, levels, varyings)]);
             stats.draws += recordTriangleDraws(cmd, pipes_.layout, m.scene, perDraw, push);
             stats.patches += m.scene.triangleCount;
         }
@@ -267,24 +295,24 @@ FrameStats Renderer::render(const RenderOptions& opt) {
         ++stats.draws;
     }
     if (ds.showWireframe && !opt.plainMesh) {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.wire[overlayIndex(variant, levels)]);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fam.wire[overlayIndex(variant, levels)]);
         gpu::DrawPush wp;
         wp.drawMode = gpu::kDrawFlatColour;
         wp.color = {0.08f, 0.09f, 0.12f, 1.0f};
         stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, wp, bounds, budget);
         if (m.scene.triangleCount) {
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.triWire[overlayIndex(variant, levels)]);
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fam.triWire[overlayIndex(variant, levels)]);
             stats.draws += recordTriangleDraws(cmd, pipes_.layout, m.scene, perDraw, wp);
         }
     }
-    if (ds.showNormals && !opt.plainMesh && pipes_.normals[overlayIndex(variant, levels)]) {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.normals[overlayIndex(variant, levels)]);
+    if (ds.showNormals && !opt.plainMesh && fam.normals[overlayIndex(variant, levels)]) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fam.normals[overlayIndex(variant, levels)]);
         gpu::DrawPush np;
         np.drawMode = gpu::kDrawFlatColour;  // an overlay: the control shader counts culled patches once, in the surface pass
         np.color = {0.2f, 0.9f, 1.0f, 1.0f};
         stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, np, bounds, budget);
-        if (m.scene.triangleCount && pipes_.triNormals[overlayIndex(variant, levels)]) {
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.triNormals[overlayIndex(variant, levels)]);
+        if (m.scene.triangleCount && fam.triNormals[overlayIndex(variant, levels)]) {
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fam.triNormals[overlayIndex(variant, levels)]);
             stats.draws += recordTriangleDraws(cmd, pipes_.layout, m.scene, perDraw, np);
         }
     }
@@ -351,7 +379,12 @@ FrameStats Renderer::render(const RenderOptions& opt) {
 
     // Step 6: results.
     m.queries->read(stats);
-    if (dev_.caps().storesAndAtomics) stats.patchesCulled = static_cast<const uint32_t*>(m.counters.mapped)[0];
+    if (dev_.caps().storesAndAtomics) {
+        const auto* c = static_cast<const uint32_t*>(m.counters.mapped);
+        stats.patchesCulled = c[0];
+        stats.displacedEdges = c[1];
+        stats.displacementLevel = c[2];
+    }
     return stats;
 }
 

@@ -10,6 +10,7 @@
 
 #include "render/device.hpp"
 #include "core/document.hpp"
+#include "core/height_map.hpp"
 #include "core/mesh_tessellate.hpp"
 #include "render/pipelines.hpp"
 #include "render/render_target.hpp"
@@ -34,6 +35,9 @@ struct RenderOptions {
     // The editor's ground grid (translucent lines in the ground plane, hidden behind the surface):
     // drawn when > 0, with lines this far apart (render/overlays.hpp).
     double groundGridStep = 0.0;
+    // The document's displacement scale and bias (live while a slider is dragged; the map, the
+    // mapping and the windows' own values come with setDocument).
+    float displacementScale = 0.0f, displacementBias = 0.0f;
 };
 
 // The pane rectangle `opt` draws into, clamped to a target of `extent` (the whole target when
@@ -58,7 +62,9 @@ public:
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    void setDocument(const Document& doc);
+    // `map`: the document's height map (DESIGN §11), or none; the surface is displaced when the
+    // document's displacement is active and a map is given.
+    void setDocument(const Document& doc, std::shared_ptr<const HeightMap> map = {});
     void setPlainMesh(const TriangleMesh& mesh);
     // Editor drags: rewrites only the pool entries `changed` of the uploaded document in place (the
     // pool buffer is host-visible and the previous frame has completed). The topology must be the

@@ -8,6 +8,7 @@
 
 #include "core/camera_math.hpp"
 #include "render/buffers.hpp"
+#include "render/height_texture.hpp"
 #include "render/overlays.hpp"
 #include "render/pipelines.hpp"
 #include "render/plain_mesh.hpp"
@@ -34,7 +35,14 @@ struct Renderer::Impl {
     OwnedCommandBuffer cmd;
     OwnedFence fence;
     // Transform-feedback pipelines (windows, then Bézier triangles; by overlayIndex), made on first capture.
-    std::array<OwnedPipeline, kSpacingVariants * kLevelsVariants> captureWindows, captureTriangles;
+    // [0] plain, [1] displaced.
+    std::array<std::array<OwnedPipeline, kSpacingVariants * kLevelsVariants>, 2> captureWindows, captureTriangles;
+    // Displacement (DESIGN §11): the map, its texture (binding 3; 1 x 1 zero without one) and the
+    // frame uniforms' displace and planar vectors, all from the last setDocument.
+    std::shared_ptr<const HeightMap> map;
+    HeightTexture height;
+    bool displaced = false;
+    glm::vec4 displace{0.0f}, planar{0.0f};
 };
 
 // Submits `cmd` to the device's queue and waits for it on `fence` (reset first).

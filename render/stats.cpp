@@ -21,6 +21,7 @@ nlohmann::json statsJson(const FrameStats& s) {
         {"tess_eval_invocations", s.tesInvocations}, {"tess_control_patches", s.tcsPatches}, {"input_primitives", s.inputPrimitives},
         {"pipeline_statistics", s.pipelineStatsValid},
         {"patches", s.patches}, {"patches_culled", s.patchesCulled}, {"draws", s.draws},
+        {"displaced_edges", s.displacedEdges}, {"displacement_level", s.displacementLevel},
         {"gpu_ms", s.gpuMs}, {"wall_ms", s.wallMs}, {"submit_wait_ms", s.submitMs}};
 }
 

@@ -27,6 +27,8 @@ struct FrameStats {
     uint64_t clippingInvocations = 0;   // triangles reaching the clipper = triangles drawn
     uint64_t clippingPrimitives = 0;    // primitives leaving the clipper
     uint32_t patchesCulled = 0;
+    uint32_t displacedEdges = 0;     // window edges whose level the height map's detail raised (adaptive)
+    uint32_t displacementLevel = 0;  // the largest of those levels
     uint32_t patches = 0;
     uint32_t draws = 0;
     uint64_t triangles() const { return clippingInvocations; }

@@ -43,19 +43,26 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
     const VkRect2D area = paneRect(opt, target_.extent());
     const FramePlan plan = prepareFrame(opt, area);
     const size_t slot = overlayIndex(plan.variant, plan.levels);
+    const int disp = m.displaced ? 1 : 0;
+    auto& captureWindows = m.captureWindows[size_t(disp)];
+    auto& captureTriangles = m.captureTriangles[size_t(disp)];
 
-    // Pipelines on first use: vertex, the frame's control shader, the capture evaluation shader.
-    if (!m.captureWindows[slot]) {
-        static const spirv::Blob* const windows[kSpacingVariants] = {&spirv::surface_tese_equal_capture, &spirv::surface_tese_odd_capture,
-                                                                     &spirv::surface_tese_even_capture};
-        static const spirv::Blob* const triangles[kSpacingVariants] = {
-            &spirv::tri_surface_tese_equal_capture, &spirv::tri_surface_tese_odd_capture, &spirv::tri_surface_tese_even_capture};
+    // Pipelines on first use: vertex, the frame's control shader, the capture evaluation shader
+    // (plain, or displaced by the height map).
+    if (!captureWindows[slot]) {
+        static const spirv::Blob* const windows[2][kSpacingVariants] = {
+            {&spirv::surface_tese_equal_capture, &spirv::surface_tese_odd_capture, &spirv::surface_tese_even_capture},
+            {&spirv::surface_tese_equal_capture_disp, &spirv::surface_tese_odd_capture_disp, &spirv::surface_tese_even_capture_disp}};
+        static const spirv::Blob* const triangles[2][kSpacingVariants] = {
+            {&spirv::tri_surface_tese_equal_capture, &spirv::tri_surface_tese_odd_capture, &spirv::tri_surface_tese_even_capture},
+            {&spirv::tri_surface_tese_equal_capture_disp, &spirv::tri_surface_tese_odd_capture_disp,
+             &spirv::tri_surface_tese_even_capture_disp}};
         const bool full = plan.levels == LevelsVariant::Full;
         OwnedShaderModule vert(dev_.device(), makeModule(dev_, spirv::surface_vert));
         OwnedShaderModule tesc(dev_.device(), makeModule(dev_, full ? spirv::surface_tesc_full : spirv::surface_tesc_fixed));
-        OwnedShaderModule tese(dev_.device(), makeModule(dev_, *windows[plan.variant]));
+        OwnedShaderModule tese(dev_.device(), makeModule(dev_, *windows[disp][plan.variant]));
         OwnedShaderModule ttesc(dev_.device(), makeModule(dev_, full ? spirv::tri_surface_tesc_full : spirv::tri_surface_tesc_fixed));
-        OwnedShaderModule ttese(dev_.device(), makeModule(dev_, *triangles[plan.variant]));
+        OwnedShaderModule ttese(dev_.device(), makeModule(dev_, *triangles[disp][plan.variant]));
         PipelineDesc pd;
         pd.tess = true;
         pd.rasterizerDiscard = true;
@@ -66,11 +73,11 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
         // Rendering without attachments: nothing is drawn, so the capture never touches the target
         // (the editor's swapchain image belongs to its frame).
         const VkFormat none = VK_FORMAT_UNDEFINED;
-        m.captureWindows[slot] = OwnedPipeline(dev_.device(), buildPipeline(dev_, pipes_.layout, pipes_.cache, pd, none, none, VK_SAMPLE_COUNT_1_BIT));
+        captureWindows[slot] = OwnedPipeline(dev_.device(), buildPipeline(dev_, pipes_.layout, pipes_.cache, pd, none, none, VK_SAMPLE_COUNT_1_BIT));
         pd.patchControlPoints = 10;
         pd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, ttesc},
                      {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, ttese}};
-        m.captureTriangles[slot] = OwnedPipeline(dev_.device(), buildPipeline(dev_, pipes_.layout, pipes_.cache, pd, none, none, VK_SAMPLE_COUNT_1_BIT));
+        captureTriangles[slot] = OwnedPipeline(dev_.device(), buildPipeline(dev_, pipes_.layout, pipes_.cache, pd, none, none, VK_SAMPLE_COUNT_1_BIT));
     }
 
     // The first try holds the bound from the largest segment count these settings can give (capped:
@@ -112,7 +119,7 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
         xfb.bind(cmd, 0, 1, out.buffer.ptr(), &zero, &capacity);
         gpu::DrawPush push;  // the surface pass's: culled patches are counted
         // Windows, then the Bézier triangles resuming where the windows stopped (the counter).
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m.captureWindows[slot]);
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, captureWindows[slot]);
         xfb.begin(cmd, 0, 0, nullptr, nullptr);
         recordSurfaceDraws(cmd, pipes_.layout, m.scene, plan.perDraw, push, plan.bounds(), plan.budget);
         xfb.end(cmd, 0, 1, counter.buffer.ptr(), &zero);
@@ -127,7 +134,7 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
             vkCmdSetViewport(cmd, 0, 1, &viewport);
             vkCmdSetScissor(cmd, 0, 1, &area);
             vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.layout, 0, 1, &m.set, 0, nullptr);
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, m.captureTriangles[slot]);
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, captureTriangles[slot]);
             xfb.begin(cmd, 0, 1, counter.buffer.ptr(), &zero);
             recordTriangleDraws(cmd, pipes_.layout, m.scene, plan.perDraw, push);
             xfb.end(cmd, 0, 1, counter.buffer.ptr(), &zero);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/displacement.hpp"
 #include "core/edge_levels.hpp"
 #include "core/picking.hpp"
 
@@ -16,7 +17,7 @@ glm::mat4 basisPushMatrix(Basis basis, double tension) {
     return g;
 }
 
-SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc) {
+SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc, const HeightMap* map) {
     SurfaceScene s;
     std::vector<float> pts;
     pts.reserve(doc.points.size() * 3);
@@ -32,6 +33,14 @@ SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc) {
     const std::vector<WindowLevels> levels = resolveEdgeLevels(doc, inst);
     std::vector<gpu::PatchData> pd(levels.size());
     s.overrideLevel.assign(inst.size(), 0.0f);
+    const std::vector<WindowDisplacement> disp = windowDisplacements(doc, inst, map);
+    for (size_t w = 0; w < pd.size() && w < disp.size(); ++w) {
+        const WindowDisplacement& d = disp[w];
+        pd[w].uvRect = {d.uvRect[0], d.uvRect[1], d.uvRect[2], d.uvRect[3]};
+        pd[w].disp = {d.own ? d.own->scale : 0.0f, d.own ? d.own->bias : 0.0f, d.own ? 1.0f : 0.0f, 0.0f};
+        pd[w].detail = {d.detail[0], d.detail[1], d.detail[2], d.detail[3]};
+        pd[w].texels = {d.texels[0], d.texels[1], d.texels[2], d.texels[3]};
+    }
     for (size_t w = 0; w < levels.size(); ++w) {
         const WindowLevels& l = levels[w];
         pd[w].outer = {l.outer[0], l.outer[1], l.outer[2], l.outer[3]};

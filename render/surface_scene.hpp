@@ -8,6 +8,7 @@
 
 #include "render/buffers.hpp"
 #include "core/document.hpp"
+#include "core/height_map.hpp"
 #include "render/gpu_interface.h"
 #include "render/tess_levels.hpp"
 
@@ -44,7 +45,8 @@ struct SurfaceScene {
     uint32_t shownPointCount = 0;
 };
 
-SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc);
+// `map`: the height map whose detail per edge goes into the patch data (displacement-adaptive levels).
+SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc, const HeightMap* map = nullptr);
 
 // Binds pool + index buffers and issues the draws, at most `perDraw` windows per vkCmdDrawIndexed,
 // or, with `levels` (per-window segment bounds) and a non-zero `vertexBudget`, as many windows as

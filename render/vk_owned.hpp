@@ -58,6 +58,7 @@ using OwnedQueryPool = Owned<VkQueryPool, vkDestroyQueryPool>;
 using OwnedFence = Owned<VkFence, vkDestroyFence>;
 using OwnedSemaphore = Owned<VkSemaphore, vkDestroySemaphore>;
 using OwnedImageView = Owned<VkImageView, vkDestroyImageView>;
+using OwnedSampler = Owned<VkSampler, vkDestroySampler>;
 using OwnedFramebuffer = Owned<VkFramebuffer, vkDestroyFramebuffer>;
 using OwnedRenderPass = Owned<VkRenderPass, vkDestroyRenderPass>;
 using OwnedSwapchain = Owned<VkSwapchainKHR, vkDestroySwapchainKHR>;

@@ -28,32 +28,27 @@ void edgePoints(int e, out vec3 p[4]) {
     for (int k = 0; k < 4; ++k) p[k] = cp(edgeSlot(e, rev ? 3 - k : k));
 }
 
-#ifdef ADAPTIVE_AND_CULLING
-float adaptiveLevel(int e) {
-    vec3 p[4];
-    edgePoints(e, p);
-    return adaptiveEdgeLevel(p);
-}
-#endif
 
 #ifdef ADAPTIVE_AND_CULLING
-bool offscreen() {
-    bvec4 allOut = bvec4(true);
-    bool allNear = true, allFar = true;
-    for (int i = 0; i < 16; ++i) {
-        vec4 c = frame.viewProj * vec4(cp(i), 1.0);
-        allOut = bvec4(allOut.x && c.x < -c.w, allOut.y && c.x > c.w, allOut.z && c.y < -c.w, allOut.w && c.y > c.w);
-        allNear = allNear && c.z < 0.0;
-        allFar = allFar && c.z > c.w;
+// Off screen when every control point is outside one frustum plane by more than `margin` (the
+// largest displacement: the displaced surface stays within it of the convex hull).
+bool offscreen(float margin) {
+    for (int k = 0; k < 6; ++k) {
+        vec4 plane = frustumPlane(k);
+        float pad = margin * length(plane.xyz);
+        bool outside = true;
+        for (int i = 0; i < 16; ++i) outside = outside && dot(plane, vec4(cp(i), 1.0)) + pad < 0.0;
+        if (outside) return true;
     }
-    return any(allOut) || allNear || allFar;
+    return false;
 }
 
 // Conservative normal cone: du x dv is a non-negative combination of the products of the u- and
 // v-differences of the net (Bézier and B-spline weights are non-negative). If every such product
 // faces away from the eye at every control point (hence over the convex hull), the patch is back-facing.
-bool backfacing() {
+bool backfacing(float margin) {
     if (draw.basisKind == kBasisCatmullRom) return false;  // Catmull-Rom weights change sign
+    if (margin > 0.0) return false;  // a displaced surface may face the eye where the patch does not
     vec3 du[12], dv[12];
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 3; ++j) {
@@ -100,7 +95,11 @@ void main() {
     }
 #ifdef ADAPTIVE_AND_CULLING
     else {
-        for (int e = 0; e < 4; ++e) o[e] = clamp(adaptiveLevel(e), 1.0, frame.inner.z);
+        for (int e = 0; e < 4; ++e) {
+            vec3 p[4];
+            edgePoints(e, p);
+            o[e] = raiseForDisplacement(clamp(adaptiveEdgeLevel(p), 1.0, frame.inner.z), p, pd.detail[e], pd.texels[e], pd);
+        }
     }
 #endif
     uint fixedMask = uint(pd.inner.w + 0.5);
@@ -121,8 +120,9 @@ void main() {
     gl_TessLevelInner[1] = roundLevel(in1);
 
 #ifdef ADAPTIVE_AND_CULLING
-    bool cull = ((frame.modes.z & kCullOffscreen) != 0u && offscreen()) ||
-                ((frame.modes.z & kCullBackFaces) != 0u && backfacing());
+    float margin = displacementMargin(pd);
+    bool cull = ((frame.modes.z & kCullOffscreen) != 0u && offscreen(margin)) ||
+                ((frame.modes.z & kCullBackFaces) != 0u && backfacing(margin));
     if (cull) {
         for (int e = 0; e < 4; ++e) gl_TessLevelOuter[e] = 0.0;
         gl_TessLevelInner[0] = 0.0;

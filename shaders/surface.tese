@@ -3,11 +3,15 @@
 // Evaluates a 4x4 window at gl_TessCoord for any basis (matrix M per draw), with analytic normals
 // (degenerate-edge fallback like core/patch_eval.cpp normalAt), Bézier boundary points from the
 // boundary's four points in canonical order (bit-identical seams), and curvatures.
+// With -DDISPLACE the point moves along the normal by the height map (displacement.glsl).
 // Built once per partitioning: -DSPACING=equal_spacing|fractional_odd_spacing|fractional_even_spacing,
 // with -DPOINT_MODE for the normal-vector overlay, and with -DFULL_VARYINGS for the shading modes
 // that need UV, patch id or curvatures (lit, normal, zebra and wireframe pass position and normal
 // only: every varying costs per-vertex work in lavapipe's draw module and attribute bandwidth on GPUs).
 #include "common.glsl"
+#ifdef DISPLACE
+#include "displacement.glsl"
+#endif
 
 #ifdef POINT_MODE
 layout(quads, SPACING, ccw, point_mode) in;
@@ -126,6 +130,9 @@ void main() {
         p = boundaryPoint(e, onV ? u : v);
     }
     vec3 n = normalAt(u, v, d);
+#ifdef DISPLACE
+    displaceSurface(p, n, d.du, d.dv, vec2(u, v), patches[draw.patchBase + uint(gl_PrimitiveID)]);
+#endif
 
 #if defined(POINT_MODE) || defined(CAPTURE)
     outPos = p;

@@ -9,6 +9,45 @@ float adaptiveEdgeLevel(vec3 p[4]) {
     return adaptiveEdgeLevel(p[0], p[1], p[2], p[3], frame.modes.y, frame.inner.z, frame.eye.xyz, frame.dist.x,
                              frame.dist.y, frame.viewProj, frame.viewport.xy, frame.inner.w);
 }
+
+// The window's displacement scale and bias (its own, or the document's).
+vec2 displacementScaleBias(PatchData pd) { return pd.disp.z > 0.5 ? pd.disp.xy : frame.displace.xy; }
+
+// How far the displaced surface may leave the patch: the largest |height| (0 without a map, whose
+// texture then reads 0 and whose windows carry no detail).
+float displacementMargin(PatchData pd) {
+    vec2 sb = displacementScaleBias(pd);
+    return max(abs(sb.y), abs(sb.x + sb.y));
+}
+
+// Edge level `level` raised for the height map's detail along the edge (core/patch_math.h
+// displacementEdgeLevel) at this distance: pixels per world unit across the view at the canonical
+// chord's midpoint, from the points alone, so both windows on the edge agree. The surface pass
+// counts the edges raised and the largest such level (the stats).
+float raiseForDisplacement(float level, vec3 p[4], float detail, float texels, PatchData pd) {
+    if (detail <= 0.0) return level;
+    mat4 m = frame.viewProj;
+    vec3 mid = 0.5 * (p[0] + p[3]);
+    float w = m[0][3] * mid.x + m[1][3] * mid.y + m[2][3] * mid.z + m[3][3];
+    if (w <= 1e-6) return level;
+    float pxPerUnit = 0.5 * frame.viewport.y * length(vec3(m[0][1], m[1][1], m[2][1])) / w;
+    float d = min(displacementEdgeLevel(detail * abs(displacementScaleBias(pd).x), texels, pxPerUnit, kDisplacementTolerancePx),
+                  frame.inner.z);
+    if (d > level && draw.drawMode == kDrawShaded) {
+        atomicAdd(counters.displacedEdges, 1u);
+        atomicMax(counters.displacementLevel, uint(ceil(d)));
+    }
+    return max(level, d);
+}
+
+// Plane k (0..5: left, right, top, bottom, near, far) of the view frustum in world space: a point
+// p is inside when dot(plane, vec4(p, 1)) >= 0.
+vec4 frustumPlane(int k) {
+    mat4 m = frame.viewProj;
+    vec4 rx = vec4(m[0][0], m[1][0], m[2][0], m[3][0]), ry = vec4(m[0][1], m[1][1], m[2][1], m[3][1]);
+    vec4 rz = vec4(m[0][2], m[1][2], m[2][2], m[3][2]), rw = vec4(m[0][3], m[1][3], m[2][3], m[3][3]);
+    return k == 0 ? rw + rx : k == 1 ? rw - rx : k == 2 ? rw + ry : k == 3 ? rw - ry : k == 4 ? rz : rw - rz;
+}
 #endif
 
 // DESIGN §3 rounding under this frame's partitioning.

@@ -18,28 +18,29 @@ layout(location = 2) patch out uint edgeFlipPatch;
 vec3 cp(int s) { return gl_in[s].gl_Position.xyz; }
 
 #ifdef ADAPTIVE_AND_CULLING
-float adaptiveLevel(int e) {
+// Edge e's level: adaptive, raised for the height map's detail along it (tess_levels.glsl).
+float adaptiveLevel(int e, PatchData pd) {
     vec3 p[4];
     bool rev = reversedEdge(triEdgeSlot(e, 0), triEdgeSlot(e, 1), triEdgeSlot(e, 2), triEdgeSlot(e, 3));
     for (int k = 0; k < 4; ++k) p[k] = cp(triEdgeSlot(e, rev ? 3 - k : k));
-    return adaptiveEdgeLevel(p);
+    return raiseForDisplacement(clamp(adaptiveEdgeLevel(p), 1.0, frame.inner.z), p, pd.detail[e], pd.texels[e], pd);
 }
 
-bool offscreen() {
-    bvec4 allOut = bvec4(true);
-    bool allNear = true, allFar = true;
-    for (int i = 0; i < 10; ++i) {
-        vec4 c = frame.viewProj * vec4(cp(i), 1.0);
-        allOut = bvec4(allOut.x && c.x < -c.w, allOut.y && c.x > c.w, allOut.z && c.y < -c.w, allOut.w && c.y > c.w);
-        allNear = allNear && c.z < 0.0;
-        allFar = allFar && c.z > c.w;
+bool offscreen(float margin) {
+    for (int k = 0; k < 6; ++k) {
+        vec4 plane = frustumPlane(k);
+        float pad = margin * length(plane.xyz);
+        bool outside = true;
+        for (int i = 0; i < 10; ++i) outside = outside && dot(plane, vec4(cp(i), 1.0)) + pad < 0.0;
+        if (outside) return true;
     }
-    return any(allOut) || allNear || allFar;
+    return false;
 }
 
 // Conservative normal cone: du x dv is a non-negative combination of the products of the net's
 // u-differences b(a+1,b,c) - b(a,b,c+1) and v-differences b(a,b+1,c) - b(a,b,c+1) (a+b+c = 2).
-bool backfacing() {
+bool backfacing(float margin) {
+    if (margin > 0.0) return false;  // a displaced surface may face the eye where the patch does not
     // Slots of (a+1,b,c), (a,b+1,c), (a,b,c+1) for the six (a,b,c) with a+b+c = 2.
     const int su[6] = int[6](0, 1, 2, 3, 4, 5);
     const int sv[6] = int[6](1, 3, 4, 6, 7, 8);
@@ -85,7 +86,7 @@ void main() {
     }
 #ifdef ADAPTIVE_AND_CULLING
     else {
-        for (int e = 0; e < 3; ++e) o[e] = clamp(adaptiveLevel(e), 1.0, frame.inner.z);
+        for (int e = 0; e < 3; ++e) o[e] = adaptiveLevel(e, pd);
     }
 #endif
     uint fixedMask = uint(pd.inner.w + 0.5);
@@ -101,8 +102,9 @@ void main() {
     gl_TessLevelInner[1] = 0.0;
 
 #ifdef ADAPTIVE_AND_CULLING
-    bool cull = ((frame.modes.z & kCullOffscreen) != 0u && offscreen()) ||
-                ((frame.modes.z & kCullBackFaces) != 0u && backfacing());
+    float margin = displacementMargin(pd);
+    bool cull = ((frame.modes.z & kCullOffscreen) != 0u && offscreen(margin)) ||
+                ((frame.modes.z & kCullBackFaces) != 0u && backfacing(margin));
     if (cull) {
         for (int e = 0; e < 3; ++e) gl_TessLevelOuter[e] = 0.0;
         gl_TessLevelInner[0] = 0.0;

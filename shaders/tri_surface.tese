@@ -8,6 +8,9 @@
 // lean (normal), -DPOINT_MODE (the normal-vector overlay) or -DFULL_VARYINGS (UV = (u, v), patch id, Gaussian and mean curvature from the
 // second derivatives when a curvature shading is on).
 #include "common.glsl"
+#ifdef DISPLACE
+#include "displacement.glsl"  // -DDISPLACE: moved along the normal by the height map
+#endif
 
 #ifdef POINT_MODE
 layout(triangles, SPACING, ccw, point_mode) in;  // the normal-vector overlay
@@ -94,6 +97,9 @@ void main() {
         len2 = dot(n, n);
     }
     n = len2 > 0.0 ? n * inversesqrt(len2) : vec3(0.0, 0.0, 1.0);
+#ifdef DISPLACE
+    displaceSurface(p, n, du, dv, vec2(u, v), patches[draw.patchBase + uint(gl_PrimitiveID)]);
+#endif
 
 #if defined(POINT_MODE) || defined(CAPTURE)
     outPos = p;

@@ -41,6 +41,7 @@ void Dialogs::openFileDialog(FileDialogKind kind, const std::string& documentNam
             fileMode_ = FileDialogMode::DomainFigure;
             std::snprintf(fileName_, sizeof fileName_, "domain.svg");
             break;
+        case FileDialogKind::HeightMap: fileMode_ = FileDialogMode::HeightMap; break;
         case FileDialogKind::SweepAnimation:
             fileMode_ = FileDialogMode::SweepAnimation;
             std::snprintf(fileName_, sizeof fileName_, "sweep.gif");
@@ -51,7 +52,7 @@ void Dialogs::openFileDialog(FileDialogKind kind, const std::string& documentNam
 void Dialogs::drawFileBrowser(PanelContext& ctx) {
     if (fileMode_ == FileDialogMode::None) return;
     const char* titles[] = {"", "Open", "Save As", "Import", "Export (.glb, .gltf, .obj, .step)", "Save Screenshot",
-                            "Save Domain Figure (.svg, .pdf, .png)", "Save Sweep Animation (.gif, .mp4, .webm)"};
+                            "Save Domain Figure (.svg, .pdf, .png)", "Save Sweep Animation (.gif, .mp4, .webm)", "Load Height Map (.png)"};
     const char* title = titles[int(fileMode_)];
     ImGui::OpenPopup("File browser");
     const ImGuiIO& io = ImGui::GetIO();
@@ -133,6 +134,7 @@ void Dialogs::drawFileBrowser(PanelContext& ctx) {
         else if (m == FileDialogMode::Screenshot) ctx.runCommand({"screenshot", p.string()});
         else if (m == FileDialogMode::DomainFigure) ctx.runCommand({"domain-figure", p.string()});
         else if (m == FileDialogMode::SweepAnimation) ctx.runCommand({"sweep-animation", p.string()});
+        else if (m == FileDialogMode::HeightMap) ctx.runCommand({"displacement", p.string()});
         else if (m == FileDialogMode::SaveAs) {
             ctx.runCommand({"save", p.string()});
             // Save from the unsaved-changes prompt of an untitled document: go on with New / Open / Quit.

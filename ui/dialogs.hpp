@@ -13,7 +13,7 @@
 
 namespace pw::ui {
 
-enum class FileDialogMode { None, Open, SaveAs, Import, ExportGltf, Screenshot, DomainFigure, SweepAnimation };
+enum class FileDialogMode { None, Open, SaveAs, Import, ExportGltf, Screenshot, DomainFigure, SweepAnimation, HeightMap };
 
 class Dialogs {
 public:

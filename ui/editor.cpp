@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <fstream>
 
+#include "core/displacement.hpp"
 #include "core/camera_math.hpp"
 #include "core/document_io.hpp"
 #include "core/errors.hpp"
@@ -95,14 +96,30 @@ void Editor::documentReplaced() {
     window_.setTitle("Patchwork — " + session_.title());
 }
 
+std::shared_ptr<const HeightMap> Editor::documentHeightMap() {
+    const std::string file = doc_.displacement.active() ? resolveMapPath(doc_.displacement, session_.path()).string() : "";
+    if (file != heightMapFile_) {
+        heightMapFile_ = file;
+        heightMap_.reset();
+        if (!file.empty()) {
+            try {
+                heightMap_ = std::make_shared<const HeightMap>(loadHeightMap(file));
+            } catch (const std::exception& e) {
+                status(std::string("The height map was not loaded; the surface is shown undisplaced: ") + e.what());
+            }
+        }
+    }
+    return heightMap_;
+}
+
 void Editor::documentChanged(bool topology) {
     // Hidden items are neither drawn nor picked: the renderer gets the shown document (same pool).
     if (anyHidden(doc_)) {
         const Document shown = visibleDocument(doc_);
-        renderer_->setDocument(shown);
+        renderer_->setDocument(shown, documentHeightMap());
         if (topology) usedMask_ = usedPointMask(shown);
     } else {
-        renderer_->setDocument(doc_);
+        renderer_->setDocument(doc_, documentHeightMap());
         if (topology) usedMask_ = usedPointMask(doc_);
     }
     clampSelection(sel_, doc_);

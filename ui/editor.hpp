@@ -171,6 +171,11 @@ private:
     uint64_t seenVersion_ = 0, seenTopology_ = 0, seenSerial_ = 0;  // the session as last drawn
     uint64_t docVersion_ = 0;  // bumped by every edit and settings change (caches of the document)
     std::vector<bool> usedMask_;
+    // The document's height map (displacement), loaded when the file it names changes; a map that
+    // cannot be read leaves the surface undisplaced and says why once.
+    std::shared_ptr<const HeightMap> heightMap_;
+    std::string heightMapFile_;
+    std::shared_ptr<const HeightMap> documentHeightMap();
 
     // The viewport.
     Interaction mode_ = Interaction::None;

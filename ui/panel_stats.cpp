@@ -28,6 +28,10 @@ void drawStatsPanel(const FrameReport& report) {
     tip("Tessellation evaluation shader invocations");
     ImGui::Text("Patches     %u (culled %u)", stats.patches, stats.patchesCulled);
     tip("Patches drawn and patches culled by the control shader");
+    if (stats.displacedEdges) {
+        ImGui::Text("Displaced   %u edges raised (to %u)", stats.displacedEdges, stats.displacementLevel);
+        tip("Adaptive levels: window edges whose level the height map's detail along them raised, and the highest such level");
+    }
     ImGui::Text("Draws       %u", stats.draws);
     tip("vkCmdDraw calls this frame");
 }

@@ -41,6 +41,7 @@ void SidePanels::drawRight(PanelContext& ctx, Teaching& teaching) {
     ImGui::PushItemWidth(-(ImGui::CalcTextSize("Normal length").x + 2.0f * ImGui::GetStyle().ItemInnerSpacing.x));
     drawTessellationPanel(ctx);
     drawDisplayPanel(ctx);
+    drawDisplacementPanel(ctx);
     drawStatsPanel(ctx.frameReport());
     continuity_.draw(ctx);
     teaching.drawControls(ctx);

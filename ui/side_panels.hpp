@@ -21,6 +21,7 @@ class Teaching;
 void drawOutliner(PanelContext& ctx);
 void drawTessellationPanel(PanelContext& ctx);
 void drawDisplayPanel(PanelContext& ctx);
+void drawDisplacementPanel(PanelContext& ctx);  // ui/panel_displacement.cpp
 void drawStatsPanel(const FrameReport& report);
 
 class InspectorPanel {  // panel_inspector.cpp: the selected point, patch or triangle

@@ -1,0 +1,168 @@
+// Displacement on the CPU side (DESIGN §11): height maps read from 8- and 16-bit PNGs and sampled
+// like the GPU, the document's displacement settings in files and commands, the per-window data the
+// shaders get (map rectangles, shared-edge detail), and the terrain shipped in data/.
+#include <gtest/gtest.h>
+
+#include <stb/stb_image_write.h>
+
+#include <cmath>
+#include <fstream>
+#include <cstdlib>
+
+#include "core/command_table.hpp"
+#include "core/displacement.hpp"
+#include "core/document_io.hpp"
+#include "core/edit_session.hpp"
+#include "core/errors.hpp"
+#include "core/patchwork_format.hpp"
+#include "core/terrain.hpp"
+#include "png16.hpp"
+#include "support.hpp"
+
+using namespace pw;
+using namespace pw::test;
+
+namespace {
+
+std::filesystem::path writeRamp8(const std::filesystem::path& dir, int w = 256, int h = 4) {
+    std::vector<uint8_t> px(size_t(w) * h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) px[size_t(y) * w + x] = uint8_t(x * 255 / (w - 1));
+    const auto file = dir / "ramp8.png";
+    EXPECT_NE(stbi_write_png(file.c_str(), w, h, 1, px.data(), w), 0);
+    return file;
+}
+
+}  // namespace
+
+TEST(HeightMap, Reads8BitPngsAsSixteenBitsAndSamplesLikeALinearSampler) {
+    const auto dir = freshTempDir("hm8");
+    const HeightMap m = loadHeightMap(writeRamp8(dir));
+    ASSERT_EQ(m.width, 256u);
+    ASSERT_EQ(m.height, 4u);
+    EXPECT_EQ(m.bits, 8);
+    EXPECT_EQ(m.texels[0], 0);
+    EXPECT_EQ(m.texels[255], 65535);  // 255 * 257
+    EXPECT_EQ(m.texels[128], 128 * 257);
+    // Texel centres read back exactly; halfway between two centres the mean; clamped outside.
+    EXPECT_DOUBLE_EQ(m.sample(10.5 / 256, 0.5), 10.0 / 255);
+    EXPECT_DOUBLE_EQ(m.sample(11.0 / 256, 0.5), 10.5 / 255);
+    EXPECT_DOUBLE_EQ(m.sample(-3.0, 0.5), 0.0);
+    EXPECT_DOUBLE_EQ(m.sample(0.1 / 256, 0.5), 0.0);
+    EXPECT_DOUBLE_EQ(m.sample(7.0, 0.5), 1.0);
+}
+
+TEST(HeightMap, Reads16BitPngsExactly) {
+    const auto dir = freshTempDir("hm16");
+    std::vector<uint16_t> v(3 * 2);
+    for (size_t i = 0; i < v.size(); ++i) v[i] = uint16_t(i * 12345 + 7);
+    writeGreyPng16(dir / "m.png", 3, 2, v);
+    const HeightMap m = loadHeightMap(dir / "m.png");
+    EXPECT_EQ(m.bits, 16);
+    ASSERT_EQ(m.width, 3u);
+    ASSERT_EQ(m.height, 2u);
+    EXPECT_EQ(m.texels, v);
+    EXPECT_DOUBLE_EQ(m.texel(2, 1), v[5] / 65535.0);
+}
+
+TEST(HeightMap, BadFilesAreRefusedNamingThem) {
+    const auto dir = freshTempDir("hmbad");
+    std::ofstream(dir / "x.png") << "not a png at all";
+    for (const auto& f : {dir / "x.png", dir / "missing.png"}) {
+        try {
+            (void)loadHeightMap(f);
+            ADD_FAILURE() << f;
+        } catch (const InputError& e) {
+            EXPECT_EQ(e.file(), f.string());
+        }
+    }
+    std::string truncated = readBytes(writeRamp8(dir));
+    truncated.resize(60);
+    std::ofstream(dir / "cut.png", std::ios::binary) << truncated;
+    EXPECT_THROW((void)loadHeightMap(dir / "cut.png"), InputError);
+}
+
+TEST(DisplacementDocument, SettingsAndOwnValuesRoundTripAndBadFieldsAreNamed) {
+    Document doc = makeTerrainDocument({4, 10.0, 2.0f, "maps/t.png"});
+    doc.surfaces[0].displacement = DisplacementOverride{0.5f, -0.25f};
+    doc.displacement.bias = 0.125f;
+    const Document back = parseDocument(serializeDocument(doc), "t.patchwork");
+    EXPECT_EQ(back, doc);
+    // Documents without displacement are written as before (no "displacement" field).
+    EXPECT_EQ(serializeDocument(Document{}).find("displacement"), std::string::npos);
+    std::string text = serializeDocument(doc);
+    text.replace(text.find("\"planar\""), 8, "\"sphere\"");
+    try {
+        (void)parseDocument(text, "t.patchwork");
+        ADD_FAILURE();
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.field(), "displacement.mapping");
+        EXPECT_NE(e.reason().find("planar"), std::string::npos);
+    }
+}
+
+TEST(DisplacementWindows, NetWindowsTileTheMapAndSharedEdgesGetOneDetail) {
+    const auto dir = freshTempDir("hmwin");
+    Document doc = makeTerrainDocument({3, 6.0, 1.0f, "t.png"});
+    const HeightMap map = makeTerrainHeightMap(64, 3);
+    for (DisplacementMapping mapping : {DisplacementMapping::Planar, DisplacementMapping::Patch}) {
+        doc.displacement.mapping = mapping;
+        const std::vector<PatchInstance> w = expandPatches(doc);
+        ASSERT_EQ(w.size(), 9u);
+        const std::vector<WindowDisplacement> d = windowDisplacements(doc, w, &map);
+        ASSERT_EQ(d.size(), 9u);
+        for (size_t i = 0; i < w.size(); ++i) {
+            EXPECT_FLOAT_EQ(d[i].uvRect[0], float(w[i].windowCol / 3.0));
+            EXPECT_FLOAT_EQ(d[i].uvRect[3], float((w[i].windowRow + 1) / 3.0));
+            for (int e = 0; e < 4; ++e) EXPECT_GT(d[i].detail[size_t(e)], 0.0f) << i << " " << e;
+        }
+        // Window (0,0)'s u1 edge is window (0,1)'s u0 edge; (0,0)'s v1 is (1,0)'s v0.
+        EXPECT_EQ(d[0].detail[2], d[1].detail[0]);
+        EXPECT_EQ(d[0].texels[2], d[1].texels[0]);
+        EXPECT_EQ(d[0].detail[3], d[3].detail[1]);
+        // Across the 64-texel map, a third of it per window: about 21 texels per edge.
+        EXPECT_NEAR(d[4].texels[0], 64.0 / 3.0, 0.5);
+    }
+    // A flat map has no detail; no map, none either.
+    const HeightMap flat = heightMapFromValues(8, 8, std::vector<double>(64, 0.5));
+    for (const WindowDisplacement& wd : windowDisplacements(doc, expandPatches(doc), &flat)) EXPECT_EQ(wd.detail, (std::array<float, 4>{}));
+    for (const WindowDisplacement& wd : windowDisplacements(doc, expandPatches(doc), nullptr)) EXPECT_EQ(wd.texels, (std::array<float, 4>{}));
+}
+
+TEST(DisplacementCommands, MapScaleBiasMappingAndOwnValuesAreUndoableSteps) {
+    const auto dir = freshTempDir("hmcmd");
+    const auto ramp = writeRamp8(dir);
+    EditSession s;
+    runEditScript(s, "add-patch");
+    EXPECT_THROW(runEditScript(s, "displacement-scale 2"), std::exception);  // no map yet
+    EXPECT_THROW(runEditScript(s, "displacement " + (dir / "none.png").string()), std::exception);
+    EXPECT_FALSE(s.doc.displacement.active());
+    runEditScript(s, "displacement " + ramp.string() + "; displacement-scale 0.5; displacement-bias -0.25; displacement-mapping patch");
+    EXPECT_EQ(s.doc.displacement.map, ramp.string());  // an unsaved document names the map absolutely
+    EXPECT_EQ(s.doc.displacement.scale, 0.5f);
+    EXPECT_EQ(s.doc.displacement.bias, -0.25f);
+    EXPECT_EQ(s.doc.displacement.mapping, DisplacementMapping::Patch);
+    runEditScript(s, "select patch 0; displacement-own 2 1");
+    ASSERT_TRUE(s.doc.patches[0].displacement.has_value());
+    EXPECT_EQ(s.doc.patches[0].displacement->scale, 2.0f);
+    runEditScript(s, "undo; undo");
+    EXPECT_FALSE(s.doc.patches[0].displacement.has_value());
+    EXPECT_EQ(s.doc.displacement.mapping, DisplacementMapping::Planar);
+    runEditScript(s, "displacement off");
+    EXPECT_FALSE(s.doc.displacement.active());
+}
+
+TEST(Terrain, DataFolderHoldsTheGeneratedTerrainAndItsMap) {
+    const HeightMap generated = makeTerrainHeightMap();
+    const Document doc = makeTerrainDocument();
+    if (std::getenv("PATCHWORK_REGENERATE_DATA")) {  // rewrites data/terrain.* from the generators
+        writeGreyPng16(dataDir() / "terrain.png", generated.width, generated.height, generated.texels);
+        std::ofstream(dataDir() / "terrain.patchwork") << serializeDocument(doc);
+    }
+    const HeightMap shipped = loadHeightMap(dataDir() / "terrain.png");
+    EXPECT_EQ(shipped.bits, 16);
+    EXPECT_EQ(shipped.width, generated.width);
+    EXPECT_TRUE(shipped.texels == generated.texels) << "data/terrain.png is not makeTerrainHeightMap()'s map";
+    EXPECT_EQ(loadDocument(dataDir() / "terrain.patchwork"), doc);
+    EXPECT_EQ(resolveMapPath(doc.displacement, dataDir() / "terrain.patchwork"), dataDir() / "terrain.png");
+}
