@@ -84,14 +84,16 @@ void buildTessFamily(const Targets& t, const SharedStages& sh, uint32_t controlP
     }
 }
 
+// The vertex, fragment, line and normals-geometry modules every family shares; `frag` holds
+// kVaryingsVariants modules and must outlive the result.
+SharedStages makeSharedStages(Device& dev, const ModuleMaker& mod, VkShaderModule (&frag)[kVaryingsVariants]) {
+    frag[0] = mod(spirv::surface_frag);
+    frag[1] = mod(spirv::surface_frag_full);
+    return {mod(spirv::surface_vert), frag, mod(spirv::line_frag), dev.caps().geometryShader ? mod(spirv::normals_geom) : VK_NULL_HANDLE};
+}
+
 // The quad and triangle surface families, plain or displaced (-DDISPLACE evaluation shaders).
-void buildSurfaceFamilies(const Targets& t, SurfacePipelines& out, bool displaced, const ModuleMaker& mod) {
-    Device& dev = t.dev;
-    VkShaderModule vert = mod(spirv::surface_vert);
-    const VkShaderModule frag[kVaryingsVariants] = {mod(spirv::surface_frag), mod(spirv::surface_frag_full)};
-    VkShaderModule lineFrag = mod(spirv::line_frag);
-    VkShaderModule geom = dev.caps().geometryShader ? mod(spirv::normals_geom) : VK_NULL_HANDLE;
-    const SharedStages shared{vert, frag, lineFrag, geom};
+void buildSurfaceFamilies(const Targets& t, const SharedStages& shared, SurfacePipelines& out, bool displaced, const ModuleMaker& mod) {
     using spirv::Blob;
     const Blob* tese[2][kSpacingVariants][kVaryingsVariants] = {
         {{&spirv::surface_tese_equal, &spirv::surface_tese_equal_full},
@@ -172,14 +174,14 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
     auto mod = [&](const spirv::Blob& blob) {
         return modules.emplace_back(dev.device(), makeModule(dev, blob)).get();
     };
-    VkShaderModule vert = mod(spirv::surface_vert);
-    const VkShaderModule frag[kVaryingsVariants] = {mod(spirv::surface_frag), mod(spirv::surface_frag_full)};
-    VkShaderModule lineFrag = mod(spirv::line_frag);
+    VkShaderModule frag[kVaryingsVariants] = {};
+    const SharedStages shared = makeSharedStages(dev, mod, frag);
+    const VkShaderModule vert = shared.vert, lineFrag = shared.lineFrag;
     set.colorFormat = color;
     set.depthFormat = depth;
     set.samples = samples;
     const Targets targets{dev, set.layout, set.cache, color, depth, samples};
-    buildSurfaceFamilies(targets, set.tess[0], false, mod);
+    buildSurfaceFamilies(targets, shared, set.tess[0], false, mod);
     // Curves and isocurves: the isoline domain; lines drawn depth-tested over the surface.
     {
         const VkShaderModule ctesc = mod(spirv::curve_tesc), itesc = mod(spirv::isocurve_tesc);
@@ -235,7 +237,9 @@ void ensureDisplacedPipelines(Device& dev, PipelineSet& set) {
     const auto t0 = std::chrono::steady_clock::now();
     std::vector<OwnedShaderModule> modules;
     auto mod = [&](const spirv::Blob& blob) { return modules.emplace_back(dev.device(), makeModule(dev, blob)).get(); };
-    buildSurfaceFamilies({dev, set.layout, set.cache, set.colorFormat, set.depthFormat, set.samples}, set.tess[1], true, mod);
+    VkShaderModule frag[kVaryingsVariants] = {};
+    const SharedStages shared = makeSharedStages(dev, mod, frag);
+    buildSurfaceFamilies({dev, set.layout, set.cache, set.colorFormat, set.depthFormat, set.samples}, shared, set.tess[1], true, mod);
     set.createMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 

@@ -4,3 +4,6 @@
 
 // binding 1: per-patch tessellation overrides, indexed by patchBase + gl_PrimitiveID.
 layout(set = 0, binding = 1, std430) readonly buffer Patches { PatchData patches[]; };
+
+// A window's displacement scale and bias: its own (disp.z > 0.5), else the document's.
+vec2 displacementScaleBias(PatchData pd) { return pd.disp.z > 0.5 ? pd.disp.xy : frame.displace.xy; }

@@ -14,9 +14,8 @@ float mapHeight(vec2 uv) { return textureLod(heightMap, uv, 0.0).r; }
 // Displaces p along n (unit) and turns n into the displaced surface's normal. param: the window's
 // (u, v); du, dv: the surface's derivatives along them.
 void displaceSurface(inout vec3 p, inout vec3 n, vec3 du, vec3 dv, vec2 param, PatchData pd) {
-    bool own = pd.disp.z > 0.5;
-    float scale = own ? pd.disp.x : frame.displace.x;
-    float bias = own ? pd.disp.y : frame.displace.y;
+    vec2 sb = displacementScaleBias(pd);
+    float scale = sb.x, bias = sb.y;
     vec2 uv, uvDu, uvDv;  // map coordinates and their derivatives along u and v
     if (frame.displace.z > 0.5) {
         bool zUp = frame.displace.w > 0.5;

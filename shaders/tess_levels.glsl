@@ -10,9 +10,6 @@ float adaptiveEdgeLevel(vec3 p[4]) {
                              frame.dist.y, frame.viewProj, frame.viewport.xy, frame.inner.w);
 }
 
-// The window's displacement scale and bias (its own, or the document's).
-vec2 displacementScaleBias(PatchData pd) { return pd.disp.z > 0.5 ? pd.disp.xy : frame.displace.xy; }
-
 // How far the displaced surface may leave the patch: the largest |height| (0 without a map, whose
 // texture then reads 0 and whose windows carry no detail).
 float displacementMargin(PatchData pd) {
