@@ -1,11 +1,13 @@
 // `patchwork info FILE`: counts, bounds, joins by continuity, and the measured continuity of every
-// join (C0 gap, C1 residual, seam normal angle) with the largest constraint residual.
+// join (C0 gap, seam normal angle, curvature deviation across the seam, control-point residuals),
+// checked against the document's tolerances, with the largest constraint residual.
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "app/commands.hpp"
 #include "core/errors.hpp"
@@ -37,16 +39,31 @@ int runInfo(const InfoOptions& opt) {
     const std::vector<PatchInstance> windows = expandPatches(doc);
     const Bounds bounds = computeBounds(doc.points);
     const double size = modelSize(doc);
-    size_t byKind[3] = {0, 0, 0};
+    constexpr size_t kKinds = 5;
+    size_t byKind[kKinds] = {};
     for (const Join& j : doc.joins) ++byKind[static_cast<int>(j.continuity)];
     const std::vector<JoinContinuity> report = continuityReport(doc, opt.samples);
     JoinContinuity worst;
+    size_t outOfTolerance = 0;
     for (const JoinContinuity& c : report) {
+        const Continuity cont = doc.joins[c.join].continuity;
         worst.c0Gap = std::max(worst.c0Gap, c.c0Gap);
-        // The C1 residual only means something where the join asks for C1/G1.
-        if (doc.joins[c.join].continuity != Continuity::C0) worst.c1Residual = std::max(worst.c1Residual, c.c1Residual);
+        // Residuals only mean something where the join asks for that order.
+        if (holdsTangent(cont)) worst.c1Residual = std::max(worst.c1Residual, c.c1Residual);
+        if (holdsCurvature(cont)) {
+            worst.c2Residual = std::max(worst.c2Residual, c.c2Residual);
+            worst.curvatureDeviationPct = std::max(worst.curvatureDeviationPct, c.curvatureDeviationPct);
+        }
         worst.normalAngleDeg = std::max(worst.normalAngleDeg, c.normalAngleDeg);
+        if (toleranceFailures(c, cont, doc.tolerances) != kWithinTolerance) ++outOfTolerance;
     }
+    auto failureNames = [](uint8_t f) {
+        std::vector<std::string> names;
+        if (f & kPositionOut) names.emplace_back("position");
+        if (f & kAngleOut) names.emplace_back("angle");
+        if (f & kCurvatureOut) names.emplace_back("curvature");
+        return names;
+    };
     const double residual = maxConstraintResidual(doc);
 
     if (opt.json) {
@@ -59,10 +76,17 @@ int runInfo(const InfoOptions& opt) {
                {"triangles", doc.triangles.size()},
                {"curves", doc.curves.size()},
                {"windows", windows.size()},
-               {"joins", {{"total", doc.joins.size()}, {"C0", byKind[0]}, {"C1", byKind[1]}, {"G1", byKind[2]}}},
+               {"joins", {{"total", doc.joins.size()}, {"C0", byKind[0]}, {"C1", byKind[1]}, {"G1", byKind[2]}, {"C2", byKind[3]}, {"G2", byKind[4]}}},
                {"modelSize", bounds.empty ? 0.0 : bounds.diagonal()},
                {"maxConstraintResidual", residual},
-               {"largest", {{"c0Gap", worst.c0Gap}, {"c1Residual", worst.c1Residual}, {"normalAngleDeg", worst.normalAngleDeg}}}};
+               {"tolerances", {{"position", doc.tolerances.position}, {"angleDeg", doc.tolerances.angleDeg}, {"curvaturePct", doc.tolerances.curvaturePct}}},
+               {"joinsOutOfTolerance", outOfTolerance},
+               {"largest",
+                {{"c0Gap", worst.c0Gap},
+                 {"c1Residual", worst.c1Residual},
+                 {"c2Residual", worst.c2Residual},
+                 {"normalAngleDeg", worst.normalAngleDeg},
+                 {"curvatureDeviationPct", worst.curvatureDeviationPct}}}};
         if (!bounds.empty)
             j["bounds"] = {{"min", {bounds.min.x, bounds.min.y, bounds.min.z}}, {"max", {bounds.max.x, bounds.max.y, bounds.max.z}}};
         else
@@ -77,9 +101,14 @@ int runInfo(const InfoOptions& opt) {
                              {"reversed", jn.reversed},
                              {"continuity", continuityName(jn.continuity)},
                              {"alpha", jn.alpha},
+                             {"beta2", jn.beta2},
                              {"c0Gap", c.c0Gap},
                              {"c1Residual", c.c1Residual},
-                             {"normalAngleDeg", c.normalAngleDeg}});
+                             {"c2Residual", c.c2Residual},
+                             {"normalAngleDeg", c.normalAngleDeg},
+                             {"curvatureDeviationPct", c.curvatureDeviationPct},
+                             {"maxCurvature", c.maxCurvature},
+                             {"outOfTolerance", failureNames(toleranceFailures(c, jn.continuity, doc.tolerances))}});
         }
         j["joinReport"] = std::move(joins);
         std::cout << j.dump(2, ' ', false, json::error_handler_t::replace) << "\n";
@@ -93,29 +122,35 @@ int runInfo(const InfoOptions& opt) {
     std::cout << "  triangles   " << doc.triangles.size() << "  (cubic Bézier triangles)\n";
     std::cout << "  curves      " << doc.curves.size() << "  (cubic Bézier curves)\n";
     std::cout << "  windows     " << windows.size() << "  (patches + surface windows)\n";
-    std::cout << "  joins       " << doc.joins.size() << "  (C0 " << byKind[0] << ", C1 " << byKind[1] << ", G1 "
-              << byKind[2] << ")\n";
+    std::cout << "  joins       " << doc.joins.size() << "  (C0 " << byKind[0] << ", C1 " << byKind[1] << ", G1 " << byKind[2]
+              << ", C2 " << byKind[3] << ", G2 " << byKind[4] << ")\n";
     if (bounds.empty)
         std::cout << "  bounds      (empty)\n";
     else
         std::cout << "  bounds      min " << vec(bounds.min) << "  max " << vec(bounds.max) << "\n";
     std::cout << "  model size  " << fmt("%.6g", bounds.empty ? 0.0 : bounds.diagonal()) << "  (bounding-box diagonal)\n";
     std::cout << "  largest C0 gap            " << fmt("%.3g", worst.c0Gap) << "\n";
-    std::cout << "  largest C1 residual       " << fmt("%.3g", worst.c1Residual) << "  (C1/G1 joins)\n";
+    std::cout << "  largest C1 residual       " << fmt("%.3g", worst.c1Residual) << "  (C1/G1/C2/G2 joins)\n";
+    std::cout << "  largest C2 residual       " << fmt("%.3g", worst.c2Residual) << "  (C2/G2 joins)\n";
     std::cout << "  largest seam normal angle " << fmt("%.3g", worst.normalAngleDeg) << " deg\n";
+    std::cout << "  largest curvature dev.    " << fmt("%.3g", worst.curvatureDeviationPct) << " %  (C2/G2 joins)\n";
+    std::cout << "  out of tolerance          " << outOfTolerance << " joins  (position " << fmt("%.3g", doc.tolerances.position)
+              << ", angle " << fmt("%.3g", doc.tolerances.angleDeg) << " deg, curvature " << fmt("%.3g", doc.tolerances.curvaturePct) << " %)\n";
     std::cout << "  max constraint residual   " << fmt("%.3g", residual) << "  (" << fmt("%.3g", residual / size)
               << " x model size; edits keep it <= 1e-6)\n";
 
     if (!opt.noJoins && !report.empty()) {
-        std::cout << "\n  join  patch edge  patch edge  rev  cont   alpha      C0 gap     C1 resid   normal deg\n";
+        std::cout << "\n  join  patch edge  patch edge  rev  cont   alpha      C0 gap     C1 resid   normal deg  curv dev %  out\n";
         for (const JoinContinuity& c : report) {
             const Join& jn = doc.joins[c.join];
             char line[200];
-            std::snprintf(line, sizeof line, "  %4zu  %5u %-4s  %5u %-4s  %-3s  %-4s %9.6g  %9.3g  %9.3g  %9.3g\n", c.join,
+            std::string out;
+            for (const std::string& n : failureNames(toleranceFailures(c, jn.continuity, doc.tolerances))) out += (out.empty() ? "" : ",") + n;
+            std::snprintf(line, sizeof line, "  %4zu  %5u %-4s  %5u %-4s  %-3s  %-4s %9.6g  %9.3g  %9.3g  %9.3g  %9.3g  %s\n", c.join,
                           jn.patchA, std::string(edgeName(jn.edgeA)).c_str(), jn.patchB,
                           std::string(edgeName(jn.edgeB)).c_str(), jn.reversed ? "yes" : "no",
                           std::string(continuityName(jn.continuity)).c_str(), jn.alpha, c.c0Gap, c.c1Residual,
-                          c.normalAngleDeg);
+                          c.normalAngleDeg, c.curvatureDeviationPct, out.empty() ? "-" : out.c_str());
             std::cout << line;
         }
     }

@@ -78,6 +78,13 @@ render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& do
         const auto v = parseLevels("--isolines", a.isolines, 2);
         o.tess.isolineLevels = {v[0], v[1]};
     }
+    if (!a.combJoin.empty()) {
+        const double j = parseNumber("render", "--comb-join", a.combJoin, 0.0, 1e9);
+        if (j != std::floor(j) || j >= double(doc.joins.size()))
+            bad("--comb-join", "'" + a.combJoin + "' is not a join of the document (it has " + std::to_string(doc.joins.size()) + ")");
+        o.combJoin = int(j);
+        o.display.showCombs = true;
+    }
     if (a.cull) o.tess.cullBackfaces = true;
     if (!a.shading.empty()) {
         std::optional<ShadingMode> s = a.shading == "curvature" ? std::optional(ShadingMode::GaussCurvature) : parseShading(a.shading);
@@ -90,7 +97,8 @@ render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& do
         else if (ov == "normals") o.display.showNormals = true;
         else if (ov == "boundaries") o.display.showBoundaries = true;
         else if (ov == "isocurves") o.display.showIsocurves = true;
-        else if (ov != "none") bad("--overlay", "'" + ov + "' is not one of grid, wire, normals, boundaries, isocurves, none");
+        else if (ov == "combs") o.display.showCombs = true;
+        else if (ov != "none") bad("--overlay", "'" + ov + "' is not one of grid, wire, normals, boundaries, isocurves, combs, none");
     }
     const double aspect = double(width) / double(height);
     if (!a.view.empty()) {
@@ -246,7 +254,8 @@ void addRenderOptions(CLI::App* cmd, RenderArgs& a) {
     cmd->add_option("--target-px", a.targetPx, "Screen-space adaptive: pixels per segment (default 8)");
     cmd->add_option("--max-level", a.maxLevel, "Adaptive: largest level, 1..64");
     cmd->add_option("--shading", a.shading, "lit | normal | patch | uv | zebra | curvature | gauss | mean");
-    cmd->add_option("--overlay", a.overlay, "Comma-separated overlays: grid, wire, normals, boundaries, isocurves");
+    cmd->add_option("--overlay", a.overlay, "Comma-separated overlays: grid, wire, normals, boundaries, isocurves, combs (curvature combs on curves and isocurves)");
+    cmd->add_option("--comb-join", a.combJoin, "Draw the curvature graph across join J (combs on the isocurves crossing it; turns combs on)");
     cmd->add_option("--isolines", a.isolines, "Isoline levels LINES,SEGMENTS for curves and the isocurve overlay (default: the document's, 2,16)");
     cmd->add_option("--view", a.view, "front | back | left | right | top | bottom | iso (framed to the model)");
     cmd->add_option("--stats", a.stats, "Write frame statistics (triangles, GPU time, ...) as JSON to this file");

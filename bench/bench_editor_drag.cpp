@@ -16,8 +16,9 @@ namespace {
 constexpr int kGrid = 32;
 uint32_t lat(int r, int c) { return static_cast<uint32_t>(r * (3 * kGrid + 1) + c); }
 
-void runDrag(benchmark::State& state, const std::vector<uint32_t>& dragged, pw::TransformKind kind = pw::TransformKind::Move) {
-    pw::Document doc = pw::makePatchGrid(kGrid, kGrid);
+void runDrag(benchmark::State& state, const std::vector<uint32_t>& dragged, pw::TransformKind kind = pw::TransformKind::Move,
+             pw::Continuity joins = pw::Continuity::C1) {
+    pw::Document doc = pw::makePatchGrid(kGrid, kGrid, joins);
     pw::DragView view;
     view.width = 1280;
     view.height = 720;
@@ -39,6 +40,7 @@ void runDrag(benchmark::State& state, const std::vector<uint32_t>& dragged, pw::
         benchmark::DoNotOptimize(gpuPool.data());
     }
     if (pw::maxConstraintResidual(doc) > 1e-6 * pw::modelSize(doc)) state.SkipWithError("constraint residual too large");
+    if (!drag.projection().ok()) state.SkipWithError("the joins conflicted");
     state.counters["points"] = double(doc.points.size());
     state.counters["uploaded/move"] = double(totalChanged) / double(std::max<int64_t>(state.iterations(), 1));
 }
@@ -71,5 +73,14 @@ BENCHMARK(BM_EditorDragMove_Grid32_Row)->Unit(benchmark::kMicrosecond);
 // The same row rotated (R) about its median.
 void BM_EditorDragRotate_Grid32_Row(benchmark::State& state) { runDrag(state, wholeRow(48), pw::TransformKind::Rotate); }
 BENCHMARK(BM_EditorDragRotate_Grid32_Row)->Unit(benchmark::kMicrosecond);
+
+// C2 joins everywhere (issue 21): the β-constraints couple three rows on each side of every seam,
+// so the whole grid is one component of the solve. Budget: <= 1 ms per mouse event.
+void BM_EditorDragMove_Grid32C2_Corner(benchmark::State& state) { runDrag(state, {lat(48, 48)}, pw::TransformKind::Move, pw::Continuity::C2); }
+BENCHMARK(BM_EditorDragMove_Grid32C2_Corner)->Unit(benchmark::kMicrosecond);
+void BM_EditorDragMove_Grid32C2_Tangent(benchmark::State& state) { runDrag(state, {lat(40, 44)}, pw::TransformKind::Move, pw::Continuity::C2); }
+BENCHMARK(BM_EditorDragMove_Grid32C2_Tangent)->Unit(benchmark::kMicrosecond);
+void BM_EditorDragMove_Grid32C2_Row(benchmark::State& state) { runDrag(state, wholeRow(48), pw::TransformKind::Move, pw::Continuity::C2); }
+BENCHMARK(BM_EditorDragMove_Grid32C2_Row)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

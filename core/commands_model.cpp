@@ -199,16 +199,30 @@ void addModelCommands(CommandTable& t) {
                const uint32_t p = uint32_t(ctx.session.sel.patch);
                ctx.session.apply("Split patch", [&](Document& d) { splitPatch(d, p, dir == "u", t); });
            }});
-    t.add({.name = "join", .label = "Join", .menu = "Patch", .usage = "A:EDGE B:EDGE C0|C1|G1",
-           .help = "Join an edge of patch A to an edge of patch B (edges u0 v0 u1 v1) with C0, C1 or G1 continuity; B is turned to "
-                   "lie beyond the seam with agreeing normals, and when the edges do not meet A stays and B's boundary and tangent rows move onto it (Match)",
+    t.add({.name = "join", .label = "Join", .menu = "Patch", .usage = "A:EDGE B:EDGE C0|C1|G1|C2|G2",
+           .help = "Join an edge of patch A to an edge of patch B (edges u0 v0 u1 v1) with C0, C1, G1, C2 or G2 continuity, held while you "
+                   "drag; B is turned to lie beyond the seam with agreeing normals, and when the edges do not meet A stays and B's boundary, "
+                   "tangent (and for C2/G2 third) rows move onto it (Match). G1 and G2 keep the shape parameters measured when joining; "
+                   "a join that cannot hold together with the others is refused, naming them",
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 3, 3);
                const Document& doc = ctx.session.doc;
                const std::pair<uint32_t, Edge> a = patchEdge(ctx.args[0], doc), b = patchEdge(ctx.args[1], doc);
                const auto c = parseContinuity(ctx.args[2]);
-               if (!c) throw EditError("expected C0, C1 or G1, got '" + ctx.args[2] + "'");
+               if (!c) throw EditError("expected C0, C1, G1, C2 or G2, got '" + ctx.args[2] + "'");
                ctx.session.apply("Join edges", [&](Document& d) { joinEdges(d, a.first, a.second, b.first, b.second, *c); });
+           }});
+    t.add({.name = "tolerances", .label = "Continuity Tolerances", .menu = "Patch", .usage = "POSITION ANGLE_DEG CURVATURE_PCT",
+           .help = "What the continuity readout checks every join against (Rhino's three): the gap between the sides in model units, "
+                   "the largest angle between their normals in degrees and the curvature deviation across the seam in percent; "
+                   "joins out of tolerance show in the Continuity panel, in the viewport (Boundaries) and in `info`",
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 3, 3);
+               const double v[3] = {commandNumber(ctx.args[0], "POSITION"), commandNumber(ctx.args[1], "ANGLE_DEG"),
+                                    commandNumber(ctx.args[2], "CURVATURE_PCT")};
+               for (int i = 0; i < 3; ++i)
+                   if (!(v[i] > 0.0) || v[i] > 1e9) throw EditError("a tolerance must be a positive number, got " + ctx.args[size_t(i)]);
+               ctx.session.apply("Continuity tolerances", [&](Document& d) { d.tolerances = ContinuityTolerances{v[0], v[1], v[2]}; }, false);
            }});
     t.add(windowToggle("join-pick", "Join by Picking", "Patch", WindowToggle::JoinTool, {"J"},
                        "Hover an open edge and click it, then click the edge to join it to; the join shows at once (C1) "

@@ -93,7 +93,7 @@ void transformSelection(CommandContext& ctx, const std::string& label, const std
         const DragSolver solver(d, pairs.driven(moved));
         for (uint32_t p : moved) d.points[p] = f(d.points[p]);
         applySymmetry(d.points, pairs, sym);
-        solver.project(d.points);
+        if (const Projection p = solver.project(d.points); !p.ok()) throw EditError("the joins cannot follow: " + conflictMessage(p));
     }, false);
 }
 

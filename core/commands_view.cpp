@@ -1,6 +1,7 @@
 // View and display commands: named views, projection, frame, overlays, shading, tessellation
 // levels and partitioning; and the window's own toggles (help, palette, presentation, panels).
 #include <algorithm>
+#include <cmath>
 
 #include "core/camera_math.hpp"
 #include "core/command_table.hpp"
@@ -22,12 +23,14 @@ constexpr Overlay kOverlays[] = {
     {"normals", "Normals", &DisplaySettings::showNormals, "Show surface normals"},
     {"boundaries", "Boundaries", &DisplaySettings::showBoundaries, "Patch boundaries coloured by continuity (grey open, red C0, green C1, blue G1)"},
     {"isocurves", "Isocurves", &DisplaySettings::showIsocurves, "Isoparametric curves of every patch through the isoline tessellator"},
+    {"combs", "Curvature Combs", &DisplaySettings::showCombs,
+     "Curvature combs on every curve and isocurve (2 isocurve lines: the boundaries) and the curvature graph across the selected join"},
 };
 
 const Overlay& overlayNamed(const std::string& name) {
     for (const Overlay& o : kOverlays)
         if (name == o.name) return o;
-    throw EditError("expected an overlay grid, wireframe, normals, boundaries or isocurves, got '" + name + "'");
+    throw EditError("expected an overlay grid, wireframe, normals, boundaries, isocurves or combs, got '" + name + "'");
 }
 
 // A command that sets one enum-valued setting from its name (one of `usage`, '|'-separated), as
@@ -101,6 +104,24 @@ void addViewCommands(CommandTable& t) {
                const Overlay& o = overlayNamed(ctx.args[0]);
                const bool on = switchArg(ctx, 1, ctx.session.doc.display.*o.flag);
                ctx.session.apply(o.label, [&](Document& d) { d.display.*o.flag = on; }, false);
+           }});
+    t.add({.name = "comb", .label = "Comb Scale and Density", .menu = "Display", .usage = "SCALE [TEETH]",
+           .help = "Curvature comb length (1 = a tooth of 0.02 × model size² × curvature; negative draws the teeth inward) and teeth per "
+                   "curve (2..21); `overlay combs` shows them",
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 1, 2);
+               const double scale = commandNumber(ctx.args[0], "SCALE");
+               if (std::abs(scale) > 1e6) throw EditError("SCALE must lie within ±1e6, got " + ctx.args[0]);
+               int teeth = ctx.session.doc.display.combDensity;
+               if (ctx.args.size() == 2) {
+                   const double t = commandNumber(ctx.args[1], "TEETH");
+                   if (t != std::floor(t) || t < 2 || t > 21) throw EditError("TEETH must be a whole number in 2..21, got " + ctx.args[1]);
+                   teeth = int(t);
+               }
+               ctx.session.apply("Comb", [&](Document& d) {
+                   d.display.combScale = float(scale);
+                   d.display.combDensity = teeth;
+               }, false);
            }});
     t.add(enumSetting<ShadingMode>("shading", "Shading", "lit|normal|patch|uv|zebra|gauss|mean", "How the surface is coloured",
                                    parseShading, [](Document& d, ShadingMode m) { d.display.shading = m; }));

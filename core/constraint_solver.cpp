@@ -7,6 +7,7 @@
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <stdexcept>
 
@@ -25,8 +26,10 @@ bool joinPoints(const Document& doc, const Join& join, JoinPoints& out) {
         const int kb = join.reversed ? 3 - k : k;
         out.a0[k] = A.idx[edgeSlot(join.edgeA, k, 0)];
         out.a1[k] = A.idx[edgeSlot(join.edgeA, k, 1)];
+        out.a2[k] = A.idx[edgeSlot(join.edgeA, k, 2)];
         out.b0[k] = B.idx[edgeSlot(join.edgeB, kb, 0)];
         out.b1[k] = B.idx[edgeSlot(join.edgeB, kb, 1)];
+        out.b2[k] = B.idx[edgeSlot(join.edgeB, kb, 2)];
     }
     return true;
 }
@@ -62,19 +65,34 @@ std::vector<ConstraintRow> buildConstraintRows(const Document& doc) {
         if (!joinPoints(doc, join, jp)) continue;
         bool valid = true;
         for (int k = 0; k < 4; ++k)
-            valid = valid && jp.a0[k] < n && jp.a1[k] < n && jp.b0[k] < n && jp.b1[k] < n;
+            valid = valid && jp.a0[k] < n && jp.a1[k] < n && jp.a2[k] < n && jp.b0[k] < n && jp.b1[k] < n && jp.b2[k] < n;
         if (!valid) continue;
         const uint32_t ji = static_cast<uint32_t>(j);
         // C0: the two sides' edge points coincide (nothing to do when they share the pool entry).
         for (int k = 0; k < 4; ++k)
             if (jp.a0[k] != jp.b0[k]) rows.push_back(makeRow({{jp.a0[k], 1.0}, {jp.b0[k], -1.0}}, ji));
-        if (join.continuity == Continuity::C0) continue;
+        if (!holdsTangent(join.continuity)) continue;
         if (collapsed(jp.a0) || collapsed(jp.b0)) continue;  // a pole: no cross-boundary tangent
         const double alpha = join.alpha;
         for (int k = 0; k < 4; ++k) {
             const bool aFlat = jp.a1[k] == jp.a0[k], bFlat = jp.b1[k] == jp.b0[k];
             if (aFlat != bFlat) continue;  // one side's tangent collapsed onto the boundary point
             ConstraintRow row = makeRow({{jp.b1[k], 1.0}, {jp.a0[k], -(1.0 + alpha)}, {jp.a1[k], alpha}}, ji);
+            if (!row.terms.empty()) rows.push_back(std::move(row));
+        }
+        if (!holdsCurvature(join.continuity)) continue;
+        // β-constraint on the second cross-boundary difference; B's edge point is A's (C0 row).
+        const double a2 = alpha * alpha, h = 0.5 * join.beta2;
+        for (int k = 0; k < 4; ++k) {
+            const bool aFlat = jp.a1[k] == jp.a0[k] || jp.a2[k] == jp.a1[k];
+            const bool bFlat = jp.b1[k] == jp.b0[k] || jp.b2[k] == jp.b1[k];
+            if (aFlat || bFlat) continue;  // a degenerate row: the curvature condition says nothing there
+            ConstraintRow row = makeRow({{jp.b2[k], 1.0},
+                                         {jp.b1[k], -2.0},
+                                         {jp.a0[k], 1.0 - a2 - h},
+                                         {jp.a1[k], 2.0 * a2 + h},
+                                         {jp.a2[k], -a2}},
+                                        ji);
             if (!row.terms.empty()) rows.push_back(std::move(row));
         }
     }
@@ -131,13 +149,55 @@ struct UnionFind {
     void unite(uint32_t a, uint32_t b) { parent[find(a)] = find(b); }
 };
 
+// Local support (SolverOptions::localRings): every patch point farther than `rings` patches (through
+// shared points and joins) from a patch holding a fixed point is frozen too. Points of no patch (nets, curves)
+// stay free. With no fixed point on any patch nothing is frozen.
+void freezeOutside(const Document& doc, std::vector<char>& fixed, int rings) {
+    const size_t n = fixed.size();
+    std::vector<std::vector<uint32_t>> patchesOf(n);
+    for (uint32_t p = 0; p < doc.patches.size(); ++p)
+        for (uint32_t i : doc.patches[p].idx)
+            if (i < n && (patchesOf[i].empty() || patchesOf[i].back() != p)) patchesOf[i].push_back(p);
+    std::vector<char> inRegion(doc.patches.size(), 0);
+    std::vector<uint32_t> frontier;
+    for (size_t i = 0; i < n; ++i)
+        if (fixed[i])
+            for (uint32_t p : patchesOf[i])
+                if (!inRegion[p]) inRegion[p] = 1, frontier.push_back(p);
+    if (frontier.empty()) return;  // nothing fixed on a patch: the whole model takes part
+    std::vector<std::vector<uint32_t>> joined(doc.patches.size());  // joins whose edges are stored twice share no point
+    for (const Join& j : doc.joins)
+        if (j.patchA < joined.size() && j.patchB < joined.size()) joined[j.patchA].push_back(j.patchB), joined[j.patchB].push_back(j.patchA);
+    for (int r = 0; r < rings && !frontier.empty(); ++r) {
+        std::vector<uint32_t> next;
+        auto reach = [&](uint32_t q) {
+            if (!inRegion[q]) inRegion[q] = 1, next.push_back(q);
+        };
+        for (uint32_t p : frontier) {
+            for (uint32_t i : doc.patches[p].idx)
+                if (i < n)
+                    for (uint32_t q : patchesOf[i]) reach(q);
+            for (uint32_t q : joined[p]) reach(q);
+        }
+        frontier = std::move(next);
+    }
+    for (size_t i = 0; i < n; ++i) {
+        if (fixed[i] || patchesOf[i].empty()) continue;
+        bool near = false;
+        for (uint32_t p : patchesOf[i]) near = near || inRegion[p];
+        if (!near) fixed[i] = 1;
+    }
+}
+
 }  // namespace
 
 struct DragSolver::Impl {
     size_t pointCount = 0;
     double tolerance = 0;  // residual to reach: 1e-13 × model size (well inside 1e-9)
+    double conflictTolerance = 0;  // residual left after refinement that counts as a conflict: 1e-9 × size
     // Active constraints (at least one free point) in compressed rows over pool indices.
     std::vector<uint32_t> rowStart{0};
+    std::vector<uint32_t> rowJoin;  // the join of each active row
     std::vector<uint32_t> termIdx;
     std::vector<double> termCoef;
     std::vector<uint32_t> freePoints;  // pool index of each free variable
@@ -153,10 +213,11 @@ struct DragSolver::Impl {
     }
 
     // Projects one component: solve, then refine against the true residual (at most 4 solves).
-    void solveComponent(const Component& comp, std::vector<Vec3>& p, Eigen::MatrixXd& r, double worst2) const {
+    // Rows still violated after that cannot hold together: their joins go into `out`.
+    void solveComponent(const Component& comp, std::vector<Vec3>& p, Eigen::MatrixXd& r, double worst2, Projection& out) const {
         const auto m = static_cast<Eigen::Index>(comp.rows.size());
         const double tol2 = tolerance * tolerance;
-        for (int round = 0; round < 4; ++round) {
+        for (int round = 0;; ++round) {
             if (round > 0) {
                 worst2 = 0;
                 for (Eigen::Index i = 0; i < m; ++i) {
@@ -165,7 +226,7 @@ struct DragSolver::Impl {
                     worst2 = std::max(worst2, glm::dot(s, s));
                 }
             }
-            if (worst2 <= tol2) return;
+            if (worst2 <= tol2 || round == 4) break;
             const Eigen::MatrixXd y = comp.sparse ? Eigen::MatrixXd(comp.sparse->solve(r.topRows(m)))
                                                   : Eigen::MatrixXd(comp.dense.solve(r.topRows(m)));
             const Eigen::MatrixXd d = comp.C.transpose() * y;
@@ -175,26 +236,33 @@ struct DragSolver::Impl {
                 p[freePoints[v]] += invWeight[v] * Vec3(d(e, 0), d(e, 1), d(e, 2));
             }
         }
+        out.residual = std::max(out.residual, std::sqrt(worst2));
+        for (uint32_t row : comp.rows)
+            if (glm::length(rowResidual(p, row)) > conflictTolerance) out.conflictingJoins.push_back(rowJoin[row]);
     }
 };
 
-DragSolver::DragSolver(const Document& doc, std::vector<uint32_t> fixedPoints, SolverOptions options)
-    : impl_(std::make_unique<Impl>()) {
-    Impl& im = *impl_;
-    const size_t n = doc.points.size();
-    im.pointCount = n;
-    im.tolerance = 1e-13 * modelSize(doc);
-    if (!(options.boundaryWeight > 0) || !(options.tangentWeight > 0))
-        throw std::invalid_argument("DragSolver: weights must be positive");
+// What a solver is built from: the document's rows and point roles, kept (local solvers only) so
+// that project() can widen to the whole model without the document.
+struct DragSolver::Setup {
+    std::vector<ConstraintRow> rows;
+    std::vector<char> fixed;     // the dragged points (before freezing)
+    std::vector<char> boundary;  // joinedBoundaryPoints
+    double size = 1.0;
+    SolverOptions options;
+};
 
-    std::vector<char> fixed(n, 0);
-    for (uint32_t f : fixedPoints)
-        if (f < n) fixed[f] = 1;
+void DragSolver::build(Impl& im, const Setup& setup, const std::vector<char>& fixed) {
+    const SolverOptions& options = setup.options;
+    const size_t n = fixed.size();
+    im.pointCount = n;
+    im.tolerance = 1e-13 * setup.size;
+    im.conflictTolerance = 1e-9 * setup.size;
 
     // Constraint rows, without duplicates (rows equal up to scale: a corner shared by four patches
     // gets the same tangent row from two joins) and without rows that only involve fixed points.
     std::map<std::vector<std::pair<uint32_t, double>>, bool> seen;
-    for (ConstraintRow& row : solver_detail::buildConstraintRows(doc)) {
+    for (const ConstraintRow& row : setup.rows) {
         bool anyFree = false;
         for (const auto& t : row.terms) anyFree = anyFree || !fixed[t.first];
         if (!anyFree) continue;
@@ -207,12 +275,13 @@ DragSolver::DragSolver(const Document& doc, std::vector<uint32_t> fixedPoints, S
             im.termCoef.push_back(c);
         }
         im.rowStart.push_back(static_cast<uint32_t>(im.termIdx.size()));
+        im.rowJoin.push_back(row.join);
     }
     const size_t m = im.rowCount();
     if (m == 0) return;
 
     // Free variables: the free points that appear in some constraint, weighted by their role.
-    const std::vector<char> boundary = solver_detail::joinedBoundaryPoints(doc);
+    const std::vector<char>& boundary = setup.boundary;
     std::vector<int> column(n, -1);
     for (size_t t = 0; t < im.termIdx.size(); ++t) {
         const uint32_t idx = im.termIdx[t];
@@ -287,15 +356,37 @@ DragSolver::DragSolver(const Document& doc, std::vector<uint32_t> fixedPoints, S
     }
 }
 
+DragSolver::DragSolver(const Document& doc, std::vector<uint32_t> fixedPoints, SolverOptions options)
+    : impl_(std::make_unique<Impl>()) {
+    if (!(options.boundaryWeight > 0) || !(options.tangentWeight > 0))
+        throw std::invalid_argument("DragSolver: weights must be positive");
+    auto setup = std::make_unique<Setup>();
+    setup->rows = solver_detail::buildConstraintRows(doc);
+    setup->boundary = solver_detail::joinedBoundaryPoints(doc);
+    setup->size = modelSize(doc);
+    setup->options = options;
+    setup->fixed.assign(doc.points.size(), 0);
+    for (uint32_t f : fixedPoints)
+        if (f < setup->fixed.size()) setup->fixed[f] = 1;
+    if (options.localRings <= 0) {
+        build(*impl_, *setup, setup->fixed);
+        return;
+    }
+    std::vector<char> frozen = setup->fixed;
+    freezeOutside(doc, frozen, options.localRings);
+    build(*impl_, *setup, frozen);
+    setup_ = std::move(setup);
+}
+
 DragSolver::~DragSolver() = default;
 DragSolver::DragSolver(DragSolver&&) noexcept = default;
 DragSolver& DragSolver::operator=(DragSolver&&) noexcept = default;
 
 size_t DragSolver::constraintCount() const { return impl_ ? impl_->rowCount() : 0; }
 
-void DragSolver::project(std::vector<Vec3>& points) const {
-    if (!impl_ || impl_->rowCount() == 0) return;
-    const Impl& im = *impl_;
+Projection DragSolver::projectWith(const Impl& im, std::vector<Vec3>& points) {
+    Projection out;
+    if (im.rowCount() == 0) return out;
     if (points.size() < im.pointCount) throw std::invalid_argument("DragSolver::project: point pool shrank");
 
     // Residual of every component; only the disturbed ones are solved.
@@ -320,13 +411,51 @@ void DragSolver::project(std::vector<Vec3>& points) const {
             if (loaded) r(i, 0) = -s.x, r(i, 1) = -s.y, r(i, 2) = -s.z;
             worst2 = std::max(worst2, s2);
         }
-        if (loaded) im.solveComponent(comp, points, r, worst2);
+        if (loaded)
+            im.solveComponent(comp, points, r, worst2, out);
+        else
+            out.residual = std::max(out.residual, std::sqrt(worst2));
     }
+    std::sort(out.conflictingJoins.begin(), out.conflictingJoins.end());
+    out.conflictingJoins.erase(std::unique(out.conflictingJoins.begin(), out.conflictingJoins.end()), out.conflictingJoins.end());
+    return out;
 }
 
-void projectConstraints(Document& doc, const std::vector<uint32_t>& fixedPoints, SolverOptions options) {
+Projection DragSolver::project(std::vector<Vec3>& points) const {
+    if (!impl_) return {};
+    Projection out = projectWith(*impl_, points);
+    if (out.ok() || !setup_) return out;
+    // The local region could not hold the joins: widen to the whole model (built once) and go on
+    // from there; what is still violated then is a real conflict.
+    if (!global_) {
+        global_ = std::make_unique<Impl>();
+        build(*global_, *setup_, setup_->fixed);
+    }
+    return projectWith(*global_, points);
+}
+
+Projection projectConstraints(Document& doc, const std::vector<uint32_t>& fixedPoints, SolverOptions options) {
     DragSolver solver(doc, fixedPoints, options);
-    solver.project(doc.points);
+    return solver.project(doc.points);
+}
+
+std::string conflictMessage(const Projection& p) {
+    if (p.ok()) return "";
+    std::string names;
+    size_t shown = 0;
+    for (uint32_t j : p.conflictingJoins) {
+        if (shown == 8) {
+            names += " and " + std::to_string(p.conflictingJoins.size() - shown) + " more";
+            break;
+        }
+        if (shown) names += shown + 1 == p.conflictingJoins.size() ? " and " : ", ";
+        names += j == kNetSeamJoin ? std::string("a net's C1 seam") : std::to_string(j);
+        ++shown;
+    }
+    char held[32];
+    std::snprintf(held, sizeof held, "%.2g", p.residual);
+    return (p.conflictingJoins.size() == 1 ? "join " + names + " cannot hold" : "joins " + names + " cannot all hold") +
+           " (over-constrained; the worst condition is off by " + held + ")";
 }
 
 double maxConstraintResidual(const Document& doc) {

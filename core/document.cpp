@@ -26,7 +26,7 @@ static_assert(uint32_t(Basis::Bezier) == gpu::kBasisBezier && uint32_t(Basis::BS
 namespace {
 
 constexpr std::array<std::string_view, 4> kEdgeNames{"u0", "v0", "u1", "v1"};
-constexpr std::array<std::string_view, 3> kContinuityNames{"C0", "C1", "G1"};
+constexpr std::array<std::string_view, 5> kContinuityNames{"C0", "C1", "G1", "C2", "G2"};
 constexpr std::array<std::string_view, 4> kSpacingNames{"equal", "fractional_odd", "fractional_even", "pow2"};
 constexpr std::array<std::string_view, 4> kAdaptiveNames{"none", "distance", "screen", "orientation"};
 constexpr std::array<std::string_view, 7> kShadingNames{"lit", "normal", "patch", "uv", "zebra", "gauss", "mean"};

@@ -30,9 +30,12 @@ int edgeSlot(Edge e, int k, int depth = 0);
 bool edgeReversed(const std::array<uint32_t, 4>& pool);
 inline std::array<uint32_t, 4> reversedEdgePool(const std::array<uint32_t, 4>& p) { return {p[3], p[2], p[1], p[0]}; }
 
-enum class Continuity : uint8_t { C0, C1, G1 };
-std::string_view continuityName(Continuity c);  // "C0", "C1", "G1"
+enum class Continuity : uint8_t { C0, C1, G1, C2, G2 };
+std::string_view continuityName(Continuity c);  // "C0", "C1", "G1", "C2", "G2"
 std::optional<Continuity> parseContinuity(std::string_view name);
+// Joins that hold the cross-boundary tangent (C1, G1, C2, G2) and those that also hold curvature.
+inline bool holdsTangent(Continuity c) { return c != Continuity::C0; }
+inline bool holdsCurvature(Continuity c) { return c == Continuity::C2 || c == Continuity::G2; }
 
 // Displacement along the normal by a height map (DESIGN §11): height = scale * map(uv) + bias, the
 // map read as 0..1 (8- or 16-bit PNG). UVs are the window's parameters (a net's windows tile the map
@@ -120,8 +123,12 @@ struct Surface {
 };
 
 // Edge `edgeA` of patch A meets edge `edgeB` of patch B. They share the four pool entries; point k
-// along A's edge is point k (or 3-k when `reversed`) along B's edge. For C1/G1:
-//   B1k - B0k = alpha * (A0k - A1k)   (0 = boundary row, 1 = tangent row; alpha = 1 for C1).
+// along A's edge is point k (or 3-k when `reversed`) along B's edge. For C1/G1/C2/G2:
+//   B1k - B0k = alpha * (A0k - A1k)   (0 = boundary row, 1 = tangent row; alpha = 1 for C1, C2)
+// and for C2/G2 also (2 = the third row; beta2 = 0 for C2), the β-constraint of Barsky's G2:
+//   B2k - 2 B1k + B0k = alpha² (A2k - 2 A1k + A0k) + (beta2 / 2) (A0k - A1k)
+// which, with alpha and beta2 fixed when the join is made, is linear in the points and gives
+// equal tangent planes and equal normal curvature in every direction across the seam.
 struct Join {
     uint32_t patchA = 0;
     Edge edgeA = Edge::U0;
@@ -129,7 +136,8 @@ struct Join {
     Edge edgeB = Edge::U0;
     bool reversed = false;
     Continuity continuity = Continuity::C0;
-    double alpha = 1.0;
+    double alpha = 1.0;  // β1
+    double beta2 = 0.0;  // β2 (G2 only)
     bool operator==(const Join&) const = default;
 };
 
@@ -172,11 +180,23 @@ struct DisplaySettings {
     bool showNormals = false;
     bool showBoundaries = false;  // patch boundaries and joins coloured by continuity
     bool showIsocurves = false;   // isoparametric curves of every window, through the isoline tessellator
+    // Curvature combs (issue 21), drawn by the GPU through the isoline tessellator: teeth along every
+    // Bézier curve and, with the isocurve overlay, every isocurve (2 lines = the boundary curves),
+    // each tooth −κN long times combToothLength (outward from the centre of curvature),
+    // combDensity teeth per curve, joined by their envelope. The selected join also gets its
+    // curvature graph: combs on the isocurves that cross it, on both sides.
+    bool showCombs = false;
+    float combScale = 1.0f;
+    int combDensity = 16;  // 2..21 (three segments a tooth within the isoline tessellator's 64)
     float normalLength = 0.1f;
     std::array<float, 3> lightDir{0.4f, 0.5f, 0.75f};
     std::array<float, 3> background{0.16f, 0.17f, 0.19f};
     bool operator==(const DisplaySettings&) const = default;
 };
+
+// A comb tooth's length per unit of curvature: combScale × 0.02 × model size² (a circle of radius r
+// gets teeth of 0.16 r at scale 1).
+inline double combToothLength(const DisplaySettings& d, double modelSize) { return d.combScale * 0.02 * modelSize * modelSize; }
 
 struct Camera {
     std::array<double, 3> target{0, 0, 0};
@@ -187,6 +207,16 @@ struct Camera {
     bool orthographic = false;
     bool zUp = true;  // the teapot is +z up
     bool operator==(const Camera&) const = default;
+};
+
+// Tolerances the continuity readout checks joins against (Rhino's EdgeContinuity's three): the gap
+// between the two sides in model units, the angle between their normals in degrees (largest along
+// the seam) and the curvature deviation across the seam in percent (core/continuity_report.hpp).
+struct ContinuityTolerances {
+    double position = 0.001;
+    double angleDeg = 1.0;
+    double curvaturePct = 5.0;
+    bool operator==(const ContinuityTolerances&) const = default;
 };
 
 struct Document {
@@ -205,6 +235,7 @@ struct Document {
     std::vector<TrianglePatch> triangles;
     std::vector<BezierCurve> curves;  // cubic Bézier curves (isoline domain)
     DisplacementSettings displacement;
+    ContinuityTolerances tolerances;
 
     bool operator==(const Document&) const = default;
 };

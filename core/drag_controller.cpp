@@ -205,7 +205,7 @@ bool DragController::update(Document& doc, const DragView& view, double x, doubl
     }
     for (uint32_t p : moved_) doc.points[p] = f(start_[p]);
     applySymmetry(doc.points, pairs_, symmetry_);
-    solver_->project(doc.points);
+    projection_ = solver_->project(doc.points);
     takeChangedPoints(uploaded_, doc.points, changed_);
     return true;
 }
@@ -225,6 +225,7 @@ std::string DragController::status() const {
     std::snprintf(buf, sizeof buf, "%s %zu point%s%s: %s", kindName(kind_), moved_.size(), moved_.size() == 1 ? "" : "s", where, value.c_str());
     std::string out = buf;
     if (!typed_.empty()) out += "  [typed " + typed_ + "]";
+    if (!projection_.ok()) out += "\n" + conflictMessage(projection_);
     return out;
 }
 
@@ -258,7 +259,7 @@ std::string HeldPointEdit::set(EditSession& session, uint32_t point, const Vec3&
     std::vector<Vec3> pts = session.committed().points;
     pts[point] = position;
     applySymmetry(pts, pairs_, symmetry_);
-    solver_->project(pts);
+    projection_ = solver_->project(pts);
     session.doc.points = std::move(pts);
     return "";
 }

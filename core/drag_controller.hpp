@@ -87,6 +87,8 @@ public:
     size_t movedCount() const { return moved_.size(); }
     // One line for the editor's mode line: "Move 16 points along X: 2.5 (typed)".
     std::string status() const;
+    // What the solver reached on the last update: conflicting joins are named in status() too.
+    const Projection& projection() const { return projection_; }
     // The last applied offset, angle (degrees) and factors.
     const Vec3& lastOffset() const { return lastOffset_; }
     double lastAngle() const { return lastAngle_; }
@@ -99,6 +101,7 @@ private:
     Symmetry symmetry_;
     SymmetryPairs pairs_;
     std::unique_ptr<DragSolver> solver_;
+    Projection projection_;
     TransformKind kind_ = TransformKind::Move;
     Vec3 anchor_{0.0};
     Vec3 planeNormal_{0.0, 0.0, 1.0};
@@ -128,9 +131,11 @@ public:
     // not finite or beyond limits::kMaxCoordinate, the message (and changes nothing).
     std::string set(EditSession& session, uint32_t point, const Vec3& position);
     void reset() { solver_.reset(); }  // another document
+    const Projection& projection() const { return projection_; }  // of the last set()
 
 private:
     std::unique_ptr<DragSolver> solver_;
+    Projection projection_;
     uint32_t point_ = 0;
     uint64_t generation_ = 0;
     Symmetry symmetry_;

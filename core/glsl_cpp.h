@@ -33,6 +33,8 @@
 // evaluation), float in GLSL.
 #define PW_REAL_FN template <typename PwReal> inline
 #define PW_REAL PwReal
+#define PW_REAL_VEC2 glm::vec<2, PwReal>
+#define PW_REAL_VEC3 glm::vec<3, PwReal>
 #define PW_REAL_VEC4 glm::vec<4, PwReal>
 
 namespace pw::gpu {
@@ -66,6 +68,8 @@ using glm::vec4;
 #define PW_END_BLOCK(instance) instance;
 #define PW_REAL_FN
 #define PW_REAL float
+#define PW_REAL_VEC2 vec2
+#define PW_REAL_VEC3 vec3
 #define PW_REAL_VEC4 vec4
 
 #endif

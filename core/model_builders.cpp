@@ -23,6 +23,22 @@ std::vector<double> c1Samples(int n, double step, double (*f)(double)) {
     return s;
 }
 
+// The Bézier form of a uniform cubic B-spline whose de Boor values are f at −1, 0, ..., n + 1
+// (Böhm's conversion): interior points at the thirds of each de Boor leg, boundary points midway
+// between their neighbours, so a net built from these values is C2 across every boundary.
+std::vector<double> c2Samples(int n, double (*f)(double)) {
+    std::vector<double> d(static_cast<size_t>(n + 3)), s(static_cast<size_t>(3 * n + 1));
+    for (size_t i = 0; i < d.size(); ++i) d[i] = f(static_cast<double>(i) - 1.0);
+    for (int m = 0; m < n; ++m) {
+        s[size_t(3 * m + 1)] = (2.0 * d[size_t(m + 1)] + d[size_t(m + 2)]) / 3.0;
+        s[size_t(3 * m + 2)] = (d[size_t(m + 1)] + 2.0 * d[size_t(m + 2)]) / 3.0;
+    }
+    for (int m = 1; m < n; ++m) s[size_t(3 * m)] = 0.5 * (s[size_t(3 * m - 1)] + s[size_t(3 * m + 1)]);
+    s[0] = (d[0] + 4.0 * d[1] + d[2]) / 6.0;
+    s[size_t(3 * n)] = (d[size_t(n)] + 4.0 * d[size_t(n + 1)] + d[size_t(n + 2)]) / 6.0;
+    return s;
+}
+
 double waveX(double x) { return std::sin(x); }
 double waveY(double y) { return std::cos(0.7 * y); }
 
@@ -43,8 +59,10 @@ Document makePatchGrid(int rows, int cols, Continuity continuity) {
     // keeps the property in both directions, so the net satisfies C1 (up to rounding) everywhere.
     const int latticeCols = 3 * cols + 1, latticeRows = 3 * rows + 1;
     const double step = 1.0 / 3.0;
-    const std::vector<double> zx = c1Samples(cols, step, waveX);
-    const std::vector<double> zy = c1Samples(rows, step, waveY);
+    // C2/G2 grids use the Bézier form of a cubic B-spline instead (C2 in both directions).
+    const bool c2 = holdsCurvature(continuity);
+    const std::vector<double> zx = c2 ? c2Samples(cols, waveX) : c1Samples(cols, step, waveX);
+    const std::vector<double> zy = c2 ? c2Samples(rows, waveY) : c1Samples(rows, step, waveY);
     auto poolIndex = [&](int r, int c) { return static_cast<uint32_t>(r * latticeCols + c); };
 
     doc.points.resize(static_cast<size_t>(latticeRows) * latticeCols);

@@ -7,7 +7,8 @@ namespace pw {
 
 // A rows x cols grid of bicubic Bézier patches over [0, cols] x [0, rows] (z up), with a gentle
 // wave in z, sharing boundary points through the pool, and joined with `continuity` across every
-// interior edge (the control net is made to satisfy C1 exactly). rows, cols >= 1.
+// interior edge (the control net is made to satisfy C1 exactly, or C2 for C2/G2 joins: the Bézier
+// form of a cubic B-spline). rows, cols >= 1.
 Document makePatchGrid(int rows, int cols, Continuity continuity = Continuity::C1);
 
 // A dome of six cubic Bézier triangles around the origin (z up): the paraboloid

@@ -42,6 +42,28 @@ SurfacePoint evaluateNet(const Net16& net, Basis basis, double tension, double u
     return sp;
 }
 
+SurfaceJet evaluateJet(const Net16& net, Basis basis, double tension, double u, double v) {
+    const BasisWeights wu = basisWeights(basis, tension, u), wv = basisWeights(basis, tension, v);
+    SurfaceJet j;
+    for (int i = 0; i < 4; ++i) {
+        Vec3 row{0.0}, rowDu{0.0}, rowDuu{0.0};
+        for (int k = 0; k < 4; ++k) {
+            const Vec3& q = net[size_t(i * 4 + k)];
+            row += wu.w[k] * q;
+            rowDu += wu.dw[k] * q;
+            rowDuu += wu.ddw[k] * q;
+        }
+        j.p += wv.w[i] * row;
+        j.du += wv.w[i] * rowDu;
+        j.dv += wv.dw[i] * row;
+        j.duu += wv.w[i] * rowDuu;
+        j.duv += wv.dw[i] * rowDu;
+        j.dvv += wv.ddw[i] * row;
+    }
+    j.n = normalAt(net, basis, tension, u, v, j.du, j.dv);
+    return j;
+}
+
 Vec3 normalAt(const Net16& net, Basis basis, double tension, double u, double v, const Vec3& du, const Vec3& dv) {
     const double scale = netScale(net);
     const double scale2 = scale * scale;

@@ -24,6 +24,13 @@ struct SurfacePoint {
 // Bézier), then the normal.
 SurfacePoint evaluateNet(const Net16& net, Basis basis, double tension, double u, double v);
 
+// Position, first and second derivatives and normal: what curvature needs (continuity report,
+// curvature combs). Normal as evaluateNet's.
+struct SurfaceJet {
+    Vec3 p{0.0}, du{0.0}, dv{0.0}, duu{0.0}, duv{0.0}, dvv{0.0}, n{0.0};
+};
+SurfaceJet evaluateJet(const Net16& net, Basis basis, double tension, double u, double v);
+
 // The normal at (u, v) given the derivatives there. Where du × dv vanishes (a collapsed edge such
 // as the teapot's lid top) it uses the limit from inside the patch (the mixed derivative), and if
 // that vanishes too, the normal a small step towards the patch centre.

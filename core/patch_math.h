@@ -46,6 +46,8 @@ PW_CONST uint kDrawShaded = 0u;      // the lit surface
 PW_CONST uint kDrawFlatColour = 1u;  // one colour (wireframe, isocurves, cage)
 PW_CONST uint kDrawPlainMesh = 2u;   // a pre-tessellated mesh (the benchmark's reference)
 PW_CONST uint kDrawGridPoints = 3u;  // the control points as dots
+PW_CONST uint kDrawCombTeeth = 4u;   // curvature comb teeth (shaders/comb.tese)
+PW_CONST uint kDrawCombEnvelope = 5u;  // the line through the comb teeth's tips
 
 PW_CONST uint kNoPoint = 0xffffffffu;  // no hovered or selected point
 PW_CONST float kMaxTessLevel = 64.0f;  // Vulkan's guaranteed maxTessellationGenerationLevel

@@ -206,9 +206,11 @@ std::pair<uint32_t, uint32_t> splitPatch(Document& doc, uint32_t p, bool alongU,
             // join's ratio changes with them (B1 - B0 = alpha (A0 - A1)).
             const double scale = e == low ? t : 1.0 - t;
             if (e == high) pt = q;
-            if (j.continuity != Continuity::C0) {
+            // For C2/G2 the second differences shrink by scale²: β2 becomes β2·s² (B split) or β2/s (A split).
+            if (holdsTangent(j.continuity)) {
                 j.alpha = side == 1 ? j.alpha * scale : j.alpha / scale;
-                if (std::abs(j.alpha - 1.0) > 1e-12) j.continuity = Continuity::G1;
+                j.beta2 = side == 1 ? j.beta2 * scale * scale : j.beta2 / scale;
+                if (std::abs(j.alpha - 1.0) > 1e-12) j.continuity = holdsCurvature(j.continuity) ? Continuity::G2 : Continuity::G1;
             }
         }
         if (!drop) kept.push_back(j);
@@ -319,8 +321,11 @@ size_t joinEdges(Document& doc, uint32_t a, Edge ea, uint32_t b, Edge ebPicked, 
                 q -= 2.0 * glm::dot(r, n) * n;
             }
     }
-    double alpha = 1.0;
-    if (continuity == Continuity::G1) {
+    // Shape parameters, fixed from the current shape: α (β1) from the tangent rows' lengths (G1,
+    // G2), β2 by least squares from the second differences (G2); C1 and C2 use α = 1, β2 = 0.
+    const bool geometric = continuity == Continuity::G1 || continuity == Continuity::G2;
+    double alpha = 1.0, beta2 = 0.0;
+    if (geometric) {
         double sa = 0.0, sb = 0.0;
         for (int k = 0; k < 4; ++k) {
             sa += glm::length(pa(k, 0) - pa(k, 1));
@@ -328,16 +333,33 @@ size_t joinEdges(Document& doc, uint32_t a, Edge ea, uint32_t b, Edge ebPicked, 
         }
         alpha = sa > 1e-12 && sb > 1e-12 ? sb / sa : 1.0;
     }
+    // B's second difference that the β-constraint asks for, given B's rows 0 and 1.
+    auto curvatureRow = [&](int k, const Vec3& b0, const Vec3& b1) {
+        const Vec3 t = pa(k, 0) - pa(k, 1);
+        return 2.0 * b1 - b0 + alpha * alpha * (pa(k, 2) - 2.0 * pa(k, 1) + pa(k, 0)) + 0.5 * beta2 * t;
+    };
+    if (continuity == Continuity::G2 && !plan.match) {
+        double num = 0.0, den = 0.0;
+        for (int k = 0; k < 4; ++k) {
+            const Vec3 t = pa(k, 0) - pa(k, 1);
+            const Vec3 d = doc.points[ib(k, 2)] - curvatureRow(k, doc.points[ib(k, 0)], doc.points[ib(k, 1)]);
+            num += glm::dot(d, t);
+            den += glm::dot(t, t);
+        }
+        beta2 = den > 1e-24 ? 2.0 * num / den : 0.0;
+    }
     std::vector<uint32_t> fixed;
     if (plan.match) {
         // Match (Rhino's MatchSrf): A stays; B's boundary row goes onto A's edge, its tangent row
-        // moves with it (C0) or onto A's continuation (C1, G1).
+        // moves with it (C0) or onto A's continuation (C1, G1), and for C2/G2 its third row onto
+        // the curvature continuation (β2 = 0 when matching G2: B takes A's curvature).
         for (int k = 0; k < 4; ++k) {
             const Vec3 shift = pa(k, 0) - doc.points[ib(k, 0)];
-            doc.points[ib(k, 1)] = continuity == Continuity::C0 ? doc.points[ib(k, 1)] + shift : pa(k, 0) + alpha * (pa(k, 0) - pa(k, 1));
+            const Vec3 b1 = continuity == Continuity::C0 ? doc.points[ib(k, 1)] + shift : pa(k, 0) + alpha * (pa(k, 0) - pa(k, 1));
+            if (holdsCurvature(continuity)) doc.points[ib(k, 2)] = curvatureRow(k, pa(k, 0), b1);
+            doc.points[ib(k, 1)] = b1;
             doc.points[ib(k, 0)] = pa(k, 0);
-            fixed.push_back(A.idx[size_t(edgeSlot(ea, k, 0))]);
-            fixed.push_back(A.idx[size_t(edgeSlot(ea, k, 1))]);
+            for (int d = 0; d < (holdsCurvature(continuity) ? 3 : 2); ++d) fixed.push_back(A.idx[size_t(edgeSlot(ea, k, d))]);
         }
     }
     // Merge: B's edge entries become A's (at the midpoints when they nearly met).
@@ -354,8 +376,8 @@ size_t joinEdges(Document& doc, uint32_t a, Edge ea, uint32_t b, Edge ebPicked, 
         forEachPointIndex(doc, [from = from, to = to](uint32_t& i) {
             if (i == from) i = to;
         });
-    doc.joins.push_back(Join{a, ea, b, eb, reversed, continuity, alpha});
-    projectConstraints(doc, fixed);
+    doc.joins.push_back(Join{a, ea, b, eb, reversed, continuity, alpha, beta2});
+    if (const Projection p = projectConstraints(doc, fixed); !p.ok()) throw EditError("the join conflicts: " + conflictMessage(p));
     compactPool(doc);
     return doc.joins.size() - 1;
 }

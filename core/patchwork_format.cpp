@@ -68,6 +68,9 @@ json displayJson(const DisplaySettings& d) {
                 {"lightDir", floatArray(d.lightDir)},
                 {"background", floatArray(d.background)}};
     if (d.showIsocurves) j["showIsocurves"] = true;
+    if (d.showCombs) j["showCombs"] = true;
+    if (d.combScale != 1.0f) j["combScale"] = floatJson(d.combScale);
+    if (d.combDensity != 16) j["combDensity"] = d.combDensity;
     return j;
 }
 
@@ -268,6 +271,9 @@ DisplaySettings readDisplay(const Reader& r, const json& v, const std::string& p
     r.optional(v, path, "showNormals", [&](const json& x, const std::string& p) { d.showNormals = r.boolean(x, p); });
     r.optional(v, path, "showBoundaries", [&](const json& x, const std::string& p) { d.showBoundaries = r.boolean(x, p); });
     r.optional(v, path, "showIsocurves", [&](const json& x, const std::string& p) { d.showIsocurves = r.boolean(x, p); });
+    r.optional(v, path, "showCombs", [&](const json& x, const std::string& p) { d.showCombs = r.boolean(x, p); });
+    r.optional(v, path, "combScale", [&](const json& x, const std::string& p) { d.combScale = r.floatValue(x, p, -1e6, 1e6); });
+    r.optional(v, path, "combDensity", [&](const json& x, const std::string& p) { d.combDensity = int(r.numberInRange(x, p, 2, 21)); });
     r.optional(v, path, "normalLength", [&](const json& x, const std::string& p) { d.normalLength = r.floatValue(x, p, 0, 1e9); });
     r.optional(v, path, "lightDir", [&](const json& x, const std::string& p) { readFloats(r, x, p, d.lightDir, -1e9, 1e9); });
     r.optional(v, path, "background", [&](const json& x, const std::string& p) { readFloats(r, x, p, d.background, -1e9, 1e9); });
@@ -366,6 +372,7 @@ json documentToJson(const Document& doc) {
                              {"reversed", jn.reversed},
                              {"continuity", continuityName(jn.continuity)},
                              {"alpha", jn.alpha}});
+        if (jn.beta2 != 0.0) joins.back()["beta2"] = jn.beta2;
     }
     j["joins"] = std::move(joins);
 
@@ -395,6 +402,8 @@ json documentToJson(const Document& doc) {
     j["display"] = displayJson(doc.display);
     j["camera"] = cameraJson(doc.camera);
     if (doc.displacement != DisplacementSettings{}) j["displacement"] = displacementJson(doc.displacement);  // older files stay as they were
+    if (doc.tolerances != ContinuityTolerances{})
+        j["tolerances"] = json{{"position", doc.tolerances.position}, {"angle", doc.tolerances.angleDeg}, {"curvature", doc.tolerances.curvaturePct}};
     return j;
 }
 
@@ -501,9 +510,10 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
             jn.edgeB = r.named<Edge>(*r.member(o, path, "edgeB", true), at(path, "edgeB"), parseEdge, kEdges);
             r.optional(o, path, "reversed", [&](const json& x, const std::string& p) { jn.reversed = r.boolean(x, p); });
             r.optional(o, path, "continuity", [&](const json& x, const std::string& p) {
-                jn.continuity = r.named<Continuity>(x, p, parseContinuity, "C0, C1, G1");
+                jn.continuity = r.named<Continuity>(x, p, parseContinuity, "C0, C1, G1, C2, G2");
             });
             r.optional(o, path, "alpha", [&](const json& x, const std::string& p) { jn.alpha = r.numberInRange(x, p, 0, 1e6, true); });
+            r.optional(o, path, "beta2", [&](const json& x, const std::string& p) { jn.beta2 = r.numberInRange(x, p, -1e6, 1e6, false); });
             if (jn.patchA == jn.patchB && jn.edgeA == jn.edgeB) r.fail(path, "a join cannot connect an edge to itself");
         }
     }
@@ -551,6 +561,16 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
     if (const json* v = r.member(j, "", "display", false)) doc.display = readDisplay(r, *v, "display");
     if (const json* v = r.member(j, "", "camera", false)) doc.camera = readCamera(r, *v, "camera");
     if (const json* v = r.member(j, "", "displacement", false)) doc.displacement = readDisplacement(r, *v, "displacement");
+    if (const json* v = r.member(j, "", "tolerances", false)) {
+        r.object(*v, "tolerances");
+        ContinuityTolerances& t = doc.tolerances;
+        auto positive = [&](const char* key, double& out) {
+            r.optional(*v, "tolerances", key, [&](const json& x, const std::string& p) { out = r.numberInRange(x, p, 0, 1e9, true); });
+        };
+        positive("position", t.position);
+        positive("angle", t.angleDeg);
+        positive("curvature", t.curvaturePct);
+    }
     return doc;
 }
 
@@ -560,7 +580,7 @@ std::string serializeDocument(const Document& doc) {
     auto dump = [](const json& v) { return v.dump(-1, ' ', false, json::error_handler_t::replace); };
     std::string out = "{\n";
     bool first = true;
-    for (const char* key : {"format", "version", "name", "points", "patches", "surfaces", "joins", "triangles", "curves", "tess", "display", "camera", "displacement"}) {
+    for (const char* key : {"format", "version", "name", "points", "patches", "surfaces", "joins", "triangles", "curves", "tess", "display", "camera", "displacement", "tolerances"}) {
         auto it = j.find(key);
         if (it == j.end()) continue;
         if (!first) out += ",\n";

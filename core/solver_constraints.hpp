@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/constraint_solver.hpp"
 #include "core/document.hpp"
 
 namespace pw::solver_detail {
@@ -15,18 +16,19 @@ struct ConstraintRow {
     std::vector<std::pair<uint32_t, double>> terms;  // sorted by pool index, no zero coefficients
     uint32_t join = 0;                                // the join it comes from (kNetSeamRow: a net seam)
 };
-inline constexpr uint32_t kNetSeamRow = 0xffffffffu;
+inline constexpr uint32_t kNetSeamRow = kNetSeamJoin;
 
 // The pool indices along one join, point k of A's edge against the matching point of B's edge.
 struct JoinPoints {
-    uint32_t a0[4], a1[4], b0[4], b1[4];
+    uint32_t a0[4], a1[4], a2[4], b0[4], b1[4], b2[4];  // rows 0 (edge), 1 and 2 inward
 };
 
 // False when the join names a patch that does not exist.
 bool joinPoints(const Document& doc, const Join& join, JoinPoints& out);
 
 // Every constraint the joins impose: for each edge point k, a0k − b0k = 0 when the two sides do
-// not share the pool entry, and for C1/G1 b1k − (1+α)·a0k + α·a1k = 0. Constraints of a collapsed
+// not share the pool entry, for C1/G1/C2/G2 b1k − (1+α)·a0k + α·a1k = 0, and for C2/G2
+// b2k − 2·b1k + b0k − α²·(a2k − 2·a1k + a0k) − (β2/2)·(a0k − a1k) = 0. Constraints of a collapsed
 // edge (all four edge points one pool entry), and rows whose tangent point is the boundary point
 // itself on only one side, are left out: there the control-point condition says nothing useful.
 std::vector<ConstraintRow> buildConstraintRows(const Document& doc);

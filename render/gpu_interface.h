@@ -33,6 +33,9 @@ PW_BLOCK(layout(set = 0, binding = 0, std140) uniform Frame, FrameUniforms) {
     // else x-z).
     vec4 displace;
     vec4 planar;     // planar mapping: xy the rectangle's corner, zw 1 / its size
+    // Curvature combs (shaders/comb.tese): x tooth length per unit curvature (model units²; a tooth
+    // is −x·κN), y teeth per curve or isocurve.
+    vec4 comb;
 } PW_END_BLOCK(frame)
 
 // binding 1: per-patch tessellation overrides, indexed by patchBase + gl_PrimitiveID.
@@ -69,7 +72,7 @@ PW_BLOCK(layout(push_constant) uniform Draw, DrawPush) {
 PW_END_NAMESPACE
 
 #ifdef __cplusplus
-static_assert(sizeof(pw::gpu::FrameUniforms) == 2 * 64 + 14 * 16);
+static_assert(sizeof(pw::gpu::FrameUniforms) == 2 * 64 + 15 * 16);
 static_assert(sizeof(pw::gpu::PatchData) == 96);
 static_assert(sizeof(pw::gpu::GpuCounters) == 16);
 static_assert(sizeof(pw::gpu::DrawPush) == 96);

@@ -45,6 +45,8 @@ std::array<float, 4> continuityColor(const Continuity* c) {
         case Continuity::C0: return {0.95f, 0.25f, 0.2f, 1.0f};
         case Continuity::C1: return {0.2f, 0.85f, 0.3f, 1.0f};
         case Continuity::G1: return {0.3f, 0.5f, 1.0f, 1.0f};
+        case Continuity::C2: return {0.95f, 0.85f, 0.2f, 1.0f};
+        case Continuity::G2: return {0.75f, 0.45f, 1.0f, 1.0f};
     }
     return {1, 1, 1, 1};
 }

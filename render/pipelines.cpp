@@ -200,6 +200,17 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
                          {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(*itese[s])}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
             set.isocurves[size_t(s)] = targets.build(cd);
         }
+        PipelineDesc cd;
+        cd.tess = true;
+        cd.patchControlPoints = 4;
+        cd.depthWrite = false;
+        cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, mod(spirv::comb_tesc)},
+                     {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::comb_tese)}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
+        set.combs = targets.build(cd);
+        cd.patchControlPoints = 16;
+        cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, mod(spirv::isocomb_tesc)},
+                     {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::isocomb_tese)}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
+        set.isoCombs = targets.build(cd);
     }
     const spirv::Blob* meshVert[kVaryingsVariants] = {&spirv::mesh_vert, &spirv::mesh_vert_full};
     for (int v = 0; v < kVaryingsVariants; ++v) {
@@ -287,6 +298,8 @@ void PipelineSet::release() {
     }
     for (auto& p : set.curves) kill(p);
     for (auto& p : set.isocurves) kill(p);
+    kill(set.combs);
+    kill(set.isoCombs);
     for (auto& p : set.mesh) kill(p);
     kill(set.gridLines);
     kill(set.gridPoints);

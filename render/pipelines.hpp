@@ -58,6 +58,8 @@ struct PipelineHandles {
     // The isoline domain, by spacing variant: Bézier curves (4 points) and the isocurve overlay of
     // every window (16 points).
     std::array<VkPipeline, kSpacingVariants> curves{}, isocurves{};
+    // Curvature combs (shaders/comb.*): on Bézier curves and on windows' isocurves; equal spacing.
+    VkPipeline combs{}, isoCombs{};
     std::array<VkPipeline, kVaryingsVariants> mesh{};  // plain pre-tessellated triangles
     VkPipeline gridLines = VK_NULL_HANDLE;   // control net lines (over everything)
     VkPipeline gridPoints = VK_NULL_HANDLE;  // control points

@@ -118,6 +118,7 @@ void Renderer::setDocument(const Document& doc, std::shared_ptr<const HeightMap>
     m.displaced = bool(m.map);
     m.scene = uploadSurfaceScene(dev_, doc, m.map.get());
     m.overlays = uploadOverlayScene(dev_, doc);
+    m.joins = doc.joins;
     const std::array<double, 4> rect = planarRect(doc);
     m.displace = {0.0f, 0.0f, ds.mapping == DisplacementMapping::Planar ? 1.0f : 0.0f, doc.camera.zUp ? 1.0f : 0.0f};
     m.planar = {float(rect[0]), float(rect[1]), float(1.0 / rect[2]), float(1.0 / rect[3])};
@@ -184,6 +185,7 @@ Renderer::FramePlan Renderer::prepareFrame(const RenderOptions& opt, VkRect2D ar
     fu.isoline = {ts.isolineLevels[0], ts.isolineLevels[1], 0.0f, 0.0f};
     fu.displace = {opt.displacementScale, opt.displacementBias, m.displace.z, m.displace.w};
     fu.planar = m.planar;
+    fu.comb = {float(combToothLength(ds, modelSize_)), float(std::clamp(ds.combDensity, 2, 21)), 5.0f, 0.0f};
     std::memcpy(m.frameUbo.mapped, &fu, sizeof(fu));
     plan.vm = vm;
     plan.variant = spacingVariant(ts.spacing);
@@ -270,7 +272,7 @@ FrameStats Renderer::render(const RenderOptions& opt) {
     // Curves count as overlays: the statistics are the surface's triangles.
     const bool ground = opt.groundGridStep > 0.0 && std::isfinite(opt.groundGridStep);
     const bool anyOverlay =
-        ds.showWireframe || ds.showNormals || ds.showBoundaries || ds.showGrid || ds.showIsocurves || m.scene.curveCount || ground;
+        ds.showWireframe || ds.showNormals || ds.showBoundaries || ds.showGrid || ds.showIsocurves || ds.showCombs || m.scene.curveCount || ground;
     if (anyOverlay) {
         target_.pauseRendering(cmd);
         m.queries->statsEnd(cmd);
@@ -335,6 +337,35 @@ FrameStats Renderer::render(const RenderOptions& opt) {
         gpu::DrawPush cp;
         cp.color = {0.95f, 0.35f, 0.25f, 1.0f};
         stats.draws += recordCurveDraws(cmd, pipes_.layout, m.scene, cp, budget);
+    }
+    // Curvature combs: teeth, then the envelope through their tips, on every curve, on the isocurve
+    // overlay's lines, and on the five isocurves crossing the selected join on either side.
+    if (ds.showCombs && !opt.plainMesh) {
+        gpu::DrawPush kp;
+        const uint32_t lines = uint32_t(std::ceil(std::clamp(ts.isolineLevels[0], 1.0f, 64.0f)));
+        const uint32_t perIso = budget == 0 ? UINT32_MAX : std::max(1u, budget / (65u * lines));
+        const Join* graph = opt.combJoin >= 0 && size_t(opt.combJoin) < m.joins.size() ? &m.joins[size_t(opt.combJoin)] : nullptr;
+        for (uint32_t mode : {gpu::kDrawCombTeeth, gpu::kDrawCombEnvelope}) {
+            kp.drawMode = mode;
+            kp.color = mode == gpu::kDrawCombTeeth ? glm::vec4(0.95f, 0.5f, 0.85f, 1.0f) : glm::vec4(1.0f, 0.8f, 0.95f, 1.0f);
+            if (m.scene.curveCount) {
+                vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.combs);
+                stats.draws += recordCurveDraws(cmd, pipes_.layout, m.scene, kp, budget);
+            }
+            if ((ds.showIsocurves || graph) && m.scene.windowCount) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.isoCombs);
+            if (ds.showIsocurves && m.scene.windowCount)
+                for (uint32_t dir : {0u, 1u}) {
+                    kp.isoDirection = dir;
+                    stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perIso, kp, nullptr, budget);
+                }
+            if (graph) {  // the isocurves across the seam: along u for a u0/u1 edge, along v for v0/v1
+                const auto across = [](Edge e) { return e == Edge::U0 || e == Edge::U1 ? 0u : 1u; };
+                kp.isoDirection = across(graph->edgeA) | 2u;
+                stats.draws += recordWindowDraw(cmd, pipes_.layout, m.scene, graph->patchA, kp);
+                kp.isoDirection = across(graph->edgeB) | 2u;
+                stats.draws += recordWindowDraw(cmd, pipes_.layout, m.scene, graph->patchB, kp);
+            }
+        }
     }
     if (ds.showBoundaries && m.overlays.boundaryVertexCount) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.colorLines);

@@ -38,6 +38,9 @@ struct RenderOptions {
     // The document's displacement scale and bias (live while a slider is dragged; the map, the
     // mapping and the windows' own values come with setDocument).
     float displacementScale = 0.0f, displacementBias = 0.0f;
+    // With display.showCombs: the join whose curvature graph is drawn (combs on the isocurves that
+    // cross it, both sides), -1 none.
+    int combJoin = -1;
 };
 
 // The pane rectangle `opt` draws into, clamped to a target of `extent` (the whole target when

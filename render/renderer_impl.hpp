@@ -43,6 +43,7 @@ struct Renderer::Impl {
     HeightTexture height;
     bool displaced = false;
     glm::vec4 displace{0.0f}, planar{0.0f};
+    std::vector<Join> joins;  // the document's, for the curvature graph across a join (windows = patch indices)
 };
 
 // Submits `cmd` to the device's queue and waits for it on `fence` (reset first).

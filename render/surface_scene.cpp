@@ -91,6 +91,22 @@ SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc, const HeightMa
     return s;
 }
 
+uint32_t recordWindowDraw(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t window, gpu::DrawPush push) {
+    for (const BasisRun& run : s.runs) {
+        if (window < run.first || window >= run.first + run.count) continue;
+        const VkDeviceSize zero = 0;
+        vkCmdBindVertexBuffers(cmd, 0, 1, s.pool.buffer.ptr(), &zero);
+        vkCmdBindIndexBuffer(cmd, s.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
+        push.basis = run.matrix;
+        push.basisKind = run.basisKind;
+        push.patchBase = window;
+        vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(gpu::DrawPush), &push);
+        vkCmdDrawIndexed(cmd, 16, 1, 16 * window, 0, 0);
+        return 1;
+    }
+    return 0;
+}
+
 uint32_t recordSurfaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t perDraw,
                             gpu::DrawPush push, const std::vector<uint8_t>* levels, uint32_t vertexBudget) {
     if (s.windowCount == 0) return 0;

@@ -52,6 +52,9 @@ SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc, const HeightMa
 // or, with `levels` (per-window segment bounds) and a non-zero `vertexBudget`, as many windows as
 // keep windows x (max level + 2)^2 <= vertexBudget. Returns the number of draws. `push` supplies
 // drawMode/colour; basis fields are filled per run.
+// One window alone (the curvature graph across a join); 0 draws for a window the scene lacks.
+uint32_t recordWindowDraw(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t window, gpu::DrawPush push);
+
 uint32_t recordSurfaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t perDraw,
                             gpu::DrawPush push, const std::vector<uint8_t>* levels = nullptr,
                             uint32_t vertexBudget = kCpuDrawVertexBudget);

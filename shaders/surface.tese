@@ -9,6 +9,7 @@
 // that need UV, patch id or curvatures (lit, normal, zebra and wireframe pass position and normal
 // only: every varying costs per-vertex work in lavapipe's draw module and attribute bandwidth on GPUs).
 #include "common.glsl"
+#include "core/curvature_math.h"
 #ifdef DISPLACE
 #include "displacement.glsl"
 #endif
@@ -142,10 +143,7 @@ void main() {
     // curvatures from the fundamental forms (curvature shading only)
     vec2 curv = vec2(0.0);
     if (curvature) {
-        float E = dot(d.du, d.du), F = dot(d.du, d.dv), G = dot(d.dv, d.dv);
-        float L = dot(d.duu, n), M = dot(d.duv, n), N = dot(d.dvv, n);
-        float den = E * G - F * F;
-        if (den > 1e-12 * (E * G + 1e-30)) curv = vec2((L * N - M * M) / den, (E * N - 2.0 * F * M + G * L) / (2.0 * den));
+        curv = gaussMeanCurvature(d.du, d.dv, d.duu, d.duv, d.dvv, n);
     }
     outUV = vec2(u, v);
     outPatch = draw.patchBase + uint(gl_PrimitiveID);

@@ -8,6 +8,7 @@
 // lean (normal), -DPOINT_MODE (the normal-vector overlay) or -DFULL_VARYINGS (UV = (u, v), patch id, Gaussian and mean curvature from the
 // second derivatives when a curvature shading is on).
 #include "common.glsl"
+#include "core/curvature_math.h"
 #ifdef DISPLACE
 #include "displacement.glsl"  // -DDISPLACE: moved along the normal by the height map
 #endif
@@ -113,10 +114,7 @@ void main() {
     if (frame.modes.w == kShadingGaussCurvature || frame.modes.w == kShadingMeanCurvature) {
         vec3 duu, duv, dvv;
         secondDerivs(u, v, w, duu, duv, dvv);
-        float E = dot(du, du), F = dot(du, dv), G = dot(dv, dv);
-        float L = dot(duu, n), M = dot(duv, n), N = dot(dvv, n);
-        float den = E * G - F * F;
-        if (den > 1e-12 * (E * G + 1e-30)) curv = vec2((L * N - M * M) / den, (E * N - 2.0 * F * M + G * L) / (2.0 * den));
+        curv = gaussMeanCurvature(du, dv, duu, duv, dvv, n);
     }
     outCurv = curv;
 #endif

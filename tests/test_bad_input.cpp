@@ -351,7 +351,7 @@ TEST(GoodInputCli, InfoAndConvertRoundTrip) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("points      290"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("patches     32"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("joins       52  (C0 0, C1 46, G1 6)"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("joins       52  (C0 0, C1 46, G1 6, C2 0, G2 0)"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("max constraint residual"), std::string::npos) << r.output;
 
     r = test::runCommand(bin() + " info --json " + quote(teapot) + " 2>/dev/null");

@@ -1,13 +1,18 @@
-// Continuity report: a C1 grid measures ~0 on every join; breaking one tangent point shows up on
+// Continuity report and the live readout: a C1 grid measures ~0 on every join; breaking one tangent point shows up on
 // that join only; reversed and mirrored parameterisations, G1 ratios and C0 gaps are measured right.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
 
 #include "core/constraint_solver.hpp"
 #include "core/continuity_report.hpp"
+#include "core/continuity_watch.hpp"
+#include "core/document_io.hpp"
 #include "core/document.hpp"
 #include "core/model_builders.hpp"
+#include "tests/support.hpp"
 
 using namespace pw;
 
@@ -141,4 +146,56 @@ TEST(Continuity, G1RatioIsMeasuredWithAlpha) {
     EXPECT_LE(jc.c1Residual, 1e-12);
     EXPECT_LE(jc.c0Gap, 1e-12);
     EXPECT_LE(jc.normalAngleDeg, 1e-6);  // G1: tangent planes agree
+}
+
+// The editor's live readout (core/continuity_watch.hpp): everything when settled, only the joins
+// next to the dragged points while a drag is under way, tolerances applied.
+TEST(ContinuityWatch, LiveNextToTheDragAndFullWhenSettled) {
+    Document doc = makePatchGrid(4, 4, Continuity::C2);
+    ContinuityWatch watch;
+    watch.update(doc, 1, false, {});
+    ASSERT_EQ(watch.report().size(), doc.joins.size());
+    EXPECT_EQ(watch.lastMeasured().size(), doc.joins.size());
+    EXPECT_EQ(watch.outOfTolerance(), 0u);
+    // Lattice (0, 1) of the 4x4 grid: the third row of patch 0 from its u1 seam, on the grid's
+    // border (no v seam uses it). Moving it alone breaks that join's curvature (no solver here).
+    const uint32_t p = lat(4, 0, 1);
+    doc.points[p].z += 0.05;
+    watch.update(doc, 2, true, {p});
+    EXPECT_LT(watch.lastMeasured().size(), doc.joins.size());  // only the neighbourhood
+    EXPECT_EQ(watch.lastMeasured(), joinsTouching(doc, {p}));
+    EXPECT_EQ(watch.outOfTolerance(), 1u);
+    const size_t broken = findJoin(doc, 0, 1);
+    EXPECT_EQ(watch.failures(broken), kCurvatureOut);
+    watch.update(doc, 2, true, {p});  // same version: nothing measured again
+    doc.tolerances.curvaturePct = 1e6;
+    watch.update(doc, 2, false, {});  // the tolerances changed: everything again
+    EXPECT_EQ(watch.lastMeasured().size(), doc.joins.size());
+    EXPECT_EQ(watch.outOfTolerance(), 0u);
+}
+
+// `patchwork info --json` reports the same numbers and tolerance verdicts.
+TEST(ContinuityWatch, InfoJsonReportsTolerances) {
+    Document doc = makePatchGrid(2, 2, Continuity::C2);
+    doc.points[lat(2, 0, 1)].z += 0.05;
+    const std::filesystem::path dir = test::freshTempDir("info_tol");
+    saveDocument(doc, dir / "broken.patchwork");
+    const test::RunResult r = test::runCommand(test::patchworkBinary().string() + " info --json '" + (dir / "broken.patchwork").string() + "'");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const nlohmann::json j = nlohmann::json::parse(r.output);
+    EXPECT_EQ(j["joins"]["C2"], 4);
+    EXPECT_EQ(j["joinsOutOfTolerance"], 1);
+    EXPECT_GT(j["largest"]["curvatureDeviationPct"].get<double>(), 5.0);
+    EXPECT_DOUBLE_EQ(j["tolerances"]["curvaturePct"].get<double>(), 5.0);
+    const auto report = continuityReport(doc, 32);
+    size_t flagged = 0;
+    for (size_t k = 0; k < j["joinReport"].size(); ++k) {
+        const nlohmann::json& e = j["joinReport"][k];
+        EXPECT_NEAR(e["curvatureDeviationPct"].get<double>(), report[k].curvatureDeviationPct, 1e-9);
+        if (!e["outOfTolerance"].empty()) {
+            ++flagged;
+            EXPECT_EQ(e["outOfTolerance"], nlohmann::json::array({"curvature"}));
+        }
+    }
+    EXPECT_EQ(flagged, 1u);
 }

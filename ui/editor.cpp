@@ -11,6 +11,7 @@
 
 #include "core/displacement.hpp"
 #include "core/camera_math.hpp"
+#include "core/patch_ops.hpp"
 #include "core/document_io.hpp"
 #include "core/errors.hpp"
 #include "core/file_io.hpp"
@@ -225,11 +226,15 @@ render::RenderOptions Editor::viewOptions() const {
     o.hoveredPoint = hovered_;
     o.selectedPoint = sel_.points.empty() ? -1 : int(sel_.points.front());
     if (showGround_) o.groundGridStep = niceGridStep(modelSize(doc_));
+    // The curvature graph across the selected patch's highlighted edge, when it is joined.
+    if (doc_.display.showCombs && sel_.patch >= 0 && size_t(sel_.patch) < doc_.patches.size())
+        o.combJoin = findJoin(doc_, uint32_t(sel_.patch), lastEdge_);
     return o;
 }
 
 void Editor::drawUi() {
     trace_.beginFrame();
+    continuity_.update(doc_, documentVersion(), interacting(), session_.selectedPoints());
     if (teaching_.presentation) {
         teaching_.drawPresentationOverlay(*this);
     } else {

@@ -97,6 +97,7 @@ private:
     void frameBox(const Bounds& box) override;
     const PanelLayout& layout() const override { return sidePanels_.layout(); }
     const FrameReport& frameReport() const override { return report_; }
+    const ContinuityWatch& continuityWatch() const override { return continuity_; }
 
     // CommandHost (editor_commands.cpp): what the commands ask of the window.
     bool hasWindow() const override { return true; }
@@ -195,6 +196,7 @@ private:
     // The frame.
     uint64_t frameCount_ = 0;
     FrameReport report_;  // the last frame's times and the 3D view's statistics
+    ContinuityWatch continuity_;  // the joins' measured continuity, updated every frame (live next to a drag)
     double dragMs_ = 0.0;  // this frame's drag solve + upload
     bool screenshotRequested_ = false;
     std::string screenshotPath_;

@@ -101,7 +101,7 @@ void Editor::drawJoinPanel() {
         traceItem("join.back");
     } else {
         ImGui::Text("Joined %s to %s: the preview shows the result", patchEdgeName(join_.a).c_str(), patchEdgeName(join_.b).c_str());
-        for (Continuity c : {Continuity::C0, Continuity::C1, Continuity::G1}) {
+        for (Continuity c : {Continuity::C0, Continuity::C1, Continuity::G1, Continuity::C2, Continuity::G2}) {
             ImGui::SameLine();
             if (ImGui::RadioButton(std::string(continuityName(c)).c_str(), join_.continuity == c) && join_.continuity != c) {
                 endJoinPreview(false);  // take it back, run it again with c

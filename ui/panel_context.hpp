@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/command_table.hpp"
+#include "core/continuity_watch.hpp"
 #include "core/edit_session.hpp"
 #include "render/stats.hpp"
 
@@ -57,6 +58,7 @@ public:
     virtual void frameBox(const Bounds& box) = 0;  // fit the view to the box
     virtual const PanelLayout& layout() const = 0;
     virtual const FrameReport& frameReport() const = 0;
+    virtual const ContinuityWatch& continuityWatch() const = 0;  // the joins' live continuity, this frame's
 };
 
 // A button that runs a command line: disabled when the command is, its help as tooltip, traced

@@ -63,6 +63,7 @@ void InspectorPanel::setPoint(PanelContext& ctx, uint32_t p, const Vec3& positio
     const std::string error = held_.set(ctx.session(), p, position);
     if (!error.empty()) return ctx.showError(error);
     ctx.documentChanged(false);
+    if (!held_.projection().ok()) ctx.showError(conflictMessage(held_.projection()));
 }
 
 namespace {

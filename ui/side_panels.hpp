@@ -58,9 +58,10 @@ public:
     void draw(PanelContext& ctx);
 
 private:
-    std::vector<JoinContinuity> continuity_;
     double residual_ = 0.0;      // maxConstraintResidual at version_
     uint64_t version_ = ~0ull;
+    ContinuityTolerances tol_;   // the fields, while edited
+    bool onlyFailing_ = false;
 };
 
 class SidePanels {

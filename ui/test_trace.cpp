@@ -114,6 +114,12 @@ void TestTrace::write(const Editor& e) {
     j["selectedTriangle"] = sel.triangle;
     j["isocurves"] = doc.display.showIsocurves;
     j["maxConstraintResidual"] = e.mode_ == Interaction::None ? maxConstraintResidual(doc) : -1.0;
+    // The live continuity readout (what the Continuity panel and the orange seams show).
+    j["joinsOutOfTolerance"] = e.continuity_.outOfTolerance();
+    nlohmann::json curv = nlohmann::json::array();
+    for (const JoinContinuity& c : e.continuity_.report()) curv.push_back(c.curvatureDeviationPct);
+    j["curvatureDeviationPct"] = std::move(curv);
+    j["combs"] = doc.display.showCombs;
     // Where the points are on screen, in the pane the mouse works in (the whole window unless split).
     const std::array<float, 4> pane = teaching.viewSplit() ? e.viewArea_ : std::array<float, 4>{0.0f, 0.0f, float(ww), float(wh)};
     const auto proj = projectPoints(e.cam_, doc.points, int(pane[2]), int(pane[3]));

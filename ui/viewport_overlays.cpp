@@ -100,6 +100,19 @@ void Editor::drawPaneOverlays(const std::array<float, 4>& pane, bool active) {
 
     drawJoinOverlay(line);
 
+    // Joins out of their tolerances (the Continuity panel's red rows), live while dragging: with the
+    // Boundaries overlay, which colours joins by kind, these stand out thick in orange.
+    if (doc_.display.showBoundaries) {
+        size_t drawn = 0;
+        for (const JoinContinuity& c : continuity_.report()) {
+            if (!continuity_.failures(c.join) || c.join >= doc_.joins.size() || ++drawn > 512) continue;
+            const Join& j = doc_.joins[c.join];
+            if (j.patchA >= doc_.patches.size()) continue;
+            const std::vector<Vec3> curve = boundaryCurve(doc_, j.patchA, j.edgeA);
+            for (size_t k = 0; k + 1 < curve.size(); ++k) line(curve[k], curve[k + 1], IM_COL32(255, 140, 40, 255), 4.5f);
+        }
+    }
+
     // Selected patch: its boundary curves, the highlighted edge (extrude, unjoin) brighter.
     if (sel_.patch >= 0 && sel_.patch < int(doc_.patches.size()))
         for (int e = 0; e < 4; ++e) {
