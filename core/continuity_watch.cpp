@@ -24,7 +24,8 @@ std::vector<size_t> joinsTouching(const Document& doc, const std::vector<uint32_
 
 void ContinuityWatch::update(const Document& doc, uint64_t version, bool interacting, const std::vector<uint32_t>& moving) {
     const bool sameJoins = joinCount_ == doc.joins.size() && report_.size() == doc.joins.size();
-    if (version == version_ && sameJoins && tolerances_ == doc.tolerances) return;
+    // A drag moves points without a new version: while interacting, measure every frame.
+    if (!interacting && version == version_ && sameJoins && tolerances_ == doc.tolerances) return;
     measured_.clear();
     if (interacting && sameJoins) {
         measured_ = joinsTouching(doc, moving);

@@ -18,7 +18,7 @@ public:
     static constexpr int kSamples = 16;
 
     // `version` changes whenever the document does; `interacting` during a drag, whose moved
-    // points are `moving`.
+    // points are `moving` (measured again on every call then: a drag changes no version).
     void update(const Document& doc, uint64_t version, bool interacting, const std::vector<uint32_t>& moving);
 
     const std::vector<JoinContinuity>& report() const { return report_; }  // one entry per join, by join index

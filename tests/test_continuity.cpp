@@ -167,7 +167,8 @@ TEST(ContinuityWatch, LiveNextToTheDragAndFullWhenSettled) {
     EXPECT_EQ(watch.outOfTolerance(), 1u);
     const size_t broken = findJoin(doc, 0, 1);
     EXPECT_EQ(watch.failures(broken), kCurvatureOut);
-    watch.update(doc, 2, true, {p});  // same version: nothing measured again
+    watch.update(doc, 2, true, {p});  // a drag changes no version: measured again, same verdict
+    EXPECT_EQ(watch.failures(broken), kCurvatureOut);
     doc.tolerances.curvaturePct = 1e6;
     watch.update(doc, 2, false, {});  // the tolerances changed: everything again
     EXPECT_EQ(watch.lastMeasured().size(), doc.joins.size());

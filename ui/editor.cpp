@@ -226,9 +226,14 @@ render::RenderOptions Editor::viewOptions() const {
     o.hoveredPoint = hovered_;
     o.selectedPoint = sel_.points.empty() ? -1 : int(sel_.points.front());
     if (showGround_) o.groundGridStep = niceGridStep(modelSize(doc_));
-    // The curvature graph across the selected patch's highlighted edge, when it is joined.
-    if (doc_.display.showCombs && sel_.patch >= 0 && size_t(sel_.patch) < doc_.patches.size())
+    // The curvature graph across the selected patch's highlighted edge when it is joined, or, with
+    // points selected (dragged), across the first join next to them.
+    if (doc_.display.showCombs && sel_.patch >= 0 && size_t(sel_.patch) < doc_.patches.size()) {
         o.combJoin = findJoin(doc_, uint32_t(sel_.patch), lastEdge_);
+    } else if (doc_.display.showCombs && !sel_.points.empty()) {
+        const std::vector<size_t> near = joinsTouching(doc_, sel_.points);
+        if (!near.empty()) o.combJoin = int(near.front());
+    }
     return o;
 }
 

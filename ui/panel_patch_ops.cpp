@@ -74,10 +74,11 @@ void PatchOpsPanel::draw(PanelContext& ctx) {
     patchAndEdge("B", joinB_, joinEdgeB_);
     joinA_ = std::clamp(joinA_, 0, std::max(np - 1, 0));
     joinB_ = std::clamp(joinB_, 0, std::max(np - 1, 0));
-    const char* kinds[] = {"C0", "C1", "G1"};
+    const char* kinds[] = {"C0", "C1", "G1", "C2", "G2"};
     ImGui::SetNextItemWidth(80);
-    ImGui::Combo("Continuity", &joinKind_, kinds, 3);
-    tip("C0: shared edge; C1: equal tangents; G1: tangents in a fixed ratio");
+    ImGui::Combo("Continuity", &joinKind_, kinds, 5);
+    tip("C0: shared edge; C1: equal tangents; G1: tangents in a fixed ratio; C2: equal first and second derivatives; "
+        "G2: equal tangent planes and curvature (shape parameters fixed when joining)");
     ImGui::SameLine();
     commandButton(ctx, "Join", "join " + std::to_string(joinA_) + ":" + kEdgeNames[joinEdgeA_] + " " + std::to_string(joinB_) + ":" +
                                    kEdgeNames[joinEdgeB_] + " " + kinds[joinKind_]);
