@@ -34,6 +34,12 @@ bool joinPoints(const Document& doc, const Join& join, JoinPoints& out) {
     return true;
 }
 
+bool joinPointsInPool(const JoinPoints& jp, size_t n) {
+    for (int k = 0; k < 4; ++k)
+        if (jp.a0[k] >= n || jp.a1[k] >= n || jp.a2[k] >= n || jp.b0[k] >= n || jp.b1[k] >= n || jp.b2[k] >= n) return false;
+    return true;
+}
+
 namespace {
 
 // Merges repeated indices, drops zero coefficients and sorts by index.
@@ -62,11 +68,7 @@ std::vector<ConstraintRow> buildConstraintRows(const Document& doc) {
     for (size_t j = 0; j < doc.joins.size(); ++j) {
         const Join& join = doc.joins[j];
         JoinPoints jp;
-        if (!joinPoints(doc, join, jp)) continue;
-        bool valid = true;
-        for (int k = 0; k < 4; ++k)
-            valid = valid && jp.a0[k] < n && jp.a1[k] < n && jp.a2[k] < n && jp.b0[k] < n && jp.b1[k] < n && jp.b2[k] < n;
-        if (!valid) continue;
+        if (!joinPoints(doc, join, jp) || !joinPointsInPool(jp, n)) continue;
         const uint32_t ji = static_cast<uint32_t>(j);
         // C0: the two sides' edge points coincide (nothing to do when they share the pool entry).
         for (int k = 0; k < 4; ++k)
@@ -99,7 +101,7 @@ std::vector<ConstraintRow> buildConstraintRows(const Document& doc) {
     // Bézier nets that keep C1: each seam point midway between its neighbours across the seam.
     for (const auto& [before, seam, after] : netC1Triples(doc)) {
         if (before >= n || seam >= n || after >= n) continue;
-        ConstraintRow row = makeRow({{before, 1.0}, {seam, -2.0}, {after, 1.0}}, kNetSeamRow);
+        ConstraintRow row = makeRow({{before, 1.0}, {seam, -2.0}, {after, 1.0}}, kNetSeamJoin);
         if (!row.terms.empty()) rows.push_back(std::move(row));
     }
     return rows;

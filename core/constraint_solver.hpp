@@ -71,7 +71,8 @@ private:
 // One-shot projection (builds and factorises a DragSolver).
 Projection projectConstraints(Document& doc, const std::vector<uint32_t>& fixedPoints, SolverOptions options = {});
 
-// "joins 3 and 7 conflict (held to 2.1e-3)" for a failed projection; "" when it succeeded.
+// "joins 3 and 7 cannot all hold (over-constrained; the worst condition is off by 0.0021)" for a
+// failed projection (at most 8 joins named); "" when it succeeded.
 std::string conflictMessage(const Projection& p);
 
 // Largest residual of any join row (C1/G1 tangent rows, C2/G2 curvature rows), and the largest distance between

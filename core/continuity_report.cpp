@@ -88,9 +88,7 @@ struct Seam {
 
 bool validJoin(const Document& doc, const Join& join, solver_detail::JoinPoints& jp) {
     const size_t n = doc.points.size();
-    bool valid = solver_detail::joinPoints(doc, join, jp);
-    for (int k = 0; valid && k < 4; ++k)
-        valid = jp.a0[k] < n && jp.a1[k] < n && jp.a2[k] < n && jp.b0[k] < n && jp.b1[k] < n && jp.b2[k] < n;
+    bool valid = solver_detail::joinPoints(doc, join, jp) && solver_detail::joinPointsInPool(jp, n);
     for (uint32_t p : {join.patchA, join.patchB})
         for (int s = 0; valid && s < 16; ++s) valid = doc.patches[p].idx[size_t(s)] < n;
     return valid;
@@ -152,21 +150,6 @@ std::vector<JoinContinuity> continuityReport(const Document& doc, int samples, c
         out.reserve(only.size());
         for (size_t j : only)
             if (j < doc.joins.size()) report(j);
-    }
-    return out;
-}
-
-SeamCurvature seamCurvature(const Document& doc, size_t j, int samples) {
-    SeamCurvature out;
-    solver_detail::JoinPoints jp;
-    if (j >= doc.joins.size() || !validJoin(doc, doc.joins[j], jp)) return out;
-    samples = std::max(samples, 1);
-    const Seam seam(doc, doc.joins[j]);
-    for (int s = 0; s <= samples; ++s) {
-        const Seam::Sample q = seam.at(s, samples);
-        out.t.push_back(static_cast<double>(s) / samples);
-        out.kappaA.push_back(q.kappaA);
-        out.kappaB.push_back(q.kappaB);
     }
     return out;
 }

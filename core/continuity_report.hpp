@@ -31,12 +31,4 @@ uint8_t toleranceFailures(const JoinContinuity& c, Continuity continuity, const 
 // Samples each seam at `samples`+1 points; `only` (when not empty) limits the report to those joins.
 std::vector<JoinContinuity> continuityReport(const Document& doc, int samples = 32, const std::vector<size_t>& only = {});
 
-// The normal curvature across join j on each side at `samples`+1 points along the seam (A's edge
-// parameter t = i / samples): the curvature graph across the join. B's values are given in A's
-// orientation (sign flipped when B's normal points the other way). Empty for an invalid join.
-struct SeamCurvature {
-    std::vector<double> t, kappaA, kappaB;
-};
-SeamCurvature seamCurvature(const Document& doc, size_t j, int samples = 64);
-
 }  // namespace pw

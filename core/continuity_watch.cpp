@@ -23,7 +23,7 @@ std::vector<size_t> joinsTouching(const Document& doc, const std::vector<uint32_
 }
 
 void ContinuityWatch::update(const Document& doc, uint64_t version, bool interacting, const std::vector<uint32_t>& moving) {
-    const bool sameJoins = joinCount_ == doc.joins.size() && report_.size() == doc.joins.size();
+    const bool sameJoins = report_.size() == doc.joins.size();
     // A drag moves points without a new version: while interacting, measure every frame.
     if (!interacting && version == version_ && sameJoins && tolerances_ == doc.tolerances) return;
     measured_.clear();
@@ -39,7 +39,6 @@ void ContinuityWatch::update(const Document& doc, uint64_t version, bool interac
     failures_.assign(report_.size(), 0);
     for (const JoinContinuity& c : report_) failures_[c.join] = toleranceFailures(c, doc.joins[c.join].continuity, doc.tolerances);
     version_ = version;
-    joinCount_ = doc.joins.size();
     tolerances_ = doc.tolerances;
 }
 

@@ -29,7 +29,6 @@ public:
 
 private:
     uint64_t version_ = ~0ull;
-    size_t joinCount_ = ~size_t(0);
     ContinuityTolerances tolerances_;
     std::vector<JoinContinuity> report_;
     std::vector<uint8_t> failures_;

@@ -14,9 +14,8 @@ namespace pw::solver_detail {
 // One scalar constraint Σ coef·p[idx] = 0, applied identically to x, y and z.
 struct ConstraintRow {
     std::vector<std::pair<uint32_t, double>> terms;  // sorted by pool index, no zero coefficients
-    uint32_t join = 0;                                // the join it comes from (kNetSeamRow: a net seam)
+    uint32_t join = 0;                                // the join it comes from (kNetSeamJoin: a net seam)
 };
-inline constexpr uint32_t kNetSeamRow = kNetSeamJoin;
 
 // The pool indices along one join, point k of A's edge against the matching point of B's edge.
 struct JoinPoints {
@@ -25,6 +24,8 @@ struct JoinPoints {
 
 // False when the join names a patch that does not exist.
 bool joinPoints(const Document& doc, const Join& join, JoinPoints& out);
+// True when every index of `jp` lies inside a pool of n points.
+bool joinPointsInPool(const JoinPoints& jp, size_t n);
 
 // Every constraint the joins impose: for each edge point k, a0k − b0k = 0 when the two sides do
 // not share the pool entry, for C1/G1/C2/G2 b1k − (1+α)·a0k + α·a1k = 0, and for C2/G2

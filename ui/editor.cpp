@@ -239,7 +239,7 @@ render::RenderOptions Editor::viewOptions() const {
 
 void Editor::drawUi() {
     trace_.beginFrame();
-    continuity_.update(doc_, documentVersion(), interacting(), session_.selectedPoints());
+    continuity_.update(doc_, documentVersion(), interacting(), interacting() ? session_.selectedPoints() : std::vector<uint32_t>{});
     if (teaching_.presentation) {
         teaching_.drawPresentationOverlay(*this);
     } else {

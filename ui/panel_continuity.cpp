@@ -1,7 +1,7 @@
 // Continuity (right panel): the joins' measured continuity against the document's tolerances
 // (core/continuity_watch.hpp: live next to a drag, everything when it settles), the tolerances
-// themselves (the `tolerances` command), the largest constraint residual, and the curvature graph
-// across the selected join (the `comb` overlay draws it in the viewport).
+// themselves (the `tolerances` command), the largest constraint residual, and a table of the joins
+// with the values out of tolerance in red.
 #include <imgui.h>
 
 #include <cstdio>
