@@ -29,13 +29,13 @@ void runDrag(benchmark::State& state, const std::vector<uint32_t>& dragged, pw::
     const double x0 = 640, y0 = 360;
     const pw::Vec3 pivot = pw::transformPivot(doc, sel, dragged, pw::PivotMode::Median, pw::Vec3(0.0));
     if (!drag.begin(doc, pw::TransformStart{dragged, pivot, kind, true}, view, x0 + 40.0, y0)) return state.SkipWithError("the drag did not start");
-    std::vector<float> gpuPool(3 * doc.points.size());  // stands in for the mapped vertex buffer
+    std::vector<float> gpuPool(4 * doc.points.size());  // stands in for the mapped vertex buffer
     size_t totalChanged = 0;
     int step = 0;
     for (auto _ : state) {
         const double d = 2.0 * (step++ % 50);  // the mouse keeps moving
         if (!drag.update(doc, view, x0 + d, y0 - 0.5 * d, false)) return state.SkipWithError("the mouse ray missed the drag plane");
-        pw::writeFloat3(doc.points, drag.changed(), gpuPool.data());
+        pw::writePoolPositions(doc.points, drag.changed(), gpuPool.data());
         totalChanged += drag.changed().size();
         benchmark::DoNotOptimize(gpuPool.data());
     }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/rational_eval.hpp"
+
 namespace pw {
 
 Vec3 evaluateCurve(const std::array<Vec3, 4>& p, double t) {
@@ -25,6 +27,18 @@ std::vector<Vec3> sampleCurve(const std::array<Vec3, 4>& p, int segments) {
     segments = std::max(segments, 1);
     std::vector<Vec3> out(size_t(segments) + 1);
     for (int i = 0; i <= segments; ++i) out[size_t(i)] = evaluateCurve(p, double(i) / double(segments));
+    return out;
+}
+
+std::vector<Vec3> sampleCurve(const Document& doc, const BezierCurve& c, int segments) {
+    const std::array<Vec3, 4> p = curvePoints(doc, c);
+    const std::array<double, 4> w{pointWeight(doc, c.idx[0]), pointWeight(doc, c.idx[1]), pointWeight(doc, c.idx[2]), pointWeight(doc, c.idx[3])};
+    if (w == std::array<double, 4>{1.0, 1.0, 1.0, 1.0}) return sampleCurve(p, segments);
+    segments = std::max(segments, 1);
+    std::vector<Vec3> out(size_t(segments) + 1);
+    for (int i = 0; i <= segments; ++i) out[size_t(i)] = evaluateRationalCurve(p, w, double(i) / double(segments)).p;
+    out.front() = p[0];
+    out.back() = p[3];
     return out;
 }
 

@@ -18,5 +18,7 @@ Vec3 curveTangent(const std::array<Vec3, 4>& p, double t);
 std::array<Vec3, 4> curvePoints(const Document& doc, const BezierCurve& c);
 // segments + 1 points at t = i / segments (segments >= 1).
 std::vector<Vec3> sampleCurve(const std::array<Vec3, 4>& p, int segments);
+// The same for a curve of the document, rational where its points have weights (exact ends).
+std::vector<Vec3> sampleCurve(const Document& doc, const BezierCurve& c, int segments);
 
 }  // namespace pw

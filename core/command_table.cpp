@@ -138,6 +138,7 @@ CommandTable makeCommandTable() {
     addFileCommands(t);
     addSelectCommands(t);
     addModelCommands(t);
+    addPrimitiveCommands(t);
     addViewCommands(t);
     addDisplacementCommands(t);
     return t;

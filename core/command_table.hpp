@@ -116,6 +116,7 @@ CommandTable makeCommandTable();
 void addFileCommands(CommandTable& t);       // core/commands_file.cpp: new, open, import, save, undo, …
 void addSelectCommands(CommandTable& t);     // core/commands_select.cpp: select, move, rotate, scale, cursor
 void addModelCommands(CommandTable& t);      // core/commands_model.cpp: add, delete, duplicate, join, split, …
+void addPrimitiveCommands(CommandTable& t);  // core/commands_primitives.cpp: exact sphere, cylinder, cone, torus; weight
 void addViewCommands(CommandTable& t);       // core/commands_view.cpp: views, frame, overlays, shading, levels
 void addDisplacementCommands(CommandTable& t);  // core/commands_displacement.cpp: height map, scale, bias, mapping
 

@@ -7,7 +7,7 @@
 #include <numbers>
 
 #include "core/curvature_math.h"
-#include "core/patch_eval.hpp"
+#include "core/rational_eval.hpp"
 #include "core/solver_constraints.hpp"
 
 namespace pw {
@@ -51,11 +51,11 @@ double curvatureAlong(const SurfaceJet& s, const Vec3& x) {
 struct Seam {
     const Join& join;
     const Patch &A, &B;
-    Net16 netA, netB;
+    WindowNet netA, netB;
     double flip;
 
     Seam(const Document& doc, const Join& j)
-        : join(j), A(doc.patches[j.patchA]), B(doc.patches[j.patchB]), netA(gatherNet(doc, A.idx)), netB(gatherNet(doc, B.idx)),
+        : join(j), A(doc.patches[j.patchA]), B(doc.patches[j.patchB]), netA(gatherWindow(doc, A.idx)), netB(gatherWindow(doc, B.idx)),
           flip(edgeSign(j.edgeA) * edgeSign(j.edgeB) * (j.reversed ? -1.0 : 1.0) > 0 ? -1.0 : 1.0) {}
 
     struct Sample {
@@ -69,7 +69,7 @@ struct Seam {
         double ua = 0, va = 0, ub = 0, vb = 0;
         edgeParam(join.edgeA, t, ua, va);
         edgeParam(join.edgeB, tb, ub, vb);
-        Sample out{evaluateJet(netA, A.basis, A.tension, ua, va), evaluateJet(netB, B.basis, B.tension, ub, vb)};
+        Sample out{evaluateWindowJet(netA, A.basis, A.tension, ua, va), evaluateWindowJet(netB, B.basis, B.tension, ub, vb)};
         out.b.n *= flip;
         out.normals = usableUnit(out.a.n) && usableUnit(out.b.n);
         if (!out.normals) return out;

@@ -5,7 +5,7 @@
 #include <map>
 
 #include "core/bezier_triangle.hpp"
-#include "core/patch_eval.hpp"
+#include "core/rational_eval.hpp"
 
 namespace pw {
 
@@ -92,7 +92,7 @@ std::vector<WindowDisplacement> windowDisplacements(const Document& doc, const s
             wd.uvRect = {float(c / cols), float(r / rows), float((c + 1) / cols), float((r + 1) / rows)};
         }
         if (!map || map->empty()) continue;
-        const Net16 net = gatherNet(doc, pi.idx);
+        const WindowNet net = gatherWindow(doc, pi.idx);
         const int depth = pi.basis == Basis::Bezier ? 0 : 1;  // the points the control shader keys levels on
         for (int e = 0; e < 4; ++e) {
             std::array<uint32_t, 4> key{};
@@ -102,7 +102,7 @@ std::vector<WindowDisplacement> windowDisplacements(const Document& doc, const s
             const std::array<float, 4> r = wd.uvRect;
             const EdgeDetail d = detailOf(key, [&](double t) {
                 const auto [u, v] = param(t);
-                if (planar) return planarUv(evaluateNet(net, pi.basis, pi.tension, u, v).p, rect, zUp);
+                if (planar) return planarUv(evaluateWindow(net, pi.basis, pi.tension, u, v).p, rect, zUp);
                 return std::array{r[0] * (1 - u) + r[2] * u, r[1] * (1 - v) + r[3] * v};
             });
             wd.detail[size_t(e)] = float(d.detail);

@@ -2,10 +2,12 @@
 
 #include "core/basis.hpp"
 #include "core/enum_names.hpp"
+#include "core/errors.hpp"
 #include "core/patch_math.h"
 
 #include <algorithm>
 #include <limits>
+#include <string>
 
 namespace pw {
 
@@ -98,6 +100,52 @@ Net16 gatherNet(const Document& doc, const std::array<uint32_t, 16>& idx) {
     Net16 net;
     for (int k = 0; k < 16; ++k) net[k] = doc.points[idx[k]];
     return net;
+}
+
+std::optional<Weights16> gatherWeights(const Document& doc, const std::array<uint32_t, 16>& idx) {
+    if (doc.weights.empty()) return std::nullopt;
+    Weights16 w;
+    bool rational = false;
+    for (int k = 0; k < 16; ++k) {
+        w[k] = pointWeight(doc, idx[k]);
+        rational = rational || w[k] != 1.0;
+    }
+    if (!rational) return std::nullopt;
+    return w;
+}
+
+void trimWeights(std::vector<double>& weights) {
+    while (!weights.empty() && weights.back() == 1.0) weights.pop_back();
+}
+
+void setPointWeight(Document& doc, uint32_t i, double w) {
+    if (i >= doc.points.size())
+        throw EditError("point " + std::to_string(i) + " does not exist (the document has " + std::to_string(doc.points.size()) + ")");
+    if (!(w > 0.0) || !(w <= kMaxWeight))
+        throw EditError("a weight must be positive and at most 1e6 (got " + std::to_string(w) + ")");
+    if (i >= doc.weights.size()) {
+        if (w == 1.0) return;
+        doc.weights.resize(i + 1, 1.0);
+    }
+    doc.weights[i] = w;
+    trimWeights(doc.weights);
+}
+
+std::optional<std::array<uint32_t, 2>> weightedTrianglePoint(const Document& doc) {
+    if (doc.weights.empty()) return std::nullopt;
+    for (uint32_t t = 0; t < doc.triangles.size(); ++t)
+        for (uint32_t i : doc.triangles[t].idx)
+            if (pointWeight(doc, i) != 1.0) return std::array<uint32_t, 2>{t, i};
+    return std::nullopt;
+}
+
+void remapWeights(Document& doc, const std::vector<uint32_t>& remap, size_t newSize) {
+    if (doc.weights.empty()) return;
+    std::vector<double> out(newSize, 1.0);
+    for (size_t i = 0; i < remap.size() && i < doc.weights.size(); ++i)
+        if (remap[i] < newSize) out[remap[i]] = doc.weights[i];
+    trimWeights(out);
+    doc.weights = std::move(out);
 }
 
 Bounds computeBounds(const std::vector<Vec3>& points) {

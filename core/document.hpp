@@ -236,9 +236,28 @@ struct Document {
     std::vector<BezierCurve> curves;  // cubic Bézier curves (isoline domain)
     DisplacementSettings displacement;
     ContinuityTolerances tolerances;
+    // Rational patches (issue 21): the weight of each pool point, for every item that uses it
+    // (homogeneous evaluation, core/rational_math.h). Points past the end weigh 1, and the vector
+    // is kept without trailing 1s (setPointWeight, trimWeights), so a polynomial document has none
+    // and two documents with the same weights compare equal.
+    std::vector<double> weights;
 
     bool operator==(const Document&) const = default;
 };
+
+// Weights must be positive and finite; this bound keeps the homogeneous sums well inside a float.
+inline constexpr double kMaxWeight = 1e6;
+inline double pointWeight(const Document& doc, uint32_t i) { return i < doc.weights.size() ? doc.weights[i] : 1.0; }
+// Sets the weight of pool point i (throws EditError outside (0, kMaxWeight]).
+void setPointWeight(Document& doc, uint32_t i, double w);
+void trimWeights(std::vector<double>& weights);  // drops trailing 1s
+inline bool isRational(const Document& doc) { return !doc.weights.empty(); }
+// Bézier triangles evaluate without weights: the first triangle slot whose point has a weight other
+// than 1, as {triangle, point}, if any (such documents are refused; core/rational_eval.hpp).
+std::optional<std::array<uint32_t, 2>> weightedTrianglePoint(const Document& doc);
+// Rewrites the weights after a pool renumbering: new point remap[i] takes old point i's weight
+// (remap[i] == UINT32_MAX: dropped); newSize points in all.
+void remapWeights(Document& doc, const std::vector<uint32_t>& remap, size_t newSize);
 
 // One 4x4 window to evaluate or draw: a patch, or a window of a surface's net.
 struct PatchInstance {
@@ -280,6 +299,8 @@ void forEachPointIndex(Doc& doc, F&& f) {
 
 // Control points of one window.
 Net16 gatherNet(const Document& doc, const std::array<uint32_t, 16>& idx);
+// Their weights, or none when all sixteen are 1 (a polynomial window).
+std::optional<Weights16> gatherWeights(const Document& doc, const std::array<uint32_t, 16>& idx);
 
 struct Bounds {
     Vec3 min{0.0}, max{0.0};

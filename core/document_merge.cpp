@@ -21,6 +21,11 @@ MergedRange mergeDocument(Document& into, const Document& from) {
     r.firstPoint = uint32_t(into.points.size());
     r.pointCount = uint32_t(from.points.size());
     into.points.insert(into.points.end(), from.points.begin(), from.points.end());
+    if (!from.weights.empty()) {  // the weights come along, at their points' new places
+        into.weights.resize(r.firstPoint, 1.0);
+        into.weights.insert(into.weights.end(), from.weights.begin(), from.weights.end());
+        trimWeights(into.weights);
+    }
     r.firstPatch = appendRenumbered(into.patches, from.patches, r.firstPoint);
     r.patchCount = uint32_t(from.patches.size());
     r.firstSurface = appendRenumbered(into.surfaces, from.surfaces, r.firstPoint);

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "core/patch_eval.hpp"
+#include "core/rational_eval.hpp"
 #include "core/patch_ops.hpp"
 #include "core/picking.hpp"
 
@@ -12,13 +12,13 @@ namespace pw {
 
 std::vector<Vec3> boundaryCurve(const Document& doc, uint32_t p, Edge e, int n) {
     const Patch& pt = doc.patches[p];
-    const Net16 net = gatherNet(doc, pt.idx);
+    const WindowNet net = gatherWindow(doc, pt.idx);
     std::vector<Vec3> out;
     out.reserve(size_t(n + 1));
     for (int s = 0; s <= n; ++s) {
         const double t = double(s) / n;
         const double u = e == Edge::U0 ? 0.0 : e == Edge::U1 ? 1.0 : t, v = e == Edge::V0 ? 0.0 : e == Edge::V1 ? 1.0 : t;
-        out.push_back(evaluateNet(net, pt.basis, pt.tension, u, v).p);
+        out.push_back(evaluateWindow(net, pt.basis, pt.tension, u, v).p);
     }
     return out;
 }

@@ -1,4 +1,4 @@
-// Errors about bad input or unwritable output. The message always names the file and, where known,
+// Errors about bad input, unwritable output and refused edits. The message always names the file and, where known,
 // the line or the field, e.g. "teapot.bpt:17: expected 3 numbers, found 2".
 #pragma once
 
@@ -32,6 +32,12 @@ private:
 class OutputError : public std::runtime_error {
 public:
     OutputError(const std::string& path, const std::string& what);
+};
+
+// An edit the user asked for cannot be made (the message says why); the document is unchanged.
+class EditError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
 };
 
 }  // namespace pw

@@ -326,7 +326,7 @@ std::string exportGltfBytes(const Document& doc, bool binary, const GltfExportOp
         indices.reserve(doc.curves.size() * size_t(level) * 2);
         for (const BezierCurve& c : doc.curves) {
             const auto first = uint32_t(positions.size());
-            for (const Vec3& q : sampleCurve(curvePoints(doc, c), level)) positions.push_back({float(q.x), float(q.y), float(q.z)});
+            for (const Vec3& q : sampleCurve(doc, c, level)) positions.push_back({float(q.x), float(q.y), float(q.z)});
             for (uint32_t i = first + 1; i < positions.size(); ++i) indices.insert(indices.end(), {i - 1, i});
         }
         st.curveSegments = indices.size() / 2;

@@ -128,9 +128,10 @@ std::vector<Join> detectJoins(const Document& doc, JoinDetectOptions options) {
 }
 
 void mergeCoincidentPoints(Document& doc, double tolerance) {
-    // Key: the coordinates' bit patterns, with -0.0 folded into +0.0 (equal values, one point).
+    // Key: the coordinates' bit patterns, with -0.0 folded into +0.0 (equal values, one point), and
+    // the weight's: points of different weights are different points of a rational surface.
     struct Key {
-        uint64_t x, y, z;
+        uint64_t x, y, z, w = 0;
         bool operator==(const Key&) const = default;
     };
     struct KeyHash {
@@ -138,6 +139,7 @@ void mergeCoincidentPoints(Document& doc, double tolerance) {
             uint64_t h = k.x * 0x9E3779B97F4A7C15ull;
             h ^= (k.y + 0x632BE59BD9B4E019ull + (h << 6) + (h >> 2));
             h ^= (k.z + 0x85157AF5ull + (h << 6) + (h >> 2));
+            h ^= (k.w + 0x2545F491ull + (h << 6) + (h >> 2));
             return static_cast<size_t>(h);
         }
     };
@@ -145,6 +147,7 @@ void mergeCoincidentPoints(Document& doc, double tolerance) {
 
     std::vector<uint32_t> remap(doc.points.size());
     std::vector<Vec3> pool;
+    std::vector<double> poolWeights;
     pool.reserve(doc.points.size());
     if (tolerance > 0.0) {
         // Cells of the tolerance's size: a point within it of a kept one lies in one of the 27
@@ -162,13 +165,14 @@ void mergeCoincidentPoints(Document& doc, double tolerance) {
                     for (int dz = -1; dz <= 1 && found == UINT32_MAX; ++dz)
                         if (const auto it = cells.find(cell(p, dx, dy, dz)); it != cells.end())
                             for (uint32_t q : it->second)
-                                if (glm::length(pool[q] - p) <= tolerance) {
+                                if (glm::length(pool[q] - p) <= tolerance && poolWeights[q] == pointWeight(doc, uint32_t(i))) {
                                     found = q;
                                     break;
                                 }
             if (found == UINT32_MAX) {
                 found = static_cast<uint32_t>(pool.size());
                 pool.push_back(p);
+                poolWeights.push_back(pointWeight(doc, uint32_t(i)));
                 cells[cell(p, 0, 0, 0)].push_back(found);
             }
             remap[i] = found;
@@ -178,7 +182,7 @@ void mergeCoincidentPoints(Document& doc, double tolerance) {
         first.reserve(doc.points.size());
         for (size_t i = 0; i < doc.points.size(); ++i) {
             const Vec3& p = doc.points[i];
-            const Key key{bits(p.x), bits(p.y), bits(p.z)};
+            const Key key{bits(p.x), bits(p.y), bits(p.z), bits(pointWeight(doc, uint32_t(i)))};
             auto [it, inserted] = first.emplace(key, static_cast<uint32_t>(pool.size()));
             if (inserted) pool.push_back(p);
             remap[i] = it->second;
@@ -189,6 +193,7 @@ void mergeCoincidentPoints(Document& doc, double tolerance) {
         if (idx < remap.size()) idx = remap[idx];
     };
     forEachPointIndex(doc, rewrite);
+    remapWeights(doc, remap, pool.size());
     doc.points = std::move(pool);
 }
 

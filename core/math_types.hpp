@@ -14,5 +14,7 @@ using Mat4 = std::array<std::array<double, 4>, 4>;
 
 // Sixteen control points of one bicubic window, row-major: index = i*4 + j, i = v row, j = u column.
 using Net16 = std::array<Vec3, 16>;
+// Their weights (rational windows, core/rational_eval.hpp).
+using Weights16 = std::array<double, 16>;
 
 }  // namespace pw

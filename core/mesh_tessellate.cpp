@@ -18,7 +18,7 @@
 
 #include "core/limits.hpp"
 #include "core/bezier_triangle.hpp"
-#include "core/patch_eval.hpp"
+#include "core/rational_eval.hpp"
 #include "core/triangle_mesh.hpp"
 
 namespace pw {
@@ -225,8 +225,8 @@ void tessellateWindows(const Document& doc, const std::vector<PatchInstance>& wi
     for (size_t w = 0; w < W; ++w) {
         const PatchInstance& inst = windows[w];
         const GridWeights& gw = weightsFor(inst.basis, inst.tension);
-        const Net16 net = gatherNet(doc, inst.idx);
-        evaluateGrid(net, inst.idx, gw, pts);
+        const WindowNet net = gatherWindow(doc, inst.idx);
+        evaluateWindowGrid(net, inst.idx, gw, pts);
 
         const WeldMode mode = inst.basis == Basis::Bezier ? WeldMode::Bezier
                               : inst.surface >= 0        ? WeldMode::SurfaceGrid

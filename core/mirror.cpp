@@ -40,6 +40,7 @@ MirrorResult mirrorItems(Document& doc, const std::vector<uint32_t>& selected, i
             q[axis] = 2.0 * planeAt - q[axis];
             out = uint32_t(doc.points.size());
             doc.points.push_back(q);
+            if (pointWeight(doc, p) != 1.0) setPointWeight(doc, out, pointWeight(doc, p));
         }
         image[p] = out;
         return out;

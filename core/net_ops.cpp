@@ -25,6 +25,16 @@ uint32_t appendPoint(Document& doc, const Vec3& p) {
     return uint32_t(doc.points.size() - 1);
 }
 
+// Operations that make new points as combinations of a net's points (inserting rows, converting to
+// patches and back) are polynomial: they refuse points with weights rather than change the surface.
+template <class Indices>
+void refuseWeights(const Document& doc, const Indices& idx, const char* what) {
+    for (uint32_t i : idx)
+        if (pointWeight(doc, i) != 1.0)
+            throw EditError(std::string(what) + " is not defined for points with weights yet (point " + std::to_string(i) + " weighs " +
+                            std::to_string(pointWeight(doc, i)) + ")");
+}
+
 // Bézier nets tile exactly with 3k + 1 open or 3k closed rows; a closed direction needs 2 windows.
 void checkBezierSide(uint32_t n, bool closed, const char* what) {
     if (closed && (n % 3 != 0 || n < 6))
@@ -136,6 +146,7 @@ void deleteNetSurface(Document& doc, uint32_t s) {
 
 void insertNetRow(Document& doc, uint32_t si, uint32_t at) {
     Surface s = netAt(doc, si);
+    refuseWeights(doc, s.idx, "inserting a row or column");
     if (at > s.rows) throw EditError("row " + std::to_string(at) + " is outside the net (0.." + std::to_string(s.rows) + ")");
     if (s.rows + 1 > limits::kMaxNetSide) throw EditError("a net has at most " + std::to_string(limits::kMaxNetSide) + " rows");
     ++s.rows;
@@ -282,6 +293,7 @@ BezierGrid netToBezierGrid(const Document& doc, const Surface& s) {
 std::vector<uint32_t> convertNetToPatches(Document& doc, uint32_t si) {
     Document d = doc;
     const Surface s = netAt(d, si);
+    refuseWeights(d, s.idx, "converting a net to patches");
     const BezierGrid g = netToBezierGrid(d, s);
     if (g.points.empty()) throw EditError("the net has no whole window to convert");
     const uint32_t wu = s.closedU ? g.cols / 3 : (g.cols - 1) / 3, wv = s.closedV ? g.rows / 3 : (g.rows - 1) / 3;
@@ -320,6 +332,7 @@ uint32_t convertPatchesToNet(Document& doc, std::vector<uint32_t> patches, doubl
     if (patches.empty()) throw EditError("there are no patches to convert");
     for (uint32_t p : patches) {
         if (p >= doc.patches.size()) throw EditError("no patch " + std::to_string(p));
+        refuseWeights(doc, doc.patches[p].idx, "converting patches to a net");
         if (doc.patches[p].basis != Basis::Bezier) throw EditError("patch " + std::to_string(p) + " is not a Bézier patch");
     }
     // Neighbours through whole shared edges, same orientation.

@@ -82,7 +82,7 @@ ObjFiles exportObjText(const Document& doc, int requestedLevel, const std::strin
     uint32_t nextId = uint32_t(positions.size()) + 1;
     for (const BezierCurve& c : doc.curves) {
         std::vector<uint32_t> ids;
-        for (const Vec3& q : sampleCurve(curvePoints(doc, c), level)) {
+        for (const Vec3& q : sampleCurve(doc, c, level)) {
             const auto p = up({float(q.x), float(q.y), float(q.z)});
             put(o, "v %.9g %.9g %.9g\n", p[0], p[1], p[2]);
             ids.push_back(nextId++);

@@ -7,7 +7,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "core/bezier_triangle.hpp"
-#include "core/patch_eval.hpp"
+#include "core/rational_eval.hpp"
 
 namespace pw {
 
@@ -88,7 +88,7 @@ std::vector<uint32_t> unoccludedPoints(const Document& doc, const Camera& cam, i
         if (windowHidden(doc, pi)) continue;
         if (weights.basis != pi.basis || weights.tension != pi.tension || weights.nu != level)
             weights = makeGridWeights(pi.basis, pi.tension, level, level);
-        evaluateGrid(gatherNet(doc, pi.idx), pi.idx, weights, grid);
+        evaluateWindowGrid(gatherWindow(doc, pi.idx), pi.idx, weights, grid);
         v.resize(grid.size());
         for (size_t i = 0; i < grid.size(); ++i) v[i] = depth.project(grid[i].p);
         const int n1 = level + 1;

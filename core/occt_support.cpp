@@ -7,6 +7,7 @@
 #include <STEPControl_Controller.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
+#include <TColStd_Array2OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
 
 namespace pw::occt {
@@ -23,12 +24,14 @@ std::unique_lock<std::mutex> lock() {
     return held;
 }
 
-Handle(Geom_BSplineSurface) bezierSurface(const std::array<Vec3, 16>& net) {
+Handle(Geom_BSplineSurface) bezierSurface(const std::array<Vec3, 16>& net, const Weights16* weights) {
     TColgp_Array2OfPnt poles(1, 4, 1, 4);
+    TColStd_Array2OfReal w(1, 4, 1, 4);
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j) {
             const Vec3& p = net[size_t(i * 4 + j)];
             poles.SetValue(j + 1, i + 1, gp_Pnt(p.x, p.y, p.z));
+            w.SetValue(j + 1, i + 1, weights ? (*weights)[size_t(i * 4 + j)] : 1.0);
         }
     TColStd_Array1OfReal knots(1, 2);
     knots(1) = 0.0;
@@ -36,6 +39,7 @@ Handle(Geom_BSplineSurface) bezierSurface(const std::array<Vec3, 16>& net) {
     TColStd_Array1OfInteger mults(1, 2);
     mults(1) = 4;
     mults(2) = 4;
+    if (weights) return new Geom_BSplineSurface(poles, w, knots, knots, mults, mults, 3, 3);
     return new Geom_BSplineSurface(poles, knots, knots, mults, mults, 3, 3);
 }
 

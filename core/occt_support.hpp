@@ -18,7 +18,8 @@ namespace pw::occt {
 std::unique_lock<std::mutex> lock();
 
 // A bicubic Bézier patch (row-major 16 points, row i = v, column j = u) as an exact B-spline
-// surface: poles(j + 1, i + 1), knots {0, 1} of multiplicity 4 both ways.
-Handle(Geom_BSplineSurface) bezierSurface(const std::array<Vec3, 16>& net);
+// surface: poles(j + 1, i + 1), knots {0, 1} of multiplicity 4 both ways; rational (the same
+// weights at the same places) when `weights` is given.
+Handle(Geom_BSplineSurface) bezierSurface(const std::array<Vec3, 16>& net, const Weights16* weights = nullptr);
 
 }  // namespace pw::occt

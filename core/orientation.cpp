@@ -1,7 +1,7 @@
 #include "core/orientation.hpp"
 
 
-#include "core/patch_eval.hpp"
+#include "core/rational_eval.hpp"
 #include "core/patch_ops.hpp"
 
 namespace pw {
@@ -12,10 +12,10 @@ double positionFlux(const Document& doc, int n) {
     const Vec3 c = 0.5 * (b.min + b.max);
     double flux = 0.0;
     for (const PatchInstance& inst : expandPatches(doc)) {
-        const Net16 net = gatherNet(doc, inst.idx);
+        const WindowNet net = gatherWindow(doc, inst.idx);
         for (int i = 0; i < n; ++i)
             for (int j = 0; j < n; ++j) {
-                const SurfacePoint sp = evaluateNet(net, inst.basis, inst.tension, (j + 0.5) / n, (i + 0.5) / n);
+                const SurfacePoint sp = evaluateWindow(net, inst.basis, inst.tension, (j + 0.5) / n, (i + 0.5) / n);
                 // (p - c)·(du × dv) du dv is (p - c)·n dA
                 flux += glm::dot(sp.p - c, glm::cross(sp.du, sp.dv)) / (double(n) * n);
             }

@@ -104,6 +104,17 @@ PW_FN vec3 canonicalBoundaryPoint(vec3 q0, vec3 q1, vec3 q2, vec3 q3, float t, b
     return r;
 }
 
+// The same for homogeneous points (core/rational_math.h: w·P, w − 1), the sum still homogeneous;
+// rationalPoint() of it is the rational boundary's point, and for weights 1 the same bits as above.
+PW_FN vec4 canonicalBoundaryPointH(vec4 q0, vec4 q1, vec4 q2, vec4 q3, float t, bool reversed) {
+    vec4 p0 = reversed ? q3 : q0, p1 = reversed ? q2 : q1, p2 = reversed ? q1 : q2, p3 = reversed ? q0 : q3;
+    PW_PRECISE float tc = reversed ? 1.0f - t : t;
+    PW_PRECISE float sc = 1.0f - tc;
+    PW_PRECISE vec4 w = bernstein3(tc, sc);
+    PW_PRECISE vec4 r = w.x * p0 + w.y * p1 + w.z * p2 + w.w * p3;
+    return r;
+}
+
 // The outer level of an edge under the shared-edge rule (core/edge_levels.hpp): `stored` as is when
 // the edge's level is fixed (every window on it has its own levels), else the level the settings
 // give (`computed`, the same on both sides) raised to `stored` (the windows' largest own level).

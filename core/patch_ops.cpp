@@ -7,6 +7,7 @@
 #include "core/constraint_solver.hpp"
 #include "core/bezier_triangle.hpp"
 #include "core/patch_eval.hpp"
+#include "core/rational_eval.hpp"
 
 namespace pw {
 
@@ -33,9 +34,11 @@ void checkBezier(const Document& doc, uint32_t p, const char* what) {
         throw EditError(std::string(what) + " needs a Bézier patch; patch " + std::to_string(p) + " uses another basis");
 }
 
-uint32_t addPoint(Document& doc, const Vec3& v) {
+uint32_t addPoint(Document& doc, const Vec3& v, double weight = 1.0) {
     doc.points.push_back(v);
-    return uint32_t(doc.points.size() - 1);
+    const uint32_t i = uint32_t(doc.points.size() - 1);
+    if (weight != 1.0) setPointWeight(doc, i, weight);
+    return i;
 }
 
 Edge opposite(Edge e) {
@@ -89,7 +92,7 @@ namespace {
 template <class Item>
 uint32_t duplicateWithOwnPoints(Document& doc, std::vector<Item>& items, uint32_t k, const Vec3& offset, const char* kind) {
     Item copy = items[k];
-    for (uint32_t& i : copy.idx) i = addPoint(doc, doc.points[i] + offset);
+    for (uint32_t& i : copy.idx) i = addPoint(doc, doc.points[i] + offset, pointWeight(doc, i));
     copy.name = (copy.name.empty() ? std::string(kind) + " " + std::to_string(k) : copy.name) + " copy";
     items.push_back(std::move(copy));
     return uint32_t(items.size() - 1);
@@ -160,8 +163,11 @@ std::pair<uint32_t, uint32_t> splitPatch(Document& doc, uint32_t p, bool alongU,
     checkBezier(doc, p, "split");
     if (!(t > 1e-6 && t < 1.0 - 1e-6)) throw EditError("split parameter must lie strictly between 0 and 1");
     const Patch src = doc.patches[p];
-    const Net16 net = gatherNet(doc, src.idx);
-    const auto [first, second] = alongU ? splitBezierU(net, t) : splitBezierV(net, t);
+    // Rational patches split in homogeneous form: each half keeps the exact surface and gets weights.
+    const WeightedSplit halves = splitWindowBezier(gatherWindow(doc, src.idx), alongU, t);
+    const Net16& first = halves.first.points;
+    const Net16& second = halves.second.points;
+    const auto weightOf = [](const WindowNet& h, size_t s) { return h.weights ? (*h.weights)[s] : 1.0; };
     // Edges of the first half: the low edge is kept, the far edge is the new seam.
     const Edge low = alongU ? Edge::U0 : Edge::V0, high = alongU ? Edge::U1 : Edge::V1;
     const Edge side0 = alongU ? Edge::V0 : Edge::U0, side1 = alongU ? Edge::V1 : Edge::U1;
@@ -175,8 +181,8 @@ std::pair<uint32_t, uint32_t> splitPatch(Document& doc, uint32_t p, bool alongU,
         keepB[size_t(edgeSlot(high, k, 0))] = true;
     }
     for (size_t s = 0; s < 16; ++s) {
-        if (!keepA[s]) a.idx[s] = addPoint(doc, first[s]);
-        if (!keepB[s]) b.idx[s] = addPoint(doc, second[s]);
+        if (!keepA[s]) a.idx[s] = addPoint(doc, first[s], weightOf(halves.first, s));
+        if (!keepB[s]) b.idx[s] = addPoint(doc, second[s], weightOf(halves.second, s));
     }
     for (int k = 0; k < 4; ++k) b.idx[size_t(edgeSlot(low, k, 0))] = a.idx[size_t(edgeSlot(high, k, 0))];
     // The split curve's end points coincide with the original corners: keep those shared.
@@ -184,8 +190,9 @@ std::pair<uint32_t, uint32_t> splitPatch(Document& doc, uint32_t p, bool alongU,
     const int cornerSlot[4] = {0, 3, 12, 15};
     for (int c = 0; c < 4; ++c) {
         const size_t s = size_t(cornerSlot[c]);
-        if (doc.points[a.idx[s]] == doc.points[corner[c]]) a.idx[s] = corner[c];
-        if (doc.points[b.idx[s]] == doc.points[corner[c]]) b.idx[s] = corner[c];
+        const auto same = [&](uint32_t i) { return doc.points[i] == doc.points[corner[c]] && pointWeight(doc, i) == pointWeight(doc, corner[c]); };
+        if (same(a.idx[s])) a.idx[s] = corner[c];
+        if (same(b.idx[s])) b.idx[s] = corner[c];
     }
     doc.patches[p] = a;
     doc.patches.push_back(b);
@@ -389,7 +396,7 @@ void unjoin(Document& doc, size_t j) {
     Patch& B = doc.patches[jn.patchB];
     for (int k = 0; k < 4; ++k) {
         const size_t s = size_t(edgeSlot(jn.edgeB, k, 0));
-        B.idx[s] = addPoint(doc, doc.points[B.idx[s]]);
+        B.idx[s] = addPoint(doc, doc.points[B.idx[s]], pointWeight(doc, B.idx[s]));
     }
 }
 
@@ -461,6 +468,7 @@ void compactPool(Document& doc) {
             pts.push_back(doc.points[i]);
         }
     if (pts.size() == doc.points.size()) return;
+    remapWeights(doc, remap, pts.size());
     doc.points = std::move(pts);
     forEachPointIndex(doc, [&](uint32_t& i) { i = remap[i]; });
 }

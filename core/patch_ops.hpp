@@ -11,13 +11,9 @@
 #include <utility>
 
 #include "core/document.hpp"
+#include "core/errors.hpp"
 
 namespace pw {
-
-class EditError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
 
 // A flat 1x1 Bézier patch of side `size` centred at `center`, in the ground plane (z = const for
 // z-up documents, y = const otherwise). Returns the new patch index.

@@ -8,7 +8,7 @@
 #include <glm/matrix.hpp>
 
 #include "core/bezier_triangle.hpp"
-#include "core/patch_eval.hpp"
+#include "core/rational_eval.hpp"
 #include "core/selection.hpp"
 
 namespace pw {
@@ -129,12 +129,12 @@ std::optional<SurfaceHit> pickSurface(const Document& doc, const Ray& ray, int l
     for (size_t w = 0; w < inst.size(); ++w) {
         const PatchInstance& pi = inst[w];
         if (skipped(pi.idx) || windowHidden(doc, pi)) continue;
-        const Net16 net = gatherNet(doc, pi.idx);
+        const WindowNet net = gatherWindow(doc, pi.idx);
         // Bounding-sphere rejection first (the control net bounds the Bézier/spline window).
-        if (!raySphereMayHit(ray, net.begin(), net.end())) continue;
+        if (!raySphereMayHit(ray, net.points.begin(), net.points.end())) continue;
         if (weights.basis != pi.basis || weights.tension != pi.tension || weights.nu != level)
             weights = makeGridWeights(pi.basis, pi.tension, level, level);
-        evaluateGrid(net, pi.idx, weights, grid);
+        evaluateWindowGrid(net, pi.idx, weights, grid);
         const int n1 = level + 1;
         for (int r = 0; r < level; ++r)
             for (int col = 0; col < level; ++col) {

@@ -1,6 +1,7 @@
 // Partial upload of moved control points during a drag: which pool entries changed since the last
-// upload, and their float3 values written into a mapped vertex buffer (host-visible, tightly packed
-// vec3 floats like the renderer's pool buffer). Header-only, no Vulkan.
+// upload, and their positions written into a mapped vertex buffer laid out like the renderer's pool
+// (host-visible, four floats a point: x y z and the weight, which a drag leaves alone). Header-only,
+// no Vulkan.
 #pragma once
 
 #include <cstdint>
@@ -21,12 +22,12 @@ inline void takeChangedPoints(std::vector<Vec3>& before, const std::vector<Vec3>
         }
 }
 
-// dst[3i..3i+2] = points[i] for each changed i.
-inline void writeFloat3(const std::vector<Vec3>& points, const std::vector<uint32_t>& changed, float* dst) {
+// dst[4i..4i+2] = points[i] for each changed i (dst[4i+3], the weight, stays).
+inline void writePoolPositions(const std::vector<Vec3>& points, const std::vector<uint32_t>& changed, float* dst) {
     for (uint32_t i : changed) {
-        dst[3 * size_t(i) + 0] = float(points[i].x);
-        dst[3 * size_t(i) + 1] = float(points[i].y);
-        dst[3 * size_t(i) + 2] = float(points[i].z);
+        dst[4 * size_t(i) + 0] = float(points[i].x);
+        dst[4 * size_t(i) + 1] = float(points[i].y);
+        dst[4 * size_t(i) + 2] = float(points[i].z);
     }
 }
 

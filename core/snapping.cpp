@@ -8,7 +8,7 @@
 #include "core/bezier_triangle.hpp"
 #include "core/camera_math.hpp"
 #include "core/enum_names.hpp"
-#include "core/patch_eval.hpp"
+#include "core/rational_eval.hpp"
 #include "core/picking.hpp"
 #include "core/selection_ops.hpp"
 
@@ -76,8 +76,8 @@ std::optional<Vec3> snapPoint(const Document& doc, const std::vector<bool>& move
             EdgeSearch s{vm, width, height, {x, y}, radiusPx * radiusPx, std::nullopt};
             for (const PatchInstance& pi : expandPatches(doc)) {
                 if (usesAnyPoint(pi.idx, moved) || windowHidden(doc, pi)) continue;
-                const Net16 net = gatherNet(doc, pi.idx);
-                const auto eval = [&](double u, double v) { return evaluateNet(net, pi.basis, pi.tension, u, v).p; };
+                const WindowNet net = gatherWindow(doc, pi.idx);
+                const auto eval = [&](double u, double v) { return evaluateWindow(net, pi.basis, pi.tension, u, v).p; };
                 s.curve([&](double t) { return eval(0.0, t); });
                 s.curve([&](double t) { return eval(1.0, t); });
                 s.curve([&](double t) { return eval(t, 0.0); });

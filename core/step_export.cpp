@@ -102,6 +102,10 @@ std::string exportStepText(const Document& doc, const StepExportOptions& options
         throw std::runtime_error("the document has no surfaces to write as STEP");
     for (size_t s = 0; s < doc.surfaces.size(); ++s)
         if (auto why = netLayoutProblem(doc.surfaces[s])) throw std::runtime_error("surface " + std::to_string(s) + ": " + *why);
+    for (size_t s = 0; s < doc.surfaces.size(); ++s)
+        for (uint32_t i : doc.surfaces[s].idx)
+            if (pointWeight(doc, i) != 1.0)
+                throw std::runtime_error("surface " + std::to_string(s) + ": a net with weights is not written to STEP yet (convert it to patches first)");
     const auto held = occt::lock();
     try {
         const double size = std::max(1.0, modelSize(doc));
@@ -112,7 +116,10 @@ std::string exportStepText(const Document& doc, const StepExportOptions& options
             if (!face.IsDone()) throw std::runtime_error(what + ": OpenCASCADE could not make a face of it (error " + std::to_string(int(face.Error())) + ")");
             sewing.Add(face.Face());
         };
-        for (size_t p = 0; p < doc.patches.size(); ++p) addFace(occt::bezierSurface(patchNet(doc, doc.patches[p].idx)), "patch " + std::to_string(p));
+        for (size_t p = 0; p < doc.patches.size(); ++p) {
+            const std::optional<Weights16> w = gatherWeights(doc, doc.patches[p].idx);  // rational: exact, weights and all
+            addFace(occt::bezierSurface(patchNet(doc, doc.patches[p].idx), w ? &*w : nullptr), "patch " + std::to_string(p));
+        }
         for (size_t s = 0; s < doc.surfaces.size(); ++s) addFace(netSurface(doc, doc.surfaces[s], tol), "surface " + std::to_string(s));
         for (size_t t = 0; t < doc.triangles.size(); ++t)
             addFace(occt::bezierSurface(triangleAsCollapsedQuad(gatherTriangleNet(doc, doc.triangles[t].idx))), "triangle " + std::to_string(t));

@@ -84,7 +84,6 @@ std::variant<Handle(Geom_BSplineSurface), std::string> faceSurface(const TopoDS_
     } else {
         return "a " + typeName(surface) + " surface (only B-spline and Bézier surfaces become patches)";
     }
-    if (bs->IsURational() || bs->IsVRational()) return std::string("a rational B-spline surface (weights are not all equal)");
     if (bs->UDegree() > 3 || bs->VDegree() > 3)
         return "degree " + std::to_string(bs->UDegree()) + " x " + std::to_string(bs->VDegree()) + " (3 at most)";
 
@@ -168,6 +167,7 @@ Document importCadSurfaces(const std::filesystem::path& path, CadImportReport* r
                             const gp_Pnt p = z->Pole(c + 1, r + 1);
                             patch.idx[size_t(r * 4 + c)] = uint32_t(doc.points.size());
                             doc.points.push_back(Vec3(p.X(), p.Y(), p.Z()));
+                            if (z->IsURational() || z->IsVRational()) setPointWeight(doc, uint32_t(doc.points.size() - 1), z->Weight(c + 1, r + 1));
                         }
                     doc.patches.push_back(patch);
                     if (doc.patches.size() > limits::kMaxPatches)

@@ -4,7 +4,7 @@
 #include <set>
 
 #include "core/bezier_triangle.hpp"
-#include "core/patch_eval.hpp"
+#include "core/rational_eval.hpp"
 
 namespace pw::render {
 
@@ -83,7 +83,7 @@ OverlayScene uploadOverlayScene(Device& dev, const Document& doc) {
     const std::vector<PatchInstance> inst = expandPatches(doc);
     constexpr int kSeg = 16;
     for (const PatchInstance& pi : inst) {
-        const Net16 net = gatherNet(doc, pi.idx);
+        const WindowNet net = gatherWindow(doc, pi.idx);
         for (int e = 0; e < 4; ++e) {
             const Edge edge = Edge(e);
             const Continuity* cont = nullptr;
@@ -102,7 +102,7 @@ OverlayScene uploadOverlayScene(Device& dev, const Document& doc) {
                 const double t = double(k) / kSeg;
                 const double u = (edge == Edge::U0) ? 0.0 : (edge == Edge::U1) ? 1.0 : t;
                 const double v = (edge == Edge::V0) ? 0.0 : (edge == Edge::V1) ? 1.0 : t;
-                return evaluateNet(net, pi.basis, pi.tension, u, v).p;
+                return evaluateWindow(net, pi.basis, pi.tension, u, v).p;
             };
             Vec3 prev = at(0);
             for (int k = 1; k <= kSeg; ++k) {

@@ -25,9 +25,9 @@ VkPipeline buildPipeline(Device& dev, VkPipelineLayout layout, VkPipelineCache c
     std::vector<VkVertexInputAttributeDescription> attrs;
     if (d.vertexLayout < 0) {
         // no vertex input
-    } else if (d.vertexLayout == 0) {
-        bindings.push_back({0, 12, VK_VERTEX_INPUT_RATE_VERTEX});
-        attrs.push_back({0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0});
+    } else if (d.vertexLayout == 0) {  // the pool: position and weight
+        bindings.push_back({0, 16, VK_VERTEX_INPUT_RATE_VERTEX});
+        attrs.push_back({0, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 0});
     } else if (d.vertexLayout == 1 || d.vertexLayout == 3) {
         bindings.push_back({0, 12, VK_VERTEX_INPUT_RATE_VERTEX});
         bindings.push_back({1, 12, VK_VERTEX_INPUT_RATE_VERTEX});

@@ -21,7 +21,7 @@ struct PipelineDesc {
     bool depthTest = true, depthWrite = true, depthBias = false;
     bool blend = false;  // source-alpha blending (translucent lines)
     bool rasterizerDiscard = false;  // nothing rasterised (transform feedback capture)
-    int vertexLayout = 0;  // -1: none; 0: vec3 position; 1: position, normal, uv (mesh); 2: position + rgba colour;
+    int vertexLayout = 0;  // -1: none; 0: the pool (vec4: position, weight); 1: position, normal, uv (mesh); 2: position + rgba colour;
                            // 3: position, normal (mesh, lean varyings)
 };
 

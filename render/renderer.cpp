@@ -11,6 +11,7 @@
 
 #include "render/adaptive_bounds.hpp"
 #include "core/displacement.hpp"
+#include "core/point_upload.hpp"
 #include "render/buffers.hpp"
 #include "render/vk_owned.hpp"
 #include "core/camera_math.hpp"
@@ -134,15 +135,13 @@ void Renderer::setPlainMesh(const TriangleMesh& mesh) {
 
 void Renderer::updatePoints(const std::vector<Vec3>& points, const std::vector<uint32_t>& changed) {
     SurfaceScene& s = impl_->scene;
-    auto* dst = static_cast<float*>(s.pool.mapped);
-    for (uint32_t i : changed) {
-        if (i >= s.pointCount || i >= points.size()) continue;
-        const glm::vec3 v(points[i]);
-        dst[3 * size_t(i) + 0] = v.x;
-        dst[3 * size_t(i) + 1] = v.y;
-        dst[3 * size_t(i) + 2] = v.z;
-        if (i < s.cpuPoints.size()) s.cpuPoints[i] = v;
-    }
+    std::vector<uint32_t> valid;
+    valid.reserve(changed.size());
+    for (uint32_t i : changed)
+        if (i < s.pointCount && i < points.size()) valid.push_back(i);
+    writePoolPositions(points, valid, static_cast<float*>(s.pool.mapped));  // the weights stay: a drag moves points only
+    for (uint32_t i : valid)
+        if (i < s.cpuPoints.size()) s.cpuPoints[i] = glm::vec3(points[i]);
 }
 
 Renderer::FramePlan Renderer::prepareFrame(const RenderOptions& opt, VkRect2D area) {

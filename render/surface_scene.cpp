@@ -20,11 +20,10 @@ glm::mat4 basisPushMatrix(Basis basis, double tension) {
 SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc, const HeightMap* map) {
     SurfaceScene s;
     std::vector<float> pts;
-    pts.reserve(doc.points.size() * 3);
-    for (const Vec3& p : doc.points) {
-        pts.push_back(float(p.x));
-        pts.push_back(float(p.y));
-        pts.push_back(float(p.z));
+    pts.reserve(doc.points.size() * 4);
+    for (uint32_t i = 0; i < doc.points.size(); ++i) {
+        const Vec3& p = doc.points[i];
+        pts.insert(pts.end(), {float(p.x), float(p.y), float(p.z), float(pointWeight(doc, i))});
     }
     const std::vector<PatchInstance> inst = expandPatches(doc);
     std::vector<uint32_t> idx;

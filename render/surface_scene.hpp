@@ -1,4 +1,4 @@
-// GPU copy of a document for the tessellated surface: the pool as a vec3 vertex buffer, 16 pool
+// GPU copy of a document for the tessellated surface: the pool as a vertex buffer (position and weight), 16 pool
 // indices per window as the index buffer, per-patch level overrides, and runs of windows sharing
 // a basis (one push-constant matrix per run); the Bézier triangles' 10 pool indices each in a second
 // index buffer (drawn by triangle_draws.*). Records the batched surface draws.
@@ -21,7 +21,7 @@ struct BasisRun {
 };
 
 struct SurfaceScene {
-    Buffer pool;       // vec3 float per pool point (HostWritten: dragged points are written in place)
+    Buffer pool;       // 4 floats per pool point: xyz, weight (HostWritten: dragged points are written in place)
     Buffer indices;    // 16 uint32 per window
     Buffer patchData;  // gpu::PatchData per window
     uint32_t pointCount = 0;

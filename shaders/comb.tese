@@ -11,11 +11,14 @@
 // and second derivatives by core/curvature_math.h (the CPU's formula, one home).
 #include "common.glsl"
 #include "core/curvature_math.h"
+#include "core/rational_math.h"
 
 layout(isolines, equal_spacing) in;
 layout(location = 0) out vec4 outColor;
 
-vec3 cp(int s) { return gl_in[s].gl_Position.xyz; }
+// Control points arrive homogeneous (core/rational_math.h: w·P, w − 1): the sums below are
+// homogeneous and the quotient rule gives the rational curve's derivatives.
+vec4 cp(int s) { return gl_in[s].gl_Position; }
 
 // Weights of the draw's basis at t and their first and second derivatives.
 void basisAt(float t, out vec4 w, out vec4 d1, out vec4 d2) {
@@ -43,7 +46,7 @@ void main() {
     }
     vec4 w, d, dd;
     basisAt(t, w, d, dd);
-    vec3 p = vec3(0.0), d1 = vec3(0.0), d2 = vec3(0.0);
+    vec4 p = vec4(0.0), d1 = vec4(0.0), d2 = vec4(0.0);
 #ifdef ISOCURVES
     float n = ceil(gl_TessLevelOuter[0]);
     float k = round(gl_TessCoord.y * n);
@@ -51,14 +54,14 @@ void main() {
     basisAt(n > 1.0 ? k / (n - 1.0) : 0.0, wa, da, dda);
     if ((draw.isoDirection & 1u) == 0u) {  // along u: row i weighs wa[i] (v fixed), columns w(t)
         for (int i = 0; i < 4; ++i) {
-            vec3 c0 = cp(i * 4), c1 = cp(i * 4 + 1), c2 = cp(i * 4 + 2), c3 = cp(i * 4 + 3);
+            vec4 c0 = cp(i * 4), c1 = cp(i * 4 + 1), c2 = cp(i * 4 + 2), c3 = cp(i * 4 + 3);
             p += wa[i] * (w.x * c0 + w.y * c1 + w.z * c2 + w.w * c3);
             d1 += wa[i] * (d.x * c0 + d.y * c1 + d.z * c2 + d.w * c3);
             d2 += wa[i] * (dd.x * c0 + dd.y * c1 + dd.z * c2 + dd.w * c3);
         }
     } else {  // along v: column j weighs wa[j] (u fixed), rows w(t)
         for (int i = 0; i < 4; ++i) {
-            vec3 row = wa.x * cp(i * 4) + wa.y * cp(i * 4 + 1) + wa.z * cp(i * 4 + 2) + wa.w * cp(i * 4 + 3);
+            vec4 row = wa.x * cp(i * 4) + wa.y * cp(i * 4 + 1) + wa.z * cp(i * 4 + 2) + wa.w * cp(i * 4 + 3);
             p += w[i] * row;
             d1 += d[i] * row;
             d2 += dd[i] * row;
@@ -69,7 +72,10 @@ void main() {
     d1 = d.x * cp(0) + d.y * cp(1) + d.z * cp(2) + d.w * cp(3);
     d2 = dd.x * cp(0) + dd.y * cp(1) + dd.z * cp(2) + dd.w * cp(3);
 #endif
-    vec3 q = tip ? p - frame.comb.x * curveCurvatureVector(d1, d2) : p;
+    vec3 q = rationalPoint(p);
+    vec3 e1 = rationalDerivative(p, d1, q);
+    vec3 e2 = rationalSecondDerivative(p, d1, d1, d2, q, e1, e1);
+    if (tip) q -= frame.comb.x * curveCurvatureVector(e1, e2);
     gl_Position = frame.viewProj * vec4(q, 1.0);
     gl_Position.z -= 2e-6 * gl_Position.w;  // in front of the surface the curve lies on
     outColor = draw.color;

@@ -6,11 +6,14 @@
 // last lie on its boundary (n = 2: the boundary curves; n = 1: the u0 or v0 boundary), along u or,
 // with draw.isoDirection = 1, along v; any basis (draw.basis).
 #include "common.glsl"
+#include "core/rational_math.h"
 
 layout(isolines, SPACING) in;
 layout(location = 0) out vec4 outColor;
 
-vec3 cp(int s) { return gl_in[s].gl_Position.xyz; }
+// Control points arrive homogeneous (core/rational_math.h: w·P, w − 1); rational curves and windows
+// sum them and divide.
+vec4 cph(int s) { return gl_in[s].gl_Position; }
 
 vec4 weights(float t) {
     float s = 1.0 - t;
@@ -26,13 +29,14 @@ void main() {
     bool alongV = draw.isoDirection == 1u;
     vec4 wu = weights(alongV ? across : t);  // along a row of the net (slots i*4 + 0..3)
     vec4 wv = weights(alongV ? t : across);  // across the rows
-    vec3 p = vec3(0.0);
+    vec4 h = vec4(0.0);
     for (int i = 0; i < 4; ++i)
-        p += wv[i] * (wu.x * cp(i * 4) + wu.y * cp(i * 4 + 1) + wu.z * cp(i * 4 + 2) + wu.w * cp(i * 4 + 3));
+        h += wv[i] * (wu.x * cph(i * 4) + wu.y * cph(i * 4 + 1) + wu.z * cph(i * 4 + 2) + wu.w * cph(i * 4 + 3));
+    vec3 p = rationalPoint(h);
 #else
     vec4 w = bernstein3(t, 1.0 - t);
-    vec3 p = w.x * cp(0) + w.y * cp(1) + w.z * cp(2) + w.w * cp(3);
-    p = t == 0.0 ? cp(0) : (t == 1.0 ? cp(3) : p);  // exact ends, like core/bezier_curve.cpp
+    vec3 p = rationalPoint(w.x * cph(0) + w.y * cph(1) + w.z * cph(2) + w.w * cph(3));
+    p = t == 0.0 ? rationalPoint(cph(0)) : (t == 1.0 ? rationalPoint(cph(3)) : p);  // exact ends, like core/bezier_curve.cpp
 #endif
     gl_Position = frame.viewProj * vec4(p, 1.0);
     gl_Position.z -= 2e-6 * gl_Position.w;  // in front of the surface the curve lies on

@@ -2,10 +2,10 @@
 #extension GL_GOOGLE_include_directive : require
 // Control grid: pool points as lines or points; the hovered and selected points are highlighted.
 #include "common.glsl"
-layout(location = 0) in vec3 inPos;
+layout(location = 0) in vec4 inPoint;  // the pool: xyz position, w weight
 layout(location = 0) out vec4 outColor;
 void main() {
-    gl_Position = frame.viewProj * vec4(inPos, 1.0);
+    gl_Position = frame.viewProj * vec4(inPoint.xyz, 1.0);
     uint id = uint(gl_VertexIndex);
     vec4 c = draw.color;
     float size = 5.0;

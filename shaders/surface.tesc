@@ -7,6 +7,7 @@
 // levels and per-patch overrides only. lavapipe runs every branch whether taken or not, so the
 // adaptive and culling code would otherwise cost ~25 ms a frame on 1 024 patches when switched off.
 #include "common.glsl"
+#include "core/rational_math.h"
 
 layout(vertices = 16) out;
 layout(location = 0) in int inIdx[];
@@ -20,7 +21,7 @@ layout(location = 2) patch out uint edgeFlipPatch;
 // Bézier: the boundary row itself; splines: the row the neighbouring window shares (one inside).
 int edgeSlot(int e, int k) { return quadEdgeSlot(e, k, draw.basisKind == kBasisBezier ? 0 : 1); }
 
-vec3 cp(int s) { return gl_in[s].gl_Position.xyz; }
+vec3 cp(int s) { return rationalPoint(gl_in[s].gl_Position); }  // the control point (homogeneous in)
 
 // The edge's four points in canonical order.
 void edgePoints(int e, out vec3 p[4]) {

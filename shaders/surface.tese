@@ -10,6 +10,7 @@
 // only: every varying costs per-vertex work in lavapipe's draw module and attribute bandwidth on GPUs).
 #include "common.glsl"
 #include "core/curvature_math.h"
+#include "core/rational_math.h"
 #ifdef DISPLACE
 #include "displacement.glsl"
 #endif
@@ -38,7 +39,9 @@ layout(location = 3 XFB(32)) flat out uint outPatch;
 layout(location = 4) out vec2 outCurv;  // Gaussian, mean
 #endif
 
-vec3 cp(int s) { return gl_in[s].gl_Position.xyz; }
+// Control points arrive homogeneous (core/rational_math.h): w·P and w − 1.
+vec4 cph(int s) { return gl_in[s].gl_Position; }
+vec3 cp(int s) { return rationalPoint(gl_in[s].gl_Position); }
 
 void weights(float t, out vec4 w, out vec4 dw, out vec4 ddw) {
     if (draw.basisKind == kBasisBezier) {  // Bernstein from t and s = 1 - t (core/patch_math.h)
@@ -56,26 +59,37 @@ void weights(float t, out vec4 w, out vec4 dw, out vec4 ddw) {
 struct Derivs { vec3 p, du, dv, duu, dvv, duv; };
 
 // Position, first derivatives and the mixed derivative; duu and dvv only when `second` (curvature).
+// The sums run over the homogeneous points and the quotient rule of core/rational_math.h gives the
+// rational patch's derivatives (for weights 1 the polynomial's, bit for bit).
 // (lavapipe runs both sides of divergent branches, so the common path stays branch-free.)
 Derivs evalAt(float u, float v, bool second) {
     vec4 wu, dwu, ddwu, wv, dwv, ddwv;
     weights(u, wu, dwu, ddwu);
     weights(v, wv, dwv, ddwv);
-    Derivs d;
-    d.p = d.du = d.dv = d.duu = d.dvv = d.duv = vec3(0.0);
+    vec4 h = vec4(0.0), hu = vec4(0.0), hv = vec4(0.0), huv = vec4(0.0), huu = vec4(0.0), hvv = vec4(0.0);
     for (int i = 0; i < 4; ++i) {
-        vec3 P0 = cp(i * 4), P1 = cp(i * 4 + 1), P2 = cp(i * 4 + 2), P3 = cp(i * 4 + 3);
-        vec3 r = wu.x * P0 + wu.y * P1 + wu.z * P2 + wu.w * P3;
-        vec3 ru = dwu.x * P0 + dwu.y * P1 + dwu.z * P2 + dwu.w * P3;
-        d.p += wv[i] * r;
-        d.du += wv[i] * ru;
-        d.dv += dwv[i] * r;
-        d.duv += dwv[i] * ru;
+        vec4 P0 = cph(i * 4), P1 = cph(i * 4 + 1), P2 = cph(i * 4 + 2), P3 = cph(i * 4 + 3);
+        vec4 r = wu.x * P0 + wu.y * P1 + wu.z * P2 + wu.w * P3;
+        vec4 ru = dwu.x * P0 + dwu.y * P1 + dwu.z * P2 + dwu.w * P3;
+        h += wv[i] * r;
+        hu += wv[i] * ru;
+        hv += dwv[i] * r;
+        huv += dwv[i] * ru;
         if (second) {
-            vec3 ruu = ddwu.x * P0 + ddwu.y * P1 + ddwu.z * P2 + ddwu.w * P3;
-            d.duu += wv[i] * ruu;
-            d.dvv += ddwv[i] * r;
+            vec4 ruu = ddwu.x * P0 + ddwu.y * P1 + ddwu.z * P2 + ddwu.w * P3;
+            huu += wv[i] * ruu;
+            hvv += ddwv[i] * r;
         }
+    }
+    Derivs d;
+    d.p = rationalPoint(h);
+    d.du = rationalDerivative(h, hu, d.p);
+    d.dv = rationalDerivative(h, hv, d.p);
+    d.duv = rationalSecondDerivative(h, hu, hv, huv, d.p, d.du, d.dv);
+    d.duu = d.dvv = vec3(0.0);
+    if (second) {
+        d.duu = rationalSecondDerivative(h, hu, hu, huu, d.p, d.du, d.du);
+        d.dvv = rationalSecondDerivative(h, hv, hv, hvv, d.p, d.dv, d.dv);
     }
     return d;
 }
@@ -87,11 +101,11 @@ vec3 boundaryPoint(int e, float t) {
     bool rev = (edgeFlipPatch & (1u << uint(e))) != 0u;
     bool alongU = (e & 1) == 1;  // v0, v1: a row of the net; u0, u1: a column
     bool far = e >= 2;           // u1 (column 3) or v1 (row 3)
-    vec3 q0 = alongU ? (far ? cp(12) : cp(0)) : (far ? cp(3) : cp(0));
-    vec3 q1 = alongU ? (far ? cp(13) : cp(1)) : (far ? cp(7) : cp(4));
-    vec3 q2 = alongU ? (far ? cp(14) : cp(2)) : (far ? cp(11) : cp(8));
-    vec3 q3 = alongU ? (far ? cp(15) : cp(3)) : (far ? cp(15) : cp(12));
-    return canonicalBoundaryPoint(q0, q1, q2, q3, t, rev);
+    vec4 q0 = alongU ? (far ? cph(12) : cph(0)) : (far ? cph(3) : cph(0));
+    vec4 q1 = alongU ? (far ? cph(13) : cph(1)) : (far ? cph(7) : cph(4));
+    vec4 q2 = alongU ? (far ? cph(14) : cph(2)) : (far ? cph(11) : cph(8));
+    vec4 q3 = alongU ? (far ? cph(15) : cph(3)) : (far ? cph(15) : cph(12));
+    return rationalPoint(canonicalBoundaryPointH(q0, q1, q2, q3, t, rev));
 }
 
 vec3 normalAt(float u, float v, Derivs d) {

@@ -1,8 +1,12 @@
 #version 450
-// Control points straight from the pool; the pool index travels along for canonical seams.
-layout(location = 0) in vec3 inPos;
+#extension GL_GOOGLE_include_directive : require
+// Control points straight from the pool (xyz the position, w the weight), handed on in the
+// homogeneous form of core/rational_math.h (w·P, w − 1); the pool index travels along for
+// canonical seams.
+#include "core/rational_math.h"
+layout(location = 0) in vec4 inPoint;
 layout(location = 0) out int outIdx;
 void main() {
-    gl_Position = vec4(inPos, 1.0);
+    gl_Position = homogeneousPoint(inPoint.xyz, inPoint.w);
     outIdx = gl_VertexIndex;
 }

@@ -14,11 +14,13 @@ TEST(EditorUpload, ChangedPointsAreFoundAndWritten) {
     takeChangedPoints(uploaded, now, changed);
     EXPECT_EQ(changed, (std::vector<uint32_t>{1, 3}));
     EXPECT_EQ(uploaded, now);  // remembered as uploaded
-    std::vector<float> gpu(12, -7.0f);
-    writeFloat3(now, changed, gpu.data());
-    EXPECT_EQ(gpu[3], 1.5f);
-    EXPECT_EQ(gpu[4], 1.0f);
-    EXPECT_EQ(gpu[11], -3.0f);
+    std::vector<float> gpu(16, -7.0f);
+    writePoolPositions(now, changed, gpu.data());
+    EXPECT_EQ(gpu[4], 1.5f);
+    EXPECT_EQ(gpu[5], 1.0f);
+    EXPECT_EQ(gpu[14], -3.0f);
+    EXPECT_EQ(gpu[7], -7.0f);   // the weight stays
+    EXPECT_EQ(gpu[15], -7.0f);
     EXPECT_EQ(gpu[0], -7.0f);  // untouched
     takeChangedPoints(uploaded, now, changed);
     EXPECT_TRUE(changed.empty());

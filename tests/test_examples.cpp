@@ -1,9 +1,11 @@
 // The examples in data/ that README names (issue 21): each .patchwork is exactly what its
 // .pwscript makes through `patchwork edit` (regenerate with PATCHWORK_REGENERATE_DATA=1), opens, and
 // is what it says: the G2 pair holds G2 within the default tolerances, the tube is a closed C2
-// B-spline net, the Catmull-Rom net interpolates its points.
+// B-spline net, the Catmull-Rom net interpolates its points, the exact sphere is rational
+// (its export is checked in tests/test_rational_export.cpp).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -63,4 +65,13 @@ TEST(Examples, CatmullRomNetInterpolates) {
     const Net16 net = gatherNet(doc, w[0].idx);
     const SurfacePoint p = evaluateNet(net, Basis::CatmullRom, s.tension, 0.0, 0.0);
     EXPECT_LT(glm::length(p.p - net[5]), 1e-12);
+}
+
+TEST(Examples, ExactSphereIsEightRationalPatchesOnTheUnitSphere) {
+    const Document doc = made("exact_sphere");
+    ASSERT_EQ(doc.patches.size(), 8u);
+    EXPECT_TRUE(isRational(doc));
+    for (const Vec3& p : doc.points) EXPECT_LE(glm::length(p), std::sqrt(2.0) + 1e-12);  // the control points hug it
+    EXPECT_EQ(doc.display.shading, ShadingMode::MeanCurvature);
+    EXPECT_TRUE(doc.display.showCombs);
 }

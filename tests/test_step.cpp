@@ -42,6 +42,8 @@
 #include "core/model_builders.hpp"
 #include "core/net_ops.hpp"
 #include "core/patch_eval.hpp"
+#include "core/primitives.hpp"
+#include "core/rational_eval.hpp"
 #include "core/step_export.hpp"
 #include "core/step_import.hpp"
 #include "support.hpp"
@@ -162,6 +164,39 @@ TEST(StepExport, TeapotIs32ExactFacesInSewnShells) {
         }
         EXPECT_TRUE(std::all_of(used.begin(), used.end(), [](int n) { return n == 1; }));
     }
+    fs::remove_all(dir);
+}
+
+// The exact sphere (issue 21) as read back by OpenCASCADE: eight rational faces on the sphere to
+// rounding, each the patch it came from, sewn into one closed shell.
+TEST(StepExport, TheSphereIsExactRationalFaces) {
+    const fs::path dir = pw::test::freshTempDir("step-sphere");
+    pw::Document doc;
+    const pw::Vec3 c(0.5, 1.0, -2.0);
+    pw::addSphere(doc, c, 4.0, true);
+    pw::exportStep(doc, dir / "ball.step", {});
+    const ReadBack r = readWithOcct(dir / "ball.step");
+    ASSERT_EQ(r.faces.size(), 8u);
+    EXPECT_EQ(r.shells, 1);
+    double worstRadius = 0.0, worstPatch = 0.0;
+    for (const TopoDS_Face& f : r.faces) {
+        const auto bs = Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(f));
+        ASSERT_FALSE(bs.IsNull());
+        EXPECT_TRUE(bs->IsURational() && bs->IsVRational());
+        double u0, u1, v0, v1;
+        bs->Bounds(u0, u1, v0, v1);
+        for (int i = 0; i <= 16; ++i)
+            for (int j = 0; j <= 16; ++j)
+                worstRadius = std::max(worstRadius, std::abs(glm::length(value(bs, u0 + (u1 - u0) * j / 16.0, v0 + (v1 - v0) * i / 16.0) - c) - 4.0));
+        double best = 1e300;
+        for (const pw::Patch& p : doc.patches) {
+            const pw::WindowNet net = pw::gatherWindow(doc, p.idx);
+            best = std::min(best, deviation(f, [&](double u, double v) { return pw::evaluateWindow(net, p.basis, p.tension, u, v).p; }));
+        }
+        worstPatch = std::max(worstPatch, best);
+    }
+    EXPECT_LT(worstRadius, 1e-12);
+    EXPECT_LT(worstPatch, 1e-12);
     fs::remove_all(dir);
 }
 
@@ -294,7 +329,7 @@ TEST(StepImport, FacesPatchworkCannotEditAreSkippedWithANote) {
     BRep_Builder b;
     TopoDS_Compound c;
     b.MakeCompound(c);
-    // 1: a plane; 2: a rational B-spline; 3: degree 5; 4: degree 2 (raised to 3: imported);
+    // 1: a plane; 2: a rational B-spline (imported with its weights); 3: degree 5; 4: degree 2 (raised to 3: imported);
     // 5: a bicubic B-spline trimmed to a parameter rectangle (cut out exactly: imported);
     // 6: a bicubic face with a circular hole.
     b.Add(c, BRepBuilderAPI_MakeFace(gp_Pln(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 0, 1, 0, 1).Face());
@@ -317,17 +352,28 @@ TEST(StepImport, FacesPatchworkCannotEditAreSkippedWithANote) {
     }
     writeStep(c, dir / "mixed.step");
     pw::CadImportReport report;
-    const pw::Document doc = pw::importCadSurfaces(dir / "mixed.step", &report);
+    pw::Document doc = pw::importCadSurfaces(dir / "mixed.step", &report);
     EXPECT_EQ(report.faces, 6u);
-    EXPECT_EQ(report.importedFaces, 2u);
-    ASSERT_EQ(report.notes.size(), 4u);
+    EXPECT_EQ(report.importedFaces, 3u);
+    ASSERT_EQ(report.notes.size(), 3u);
     EXPECT_NE(report.notes[0].find("Plane"), std::string::npos) << report.notes[0];
-    EXPECT_NE(report.notes[1].find("rational"), std::string::npos) << report.notes[1];
-    EXPECT_NE(report.notes[2].find("degree 5"), std::string::npos) << report.notes[2];
-    EXPECT_NE(report.notes[3].find("hole"), std::string::npos) << report.notes[3];
-    // The quadratic is one Bézier patch (raised), the trimmed cubic 2 x 1 windows of its 3 x 3 spans
-    // (u 0.5..2.5 crosses knots 1 and 2: three pieces; v 0.25..1: one).
-    EXPECT_EQ(doc.patches.size(), 1u + 3u);
+    EXPECT_NE(report.notes[1].find("degree 5"), std::string::npos) << report.notes[1];
+    EXPECT_NE(report.notes[2].find("hole"), std::string::npos) << report.notes[2];
+    // The rational face is one rational patch, the quadratic one Bézier patch (raised), the trimmed
+    // cubic 2 x 1 windows of its 3 x 3 spans (u 0.5..2.5 crosses knots 1 and 2: three pieces; v 0.25..1: one).
+    ASSERT_EQ(doc.patches.size(), 1u + 1u + 3u);
+    {
+        const Handle(Geom_BSplineSurface) weighted = gridSurface(3, 4, true);
+        const pw::WindowNet net = pw::gatherWindow(doc, doc.patches[0].idx);
+        ASSERT_TRUE(net.weights);
+        double worst = 0.0;
+        for (int i = 0; i <= 4; ++i)
+            for (int j = 0; j <= 4; ++j)
+                worst = std::max(worst, glm::length(pw::evaluateWindow(net, pw::Basis::Bezier, 0.5, j / 4.0, i / 4.0).p -
+                                                    value(weighted, j / 4.0, i / 4.0)));
+        EXPECT_LT(worst, 1e-9);
+        doc.patches.erase(doc.patches.begin());
+    }
     auto on = [&](const Handle(Geom_BSplineSurface)& s, double u0, double u1, double v0, double v1, const pw::Patch& p, double us,
                   double vs) {
         double worst = 0.0;

@@ -1,6 +1,6 @@
 // The Inspector (left panel): the transform pivot and snap target, the selected point's position (dragged or typed, the joins held by
 // core/drag_controller.hpp's HeldPointEdit), the selected patch's or triangle's name and own
-// tessellation levels.
+// tessellation levels, and the selected points' weight.
 #include <imgui.h>
 
 #include <cstdio>
@@ -97,6 +97,24 @@ void transformRow(PanelContext& ctx) {
         ImGui::TextDisabled("%c = %.4g", char('x' + s.symmetry.axis), s.symmetry.offset);
     }
 }
+// The weight of the selected points (rational patches): shown, and set for all of them with Enter
+// through the `weight` command (its checks and its undo step).
+void weightRow(PanelContext& ctx, const std::vector<uint32_t>& points) {
+    const Document& doc = ctx.session().doc;
+    double w = pointWeight(doc, points.front());
+    bool mixed = false;
+    for (uint32_t p : points) mixed = mixed || pointWeight(doc, p) != w;
+    if (ImGui::InputDouble(mixed ? "Weight (mixed)" : "Weight", &w, 0.0, 0.0, "%.6g",
+                           ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CharsScientific)) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.17g", w);
+        ctx.runCommand({"weight", buf});
+    }
+    traceItem("inspector.weight");
+    tip("The weight of the selected control points (rational patches): above 1 pulls the surface towards them, below 1 lets it go; "
+        "1 = polynomial. Exact circles need 1/√2 at the corners of quadratic arcs (add-sphere builds them). Type and press Enter");
+}
+
 }  // namespace
 
 void InspectorPanel::draw(PanelContext& ctx) {
@@ -127,11 +145,15 @@ void InspectorPanel::draw(PanelContext& ctx) {
         }
         traceItem("inspector.set");
         tip("Type exact coordinates and press Enter; joins are held");
+        weightRow(ctx, sel.points);
         ImGui::EndDisabled();
     } else if (sel.points.size() > 1) {
         const Vec3 c = selectionCentroid(doc, sel);
         ImGui::Text("%zu points selected", sel.points.size());
         ImGui::Text("Centre %.4f %.4f %.4f", c.x, c.y, c.z);
+        ImGui::BeginDisabled(ctx.interacting());
+        weightRow(ctx, sel.points);
+        ImGui::EndDisabled();
     } else if (sel.points.empty()) {
         ImGui::TextDisabled("No point selected");
     }
