@@ -5,6 +5,7 @@
 
 #include "core/document.hpp"
 #include "core/net_scale.hpp"
+#include "core/tensor_sums.hpp"
 
 namespace pw {
 
@@ -43,23 +44,8 @@ SurfacePoint evaluateNet(const Net16& net, Basis basis, double tension, double u
 }
 
 SurfaceJet evaluateJet(const Net16& net, Basis basis, double tension, double u, double v) {
-    const BasisWeights wu = basisWeights(basis, tension, u), wv = basisWeights(basis, tension, v);
-    SurfaceJet j;
-    for (int i = 0; i < 4; ++i) {
-        Vec3 row{0.0}, rowDu{0.0}, rowDuu{0.0};
-        for (int k = 0; k < 4; ++k) {
-            const Vec3& q = net[size_t(i * 4 + k)];
-            row += wu.w[k] * q;
-            rowDu += wu.dw[k] * q;
-            rowDuu += wu.ddw[k] * q;
-        }
-        j.p += wv.w[i] * row;
-        j.du += wv.w[i] * rowDu;
-        j.dv += wv.dw[i] * row;
-        j.duu += wv.w[i] * rowDuu;
-        j.duv += wv.dw[i] * rowDu;
-        j.dvv += wv.ddw[i] * row;
-    }
+    const TensorSums<Vec3> s = tensorSums(net, basisWeights(basis, tension, u), basisWeights(basis, tension, v));
+    SurfaceJet j{s.p, s.du, s.dv, s.duu, s.duv, s.dvv, Vec3(0.0)};
     j.n = normalAt(net, basis, tension, u, v, j.du, j.dv);
     return j;
 }

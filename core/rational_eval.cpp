@@ -6,6 +6,7 @@
 #include "core/net_scale.hpp"
 #include "core/patch_math.h"
 #include "core/rational_math.h"
+#include "core/tensor_sums.hpp"
 
 namespace pw {
 
@@ -16,49 +17,27 @@ using gpu::rationalDerivative;
 using gpu::rationalPoint;
 using gpu::rationalSecondDerivative;
 
-struct HomogeneousNet {
-    std::array<Vec4, 16> h;
-};
+using HomogeneousNet = std::array<Vec4, 16>;
 
 HomogeneousNet homogeneous(const WindowNet& net) {
     HomogeneousNet out;
-    for (size_t k = 0; k < 16; ++k) out.h[k] = gpu::homogeneousPoint<double>(net.points[k], net.weights ? (*net.weights)[k] : 1.0);
+    for (size_t k = 0; k < 16; ++k) out[k] = gpu::homogeneousPoint<double>(net.points[k], net.weights ? (*net.weights)[k] : 1.0);
     return out;
 }
 
 // The homogeneous sums and their first and second partial derivatives.
-struct HomogeneousJet {
-    Vec4 h{0.0}, hu{0.0}, hv{0.0}, huu{0.0}, huv{0.0}, hvv{0.0};
-};
+using HomogeneousJet = TensorSums<Vec4>;
 
-HomogeneousJet homogeneousJet(const HomogeneousNet& net, const BasisWeights& wu, const BasisWeights& wv) {
-    HomogeneousJet j;
-    for (int i = 0; i < 4; ++i) {
-        Vec4 row{0.0}, rowDu{0.0}, rowDuu{0.0};
-        for (int k = 0; k < 4; ++k) {
-            const Vec4& q = net.h[size_t(i * 4 + k)];
-            row += wu.w[k] * q;
-            rowDu += wu.dw[k] * q;
-            rowDuu += wu.ddw[k] * q;
-        }
-        j.h += wv.w[i] * row;
-        j.hu += wv.w[i] * rowDu;
-        j.hv += wv.dw[i] * row;
-        j.huu += wv.w[i] * rowDuu;
-        j.huv += wv.dw[i] * rowDu;
-        j.hvv += wv.ddw[i] * row;
-    }
-    return j;
-}
+HomogeneousJet homogeneousJet(const HomogeneousNet& net, const BasisWeights& wu, const BasisWeights& wv) { return tensorSums(net, wu, wv); }
 
 SurfaceJet rationalJet(const HomogeneousJet& h) {
     SurfaceJet s;
-    s.p = rationalPoint(h.h);
-    s.du = rationalDerivative(h.h, h.hu, s.p);
-    s.dv = rationalDerivative(h.h, h.hv, s.p);
-    s.duu = rationalSecondDerivative(h.h, h.hu, h.hu, h.huu, s.p, s.du, s.du);
-    s.duv = rationalSecondDerivative(h.h, h.hu, h.hv, h.huv, s.p, s.du, s.dv);
-    s.dvv = rationalSecondDerivative(h.h, h.hv, h.hv, h.hvv, s.p, s.dv, s.dv);
+    s.p = rationalPoint(h.p);
+    s.du = rationalDerivative(h.p, h.du, s.p);
+    s.dv = rationalDerivative(h.p, h.dv, s.p);
+    s.duu = rationalSecondDerivative(h.p, h.du, h.du, h.duu, s.p, s.du, s.du);
+    s.duv = rationalSecondDerivative(h.p, h.du, h.dv, h.duv, s.p, s.du, s.dv);
+    s.dvv = rationalSecondDerivative(h.p, h.dv, h.dv, h.dvv, s.p, s.dv, s.dv);
     return s;
 }
 
@@ -131,7 +110,7 @@ void evaluateWindowGrid(const WindowNet& net, const std::array<uint32_t, 16>& po
             Vec3 h{0.0};
             double g = 0.0;
             for (int i = 0; i < 4; ++i) {
-                const Vec4& q = hn.h[size_t(edgeSlot(e, flip ? 3 - i : i))];
+                const Vec4& q = hn[size_t(edgeSlot(e, flip ? 3 - i : i))];
                 h += w.w[i] * Vec3(q);
                 g += w.w[i] * q.w;
             }

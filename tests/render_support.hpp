@@ -124,4 +124,17 @@ inline size_t countDifferent(const Image& a, const Image& b, int tol = 0) {
     return n;
 }
 
+// True when a pixel within `radius` of px has a curvature comb's colour (the teeth (242, 128, 217)
+// or the envelope (255, 204, 242)).
+inline bool combColoured(const Image& img, const glm::dvec2& px, int radius = 2) {
+    for (int dy = -radius; dy <= radius; ++dy)
+        for (int dx = -radius; dx <= radius; ++dx) {
+            const int x = int(std::lround(px.x)) + dx, y = int(std::lround(px.y)) + dy;
+            if (x < 0 || y < 0 || x >= int(img.w) || y >= int(img.h)) continue;
+            const uint8_t* c = img.at(x, y);
+            if (c[0] > 170 && c[2] > 140) return true;
+        }
+    return false;
+}
+
 }  // namespace pw::test

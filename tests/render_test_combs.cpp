@@ -30,17 +30,6 @@ void circleCurvature(const std::array<Vec3, 4>& c, double t, double& kappa, Vec3
     towardsCentre = glm::normalize(centre - p);
 }
 
-bool combColoured(const Image& img, const glm::dvec2& px) {
-    for (int dy = -2; dy <= 2; ++dy)
-        for (int dx = -2; dx <= 2; ++dx) {
-            const int x = int(std::lround(px.x)) + dx, y = int(std::lround(px.y)) + dy;
-            if (x < 0 || y < 0 || x >= int(img.w) || y >= int(img.h)) continue;
-            const uint8_t* c = img.at(x, y);
-            if (c[0] > 170 && c[2] > 140) return true;  // the teeth (242, 128, 217) or the envelope (255, 204, 242)
-        }
-    return false;
-}
-
 class Combs : public RenderTest {};
 
 TEST_F(Combs, TeethEndWhereTheCurvatureSays) {

@@ -59,17 +59,6 @@ TEST_F(Rational, AWeightPullsTheSurface) {
     EXPECT_GT(countDifferent(round.image, pulled.image, 8), 100u);
 }
 
-bool combColoured(const Image& img, const glm::dvec2& px) {
-    for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-            const int x = int(std::lround(px.x)) + dx, y = int(std::lround(px.y)) + dy;
-            if (x < 0 || y < 0 || x >= int(img.w) || y >= int(img.h)) continue;
-            const uint8_t* c = img.at(x, y);
-            if (c[0] > 170 && c[2] > 140) return true;  // the comb's colours (pink teeth, pale envelope)
-        }
-    return false;
-}
-
 TEST_F(Rational, TheCombOfAQuarterCircleIsAConcentricCircle) {
     const double R = 2.0, k = std::sqrt(2.0), d = 1.0 + k, w = (1.0 + k) / 3.0;
     Document doc;
@@ -93,8 +82,8 @@ TEST_F(Rational, TheCombOfAQuarterCircleIsAConcentricCircle) {
         const auto tip = projectToPixel(vm, Vec3(tipRadius * std::cos(t), tipRadius * std::sin(t), 0), 480, 480);
         const auto mid = projectToPixel(vm, Vec3((R + 0.5 * L / R) * std::cos(t), (R + 0.5 * L / R) * std::sin(t), 0), 480, 480);
         ASSERT_TRUE(tip && mid);
-        hits += combColoured(r.image, *tip);  // the envelope runs along the circle of the tips
-        inside += combColoured(r.image, *mid) ? 1 : 0;
+        hits += combColoured(r.image, *tip, 1);  // the envelope runs along the circle of the tips
+        inside += combColoured(r.image, *mid, 1) ? 1 : 0;
     }
     EXPECT_EQ(hits, 15);
     EXPECT_LT(inside, 8);  // between the curve and the envelope only the teeth themselves
