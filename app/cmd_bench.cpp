@@ -14,20 +14,20 @@
 #include <string>
 #include <vector>
 
-#include "core/camera_math.hpp"
+#include "core/model/camera_math.hpp"
 #include "app/commands.hpp"
-#include "render/device.hpp"
-#include "core/document_io.hpp"
-#include "core/errors.hpp"
-#include "core/file_io.hpp"
-#include "core/mesh_tessellate.hpp"
-#include "core/model_builders.hpp"
-#include "core/terrain.hpp"
-#include "render/offscreen_target.hpp"
-#include "render/renderer.hpp"
+#include "render/vk/device.hpp"
+#include "core/io/document_io.hpp"
+#include "core/base/errors.hpp"
+#include "core/base/file_io.hpp"
+#include "core/mesh/mesh_tessellate.hpp"
+#include "core/construct/model_builders.hpp"
+#include "core/construct/terrain.hpp"
+#include "render/targets/offscreen_target.hpp"
+#include "render/scene/renderer.hpp"
 
 #ifdef PATCHWORK_HAVE_EDITOR
-#include "ui/editor.hpp"
+#include "ui/editor/editor.hpp"
 #endif
 
 namespace pw::app {
@@ -123,7 +123,7 @@ int runEditorBench(const BenchArgs& a) {
 #endif
 }
 
-// The lecture notes' terrain (core/terrain.hpp): one row per view (near the ground, far above) and
+// The lecture notes' terrain (core/construct/terrain.hpp): one row per view (near the ground, far above) and
 // culling (off, on) with distance-adaptive levels, after the uniform level 64 reference; triangles,
 // culled patches and GPU time, and what adaptivity and culling saved.
 nlohmann::json runTerrain(render::Renderer& renderer, int frames) {

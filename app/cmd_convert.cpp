@@ -10,9 +10,10 @@
 #include "app/commands.hpp"
 #include "app/displacement_args.hpp"
 #include "app/displayed_mesh.hpp"
-#include "core/document_io.hpp"
-#include "core/errors.hpp"
-#include "core/file_io.hpp"
+#include "core/io/formats.hpp"
+#include "core/io/document_io.hpp"
+#include "core/base/errors.hpp"
+#include "core/base/file_io.hpp"
 
 namespace pw::app {
 
@@ -30,7 +31,7 @@ int runConvert(const ConvertOptions& opt) {
     LoadReport report;
     const Document doc = loadDocument(opt.input, &report);
     for (const std::string& note : report.notes) std::cerr << "patchwork convert: " << opt.input << ": " << note << "\n";
-    const GltfExportOptions options = report.exportOptions.value_or(GltfExportOptions{});
+    const ExportOptions options = report.exportOptions.value_or(ExportOptions{});
     std::optional<TriangleMesh> displayed;  // a glTF exported as displayed is written so again
     if ((options.asDisplayed || doc.displacement.active()) && isMeshFormat(opt.output)) {  // displaced: only the GPU displaces
         DisplayedMeshRequest request = displayedMeshRequest(options);
@@ -48,8 +49,8 @@ int runConvert(const ConvertOptions& opt) {
 
 void registerConvertCommand(CLI::App& app, Action& run) {
     const auto [cmd, opt] = addSubcommand<ConvertOptions>(app, run, "convert", "Convert a document between formats, chosen by the file extensions", runConvert);
-    cmd->add_option("input", opt->input, "Input (.patchwork, .bpt, .gltf, .glb)")->required();
-    cmd->add_option("output", opt->output, "Output (.patchwork, .bpt, .gltf, .glb); replaced atomically")->required();
+    cmd->add_option("input", opt->input, "Input (" + formatList(FormatUse::Load, ", ") + ")")->required();
+    cmd->add_option("output", opt->output, "Output (" + formatList(FormatUse::Save, ", ") + "); replaced atomically")->required();
     cmd->add_flag("-q,--quiet", opt->quiet, "Print nothing on success");
 }
 

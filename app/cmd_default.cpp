@@ -5,7 +5,7 @@
 #include "app/commands.hpp"
 
 #ifdef PATCHWORK_HAVE_EDITOR
-#include "ui/editor.hpp"
+#include "ui/editor/editor.hpp"
 #endif
 
 namespace pw::app {

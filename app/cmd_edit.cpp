@@ -1,5 +1,5 @@
 // `patchwork edit [IN] -o OUT [--run SCRIPT] [-c 'cmd; cmd; …']`: the editor's commands without a
-// window (core/command_table.hpp). IN defaults to an empty document; the script runs first, then
+// window (core/commands/command_table.hpp). IN defaults to an empty document; the script runs first, then
 // the -c commands. A bad line fails with SCRIPT:LINE: message and exit 2, and then nothing is
 // written: OUT and every file a `save` in the script named stay as they were.
 #include <iostream>
@@ -8,11 +8,12 @@
 #include <utility>
 #include <vector>
 
-#include "core/command_table.hpp"
+#include "core/io/formats.hpp"
+#include "core/commands/command_table.hpp"
 #include "app/commands.hpp"
-#include "core/document_io.hpp"
-#include "core/errors.hpp"
-#include "core/file_io.hpp"
+#include "core/io/document_io.hpp"
+#include "core/base/errors.hpp"
+#include "core/base/file_io.hpp"
 
 namespace pw::app {
 
@@ -31,9 +32,10 @@ public:
 };
 
 int runEdit(const EditOptions& opt) {
-    const std::string ext = lowerExtension(opt.output);
-    if (ext != ".patchwork" && ext != ".bpt" && ext != ".gltf" && ext != ".glb")
-        throw OutputError(opt.output, "unknown file type '" + ext + "'; Patchwork writes .patchwork, .bpt, .gltf or .glb");
+    const FileFormat* format = formatOf(opt.output);
+    if (!format || !format->document || !format->save)
+        throw OutputError(opt.output, "unknown file type '" + lowerExtension(opt.output) + "'; Patchwork writes " +
+                                          formatList(FormatUse::Document));
     EditSession session;
     if (!opt.input.empty()) session.open(opt.input);
     const CommandTable table = makeCommandTable();
@@ -54,8 +56,8 @@ int runEdit(const EditOptions& opt) {
 
 void registerEditCommand(CLI::App& app, Action& run) {
     const auto [cmd, opt] = addSubcommand<EditOptions>(app, run, "edit", "Run editor commands without a window (the names of the F1 help and the palette)", runEdit);
-    cmd->add_option("input", opt->input, "Document to start from (.patchwork, .bpt, .gltf, .glb); default: an empty document");
-    cmd->add_option("-o,--output", opt->output, "Where to write the result (.patchwork, .bpt, .gltf, .glb; by extension)")->required();
+    cmd->add_option("input", opt->input, "Document to start from (" + formatList(FormatUse::Load, ", ") + "); default: an empty document");
+    cmd->add_option("-o,--output", opt->output, "Where to write the result (" + formatList(FormatUse::Document, ", ") + "; by extension)")->required();
     cmd->add_option("--run", opt->script, "Script file: one command per line or ';'-separated, '#' starts a comment");
     cmd->add_option("-c,--commands", opt->commands, "Commands, ';'-separated (run after --run)");
     cmd->add_flag("-q,--quiet", opt->quiet, "Print nothing on success");

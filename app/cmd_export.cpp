@@ -13,14 +13,15 @@
 #include "app/displacement_args.hpp"
 #include "app/displayed_mesh.hpp"
 #include "app/level_args.hpp"
-#include "core/document_io.hpp"
-#include "core/errors.hpp"
-#include "core/file_io.hpp"
-#include "core/gltf_export.hpp"
-#include "core/limits.hpp"
-#include "core/obj_export.hpp"
-#include "core/step_export.hpp"
-#include "render/device.hpp"
+#include "core/io/formats.hpp"
+#include "core/io/document_io.hpp"
+#include "core/base/errors.hpp"
+#include "core/base/file_io.hpp"
+#include "core/io/gltf_export.hpp"
+#include "core/base/limits.hpp"
+#include "core/io/obj_export.hpp"
+#include "core/io/step_export.hpp"
+#include "render/vk/device.hpp"
 
 namespace pw::app {
 
@@ -45,7 +46,7 @@ struct ExportArgs {
 
 // The surface as displayed, when asked for (or when FILE was exported so and no --tess overrides
 // it): captured on the GPU, described on stdout. nullopt: tessellate at the level.
-std::optional<TriangleMesh> displayedMesh(const ExportArgs& args, const Document& docIn, GltfExportOptions& options) {
+std::optional<TriangleMesh> displayedMesh(const ExportArgs& args, const Document& docIn, ExportOptions& options) {
     Document doc = docIn;
     const bool displaced = doc.displacement.active();
     if (displaced && args.asDisplayedGiven && !args.asDisplayed)
@@ -109,7 +110,7 @@ int runStepExport(const ExportArgs& args) {
 int runObjExport(const ExportArgs& args) {
     LoadReport report;
     const Document doc = loadForExport(args, report);
-    GltfExportOptions options = report.exportOptions.value_or(GltfExportOptions{});
+    ExportOptions options = report.exportOptions.value_or(ExportOptions{});
     std::optional<TriangleMesh> displayed = displayedMesh(args, doc, options);
     const ObjExportStats stats = exportObj(doc, args.output, args.tessGiven ? args.tess : 0, displayed ? &*displayed : nullptr);
     std::filesystem::path mtl = args.output;
@@ -130,7 +131,7 @@ int runGltfExport(const ExportArgs& args) {
     }
     LoadReport report;
     const Document doc = loadForExport(args, report);
-    GltfExportOptions options = report.exportOptions.value_or(GltfExportOptions{});
+    ExportOptions options = report.exportOptions.value_or(ExportOptions{});
     if (args.tessGiven) options.level = args.tess;
     if (grouping) options.primitives = *grouping;
     if (args.cageGiven) options.cage = args.cage;
@@ -150,9 +151,11 @@ int runGltfExport(const ExportArgs& args) {
 
 int runExport(const ExportArgs& args) {
     const std::string ext = lowerExtension(args.output);
-    if (ext == ".step" || ext == ".stp") {
+    const FileFormat* format = formatOf(args.output);
+    if (format && format->save && !format->mesh && !format->document) {
         if (args.asDisplayedGiven && args.asDisplayed) {
-            std::cerr << "patchwork export: --as-displayed applies to tessellated exports (.glb, .gltf, .obj); STEP is exact\n";
+            std::cerr << "patchwork export: --as-displayed applies to tessellated exports (" << formatList(FormatUse::Mesh, ", ")
+                      << "); " << format->name << " is exact\n";
             return 2;
         }
         return runStepExport(args);  // exact: no level
@@ -178,7 +181,7 @@ int runExport(const ExportArgs& args) {
 
 void registerExportCommand(CLI::App& app, Action& run) {
     const auto [cmd, args] = addSubcommand<ExportArgs>(app, run, "export", "Write a document as glTF 2.0 (.gltf, .glb) or OBJ (.obj), tessellated, or STEP (.step, .stp), exact", runExport);
-    cmd->add_option("file", args->input, "Document to export (.patchwork, .bpt, .gltf, .glb)")->required();
+    cmd->add_option("file", args->input, "Document to export (" + formatList(FormatUse::Load, ", ") + ")")->required();
     cmd->add_option("-o,--output", args->output,
                     "Output file: .glb (binary glTF), .gltf (JSON glTF, embedded buffer), .obj (+ .mtl beside it), .step or "
                     ".stp (exact surfaces)")

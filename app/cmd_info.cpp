@@ -10,10 +10,11 @@
 #include <vector>
 
 #include "app/commands.hpp"
-#include "core/errors.hpp"
-#include "core/constraint_solver.hpp"
-#include "core/continuity_report.hpp"
-#include "core/document_io.hpp"
+#include "core/io/formats.hpp"
+#include "core/base/errors.hpp"
+#include "core/solve/constraint_solver.hpp"
+#include "core/solve/continuity_report.hpp"
+#include "core/io/document_io.hpp"
 
 namespace pw::app {
 
@@ -161,7 +162,7 @@ int runInfo(const InfoOptions& opt) {
 
 void registerInfoCommand(CLI::App& app, Action& run) {
     const auto [cmd, opt] = addSubcommand<InfoOptions>(app, run, "info", "Print counts, bounds, joins and measured continuity of a document", runInfo);
-    cmd->add_option("file", opt->file, "Document (.patchwork, .bpt, .gltf, .glb)")->required();
+    cmd->add_option("file", opt->file, "Document (" + formatList(FormatUse::Load, ", ") + ")")->required();
     cmd->add_flag("--json", opt->json, "Machine-readable output (JSON)");
     cmd->add_option("--samples", opt->samples, "Samples per seam for the continuity report")
         ->default_val(32)

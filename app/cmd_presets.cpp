@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
-#include "core/tess_presets.hpp"
+#include "core/tess/tess_presets.hpp"
 
 namespace pw::app {
 

@@ -9,23 +9,24 @@
 #include <string>
 #include <vector>
 
-#include "core/camera_math.hpp"
+#include "core/io/formats.hpp"
+#include "core/model/camera_math.hpp"
 #include "app/commands.hpp"
-#include "render/device.hpp"
-#include "core/document_io.hpp"
+#include "render/vk/device.hpp"
+#include "core/io/document_io.hpp"
 #include "app/domain_args.hpp"
 #include "app/render_args.hpp"
-#include "render/domain_figure.hpp"
-#include "render/domain_figure_file.hpp"
-#include "render/figure_vector.hpp"
-#include "core/errors.hpp"
-#include "core/file_io.hpp"
+#include "render/figures/domain_figure.hpp"
+#include "render/figures/domain_figure_file.hpp"
+#include "render/figures/figure_vector.hpp"
+#include "core/base/errors.hpp"
+#include "core/base/file_io.hpp"
 #include "app/level_args.hpp"
-#include "core/limits.hpp"
-#include "render/model_figure.hpp"
-#include "render/offscreen_target.hpp"
-#include "render/png_writer.hpp"
-#include "render/renderer.hpp"
+#include "core/base/limits.hpp"
+#include "render/figures/model_figure.hpp"
+#include "render/targets/offscreen_target.hpp"
+#include "render/targets/png_writer.hpp"
+#include "render/scene/renderer.hpp"
 
 namespace pw::app {
 
@@ -244,7 +245,7 @@ int validationExitCode(const render::Device& dev, const std::string& command) {
 DomainArgs domainArgs(const RenderArgs& a) { return {a.domain, a.preset, a.compare, a.tess, a.outer, a.inner, a.spacing}; }
 
 void addRenderOptions(CLI::App* cmd, RenderArgs& a) {
-    cmd->add_option("file", a.input, "Document (.patchwork, .bpt, .gltf, .glb); default: the built-in teapot");
+    cmd->add_option("file", a.input, "Document (" + formatList(FormatUse::Load, ", ") + "); default: the built-in teapot");
     cmd->add_option("--size", a.size, "Image size WIDTHxHEIGHT (default 1280x720)");
     cmd->add_option("--tess", a.tess, "Uniform tessellation level 1..64 (all outer and inner levels)");
     cmd->add_option("--outer", a.outer, "Four outer levels a,b,c,d (edges u0, v0, u1, v1), 1..64; with --domain tri three, isoline two (lines, segments)");

@@ -6,11 +6,11 @@
 #include <memory>
 
 #include "app/commands.hpp"
-#include "core/document_io.hpp"
+#include "core/io/document_io.hpp"
 #include "app/domain_args.hpp"
 #include "app/level_args.hpp"
 #include "app/render_args.hpp"
-#include "render/shader_listing.hpp"
+#include "render/scene/shader_listing.hpp"
 
 namespace pw::app {
 namespace {

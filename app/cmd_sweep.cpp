@@ -3,7 +3,7 @@
 // so vertices popping in under integer spacing and sliding in under fractional spacing show), or a
 // domain figure (--domain / --preset); --compare puts panes with their own partitioning side by
 // side. Each frame (or pane) is captioned with its level and triangle count. An output ending in
-// .gif, .mp4 or .webm is one animation at --fps instead (render/animation_writer.hpp).
+// .gif, .mp4 or .webm is one animation at --fps instead (render/figures/animation_writer.hpp).
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -13,17 +13,17 @@
 #include <regex>
 
 #include "app/commands.hpp"
-#include "core/document_io.hpp"
-#include "render/domain_labels.hpp"
-#include "core/errors.hpp"
-#include "core/file_io.hpp"
+#include "core/io/document_io.hpp"
+#include "render/domain/domain_labels.hpp"
+#include "core/base/errors.hpp"
+#include "core/base/file_io.hpp"
 #include "app/level_args.hpp"
-#include "core/model_builders.hpp"
-#include "render/model_figure.hpp"
-#include "render/offscreen_target.hpp"
-#include "render/png_writer.hpp"
-#include "render/sweep_figure.hpp"
-#include "render/animation_writer.hpp"
+#include "core/construct/model_builders.hpp"
+#include "render/figures/model_figure.hpp"
+#include "render/targets/offscreen_target.hpp"
+#include "render/targets/png_writer.hpp"
+#include "render/figures/sweep_figure.hpp"
+#include "render/figures/animation_writer.hpp"
 #include "app/render_args.hpp"
 
 namespace pw::app {

@@ -1,7 +1,7 @@
 #include "app/displacement_args.hpp"
 
 #include "app/level_args.hpp"
-#include "core/displacement.hpp"
+#include "core/eval/displacement.hpp"
 
 namespace pw::app {
 

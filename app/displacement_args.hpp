@@ -8,8 +8,8 @@
 #include <memory>
 #include <string>
 
-#include "core/document.hpp"
-#include "core/height_map.hpp"
+#include "core/model/document.hpp"
+#include "core/model/height_map.hpp"
 
 namespace pw::app {
 

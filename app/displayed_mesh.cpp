@@ -1,11 +1,11 @@
 #include "app/displayed_mesh.hpp"
 
-#include "render/device.hpp"
-#include "render/offscreen_target.hpp"
+#include "render/vk/device.hpp"
+#include "render/targets/offscreen_target.hpp"
 
 namespace pw::app {
 
-DisplayedMeshRequest displayedMeshRequest(const GltfExportOptions& stored) {
+DisplayedMeshRequest displayedMeshRequest(const ExportOptions& stored) {
     DisplayedMeshRequest request;
     if (stored.viewport[0] > 0 && stored.viewport[1] > 0) request.viewport = stored.viewport;
     return request;

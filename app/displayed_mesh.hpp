@@ -8,9 +8,9 @@
 #include <memory>
 #include <string>
 
-#include "core/document.hpp"
-#include "core/gltf_export.hpp"
-#include "render/renderer.hpp"
+#include "core/model/document.hpp"
+#include "core/io/gltf_export.hpp"
+#include "render/scene/renderer.hpp"
 
 namespace pw::app {
 
@@ -23,7 +23,7 @@ struct DisplayedMeshRequest {
 
 // The request a file exported as displayed asks for again: its stored viewport (when it has one)
 // on the best device.
-DisplayedMeshRequest displayedMeshRequest(const GltfExportOptions& stored);
+DisplayedMeshRequest displayedMeshRequest(const ExportOptions& stored);
 
 // InputError (exit 2) when no device can capture (no Vulkan device, no transform feedback).
 render::CapturedSurface captureDisplayedMesh(const Document& doc, const DisplayedMeshRequest& request, std::string* deviceName = nullptr);

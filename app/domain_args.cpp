@@ -1,7 +1,7 @@
 #include "app/domain_args.hpp"
 
 #include "app/level_args.hpp"
-#include "core/tess_presets.hpp"
+#include "core/tess/tess_presets.hpp"
 
 namespace pw::app {
 

@@ -1,11 +1,11 @@
 // `--domain`, `--preset`, `--compare` and the level options of render and sweep turned into the
-// panes of a domain figure (render/domain_figure.hpp).
+// panes of a domain figure (render/figures/domain_figure.hpp).
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "render/domain_figure.hpp"
+#include "render/figures/domain_figure.hpp"
 
 namespace pw::app {
 

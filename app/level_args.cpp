@@ -7,8 +7,8 @@
 #include <regex>
 #include <sstream>
 
-#include "core/errors.hpp"
-#include "core/limits.hpp"
+#include "core/base/errors.hpp"
+#include "core/base/limits.hpp"
 
 namespace pw::app {
 

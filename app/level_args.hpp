@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "core/document.hpp"
+#include "core/model/document.hpp"
 
 namespace pw::app {
 

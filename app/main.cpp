@@ -5,14 +5,15 @@
 #include <iostream>
 
 #include "app/commands.hpp"
-#include "core/errors.hpp"
+#include "core/io/formats.hpp"
+#include "core/base/errors.hpp"
 
 int main(int argc, char** argv) {
     CLI::App app{"Patchwork — a Bézier/spline patch editor on the GPU tessellation pipeline"};
     app.require_subcommand(0, 1);
     app.set_version_flag("--version", "patchwork " PATCHWORK_VERSION);
     std::string file;
-    app.add_option("file", file, "Document to open (.patchwork, .bpt, .gltf, .glb); default: the built-in teapot");
+    app.add_option("file", file, "Document to open (" + pw::formatList(pw::FormatUse::Load, ", ") + "); default: the built-in teapot");
 
     pw::app::Action run;
     pw::app::registerInfoCommand(app, run);

@@ -5,10 +5,10 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
-#include "core/document.hpp"
+#include "core/model/document.hpp"
 #include "app/displacement_args.hpp"
 #include "app/domain_args.hpp"
-#include "render/renderer.hpp"
+#include "render/scene/renderer.hpp"
 
 namespace pw::app {
 

@@ -1,15 +1,15 @@
 // One mouse move of an editor drag (or R rotation) on makePatchGrid(32, 32) (1 024 patches, 9 409 points), through
-// the editor's own DragController (core/drag_controller.hpp): the dragged points follow the mouse
+// the editor's own DragController (core/edit/drag_controller.hpp): the dragged points follow the mouse
 // on the view plane, the solver (factorised at drag start) holds the joins, and only the points that
 // changed since the last move are written into the mapped float3 pool buffer. Budget: <= 1 ms CPU.
 #include <benchmark/benchmark.h>
 
 #include <vector>
 
-#include "core/camera_math.hpp"
-#include "core/drag_controller.hpp"
-#include "core/model_builders.hpp"
-#include "core/point_upload.hpp"
+#include "core/model/camera_math.hpp"
+#include "core/edit/drag_controller.hpp"
+#include "core/construct/model_builders.hpp"
+#include "core/base/point_upload.hpp"
 
 namespace {
 

@@ -12,13 +12,13 @@
 #include <random>
 #include <vector>
 
-#include "core/document_io.hpp"
-#include "core/mesh_tessellate.hpp"
-#include "core/obj_export.hpp"
-#include "core/step_export.hpp"
-#include "core/gltf_export.hpp"
-#include "core/model_builders.hpp"
-#include "core/patch_eval.hpp"
+#include "core/io/document_io.hpp"
+#include "core/mesh/mesh_tessellate.hpp"
+#include "core/io/obj_export.hpp"
+#include "core/io/step_export.hpp"
+#include "core/io/gltf_export.hpp"
+#include "core/construct/model_builders.hpp"
+#include "core/eval/patch_eval.hpp"
 
 namespace {
 
@@ -46,7 +46,7 @@ void BM_ExportGlbGrid32x32Level32(benchmark::State& state) {
         std::filesystem::temp_directory_path() / ("patchwork-bench-export-" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     const std::filesystem::path out = dir / "grid32.glb";
-    pw::GltfExportOptions options;
+    pw::ExportOptions options;
     options.level = 32;
     const double baseline = currentRssMiB();
     pw::GltfExportStats stats;

@@ -1,6 +1,6 @@
 // libFuzzer target: the .bpt importer. Any input either parses or throws InputError; a parsed
 // document survives formatBpt -> parseBpt with the same patch count.
-#include "core/bpt_format.hpp"
+#include "core/io/bpt_format.hpp"
 #include "fuzz/fuzz_loader.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

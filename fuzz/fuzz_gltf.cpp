@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <string_view>
 
-#include "core/errors.hpp"
-#include "core/gltf_import.hpp"
+#include "core/base/errors.hpp"
+#include "core/io/gltf_import.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     try {

@@ -7,8 +7,8 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "core/document.hpp"
-#include "core/errors.hpp"
+#include "core/model/document.hpp"
+#include "core/base/errors.hpp"
 
 namespace pw::fuzz {
 

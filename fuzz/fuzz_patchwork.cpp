@@ -1,6 +1,6 @@
 // libFuzzer target: the .patchwork JSON loader. Any input either loads or throws InputError; a
 // loaded document saves and loads back identical.
-#include "core/patchwork_format.hpp"
+#include "core/io/patchwork_format.hpp"
 #include "fuzz/fuzz_loader.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

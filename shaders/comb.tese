@@ -8,15 +8,15 @@
 // segments draw base → tip, back, and the chord to the next tooth's base.
 // Envelope (kDrawCombEnvelope): 64 segments, every vertex a tip.
 // A tip is p − frame.comb.x · κN: outward from the centre of curvature, κN from the curve's first
-// and second derivatives by core/curvature_math.h (the CPU's formula, one home).
+// and second derivatives by core/gpu/curvature_math.h (the CPU's formula, one home).
 #include "common.glsl"
-#include "core/curvature_math.h"
-#include "core/rational_math.h"
+#include "core/gpu/curvature_math.h"
+#include "core/gpu/rational_math.h"
 
 layout(isolines, equal_spacing) in;
 layout(location = 0) out vec4 outColor;
 
-// Control points arrive homogeneous (core/rational_math.h: w·P, w − 1): the sums below are
+// Control points arrive homogeneous (core/gpu/rational_math.h: w·P, w − 1): the sums below are
 // homogeneous and the quotient rule gives the rational curve's derivatives.
 vec4 cp(int s) { return gl_in[s].gl_Position; }
 

@@ -1,6 +1,6 @@
 // Shared declarations of the Patchwork shaders: the interface blocks frame, counters and draw and
-// the patch math, each written once for C++ and GLSL (render/gpu_interface.h, core/patch_math.h).
-#include "render/gpu_interface.h"
+// the patch math, each written once for C++ and GLSL (core/gpu/gpu_interface.h, core/gpu/patch_math.h).
+#include "core/gpu/gpu_interface.h"
 
 // binding 1: per-patch tessellation overrides, indexed by patchBase + gl_PrimitiveID.
 layout(set = 0, binding = 1, std430) readonly buffer Patches { PatchData patches[]; };

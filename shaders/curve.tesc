@@ -3,7 +3,7 @@
 // Levels of the isoline domain (DESIGN §3) for Bézier curves (4 points) and, with -DISOCURVES, for
 // the isocurve overlay of 16-point windows: outer level 0 = lines (the tessellator always rounds it
 // up to an integer), outer level 1 = segments per line (under the document's partitioning; pow2 is
-// equal spacing with the level rounded up to a power of two here, core/patch_math.h's roundLevel).
+// equal spacing with the level rounded up to a power of two here, core/gpu/patch_math.h's roundLevel).
 // A curve is one line.
 #include "common.glsl"
 

@@ -6,12 +6,12 @@
 // last lie on its boundary (n = 2: the boundary curves; n = 1: the u0 or v0 boundary), along u or,
 // with draw.isoDirection = 1, along v; any basis (draw.basis).
 #include "common.glsl"
-#include "core/rational_math.h"
+#include "core/gpu/rational_math.h"
 
 layout(isolines, SPACING) in;
 layout(location = 0) out vec4 outColor;
 
-// Control points arrive homogeneous (core/rational_math.h: w·P, w − 1); rational curves and windows
+// Control points arrive homogeneous (core/gpu/rational_math.h: w·P, w − 1); rational curves and windows
 // sum them and divide.
 vec4 cph(int s) { return gl_in[s].gl_Position; }
 
@@ -36,7 +36,7 @@ void main() {
 #else
     vec4 w = bernstein3(t, 1.0 - t);
     vec3 p = rationalPoint(w.x * cph(0) + w.y * cph(1) + w.z * cph(2) + w.w * cph(3));
-    p = t == 0.0 ? rationalPoint(cph(0)) : (t == 1.0 ? rationalPoint(cph(3)) : p);  // exact ends, like core/bezier_curve.cpp
+    p = t == 0.0 ? rationalPoint(cph(0)) : (t == 1.0 ? rationalPoint(cph(3)) : p);  // exact ends, like core/eval/bezier_curve.cpp
 #endif
     gl_Position = frame.viewProj * vec4(p, 1.0);
     gl_Position.z -= 2e-6 * gl_Position.w;  // in front of the surface the curve lies on

@@ -7,7 +7,7 @@
 // levels and per-patch overrides only. lavapipe runs every branch whether taken or not, so the
 // adaptive and culling code would otherwise cost ~25 ms a frame on 1 024 patches when switched off.
 #include "common.glsl"
-#include "core/rational_math.h"
+#include "core/gpu/rational_math.h"
 
 layout(vertices = 16) out;
 layout(location = 0) in int inIdx[];
@@ -83,7 +83,7 @@ void main() {
 
     // The settings' levels (uniform or adaptive), then the shared-edge rule: an edge whose windows
     // all have their own levels takes the largest of those, any other edge at least that much
-    // (core/edge_levels.hpp), so both sides of a shared edge agree.
+    // (core/tess/edge_levels.hpp), so both sides of a shared edge agree.
     PatchData pd = patches[draw.patchBase + uint(gl_PrimitiveID)];
     float o[4];
     float in0, in1;

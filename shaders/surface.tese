@@ -1,7 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Evaluates a 4x4 window at gl_TessCoord for any basis (matrix M per draw), with analytic normals
-// (degenerate-edge fallback like core/patch_eval.cpp normalAt), Bézier boundary points from the
+// (degenerate-edge fallback like core/eval/patch_eval.cpp normalAt), Bézier boundary points from the
 // boundary's four points in canonical order (bit-identical seams), and curvatures.
 // With -DDISPLACE the point moves along the normal by the height map (displacement.glsl).
 // Built once per partitioning: -DSPACING=equal_spacing|fractional_odd_spacing|fractional_even_spacing,
@@ -9,8 +9,8 @@
 // that need UV, patch id or curvatures (lit, normal, zebra and wireframe pass position and normal
 // only: every varying costs per-vertex work in lavapipe's draw module and attribute bandwidth on GPUs).
 #include "common.glsl"
-#include "core/curvature_math.h"
-#include "core/rational_math.h"
+#include "core/gpu/curvature_math.h"
+#include "core/gpu/rational_math.h"
 #ifdef DISPLACE
 #include "displacement.glsl"
 #endif
@@ -39,12 +39,12 @@ layout(location = 3 XFB(32)) flat out uint outPatch;
 layout(location = 4) out vec2 outCurv;  // Gaussian, mean
 #endif
 
-// Control points arrive homogeneous (core/rational_math.h): w·P and w − 1.
+// Control points arrive homogeneous (core/gpu/rational_math.h): w·P and w − 1.
 vec4 cph(int s) { return gl_in[s].gl_Position; }
 vec3 cp(int s) { return rationalPoint(gl_in[s].gl_Position); }
 
 void weights(float t, out vec4 w, out vec4 dw, out vec4 ddw) {
-    if (draw.basisKind == kBasisBezier) {  // Bernstein from t and s = 1 - t (core/patch_math.h)
+    if (draw.basisKind == kBasisBezier) {  // Bernstein from t and s = 1 - t (core/gpu/patch_math.h)
         float s = 1.0 - t;
         w = bernstein3(t, s);
         dw = bernstein3D1(t, s);
@@ -59,7 +59,7 @@ void weights(float t, out vec4 w, out vec4 dw, out vec4 ddw) {
 struct Derivs { vec3 p, du, dv, duu, dvv, duv; };
 
 // Position, first derivatives and the mixed derivative; duu and dvv only when `second` (curvature).
-// The sums run over the homogeneous points and the quotient rule of core/rational_math.h gives the
+// The sums run over the homogeneous points and the quotient rule of core/gpu/rational_math.h gives the
 // rational patch's derivatives (for weights 1 the polynomial's, bit for bit).
 // (lavapipe runs both sides of divergent branches, so the common path stays branch-free.)
 Derivs evalAt(float u, float v, bool second) {

@@ -1,5 +1,5 @@
 // Tessellation-level helpers of the quad (surface.tesc) and triangle (tri_surface.tesc) control
-// shaders: core/patch_math.h's adaptive edge level and rounding with this frame's settings. Both
+// shaders: core/gpu/patch_math.h's adaptive edge level and rounding with this frame's settings. Both
 // control shaders compute a shared edge's level with the same code from the same canonical points.
 // Needs common.glsl first, and the control shader's `inIdx[]` (the pool index of each control point)
 // declared before the include.
@@ -17,7 +17,7 @@ float displacementMargin(PatchData pd) {
     return max(abs(sb.y), abs(sb.x + sb.y));
 }
 
-// Edge level `level` raised for the height map's detail along the edge (core/patch_math.h
+// Edge level `level` raised for the height map's detail along the edge (core/gpu/patch_math.h
 // displacementEdgeLevel) at this distance: pixels per world unit across the view at the canonical
 // chord's midpoint, from the points alone, so both windows on the edge agree. The surface pass
 // counts the edges raised and the largest such level (the stats).

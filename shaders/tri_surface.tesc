@@ -1,6 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Tessellation levels of one cubic Bézier triangle (10 control points, core/bezier_triangle.hpp
+// Tessellation levels of one cubic Bézier triangle (10 control points, core/eval/bezier_triangle.hpp
 // order): three outer levels (edge 0: u = 0, 1: v = 0, 2: w = 0) and one inner, from the uniform
 // levels (outer[0..2], inner[0]), a per-triangle override or adaptive (each edge from its own four
 // points in canonical order, with the quads' code: crack free against triangles and quads alike);
@@ -73,7 +73,7 @@ void main() {
         if (reversedEdge(triEdgeSlot(e, 0), triEdgeSlot(e, 1), triEdgeSlot(e, 2), triEdgeSlot(e, 3))) flip |= 1u << uint(e);
     edgeFlipPatch = flip;
 
-    // The settings' levels, then the shared-edge rule (core/edge_levels.hpp), as in surface.tesc.
+    // The settings' levels, then the shared-edge rule (core/tess/edge_levels.hpp), as in surface.tesc.
     PatchData pd = patches[draw.patchBase + uint(gl_PrimitiveID)];
     float o[3];
     float in0;

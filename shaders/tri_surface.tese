@@ -1,6 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Evaluates a cubic Bézier triangle at gl_TessCoord = (u, v, w) (core/bezier_triangle.cpp): the
+// Evaluates a cubic Bézier triangle at gl_TessCoord = (u, v, w) (core/eval/bezier_triangle.cpp): the
 // Bernstein sum for the position, the quadratic difference sums for ∂p/∂u and ∂p/∂v, the normal
 // du × dv with a fallback a small step towards the centroid where that vanishes (collapsed edges),
 // and boundary points from the edge's four points only, in canonical order, with the same code as
@@ -8,7 +8,7 @@
 // lean (normal), -DPOINT_MODE (the normal-vector overlay) or -DFULL_VARYINGS (UV = (u, v), patch id, Gaussian and mean curvature from the
 // second derivatives when a curvature shading is on).
 #include "common.glsl"
-#include "core/curvature_math.h"
+#include "core/gpu/curvature_math.h"
 #ifdef DISPLACE
 #include "displacement.glsl"  // -DDISPLACE: moved along the normal by the height map
 #endif

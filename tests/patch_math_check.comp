@@ -1,6 +1,6 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Runs every function of core/patch_math.h on the GPU over the inputs of tests/patch_math_check.h;
+// Runs every function of core/gpu/patch_math.h on the GPU over the inputs of tests/patch_math_check.h;
 // tests/render_test_patch_math.cpp runs the same header compiled as C++ and compares.
 #include "tests/patch_math_check.h"
 

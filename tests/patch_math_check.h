@@ -1,10 +1,10 @@
 // Input and output layout of tests/patch_math_check.comp, the compute shader that runs
-// core/patch_math.h on the GPU for tests/render_test_patch_math.cpp (written once for both
-// languages, like render/gpu_interface.h).
+// core/gpu/patch_math.h on the GPU for tests/render_test_patch_math.cpp (written once for both
+// languages, like core/gpu/gpu_interface.h).
 #ifndef PW_PATCH_MATH_CHECK_H
 #define PW_PATCH_MATH_CHECK_H
 
-#include "core/patch_math.h"
+#include "core/gpu/patch_math.h"
 
 PW_BEGIN_NAMESPACE
 

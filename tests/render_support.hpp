@@ -10,10 +10,10 @@
 #include <memory>
 #include <vector>
 
-#include "core/camera_math.hpp"
-#include "render/device.hpp"
-#include "render/offscreen_target.hpp"
-#include "render/renderer.hpp"
+#include "core/model/camera_math.hpp"
+#include "render/vk/device.hpp"
+#include "render/targets/offscreen_target.hpp"
+#include "render/scene/renderer.hpp"
 
 namespace pw::test {
 

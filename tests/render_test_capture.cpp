@@ -1,4 +1,4 @@
-// Export as displayed (render/surface_capture.cpp): the tessellator's triangles read back through
+// Export as displayed (render/scene/surface_capture.cpp): the tessellator's triangles read back through
 // transform feedback (validation layer on, any message fails). The capture holds exactly the
 // triangles the frame's statistics count for every partitioning and adaptive mode; welded, the
 // teapot is watertight (open edges only on its real boundary, no T-junctions, nothing left unwelded)
@@ -10,10 +10,10 @@
 #include <map>
 #include <set>
 
-#include "core/bpt_format.hpp"
-#include "core/document_io.hpp"
-#include "core/mesh_tessellate.hpp"
-#include "core/model_builders.hpp"
+#include "core/io/bpt_format.hpp"
+#include "core/io/document_io.hpp"
+#include "core/mesh/mesh_tessellate.hpp"
+#include "core/construct/model_builders.hpp"
 #include "render_support.hpp"
 #include "support.hpp"
 

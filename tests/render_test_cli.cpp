@@ -4,7 +4,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "render/device.hpp"
+#include "render/vk/device.hpp"
 #include "support.hpp"
 
 namespace pw::test {

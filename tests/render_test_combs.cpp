@@ -4,7 +4,7 @@
 // its two windows' combs; `render --comb-join` checks its argument.
 #include <cmath>
 
-#include "core/model_builders.hpp"
+#include "core/construct/model_builders.hpp"
 #include "render_support.hpp"
 #include "support.hpp"
 

@@ -4,8 +4,8 @@
 // and last on its boundary. The surface statistics are not changed by either. Validation on.
 #include <algorithm>
 
-#include "core/bezier_curve.hpp"
-#include "core/patch_ops.hpp"
+#include "core/eval/bezier_curve.hpp"
+#include "core/ops/patch_ops.hpp"
 #include "render_support.hpp"
 
 namespace pw::test {

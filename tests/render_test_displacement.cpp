@@ -10,10 +10,10 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "core/displacement.hpp"
-#include "core/document_io.hpp"
-#include "core/patchwork_format.hpp"
-#include "core/terrain.hpp"
+#include "core/eval/displacement.hpp"
+#include "core/io/document_io.hpp"
+#include "core/io/patchwork_format.hpp"
+#include "core/construct/terrain.hpp"
 #include "render_support.hpp"
 #include "support.hpp"
 

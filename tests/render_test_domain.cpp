@@ -6,7 +6,7 @@
 #include <random>
 #include <sstream>
 
-#include "render/domain_view.hpp"
+#include "render/domain/domain_view.hpp"
 #include "render_support.hpp"
 
 namespace pw::test {

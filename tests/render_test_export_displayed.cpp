@@ -7,8 +7,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "core/document_io.hpp"
-#include "core/gltf_import.hpp"
+#include "core/io/document_io.hpp"
+#include "core/io/gltf_import.hpp"
 #include "support.hpp"
 
 namespace pw::test {
@@ -53,7 +53,7 @@ TEST(ExportDisplayed, WritesTheGpusTrianglesValidAndReproducible) {
     expectValidGltf({glb});
 
     // The extras say how it was made, and the editable document is still there.
-    std::optional<GltfExportOptions> options;
+    std::optional<ExportOptions> options;
     const Document back = importPatchworkGltf(glb, &options);
     ASSERT_TRUE(options);
     EXPECT_TRUE(options->asDisplayed);

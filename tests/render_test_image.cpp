@@ -5,8 +5,8 @@
 
 #include <cstring>
 
-#include "core/document_io.hpp"
-#include "core/picking.hpp"
+#include "core/io/document_io.hpp"
+#include "core/select/picking.hpp"
 #include "render_support.hpp"
 
 namespace pw::test {

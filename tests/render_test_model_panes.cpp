@@ -1,11 +1,11 @@
-// Comparison panes of the model (render/model_figure.hpp): each pane is exactly the picture a
+// Comparison panes of the model (render/figures/model_figure.hpp): each pane is exactly the picture a
 // target of the pane's size would show with the pane's settings, later panes leave the earlier
 // ones alone, and each pane's statistics are its own. Validation layer on.
 #include <algorithm>
 
-#include "core/document_io.hpp"
-#include "render/label_raster.hpp"
-#include "render/model_figure.hpp"
+#include "core/io/document_io.hpp"
+#include "render/figures/label_raster.hpp"
+#include "render/figures/model_figure.hpp"
 #include "render_support.hpp"
 
 namespace pw::test {

@@ -1,4 +1,4 @@
-// core/patch_math.h on the GPU and on the CPU: tests/patch_math_check.comp runs every function of
+// core/gpu/patch_math.h on the GPU and on the CPU: tests/patch_math_check.comp runs every function of
 // the shared header on the device (lavapipe here, any GPU with `--gtest` on the device machine)
 // and the test runs the same header compiled as C++ on the same inputs. Integer results (edge
 // slots, canonical direction, rounded levels) must be equal; float results equal to float rounding;
@@ -10,8 +10,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/buffers.hpp"
-#include "render/vk_owned.hpp"
+#include "render/vk/buffers.hpp"
+#include "render/vk/vk_owned.hpp"
 #include "render_support.hpp"
 #include "patch_math_check.h"
 
@@ -108,7 +108,9 @@ TEST_F(PatchMath, TheShadersAndTheCpuAgree) {
         for (uint32_t s = 0; s < 4; ++s) {
             const float cpu = gpu::roundLevel(in.levels[i], s), gpuValue = g[size_t(gpu::kOutRound + i * 4 + int(s))];
             EXPECT_EQ(cpu, gpuValue) << "roundLevel(" << in.levels[i] << ", spacing " << s << ")";
-            if (s == gpu::kSpacingPow2 || s == gpu::kSpacingEqual) EXPECT_EQ(cpu, std::round(cpu)) << "an integer level";
+            if (s == gpu::kSpacingPow2 || s == gpu::kSpacingEqual) {
+                EXPECT_EQ(cpu, std::round(cpu)) << "an integer level";
+            }
         }
     for (int i = 0; i < gpu::kCheckBernstein; ++i) {
         const float t = float(i) / float(gpu::kCheckBernstein - 1), s = 1.0f - t;

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <map>
 
-#include "core/primitives.hpp"
+#include "core/construct/primitives.hpp"
 #include "render_support.hpp"
 #include "support.hpp"
 

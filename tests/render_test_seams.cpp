@@ -4,9 +4,9 @@
 
 #include <cstdlib>
 
-#include "core/mesh_tessellate.hpp"
-#include "core/model_builders.hpp"
-#include "render/png_writer.hpp"
+#include "core/mesh/mesh_tessellate.hpp"
+#include "core/construct/model_builders.hpp"
+#include "render/targets/png_writer.hpp"
 #include "render_support.hpp"
 
 namespace pw::test {
@@ -104,7 +104,7 @@ TEST_F(RenderSeams, DistanceAdaptiveGridHasNoCracks) {
     EXPECT_EQ(holesInside(r, o, doc, rows, cols), 0u);
 }
 
-// The level belongs to the edge (core/edge_levels.hpp): patches with their own levels (2 next to
+// The level belongs to the edge (core/tess/edge_levels.hpp): patches with their own levels (2 next to
 // 16, and next to patches without) meet without a crack under every partitioning and adaptive mode.
 TEST_F(RenderSeams, MixedPerPatchLevelsHaveNoCracks) {
     const int rows = 4, cols = 4;

@@ -8,7 +8,7 @@
 #include <set>
 #include <sstream>
 
-#include "render/shader_listing.hpp"
+#include "render/scene/shader_listing.hpp"
 #include "support.hpp"
 
 namespace pw::test {
@@ -90,7 +90,7 @@ TEST(ShaderListing, DefinesSwitchBranchesOnAndOff) {
         }
     }
     // Every line of the shaders' own files is on in the full variant; the shared headers
-    // (core/patch_math.h, ...) have a C++ branch that is off.
+    // (core/gpu/patch_math.h, ...) have a C++ branch that is off.
     size_t sharedOff = 0;
     for (const auto& line : full->lines) {
         const bool shared = line.file.find('/') != std::string::npos;

@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/model_builders.hpp"
+#include "core/construct/model_builders.hpp"
 #include "render_support.hpp"
-#include "render/tess_levels.hpp"
+#include "core/tess/tess_levels.hpp"
 
 namespace pw::test {
 namespace {
@@ -16,7 +16,7 @@ namespace {
 constexpr uint32_t W = 256, H = 256;
 
 // Segments a requested level becomes (Vulkan spec, "Tessellator Spacing"), written independently
-// of render/tess_levels.cpp.
+// of core/tess/tess_levels.cpp.
 int segments(float f, Spacing s) {
     switch (s) {
         case Spacing::Equal: return int(std::ceil(std::clamp(f, 1.0f, 64.0f)));

@@ -6,17 +6,17 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "render/domain_figure.hpp"
-#include "render/domain_labels.hpp"
+#include "render/figures/domain_figure.hpp"
+#include "render/domain/domain_labels.hpp"
 #include "support.hpp"
-#include "core/tess_presets.hpp"
+#include "core/tess/tess_presets.hpp"
 
 namespace pw::test {
 namespace {
 
 std::string bin() { return "PATCHWORK_VALIDATION=1 " + patchworkBinary().string(); }
 
-// Pixels of the edge-label colour (render/domain_figure.cpp: dark red text) inside a rectangle.
+// Pixels of the edge-label colour (render/figures/domain_figure.cpp: dark red text) inside a rectangle.
 size_t labelPixels(const Png& img, int x0, int y0, int x1, int y1) {
     size_t n = 0;
     for (int y = std::max(0, y0); y < std::min(img.h, y1); ++y)

@@ -7,8 +7,8 @@
 #include <cstdlib>
 #include <map>
 
-#include "core/model_builders.hpp"
-#include "render/png_writer.hpp"
+#include "core/construct/model_builders.hpp"
+#include "render/targets/png_writer.hpp"
 #include "render_support.hpp"
 
 namespace pw::test {

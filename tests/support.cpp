@@ -1,5 +1,7 @@
 #include "support.hpp"
 
+#include <gtest/gtest.h>
+
 #include <stb_image.h>
 
 #include <sys/wait.h>

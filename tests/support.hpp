@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <string>
 
-#include "core/command_table.hpp"
-#include "core/document.hpp"
-#include "core/edit_session.hpp"
+#include "core/commands/command_table.hpp"
+#include "core/model/document.hpp"
+#include "core/edit/edit_session.hpp"
 
 namespace pw::test {
 

@@ -14,7 +14,7 @@
 #include <random>
 #include <string>
 
-#include "core/file_io.hpp"
+#include "core/base/file_io.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;

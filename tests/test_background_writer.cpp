@@ -5,9 +5,9 @@
 
 #include <filesystem>
 
-#include "core/background_writer.hpp"
-#include "core/document_io.hpp"
-#include "core/model_builders.hpp"
+#include "core/edit/background_writer.hpp"
+#include "core/io/document_io.hpp"
+#include "core/construct/model_builders.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;
@@ -16,7 +16,7 @@ using namespace pw;
 TEST(BackgroundWriter, WritesInOrderAndReportsEachOnce) {
     const fs::path dir = test::freshTempDir("background-writer");
     const Document big = makePatchGrid(24, 24);
-    GltfExportOptions opts;
+    ExportOptions opts;
     opts.level = 40;
     BackgroundWriter w;
     EXPECT_EQ(w.enqueue(big, (dir / "a.glb").string(), opts), 0u);

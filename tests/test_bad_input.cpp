@@ -10,9 +10,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "core/bpt_format.hpp"
-#include "core/document_io.hpp"
-#include "core/errors.hpp"
+#include "core/io/bpt_format.hpp"
+#include "core/io/document_io.hpp"
+#include "core/base/errors.hpp"
 #include "support.hpp"
 
 using namespace pw;

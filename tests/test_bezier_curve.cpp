@@ -7,12 +7,12 @@
 #include <cmath>
 #include <random>
 
-#include "core/bezier_curve.hpp"
-#include "core/bpt_format.hpp"
-#include "core/edit_history.hpp"
-#include "core/errors.hpp"
-#include "core/patch_ops.hpp"
-#include "core/patchwork_format.hpp"
+#include "core/eval/bezier_curve.hpp"
+#include "core/io/bpt_format.hpp"
+#include "core/model/edit_history.hpp"
+#include "core/base/errors.hpp"
+#include "core/ops/patch_ops.hpp"
+#include "core/io/patchwork_format.hpp"
 #include "support.hpp"
 
 namespace pw {

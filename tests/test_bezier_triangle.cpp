@@ -6,10 +6,10 @@
 #include <cmath>
 #include <random>
 
-#include "core/basis.hpp"
-#include "core/bezier_triangle.hpp"
-#include "core/document.hpp"
-#include "core/patch_eval.hpp"
+#include "core/model/basis.hpp"
+#include "core/eval/bezier_triangle.hpp"
+#include "core/model/document.hpp"
+#include "core/eval/patch_eval.hpp"
 
 using namespace pw;
 

@@ -6,12 +6,12 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "core/constraint_solver.hpp"
-#include "core/continuity_report.hpp"
-#include "core/continuity_watch.hpp"
-#include "core/document_io.hpp"
-#include "core/document.hpp"
-#include "core/model_builders.hpp"
+#include "core/solve/constraint_solver.hpp"
+#include "core/solve/continuity_report.hpp"
+#include "core/solve/continuity_watch.hpp"
+#include "core/io/document_io.hpp"
+#include "core/model/document.hpp"
+#include "core/construct/model_builders.hpp"
 #include "tests/support.hpp"
 
 using namespace pw;
@@ -148,7 +148,7 @@ TEST(Continuity, G1RatioIsMeasuredWithAlpha) {
     EXPECT_LE(jc.normalAngleDeg, 1e-6);  // G1: tangent planes agree
 }
 
-// The editor's live readout (core/continuity_watch.hpp): everything when settled, only the joins
+// The editor's live readout (core/solve/continuity_watch.hpp): everything when settled, only the joins
 // next to the dragged points while a drag is under way, tolerances applied.
 TEST(ContinuityWatch, LiveNextToTheDragAndFullWhenSettled) {
     Document doc = makePatchGrid(4, 4, Continuity::C2);

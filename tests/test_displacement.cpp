@@ -9,13 +9,13 @@
 #include <fstream>
 #include <cstdlib>
 
-#include "core/command_table.hpp"
-#include "core/displacement.hpp"
-#include "core/document_io.hpp"
-#include "core/edit_session.hpp"
-#include "core/errors.hpp"
-#include "core/patchwork_format.hpp"
-#include "core/terrain.hpp"
+#include "core/commands/command_table.hpp"
+#include "core/eval/displacement.hpp"
+#include "core/io/document_io.hpp"
+#include "core/edit/edit_session.hpp"
+#include "core/base/errors.hpp"
+#include "core/io/patchwork_format.hpp"
+#include "core/construct/terrain.hpp"
 #include "png16.hpp"
 #include "support.hpp"
 

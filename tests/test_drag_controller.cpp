@@ -1,4 +1,4 @@
-// Point drags without a window (core/drag_controller.hpp): the mouse moved by pixels moves the
+// Point drags without a window (core/edit/drag_controller.hpp): the mouse moved by pixels moves the
 // point in the view plane or along an axis, Ctrl snaps, the joins hold, Esc restores and a
 // finished drag is one undo step. Numbers are checked by projecting back to pixels.
 #include <gtest/gtest.h>
@@ -6,12 +6,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/camera_math.hpp"
-#include "core/constraint_solver.hpp"
-#include "core/drag_controller.hpp"
-#include "core/edit_session.hpp"
-#include "core/model_builders.hpp"
-#include "core/picking.hpp"
+#include "core/model/camera_math.hpp"
+#include "core/solve/constraint_solver.hpp"
+#include "core/edit/drag_controller.hpp"
+#include "core/edit/edit_session.hpp"
+#include "core/construct/model_builders.hpp"
+#include "core/select/picking.hpp"
 
 using namespace pw;
 

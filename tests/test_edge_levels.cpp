@@ -1,4 +1,4 @@
-// The shared-edge rule (core/edge_levels.hpp with sharedEdgeLevel of core/patch_math.h): whatever
+// The shared-edge rule (core/tess/edge_levels.hpp with sharedEdgeLevel of core/gpu/patch_math.h): whatever
 // the per-patch and per-triangle overrides, both sides of every shared boundary curve end up with
 // the same outer level for any level the settings give.
 #include <gtest/gtest.h>
@@ -6,10 +6,10 @@
 #include <map>
 #include <random>
 
-#include "core/bezier_triangle.hpp"
-#include "core/edge_levels.hpp"
-#include "core/model_builders.hpp"
-#include "core/patch_math.h"
+#include "core/eval/bezier_triangle.hpp"
+#include "core/tess/edge_levels.hpp"
+#include "core/construct/model_builders.hpp"
+#include "core/gpu/patch_math.h"
 
 using namespace pw;
 

@@ -4,7 +4,7 @@
 
 #include <fstream>
 
-#include "core/document_io.hpp"
+#include "core/io/document_io.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;

@@ -5,10 +5,10 @@
 #include <cstring>
 #include <random>
 
-#include "core/edit_history.hpp"
-#include "core/model_builders.hpp"
-#include "core/net_ops.hpp"
-#include "core/patch_ops.hpp"
+#include "core/model/edit_history.hpp"
+#include "core/construct/model_builders.hpp"
+#include "core/ops/net_ops.hpp"
+#include "core/ops/patch_ops.hpp"
 
 using namespace pw;
 

@@ -1,17 +1,17 @@
 // The editing session without a window: commit / undo / redo, import of every kind of content,
-// the save rule, and the command table run as scripts (core/command_table.hpp).
+// the save rule, and the command table run as scripts (core/commands/command_table.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
 
-#include "core/command_table.hpp"
-#include "core/constraint_solver.hpp"
-#include "core/document_io.hpp"
-#include "core/document_merge.hpp"
-#include "core/errors.hpp"
-#include "core/model_builders.hpp"
-#include "core/patch_ops.hpp"
+#include "core/commands/command_table.hpp"
+#include "core/solve/constraint_solver.hpp"
+#include "core/io/document_io.hpp"
+#include "core/model/document_merge.hpp"
+#include "core/base/errors.hpp"
+#include "core/construct/model_builders.hpp"
+#include "core/ops/patch_ops.hpp"
 #include "support.hpp"
 
 using namespace pw;
@@ -195,7 +195,7 @@ TEST(Commands, BadLinesNameTheScriptAndLine) {
     EXPECT_NE(scriptError("join 0:u1 0:q0 C1").find("patch 0 does not exist"), std::string::npos);
     EXPECT_NE(scriptError("add-patch; add-patch; join 0:u1 1:q0 C1").find("expected an edge"), std::string::npos);
     EXPECT_NE(scriptError("open /nonexistent/x.patchwork").find("s.txt:1: "), std::string::npos);
-    EXPECT_NE(scriptError("tess 0").find("a level must lie in 1..64"), std::string::npos);
+    EXPECT_NE(scriptError("tess 0").find("tess: LEVEL: value 0 is outside [1, 64]"), std::string::npos);
 }
 
 TEST(Commands, ViewOverlayShadingAndTessellation) {

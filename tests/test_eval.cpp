@@ -4,9 +4,9 @@
 
 #include <random>
 
-#include "core/basis.hpp"
-#include "core/document.hpp"
-#include "core/patch_eval.hpp"
+#include "core/model/basis.hpp"
+#include "core/model/document.hpp"
+#include "core/eval/patch_eval.hpp"
 
 using namespace pw;
 

@@ -10,9 +10,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/continuity_report.hpp"
-#include "core/document_io.hpp"
-#include "core/patch_eval.hpp"
+#include "core/solve/continuity_report.hpp"
+#include "core/io/document_io.hpp"
+#include "core/eval/patch_eval.hpp"
 #include "tests/support.hpp"
 
 using namespace pw;

@@ -5,14 +5,14 @@
 
 #include <stdexcept>
 
-#include "core/errors.hpp"
-#include "core/file_io.hpp"
-#include "core/gltf_export.hpp"
-#include "core/gltf_import.hpp"
-#include "core/limits.hpp"
-#include "core/mesh_tessellate.hpp"
-#include "core/model_builders.hpp"
-#include "core/patchwork_format.hpp"
+#include "core/base/errors.hpp"
+#include "core/base/file_io.hpp"
+#include "core/io/gltf_export.hpp"
+#include "core/io/gltf_import.hpp"
+#include "core/base/limits.hpp"
+#include "core/mesh/mesh_tessellate.hpp"
+#include "core/construct/model_builders.hpp"
+#include "core/io/patchwork_format.hpp"
 #include "support.hpp"
 
 using namespace pw;
@@ -37,7 +37,7 @@ TEST(ExportLimits, AnExportPastTheReadLimitIsRefusedBeforeTessellating) {
     EXPECT_LE(meshBound(doc, fits).bytes, room);
     EXPECT_GT(meshBound(doc, fits + 1).bytes, room);
     const auto dir = test::freshTempDir("export-limits");
-    GltfExportOptions o;
+    ExportOptions o;
     o.level = 256;
     try {
         exportGltf(doc, dir / "big.glb", o);
@@ -56,7 +56,7 @@ TEST(ExportLimits, SplicedDocumentRoundTrips) {
     Document doc = makePatchGrid(2, 2);
     doc.name = "@patchwork-document-1-2@";  // looks like the marker; must not confuse the splice
     for (bool binary : {false, true}) {
-        const std::string bytes = exportGltfBytes(doc, binary, GltfExportOptions{});
+        const std::string bytes = exportGltfBytes(doc, binary, ExportOptions{});
         EXPECT_EQ(parsePatchworkGltf(bytes, binary ? "x.glb" : "x.gltf"), doc) << binary;
     }
 }

@@ -15,12 +15,12 @@
 #include <string>
 #include <vector>
 
-#include "core/bezier_curve.hpp"
-#include "core/bpt_format.hpp"
-#include "core/errors.hpp"
-#include "core/gltf_export.hpp"
-#include "core/obj_export.hpp"
-#include "core/patch_ops.hpp"
+#include "core/eval/bezier_curve.hpp"
+#include "core/io/bpt_format.hpp"
+#include "core/base/errors.hpp"
+#include "core/io/gltf_export.hpp"
+#include "core/io/obj_export.hpp"
+#include "core/ops/patch_ops.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;

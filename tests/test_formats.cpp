@@ -11,13 +11,13 @@
 #include <nlohmann/json.hpp>
 #include <random>
 
-#include "core/bpt_format.hpp"
-#include "core/document_io.hpp"
-#include "core/errors.hpp"
-#include "core/file_io.hpp"
-#include "core/join_detect.hpp"
-#include "core/limits.hpp"
-#include "core/patchwork_format.hpp"
+#include "core/io/bpt_format.hpp"
+#include "core/io/document_io.hpp"
+#include "core/base/errors.hpp"
+#include "core/base/file_io.hpp"
+#include "core/model/join_detect.hpp"
+#include "core/base/limits.hpp"
+#include "core/io/patchwork_format.hpp"
 #include "support.hpp"
 
 using namespace pw;

@@ -17,14 +17,14 @@
 #include <string>
 #include <vector>
 
-#include "core/bezier_curve.hpp"
-#include "core/bpt_format.hpp"
-#include "core/patch_ops.hpp"
-#include "core/errors.hpp"
-#include "core/gltf_export.hpp"
-#include "core/net_ops.hpp"
-#include "core/gltf_import.hpp"
-#include "core/model_builders.hpp"
+#include "core/eval/bezier_curve.hpp"
+#include "core/io/bpt_format.hpp"
+#include "core/ops/patch_ops.hpp"
+#include "core/base/errors.hpp"
+#include "core/io/gltf_export.hpp"
+#include "core/ops/net_ops.hpp"
+#include "core/io/gltf_import.hpp"
+#include "core/construct/model_builders.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;
@@ -173,7 +173,7 @@ TEST(Gltf, TeaSetExportsAreValidAndRoundTrip) {
                     for (bool cage : {false, true}) {
                         const fs::path out = dir / (name + "-L" + std::to_string(level) + "-" + pw::meshGroupingName(grouping) +
                                                     (cage ? "-cage" : "") + ext);
-                        pw::GltfExportOptions options;
+                        pw::ExportOptions options;
                         options.level = level;
                         options.primitives = grouping;
                         options.cage = cage;
@@ -214,7 +214,7 @@ TEST(Gltf, BezierTriangleExportsAreValidAndRoundTrip) {
         for (int level : {1, 5, 16}) {
             for (pw::MeshGrouping grouping : kGroupings) {
                 const fs::path out = dir / ("tri" + std::to_string(n++) + "-" + pw::meshGroupingName(grouping) + (level == 5 ? ".gltf" : ".glb"));
-                pw::GltfExportOptions options;
+                pw::ExportOptions options;
                 options.level = level;
                 options.primitives = grouping;
                 options.cage = level == 5;
@@ -250,7 +250,7 @@ TEST(Gltf, BezierCurvesExportAsLinesAndRoundTrip) {
     for (const pw::Document& doc : {alone, mixed}) {
         for (int level : {1, 7, 16}) {
             const fs::path out = dir / ("curves" + std::to_string(n++) + (level == 7 ? ".gltf" : ".glb"));
-            pw::GltfExportOptions options;
+            pw::ExportOptions options;
             options.level = level;
             const pw::GltfExportStats stats = pw::exportGltfWithStats(doc, out, options);
             EXPECT_EQ(stats.curveSegments, doc.curves.size() * size_t(level));
@@ -356,7 +356,7 @@ TEST(Gltf, SurfacesAndAnEmptyDocumentExportValid) {
     const pw::Document empty;
     std::vector<fs::path> files;
     for (bool cage : {false, true}) {
-        pw::GltfExportOptions options;
+        pw::ExportOptions options;
         options.level = 6;
         options.cage = cage;
         const fs::path out = dir / (cage ? "surfaces-cage.glb" : "surfaces.gltf");

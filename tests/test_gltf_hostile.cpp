@@ -3,9 +3,9 @@
 
 #include <fstream>
 
-#include "core/errors.hpp"
-#include "core/file_io.hpp"
-#include "core/gltf_import.hpp"
+#include "core/base/errors.hpp"
+#include "core/base/file_io.hpp"
+#include "core/io/gltf_import.hpp"
 #include "support.hpp"
 
 using namespace pw;

@@ -6,9 +6,9 @@
 
 #include <glm/gtc/quaternion.hpp>
 
-#include "core/bpt_format.hpp"
-#include "core/gltf_export.hpp"
-#include "core/gltf_import.hpp"
+#include "core/io/bpt_format.hpp"
+#include "core/io/gltf_export.hpp"
+#include "core/io/gltf_import.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;
@@ -49,7 +49,7 @@ TEST(GltfUpAxis, AZUpTeapotStandsUpright) {
     const fs::path dir = pw::test::freshTempDir("gltf-up");
     pw::Document doc = pw::loadBpt(pw::test::dataDir() / "teapot.bpt");
     ASSERT_TRUE(doc.camera.zUp);
-    pw::GltfExportOptions o;
+    pw::ExportOptions o;
     o.level = 4;
     pw::exportGltf(doc, dir / "up.glb", o);
     const tinygltf::Model m = load(dir / "up.glb");

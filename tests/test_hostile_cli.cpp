@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/errors.hpp"
+#include "core/base/errors.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;

@@ -17,13 +17,13 @@
 #include <string>
 #include <vector>
 
-#include "core/document_io.hpp"
-#include "core/errors.hpp"
-#include "core/file_io.hpp"
-#include "core/glb_container.hpp"
-#include "core/net_ops.hpp"
-#include "core/patch_ops.hpp"
-#include "core/patchwork_format.hpp"
+#include "core/io/document_io.hpp"
+#include "core/base/errors.hpp"
+#include "core/base/file_io.hpp"
+#include "core/io/glb_container.hpp"
+#include "core/ops/net_ops.hpp"
+#include "core/ops/patch_ops.hpp"
+#include "core/io/patchwork_format.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;
@@ -233,11 +233,14 @@ TEST_F(HostileCorpus, EveryFileLoadsExactlyOrIsRefusedNamingTheFileAndWhere) {
             ++refused;
             // The GLB container's own errors (header, chunk lengths) name the byte counts instead.
             const bool container = ext == ".glb" && msg.find("glTF binary (.glb) file: ") != std::string::npos;
-            if (e.line() > 0 || !e.field().empty() || container)
+            if (e.line() > 0 || !e.field().empty() || container) {
                 ++withPlace;
-            else
+            } else {
                 ADD_FAILURE() << "refused without a line or field: " << msg;
-            if (!h.expectField.empty()) EXPECT_EQ(e.field(), h.expectField) << h.file << ": " << msg;
+            }
+            if (!h.expectField.empty()) {
+                EXPECT_EQ(e.field(), h.expectField) << h.file << ": " << msg;
+            }
         } catch (const std::exception& e) {
             ADD_FAILURE() << h.file << ": not an InputError: " << e.what();
         }

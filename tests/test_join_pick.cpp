@@ -6,12 +6,12 @@
 
 #include <cmath>
 
-#include "core/camera_math.hpp"
-#include "core/constraint_solver.hpp"
-#include "core/edge_pick.hpp"
-#include "core/edit_session.hpp"
-#include "core/patch_eval.hpp"
-#include "core/patch_ops.hpp"
+#include "core/model/camera_math.hpp"
+#include "core/solve/constraint_solver.hpp"
+#include "core/select/edge_pick.hpp"
+#include "core/edit/edit_session.hpp"
+#include "core/eval/patch_eval.hpp"
+#include "core/ops/patch_ops.hpp"
 #include "support.hpp"
 
 using namespace pw;

@@ -10,11 +10,11 @@
 #include <utility>
 #include <vector>
 
-#include "core/bpt_format.hpp"
-#include "core/document.hpp"
-#include "core/mesh_tessellate.hpp"
-#include "core/net_ops.hpp"
-#include "core/model_builders.hpp"
+#include "core/io/bpt_format.hpp"
+#include "core/model/document.hpp"
+#include "core/mesh/mesh_tessellate.hpp"
+#include "core/ops/net_ops.hpp"
+#include "core/construct/model_builders.hpp"
 #include "support.hpp"
 
 namespace {

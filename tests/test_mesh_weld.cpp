@@ -1,10 +1,10 @@
-// weldTriangleSoup (core/mesh_weld.hpp): the captured triangle soup becomes the export mesh.
+// weldTriangleSoup (core/mesh/mesh_weld.hpp): the captured triangle soup becomes the export mesh.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
 
-#include "core/mesh_weld.hpp"
+#include "core/mesh/mesh_weld.hpp"
 
 namespace pw::test {
 namespace {

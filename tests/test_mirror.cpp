@@ -1,17 +1,17 @@
-// Mirror (core/mirror.hpp and the `mirror` command): the copy is the reflection (points and
+// Mirror (core/ops/mirror.hpp and the `mirror` command): the copy is the reflection (points and
 // normals), shares the points on the plane, is joined there (C1 where the rows meet the plane at a
 // right angle, else C0), keeps the joins among the copies, and is one undo step.
 #include <gtest/gtest.h>
 
-#include "core/bezier_triangle.hpp"
-#include "core/command_table.hpp"
-#include "core/constraint_solver.hpp"
-#include "core/edit_session.hpp"
-#include "core/errors.hpp"
-#include "core/mirror.hpp"
-#include "core/model_builders.hpp"
-#include "core/patch_eval.hpp"
-#include "core/patch_ops.hpp"
+#include "core/eval/bezier_triangle.hpp"
+#include "core/commands/command_table.hpp"
+#include "core/solve/constraint_solver.hpp"
+#include "core/edit/edit_session.hpp"
+#include "core/base/errors.hpp"
+#include "core/ops/mirror.hpp"
+#include "core/construct/model_builders.hpp"
+#include "core/eval/patch_eval.hpp"
+#include "core/ops/patch_ops.hpp"
 
 #include "support.hpp"
 

@@ -5,10 +5,11 @@
 #include <cmath>
 #include <random>
 
-#include "core/constraint_solver.hpp"
-#include "core/net_ops.hpp"
-#include "core/patch_eval.hpp"
-#include "core/patchwork_format.hpp"
+#include "core/solve/constraint_solver.hpp"
+#include "core/ops/net_ops.hpp"
+#include "core/ops/patch_ops.hpp"
+#include "core/eval/patch_eval.hpp"
+#include "core/io/patchwork_format.hpp"
 
 namespace {
 

@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <numeric>
 
-#include "core/occlusion.hpp"
-#include "core/patch_ops.hpp"
+#include "core/eval/occlusion.hpp"
+#include "core/ops/patch_ops.hpp"
 
 using namespace pw;
 

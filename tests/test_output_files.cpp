@@ -10,8 +10,8 @@
 #include <fstream>
 #include <string>
 
-#include "core/errors.hpp"
-#include "core/file_io.hpp"
+#include "core/base/errors.hpp"
+#include "core/base/file_io.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;

@@ -2,11 +2,11 @@
 // inside existing geometry.
 #include <gtest/gtest.h>
 
-#include "core/command_table.hpp"
-#include "core/edit_session.hpp"
-#include "core/document_io.hpp"
-#include "core/patch_ops.hpp"
-#include "core/placement.hpp"
+#include "core/commands/command_table.hpp"
+#include "core/edit/edit_session.hpp"
+#include "core/io/document_io.hpp"
+#include "core/ops/patch_ops.hpp"
+#include "core/model/placement.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;

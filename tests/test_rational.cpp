@@ -8,17 +8,17 @@
 #include <cmath>
 #include <random>
 
-#include "core/command_table.hpp"
-#include "core/constraint_solver.hpp"
-#include "core/curvature_math.h"
-#include "core/edit_session.hpp"
-#include "core/errors.hpp"
-#include "core/join_detect.hpp"
-#include "core/model_builders.hpp"
-#include "core/patch_ops.hpp"
-#include "core/patchwork_format.hpp"
-#include "core/primitives.hpp"
-#include "core/rational_eval.hpp"
+#include "core/commands/command_table.hpp"
+#include "core/solve/constraint_solver.hpp"
+#include "core/gpu/curvature_math.h"
+#include "core/edit/edit_session.hpp"
+#include "core/base/errors.hpp"
+#include "core/model/join_detect.hpp"
+#include "core/construct/model_builders.hpp"
+#include "core/ops/patch_ops.hpp"
+#include "core/io/patchwork_format.hpp"
+#include "core/construct/primitives.hpp"
+#include "core/eval/rational_eval.hpp"
 #include "tests/support.hpp"
 
 using namespace pw;
@@ -95,7 +95,9 @@ TEST(Rational, WeightsOneKeepThePolynomialsBoundaryBitsAndEqualWeightsItsSurface
     ASSERT_EQ(a.size(), b.size());
     for (size_t k = 0; k < a.size(); ++k) {
         const size_t row = k / 9, col = k % 9;
-        if (row == 0 || row == 8 || col == 0 || col == 8) EXPECT_EQ(a[k].p, b[k].p) << k;  // the boundary bit for bit: no crack to a polynomial neighbour
+        if (row == 0 || row == 8 || col == 0 || col == 8) {
+            EXPECT_EQ(a[k].p, b[k].p) << k;  // the boundary bit for bit: no crack to a polynomial neighbour
+        }
         EXPECT_LT(rel(b[k].p, a[k].p), 1e-15) << k;
         EXPECT_LT(rel(b[k].du, a[k].du), 1e-14) << k;
         EXPECT_LT(rel(c[k].p, a[k].p), 1e-15) << k;

@@ -1,18 +1,18 @@
-// Selection for real models (core/selection_ops.hpp and the select / hide / unhide commands):
+// Selection for real models (core/select/selection_ops.hpp and the select / hide / unhide commands):
 // linked, invert, hide and reveal, hidden items neither picked nor selected, saved and undone.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
-#include "core/camera_math.hpp"
-#include "core/command_table.hpp"
-#include "core/edit_session.hpp"
-#include "core/errors.hpp"
-#include "core/model_builders.hpp"
-#include "core/patch_ops.hpp"
-#include "core/patchwork_format.hpp"
-#include "core/picking.hpp"
-#include "core/selection_ops.hpp"
+#include "core/model/camera_math.hpp"
+#include "core/commands/command_table.hpp"
+#include "core/edit/edit_session.hpp"
+#include "core/base/errors.hpp"
+#include "core/construct/model_builders.hpp"
+#include "core/ops/patch_ops.hpp"
+#include "core/io/patchwork_format.hpp"
+#include "core/select/picking.hpp"
+#include "core/select/selection_ops.hpp"
 
 #include "support.hpp"
 

@@ -9,13 +9,13 @@
 #include <random>
 #include <set>
 
-#include "core/bpt_format.hpp"
-#include "core/constraint_solver.hpp"
-#include "core/continuity_report.hpp"
-#include "core/document.hpp"
-#include "core/embedded_data.hpp"
-#include "core/join_detect.hpp"
-#include "core/model_builders.hpp"
+#include "core/io/bpt_format.hpp"
+#include "core/solve/constraint_solver.hpp"
+#include "core/solve/continuity_report.hpp"
+#include "core/model/document.hpp"
+#include "core/base/embedded_data.hpp"
+#include "core/model/join_detect.hpp"
+#include "core/construct/model_builders.hpp"
 
 using namespace pw;
 

@@ -35,17 +35,17 @@
 #include <string>
 #include <vector>
 
-#include "core/bezier_triangle.hpp"
-#include "core/bpt_format.hpp"
-#include "core/document_io.hpp"
-#include "core/errors.hpp"
-#include "core/model_builders.hpp"
-#include "core/net_ops.hpp"
-#include "core/patch_eval.hpp"
-#include "core/primitives.hpp"
-#include "core/rational_eval.hpp"
-#include "core/step_export.hpp"
-#include "core/step_import.hpp"
+#include "core/eval/bezier_triangle.hpp"
+#include "core/io/bpt_format.hpp"
+#include "core/io/document_io.hpp"
+#include "core/base/errors.hpp"
+#include "core/construct/model_builders.hpp"
+#include "core/ops/net_ops.hpp"
+#include "core/eval/patch_eval.hpp"
+#include "core/construct/primitives.hpp"
+#include "core/eval/rational_eval.hpp"
+#include "core/io/step_export.hpp"
+#include "core/io/step_import.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;

@@ -3,7 +3,7 @@
 // own counts are held against the same rules in render_test_domain.cpp.
 #include <gtest/gtest.h>
 
-#include "core/tess_domain.hpp"
+#include "core/tess/tess_domain.hpp"
 
 using namespace pw;
 

@@ -4,8 +4,8 @@
 
 #include <set>
 
-#include "core/patch_eval.hpp"
-#include "core/tess_presets.hpp"
+#include "core/eval/patch_eval.hpp"
+#include "core/tess/tess_presets.hpp"
 
 using namespace pw;
 

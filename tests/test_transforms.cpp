@@ -1,4 +1,4 @@
-// Transforms of whole selections (core/drag_controller.hpp, core/selection.hpp, core/snapping.hpp):
+// Transforms of whole selections (core/edit/drag_controller.hpp, core/select/selection.hpp, core/select/snapping.hpp):
 // G / R / S by mouse and by typed value, axis and plane constraints, the three pivots, snapping to
 // points, edges and surfaces, joins held (rigid moves of a joined group exact), view-direction
 // axis drags bounded, and the same transforms as script commands.
@@ -8,16 +8,16 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/camera_math.hpp"
-#include "core/command_table.hpp"
-#include "core/constraint_solver.hpp"
-#include "core/drag_controller.hpp"
-#include "core/edit_session.hpp"
-#include "core/errors.hpp"
-#include "core/model_builders.hpp"
-#include "core/patch_eval.hpp"
-#include "core/patch_ops.hpp"
-#include "core/picking.hpp"
+#include "core/model/camera_math.hpp"
+#include "core/commands/command_table.hpp"
+#include "core/solve/constraint_solver.hpp"
+#include "core/edit/drag_controller.hpp"
+#include "core/edit/edit_session.hpp"
+#include "core/base/errors.hpp"
+#include "core/construct/model_builders.hpp"
+#include "core/eval/patch_eval.hpp"
+#include "core/ops/patch_ops.hpp"
+#include "core/select/picking.hpp"
 
 #include "support.hpp"
 

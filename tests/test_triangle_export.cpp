@@ -6,9 +6,9 @@
 #include <cmath>
 #include <map>
 
-#include "core/bezier_triangle.hpp"
-#include "core/mesh_tessellate.hpp"
-#include "core/model_builders.hpp"
+#include "core/eval/bezier_triangle.hpp"
+#include "core/mesh/mesh_tessellate.hpp"
+#include "core/construct/model_builders.hpp"
 
 using namespace pw;
 

@@ -1,0 +1,164 @@
+#include "core/base/file_io.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <random>
+
+#include "core/base/errors.hpp"
+#include "core/base/limits.hpp"
+
+namespace pw {
+
+std::string readFileLimited(const std::filesystem::path& path) {
+    const std::string name = path.string();
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) throw InputError(name, "no such file");
+    if (std::filesystem::is_directory(path, ec)) throw InputError(name, "is a directory, not a file");
+    const auto size = std::filesystem::file_size(path, ec);
+    if (ec) throw InputError(name, "cannot read: " + ec.message());
+    if (size > limits::kMaxFileBytes)
+        throw InputError(name, "file is " + std::to_string(size) + " bytes; the limit is " +
+                                   std::to_string(limits::kMaxFileBytes));
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(name, std::string("cannot open: ") + std::strerror(errno));
+    std::string data(static_cast<size_t>(size), '\0');
+    in.read(data.data(), static_cast<std::streamsize>(size));
+    if (static_cast<size_t>(in.gcount()) != size) throw InputError(name, "cannot read the whole file");
+    return data;
+}
+
+namespace {
+
+std::string fileKind(mode_t m) {
+    if (S_ISCHR(m)) return "a character device";
+    if (S_ISBLK(m)) return "a block device";
+    if (S_ISFIFO(m)) return "a FIFO";
+    if (S_ISSOCK(m)) return "a socket";
+    if (S_ISDIR(m)) return "a directory";
+    return "not a regular file";
+}
+
+bool writeAll(int fd, std::string_view data) {
+    size_t done = 0;
+    while (done < data.size()) {
+        const ssize_t n = ::write(fd, data.data() + done, data.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return false;
+        done += static_cast<size_t>(n);
+    }
+    return true;
+}
+
+void syncDirectory(const std::filesystem::path& dir) {
+    const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (dfd >= 0) {
+        ::fsync(dfd);
+        ::close(dfd);
+    }
+}
+
+}  // namespace
+
+OutputTarget checkOutputPath(const std::filesystem::path& path) {
+    const std::string name = path.string();
+    OutputTarget t;
+    t.requested = path;
+    t.path = path;
+    // Through symlinks to what they name (a link stays a link; a dangling one is refused).
+    struct stat st {};
+    if (::lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode)) {
+        std::error_code ec;
+        t.path = std::filesystem::canonical(path, ec);
+        if (ec) throw OutputError(name, "is a symbolic link to a file that does not exist (" + ec.message() + ")");
+    }
+    const std::filesystem::path dir = t.path.has_parent_path() ? t.path.parent_path() : std::filesystem::path(".");
+    std::error_code ec;
+    if (!std::filesystem::is_directory(dir, ec)) throw OutputError(name, "directory " + dir.string() + " does not exist");
+    if (::stat(t.path.c_str(), &st) == 0) {
+        if (!S_ISREG(st.st_mode))
+            throw OutputError(name, "is " + fileKind(st.st_mode) + "; Patchwork writes only regular files");
+        if ((st.st_mode & 0222) == 0) throw OutputError(name, "is read-only; make it writable or choose another name");
+        t.exists = true;
+        t.mode = st.st_mode & 07777;
+        t.uid = st.st_uid;
+        t.gid = st.st_gid;
+        t.links = st.st_nlink;
+    }
+    if (::access(dir.c_str(), W_OK | X_OK) != 0) throw OutputError(name, "cannot write in " + dir.string() + ": " + std::strerror(errno));
+    return t;
+}
+
+OutputBatch::~OutputBatch() {
+    std::error_code ec;
+    for (const Staged& s : staged_) std::filesystem::remove(s.temp, ec);
+}
+
+void OutputBatch::stage(const std::filesystem::path& path, std::string_view data) {
+    const OutputTarget t = checkOutputPath(path);
+    const std::string name = path.string();
+    const std::filesystem::path dir = t.path.has_parent_path() ? t.path.parent_path() : std::filesystem::path(".");
+    std::random_device rd;
+    std::string tmpName(1, '.');
+    tmpName.append(t.path.filename().string()).append(".tmp").append(std::to_string(rd() % 1000000));
+    const std::filesystem::path tmp = dir / tmpName;
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, t.exists ? 0600 : 0666);
+    if (fd < 0) throw OutputError(name, std::strerror(errno));
+    std::error_code ec;
+    auto fail = [&](const std::string& why) {
+        ::close(fd);
+        std::filesystem::remove(tmp, ec);
+        throw OutputError(name, why);
+    };
+    if (!writeAll(fd, data)) fail(errno ? std::strerror(errno) : "short write");
+    if (t.exists) {
+        // Keep the old file's permissions and, where allowed, its owner.
+        if (::fchown(fd, t.uid, t.gid) != 0) { /* not ours to give away: keep ours */ }
+        if (::fchmod(fd, t.mode) != 0) fail(std::string("cannot keep the permissions: ") + std::strerror(errno));
+    }
+    if (::fsync(fd) != 0) fail(std::strerror(errno));
+    if (::close(fd) != 0) {
+        std::filesystem::remove(tmp, ec);
+        throw OutputError(name, std::strerror(errno));
+    }
+    staged_.push_back({t, tmp});
+}
+
+void OutputBatch::commit() {
+    std::error_code ec;
+    for (const Staged& s : staged_) {
+        if (s.target.links > 1) {
+            // Other names share this file: replace its bytes in place so they keep seeing it. The
+            // complete copy already exists (staged), so a full disk was found before this point.
+            std::string data = readFileLimited(s.temp);
+            const int fd = ::open(s.target.path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+            const bool ok = fd >= 0 && writeAll(fd, data) && ::fsync(fd) == 0;
+            if (fd >= 0) ::close(fd);
+            if (!ok) throw OutputError(s.target.requested.string(), std::strerror(errno));
+            std::filesystem::remove(s.temp, ec);
+        } else if (::rename(s.temp.c_str(), s.target.path.c_str()) != 0) {
+            throw OutputError(s.target.requested.string(), std::strerror(errno));
+        }
+        syncDirectory(s.target.path.has_parent_path() ? s.target.path.parent_path() : std::filesystem::path("."));
+    }
+    staged_.clear();
+}
+
+void writeFileAtomic(const std::filesystem::path& path, std::string_view data) {
+    OutputBatch batch;
+    batch.stage(path, data);
+    batch.commit();
+}
+
+std::string lowerExtension(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+}  // namespace pw

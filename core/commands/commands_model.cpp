@@ -1,0 +1,246 @@
+// Modelling commands: add patches, triangles, curves and nets at the 3D cursor; delete, duplicate,
+// flip, extrude, split, join and unjoin.
+#include <algorithm>
+
+#include "core/commands/command_table.hpp"
+#include "core/ops/mirror.hpp"
+#include "core/ops/net_ops.hpp"
+#include "core/ops/patch_ops.hpp"
+#include "core/model/placement.hpp"
+
+namespace pw {
+
+namespace {
+
+double newItemSize(const Document& d) { return std::max(0.2 * modelSize(d), 1.0); }
+
+bool hasPatch(const EditSession& s) { return s.sel.patch >= 0 && size_t(s.sel.patch) < s.doc.patches.size(); }
+
+// "2:u1" → patch 2, edge u1.
+std::pair<uint32_t, Edge> patchEdge(const std::string& word, const Document& doc) {
+    const size_t colon = word.find(':');
+    if (colon == std::string::npos) throw EditError("expected PATCH:EDGE such as 0:u1, got '" + word + "'");
+    const uint32_t p = commandIndex(word.substr(0, colon), doc.patches.size(), "patch");
+    const auto e = parseEdge(word.substr(colon + 1));
+    if (!e) throw EditError("expected an edge u0, v0, u1 or v1 in '" + word + "'");
+    return {p, *e};
+}
+
+Edge edgeArg(const CommandContext& ctx, size_t i) {
+    if (ctx.args.size() <= i) return ctx.session.activeEdge;
+    const auto e = parseEdge(ctx.args[i]);
+    if (!e) throw EditError("expected an edge u0, v0, u1 or v1, got '" + ctx.args[i] + "'");
+    return *e;
+}
+
+// Deletes what the selection names, or else every patch, net, triangle and curve whose points are
+// all selected.
+void deleteSelection(Document& d, const Selection& sel) {
+    if (sel.patch >= 0) return deletePatch(d, uint32_t(sel.patch));
+    if (sel.surface >= 0) return deleteNetSurface(d, uint32_t(sel.surface));
+    if (sel.triangle >= 0) return deleteTriangle(d, uint32_t(sel.triangle));
+    if (sel.curve >= 0) return deleteCurve(d, uint32_t(sel.curve));
+    auto covered = [&](const auto& idx) { return std::all_of(idx.begin(), idx.end(), [&](uint32_t p) { return sel.contains(p); }); };
+    bool any = false;
+    for (size_t i = d.curves.size(); i-- > 0;)
+        if (covered(d.curves[i].idx)) deleteCurve(d, uint32_t(i)), any = true;
+    for (size_t i = d.triangles.size(); i-- > 0;)
+        if (covered(d.triangles[i].idx)) deleteTriangle(d, uint32_t(i)), any = true;
+    for (size_t i = d.surfaces.size(); i-- > 0;)
+        if (covered(d.surfaces[i].idx)) deleteNetSurface(d, uint32_t(i)), any = true;
+    for (size_t i = d.patches.size(); i-- > 0;)
+        if (covered(d.patches[i].idx)) deletePatch(d, uint32_t(i)), any = true;
+    if (!any) throw EditError("the selection covers no whole patch, net, triangle or curve");
+}
+
+// A command that adds one item of the model's scale at the 3D cursor (`add(doc, centre, size, zUp)`
+// returns its index), beside the model where the cursor is inside it, and selects it as `field`.
+Command addAtCursor(const char* name, const char* label, const char* help, const char* undoLabel, int Selection::*field,
+                    uint32_t (*add)(Document&, const Vec3&, double, bool)) {
+    return {.name = name, .label = label, .menu = "Add", .help = help,
+            .run = [=](CommandContext& ctx) {
+                expectArgs(ctx, 0, 0);
+                EditSession& s = ctx.session;
+                int created = -1;
+                s.apply(undoLabel, [&](Document& d) {
+                    const size_t first = d.points.size();
+                    created = int(add(d, s.cursor, newItemSize(d), s.camera.zUp));
+                    moveClearOfExisting(d, first);
+                });
+                s.sel.clear();
+                s.sel.*field = created;
+            }};
+}
+
+// A command that makes one item from an edge of the selected patch (`make(doc, patch, edge)`
+// returns its index; the edge is the argument or the highlighted one) and selects it as `field`.
+Command fromEdge(const char* name, const char* label, const char* help, const char* undoLabel, int Selection::*field,
+                 uint32_t (*make)(Document&, uint32_t, Edge)) {
+    return {.name = name, .label = label, .menu = "Patch", .usage = "[u0|v0|u1|v1]", .help = help, .enabled = hasPatch,
+            .run = [=](CommandContext& ctx) {
+                expectArgs(ctx, 0, 1);
+                EditSession& s = ctx.session;
+                const uint32_t p = uint32_t(s.sel.patch);
+                const Edge e = edgeArg(ctx, 0);
+                int created = -1;
+                s.apply(undoLabel, [&](Document& d) { created = int(make(d, p, e)); });
+                s.sel.clear();
+                s.sel.*field = created;
+            }};
+}
+
+}  // namespace
+
+void addModelCommands(CommandTable& t) {
+    t.add(addAtCursor("add-patch", "Flat Patch", "Add a flat 1x1 Bézier patch at the 3D cursor", "Add patch", &Selection::patch, addFlatPatch));
+    t.add(addAtCursor("add-triangle", "Bézier Triangle", "Add a flat cubic Bézier triangle (10 points) at the 3D cursor", "Add triangle",
+                      &Selection::triangle, addTriangle));
+    t.add(addAtCursor("add-curve", "Bézier Curve", "Add a cubic Bézier curve (4 points) at the 3D cursor, drawn through the isoline tessellator",
+                      "Add curve", &Selection::curve, addCurve));
+    t.add({.name = "add-net", .label = "Net Surface", .menu = "Add", .usage = "[ROWS COLS [flat|tube|torus [bezier|bspline|catmull-rom]]]",
+           .help = "Add a control net (default 7x7 flat B-spline) at the 3D cursor",
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 0, 4);
+               if (ctx.args.size() == 1) expectArgs(ctx, 2, 4);
+               EditSession& s = ctx.session;
+               uint32_t rows = 7, cols = 7;
+               if (ctx.args.size() >= 2)
+                   rows = uint32_t(commandNumber(ctx.args[0], "ROWS")), cols = uint32_t(commandNumber(ctx.args[1], "COLS"));
+               NetShape shape = NetShape::Flat;
+               if (ctx.args.size() >= 3) {
+                   const std::string& w = ctx.args[2];
+                   if (w == "tube") shape = NetShape::Tube;
+                   else if (w == "torus") shape = NetShape::Torus;
+                   else if (w != "flat") throw EditError("expected flat, tube or torus, got '" + w + "'");
+               }
+               Basis basis = Basis::BSpline;
+               if (ctx.args.size() == 4) {
+                   const auto b = parseBasis(ctx.args[3]);
+                   if (!b) throw EditError("expected a basis bezier, bspline or catmull-rom, got '" + ctx.args[3] + "'");
+                   basis = *b;
+               }
+               int created = -1;
+               s.apply("Add net", [&](Document& d) {
+                   const size_t first = d.points.size();
+                   created = int(addNetSurface(d, rows, cols, shape, basis, s.cursor, newItemSize(d), s.camera.zUp));
+                   moveClearOfExisting(d, first);
+               });
+               s.sel.clear();
+               s.sel.surface = created;
+           }});
+    t.add({.name = "delete", .label = "Delete", .menu = "Edit",
+           .help = "Delete the selected patch, net, triangle or curve (or everything the selected points cover)",
+           .bindings = {{"", "", {"Delete"}}},
+           .enabled = [](const EditSession& s) { return !s.sel.empty(); },
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 0, 0);
+               const Selection sel = ctx.session.sel;
+               ctx.session.apply("Delete", [&](Document& d) { deleteSelection(d, sel); });
+               ctx.session.sel.clear();
+           }});
+    t.add({.name = "duplicate", .label = "Duplicate", .menu = "Edit",
+           .help = "Copy the selected patch or Bézier triangle with its own points",
+           .bindings = {{"", "", {"Shift+D"}}},
+           .enabled = [](const EditSession& s) { return hasPatch(s) || s.sel.triangle >= 0; },
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 0, 0);
+               EditSession& s = ctx.session;
+               const Vec3 off(0.1 * modelSize(s.doc), 0.0, 0.0);
+               if (s.sel.triangle >= 0) {
+                   const uint32_t tri = uint32_t(s.sel.triangle);
+                   int created = -1;
+                   s.apply("Duplicate triangle", [&](Document& d) { created = int(duplicateTriangle(d, tri, off)); });
+                   s.sel.clear();
+                   s.sel.triangle = created;
+               } else {
+                   const uint32_t p = uint32_t(s.sel.patch);
+                   int created = -1;
+                   s.apply("Duplicate patch", [&](Document& d) { created = int(duplicatePatch(d, p, off)); });
+                   s.sel.clear();
+                   s.sel.patch = created;
+               }
+           }});
+    t.add({.name = "mirror", .label = "Mirror", .menu = "Edit", .usage = "X|Y|Z",
+           .help = "Copy the selected patches, triangles and curves reflected across the plane through the 3D cursor normal to X, Y or Z, "
+                   "joined where they meet the plane (C1 where the rows there are perpendicular to it)",
+           .bindings = {{"Mirror X", "X", {}}, {"Mirror Y", "Y", {}}, {"Mirror Z", "Z", {}}},
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 1, 1);
+               const std::string& a = ctx.args[0];
+               const int axis = a == "X" || a == "x" ? 0 : a == "Y" || a == "y" ? 1 : a == "Z" || a == "z" ? 2 : -1;
+               if (axis < 0) throw EditError("expected an axis X, Y or Z, got '" + a + "'");
+               EditSession& s = ctx.session;
+               const std::vector<uint32_t> selected = s.selectedPoints();
+               MirrorResult made;
+               s.apply("Mirror " + std::string(1, char('X' + axis)), [&](Document& d) { made = mirrorItems(d, selected, axis, s.cursor[axis]); });
+               s.sel.clear();
+               s.sel.points = made.points;
+               if (made.patches.size() == 1) s.sel.patch = int(made.patches[0]);
+           }});
+    t.add({.name = "flip", .label = "Flip", .menu = "Patch", .help = "Reverse the selected patch's u direction so its normal points the other way",
+           .enabled = hasPatch,
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 0, 0);
+               const uint32_t p = uint32_t(ctx.session.sel.patch);
+               ctx.session.apply("Flip patch", [p](Document& d) { flipPatch(d, p); });
+           }});
+    t.add(fromEdge("extrude", "Extrude Edge", "Add a C1 patch continuing an edge of the selected patch (default: the highlighted edge)",
+                   "Extrude edge", &Selection::patch, extrudeEdge));
+    t.add({.name = "split", .label = "Split", .menu = "Patch", .usage = "u|v [T]",
+           .help = "Exact de Casteljau split of the selected patch along u or v at T (default 0.5)",
+           .bindings = {{"Split at u", "u", {}}, {"Split at v", "v", {}}},
+           .enabled = hasPatch,
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 1, 2);
+               const std::string& dir = ctx.args[0];
+               if (dir != "u" && dir != "v") throw EditError("expected u or v, got '" + dir + "'");
+               const double t = ctx.args.size() == 2 ? commandNumber(ctx.args[1], "T") : 0.5;
+               if (!(t > 0.0 && t < 1.0)) throw EditError("T must lie strictly between 0 and 1");
+               const uint32_t p = uint32_t(ctx.session.sel.patch);
+               ctx.session.apply("Split patch", [&](Document& d) { splitPatch(d, p, dir == "u", t); });
+           }});
+    t.add({.name = "join", .label = "Join", .menu = "Patch", .usage = "A:EDGE B:EDGE C0|C1|G1|C2|G2",
+           .help = "Join an edge of patch A to an edge of patch B (edges u0 v0 u1 v1) with C0, C1, G1, C2 or G2 continuity, held while you "
+                   "drag; B is turned to lie beyond the seam with agreeing normals, and when the edges do not meet A stays and B's boundary, "
+                   "tangent (and for C2/G2 third) rows move onto it (Match). G1 and G2 keep the shape parameters measured when joining; "
+                   "a join that cannot hold together with the others is refused, naming them",
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 3, 3);
+               const Document& doc = ctx.session.doc;
+               const std::pair<uint32_t, Edge> a = patchEdge(ctx.args[0], doc), b = patchEdge(ctx.args[1], doc);
+               const auto c = parseContinuity(ctx.args[2]);
+               if (!c) throw EditError("expected C0, C1, G1, C2 or G2, got '" + ctx.args[2] + "'");
+               ctx.session.apply("Join edges", [&](Document& d) { joinEdges(d, a.first, a.second, b.first, b.second, *c); });
+           }});
+    t.add({.name = "tolerances", .label = "Continuity Tolerances", .menu = "Patch", .usage = "POSITION ANGLE_DEG CURVATURE_PCT",
+           .help = "What the continuity readout checks every join against (Rhino's three): the gap between the sides in model units, "
+                   "the largest angle between their normals in degrees and the curvature deviation across the seam in percent; "
+                   "joins out of tolerance show in the Continuity panel, in the viewport (Boundaries) and in `info`",
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 3, 3);
+               const double v[3] = {commandNumber(ctx.args[0], "POSITION"), commandNumber(ctx.args[1], "ANGLE_DEG"),
+                                    commandNumber(ctx.args[2], "CURVATURE_PCT")};
+               for (int i = 0; i < 3; ++i)
+                   if (!(v[i] > 0.0) || v[i] > 1e9) throw EditError("a tolerance must be a positive number, got " + ctx.args[size_t(i)]);
+               ctx.session.apply("Continuity tolerances", [&](Document& d) { d.tolerances = ContinuityTolerances{v[0], v[1], v[2]}; }, false);
+           }});
+    t.add(windowToggle("join-pick", "Join by Picking", "Patch", WindowToggle::JoinTool, {"J"},
+                       "Hover an open edge and click it, then click the edge to join it to; the join shows at once (C1) "
+                       "and the panel changes its continuity, keeps it (Enter) or takes it back (Esc). It runs `join`"));
+    t.add({.name = "unjoin", .label = "Unjoin Edge", .menu = "Patch", .usage = "[A:EDGE]",
+           .help = "Remove the join on an edge (default: the selected patch's highlighted edge); the patches can then move apart",
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 0, 1);
+               EditSession& s = ctx.session;
+               if (ctx.args.empty() && !hasPatch(s)) throw EditError("select a patch or name its edge (A:EDGE)");
+               const auto [p, e] = ctx.args.empty() ? std::pair{uint32_t(s.sel.patch), s.activeEdge} : patchEdge(ctx.args[0], s.doc);
+               const int j = findJoin(s.doc, p, e);
+               if (j < 0) throw EditError("edge " + std::string(edgeName(e)) + " of patch " + std::to_string(p) + " is not joined");
+               s.apply("Unjoin", [j](Document& d) { unjoin(d, size_t(j)); });
+           }});
+    t.add(fromEdge("curve-from-edge", "Curve from Edge",
+                   "A curve on an edge of the selected patch that shares its points (default: the highlighted edge)", "Curve from edge",
+                   &Selection::curve, curveFromEdge));
+}
+
+}  // namespace pw

@@ -1,0 +1,40 @@
+// `set KEY VALUE...`: any row of the settings table (core/model/settings.hpp) — tessellation and
+// display settings — checked against the row's range or choices, one undo step named by the row's
+// label. The Tessellation and Display panels run it (as a live preview while a slider moves, then
+// once for the undo step), so no panel writes the document itself.
+#include "core/base/errors.hpp"
+#include "core/commands/command_table.hpp"
+#include "core/model/settings.hpp"
+
+namespace pw {
+
+namespace {
+
+std::string settingKeys() {
+    std::string keys;
+    for (const Setting& s : settings()) keys += (keys.empty() ? "" : ", ") + std::string(s.key);
+    return keys;
+}
+
+}  // namespace
+
+void addSettingCommands(CommandTable& t) {
+    t.add({.name = "set", .label = "Set a Setting", .usage = "KEY VALUE...",
+           .help = "Set a tessellation or display setting by its file name (" + settingKeys() +
+                   "): numbers within the setting's range, on|off, or one of its choices",
+           .previewable = true,
+           .run = [](CommandContext& ctx) {
+               if (ctx.args.empty()) throw EditError("expected KEY VALUE...; keys: " + settingKeys());
+               const Setting* s = findSetting(ctx.args[0]);
+               if (!s) throw EditError("no setting named '" + ctx.args[0] + "'; keys: " + settingKeys());
+               const std::vector<double> values = parseSettingValues(*s, std::vector<std::string>(ctx.args.begin() + 1, ctx.args.end()));
+               if (ctx.preview) {
+                   s->set(ctx.session.doc, values);
+                   ctx.session.changed(false);
+                   return;
+               }
+               ctx.session.apply(std::string(s->label), [&](Document& d) { s->set(d, values); }, false);
+           }});
+}
+
+}  // namespace pw

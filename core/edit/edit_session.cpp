@@ -1,0 +1,128 @@
+#include "core/edit/edit_session.hpp"
+
+#include <algorithm>
+
+#include "core/io/document_io.hpp"
+#include "core/ops/patch_ops.hpp"
+#include "core/model/placement.hpp"
+
+namespace pw {
+
+EditSession::EditSession() {
+    doc.name = "untitled";
+    markCommitted();
+}
+
+const std::string& EditSession::title() const {
+    static const std::string kUntitled = "untitled";
+    if (!path_.empty()) return path_;
+    return doc.name.empty() ? kUntitled : doc.name;
+}
+
+void EditSession::changed(bool topology) {
+    ++version_;
+    if (topology) ++topologyVersion_;
+    clampSelection(sel, doc);
+}
+
+void EditSession::markCommitted() {
+    committed_ = doc;
+    ++generation_;
+}
+
+void EditSession::reset(Document d, const std::string& path) {
+    doc = std::move(d);
+    markCommitted();
+    history_.clear();
+    history_.markSaved();
+    forceModified_ = false;
+    path_ = path;
+    sel.clear();
+    camera = doc.camera;
+    ++serial_;
+    changed(true);
+}
+
+void EditSession::newDocument() {
+    Document d;
+    d.name = "untitled";
+    addFlatPatch(d, Vec3(0.0), 2.0, true);
+    reset(std::move(d), "");
+}
+
+std::vector<std::string> EditSession::open(const std::string& path) {
+    LoadReport report;  // a Patchwork glTF saves back with its own export options
+    reset(loadDocument(path, &report), path);
+    if (report.exportOptions) exportOptions = *report.exportOptions;
+    return std::move(report.notes);
+}
+
+MergedRange EditSession::import(const std::string& path) {
+    const Document from = loadDocument(path);
+    MergedRange r;
+    // Beside what is there, never inside it (the file's own coordinates where they are clear).
+    apply("Import " + std::filesystem::path(path).filename().string(), [&](Document& d) {
+        r = mergeDocument(d, from);
+        moveClearOfExisting(d, r.firstPoint);
+    });
+    // The imported content arrives selected: its points, and the patch when it is the only thing.
+    sel.clear();
+    for (uint32_t i = 0; i < r.pointCount; ++i) sel.points.push_back(r.firstPoint + i);
+    if (r.patchCount == 1 && r.surfaceCount + r.triangleCount + r.curveCount == 0) sel.patch = int(r.firstPatch);
+    return r;
+}
+
+void EditSession::commit(const std::string& label) {
+    history_.commit(committed_, doc, label);
+    markCommitted();
+    ++version_;
+}
+
+bool EditSession::undo() { return step(false); }
+bool EditSession::redo() { return step(true); }
+
+bool EditSession::step(bool forward) {
+    if (!(forward ? history_.canRedo() : history_.canUndo())) return false;
+    if (forward) history_.redo(doc);
+    else history_.undo(doc);
+    markCommitted();
+    changed(true);
+    return true;
+}
+
+void EditSession::apply(const std::string& label, const std::function<void(Document&)>& op, bool topology) {
+    Document d = doc;
+    op(d);
+    doc = std::move(d);
+    commit(label);
+    changed(topology);
+}
+
+Document EditSession::documentToSave() const {
+    Document out = doc;
+    out.camera = camera;
+    return out;
+}
+
+void EditSession::savedTo(const std::string& path) {
+    if (!saveKeepsEverything(path)) return;
+    path_ = path;
+    history_.markSaved();
+    forceModified_ = false;
+}
+
+std::vector<uint32_t> EditSession::selectedPoints() const {
+    std::vector<uint32_t> out = sel.points;
+    auto add = [&](const auto& idx) { out.insert(out.end(), idx.begin(), idx.end()); };
+    if (sel.patch >= 0 && size_t(sel.patch) < doc.patches.size()) add(doc.patches[size_t(sel.patch)].idx);
+    if (sel.surface >= 0 && size_t(sel.surface) < doc.surfaces.size()) add(doc.surfaces[size_t(sel.surface)].idx);
+    if (sel.triangle >= 0 && size_t(sel.triangle) < doc.triangles.size()) add(doc.triangles[size_t(sel.triangle)].idx);
+    if (sel.curve >= 0 && size_t(sel.curve) < doc.curves.size()) add(doc.curves[size_t(sel.curve)].idx);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+Vec3 EditSession::transformPivot() const { return pw::transformPivot(doc, sel, selectedPoints(), pivot, cursor); }
+
+}  // namespace pw

@@ -1,0 +1,93 @@
+// The editing session, without a window: the document being edited, its committed state and undo
+// history, the selection, the camera, the 3D cursor and the file it belongs to. The editor window
+// and `patchwork edit` both drive one of these (through the command table, core/commands/command_table.hpp);
+// tests drive it directly.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/model/document.hpp"
+#include "core/model/document_merge.hpp"
+#include "core/model/edit_history.hpp"
+#include "core/io/gltf_export.hpp"
+#include "core/select/selection.hpp"
+#include "core/select/snapping.hpp"
+#include "core/select/symmetry.hpp"
+
+namespace pw {
+
+class EditSession {
+public:
+    EditSession();
+
+    // The live document. Continuous edits (a drag, an inspector field) write here and call
+    // changed(); commit() then records one undo step from committed() to it.
+    Document doc;
+    Selection sel;
+    Camera camera;
+    Vec3 cursor{0.0};  // the 3D cursor: where new geometry is placed
+    PivotMode pivot = PivotMode::Median;  // what rotate and scale turn about
+    SnapTarget snap = SnapTarget::Grid;   // what moves snap to while Ctrl is held
+    Symmetry symmetry;                    // live symmetry: transforms mirror each point's partner
+    Edge activeEdge = Edge::U1;  // the selected patch's edge nearest the last surface click (extrude, unjoin)
+    ExportOptions exportOptions;
+
+    const std::string& path() const { return path_; }  // "" = untitled
+    const std::string& title() const;                    // the path, else the document's name, else "untitled"
+    const Document& committed() const { return committed_; }
+    // Bumped whenever committed() changes (commit, undo, redo, a new document): caches built from
+    // the committed state (a factorised solver) compare it.
+    uint64_t generation() const { return generation_; }
+    // Bumped on every change of `doc` reported to the session; `topologyVersion` only when patches,
+    // nets, triangles, curves or joins may have changed (not when points merely moved).
+    uint64_t version() const { return version_; }
+    uint64_t topologyVersion() const { return topologyVersion_; }
+    uint64_t documentSerial() const { return serial_; }  // bumped by reset(): a different document
+    void changed(bool topology);
+
+    // Replaces the document (new, open, recover): history cleared, saved state, camera from the
+    // document, selection cleared.
+    void reset(Document d, const std::string& path);
+    void newDocument();             // untitled, one flat patch (File > New)
+    std::vector<std::string> open(const std::string& path);  // returns what the load skipped and why (STEP/IGES faces)
+    // Adds a file's content (every kind, with its joins) as one undo step and selects it.
+    MergedRange import(const std::string& path);
+
+    // One undo step from committed() to doc under `label` (nothing when they are equal).
+    void commit(const std::string& label);
+    bool undo();
+    bool redo();
+    // Runs `op` on a copy of the document; when it returns, the copy becomes the document and one
+    // undo step. When it throws, the document is unchanged and the exception goes on.
+    void apply(const std::string& label, const std::function<void(Document&)>& op, bool topology = true);
+
+    // The document as it is saved: doc with the session's camera.
+    Document documentToSave() const;
+    // After a successful write to `path`: a lossless format (saveKeepsEverything) becomes the
+    // document's file and the saved state; other formats are exports and change neither.
+    void savedTo(const std::string& path);
+
+    bool isModified() const { return history_.isModified() || forceModified_; }
+    void setForceModified(bool on) { forceModified_ = on; }  // e.g. a recovered autosave
+    const EditHistory& history() const { return history_; }
+
+    // The points a transform of the selection moves: the selected points, and every point of the
+    // selected patch, net, triangle or curve. Sorted, unique.
+    std::vector<uint32_t> selectedPoints() const;
+    // The pivot of a transform of selectedPoints() under `pivot`.
+    Vec3 transformPivot() const;
+
+private:
+    Document committed_;
+    EditHistory history_;
+    std::string path_;
+    uint64_t generation_ = 0, version_ = 0, topologyVersion_ = 0, serial_ = 0;
+    bool forceModified_ = false;
+    void markCommitted();
+    bool step(bool forward);  // undo (false) or redo (true)
+};
+
+}  // namespace pw

@@ -1,0 +1,184 @@
+// Patch math that the C++ code and the GLSL shaders share, written once (OpenSubdiv's
+// patchBasisCommon.h is the model; core/gpu/glsl_cpp.h says how one header serves both languages):
+// the named modes the shaders receive, the control-point slots of each boundary edge, the edge's
+// canonical direction, cubic Bernstein weights, the control shader's level rounding and the
+// adaptive edge level. tests/render_test_patch_math.cpp runs these functions on the GPU and on the
+// CPU and holds them equal.
+#ifndef PW_PATCH_MATH_H
+#define PW_PATCH_MATH_H
+
+#include "core/gpu/glsl_cpp.h"
+
+PW_BEGIN_NAMESPACE
+
+// Partitioning (core's Spacing has the same values).
+PW_CONST uint kSpacingEqual = 0u;
+PW_CONST uint kSpacingFractionalOdd = 1u;
+PW_CONST uint kSpacingFractionalEven = 2u;
+PW_CONST uint kSpacingPow2 = 3u;  // emulated: next power of two, then equal spacing
+
+// Adaptive tessellation (core's AdaptiveMode).
+PW_CONST uint kAdaptiveNone = 0u;
+PW_CONST uint kAdaptiveDistance = 1u;
+PW_CONST uint kAdaptiveScreen = 2u;
+PW_CONST uint kAdaptiveOrientation = 3u;
+
+// Culling bits.
+PW_CONST uint kCullBackFaces = 1u;
+PW_CONST uint kCullOffscreen = 2u;
+
+// Shading (core's ShadingMode).
+PW_CONST uint kShadingLit = 0u;
+PW_CONST uint kShadingNormal = 1u;
+PW_CONST uint kShadingPatchId = 2u;
+PW_CONST uint kShadingUvChecker = 3u;
+PW_CONST uint kShadingZebra = 4u;
+PW_CONST uint kShadingGaussCurvature = 5u;
+PW_CONST uint kShadingMeanCurvature = 6u;
+
+// Basis of a 4x4 window (core's Basis).
+PW_CONST uint kBasisBezier = 0u;
+PW_CONST uint kBasisBSpline = 1u;
+PW_CONST uint kBasisCatmullRom = 2u;
+
+// What a draw draws.
+PW_CONST uint kDrawShaded = 0u;      // the lit surface
+PW_CONST uint kDrawFlatColour = 1u;  // one colour (wireframe, isocurves, cage)
+PW_CONST uint kDrawPlainMesh = 2u;   // a pre-tessellated mesh (the benchmark's reference)
+PW_CONST uint kDrawGridPoints = 3u;  // the control points as dots
+PW_CONST uint kDrawCombTeeth = 4u;   // curvature comb teeth (shaders/comb.tese)
+PW_CONST uint kDrawCombEnvelope = 5u;  // the line through the comb teeth's tips
+
+PW_CONST uint kNoPoint = 0xffffffffu;  // no hovered or selected point
+PW_CONST float kMaxTessLevel = 64.0f;  // Vulkan's guaranteed maxTessellationGenerationLevel
+
+// Slot (row * 4 + column) in a 4x4 net of the k-th point of boundary e (quad-domain order
+// u0, v0, u1, v1; k along the edge), `depth` rows inside: 0 the boundary row itself, 1 the row
+// next to it (a spline window's shared boundary, or the tangent row of a join).
+PW_FN int quadEdgeSlot(int e, int k, int depth) {
+    if (e == 0) return k * 4 + depth;
+    if (e == 1) return depth * 4 + k;
+    if (e == 2) return k * 4 + 3 - depth;
+    return (3 - depth) * 4 + k;
+}
+
+// Slot in a cubic Bézier triangle's ten points (core/eval/bezier_triangle.hpp order) of the k-th point
+// of edge e: 0 (u = 0) = 6 7 8 9, 1 (v = 0) = 9 5 2 0, 2 (w = 0) = 0 1 3 6.
+PW_FN int triEdgeSlot(int e, int k) {
+    if (e == 0) return 6 + k;
+    if (e == 1) return (3 - k) * (6 - k) / 2;
+    return k * (k + 1) / 2;
+}
+
+// True when an edge through pool indices i0 i1 i2 i3 runs against its canonical direction: read
+// backwards, the indices are lexicographically smaller. Both patches of a shared edge then walk it
+// the same way, so its points and levels come out bit-identical (watertight seams, DESIGN §2).
+PW_FN bool edgeReversed(uint i0, uint i1, uint i2, uint i3) {
+    if (i0 != i3) return i3 < i0;
+    return i2 < i1;
+}
+
+// Cubic Bernstein weights and their first and second derivatives at t, with s = 1 - t passed
+// separately (a caller can give s exactly, e.g. (n - k) / n).
+PW_REAL_FN PW_REAL_VEC4 bernstein3(PW_REAL t, PW_REAL s) {
+    return PW_REAL_VEC4(s * s * s, PW_REAL(3) * t * s * s, PW_REAL(3) * t * t * s, t * t * t);
+}
+PW_REAL_FN PW_REAL_VEC4 bernstein3D1(PW_REAL t, PW_REAL s) {
+    return PW_REAL_VEC4(PW_REAL(-3) * s * s, PW_REAL(3) * s * s - PW_REAL(6) * t * s,
+                        PW_REAL(6) * t * s - PW_REAL(3) * t * t, PW_REAL(3) * t * t);
+}
+PW_REAL_FN PW_REAL_VEC4 bernstein3D2(PW_REAL t, PW_REAL s) {
+    return PW_REAL_VEC4(PW_REAL(6) * s, PW_REAL(6) * t - PW_REAL(12) * s, PW_REAL(6) * s - PW_REAL(12) * t,
+                        PW_REAL(6) * t);
+}
+
+// The point at t of the cubic Bézier boundary q0 q1 q2 q3 (t along the edge as this patch walks it),
+// computed from the end the canonical direction starts at when `reversed`: every patch sharing the
+// edge, quad or triangle, gets the same bits there (no cracks; DESIGN §2).
+PW_FN vec3 canonicalBoundaryPoint(vec3 q0, vec3 q1, vec3 q2, vec3 q3, float t, bool reversed) {
+    vec3 p0 = reversed ? q3 : q0, p1 = reversed ? q2 : q1, p2 = reversed ? q1 : q2, p3 = reversed ? q0 : q3;
+    PW_PRECISE float tc = reversed ? 1.0f - t : t;
+    PW_PRECISE float sc = 1.0f - tc;
+    PW_PRECISE vec4 w = bernstein3(tc, sc);
+    PW_PRECISE vec3 r = w.x * p0 + w.y * p1 + w.z * p2 + w.w * p3;
+    return r;
+}
+
+// The same for homogeneous points (core/gpu/rational_math.h: w·P, w − 1), the sum still homogeneous;
+// rationalPoint() of it is the rational boundary's point, and for weights 1 the same bits as above.
+PW_FN vec4 canonicalBoundaryPointH(vec4 q0, vec4 q1, vec4 q2, vec4 q3, float t, bool reversed) {
+    vec4 p0 = reversed ? q3 : q0, p1 = reversed ? q2 : q1, p2 = reversed ? q1 : q2, p3 = reversed ? q0 : q3;
+    PW_PRECISE float tc = reversed ? 1.0f - t : t;
+    PW_PRECISE float sc = 1.0f - tc;
+    PW_PRECISE vec4 w = bernstein3(tc, sc);
+    PW_PRECISE vec4 r = w.x * p0 + w.y * p1 + w.z * p2 + w.w * p3;
+    return r;
+}
+
+// The outer level of an edge under the shared-edge rule (core/tess/edge_levels.hpp): `stored` as is when
+// the edge's level is fixed (every window on it has its own levels), else the level the settings
+// give (`computed`, the same on both sides) raised to `stored` (the windows' largest own level).
+PW_FN float sharedEdgeLevel(float computed, float stored, bool fixedLevel) {
+    return fixedLevel ? stored : max(computed, stored);
+}
+
+// The level a control shader hands the tessellator for requested level f (DESIGN §3): equal ceil(f)
+// in [1, 64]; fractional_odd f in [1, 63]; fractional_even f in [2, 64] (the tessellator rounds
+// those); pow2 the next power of two of ceil(f) in [1, 64]. NaN counts as 1.
+PW_FN float roundLevel(float f, uint spacing) {
+    if (!(f == f)) f = 1.0f;
+    if (spacing == kSpacingEqual) return clamp(ceil(f), 1.0f, kMaxTessLevel);
+    if (spacing == kSpacingFractionalOdd) return clamp(f, 1.0f, kMaxTessLevel - 1.0f);
+    if (spacing == kSpacingFractionalEven) return clamp(f, 2.0f, kMaxTessLevel);
+    float c = clamp(ceil(f), 1.0f, kMaxTessLevel);
+    return clamp(exp2(ceil(log2(c) - 1e-4f)), 1.0f, kMaxTessLevel);
+}
+
+// Point p in pixels of a viewport of size `viewport` (Vulkan NDC); `behind` when at or behind the eye.
+PW_FN vec2 toPixels(vec3 p, mat4 viewProj, vec2 viewport, PW_OUT(bool) behind) {
+    vec4 c = viewProj * vec4(p, 1.0f);
+    behind = c.w <= 1e-6f;
+    return (vec2(c.x, c.y) / max(c.w, 1e-6f) * 0.5f + 0.5f) * viewport;
+}
+
+// Adaptive level (before rounding) of one boundary curve from its four control points in
+// canonical order, so a neighbour sharing the curve gets the same value and no crack opens.
+// distance: maxLevel at distance d0 or nearer, 0 at d1 or farther; screen: the control polygon's
+// length in pixels over `targetPx`; orientation: edges whose bend is seen side-on get more.
+PW_FN float adaptiveEdgeLevel(vec3 p0, vec3 p1, vec3 p2, vec3 p3, uint mode, float maxLevel, vec3 eye, float d0,
+                              float d1, mat4 viewProj, vec2 viewport, float targetPx) {
+    if (mode == kAdaptiveDistance) {
+        PW_PRECISE vec3 mid = 0.5f * (p0 + p3);
+        float d = distance(eye, mid);
+        return maxLevel * clamp((d1 - d) / max(d1 - d0, 1e-6f), 0.0f, 1.0f);
+    }
+    if (mode == kAdaptiveScreen) {
+        bool b0, b1, b2, b3;
+        vec2 s0 = toPixels(p0, viewProj, viewport, b0), s1 = toPixels(p1, viewProj, viewport, b1);
+        vec2 s2 = toPixels(p2, viewProj, viewport, b2), s3 = toPixels(p3, viewProj, viewport, b3);
+        if (b0 || b1 || b2 || b3) return maxLevel;
+        PW_PRECISE float len = length(s1 - s0) + length(s2 - s1) + length(s3 - s2);
+        return len / max(targetPx, 0.5f);
+    }
+    vec3 mid = 0.5f * (p0 + p3);
+    vec3 vdir = normalize(mid - eye);
+    vec3 bend = (p1 + p2) - (p0 + p3);
+    vec3 side = bend - dot(bend, vdir) * vdir;
+    float chord = max(distance(p0, p3), 1e-6f);
+    return maxLevel * clamp(2.0f * length(side) / chord, 0.0f, 1.0f);
+}
+
+// Displacement-adaptive level of one boundary (DESIGN §11): n straight segments miss the displaced
+// edge by about detail / (8 n^2) world units (detail: core/model/height_map.hpp edgeDetail, times |scale|),
+// which at `pxPerUnit` pixels per world unit stays under `tolPx` pixels from
+// n = sqrt(detail * pxPerUnit / (8 tolPx)); never more segments than the texels the edge crosses.
+// From the edge's canonical points and its stored detail only, so both windows on it agree.
+PW_FN float displacementEdgeLevel(float detail, float texels, float pxPerUnit, float tolPx) {
+    float n = sqrt(max(detail * pxPerUnit, 0.0f) / (8.0f * max(tolPx, 1e-3f)));
+    return min(n, max(texels, 1.0f));
+}
+PW_CONST float kDisplacementTolerancePx = 0.5f;
+
+PW_END_NAMESPACE
+
+#endif  // PW_PATCH_MATH_H

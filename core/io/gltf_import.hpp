@@ -1,0 +1,24 @@
+// Import of a Patchwork glTF (.gltf or .glb): restores the document from the "patchwork" extras.
+// A glTF without them is refused with a message saying so.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "core/model/document.hpp"
+#include "core/io/gltf_export.hpp"
+
+namespace pw {
+
+// exportOptions (when given) receives the options the file was exported with (extras
+// patchworkExport), or nullopt for a file without them.
+Document importPatchworkGltf(const std::filesystem::path& path, std::optional<ExportOptions>* exportOptions = nullptr);
+
+// The same from the file's bytes (.glb when they start with "glTF", else JSON). Reads no other
+// file and decodes no image: a hostile glTF cannot make Patchwork open paths its URIs name.
+Document parsePatchworkGltf(std::string_view data, const std::string& sourceName,
+                            std::optional<ExportOptions>* exportOptions = nullptr);
+
+}  // namespace pw

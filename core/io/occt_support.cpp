@@ -1,0 +1,46 @@
+// OpenCASCADE support shared by the STEP export and the STEP/IGES import (occt_support.hpp).
+#include "core/io/occt_support.hpp"
+
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_PrinterOStream.hxx>
+#include <STEPControl_Controller.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColStd_Array2OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+
+namespace pw::occt {
+
+std::unique_lock<std::mutex> lock() {
+    static std::mutex m;
+    std::unique_lock<std::mutex> held(m);
+    static const bool once = [] {
+        Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
+        STEPControl_Controller::Init();  // the STEP settings (write.step.schema) exist from here on
+        return true;
+    }();
+    (void)once;
+    return held;
+}
+
+Handle(Geom_BSplineSurface) bezierSurface(const std::array<Vec3, 16>& net, const Weights16* weights) {
+    TColgp_Array2OfPnt poles(1, 4, 1, 4);
+    TColStd_Array2OfReal w(1, 4, 1, 4);
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            const Vec3& p = net[size_t(i * 4 + j)];
+            poles.SetValue(j + 1, i + 1, gp_Pnt(p.x, p.y, p.z));
+            w.SetValue(j + 1, i + 1, weights ? (*weights)[size_t(i * 4 + j)] : 1.0);
+        }
+    TColStd_Array1OfReal knots(1, 2);
+    knots(1) = 0.0;
+    knots(2) = 1.0;
+    TColStd_Array1OfInteger mults(1, 2);
+    mults(1) = 4;
+    mults(2) = 4;
+    if (weights) return new Geom_BSplineSurface(poles, w, knots, knots, mults, mults, 3, 3);
+    return new Geom_BSplineSurface(poles, knots, knots, mults, mults, 3, 3);
+}
+
+}  // namespace pw::occt

@@ -1,0 +1,25 @@
+// What the STEP export and the STEP/IGES import share around OpenCASCADE: one lock (its data-exchange
+// settings are process-wide), silenced console output, and the Bézier <-> B-spline pole layout.
+// Only step_export.cpp and step_import.cpp include this (it pulls in OCCT headers).
+#pragma once
+
+#include <Geom_BSplineSurface.hxx>
+#include <Standard_Handle.hxx>
+
+#include <array>
+#include <mutex>
+
+#include "core/base/math_types.hpp"
+
+namespace pw::occt {
+
+// Held for every use of OCCT's readers and writers; the first call also removes OCCT's console
+// printers (its transfer statistics would otherwise go to stdout).
+std::unique_lock<std::mutex> lock();
+
+// A bicubic Bézier patch (row-major 16 points, row i = v, column j = u) as an exact B-spline
+// surface: poles(j + 1, i + 1), knots {0, 1} of multiplicity 4 both ways; rational (the same
+// weights at the same places) when `weights` is given.
+Handle(Geom_BSplineSurface) bezierSurface(const std::array<Vec3, 16>& net, const Weights16* weights = nullptr);
+
+}  // namespace pw::occt

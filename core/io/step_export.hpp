@@ -1,0 +1,40 @@
+// STEP export (AP214 or AP242) through OpenCASCADE: exact surfaces, sewn into shells.
+//   - every Bézier patch: a bicubic B-spline face (knots {0, 1});
+//   - every spline net: one B-spline face for the whole net (its Bézier windows joined, then every
+//     interior knot removed that the surface allows: a uniform B-spline net comes back as itself);
+//   - every Bézier triangle: a bicubic face with a collapsed edge (exact, see
+//     triangleAsCollapsedQuad) — STEP has no triangular B-spline surface, and CAD systems expect
+//     degenerate edges at poles anyway;
+//   - faces sewn (shared boundaries become shared edges) into shells: one shell, or a compound of
+//     shells when the document has several pieces. Curves are not written.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+
+#include "core/model/document.hpp"
+
+namespace pw {
+
+enum class StepSchema { AP214, AP242 };
+
+struct StepExportOptions {
+    StepSchema schema = StepSchema::AP214;
+};
+
+struct StepExportStats {
+    size_t faces = 0, shells = 0;
+    size_t sharedEdges = 0;      // edges sewn between two faces
+    size_t freeEdges = 0;        // boundary edges (open surfaces)
+    size_t degenerateEdges = 0;  // collapsed edges (poles, triangles' collapsed side)
+    size_t bytes = 0;
+};
+
+// The file's text. Throws OutputError-free std::runtime_error when OCCT fails.
+std::string exportStepText(const Document& doc, const StepExportOptions& options, StepExportStats* stats = nullptr);
+
+// Atomic write (.step or .stp). Throws OutputError naming the path.
+StepExportStats exportStep(const Document& doc, const std::filesystem::path& path, const StepExportOptions& options = {});
+
+}  // namespace pw

@@ -1,0 +1,199 @@
+// STEP/IGES surfaces to Bézier patches (step_import.hpp).
+#include "core/io/step_import.hpp"
+
+#include <BRepTools.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomConvert.hxx>
+#include <GeomConvert_BSplineSurfaceToBezierSurface.hxx>
+#include <Geom2d_BSplineCurve.hxx>
+#include <Geom2d_Line.hxx>
+#include <Geom2d_TrimmedCurve.hxx>
+#include <Geom_BezierSurface.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
+#include <IGESControl_Reader.hxx>
+#include <STEPControl_Reader.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Wire.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <vector>
+#include <variant>
+
+#include "core/model/camera_math.hpp"
+#include "core/base/errors.hpp"
+#include "core/base/file_io.hpp"
+#include "core/model/join_detect.hpp"
+#include "core/base/limits.hpp"
+#include "core/io/occt_support.hpp"
+
+namespace pw {
+
+namespace {
+
+// When the 2-D curve is a line of constant u or constant v (an edge of the parameter rectangle),
+// possibly trimmed, or a B-spline whose poles all share u or v: records that value in `us` or `vs`
+// and returns true.
+bool isoCurve(const Handle(Geom2d_Curve)& c, std::vector<double>& us, std::vector<double>& vs) {
+    Handle(Geom2d_Curve) curve = c;
+    if (auto t = Handle(Geom2d_TrimmedCurve)::DownCast(curve)) curve = t->BasisCurve();
+    if (auto l = Handle(Geom2d_Line)::DownCast(curve)) {
+        const gp_Dir2d d = l->Direction();
+        if (std::abs(d.X()) < 1e-12) us.push_back(l->Location().X());
+        else if (std::abs(d.Y()) < 1e-12) vs.push_back(l->Location().Y());
+        else return false;
+        return true;
+    }
+    if (auto b = Handle(Geom2d_BSplineCurve)::DownCast(curve)) {
+        bool sameU = true, sameV = true;
+        const gp_Pnt2d p0 = b->Pole(1);
+        for (int i = 2; i <= b->NbPoles(); ++i) {
+            sameU = sameU && std::abs(b->Pole(i).X() - p0.X()) < 1e-12;
+            sameV = sameV && std::abs(b->Pole(i).Y() - p0.Y()) < 1e-12;
+        }
+        if (sameU) us.push_back(p0.X());
+        else if (sameV) vs.push_back(p0.Y());
+        return sameU || sameV;
+    }
+    return false;
+}
+
+std::string typeName(const Handle(Geom_Surface)& s) {
+    std::string n = s->DynamicType()->Name();
+    if (n.rfind("Geom_", 0) == 0) n = n.substr(5);
+    return n;
+}
+
+// The face's surface as a polynomial bicubic B-spline over exactly the face's parameter rectangle,
+// oriented like the face; or the reason it cannot be.
+std::variant<Handle(Geom_BSplineSurface), std::string> faceSurface(const TopoDS_Face& face) {
+    Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
+    if (surface.IsNull()) return std::string("it has no surface");
+    if (auto t = Handle(Geom_RectangularTrimmedSurface)::DownCast(surface)) surface = t->BasisSurface();
+    Handle(Geom_BSplineSurface) bs;
+    if (auto b = Handle(Geom_BSplineSurface)::DownCast(surface)) {
+        bs = Handle(Geom_BSplineSurface)::DownCast(b->Copy());
+    } else if (auto z = Handle(Geom_BezierSurface)::DownCast(surface)) {
+        bs = GeomConvert::SurfaceToBSplineSurface(z);
+    } else {
+        return "a " + typeName(surface) + " surface (only B-spline and Bézier surfaces become patches)";
+    }
+    if (bs->UDegree() > 3 || bs->VDegree() > 3)
+        return "degree " + std::to_string(bs->UDegree()) + " x " + std::to_string(bs->VDegree()) + " (3 at most)";
+
+    int wires = 0;
+    for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next()) ++wires;
+    if (wires != 1) return "trimmed: " + std::to_string(wires) + " boundary loops (holes)";
+    // The boundary must be the parameter rectangle; its exact sides are the iso lines' values
+    // (BRepTools::UVBounds is a box grown by tolerances).
+    std::vector<double> us, vs;
+    for (TopExp_Explorer e(face, TopAbs_EDGE); e.More(); e.Next()) {
+        const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
+        double f = 0, l = 0;
+        const Handle(Geom2d_Curve) pc = BRep_Tool::CurveOnSurface(edge, face, f, l);
+        if (pc.IsNull() || !isoCurve(pc, us, vs)) {
+            if (BRep_Tool::Degenerated(edge)) continue;
+            return std::string("trimmed by a curve that is not a parameter line");
+        }
+    }
+    double u0, u1, v0, v1, su0, su1, sv0, sv1;
+    BRepTools::UVBounds(face, u0, u1, v0, v1);
+    bs->Bounds(su0, su1, sv0, sv1);
+    if (us.size() >= 2) {
+        u0 = *std::min_element(us.begin(), us.end());
+        u1 = *std::max_element(us.begin(), us.end());
+    }
+    if (vs.size() >= 2) {
+        v0 = *std::min_element(vs.begin(), vs.end());
+        v1 = *std::max_element(vs.begin(), vs.end());
+    }
+    const double eu = 1e-9 * (su1 - su0), ev = 1e-9 * (sv1 - sv0);
+    if (u0 < su0 - eu || u1 > su1 + eu || v0 < sv0 - ev || v1 > sv1 + ev) return std::string("its boundary leaves the surface");
+    if (u0 > su0 + eu || u1 < su1 - eu || v0 > sv0 + ev || v1 < sv1 - ev) bs->Segment(u0, u1, v0, v1);  // exact
+    if (face.Orientation() == TopAbs_REVERSED) bs->UReverse();
+    bs->IncreaseDegree(3, 3);
+    return bs;
+}
+
+}  // namespace
+
+Document importCadSurfaces(const std::filesystem::path& path, CadImportReport* report) {
+    const std::string ext = lowerExtension(path);
+    const bool step = ext == ".step" || ext == ".stp";
+    if (!step && ext != ".iges" && ext != ".igs") throw InputError(path.string(), "not a STEP (.step, .stp) or IGES (.iges, .igs) file");
+    const std::string bytes = readFileLimited(path);  // size limit and a clear error for a missing file
+    const auto held = occt::lock();
+    CadImportReport rep;
+    Document doc;
+    try {
+        TopoDS_Shape shape;
+        if (step) {
+            STEPControl_Reader reader;
+            std::istringstream in(bytes);
+            if (reader.ReadStream(path.filename().string().c_str(), in) != IFSelect_RetDone)
+                throw InputError(path.string(), "not a readable STEP file (OpenCASCADE could not parse it)");
+            if (reader.TransferRoots() == 0) throw InputError(path.string(), "the STEP file holds no shape");
+            shape = reader.OneShape();
+        } else {
+            IGESControl_Reader reader;  // IGES reads only from a path in OCCT 7.6
+            if (reader.ReadFile(path.string().c_str()) != IFSelect_RetDone)
+                throw InputError(path.string(), "not a readable IGES file (OpenCASCADE could not parse it)");
+            if (reader.TransferRoots() == 0) throw InputError(path.string(), "the IGES file holds no shape");
+            shape = reader.OneShape();
+        }
+        TopTools_IndexedMapOfShape faces;
+        TopExp::MapShapes(shape, TopAbs_FACE, faces);
+        rep.faces = size_t(faces.Extent());
+        for (int f = 1; f <= faces.Extent(); ++f) {
+            auto result = faceSurface(TopoDS::Face(faces(f)));
+            if (auto* why = std::get_if<std::string>(&result)) {
+                rep.notes.push_back("face " + std::to_string(f) + " skipped: " + *why);
+                continue;
+            }
+            const Handle(Geom_BSplineSurface)& bs = std::get<Handle(Geom_BSplineSurface)>(result);
+            GeomConvert_BSplineSurfaceToBezierSurface split(bs);
+            for (int i = 1; i <= split.NbUPatches(); ++i)
+                for (int j = 1; j <= split.NbVPatches(); ++j) {
+                    const Handle(Geom_BezierSurface) z = split.Patch(i, j);
+                    Patch patch;
+                    for (int r = 0; r < 4; ++r)
+                        for (int c = 0; c < 4; ++c) {
+                            const gp_Pnt p = z->Pole(c + 1, r + 1);
+                            patch.idx[size_t(r * 4 + c)] = uint32_t(doc.points.size());
+                            doc.points.push_back(Vec3(p.X(), p.Y(), p.Z()));
+                            if (z->IsURational() || z->IsVRational()) setPointWeight(doc, uint32_t(doc.points.size() - 1), z->Weight(c + 1, r + 1));
+                        }
+                    doc.patches.push_back(patch);
+                    if (doc.patches.size() > limits::kMaxPatches)
+                        throw InputError(path.string(), "more than " + std::to_string(limits::kMaxPatches) + " patches");
+                }
+            ++rep.importedFaces;
+        }
+    } catch (const Standard_Failure& e) {
+        throw InputError(path.string(), std::string("OpenCASCADE stopped reading it: ") + e.GetMessageString());
+    }
+    if (doc.patches.empty()) {
+        std::string why = rep.faces == 0 ? "it has no faces" : rep.notes.front();
+        throw InputError(path.string(), "no surface Patchwork can edit (" + why + ")");
+    }
+    for (const Vec3& p : doc.points)
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) ||
+            std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) > limits::kMaxCoordinate)
+            throw InputError(path.string(), "a control point is not finite or too large");
+    const Bounds box = computeBounds(doc.points);
+    mergeCoincidentPoints(doc, 1e-9 * modelSize(doc));
+    doc.joins = detectJoins(doc);
+    doc.name = path.stem().string();
+    doc.camera.zUp = true;  // CAD systems are Z-up
+    doc.camera = frameBounds(doc.camera, box, 1.0);
+    if (report) *report = rep;
+    return doc;
+}
+
+}  // namespace pw

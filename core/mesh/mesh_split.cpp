@@ -1,0 +1,174 @@
+// Grouping of a welded mesh into export primitives (mesh_split.hpp): triangles get a group
+// (connected by shared positions, by patch, or one), then each group's triangles and the vertices
+// they use are copied out in order, with indices relative to the group.
+#include "core/mesh/mesh_split.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <tuple>
+#include <utility>
+
+namespace pw {
+
+namespace {
+
+constexpr uint32_t kNone = 0xFFFFFFFFu;
+
+uint32_t findRoot(std::vector<uint32_t>& parent, uint32_t x) {
+    while (parent[x] != x) {
+        parent[x] = parent[parent[x]];
+        x = parent[x];
+    }
+    return x;
+}
+
+// Group of every triangle, numbered in order of first appearance; `items` gets the patch of each
+// group (Patches) or -1.
+std::vector<uint32_t> groupTriangles(const TriangleMesh& mesh, MeshGrouping grouping, const std::vector<uint32_t>& pid,
+                                     std::vector<int>& items) {
+    const size_t T = mesh.indices.size() / 3;
+    std::vector<uint32_t> group(T, 0);
+    if (grouping == MeshGrouping::Single) {
+        if (T > 0) items.push_back(-1);
+        return group;
+    }
+    if (grouping == MeshGrouping::Patches) {
+        int item = 0;
+        auto take = [&](const std::vector<MeshRange>& ranges) {
+            for (const MeshRange& r : ranges) {
+                if (r.indexCount > 0) {
+                    for (uint32_t t = r.firstIndex / 3; t < (r.firstIndex + r.indexCount) / 3; ++t) group[t] = uint32_t(items.size());
+                    items.push_back(item);
+                }
+                ++item;
+            }
+        };
+        take(mesh.perWindow);
+        take(mesh.perTriangle);
+        return group;
+    }
+    std::vector<uint32_t> parent(mesh.positions.size());
+    std::iota(parent.begin(), parent.end(), 0u);
+    const auto& I = mesh.indices;
+    for (size_t t = 0; t < T; ++t)
+        for (int k = 1; k < 3; ++k) {
+            const uint32_t a = findRoot(parent, pid[I[3 * t]]), b = findRoot(parent, pid[I[3 * t + k]]);
+            if (a != b) parent[std::max(a, b)] = std::min(a, b);
+        }
+    std::vector<uint32_t> number(mesh.positions.size(), kNone);
+    for (size_t t = 0; t < T; ++t) {
+        uint32_t& n = number[findRoot(parent, pid[I[3 * t]])];
+        if (n == kNone) {
+            n = uint32_t(items.size());
+            items.push_back(-1);
+        }
+        group[t] = n;
+    }
+    return group;
+}
+
+// closed[g]: every edge of group g's triangles, by position, is used by exactly two of them.
+std::vector<bool> closedGroups(const std::vector<uint32_t>& indices, const std::vector<uint32_t>& group,
+                               const std::vector<uint32_t>& pid, size_t groups) {
+    struct Key {
+        uint32_t g, a, b;
+        bool operator<(const Key& o) const { return std::tie(g, a, b) < std::tie(o.g, o.a, o.b); }
+        bool operator==(const Key& o) const { return g == o.g && a == o.a && b == o.b; }
+    };
+    std::vector<Key> edges;
+    edges.reserve(indices.size());
+    for (size_t t = 0; t < group.size(); ++t)
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t a = pid[indices[3 * t + k]], b = pid[indices[3 * t + (k + 1) % 3]];
+            edges.push_back({group[t], std::min(a, b), std::max(a, b)});
+        }
+    std::sort(edges.begin(), edges.end());
+    std::vector<bool> closed(groups, true);
+    for (size_t i = 0; i < edges.size();) {
+        size_t j = i;
+        while (j < edges.size() && edges[j] == edges[i]) ++j;
+        if (j - i != 2) closed[edges[i].g] = false;
+        i = j;
+    }
+    return closed;
+}
+
+}  // namespace
+
+const char* meshGroupingName(MeshGrouping g) {
+    switch (g) {
+        case MeshGrouping::Surfaces: return "surfaces";
+        case MeshGrouping::Patches: return "patches";
+        case MeshGrouping::Single: return "single";
+    }
+    return "surfaces";
+}
+
+std::optional<MeshGrouping> parseMeshGrouping(const std::string& name) {
+    for (MeshGrouping g : {MeshGrouping::Surfaces, MeshGrouping::Patches, MeshGrouping::Single})
+        if (name == meshGroupingName(g)) return g;
+    return std::nullopt;
+}
+
+std::vector<uint32_t> positionIds(const std::vector<std::array<float, 3>>& positions) {
+    std::vector<uint32_t> order(positions.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+        return positions[a] < positions[b] || (positions[a] == positions[b] && a < b);
+    });
+    std::vector<uint32_t> id(positions.size());
+    for (size_t i = 0; i < order.size();) {
+        size_t j = i;
+        while (j < order.size() && positions[order[j]] == positions[order[i]]) id[order[j++]] = order[i];
+        i = j;
+    }
+    return id;
+}
+
+SplitMesh splitMesh(TriangleMesh&& mesh, MeshGrouping grouping) {
+    const std::vector<uint32_t> pid = positionIds(mesh.positions);
+    std::vector<int> items;
+    const std::vector<uint32_t> group = groupTriangles(mesh, grouping, pid, items);
+    const std::vector<bool> closed = closedGroups(mesh.indices, group, pid, items.size());
+
+    // Triangles by group, stable (counting sort).
+    const size_t G = items.size(), T = group.size();
+    std::vector<uint32_t> start(G + 1, 0);
+    for (uint32_t g : group) ++start[g + 1];
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    std::vector<uint32_t> order(T), fill(start.begin(), start.end() - 1);
+    for (size_t t = 0; t < T; ++t) order[fill[group[t]]++] = uint32_t(t);
+
+    SplitMesh out;
+    out.indices.reserve(mesh.indices.size());
+    out.positions.reserve(mesh.positions.size());
+    out.normals.reserve(mesh.positions.size());
+    out.uvs.reserve(mesh.positions.size());
+    std::vector<uint32_t> local(mesh.positions.size(), kNone), owner(mesh.positions.size(), kNone);
+    for (size_t g = 0; g < G; ++g) {
+        MeshGroup mg;
+        mg.firstIndex = uint32_t(out.indices.size());
+        mg.firstVertex = uint32_t(out.positions.size());
+        mg.closed = closed[g];
+        mg.item = items[g];
+        for (uint32_t k = start[g]; k < start[g + 1]; ++k)
+            for (int c = 0; c < 3; ++c) {
+                const uint32_t v = mesh.indices[3 * size_t(order[k]) + c];
+                if (owner[v] != g) {
+                    owner[v] = uint32_t(g);
+                    local[v] = uint32_t(out.positions.size()) - mg.firstVertex;
+                    out.positions.push_back(mesh.positions[v]);
+                    out.normals.push_back(mesh.normals[v]);
+                    out.uvs.push_back(mesh.uvs[v]);
+                }
+                out.indices.push_back(local[v]);
+            }
+        mg.indexCount = uint32_t(out.indices.size()) - mg.firstIndex;
+        mg.vertexCount = uint32_t(out.positions.size()) - mg.firstVertex;
+        out.groups.push_back(mg);
+    }
+    mesh = TriangleMesh{};
+    return out;
+}
+
+}  // namespace pw

@@ -1,0 +1,92 @@
+#include "core/model/camera_math.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/ext/matrix_clip_space.hpp>
+#include <glm/ext/matrix_transform.hpp>
+
+namespace pw {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Orbit direction (target -> eye) and up vector in a z-up frame.
+void orbitFrame(const Camera& cam, glm::dvec3& dir, glm::dvec3& up) {
+    const double yaw = cam.yawDeg * kPi / 180.0, pitch = cam.pitchDeg * kPi / 180.0;
+    dir = {std::cos(pitch) * std::sin(yaw), -std::cos(pitch) * std::cos(yaw), std::sin(pitch)};
+    up = {-std::sin(pitch) * std::sin(yaw), std::sin(pitch) * std::cos(yaw), std::cos(pitch)};
+    if (!cam.zUp) {  // y-up world: (x, y, z)_zup -> (x, z, -y)
+        dir = {dir.x, dir.z, -dir.y};
+        up = {up.x, up.z, -up.y};
+    }
+}
+
+}  // namespace
+
+glm::dvec3 cameraEye(const Camera& cam) {
+    glm::dvec3 dir, up;
+    orbitFrame(cam, dir, up);
+    const glm::dvec3 target{cam.target[0], cam.target[1], cam.target[2]};
+    return target + dir * cam.distance;
+}
+
+ViewMatrices viewMatrices(const Camera& cam, double aspect, double nearPlane, double farPlane) {
+    glm::dvec3 dir, up;
+    orbitFrame(cam, dir, up);
+    const glm::dvec3 target{cam.target[0], cam.target[1], cam.target[2]};
+    const double dist = std::max(cam.distance, 1e-9);
+    const glm::dvec3 eye = target + dir * dist;
+    if (nearPlane <= 0.0) nearPlane = dist / 1000.0;
+    if (farPlane <= nearPlane) farPlane = dist * 100.0;
+
+    ViewMatrices vm;
+    const glm::dmat4 view = glm::lookAtRH(eye, target, up);
+    glm::dmat4 proj;
+    if (cam.orthographic) {
+        const double h = dist * std::tan(cam.fovYDeg * kPi / 360.0);
+        proj = glm::orthoRH_ZO(-h * aspect, h * aspect, -h, h, 0.0, farPlane);
+    } else {
+        proj = glm::perspectiveRH_ZO(cam.fovYDeg * kPi / 180.0, aspect, nearPlane, farPlane);
+    }
+    proj[1][1] *= -1.0;  // Vulkan: y points down in clip space
+    vm.view = glm::mat4(view);
+    vm.proj = glm::mat4(proj);
+    vm.viewProj = glm::mat4(proj * view);
+    vm.eye = glm::vec3(eye);
+    vm.forward = glm::vec3(glm::normalize(target - eye));
+    return vm;
+}
+
+std::optional<Camera> applyNamedView(Camera cam, std::string_view name) {
+    if (name == "front") { cam.yawDeg = 0; cam.pitchDeg = 0; }
+    else if (name == "back") { cam.yawDeg = 180; cam.pitchDeg = 0; }
+    else if (name == "right") { cam.yawDeg = 90; cam.pitchDeg = 0; }
+    else if (name == "left") { cam.yawDeg = -90; cam.pitchDeg = 0; }
+    else if (name == "top") { cam.yawDeg = 0; cam.pitchDeg = 90; }
+    else if (name == "bottom") { cam.yawDeg = 0; cam.pitchDeg = -90; }
+    else if (name == "iso") { cam.yawDeg = 45; cam.pitchDeg = 35.264389682754654; }
+    else return std::nullopt;
+    return cam;
+}
+
+Camera frameBounds(Camera cam, const Bounds& box, double aspect, double margin) {
+    if (box.empty) return cam;
+    const glm::dvec3 c = (box.min + box.max) * 0.5;
+    cam.target = {c.x, c.y, c.z};
+    const double radius = std::max(0.5 * box.diagonal(), 1e-9);
+    const double halfFov = cam.fovYDeg * kPi / 360.0;
+    const double halfFovX = std::atan(std::tan(halfFov) * std::max(aspect, 1e-6));
+    const double s = std::sin(std::min(halfFov, halfFovX));
+    cam.distance = radius * margin / std::max(s, 1e-6);
+    if (cam.orthographic) cam.distance = radius * margin / std::max(std::tan(std::min(halfFov, halfFovX)), 1e-6);
+    return cam;
+}
+
+std::optional<glm::dvec2> projectToPixel(const ViewMatrices& vm, const glm::dvec3& p, int width, int height) {
+    const glm::dvec4 c = glm::dmat4(vm.viewProj) * glm::dvec4(p, 1.0);
+    if (c.w <= 1e-12) return std::nullopt;
+    const double x = c.x / c.w, y = c.y / c.w;
+    return glm::dvec2((x * 0.5 + 0.5) * width, (y * 0.5 + 0.5) * height);
+}
+
+}  // namespace pw

@@ -1,0 +1,315 @@
+// The Patchwork document: a pool of control points, bicubic patches and spline nets that index it,
+// joins between patch edges, and the tessellation, display and camera settings (DESIGN §1).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/model/basis.hpp"
+#include "core/base/math_types.hpp"
+
+namespace pw {
+
+// Edges of a 4x4 window, numbered like the quad domain's outer levels (DESIGN §3):
+// U0 = column j=0 (u=0), V0 = row i=0 (v=0), U1 = column j=3 (u=1), V1 = row i=3 (v=1).
+enum class Edge : uint8_t { U0 = 0, V0 = 1, U1 = 2, V1 = 3 };
+std::string_view edgeName(Edge e);  // "u0", "v0", "u1", "v1"
+std::optional<Edge> parseEdge(std::string_view name);
+
+// Net slot (0..15) of the k-th point along edge e (k in increasing parameter), and of the point
+// `depth` rows inward from it (depth 0 = on the edge, 1 = the tangent row).
+int edgeSlot(Edge e, int k, int depth = 0);
+
+// True when an edge with these four pool indices runs against its canonical direction (its indices
+// read backwards are lexicographically smaller); every patch sharing the edge walks it canonically
+// (watertight seams, DESIGN §2). The rule of core/gpu/patch_math.h, which the shaders use too.
+bool edgeReversed(const std::array<uint32_t, 4>& pool);
+inline std::array<uint32_t, 4> reversedEdgePool(const std::array<uint32_t, 4>& p) { return {p[3], p[2], p[1], p[0]}; }
+
+enum class Continuity : uint8_t { C0, C1, G1, C2, G2 };
+std::string_view continuityName(Continuity c);  // "C0", "C1", "G1", "C2", "G2"
+std::optional<Continuity> parseContinuity(std::string_view name);
+// Joins that hold the cross-boundary tangent (C1, G1, C2, G2) and those that also hold curvature.
+inline bool holdsTangent(Continuity c) { return c != Continuity::C0; }
+inline bool holdsCurvature(Continuity c) { return c == Continuity::C2 || c == Continuity::G2; }
+
+// Displacement along the normal by a height map (DESIGN §11): height = scale * map(uv) + bias, the
+// map read as 0..1 (8- or 16-bit PNG). UVs are the window's parameters (a net's windows tile the map
+// in net order, so neighbours sample the same texels along their shared edge) or a planar projection
+// along the up axis over a rectangle (the model's bounds when none is set), which depends on the
+// position alone and so agrees across every seam.
+enum class DisplacementMapping : uint8_t { Patch, Planar };
+std::string_view displacementMappingName(DisplacementMapping m);  // "patch", "planar"
+std::optional<DisplacementMapping> parseDisplacementMapping(std::string_view name);
+
+struct DisplacementOverride {
+    float scale = 0.0f;
+    float bias = 0.0f;
+    bool operator==(const DisplacementOverride&) const = default;
+};
+
+struct DisplacementSettings {
+    std::string map;  // PNG path as written in the document (relative: to the document's folder); "" = none
+    float scale = 0.0f;
+    float bias = 0.0f;
+    DisplacementMapping mapping = DisplacementMapping::Planar;
+    // Planar: the rectangle (x0, y0, width, height) of the ground plane (x-y for Z-up documents,
+    // x-z for Y-up) the map covers; none = the model's bounding box.
+    std::optional<std::array<double, 4>> rect;
+    bool active() const { return !map.empty(); }
+    bool operator==(const DisplacementSettings&) const = default;
+};
+
+// A bicubic patch: 16 indices into the pool, row-major (i = v row, j = u column).
+struct Patch {
+    std::array<uint32_t, 16> idx{};
+    Basis basis = Basis::Bezier;
+    double tension = 0.5;  // Catmull-Rom τ
+    std::string name;
+    // Per-patch tessellation override: four outer and two inner levels.
+    std::optional<std::array<float, 6>> tessOverride;
+    bool hidden = false;  // H: not drawn, not picked (saved with the document)
+    std::optional<DisplacementOverride> displacement;  // own scale and bias (else the document's)
+    bool operator==(const Patch&) const = default;
+};
+
+// A cubic Bézier triangle: 10 indices into the pool, b_ijk with i+j+k = 3 weighting
+// 3!/(i!j!k!) u^i v^j w^k, (u, v, w) barycentric, w = 1 - u - v. Canonical order:
+//   slot: 0    1    2    3    4    5    6    7    8    9
+//   b:    300  210  201  120  111  102  030  021  012  003
+// Corners: slot 0 at u = 1, slot 6 at v = 1, slot 9 at w = 1. Edges are numbered like the Vulkan
+// triangle domain's outer levels: edge 0 is u = 0 (slots 6,7,8,9), edge 1 is v = 0 (9,5,2,0),
+// edge 2 is w = 0 (0,1,3,6); see triEdgeSlot in bezier_triangle.hpp. Each edge is a cubic Bézier
+// curve of its 4 pool points, so triangles (and quads) that share those points meet watertight.
+struct TrianglePatch {
+    std::array<uint32_t, 10> idx{};
+    std::string name;
+    // Per-patch tessellation override: three outer levels (edges 0, 1, 2) and one inner.
+    std::optional<std::array<float, 4>> tessOverride;
+    bool hidden = false;
+    std::optional<DisplacementOverride> displacement;
+    bool operator==(const TrianglePatch&) const = default;
+};
+
+// A cubic Bézier curve: four pool points. Drawn through the GPU's isoline tessellator (DESIGN §3)
+// with TessSettings::isolineLevels[1] segments; exported as a glTF line strip.
+struct BezierCurve {
+    std::array<uint32_t, 4> idx{};
+    std::string name;
+    bool hidden = false;
+    bool operator==(const BezierCurve&) const = default;
+};
+
+// A larger control net (rows x cols) under one basis; every 4x4 window is a patch. Bézier windows
+// step by 3, spline windows by 1. A closed direction wraps around (tubes and rings).
+struct Surface {
+    uint32_t rows = 4, cols = 4;
+    std::vector<uint32_t> idx;  // rows*cols pool indices, row-major
+    Basis basis = Basis::BSpline;
+    double tension = 0.5;
+    bool closedU = false;  // columns wrap
+    bool closedV = false;  // rows wrap
+    // Bézier nets only: keep C1 across the window seams (the solver holds each seam point midway
+    // between its neighbours); otherwise the windows meet C0.
+    bool keepC1 = false;
+    std::string name;
+    bool hidden = false;
+    std::optional<DisplacementOverride> displacement;  // for every window of the net
+    bool operator==(const Surface&) const = default;
+};
+
+// Edge `edgeA` of patch A meets edge `edgeB` of patch B. They share the four pool entries; point k
+// along A's edge is point k (or 3-k when `reversed`) along B's edge. For C1/G1/C2/G2:
+//   B1k - B0k = alpha * (A0k - A1k)   (0 = boundary row, 1 = tangent row; alpha = 1 for C1, C2)
+// and for C2/G2 also (2 = the third row; beta2 = 0 for C2), the β-constraint of Barsky's G2:
+//   B2k - 2 B1k + B0k = alpha² (A2k - 2 A1k + A0k) + (beta2 / 2) (A0k - A1k)
+// which, with alpha and beta2 fixed when the join is made, is linear in the points and gives
+// equal tangent planes and equal normal curvature in every direction across the seam.
+struct Join {
+    uint32_t patchA = 0;
+    Edge edgeA = Edge::U0;
+    uint32_t patchB = 0;
+    Edge edgeB = Edge::U0;
+    bool reversed = false;
+    Continuity continuity = Continuity::C0;
+    double alpha = 1.0;  // β1
+    double beta2 = 0.0;  // β2 (G2 only)
+    bool operator==(const Join&) const = default;
+};
+
+enum class Spacing : uint8_t { Equal, FractionalOdd, FractionalEven, Pow2 };
+std::string_view spacingName(Spacing s);  // "equal", "fractional_odd", "fractional_even", "pow2"
+std::optional<Spacing> parseSpacing(std::string_view name);
+
+enum class AdaptiveMode : uint8_t { None, Distance, ScreenSpace, Orientation };
+std::string_view adaptiveName(AdaptiveMode m);  // "none", "distance", "screen", "orientation"
+std::optional<AdaptiveMode> parseAdaptive(std::string_view name);
+
+struct TessSettings {
+    std::array<float, 4> outer{16, 16, 16, 16};
+    std::array<float, 2> inner{16, 16};
+    bool linked = true;  // UI: one slider drives all six
+    Spacing spacing = Spacing::Equal;
+    AdaptiveMode adaptive = AdaptiveMode::None;
+    float distanceNear = 2.0f;   // d0: full level at or below this distance
+    float distanceFar = 30.0f;   // d1: level 1 at or beyond this distance
+    float targetPixels = 8.0f;   // screen-space mode: pixels per segment
+    float maxLevel = 64.0f;
+    bool cullBackfaces = false;
+    bool cullOffscreen = true;
+    // The isoline domain's two levels, for curves and the isocurve overlay: lines (outer 0, always
+    // rounded to an integer) and segments per line (outer 1, under `spacing`). Curves draw one line;
+    // the isocurve overlay draws `lines` isoparametric curves per direction of every window, the
+    // first and last on its boundary (2 = the boundary curves).
+    std::array<float, 2> isolineLevels{2.0f, 16.0f};
+    bool operator==(const TessSettings&) const = default;
+};
+
+enum class ShadingMode : uint8_t { Lit, Normal, PatchId, UvChecker, Zebra, GaussCurvature, MeanCurvature };
+std::string_view shadingName(ShadingMode m);  // "lit", "normal", "patch", "uv", "zebra", "gauss", "mean"
+std::optional<ShadingMode> parseShading(std::string_view name);
+
+struct DisplaySettings {
+    ShadingMode shading = ShadingMode::Lit;
+    bool showGrid = true;       // control-net lines and points
+    bool showWireframe = false;
+    bool showNormals = false;
+    bool showBoundaries = false;  // patch boundaries and joins coloured by continuity
+    bool showIsocurves = false;   // isoparametric curves of every window, through the isoline tessellator
+    // Curvature combs (issue 21), drawn by the GPU through the isoline tessellator: teeth along every
+    // Bézier curve and, with the isocurve overlay, every isocurve (2 lines = the boundary curves),
+    // each tooth −κN long times combToothLength (outward from the centre of curvature),
+    // combDensity teeth per curve, joined by their envelope. The selected join also gets its
+    // curvature graph: combs on the isocurves that cross it, on both sides.
+    bool showCombs = false;
+    float combScale = 1.0f;
+    int combDensity = 16;  // 2..21 (three segments a tooth within the isoline tessellator's 64)
+    float normalLength = 0.1f;
+    std::array<float, 3> lightDir{0.4f, 0.5f, 0.75f};
+    std::array<float, 3> background{0.16f, 0.17f, 0.19f};
+    bool operator==(const DisplaySettings&) const = default;
+};
+
+// A comb tooth's length per unit of curvature: combScale × 0.02 × model size² (a circle of radius r
+// gets teeth of 0.16 r at scale 1).
+inline double combToothLength(const DisplaySettings& d, double modelSize) { return d.combScale * 0.02 * modelSize * modelSize; }
+
+struct Camera {
+    std::array<double, 3> target{0, 0, 0};
+    double distance = 10.0;
+    double yawDeg = 30.0;
+    double pitchDeg = 25.0;
+    double fovYDeg = 40.0;
+    bool orthographic = false;
+    bool zUp = true;  // the teapot is +z up
+    bool operator==(const Camera&) const = default;
+};
+
+// Tolerances the continuity readout checks joins against (Rhino's EdgeContinuity's three): the gap
+// between the two sides in model units, the angle between their normals in degrees (largest along
+// the seam) and the curvature deviation across the seam in percent (core/solve/continuity_report.hpp).
+struct ContinuityTolerances {
+    double position = 0.001;
+    double angleDeg = 1.0;
+    double curvaturePct = 5.0;
+    bool operator==(const ContinuityTolerances&) const = default;
+};
+
+struct Document {
+    static constexpr int kFormatVersion = 1;
+
+    std::string name;
+    std::vector<Vec3> points;
+    std::vector<Patch> patches;
+    std::vector<Surface> surfaces;
+    std::vector<Join> joins;
+    TessSettings tess;
+    DisplaySettings display;
+    Camera camera;
+    // Cubic Bézier triangles, drawn after the quads (last, so that aggregate initialisations of
+    // documents without triangles keep working).
+    std::vector<TrianglePatch> triangles;
+    std::vector<BezierCurve> curves;  // cubic Bézier curves (isoline domain)
+    DisplacementSettings displacement;
+    ContinuityTolerances tolerances;
+    // Rational patches (issue 21): the weight of each pool point, for every item that uses it
+    // (homogeneous evaluation, core/gpu/rational_math.h). Points past the end weigh 1, and the vector
+    // is kept without trailing 1s (setPointWeight, trimWeights), so a polynomial document has none
+    // and two documents with the same weights compare equal.
+    std::vector<double> weights;
+
+    bool operator==(const Document&) const = default;
+};
+
+// Weights must be positive and finite; this bound keeps the homogeneous sums well inside a float.
+inline constexpr double kMaxWeight = 1e6;
+inline double pointWeight(const Document& doc, uint32_t i) { return i < doc.weights.size() ? doc.weights[i] : 1.0; }
+// Sets the weight of pool point i (throws EditError outside (0, kMaxWeight]).
+void setPointWeight(Document& doc, uint32_t i, double w);
+void trimWeights(std::vector<double>& weights);  // drops trailing 1s
+inline bool isRational(const Document& doc) { return !doc.weights.empty(); }
+// Bézier triangles evaluate without weights: the first triangle slot whose point has a weight other
+// than 1, as {triangle, point}, if any (such documents are refused; core/eval/rational_eval.hpp).
+std::optional<std::array<uint32_t, 2>> weightedTrianglePoint(const Document& doc);
+// Rewrites the weights after a pool renumbering: new point remap[i] takes old point i's weight
+// (remap[i] == UINT32_MAX: dropped); newSize points in all.
+void remapWeights(Document& doc, const std::vector<uint32_t>& remap, size_t newSize);
+
+// One 4x4 window to evaluate or draw: a patch, or a window of a surface's net.
+struct PatchInstance {
+    std::array<uint32_t, 16> idx{};
+    Basis basis = Basis::Bezier;
+    double tension = 0.5;
+    int32_t patch = -1;    // index into Document::patches, or -1
+    int32_t surface = -1;  // index into Document::surfaces, or -1
+    uint32_t windowRow = 0, windowCol = 0;
+};
+
+// Every patch followed by every window of every surface, in a stable order.
+std::vector<PatchInstance> expandPatches(const Document& doc);
+// True when the window's patch or net is hidden (H).
+bool windowHidden(const Document& doc, const PatchInstance& w);
+
+// Window step along a net: 3 for Bézier (windows share their boundary rows), 1 for splines.
+inline uint32_t netStep(Basis b) { return b == Basis::Bezier ? 3u : 1u; }
+// Number of 4x4 windows along one direction of n net rows or columns: open directions stop 3
+// before the end, closed ones wrap around (window k starts at k * step).
+inline uint64_t netWindowCount(uint32_t n, bool closed, uint32_t step) {
+    if (closed) return (uint64_t(n) + step - 1) / step;
+    return n >= 4 ? (n - 4) / step + 1 : 0;
+}
+
+// Calls f(index) for every pool index of every patch, net, triangle and curve (uint32_t& for a
+// mutable document, so f may renumber; const uint32_t& otherwise).
+template <class Doc, class F>
+void forEachPointIndex(Doc& doc, F&& f) {
+    for (auto& p : doc.patches)
+        for (auto& i : p.idx) f(i);
+    for (auto& s : doc.surfaces)
+        for (auto& i : s.idx) f(i);
+    for (auto& t : doc.triangles)
+        for (auto& i : t.idx) f(i);
+    for (auto& c : doc.curves)
+        for (auto& i : c.idx) f(i);
+}
+
+// Control points of one window.
+Net16 gatherNet(const Document& doc, const std::array<uint32_t, 16>& idx);
+// Their weights, or none when all sixteen are 1 (a polynomial window).
+std::optional<Weights16> gatherWeights(const Document& doc, const std::array<uint32_t, 16>& idx);
+
+struct Bounds {
+    Vec3 min{0.0}, max{0.0};
+    bool empty = true;
+    double diagonal() const { return empty ? 0.0 : glm::length(max - min); }
+};
+Bounds computeBounds(const std::vector<Vec3>& points);
+
+// The model's size for relative tolerances: the bounding-box diagonal, at least 1e-12.
+double modelSize(const Document& doc);
+
+}  // namespace pw

@@ -1,0 +1,25 @@
+// Finds joins between patches that share a boundary curve in the pool: C0 where the four edge
+// indices coincide (same or reversed order); C1 or G1 (with the ratio alpha) where the cross-
+// boundary control rows are also collinear with a constant ratio along the edge.
+#pragma once
+
+#include <vector>
+
+#include "core/model/document.hpp"
+
+namespace pw {
+
+// Defaults absorb coordinates rounded to ~4-6 significant decimals (the tea set); see join_detect.cpp.
+struct JoinDetectOptions {
+    double relativeTolerance = 1e-4;  // × model size: largest |b_k - alpha·a_k| (collinearity, constant ratio)
+    double c1RatioTolerance = 1e-4;   // |alpha - 1| at most this (and |b_k - a_k| within tolerance) is C1
+};
+
+std::vector<Join> detectJoins(const Document& doc, JoinDetectOptions options = {});
+
+// Pool entries with bit-identical coordinates (-0.0 counting as +0.0) merged into one, keeping the
+// first; patch and surface indices rewritten. With a tolerance > 0, a point within that distance of
+// an earlier kept one merges into it (files whose shared corners differ in the last digits: STEP).
+void mergeCoincidentPoints(Document& doc, double tolerance = 0.0);
+
+}  // namespace pw

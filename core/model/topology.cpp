@@ -1,0 +1,35 @@
+#include "core/model/topology.hpp"
+
+namespace pw {
+
+int findJoin(const Document& doc, uint32_t p, Edge e) {
+    for (size_t i = 0; i < doc.joins.size(); ++i) {
+        const Join& j = doc.joins[i];
+        if ((j.patchA == p && j.edgeA == e) || (j.patchB == p && j.edgeB == e)) return int(i);
+    }
+    return -1;
+}
+
+std::vector<std::array<uint32_t, 3>> netC1Triples(const Document& doc) {
+    std::vector<std::array<uint32_t, 3>> out;
+    for (const Surface& s : doc.surfaces) {
+        if (s.basis != Basis::Bezier || !s.keepC1) continue;
+        const uint32_t wu = uint32_t(netWindowCount(s.cols, s.closedU, 3)), wv = uint32_t(netWindowCount(s.rows, s.closedV, 3));
+        if (wu == 0 || wv == 0) continue;
+        const uint32_t usedRows = s.closedV ? s.rows : 3 * wv + 1, usedCols = s.closedU ? s.cols : 3 * wu + 1;
+        auto at = [&](uint32_t r, uint32_t c) { return s.idx[size_t(r % s.rows) * s.cols + c % s.cols]; };
+        for (uint32_t k = s.closedU ? 0 : 1; k < wu; ++k)
+            for (uint32_t r = 0; r < usedRows; ++r) {
+                const uint32_t c = 3 * k;
+                out.push_back({at(r, c + s.cols - 1), at(r, c), at(r, c + 1)});
+            }
+        for (uint32_t k = s.closedV ? 0 : 1; k < wv; ++k)
+            for (uint32_t c = 0; c < usedCols; ++c) {
+                const uint32_t r = 3 * k;
+                out.push_back({at(r + s.rows - 1, c), at(r, c), at(r + 1, c)});
+            }
+    }
+    return out;
+}
+
+}  // namespace pw

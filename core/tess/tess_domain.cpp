@@ -1,0 +1,136 @@
+#include "core/tess/tess_domain.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/base/enum_names.hpp"
+#include "core/gpu/patch_math.h"
+
+namespace pw {
+
+namespace {
+constexpr std::array<std::string_view, 3> kDomainNames{"quad", "tri", "isoline"};
+constexpr std::array<std::string_view, 3> kDomainPlurals{"quads", "triangles", "isolines"};
+}  // namespace
+
+std::string_view domainName(DomainKind k) { return enumName(k, kDomainNames); }
+
+std::optional<DomainKind> parseDomain(std::string_view name) {
+    if (name == "triangle") return DomainKind::Triangle;
+    if (auto k = parseEnum<DomainKind>(name, kDomainNames)) return k;
+    return parseEnum<DomainKind>(name, kDomainPlurals);
+}
+
+float controlShaderLevel(float level, Spacing s) {
+    return s == Spacing::Pow2 ? gpu::roundLevel(level, gpu::kSpacingPow2) : level;
+}
+
+Spacing tessellatorSpacing(Spacing s) { return s == Spacing::Pow2 ? Spacing::Equal : s; }
+
+namespace {
+
+// The level clamped as the tessellator clamps it for a spacing.
+float clampLevel(float level, Spacing s, float maxLevel) {
+    switch (s) {
+        case Spacing::FractionalOdd: return std::clamp(level, 1.0f, maxLevel - 1.0f);
+        case Spacing::FractionalEven: return std::clamp(level, 2.0f, maxLevel);
+        default: return std::clamp(level, 1.0f, maxLevel);
+    }
+}
+
+// Segments for an already clamped level; `plusEpsilon` treats a level of exactly 1 as 1 + ε.
+int roundClamped(float clamped, Spacing s, bool plusEpsilon) {
+    double f = clamped;
+    if (plusEpsilon && clamped == 1.0f) f = 1.0 + 1e-6;
+    const int c = int(std::ceil(f - 1e-9));
+    switch (s) {
+        case Spacing::FractionalOdd: return c % 2 == 1 ? c : c + 1;
+        case Spacing::FractionalEven: return c % 2 == 0 ? c : c + 1;
+        default: return std::max(1, c);
+    }
+}
+
+bool culls(float outer) { return !(outer > 0.0f); }  // <= 0 or NaN
+
+// Interior vertices of a triangle domain whose inner level gives n segments per side: concentric
+// triangles with n-2, n-4, ... segments per side (3m vertices each), then a centre point (n even)
+// or a last small triangle (n odd, included as m = 1).
+uint64_t triangleInteriorVertices(int n) {
+    uint64_t v = 0;
+    int m = n - 2;
+    for (; m > 0; m -= 2) v += 3u * uint64_t(m);
+    if (m == 0) v += 1;
+    return v;
+}
+
+}  // namespace
+
+int segmentCount(float level, Spacing s, float maxLevel) {
+    if (culls(level)) return 0;
+    return roundClamped(clampLevel(level, s, maxLevel), s, false);
+}
+
+DomainCounts expectedDomainCounts(DomainKind kind, const DomainLevels& levels, Spacing spacing, float maxLevel) {
+    DomainCounts out;
+    const Spacing ts = tessellatorSpacing(spacing);
+    const int nOuter = kind == DomainKind::Quad ? 4 : kind == DomainKind::Triangle ? 3 : 2;
+    const int nInner = kind == DomainKind::Quad ? 2 : kind == DomainKind::Triangle ? 1 : 0;
+    std::array<float, 4> outer{};
+    std::array<float, 2> inner{};
+    for (int e = 0; e < nOuter; ++e) {
+        outer[size_t(e)] = controlShaderLevel(levels.outer[size_t(e)], spacing);
+        if (culls(outer[size_t(e)])) {
+            out.culled = true;
+            return out;
+        }
+    }
+    for (int i = 0; i < nInner; ++i) {
+        float l = controlShaderLevel(levels.inner[size_t(i)], spacing);
+        inner[size_t(i)] = l == l ? l : 1.0f;
+    }
+
+    if (kind == DomainKind::Isoline) {
+        // The line count always uses integer spacing; the segments per line use the partitioning.
+        const uint64_t lines = uint64_t(segmentCount(outer[0], Spacing::Equal, maxLevel));
+        const uint64_t segs = uint64_t(segmentCount(outer[1], ts, maxLevel));
+        out.outerSegments = {int(lines), int(segs), 0, 0};
+        out.vertices = lines * (segs + 1);
+        out.primitives = lines * segs;
+        return out;
+    }
+
+    // The special case: every clamped level exactly one gives the undivided domain.
+    bool allOne = true;
+    for (int e = 0; e < nOuter; ++e) allOne = allOne && clampLevel(outer[size_t(e)], ts, maxLevel) == 1.0f;
+    for (int i = 0; i < nInner; ++i) allOne = allOne && clampLevel(inner[size_t(i)], ts, maxLevel) == 1.0f;
+    uint64_t boundary = 0;
+    for (int e = 0; e < nOuter; ++e) {
+        out.outerSegments[size_t(e)] = segmentCount(outer[size_t(e)], ts, maxLevel);
+        boundary += uint64_t(out.outerSegments[size_t(e)]);
+    }
+    if (allOne) {
+        out.innerSegments = {1, kind == DomainKind::Quad ? 1 : 0};
+        out.vertices = uint64_t(nOuter);
+        out.primitives = kind == DomainKind::Quad ? 2 : 1;
+        return out;
+    }
+    // Otherwise an inner level of exactly one counts as 1 + ε (two or three segments).
+    for (int i = 0; i < nInner; ++i)
+        out.innerSegments[size_t(i)] = roundClamped(clampLevel(inner[size_t(i)], ts, maxLevel), ts, true);
+    const uint64_t interior =
+        kind == DomainKind::Quad ? uint64_t(out.innerSegments[0] - 1) * uint64_t(out.innerSegments[1] - 1)
+                                 : triangleInteriorVertices(out.innerSegments[0]);
+    out.vertices = boundary + interior;
+    // A triangulated disc with B boundary and I interior vertices has B + 2I - 2 triangles (Euler).
+    out.primitives = boundary + 2 * interior - 2;
+    return out;
+}
+
+DomainLevels withUniformLevel(const DomainLevels& used, float level) {
+    DomainLevels out = used;
+    for (float& l : out.outer) l = l > 0.0f ? level : 0.0f;
+    for (float& l : out.inner) l = l > 0.0f ? level : 0.0f;
+    return out;
+}
+
+}  // namespace pw

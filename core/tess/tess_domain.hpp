@@ -1,0 +1,59 @@
+// The fixed-function tessellator's rules on the CPU (Vulkan spec, "Tessellation"; DESIGN §3): how
+// a requested level becomes a segment count under each partitioning, and how many vertices and
+// primitives the quad, triangle and isoline domains produce for a set of levels. The domain view
+// shows what the GPU made; these rules are what the tests hold the GPU's counts against.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+#include "core/model/document.hpp"
+
+namespace pw {
+
+enum class DomainKind : uint8_t { Quad, Triangle, Isoline };
+std::string_view domainName(DomainKind k);  // "quad", "tri", "isoline"
+std::optional<DomainKind> parseDomain(std::string_view name);  // also "triangle", "isolines"
+
+// Levels as a tessellation control shader writes them. Quad: outer[0..3] = edges u=0, v=0, u=1,
+// v=1; inner[0] along u, inner[1] along v. Triangle: outer[0..2] = edges u=0, v=0, w=0; inner[0].
+// Isoline: outer[0] = number of lines, outer[1] = segments per line; inner unused.
+struct DomainLevels {
+    std::array<float, 4> outer{4, 4, 4, 4};
+    std::array<float, 2> inner{4, 4};
+    bool operator==(const DomainLevels&) const = default;
+};
+
+// `used` with every level its domain uses (the non-zero ones) set to `level`; unused stay 0.
+DomainLevels withUniformLevel(const DomainLevels& used, float level);
+
+// The level the control shader hands the tessellator: pow2 is emulated there (next power of two
+// of the integer level, then equal spacing); the other modes pass the level through.
+float controlShaderLevel(float level, Spacing s);
+
+// The spacing the tessellator runs with (pow2 runs as equal).
+Spacing tessellatorSpacing(Spacing s);
+
+// Segment count of one edge for a level the tessellator receives, under its spacing (equal,
+// fractional_odd, fractional_even): the level clamped to [1, max] (odd: [1, max-1]; even:
+// [2, max]) and rounded up to an integer (odd: the next odd, even: the next even). 0 when the
+// level culls the patch (<= 0 or NaN; outer levels only). `maxLevel` is the device's
+// maxTessellationGenerationLevel.
+int segmentCount(float level, Spacing tessellatorSpacing, float maxLevel = 64.0f);
+
+struct DomainCounts {
+    bool culled = false;      // an outer level <= 0 or NaN: the patch is discarded
+    uint64_t vertices = 0;    // distinct domain points = evaluation shader invocations
+    uint64_t primitives = 0;  // triangles (quad, triangle) or line segments (isoline)
+    // Segment counts the tessellator used: outer edges, then inner (quad: 2, triangle: 1).
+    std::array<int, 4> outerSegments{};
+    std::array<int, 2> innerSegments{};
+};
+
+// What the tessellator produces for one patch with these levels and partitioning (pow2 included:
+// it is applied as the control shader does).
+DomainCounts expectedDomainCounts(DomainKind kind, const DomainLevels& levels, Spacing spacing, float maxLevel = 64.0f);
+
+}  // namespace pw

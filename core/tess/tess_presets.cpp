@@ -1,0 +1,112 @@
+#include "core/tess/tess_presets.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace pw {
+
+namespace {
+
+std::string levelList(const float* v, int n, const char* sep) {
+    std::string s;
+    for (int i = 0; i < n; ++i) {
+        char buf[16];
+        std::snprintf(buf, sizeof buf, "%g", double(v[i]));
+        s += (i ? sep : "") + std::string(buf);
+    }
+    return s;
+}
+
+void nameIt(TessPreset& p, const float* outer, int nOuter, const float* inner, int nInner) {
+    const std::string kind(domainName(p.kind));
+    p.name = kind + "-" + levelList(outer, nOuter, "_") + "-" + levelList(inner, nInner, "_");
+    p.label = kind + " {" + levelList(outer, nOuter, ",") + " | " + levelList(inner, nInner, ",") + "}";
+    if (p.spacing != Spacing::Equal) {
+        p.name += "-" + std::string(spacingName(p.spacing));
+        p.label += " " + std::string(spacingName(p.spacing));
+    }
+}
+
+TessPreset quad(std::array<float, 4> o, std::array<float, 2> in, const char* note) {
+    TessPreset p;
+    p.kind = DomainKind::Quad;
+    p.levels = {o, in};
+    nameIt(p, o.data(), 4, in.data(), 2);
+    p.note = note;
+    return p;
+}
+
+TessPreset tri(std::array<float, 3> o, float in, Spacing s, const char* note) {
+    TessPreset p;
+    p.kind = DomainKind::Triangle;
+    p.levels = {{o[0], o[1], o[2], 0.0f}, {in, 0.0f}};
+    p.spacing = s;
+    nameIt(p, o.data(), 3, &in, 1);
+    p.note = note;
+    return p;
+}
+
+}  // namespace
+
+const std::vector<TessPreset>& tessPresets() {
+    static const std::vector<TessPreset> presets = {
+        quad({4, 4, 4, 4}, {4, 4}, "uniform: every edge and the interior split in four"),
+        quad({1, 2, 3, 4}, {4, 4}, "each edge its own level; the interior stays 4 x 4"),
+        quad({2, 2, 4, 4}, {2, 4}, "different inner levels along u and v"),
+        quad({4, 4, 4, 4}, {3, 3}, "inner 3 inside outer 4: the transition ring absorbs the difference"),
+        quad({3, 3, 3, 3}, {3, 3}, "odd uniform level"),
+        tri({4, 4, 4}, 4, Spacing::Equal, "uniform triangle: concentric rings"),
+        tri({1, 2, 3}, 4, Spacing::Equal, "each edge its own level"),
+        tri({6, 6, 6}, 3, Spacing::Equal, "fine edges around a coarse interior"),
+        tri({6, 12, 3}, 1, Spacing::Equal, "inner 1: no interior ring, edges fan to the centre"),
+        tri({6, 12, 3}, 2, Spacing::Equal, "inner 2: a single centre vertex"),
+        tri({3, 3, 3}, 3, Spacing::Equal, "odd uniform level: a small triangle in the middle"),
+        tri({4.9f, 4.5f, 4.1f}, 4.4f, Spacing::Equal, "fractional factors under integer spacing: all round up to 5"),
+        tri({4.9f, 4.5f, 4.1f}, 4.4f, Spacing::FractionalOdd,
+            "the same factors under fractional_odd: 5 segments, two of them shortened by the fraction"),
+    };
+    return presets;
+}
+
+const TessPreset* findTessPreset(std::string_view name) {
+    for (const TessPreset& p : tessPresets())
+        if (p.name == name) return &p;
+    return nullptr;
+}
+
+Document notesBezierPatch() {
+    // The notes' 16 control points (x, y, z with y up), row by row from z = +15 to z = -15.
+    static const double pts[16][3] = {
+        {-10, -10, 15}, {-5, 0, 15},  {5, 0, 15},  {10, 0, 15},   //
+        {-15, 0, 5},    {-5, 0, 5},   {5, 20, 5},  {15, 0, 5},    //
+        {-15, 0, -5},   {-5, 0, -5},  {5, 0, -5},  {15, 0, -5},   //
+        {-10, 10, -15}, {-5, 0, -15}, {5, 0, -15}, {25, 10, -15},
+    };
+    Document d;
+    d.name = "Bézier patch of the notes";
+    Patch p;
+    for (int i = 0; i < 16; ++i) {
+        d.points.push_back(Vec3(pts[i][0], pts[i][1], pts[i][2]));
+        p.idx[size_t(i)] = uint32_t(i);
+    }
+    p.name = "notes patch";
+    d.patches.push_back(p);
+    d.tess.outer = {25, 25, 25, 25};
+    d.tess.inner = {25, 25};
+    d.display.showGrid = true;
+    d.display.showWireframe = true;
+    return d;
+}
+
+float notesDistanceLevel(float distance, float d0, float d1) {
+    return 64.0f * std::clamp((d1 - distance) / (d1 - d0), 0.0f, 1.0f);
+}
+
+void applyNotesDistanceFormula(TessSettings& t) {
+    t.adaptive = AdaptiveMode::Distance;
+    t.distanceNear = 20.0f;
+    t.distanceFar = 100.0f;
+    t.maxLevel = 64.0f;
+}
+
+}  // namespace pw

@@ -1,0 +1,38 @@
+// Teaching presets: the tessellation factor sets the lecture notes show (shared/seeds: quad and
+// triangle domains, the fractional example under integer and fractional_odd spacing), the notes'
+// bicubic Bézier patch with its 16 control points, and their distance-based level formula.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/model/document.hpp"
+#include "core/tess/tess_domain.hpp"
+
+namespace pw {
+
+struct TessPreset {
+    std::string name;         // id for the command line: "quad-1_2_3_4-4_4", "tri-4.9_4.5_4.1-4.4-fractional_odd"
+    std::string label;        // as the notes write it: "quad {1,2,3,4 | 4,4}"
+    DomainKind kind = DomainKind::Quad;
+    DomainLevels levels;
+    Spacing spacing = Spacing::Equal;
+    std::string note;         // one line for the tooltip / figure caption
+};
+
+// Every factor-set preset, quad first, then triangle, then the fractional example (twice: integer
+// and fractional_odd).
+const std::vector<TessPreset>& tessPresets();
+const TessPreset* findTessPreset(std::string_view name);
+
+// The bicubic Bézier patch of the notes (16 control points, rows z = +15 .. -15) as a document,
+// tessellated at 25 like the notes' hull shader, viewed from above at an angle.
+Document notesBezierPatch();
+
+// The notes' distance formula, level = 64 * saturate((d1 - d) / (d1 - d0)) with d0 = 20 and d1 =
+// 100, applied to `doc`'s settings (adaptive distance mode). The formula itself, for a distance:
+float notesDistanceLevel(float distance, float d0 = 20.0f, float d1 = 100.0f);
+void applyNotesDistanceFormula(TessSettings& t);
+
+}  // namespace pw

@@ -1,0 +1,108 @@
+#include "render/domain/domain_labels.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace pw::render {
+
+std::string formatLevel(float level) {
+    if (!std::isfinite(level)) return "nan";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.2f", double(level));
+    std::string s = buf;
+    while (!s.empty() && s.back() == '0') s.pop_back();
+    if (!s.empty() && s.back() == '.') s.pop_back();
+    return s;
+}
+
+float domainLabelMargin(float textPixels) { return std::ceil(textPixels * 4.5f); }
+
+namespace {
+
+// "4.5 → 5" where the partitioning rounds the level, else "4.5".
+std::string edgeText(float level, Spacing spacing, bool integerSpacing, float maxLevel) {
+    const float l = controlShaderLevel(level, spacing);
+    const int seg = segmentCount(l, integerSpacing ? Spacing::Equal : tessellatorSpacing(spacing), maxLevel);
+    std::string t = formatLevel(level);
+    if (float(seg) != level) t += " \u2192 " + std::to_string(seg);
+    return t;
+}
+
+}  // namespace
+
+std::vector<DomainLabel> domainLabels(const DomainViewOptions& o, uint64_t vertices, uint64_t primitives, float textPixels,
+                                      const std::function<float(const std::string&)>& widthOf) {
+    std::vector<DomainLabel> out;
+    const DomainPlacement at = placeDomain(o);
+    const float gap = std::ceil(textPixels * 0.45f);
+    const float maxLevel = 64.0f;
+    const auto& L = o.levels;
+    const auto edge = [&](float dx, float dy, float ax, float ay, std::string text) {
+        const auto p = at.toPixels(dx, dy);
+        DomainLabel l;
+        l.x = p[0] + (ax == 1.0f ? -gap : ax == 0.0f ? gap : 0.0f);
+        l.y = p[1] + (ay == 1.0f ? -gap : ay == 0.0f ? gap : 0.0f);
+        l.ax = ax;
+        l.ay = ay;
+        l.text = std::move(text);
+        out.push_back(std::move(l));
+    };
+    std::string inner;
+    const char* primitiveWord = "triangles";
+    switch (o.kind) {
+        case DomainKind::Quad:
+            // outer[0] u = 0 (left), [1] v = 0 (bottom), [2] u = 1 (right), [3] v = 1 (top).
+            edge(0.0f, 0.5f, 1.0f, 0.5f, edgeText(L.outer[0], o.spacing, false, maxLevel));
+            edge(0.5f, 0.0f, 0.5f, 0.0f, edgeText(L.outer[1], o.spacing, false, maxLevel));
+            edge(1.0f, 0.5f, 0.0f, 0.5f, edgeText(L.outer[2], o.spacing, false, maxLevel));
+            edge(0.5f, 1.0f, 0.5f, 1.0f, edgeText(L.outer[3], o.spacing, false, maxLevel));
+            inner = "inner " + formatLevel(L.inner[0]) + ", " + formatLevel(L.inner[1]);
+            break;
+        case DomainKind::Triangle: {
+            // Corners (shaders/domain.tese): u = 1 bottom left, v = 1 bottom right, w = 1 top. Edge
+            // u = 0 is the right side, v = 0 the left side, w = 0 the bottom.
+            const float h = 0.8660254f;
+            edge(0.75f, 0.5f * h, 0.0f, 0.5f, edgeText(L.outer[0], o.spacing, false, maxLevel));
+            edge(0.25f, 0.5f * h, 1.0f, 0.5f, edgeText(L.outer[1], o.spacing, false, maxLevel));
+            edge(0.5f, 0.0f, 0.5f, 0.0f, edgeText(L.outer[2], o.spacing, false, maxLevel));
+            inner = "inner " + formatLevel(L.inner[0]);
+            break;
+        }
+        case DomainKind::Isoline:
+            // outer[0]: how many lines (always integer spacing); outer[1]: segments per line.
+            edge(0.0f, 0.5f, 1.0f, 0.5f, edgeText(L.outer[0], o.spacing, true, maxLevel) + " lines");
+            edge(0.5f, 0.0f, 0.5f, 0.0f, edgeText(L.outer[1], o.spacing, false, maxLevel) + " segments");
+            primitiveWord = "segments";
+            break;
+    }
+    // Caption under the domain (below the bottom edge label), title above it.
+    const auto bottom = at.toPixels(0.5f, 0.0f);
+    DomainLabel cap;
+    cap.role = DomainLabel::Role::Caption;
+    cap.x = bottom[0];
+    cap.y = bottom[1] + gap + textPixels * 1.25f;
+    cap.ax = 0.5f;
+    const std::string settings = (inner.empty() ? "" : inner + "  \u00b7  ") + std::string(spacingName(o.spacing));
+    const std::string counts = std::to_string(vertices) + " vertices, " + std::to_string(primitives) + " " + primitiveWord;
+    cap.text = settings + "  \u00b7  " + counts;
+    if (widthOf && widthOf(cap.text) > o.rect[2] - textPixels) {  // two lines where one does not fit the pane
+        cap.text = settings;
+        out.push_back(cap);
+        cap.y += textPixels * 1.2f;
+        cap.text = counts;
+    }
+    out.push_back(cap);
+    const float domainHeight = o.kind == DomainKind::Triangle ? 0.8660254f : 1.0f;
+    const auto top = at.toPixels(0.5f, domainHeight);
+    DomainLabel title;
+    title.role = DomainLabel::Role::Title;
+    title.x = top[0];
+    title.y = top[1] - gap - textPixels * 1.25f;
+    title.ax = 0.5f;
+    title.ay = 1.0f;
+    title.text = std::string(domainName(o.kind) == "tri" ? "triangle" : domainName(o.kind)) + " domain";
+    out.push_back(title);
+    return out;
+}
+
+}  // namespace pw::render

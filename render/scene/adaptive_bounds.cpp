@@ -1,0 +1,42 @@
+#include "render/scene/adaptive_bounds.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+
+#include "core/gpu/patch_math.h"
+#include "core/tess/tess_levels.hpp"
+
+namespace pw::render {
+
+std::vector<uint8_t> adaptiveLevelBounds(const SurfaceScene& s, const TessSettings& tess, const ViewMatrices& vm,
+                                         float viewportW, float viewportH, float maxLevel) {
+    std::vector<uint8_t> out(s.windowCount, uint8_t(roundedSegments(maxLevel, tess.spacing)));
+    if (tess.adaptive == AdaptiveMode::None) return out;
+    std::vector<uint32_t> kind(s.windowCount, 0);
+    for (const BasisRun& r : s.runs)
+        for (uint32_t w = r.first; w < r.first + r.count; ++w) kind[w] = r.basisKind;
+    const glm::vec2 viewport(viewportW, viewportH);
+    for (uint32_t w = 0; w < s.windowCount; ++w) {
+        const uint32_t* idx = &s.cpuIndices[size_t(w) * 16];
+        const int depth = kind[w] == gpu::kBasisBezier ? 0 : 1;  // as the control shader's edgeSlot
+        float level = 1.0f;
+        for (int e = 0; e < 4; ++e) {
+            uint32_t pool[4];
+            for (int k = 0; k < 4; ++k) pool[k] = idx[gpu::quadEdgeSlot(e, k, depth)];
+            const bool rev = gpu::edgeReversed(pool[0], pool[1], pool[2], pool[3]);
+            glm::vec3 p[4];
+            for (int k = 0; k < 4; ++k) p[k] = s.cpuPoints[pool[rev ? 3 - k : k]];
+            const float l = gpu::adaptiveEdgeLevel(p[0], p[1], p[2], p[3], uint32_t(tess.adaptive), maxLevel, vm.eye,
+                                                   tess.distanceNear, tess.distanceFar, vm.viewProj, viewport,
+                                                   tess.targetPixels);
+            level = std::max(level, std::clamp(l, 1.0f, maxLevel));
+        }
+        level = std::max(level, s.overrideLevel[w]);
+        out[w] = uint8_t(std::min(64, roundedSegments(level, tess.spacing) + 1));
+    }
+    return out;
+}
+
+}  // namespace pw::render

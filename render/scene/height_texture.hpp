@@ -1,0 +1,19 @@
+// The height map on the GPU (DESIGN §11): one R16_UNORM image sampled with linear filtering and
+// clamp-to-edge (core/model/height_map.hpp samples the same way on the CPU), bound at binding 3. A 1 x 1
+// zero texture stands in when there is no map, so the descriptor is always valid.
+#pragma once
+
+#include "core/model/height_map.hpp"
+#include "render/vk/buffers.hpp"
+
+namespace pw::render {
+
+struct HeightTexture {
+    Image image;
+    OwnedSampler sampler;
+    uint32_t width = 0, height = 0;
+};
+
+HeightTexture uploadHeightTexture(Device& dev, const HeightMap* map);
+
+}  // namespace pw::render

@@ -1,0 +1,443 @@
+#include "render/scene/renderer.hpp"
+#include "render/scene/renderer_impl.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include "render/scene/adaptive_bounds.hpp"
+#include "core/eval/displacement.hpp"
+#include "core/base/point_upload.hpp"
+#include "render/vk/buffers.hpp"
+#include "render/vk/vk_owned.hpp"
+#include "core/model/camera_math.hpp"
+#include "core/gpu/gpu_interface.h"
+#include "render/scene/overlays.hpp"
+#include "render/scene/plain_mesh.hpp"
+#include "render/scene/shader_variants.hpp"
+#include "render/scene/surface_scene.hpp"
+#include "core/tess/tess_levels.hpp"
+#include "render/scene/triangle_draws.hpp"
+
+namespace pw::render {
+
+RenderOptions optionsFromDocument(const Document& doc) {
+    RenderOptions o;
+    o.tess = doc.tess;
+    o.display = doc.display;
+    o.camera = doc.camera;
+    o.displacementScale = doc.displacement.scale;
+    o.displacementBias = doc.displacement.bias;
+    return o;
+}
+
+VkRect2D paneRect(const RenderOptions& opt, VkExtent2D extent) {
+    const auto& r = opt.pane;
+    const int x0 = std::clamp(r[0], 0, int(extent.width)), y0 = std::clamp(r[1], 0, int(extent.height));
+    const int x1 = std::clamp(r[0] + std::max(r[2], 0), x0, int(extent.width));
+    const int y1 = std::clamp(r[1] + std::max(r[3], 0), y0, int(extent.height));
+    if (x1 - x0 < 1 || y1 - y0 < 1) return {{0, 0}, extent};
+    return {{x0, y0}, {uint32_t(x1 - x0), uint32_t(y1 - y0)}};
+}
+
+namespace {
+
+void writeDescriptors(Device& dev, VkDescriptorSet set, const Buffer& ubo, const Buffer& patches, const Buffer& counters,
+                      const HeightTexture& height) {
+    VkDescriptorBufferInfo infos[3] = {{ubo.buffer, 0, VK_WHOLE_SIZE},
+                                       {patches.buffer, 0, VK_WHOLE_SIZE},
+                                       {counters.buffer, 0, VK_WHOLE_SIZE}};
+    VkWriteDescriptorSet w[4];
+    for (uint32_t i = 0; i < 3; ++i) {
+        w[i] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        w[i].dstSet = set;
+        w[i].dstBinding = i;
+        w[i].descriptorCount = 1;
+        w[i].descriptorType = i == 0 ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        w[i].pBufferInfo = &infos[i];
+    }
+    const VkDescriptorImageInfo image{height.sampler, height.image.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    w[3] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    w[3].dstSet = set;
+    w[3].dstBinding = 3;
+    w[3].descriptorCount = 1;
+    w[3].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    w[3].pImageInfo = &image;
+    vkUpdateDescriptorSets(dev.device(), 4, w, 0, nullptr);
+}
+
+}  // namespace
+
+Renderer::Renderer(Device& dev, RenderTarget& target)
+    : dev_(dev), target_(target), impl_(std::make_unique<Impl>()) {
+    pipes_ = createPipelines(dev, target.colorFormat(), target.depthFormat(), target.samples());
+    Impl& m = *impl_;
+    m.frameUbo = createBuffer(dev, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::HostWritten);
+    m.counters = createBuffer(dev, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
+    std::memset(m.counters.mapped, 0, 16);
+    m.scene.patchData = uploadStatic(dev, std::vector<gpu::PatchData>(1), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+
+    m.height = uploadHeightTexture(dev, nullptr);
+    VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2},
+                                     {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
+    VkDescriptorPoolCreateInfo dp{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    dp.maxSets = 1;
+    dp.poolSizeCount = 3;
+    dp.pPoolSizes = sizes;
+    VK_CHECK(vkCreateDescriptorPool(dev.device(), &dp, nullptr, m.descPool.replace(dev.device())));
+    VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    ai.descriptorPool = m.descPool;
+    ai.descriptorSetCount = 1;
+    ai.pSetLayouts = &pipes_.setLayout;
+    VK_CHECK(vkAllocateDescriptorSets(dev.device(), &ai, &m.set));
+    writeDescriptors(dev, m.set, m.frameUbo, m.scene.patchData, m.counters, m.height);
+
+    m.queries = std::make_unique<FrameQueries>(dev);
+    m.cmd = OwnedCommandBuffer(dev.device(), dev.commandPool());
+    VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VK_CHECK(vkCreateFence(dev.device(), &fci, nullptr, m.fence.replace(dev.device())));
+}
+
+Renderer::~Renderer() {
+    vkDeviceWaitIdle(dev_.device());
+    impl_.reset();  // buffers, queries, pool, fence: each frees itself; then the pipelines
+}
+
+void Renderer::setDocument(const Document& doc, std::shared_ptr<const HeightMap> map) {
+    vkDeviceWaitIdle(dev_.device());
+    Impl& m = *impl_;
+    const DisplacementSettings& ds = doc.displacement;
+    if (!ds.active() || (map && map->empty())) map.reset();
+    if (map != m.map) {
+        m.height = uploadHeightTexture(dev_, map.get());
+        m.map = map;
+    }
+    m.displaced = bool(m.map);
+    m.scene = uploadSurfaceScene(dev_, doc, m.map.get());
+    m.overlays = uploadOverlayScene(dev_, doc);
+    m.joins = doc.joins;
+    const std::array<double, 4> rect = planarRect(doc);
+    m.displace = {0.0f, 0.0f, ds.mapping == DisplacementMapping::Planar ? 1.0f : 0.0f, doc.camera.zUp ? 1.0f : 0.0f};
+    m.planar = {float(rect[0]), float(rect[1]), float(1.0 / rect[2]), float(1.0 / rect[3])};
+    if (m.displaced) ensureDisplacedPipelines(dev_, pipes_);
+    writeDescriptors(dev_, m.set, m.frameUbo, m.scene.patchData, m.counters, m.height);
+    modelSize_ = pw::modelSize(doc);
+}
+
+void Renderer::setPlainMesh(const TriangleMesh& mesh) {
+    vkDeviceWaitIdle(dev_.device());
+    impl_->mesh = uploadPlainMesh(dev_, mesh);
+}
+
+void Renderer::updatePoints(const std::vector<Vec3>& points, const std::vector<uint32_t>& changed) {
+    SurfaceScene& s = impl_->scene;
+    std::vector<uint32_t> valid;
+    valid.reserve(changed.size());
+    for (uint32_t i : changed)
+        if (i < s.pointCount && i < points.size()) valid.push_back(i);
+    writePoolPositions(points, valid, static_cast<float*>(s.pool.mapped));  // the weights stay: a drag moves points only
+    for (uint32_t i : valid)
+        if (i < s.cpuPoints.size()) s.cpuPoints[i] = glm::vec3(points[i]);
+}
+
+Renderer::FramePlan Renderer::prepareFrame(const RenderOptions& opt, VkRect2D area) {
+    Impl& m = *impl_;
+    const VkExtent2D ext = area.extent;
+    const TessSettings& ts = opt.tess;
+    const DisplaySettings& ds = opt.display;
+    FramePlan plan;
+    const ViewMatrices vm = viewMatrices(opt.camera, double(ext.width) / double(ext.height));
+    gpu::FrameUniforms fu{};
+    fu.viewProj = vm.viewProj;
+    fu.view = vm.view;
+    fu.eye = glm::vec4(vm.eye, 1.0f);
+    const glm::vec3 light(ds.lightDir[0], ds.lightDir[1], ds.lightDir[2]);
+    const float lightLen = glm::length(light);
+    const glm::vec3 lightUnit = lightLen > 1e-12f && std::isfinite(lightLen) ? light / lightLen : glm::vec3(0.0f, 0.0f, 1.0f);
+    fu.lightDir = glm::vec4(lightUnit, ds.normalLength);
+    // View rays: inverse(viewProj) * (x, y, 1, 1) is linear in the NDC x and y, and so is its
+    // direction from the eye, h.xyz - eye * h.w. Orthographic rays are all the view direction.
+    if (opt.camera.orthographic) {
+        fu.rayX = fu.rayY = glm::vec4(0.0f);
+        fu.rayZ = glm::vec4(vm.forward, 0.0f);
+    } else {
+        const glm::mat4 inv = glm::inverse(vm.viewProj);
+        auto ray = [&](const glm::vec4& h) { return glm::vec4(glm::vec3(h) - vm.eye * h.w, 0.0f); };
+        fu.rayX = ray(inv[0]);
+        fu.rayY = ray(inv[1]);
+        fu.rayZ = ray(inv[2] + inv[3]);
+    }
+    fu.viewport = {float(ext.width), float(ext.height), float(area.offset.x), float(area.offset.y)};
+    fu.outer = {ts.outer[0], ts.outer[1], ts.outer[2], ts.outer[3]};
+    const float maxLevel = std::clamp(std::min(ts.maxLevel, float(dev_.caps().maxTessLevel)), 1.0f, 64.0f);
+    fu.inner = {ts.inner[0], ts.inner[1], maxLevel, ts.targetPixels};
+    fu.dist = {ts.distanceNear, ts.distanceFar, float(4.0 / std::max(modelSize_, 1e-9)), 12.0f};
+    fu.dist.z = float(std::max(modelSize_, 1e-9) / 4.0);
+    fu.modes = {uint32_t(ts.spacing), uint32_t(ts.adaptive),
+                (ts.cullBackfaces ? gpu::kCullBackFaces : 0u) | (ts.cullOffscreen ? gpu::kCullOffscreen : 0u), uint32_t(ds.shading)};
+    fu.sel = {opt.hoveredPoint >= 0 ? uint32_t(opt.hoveredPoint) : gpu::kNoPoint,
+              opt.selectedPoint >= 0 ? uint32_t(opt.selectedPoint) : gpu::kNoPoint, m.scene.pointCount, 0u};
+    fu.isoline = {ts.isolineLevels[0], ts.isolineLevels[1], 0.0f, 0.0f};
+    fu.displace = {opt.displacementScale, opt.displacementBias, m.displace.z, m.displace.w};
+    fu.planar = m.planar;
+    fu.comb = {float(combToothLength(ds, modelSize_)), float(std::clamp(ds.combDensity, 2, 21)), 5.0f, 0.0f};
+    std::memcpy(m.frameUbo.mapped, &fu, sizeof(fu));
+    plan.vm = vm;
+    plan.variant = spacingVariant(ts.spacing);
+    plan.levels = levelsVariant(ts);
+    plan.maxLevel = maxLevel;
+    plan.budget = dev_.drawVertexBudget();
+    plan.perDraw = patchesPerDraw(maxSegments(ts, m.scene.overrideMax, maxLevel), plan.budget);
+    // (Displaced windows batch by the worst case: the map's detail may raise any edge to the maximum.)
+    if (ts.adaptive != AdaptiveMode::None && !m.displaced)
+        plan.levelBounds = adaptiveLevelBounds(m.scene, ts, vm, float(ext.width), float(ext.height), maxLevel);
+    return plan;
+}
+
+FrameStats Renderer::render(const RenderOptions& opt) {
+    Impl& m = *impl_;
+    FrameStats stats;
+    const auto t0 = std::chrono::steady_clock::now();
+    const VkRect2D area = paneRect(opt, target_.extent());
+    const VkExtent2D ext = area.extent;  // the pane's size: aspect, pixel sizes
+    const TessSettings& ts = opt.tess;
+    const DisplaySettings& ds = opt.display;
+
+    // Step 1: frame uniforms, shader variants, batching.
+    const FramePlan plan = prepareFrame(opt, area);
+
+    // Step 2: record.
+    VkCommandBuffer cmd = m.cmd;
+    VK_CHECK(vkResetCommandBuffer(cmd, 0));
+    VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    VK_CHECK(vkBeginCommandBuffer(cmd, &bi));
+    m.queries->reset(cmd);
+    vkCmdFillBuffer(cmd, m.counters.buffer, 0, 16, 0);
+    VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    mb.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    mb.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT, 0, 1, &mb, 0,
+                         nullptr, 0, nullptr);
+    m.queries->timestampBegin(cmd);
+    m.queries->statsBegin(cmd);
+    const std::array<float, 4> background{ds.background[0], ds.background[1], ds.background[2], 1.0f};
+    VkViewport viewport{float(area.offset.x), float(area.offset.y), float(ext.width), float(ext.height), 0.0f, 1.0f};
+    const VkRect2D scissor = area;
+    if (opt.keepTarget) {  // a later pane: the others stay, this rectangle starts from the background
+        target_.resumeRendering(cmd);
+        VkClearAttachment clears[2] = {{VK_IMAGE_ASPECT_COLOR_BIT, 0, {}}, {VK_IMAGE_ASPECT_DEPTH_BIT, 0, {}}};
+        clears[0].clearValue.color = {{background[0], background[1], background[2], background[3]}};
+        clears[1].clearValue.depthStencil = {1.0f, 0};
+        const VkClearRect rect{area, 0, 1};
+        vkCmdClearAttachments(cmd, 2, clears, 1, &rect);
+    } else {
+        target_.beginRendering(cmd, background);
+    }
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.layout, 0, 1, &m.set, 0, nullptr);
+
+    const int variant = plan.variant;
+    const LevelsVariant levels = plan.levels;
+    const VaryingsVariant varyings = varyingsVariant(ds.shading);
+    const uint32_t budget = plan.budget, perDraw = plan.perDraw;
+    const std::vector<uint8_t>* bounds = plan.bounds();
+    gpu::DrawPush push;
+    const SurfacePipelines& fam = pipes_.tess[m.displaced ? 1 : 0];
+
+    // Step 3: the surface (statistics cover this pass only).
+    if (opt.plainMesh) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.mesh[size_t(varyings)]);
+        push.drawMode = gpu::kDrawPlainMesh;
+        vkCmdPushConstants(cmd, pipes_.layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
+        recordPlainMesh(cmd, m.mesh);
+        stats.draws = m.mesh.indexCount ? 1 : 0;
+    } else {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fam.surface[surfaceIndex(variant, levels, varyings)]);
+        stats.draws = recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, push, bounds, budget);
+        stats.patches = m.scene.windowCount;
+        if (m.scene.triangleCount) {  // Bézier triangles after the windows, inside the same statistics
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fam.triSurface[surfaceIndex(variant, levels, varyings)]);
+            stats.draws += recordTriangleDraws(cmd, pipes_.layout, m.scene, perDraw, push);
+            stats.patches += m.scene.triangleCount;
+        }
+    }
+    // Step 4: overlays, after the statistics query ends (outside rendering, see stats.hpp).
+    // Curves count as overlays: the statistics are the surface's triangles.
+    const bool ground = opt.groundGridStep > 0.0 && std::isfinite(opt.groundGridStep);
+    const bool anyOverlay =
+        ds.showWireframe || ds.showNormals || ds.showBoundaries || ds.showGrid || ds.showIsocurves || ds.showCombs || m.scene.curveCount || ground;
+    if (anyOverlay) {
+        target_.pauseRendering(cmd);
+        m.queries->statsEnd(cmd);
+        target_.resumeRendering(cmd);
+        vkCmdSetViewport(cmd, 0, 1, &viewport);
+        vkCmdSetScissor(cmd, 0, 1, &scissor);
+        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.layout, 0, 1, &m.set, 0, nullptr);
+    }
+    const VkDeviceSize zero = 0;
+    if (ground) {  // behind the surface where the surface is nearer (depth test, no depth write)
+        if (!m.ground.buffer || m.groundStep != opt.groundGridStep || m.groundZUp != opt.camera.zUp) {
+            const std::vector<float> v = groundGridVertices(opt.groundGridStep, opt.camera.zUp);
+            m.ground = uploadStatic(dev_, v, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);  // no frame reads the old one: render() waits for its own submission
+            m.groundVertexCount = uint32_t(v.size() / 7);
+            m.groundStep = opt.groundGridStep;
+            m.groundZUp = opt.camera.zUp;
+        }
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.groundLines);
+        vkCmdPushConstants(cmd, pipes_.layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
+        vkCmdBindVertexBuffers(cmd, 0, 1, m.ground.buffer.ptr(), &zero);
+        vkCmdDraw(cmd, m.groundVertexCount, 1, 0, 0);
+        ++stats.draws;
+    }
+    if (ds.showWireframe && !opt.plainMesh) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fam.wire[overlayIndex(variant, levels)]);
+        gpu::DrawPush wp;
+        wp.drawMode = gpu::kDrawFlatColour;
+        wp.color = {0.08f, 0.09f, 0.12f, 1.0f};
+        stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, wp, bounds, budget);
+        if (m.scene.triangleCount) {
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fam.triWire[overlayIndex(variant, levels)]);
+            stats.draws += recordTriangleDraws(cmd, pipes_.layout, m.scene, perDraw, wp);
+        }
+    }
+    if (ds.showNormals && !opt.plainMesh && fam.normals[overlayIndex(variant, levels)]) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fam.normals[overlayIndex(variant, levels)]);
+        gpu::DrawPush np;
+        np.drawMode = gpu::kDrawFlatColour;  // an overlay: the control shader counts culled patches once, in the surface pass
+        np.color = {0.2f, 0.9f, 1.0f, 1.0f};
+        stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, np, bounds, budget);
+        if (m.scene.triangleCount && fam.triNormals[overlayIndex(variant, levels)]) {
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fam.triNormals[overlayIndex(variant, levels)]);
+            stats.draws += recordTriangleDraws(cmd, pipes_.layout, m.scene, perDraw, np);
+        }
+    }
+    // The isoline domain: isoparametric curves of every window (two passes: along u, along v), then
+    // the document's Bézier curves.
+    if (ds.showIsocurves && !opt.plainMesh && m.scene.windowCount) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.isocurves[size_t(variant)]);
+        gpu::DrawPush ip;
+        ip.color = {0.35f, 0.95f, 0.45f, 1.0f};
+        // A window draws lines x (segments + 1) <= 64 x 65 evaluation vertices.
+        const uint32_t lines = uint32_t(std::ceil(std::clamp(ts.isolineLevels[0], 1.0f, 64.0f)));
+        const uint32_t perIso = budget == 0 ? UINT32_MAX : std::max(1u, budget / (65u * lines));
+        for (uint32_t dir : {0u, 1u}) {
+            ip.isoDirection = dir;
+            stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perIso, ip, nullptr, budget);
+        }
+    }
+    if (m.scene.curveCount) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.curves[size_t(variant)]);
+        gpu::DrawPush cp;
+        cp.color = {0.95f, 0.35f, 0.25f, 1.0f};
+        stats.draws += recordCurveDraws(cmd, pipes_.layout, m.scene, cp, budget);
+    }
+    // Curvature combs: teeth, then the envelope through their tips, on every curve, on the isocurve
+    // overlay's lines, and on the five isocurves crossing the selected join on either side.
+    if (ds.showCombs && !opt.plainMesh) {
+        gpu::DrawPush kp;
+        const uint32_t lines = uint32_t(std::ceil(std::clamp(ts.isolineLevels[0], 1.0f, 64.0f)));
+        const uint32_t perIso = budget == 0 ? UINT32_MAX : std::max(1u, budget / (65u * lines));
+        const Join* graph = opt.combJoin >= 0 && size_t(opt.combJoin) < m.joins.size() ? &m.joins[size_t(opt.combJoin)] : nullptr;
+        for (uint32_t mode : {gpu::kDrawCombTeeth, gpu::kDrawCombEnvelope}) {
+            kp.drawMode = mode;
+            kp.color = mode == gpu::kDrawCombTeeth ? glm::vec4(0.95f, 0.5f, 0.85f, 1.0f) : glm::vec4(1.0f, 0.8f, 0.95f, 1.0f);
+            if (m.scene.curveCount) {
+                vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.combs);
+                stats.draws += recordCurveDraws(cmd, pipes_.layout, m.scene, kp, budget);
+            }
+            if ((ds.showIsocurves || graph) && m.scene.windowCount) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.isoCombs);
+            if (ds.showIsocurves && m.scene.windowCount)
+                for (uint32_t dir : {0u, 1u}) {
+                    kp.isoDirection = dir;
+                    stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perIso, kp, nullptr, budget);
+                }
+            if (graph) {  // the isocurves across the seam: along u for a u0/u1 edge, along v for v0/v1
+                const auto across = [](Edge e) { return e == Edge::U0 || e == Edge::U1 ? 0u : 1u; };
+                kp.isoDirection = across(graph->edgeA) | 2u;
+                stats.draws += recordWindowDraw(cmd, pipes_.layout, m.scene, graph->patchA, kp);
+                kp.isoDirection = across(graph->edgeB) | 2u;
+                stats.draws += recordWindowDraw(cmd, pipes_.layout, m.scene, graph->patchB, kp);
+            }
+        }
+    }
+    if (ds.showBoundaries && m.overlays.boundaryVertexCount) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.colorLines);
+        vkCmdPushConstants(cmd, pipes_.layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
+        vkCmdBindVertexBuffers(cmd, 0, 1, m.overlays.boundaryVerts.buffer.ptr(), &zero);
+        vkCmdDraw(cmd, m.overlays.boundaryVertexCount, 1, 0, 0);
+        ++stats.draws;
+    }
+    if (ds.showGrid && m.scene.pointCount) {
+        gpu::DrawPush gp;
+        gp.color = {0.95f, 0.75f, 0.2f, 1.0f};
+        vkCmdBindVertexBuffers(cmd, 0, 1, m.scene.pool.buffer.ptr(), &zero);
+        if (m.overlays.gridIndexCount) {
+            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.gridLines);
+            vkCmdPushConstants(cmd, pipes_.layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(gp), &gp);
+            vkCmdBindIndexBuffer(cmd, m.overlays.gridIndices.buffer, 0, VK_INDEX_TYPE_UINT32);
+            vkCmdDrawIndexed(cmd, m.overlays.gridIndexCount, 1, 0, 0, 0);
+        }
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.gridPoints);
+        gp.drawMode = gpu::kDrawGridPoints;
+        gp.color = {0.1f, 0.1f, 0.1f, 1.0f};
+        vkCmdPushConstants(cmd, pipes_.layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(gp), &gp);
+        if (m.scene.shownPointCount) {  // only the points of shown items (gl_VertexIndex is still the pool index)
+            vkCmdBindIndexBuffer(cmd, m.scene.shownPoints.buffer, 0, VK_INDEX_TYPE_UINT32);
+            vkCmdDrawIndexed(cmd, m.scene.shownPointCount, 1, 0, 0, 0);
+        } else {
+            vkCmdDraw(cmd, m.scene.pointCount, 1, 0, 0);
+        }
+        stats.draws += 2;
+    }
+    target_.endRendering(cmd);
+    if (!anyOverlay) m.queries->statsEnd(cmd);
+    m.queries->timestampEnd(cmd);
+    VK_CHECK(vkEndCommandBuffer(cmd));
+
+    // Step 5: submit and wait.
+    const auto t1 = std::chrono::steady_clock::now();
+    submitAndWait(dev_, cmd, m.fence);
+    const auto t2 = std::chrono::steady_clock::now();
+    stats.wallMs = std::chrono::duration<double, std::milli>(t2 - t0).count();
+    stats.submitMs = std::chrono::duration<double, std::milli>(t2 - t1).count();
+
+    // Step 6: results.
+    m.queries->read(stats);
+    if (dev_.caps().storesAndAtomics) {
+        const auto* c = static_cast<const uint32_t*>(m.counters.mapped);
+        stats.patchesCulled = c[0];
+        stats.displacedEdges = c[1];
+        stats.displacementLevel = c[2];
+    }
+    return stats;
+}
+
+void Renderer::warmUp() {
+    RenderOptions o;
+    o.tess.outer = {2, 2, 2, 2};
+    o.tess.inner = {2, 2};
+    o.display.showGrid = o.display.showWireframe = o.display.showNormals = o.display.showBoundaries = o.display.showIsocurves = true;
+    for (Spacing s : {Spacing::Equal, Spacing::FractionalOdd, Spacing::FractionalEven})
+        for (bool culling : {false, true})                                      // both levels variants
+            for (ShadingMode shading : {ShadingMode::Lit, ShadingMode::PatchId}) {  // both varying sets
+                o.tess.spacing = s;
+                o.tess.cullBackfaces = o.tess.cullOffscreen = culling;
+                o.display.shading = shading;
+                render(o);
+            }
+    if (impl_->mesh.indexCount) {
+        o.plainMesh = true;
+        for (ShadingMode shading : {ShadingMode::Lit, ShadingMode::PatchId}) {
+            o.display.shading = shading;
+            render(o);
+        }
+    }
+}
+
+}  // namespace pw::render

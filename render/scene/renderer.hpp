@@ -1,0 +1,99 @@
+// The surface renderer: owns the pipelines, the document's GPU buffers, the frame uniforms, the
+// queries and a command buffer; renders one frame into a RenderTarget (submit and wait) and
+// returns its statistics.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "render/vk/device.hpp"
+#include "core/model/document.hpp"
+#include "core/model/height_map.hpp"
+#include "core/mesh/mesh_tessellate.hpp"
+#include "render/scene/pipelines.hpp"
+#include "render/targets/render_target.hpp"
+#include "render/vk/stats.hpp"
+
+namespace pw::render {
+
+struct RenderOptions {
+    TessSettings tess;
+    DisplaySettings display;  // shading, overlays (showGrid, showWireframe, showNormals, showBoundaries)
+    Camera camera;
+    int hoveredPoint = -1;
+    int selectedPoint = -1;
+    bool plainMesh = false;  // draw the uploaded CPU mesh instead of tessellating
+    // Comparison panes: draw into this rectangle of the target (x, y, width, height in pixels; a
+    // zero width or height means the whole target). The camera takes the rectangle's aspect, and
+    // screen-space levels its pixels.
+    std::array<int, 4> pane{0, 0, 0, 0};
+    // Keep what the target holds (earlier panes of this frame) and clear only the pane's rectangle;
+    // otherwise the whole target is cleared to the background first.
+    bool keepTarget = false;
+    // The editor's ground grid (translucent lines in the ground plane, hidden behind the surface):
+    // drawn when > 0, with lines this far apart (render/scene/overlays.hpp).
+    double groundGridStep = 0.0;
+    // The document's displacement scale and bias (live while a slider is dragged; the map, the
+    // mapping and the windows' own values come with setDocument).
+    float displacementScale = 0.0f, displacementBias = 0.0f;
+    // With display.showCombs: the join whose curvature graph is drawn (combs on the isocurves that
+    // cross it, both sides), -1 none.
+    int combJoin = -1;
+};
+
+// The pane rectangle `opt` draws into, clamped to a target of `extent` (the whole target when
+// the options give none, or one that lies outside it).
+VkRect2D paneRect(const RenderOptions& opt, VkExtent2D extent);
+
+RenderOptions optionsFromDocument(const Document& doc);
+
+// What the GPU's tessellator made for the surface (Bézier windows, net windows, Bézier triangles),
+// read back through transform feedback and welded (core/mesh/mesh_weld.hpp): Renderer::captureSurface.
+struct CapturedSurface {
+    TriangleMesh mesh;
+    uint64_t gpuTriangles = 0;   // triangles the tessellator emitted
+    size_t degenerate = 0;       // of them, collapsed at poles and left out of the mesh
+    uint32_t patchesCulled = 0;  // patches the control shader culled (culling on: facing away, off screen)
+};
+
+class Renderer {
+public:
+    Renderer(Device& dev, RenderTarget& target);
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // `map`: the document's height map (DESIGN §11), or none; the surface is displaced when the
+    // document's displacement is active and a map is given.
+    void setDocument(const Document& doc, std::shared_ptr<const HeightMap> map = {});
+    void setPlainMesh(const TriangleMesh& mesh);
+    // Editor drags: rewrites only the pool entries `changed` of the uploaded document in place (the
+    // pool buffer is host-visible and the previous frame has completed). The topology must be the
+    // one given to setDocument; boundary overlays refresh at the next setDocument.
+    void updatePoints(const std::vector<Vec3>& points, const std::vector<uint32_t>& changed);
+    FrameStats render(const RenderOptions& opt);
+    // The surface `render(opt)` would draw, triangle for triangle, as a welded mesh in document
+    // coordinates (render/scene/surface_capture.cpp). InputError (exit 2) when the device has no
+    // transform feedback (VK_EXT_transform_feedback).
+    CapturedSurface captureSurface(const RenderOptions& opt);
+    // Draws one frame with every pipeline variant so the first real frame does not pay for shader JIT.
+    void warmUp();
+
+    const PipelineSet& pipelines() const { return pipes_; }
+    double modelSize() const { return modelSize_; }
+
+private:
+    struct Impl;
+    struct FramePlan;
+    // Writes the frame uniforms for `opt` drawn into `area` and plans the draws.
+    FramePlan prepareFrame(const RenderOptions& opt, VkRect2D area);
+    Device& dev_;
+    RenderTarget& target_;
+    PipelineSet pipes_;
+    std::unique_ptr<Impl> impl_;
+    double modelSize_ = 1.0;
+};
+
+}  // namespace pw::render

@@ -1,0 +1,191 @@
+#include "render/scene/shader_listing.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <set>
+
+#include "shaders/glsl_sources.hpp"
+#include "render/scene/shader_variants.hpp"
+
+namespace pw::render {
+namespace {
+
+const char* const kSpacingSuffix[kSpacingVariants] = {"equal", "odd", "even"};
+
+// Which settings chose the spacing and control-shader variants.
+std::string describe(const TessSettings& t) {
+    std::string why = "partitioning " + std::string(spacingName(t.spacing));
+    if (t.spacing == Spacing::Pow2) why += " (equal spacing, levels rounded up to powers of two in the control shader)";
+    if (levelsVariant(t) == LevelsVariant::Full) {
+        why += "; control shader with adaptive levels and culling (";
+        std::vector<std::string> on;
+        if (t.adaptive != AdaptiveMode::None) on.push_back("adaptive " + std::string(adaptiveName(t.adaptive)));
+        if (t.cullBackfaces) on.push_back("back-face culling");
+        if (t.cullOffscreen) on.push_back("off-screen culling");
+        for (size_t i = 0; i < on.size(); ++i) why += (i ? ", " : "") + on[i];
+        why += ")";
+    } else {
+        why += "; control shader with fixed levels (uniform levels and per-patch overrides)";
+    }
+    return why;
+}
+
+struct Preprocessor {
+    std::set<std::string, std::less<>> defined;
+    std::vector<ListingLine>& out;
+
+    static std::string_view trimLeft(std::string_view s) {
+        while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+        return s;
+    }
+    static std::string_view word(std::string_view s) {  // first identifier of s
+        s = trimLeft(s);
+        size_t n = 0;
+        while (n < s.size() && (std::isalnum(static_cast<unsigned char>(s[n])) || s[n] == '_')) ++n;
+        return s.substr(0, n);
+    }
+    static const glsl::File* find(std::string_view name) {
+        for (const auto& f : glsl::files())
+            if (f.name == name) return &f;
+        return nullptr;
+    }
+
+    // Appends `file`'s lines; includes are expanded in place, one level deeper.
+    void expand(const glsl::File& file, int depth, bool outerActive) {
+        struct Branch { bool parentActive, taken; };
+        std::vector<Branch> stack;
+        std::string_view text = file.text;
+        int lineNo = 0;
+        while (!text.empty()) {
+            const size_t nl = text.find('\n');
+            std::string_view line = text.substr(0, nl);
+            text = nl == std::string_view::npos ? std::string_view{} : text.substr(nl + 1);
+            ++lineNo;
+            const bool active = stack.empty() ? outerActive : stack.back().parentActive && stack.back().taken;
+            const std::string_view t = trimLeft(line);
+            bool lineActive = active;
+            if (t.starts_with("#ifdef") || t.starts_with("#ifndef")) {
+                const bool isDef = t.starts_with("#ifdef");
+                const bool has = defined.contains(word(t.substr(isDef ? 6 : 7)));
+                stack.push_back({active, isDef ? has : !has});
+            } else if (t.starts_with("#else") && !stack.empty()) {
+                stack.back().taken = !stack.back().taken;
+                lineActive = stack.back().parentActive;
+            } else if (t.starts_with("#endif") && !stack.empty()) {
+                lineActive = stack.back().parentActive;
+                stack.pop_back();
+            } else if (t.starts_with("#define") && active) {
+                defined.emplace(word(t.substr(7)));
+            }
+            out.push_back({std::string(line), std::string(file.name), lineNo, depth, lineActive});
+            if (t.starts_with("#include") && depth < 8) {
+                const size_t q0 = t.find('"'), q1 = q0 == std::string_view::npos ? q0 : t.find('"', q0 + 1);
+                if (q1 != std::string_view::npos)
+                    if (const glsl::File* inc = find(t.substr(q0 + 1, q1 - q0 - 1))) expand(*inc, depth + 1, active);
+            }
+        }
+    }
+};
+
+}  // namespace
+
+std::vector<PipelineUse> pipelinesInUse(const ShaderContext& c) {
+    const std::string sp = kSpacingSuffix[spacingVariant(c.tess.spacing)];
+    const bool fullLevels = levelsVariant(c.tess) == LevelsVariant::Full;
+    const bool fullVaryings = varyingsVariant(c.display.shading) == VaryingsVariant::Full;
+    const std::string tesc = fullLevels ? "tesc_full" : "tesc_fixed";
+    const std::string vary = fullVaryings ? "_full" : "";
+    const std::string why = describe(c.tess);
+    const std::string shading = std::string(shadingName(c.display.shading)) + " shading";
+    std::vector<PipelineUse> out;
+    auto surface = [&](const std::string& name, const std::string& prefix, const std::string& v) {
+        const std::string varyings = v.empty() ? "; lean varyings (position and normal: " + (name.starts_with("Wire") ? "wireframe" : shading) + ")"
+                                               : "; full varyings (UV, patch id, curvatures: " + shading + ")";
+        out.push_back({name, why + varyings,
+                       {{"vertex", "surface_vert"},
+                        {"tessellation control", prefix + tesc},
+                        {"tessellation evaluation", prefix + "tese_" + sp + v},
+                        {"fragment", "surface_frag" + v}}});
+    };
+    if (c.windows) surface("Surface (quad windows, 16 points)", "surface_", vary);
+    if (c.triangles) surface("Surface (Bézier triangles, 10 points)", "tri_surface_", vary);
+    if (c.display.showWireframe) {
+        if (c.windows) surface("Wireframe (quad windows)", "surface_", "");
+        if (c.triangles) surface("Wireframe (Bézier triangles)", "tri_surface_", "");
+    }
+    auto normals = [&](const std::string& name, const std::string& prefix) {
+        out.push_back({name, why,
+                       {{"vertex", "surface_vert"},
+                        {"tessellation control", prefix + "surface_" + tesc},
+                        {"tessellation evaluation", prefix + "points_tese_" + sp},
+                        {"geometry", "normals_geom"},
+                        {"fragment", "line_frag"}}});
+    };
+    if (c.display.showNormals && c.windows && c.geometryShader) normals("Normal vectors (point mode)", "");
+    if (c.display.showNormals && c.triangles && c.geometryShader) normals("Normal vectors (Bézier triangles, point mode)", "tri_");
+    char levels[96];
+    std::snprintf(levels, sizeof levels, "isoline domain: outer level 0 = lines (%g), outer level 1 = segments (%g)",
+                  double(c.tess.isolineLevels[0]), double(c.tess.isolineLevels[1]));
+    const std::string isoWhy = levels + std::string(" under partitioning ") + std::string(spacingName(c.tess.spacing));
+    if (c.display.showIsocurves && c.windows)
+        out.push_back({"Isocurves (isoline domain, 16 points)", isoWhy,
+                       {{"vertex", "surface_vert"},
+                        {"tessellation control", "isocurve_tesc"},
+                        {"tessellation evaluation", "isocurve_tese_" + sp},
+                        {"fragment", "line_frag"}}});
+    if (c.curves)
+        out.push_back({"Bézier curves (isoline domain, 4 points)", isoWhy + "; one line per curve",
+                       {{"vertex", "surface_vert"},
+                        {"tessellation control", "curve_tesc"},
+                        {"tessellation evaluation", "curve_tese_" + sp},
+                        {"fragment", "line_frag"}}});
+    static const char* const kDomain[] = {"quad", "tri", "iso"};
+    for (size_t i = 0; i < c.domainPanes.size(); ++i) {
+        const auto [kind, spacing] = c.domainPanes[i];
+        const std::string dom = std::string("domain_tese_") + kDomain[int(kind)] + "_" + kSpacingSuffix[spacingVariant(spacing)];
+        std::string name = "Domain view: " + std::string(domainName(kind)) + ", " + std::string(spacingName(spacing));
+        if (c.domainPanes.size() > 1) name += " (pane " + std::to_string(i + 1) + ")";
+        out.push_back({name,
+                       "the evaluation shader outputs gl_TessCoord; partitioning " + std::string(spacingName(spacing)) +
+                           (spacing == Spacing::Pow2 ? " (equal spacing, levels rounded up to powers of two)" : ""),
+                       {{"vertex", "domain_vert"},
+                        {"tessellation control", "domain_tesc"},
+                        {"tessellation evaluation", dom},
+                        {"tessellation evaluation (vertex dots)", dom + "_points"},
+                        {"fragment", "line_frag"}}});
+    }
+    return out;
+}
+
+std::optional<ShaderListing> shaderListing(std::string_view variant) {
+    for (const auto& v : glsl::variants()) {
+        if (v.name != variant) continue;
+        const glsl::File* file = Preprocessor::find(v.source);
+        if (!file) return std::nullopt;
+        ShaderListing l;
+        l.variant = std::string(v.name);
+        l.source = std::string(v.source);
+        Preprocessor pp{{}, l.lines};
+        std::string_view defs = v.defines;
+        while (!defs.empty()) {
+            const size_t sp = defs.find(' ');
+            const std::string_view d = defs.substr(0, sp);
+            defs = sp == std::string_view::npos ? std::string_view{} : defs.substr(sp + 1);
+            if (d.empty()) continue;
+            l.defines.emplace_back(d);
+            if (d.starts_with("-D")) pp.defined.emplace(Preprocessor::word(d.substr(2)));
+        }
+        pp.expand(*file, 0, true);
+        return l;
+    }
+    return std::nullopt;
+}
+
+std::vector<std::string> shaderVariantNames() {
+    std::vector<std::string> names;
+    for (const auto& v : glsl::variants()) names.emplace_back(v.name);
+    return names;
+}
+
+}  // namespace pw::render

@@ -1,0 +1,143 @@
+#include "render/scene/surface_scene.hpp"
+
+#include <algorithm>
+
+#include "core/eval/displacement.hpp"
+#include "core/tess/edge_levels.hpp"
+#include "core/select/picking.hpp"
+
+namespace pw::render {
+
+glm::mat4 basisPushMatrix(Basis basis, double tension) {
+    const Mat4 m = basisMatrix(basis, tension);
+    glm::mat4 g(1.0f);
+    // Column i of the GLSL matrix = row i of M, so (basis * T)[j] = sum_i T_i M[i][j].
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) g[i][j] = float(m[i][j]);
+    return g;
+}
+
+SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc, const HeightMap* map) {
+    SurfaceScene s;
+    std::vector<float> pts;
+    pts.reserve(doc.points.size() * 4);
+    for (uint32_t i = 0; i < doc.points.size(); ++i) {
+        const Vec3& p = doc.points[i];
+        pts.insert(pts.end(), {float(p.x), float(p.y), float(p.z), float(pointWeight(doc, i))});
+    }
+    const std::vector<PatchInstance> inst = expandPatches(doc);
+    std::vector<uint32_t> idx;
+    idx.reserve(inst.size() * 16);
+    // Per window, then per triangle: the levels of the shared-edge rule (core/tess/edge_levels.hpp).
+    const std::vector<WindowLevels> levels = resolveEdgeLevels(doc, inst);
+    std::vector<gpu::PatchData> pd(levels.size());
+    s.overrideLevel.assign(inst.size(), 0.0f);
+    const std::vector<WindowDisplacement> disp = windowDisplacements(doc, inst, map);
+    for (size_t w = 0; w < pd.size() && w < disp.size(); ++w) {
+        const WindowDisplacement& d = disp[w];
+        pd[w].uvRect = {d.uvRect[0], d.uvRect[1], d.uvRect[2], d.uvRect[3]};
+        pd[w].disp = {d.own ? d.own->scale : 0.0f, d.own ? d.own->bias : 0.0f, d.own ? 1.0f : 0.0f, 0.0f};
+        pd[w].detail = {d.detail[0], d.detail[1], d.detail[2], d.detail[3]};
+        pd[w].texels = {d.texels[0], d.texels[1], d.texels[2], d.texels[3]};
+    }
+    for (size_t w = 0; w < levels.size(); ++w) {
+        const WindowLevels& l = levels[w];
+        pd[w].outer = {l.outer[0], l.outer[1], l.outer[2], l.outer[3]};
+        pd[w].inner = {l.inner ? (*l.inner)[0] : 0.0f, l.inner ? (*l.inner)[1] : 0.0f, l.inner ? 1.0f : 0.0f, float(l.fixedMask)};
+        float most = 0.0f;
+        for (float f : l.outer) most = std::max(most, f);
+        if (l.inner) most = std::max({most, (*l.inner)[0], (*l.inner)[1]});
+        s.overrideMax = std::max(s.overrideMax, most);
+        if (w < inst.size()) s.overrideLevel[w] = most;
+    }
+    for (size_t w = 0; w < inst.size(); ++w) {
+        const PatchInstance& pi = inst[w];
+        idx.insert(idx.end(), pi.idx.begin(), pi.idx.end());
+        const uint32_t kind = pi.basis == Basis::Bezier ? 0u : pi.basis == Basis::BSpline ? 1u : 2u;
+        if (s.runs.empty() || s.runs.back().basisKind != kind ||
+            (kind == 2u && inst[s.runs.back().first].tension != pi.tension)) {
+            s.runs.push_back({uint32_t(w), 0, kind, basisPushMatrix(pi.basis, pi.tension)});
+        }
+        ++s.runs.back().count;
+    }
+    // Bézier triangles after the windows: indices in their own buffer, overrides appended.
+    std::vector<uint32_t> triIdx;
+    triIdx.reserve(doc.triangles.size() * 10);
+    for (const TrianglePatch& t : doc.triangles) triIdx.insert(triIdx.end(), t.idx.begin(), t.idx.end());
+    s.triangleCount = uint32_t(doc.triangles.size());
+    if (!triIdx.empty()) s.triIndices = uploadStatic(dev, triIdx, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    std::vector<uint32_t> curveIdx;
+    curveIdx.reserve(doc.curves.size() * 4);
+    for (const BezierCurve& c : doc.curves) curveIdx.insert(curveIdx.end(), c.idx.begin(), c.idx.end());
+    s.curveCount = uint32_t(doc.curves.size());
+    if (!curveIdx.empty()) s.curveIndices = uploadStatic(dev, curveIdx, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    s.cpuPoints.reserve(doc.points.size());
+    for (const Vec3& p : doc.points) s.cpuPoints.emplace_back(float(p.x), float(p.y), float(p.z));
+    s.cpuIndices = idx;
+    s.pointCount = uint32_t(doc.points.size());
+    s.windowCount = uint32_t(inst.size());
+    s.pool = uploadHostWritten(dev, pts, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    s.indices = uploadStatic(dev, idx, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    s.patchData = uploadStatic(dev, pd, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    const std::vector<bool> used = usedPointMask(doc);
+    std::vector<uint32_t> shown;
+    for (uint32_t p = 0; p < used.size(); ++p)
+        if (used[p]) shown.push_back(p);
+    if (!shown.empty() && shown.size() < doc.points.size()) {
+        s.shownPoints = uploadStatic(dev, shown, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+        s.shownPointCount = uint32_t(shown.size());
+    }
+    return s;
+}
+
+uint32_t recordWindowDraw(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t window, gpu::DrawPush push) {
+    for (const BasisRun& run : s.runs) {
+        if (window < run.first || window >= run.first + run.count) continue;
+        const VkDeviceSize zero = 0;
+        vkCmdBindVertexBuffers(cmd, 0, 1, s.pool.buffer.ptr(), &zero);
+        vkCmdBindIndexBuffer(cmd, s.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
+        push.basis = run.matrix;
+        push.basisKind = run.basisKind;
+        push.patchBase = window;
+        vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(gpu::DrawPush), &push);
+        vkCmdDrawIndexed(cmd, 16, 1, 16 * window, 0, 0);
+        return 1;
+    }
+    return 0;
+}
+
+uint32_t recordSurfaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t perDraw,
+                            gpu::DrawPush push, const std::vector<uint8_t>* levels, uint32_t vertexBudget) {
+    if (s.windowCount == 0) return 0;
+    const VkDeviceSize zero = 0;
+    vkCmdBindVertexBuffers(cmd, 0, 1, s.pool.buffer.ptr(), &zero);
+    vkCmdBindIndexBuffer(cmd, s.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
+    uint32_t draws = 0;
+    perDraw = std::max(perDraw, 1u);
+    for (const BasisRun& run : s.runs) {
+        const uint32_t end = run.first + run.count;
+        for (uint32_t first = run.first, n = 0; first < end; first += n) {
+            if (levels && vertexBudget != 0) {  // grow the batch while it stays within the evaluation-vertex budget
+                uint32_t maxL = 0;
+                n = 0;
+                while (first + n < end) {
+                    const uint32_t l = std::max<uint32_t>(maxL, (*levels)[first + n]);
+                    if (n > 0 && (n + 1) * (l + 2) * (l + 2) > vertexBudget) break;
+                    maxL = l;
+                    ++n;
+                }
+            } else {
+                n = std::min(perDraw, end - first);
+            }
+            push.basis = run.matrix;
+            push.basisKind = run.basisKind;
+            push.patchBase = first;
+            vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(gpu::DrawPush), &push);
+            vkCmdDrawIndexed(cmd, 16 * n, 1, 16 * first, 0, 0);
+            ++draws;
+        }
+    }
+    return draws;
+}
+
+}  // namespace pw::render

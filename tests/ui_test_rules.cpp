@@ -1,0 +1,221 @@
+// The editor's own rules, tested by linking the ui library (no window, no GPU): a headless Dear
+// ImGui context draws the real panels against a PanelContext that runs the real command table, and
+// input is fed through ImGuiIO as the GLFW back end would. Covered: a level typed out of range into
+// the Tessellation panel (Ctrl+click, type, Enter) is clamped, recorded as one undo step and the
+// saved file reopens (issue 38's live bug); a slider previews without undo steps and commits one
+// on release; the editor's keys come from the command table alone; the widgets' test hooks
+// gather only while a trace is set.
+#include <gtest/gtest.h>
+#include <imgui.h>
+
+#include <map>
+#include <set>
+
+#include "core/commands/command_table.hpp"
+#include "core/io/document_io.hpp"
+#include "support.hpp"
+#include "ui/panels/side_panels.hpp"
+#include "ui/platform/item_trace.hpp"
+#include "ui/platform/shortcuts.hpp"
+
+using namespace pw;
+using namespace pw::ui;
+
+namespace {
+
+constexpr int kEnterKey = 257;  // GLFW_KEY_ENTER: what the GLFW back end puts in io.KeyMap
+
+// The editor as the panels see it, without a window: commands run on a real session through the
+// real table; what the editor would show or upload is counted.
+class HeadlessContext final : public PanelContext {
+public:
+    EditSession& session() override { return session_; }
+    const CommandTable& commands() const override { return table_; }
+    CommandHost& host() override { return host_; }
+    void runCommand(const std::vector<std::string>& words, bool guarded) override {
+        ++commandsRun;
+        try {
+            table_.run(session_, host_, words, guarded);
+        } catch (const std::exception& e) {
+            errors.push_back(e.what());
+        }
+    }
+    void previewCommand(const std::vector<std::string>& words) override {
+        ++previews;
+        table_.preview(session_, host_, words);
+    }
+    void documentChanged(bool) override { ++version_; }
+    void settingsChanged() override { ++version_; }
+    uint64_t documentVersion() const override { return version_; }
+    void showError(const std::string& message) override { errors.push_back(message); }
+    void wake() override {}
+    bool interacting() const override { return false; }
+    bool keyPressed(int, int) const override { return false; }
+    float uiScale() const override { return 1.0f; }
+    void frameBox(const Bounds&) override {}
+    const PanelLayout& layout() const override { return layout_; }
+    const FrameReport& frameReport() const override { return report_; }
+    const ContinuityWatch& continuityWatch() const override { return watch_; }
+
+    int commandsRun = 0, previews = 0;
+    std::vector<std::string> errors;
+
+private:
+    EditSession session_;
+    CommandTable table_ = makeCommandTable();
+    test::NoWritesHost host_;
+    uint64_t version_ = 0;
+    PanelLayout layout_;
+    FrameReport report_;
+    ContinuityWatch watch_;
+};
+
+// A headless ImGui with the font atlas built, the Enter key mapped, and a trace of named widgets.
+class Ui : public ::testing::Test {
+protected:
+    void SetUp() override {
+        ImGui::CreateContext();
+        ImGuiIO& io = ImGui::GetIO();
+        io.DisplaySize = ImVec2(800, 900);
+        io.DeltaTime = 1.0f / 60.0f;
+        io.IniFilename = nullptr;
+        io.KeyMap[ImGuiKey_Enter] = kEnterKey;
+        unsigned char* pixels = nullptr;
+        int w = 0, h = 0;
+        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+        setItemTrace(&trace);
+    }
+    void TearDown() override {
+        setItemTrace(nullptr);
+        ImGui::DestroyContext();
+    }
+    // One frame of `draw` inside a window.
+    template <class F>
+    void frame(F&& draw) {
+        trace.clear();
+        ImGui::NewFrame();
+        ImGui::SetNextWindowPos(ImVec2(0, 0));
+        ImGui::SetNextWindowSize(ImVec2(500, 880));
+        ImGui::Begin("panel");
+        draw();
+        ImGui::End();
+        ImGui::Render();
+    }
+    ImVec2 centre(const std::string& item) const {
+        const auto it = trace.items.find(item);
+        EXPECT_NE(it, trace.items.end()) << item << " was not drawn";
+        return it == trace.items.end() ? ImVec2(0, 0) : ImVec2(it->second[0], it->second[1]);
+    }
+    ItemTrace trace;
+};
+
+}  // namespace
+
+TEST_F(Ui, ALevelTypedOutOfRangeIsClampedAndTheSavedFileReopens) {
+    HeadlessContext ctx;
+    ImGuiIO& io = ImGui::GetIO();
+    auto panel = [&] { drawTessellationPanel(ctx); };
+    frame(panel);
+    const ImVec2 level = centre("tess.level");
+    // Ctrl+click the Level slider: it turns into a text field with its text selected.
+    io.MousePos = level;
+    io.KeyCtrl = true;
+    io.MouseDown[0] = true;
+    frame(panel);
+    io.MouseDown[0] = false;
+    io.KeyCtrl = false;
+    frame(panel);
+    io.AddInputCharactersUTF8("-5");
+    frame(panel);
+    io.KeysDown[kEnterKey] = true;
+    frame(panel);
+    io.KeysDown[kEnterKey] = false;
+    frame(panel);
+    frame(panel);
+
+    const Document& doc = ctx.session().doc;
+    EXPECT_TRUE(ctx.errors.empty()) << ::testing::PrintToString(ctx.errors);
+    EXPECT_EQ(doc.tess.outer, (std::array<float, 4>{1, 1, 1, 1}));  // -5 clamped to the row's 1
+    EXPECT_EQ(doc.tess.inner, (std::array<float, 2>{1, 1}));
+    EXPECT_EQ(ctx.session().history().size(), 1u);
+    EXPECT_EQ(ctx.session().history().undoLabel(), "Level");
+    const auto dir = test::freshTempDir("ui_rules");
+    saveDocument(doc, dir / "typed.patchwork");
+    const Document back = loadDocument(dir / "typed.patchwork");
+    EXPECT_EQ(back.tess, doc.tess);
+}
+
+TEST_F(Ui, ASliderPreviewsWhileItMovesAndCommitsOneUndoStepOnRelease) {
+    HeadlessContext ctx;
+    ImGuiIO& io = ImGui::GetIO();
+    auto panel = [&] { drawTessellationPanel(ctx); };
+    frame(panel);
+    const ImVec2 level = centre("tess.level");
+    io.MousePos = level;
+    io.MouseDown[0] = true;
+    frame(panel);
+    for (float dx : {40.0f, 80.0f, 120.0f}) {
+        io.MousePos = ImVec2(level.x + dx, level.y);
+        frame(panel);
+    }
+    EXPECT_GT(ctx.previews, 0);
+    EXPECT_FALSE(ctx.session().history().canUndo());  // moving: no undo step yet
+    const float moved = ctx.session().doc.tess.outer[0];
+    EXPECT_GT(moved, 16.0f);
+    io.MouseDown[0] = false;
+    frame(panel);
+    frame(panel);
+    EXPECT_EQ(ctx.session().history().size(), 1u);
+    EXPECT_EQ(ctx.session().doc.tess.outer[0], moved);
+    ctx.session().undo();
+    EXPECT_EQ(ctx.session().doc.tess.outer[0], 16.0f);
+}
+
+TEST_F(Ui, ATickedBoxRunsItsSettingCommand) {
+    HeadlessContext ctx;
+    ImGuiIO& io = ImGui::GetIO();
+    auto panel = [&] { drawDisplayPanel(ctx); };
+    frame(panel);
+    io.MousePos = centre("display.boundaries");
+    io.MouseDown[0] = true;
+    frame(panel);
+    io.MouseDown[0] = false;
+    frame(panel);
+    EXPECT_TRUE(ctx.session().doc.display.showBoundaries);
+    EXPECT_EQ(ctx.commandsRun, 1);
+    EXPECT_EQ(ctx.session().history().undoLabel(), "Boundaries");
+}
+
+TEST(UiKeys, TheEditorsKeysComeFromTheCommandTableAlone) {
+    const CommandTable table = makeCommandTable();
+    const std::vector<KeyBinding> keys = keyBindingsOf(table);
+    size_t shortcuts = 0;
+    for (const Command& c : table.commands())
+        for (const CommandBinding& b : c.bindings) shortcuts += b.shortcuts.size();
+    EXPECT_EQ(keys.size(), shortcuts);
+    EXPECT_GT(keys.size(), 30u);
+    // No chord runs two different lines.
+    std::map<std::pair<int, int>, std::string> seen;
+    for (const KeyBinding& k : keys) {
+        const auto [it, fresh] = seen.emplace(std::pair{k.chord.key, k.chord.mods}, k.line);
+        EXPECT_TRUE(fresh || it->second == k.line) << "one key runs '" << it->second << "' and '" << k.line << "'";
+        EXPECT_NE(table.find(splitCommandWords(k.line).front()), nullptr) << k.line;
+    }
+    EXPECT_FALSE(parseShortcut("Ctrl+Hyper+Q").has_value());
+}
+
+TEST_F(Ui, WidgetsAreTracedOnlyWhileATraceIsSet) {
+    frame([] {
+        ImGui::Button("one");
+        traceItem("one");
+        traceModal("modal");
+    });
+    EXPECT_EQ(trace.items.count("one"), 1u);
+    EXPECT_EQ(trace.modal, "modal");
+    setItemTrace(nullptr);
+    frame([] {
+        ImGui::Button("two");
+        traceItem("two");
+    });
+    EXPECT_EQ(trace.items.count("two"), 0u);
+}

@@ -1,0 +1,223 @@
+// The interactive editor: a composition of the window layer (ui/platform/app_window.hpp), the editing
+// session (core/edit/edit_session.hpp) run through the command table (core/commands/command_table.hpp), the
+// Vulkan renderer drawing the document, the viewport with its point drags
+// (core/edit/drag_controller.hpp), the panels (ui/panel_*.cpp, ui/dialog_*.cpp) and the test trace
+// (ui/editor/test_trace.hpp). Blender-style navigation and editing (DESIGN §6).
+#pragma once
+
+#include <array>
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "core/edit/autosave.hpp"
+#include "core/edit/background_writer.hpp"
+#include "core/commands/command_table.hpp"
+#include "core/edit/drag_controller.hpp"
+#include "core/select/edge_pick.hpp"
+#include "core/edit/edit_session.hpp"
+#include "ui/platform/app_window.hpp"
+#include "ui/panels/command_panels.hpp"
+#include "ui/panels/dialogs.hpp"
+#include "ui/panels/panel_context.hpp"
+#include "ui/panels/panel_shaders.hpp"
+#include "ui/panels/side_panels.hpp"
+#include "ui/panels/teaching.hpp"
+#include "ui/editor/test_trace.hpp"
+#include "ui/platform/shortcuts.hpp"
+
+namespace pw::render {
+class Renderer;
+struct RenderOptions;
+}  // namespace pw::render
+
+namespace pw::ui {
+
+// Opens the editor on `file` (empty: the built-in teapot). Returns the exit code; 2 when there is
+// no display.
+int runEditor(const std::string& file);
+
+// `patchwork bench --editor`: the editor's frame cost while a control point is dragged (G grab, the
+// mouse moving every frame), against a bare offscreen render of the same view in the same run.
+struct EditorBenchOptions {
+    std::string file;          // empty: the built-in teapot
+    int frames = 100;          // measured frames
+    int width = 1280, height = 720;  // window size (pixels at content scale 1)
+    float level = 16.0f;       // uniform tessellation level of the benchmarked document
+    std::string json;          // write the results here as JSON when not empty
+};
+// Needs a display (Xvfb will do); returns the exit code (2 without a display).
+int runEditorBench(const EditorBenchOptions& options);
+
+enum class Interaction { None, Orbit, Pan, BoxSelect, PendingDrag, DragPoints, Grab };
+
+class Editor final : public CommandHost, public PanelContext, public WindowClient {
+public:
+    Editor(AppWindow& window, const std::string& file);
+    ~Editor() override;
+    int run();
+    // The editor benchmark (ui/editor/editor_bench.cpp): drives this editor's own frames.
+    int runBench(const EditorBenchOptions& options);
+
+private:
+    friend class TestTrace;  // reads the state it writes (ui/editor/test_trace.cpp)
+
+    // editor.cpp: documents, commands, autosave, the frame
+    void setDocument(Document doc, const std::string& path);
+    void documentReplaced();  // after the session's document was replaced: view, title, recent files
+    void recoverAutosave();
+    void addRecent(const std::string& path);
+    void drawUi();
+    render::RenderOptions viewOptions() const;  // what the 3D view draws this frame
+
+    // WindowClient: the frame loop (ui/platform/app_window.cpp).
+    bool quitRequested() const override { return quit_; }
+    void idleTick() override;  // autosave
+    void closeRequested() override { runCommand({"quit"}); }
+    bool frameWanted() const override { return screenshotRequested_; }
+    void drawFrame() override;
+
+    // PanelContext: what the panels use.
+    EditSession& session() override { return session_; }
+    const CommandTable& commands() const override { return commands_; }
+    CommandHost& host() override { return *this; }
+    void runCommand(const std::vector<std::string>& words, bool guarded = true) override;
+    void previewCommand(const std::vector<std::string>& words) override;
+    void documentChanged(bool topology) override;  // re-upload
+    void settingsChanged() override { ++docVersion_; }
+    uint64_t documentVersion() const override { return docVersion_; }
+    void showError(const std::string& message) override;
+    void wake() override { window_.wake(); }
+    bool interacting() const override { return mode_ != Interaction::None; }
+    bool keyPressed(int key, int mods) const override { return window_.keyPressed(key, mods); }
+    float uiScale() const override { return window_.uiScale(); }
+    void frameBox(const Bounds& box) override;
+    const PanelLayout& layout() const override { return sidePanels_.layout(); }
+    const FrameReport& frameReport() const override { return report_; }
+    const ContinuityWatch& continuityWatch() const override { return continuity_; }
+
+    // CommandHost (editor_commands.cpp): what the commands ask of the window.
+    bool hasWindow() const override { return true; }
+    bool confirmDiscard(const std::vector<std::string>& words) override;
+    void write(const Document& doc, const std::string& path) override;
+    void exportFile(const Document& doc, const std::string& path) override;
+    // With options.asDisplayed and a tessellated format: the surface the 3D view draws (captured
+    // now), options.viewport set, and `doc` reduced to the shown items; otherwise nullopt.
+    std::optional<TriangleMesh> displayedMesh(Document& doc, ExportOptions& options, const std::string& path);
+    void saved(const std::string& path) override;
+    void fileDialog(FileDialogKind kind) override;
+    void toggle(WindowToggle which) override;
+    bool toggled(WindowToggle which) const override;
+    void quit() override { quit_ = true; }
+    void screenshot(const std::string& path) override;
+    bool frame(const Bounds& box) override;
+    void status(const std::string& message) override;
+    void domainFigure(const std::string& path) override;    // editor_figures.cpp
+    void sweepAnimation(const std::string& path) override;  // editor_figures.cpp
+    std::vector<KeyBinding> keyBindings_;  // from the command table's shortcuts (keyBindingsOf)
+    void bindShortcuts();
+    void runShortcuts();  // the table's keys pressed this frame
+
+    // viewport.cpp: input; viewport_overlays.cpp: what is drawn over the 3D view
+    void viewportInput();
+    // A transform of the selection: a left drag on a selected point or a gizmo handle (`grab`
+    // false, the button held; `axis` 0..2 for an arrow), or G / R / S (`grab` true).
+    void beginDrag(bool grab, TransformKind kind = TransformKind::Move, int axis = -1);
+    void transformKeys(double mx, double my);  // during a transform: axes, planes, typed values
+    void placeCursor(double mx, double my);    // Shift+right click: the 3D cursor on a point or surface
+    // The move gizmo at the pivot, in pane pixels: the centre, then the X, Y and Z arrow tips
+    // (nullopt when there is nothing to transform or the pivot is behind the camera).
+    std::optional<std::array<glm::dvec2, 4>> gizmoHandles(int width, int height) const;
+    int gizmoHit(double mx, double my) const;  // -1 none, 0..2 an arrow, 3 the centre
+    void updateDrag(double mx, double my);
+    void finishDrag();
+    void cancelDrag();
+    DragView dragView() const;            // the interaction pane as the drag sees it
+    std::array<int, 2> viewSize() const;  // the interaction pane's width and height in pixels, at least 1
+    void drawViewportOverlays();
+    // join_tool.cpp: join by picking (J). The join runs at once as a preview; the panel changes its
+    // continuity, keeps it or takes it back.
+    struct JoinTool {
+        bool on = false;
+        std::optional<PatchEdge> first, hover;  // the first pick; the open edge under the mouse
+        bool preview = false;                    // the join a-b is applied, waiting for Apply or Cancel
+        PatchEdge a, b;
+        Continuity continuity = Continuity::C1;
+        uint64_t version = 0;  // the session's version right after the preview ran
+    };
+    void setJoinTool(bool on);
+    void joinToolInput(double mx, double my, bool overUi);
+    void joinPreview(Continuity c);   // runs `join a b c`
+    void endJoinPreview(bool keep);   // keep it, or undo it and go back to the second pick
+    void drawJoinPanel();
+    void drawJoinOverlay(const std::function<void(const Vec3&, const Vec3&, unsigned, float)>& line) const;
+    void drawPaneOverlays(const std::array<float, 4>& pane, bool active);  // selection, gizmo of one pane
+
+    AppWindow& window_;
+    std::unique_ptr<render::Renderer> renderer_;
+    EditSession session_;
+    const CommandTable commands_ = makeCommandTable();
+    // Shorthands for the session's parts.
+    Document& doc_ = session_.doc;
+    Selection& sel_ = session_.sel;
+    Camera& cam_ = session_.camera;
+    Edge& lastEdge_ = session_.activeEdge;  // edge nearest the last surface click (extrude, unjoin)
+    uint64_t seenVersion_ = 0, seenTopology_ = 0, seenSerial_ = 0;  // the session as last drawn
+    uint64_t docVersion_ = 0;  // bumped by every edit and settings change (caches of the document)
+    std::vector<bool> usedMask_;
+    // The document's height map (displacement), loaded when the file it names changes; a map that
+    // cannot be read leaves the surface undisplaced and says why once.
+    std::shared_ptr<const HeightMap> heightMap_;
+    std::string heightMapFile_;
+    std::shared_ptr<const HeightMap> documentHeightMap();
+
+    // The viewport.
+    Interaction mode_ = Interaction::None;
+    DragController drag_;
+    int hovered_ = -1;
+    int hoveredGizmo_ = -1;
+    std::array<float, 4> axisGizmoRect_{0, 0, 0, 0};  // where the axis gizmo went last frame (x, y, w, h; the test trace)
+    JoinTool join_;
+    bool grabAfterShortcut_ = false;  // the last shortcut was Shift+D: grab the copy
+    double pressX_ = 0, pressY_ = 0;
+    bool pressShift_ = false;
+    double lastX_ = 0, lastY_ = 0;
+    std::array<float, 4> viewArea_{0, 0, 1, 1};  // this frame's interaction pane (window pixels)
+    bool showGround_ = true;
+    bool xray_ = false;  // box selection through the surface
+
+    // The frame.
+    uint64_t frameCount_ = 0;
+    FrameReport report_;  // the last frame's times and the 3D view's statistics
+    ContinuityWatch continuity_;  // the joins' measured continuity, updated every frame (live next to a drag)
+    double dragMs_ = 0.0;  // this frame's drag solve + upload
+    bool screenshotRequested_ = false;
+    std::string screenshotPath_;
+    bool quit_ = false;
+
+    // Files, autosave, status line.
+    Autosaver autosaver_;
+    std::chrono::steady_clock::time_point lastAutosave_;
+    double autosaveSeconds_ = 30.0;
+    std::vector<std::string> recent_;
+    std::string status_;
+    std::chrono::steady_clock::time_point statusTime_;
+    std::string autosaveError_;                   // shown until an autosave succeeds
+    BackgroundWriter exports_;                    // exports, written while the window goes on
+
+    // The panels.
+    TestTrace trace_;
+    SidePanels sidePanels_;
+    Dialogs dialogs_;
+    CommandPalette palette_;
+    bool showHelp_ = false;
+    ShaderPanel shaders_;
+    Teaching teaching_{window_, shaders_.open};
+};
+
+}  // namespace pw::ui

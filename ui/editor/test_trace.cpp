@@ -1,0 +1,128 @@
+// The test trace (ui/editor/test_trace.hpp): widgets' centres and the open modal gathered during the
+// frame, the editor's state read after it, one JSON file rewritten atomically.
+#include "ui/editor/test_trace.hpp"
+
+#include <imgui.h>
+
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+
+#include "core/solve/constraint_solver.hpp"
+#include "core/base/file_io.hpp"
+#include "core/select/picking.hpp"
+#include "core/tess/tess_domain.hpp"
+#include "render/vk/device.hpp"
+#include "ui/editor/editor.hpp"
+
+namespace pw::ui {
+
+TestTrace::TestTrace() {
+    if (const char* t = std::getenv("PATCHWORK_EDITOR_TRACE"); t && *t) {
+        path_ = t;
+        setItemTrace(&items_);
+    }
+}
+
+TestTrace::~TestTrace() {
+    if (itemTrace() == &items_) setItemTrace(nullptr);
+}
+
+void TestTrace::beginFrame() { items_.clear(); }
+
+void TestTrace::write(const Editor& e) {
+    nlohmann::json j;
+    const auto [ww, wh] = e.window_.windowSize();
+    const auto [fw, fh] = e.window_.framebufferSize();
+    const Document& doc = e.session_.doc;
+    const Selection& sel = e.session_.sel;
+    const Teaching& teaching = e.teaching_;
+    const render::FrameStats& stats = e.report_.stats;
+    j["frame"] = e.frameCount_;
+    j["window"] = {ww, wh};
+    j["framebuffer"] = {fw, fh};
+    j["file"] = e.session_.path();
+    j["modified"] = e.session_.isModified();
+    j["mode"] = int(e.mode_);
+    j["undoSteps"] = e.session_.history().size();
+    j["canUndo"] = e.session_.history().canUndo();
+    j["hovered"] = e.hovered_;
+    j["selection"] = sel.points;
+    j["selectedPatch"] = sel.patch;
+    j["recoverable"] = e.dialogs_.recoverable.size();
+    j["modal"] = items_.modal;
+    j["textInput"] = ImGui::GetIO().WantTextInput;
+    j["presentation"] = teaching.presentation;
+    j["presentationOverlay"] = {teaching.overlaySize[0], teaching.overlaySize[1], teaching.overlayTextRight};
+    j["tessOuter"] = doc.tess.outer;
+    j["lesson"] = {{"active", teaching.lesson.active}, {"name", teaching.lesson.name}, {"outer", teaching.shownTess(doc.tess).outer}};
+    j["sweep"] = {{"playing", teaching.sweep.playing}, {"level", teaching.sweep.level}, {"seconds", teaching.sweep.seconds}};
+    j["domain"] = nlohmann::json::array();
+    for (size_t i = 0; i < teaching.domainPanes.size() && i < teaching.domainStats.size(); ++i) {
+        const auto& o = teaching.domainPanes[i];
+        const DomainCounts want = expectedDomainCounts(o.kind, o.levels, o.spacing);
+        j["domain"].push_back({{"spacing", spacingName(o.spacing)}, {"kind", domainName(o.kind)}, {"vertices", teaching.domainStats[i].vertices},
+                               {"primitives", teaching.domainStats[i].primitives}, {"expectedVertices", want.vertices},
+                               {"expectedPrimitives", want.primitives}});
+    }
+    j["viewPanes"] = nlohmann::json::array();
+    const auto viewRects = teaching.viewPaneRects(e.layout());
+    for (size_t i = 0; teaching.viewSplit() && i < viewRects.size() && i < teaching.viewPanes.size(); ++i)
+        j["viewPanes"].push_back({{"spacing", spacingName(teaching.viewPanes[i].tess.spacing)},
+                                  {"level", teaching.paneLevel[i]},
+                                  {"rect", viewRects[i]},
+                                  {"triangles", teaching.viewPanes[i].stats.triangles()}});
+    j["activePane"] = teaching.activePane;
+    j["layout"] = {{"domainWindow", teaching.windowRect}, {"domainLabels", teaching.labelBoxes}, {"axisGizmo", e.axisGizmoRect_},
+                   {"left", e.layout().left}, {"right", e.layout().right}};
+    j["shaders"] = {{"open", e.shaders_.open}, {"shown", e.shaders_.shown}, {"inUse", e.shaders_.variantsInUse}};
+    j["items"] = items_.items;
+    j["unsavedPrompt"] = e.dialogs_.unsavedPromptOpen();
+    j["palette"] = e.palette_.open;
+    j["help"] = e.showHelp_;
+    j["error"] = e.dialogs_.errorMessage();
+    j["frameMs"] = e.report_.frameMs;
+    j["renderMs"] = stats.wallMs;
+    j["gpuMs"] = stats.gpuMs;
+    j["triangles"] = stats.triangles();
+    j["validationMessages"] = render::Device::validationMessageCount();
+    j["patches"] = doc.patches.size();
+    j["joins"] = doc.joins.size();
+    j["patchIdx"] = nlohmann::json::array();
+    for (const Patch& p : doc.patches) j["patchIdx"].push_back(p.idx);
+    j["cursor"] = {e.session_.cursor.x, e.session_.cursor.y, e.session_.cursor.z};
+    auto edgeJson = [](const std::optional<PatchEdge>& pe) { return pe ? nlohmann::json(patchEdgeName(*pe)) : nlohmann::json(nullptr); };
+    j["joinTool"] = {{"on", e.join_.on}, {"first", edgeJson(e.join_.first)}, {"hover", edgeJson(e.join_.hover)},
+                     {"preview", e.join_.preview}, {"continuity", std::string(continuityName(e.join_.continuity))}};
+    j["surfaces"] = doc.surfaces.size();
+    j["curves"] = doc.curves.size();
+    j["bezierTriangles"] = doc.triangles.size();
+    j["selectedTriangle"] = sel.triangle;
+    j["isocurves"] = doc.display.showIsocurves;
+    j["maxConstraintResidual"] = e.mode_ == Interaction::None ? maxConstraintResidual(doc) : -1.0;
+    // The live continuity readout (what the Continuity panel and the orange seams show).
+    j["joinsOutOfTolerance"] = e.continuity_.outOfTolerance();
+    nlohmann::json curv = nlohmann::json::array();
+    for (const JoinContinuity& c : e.continuity_.report()) curv.push_back(c.curvatureDeviationPct);
+    j["curvatureDeviationPct"] = std::move(curv);
+    j["combs"] = doc.display.showCombs;
+    // Where the points are on screen, in the pane the mouse works in (the whole window unless split).
+    const std::array<float, 4> pane = teaching.viewSplit() ? e.viewArea_ : std::array<float, 4>{0.0f, 0.0f, float(ww), float(wh)};
+    const auto proj = projectPoints(e.cam_, doc.points, int(pane[2]), int(pane[3]));
+    nlohmann::json pts = nlohmann::json::array();
+    for (size_t i = 0; i < proj.size(); ++i) {
+        if (proj[i] && i < e.usedMask_.size() && e.usedMask_[i])
+            pts.push_back({proj[i]->x + pane[0], proj[i]->y + pane[1]});
+        else
+            pts.push_back(nullptr);
+    }
+    j["points"] = std::move(pts);
+    nlohmann::json world = nlohmann::json::array();
+    for (const Vec3& p : doc.points) world.push_back({p.x, p.y, p.z});
+    j["world"] = std::move(world);
+    try {
+        writeFileAtomic(path_, j.dump());
+    } catch (...) {
+    }
+}
+
+}  // namespace pw::ui

@@ -1,0 +1,75 @@
+// The 3D view split into the teaching panes (ui/panels/teaching.hpp): where the panes are, the pane the
+// mouse works in, one render per pane with its own partitioning and level under one camera, and
+// each pane's caption (partitioning, level, triangles).
+#include <imgui.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <string>
+
+#include "render/figures/domain_figure.hpp"
+#include "render/scene/renderer.hpp"
+#include "ui/platform/app_window.hpp"
+#include "ui/platform/imgui_layer.hpp"
+#include "ui/panels/teaching.hpp"
+
+namespace pw::ui {
+
+std::vector<std::array<float, 4>> Teaching::viewPaneRects(const PanelLayout& layout) const {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (!viewSplit()) return {{0.0f, 0.0f, io.DisplaySize.x, io.DisplaySize.y}};
+    // Between the side panels and below the menu bar (the whole window in presentation mode).
+    const float left = presentation ? 0.0f : layout.left, right = presentation ? 0.0f : layout.right;
+    const float top = presentation ? 0.0f : ImGui::GetFrameHeight();
+    const float w = std::max(io.DisplaySize.x - left - right, 64.0f), h = std::max(io.DisplaySize.y - top, 64.0f);
+    return render::splitPanes(paneCount, {left, top, w, h});
+}
+
+std::array<float, 4> Teaching::interactionPane(const PanelLayout& layout, double mx, double my, bool hold) {
+    const auto rects = viewPaneRects(layout);
+    if (!hold)
+        for (size_t i = 0; i < rects.size(); ++i) {
+            const auto& r = rects[i];
+            if (mx >= r[0] && mx < r[0] + r[2] && my >= r[1] && my < r[1] + r[3]) activePane = int(i);
+        }
+    activePane = std::clamp(activePane, 0, int(rects.size()) - 1);
+    return rects[size_t(activePane)];
+}
+
+render::FrameStats Teaching::renderView(render::Renderer& renderer, const render::RenderOptions& o, const PanelLayout& layout) {
+    viewPanes.clear();
+    if (!viewSplit()) return renderer.render(o);
+    const ImGuiIO& io = ImGui::GetIO();
+    const float sx = io.DisplayFramebufferScale.x, sy = io.DisplayFramebufferScale.y;
+    const auto rects = viewPaneRects(layout);
+    for (size_t i = 0; i < rects.size(); ++i) {
+        const std::array<float, 4> fb{rects[i][0] * sx, rects[i][1] * sy, rects[i][2] * sx, rects[i][3] * sy};
+        const render::ModelPane pane{kPaneSpacings[size_t(paneSpacing[i])], paneLevel[i]};
+        const render::RenderOptions po = render::paneOptions(o, pane, fb, i);
+        viewPanes.push_back({po.tess, po.pane, renderer.render(po)});
+    }
+    return viewPanes.front().stats;
+}
+
+void Teaching::drawPaneCaptions(const PanelLayout& layout) {
+    if (!viewSplit()) return;
+    ImDrawList* dl = ImGui::GetBackgroundDrawList();
+    ImFont* font = presentation && window_.imgui().presentationFont() ? window_.imgui().presentationFont() : ImGui::GetFont();
+    const float size = presentation ? ImGui::GetFontSize() * presentationScale * 0.9f : ImGui::GetFontSize();
+    const auto rects = viewPaneRects(layout);
+    for (size_t i = 0; i < rects.size() && i < viewPanes.size(); ++i) {
+        const auto& r = rects[i];
+        const std::string text = render::paneCaption(viewPanes[i].tess, viewPanes[i].stats.triangles(), true);
+        const ImVec2 ts2 = font->CalcTextSizeA(size, FLT_MAX, 0.0f, text.c_str());
+        // Top centre; at the bottom in presentation mode, clear of the large levels at the top left.
+        const ImVec2 at(r[0] + 0.5f * (r[2] - ts2.x), presentation ? r[1] + r[3] - ts2.y - 12.0f : r[1] + 8.0f);
+        dl->AddRectFilled(ImVec2(at.x - 6.0f, at.y - 3.0f), ImVec2(at.x + ts2.x + 6.0f, at.y + ts2.y + 3.0f), IM_COL32(0, 0, 0, 150), 4.0f);
+        dl->AddText(font, size, at, presentation ? IM_COL32(255, 220, 40, 255) : IM_COL32(235, 235, 235, 255), text.c_str());
+        if (i > 0 || r[0] > 0.0f)  // a thin line between panes
+            dl->AddLine(ImVec2(r[0], r[1]), ImVec2(r[0], r[1] + r[3]), IM_COL32(150, 150, 150, 200));
+        if (r[1] > (presentation ? 0.0f : ImGui::GetFrameHeight()) + 1.0f)
+            dl->AddLine(ImVec2(r[0], r[1]), ImVec2(r[0] + r[2], r[1]), IM_COL32(150, 150, 150, 200));
+    }
+}
+
+}  // namespace pw::ui

@@ -1,0 +1,67 @@
+// Displacement (right panel, DESIGN §11): load or remove the height map, its scale and bias (live
+// while dragged, one undo step on release), the mapping, and the selected patch's, net's or
+// triangle's own scale and bias.
+#include <imgui.h>
+
+#include <cmath>
+
+#include "ui/platform/imgui_tip.hpp"
+#include "ui/panels/panel_rows.hpp"
+#include "ui/panels/side_panels.hpp"
+#include "ui/platform/item_trace.hpp"
+
+namespace pw::ui {
+
+namespace {
+
+// The selection's own displacement, if the selection is a patch, net or triangle.
+std::optional<DisplacementOverride>* selectedOwn(EditSession& s) {
+    if (s.sel.patch >= 0 && size_t(s.sel.patch) < s.doc.patches.size()) return &s.doc.patches[size_t(s.sel.patch)].displacement;
+    if (s.sel.surface >= 0 && size_t(s.sel.surface) < s.doc.surfaces.size()) return &s.doc.surfaces[size_t(s.sel.surface)].displacement;
+    if (s.sel.triangle >= 0 && size_t(s.sel.triangle) < s.doc.triangles.size()) return &s.doc.triangles[size_t(s.sel.triangle)].displacement;
+    return nullptr;
+}
+
+}  // namespace
+
+void drawDisplacementPanel(PanelContext& ctx) {
+    if (!ImGui::CollapsingHeader("Displacement")) return;
+    EditSession& s = ctx.session();
+    DisplacementSettings& d = s.doc.displacement;
+    if (ImGui::Button("Load height map...")) ctx.runCommand({"displacement"});
+    traceItem("displacement.load");
+    tip("An 8- or 16-bit PNG; the surface moves along its normal by scale x map + bias");
+    if (!d.active()) {
+        ImGui::TextDisabled("No height map");
+        return;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Remove")) return ctx.runCommand({"displacement", "off"});
+    ImGui::TextWrapped("%s", d.map.c_str());
+    const float speed = float(std::max(modelSize(s.doc), 1e-6) * 1e-3);
+    commitEdit(ctx, ImGui::DragFloat("Scale", &d.scale, speed, -1e6f, 1e6f, "%.4g"), "Displacement scale");
+    traceItem("displacement.scale");
+    tip("Height of the map's white above its black (model units)");
+    commitEdit(ctx, ImGui::DragFloat("Bias", &d.bias, speed, -1e6f, 1e6f, "%.4g"), "Displacement bias");
+    tip("Height of the map's black (model units)");
+    const char* mappings[] = {"patch parameters", "planar"};
+    enumCombo(ctx, "Mapping", d.mapping, mappings, "Displacement mapping");
+    tip("Planar: the map lies over the ground plane (the model's bounds), crack-free across every seam.\n"
+        "Patch parameters: each patch gets the whole map; a net's patches tile it");
+    if (std::optional<DisplacementOverride>* own = selectedOwn(s)) {
+        bool has = own->has_value();
+        if (ImGui::Checkbox("Own scale and bias", &has)) {
+            *own = has ? std::optional<DisplacementOverride>(DisplacementOverride{d.scale, d.bias}) : std::nullopt;
+            s.commit("Own displacement");
+        }
+        tip("The selected patch, net or triangle displaced by its own scale and bias");
+        if (own->has_value()) {
+            commitEdit(ctx, ImGui::DragFloat("Own scale", &(*own)->scale, speed, -1e6f, 1e6f, "%.4g"), "Own displacement");
+            commitEdit(ctx, ImGui::DragFloat("Own bias", &(*own)->bias, speed, -1e6f, 1e6f, "%.4g"), "Own displacement");
+        }
+    }
+    ImGui::TextDisabled("Adaptive levels follow the map's detail");
+    tip("With an adaptive mode on, each edge's level grows with the height map's detail along it and its size on screen (Stats)");
+}
+
+}  // namespace pw::ui

@@ -1,0 +1,86 @@
+// The domain view window (ui/panels/teaching.hpp): the quad, triangle or isoline domain tessellated by the
+// GPU with the document's levels in 1, 2 or 4 panes, drawn into a background-less window before
+// the ImGui pass, with each edge's level and the vertex and triangle counts labelled by ImGui.
+#include <imgui.h>
+
+#include <algorithm>
+
+#include "render/figures/domain_figure.hpp"
+#include "render/domain/domain_labels.hpp"
+#include "ui/platform/swapchain_target.hpp"
+#include "ui/platform/app_window.hpp"
+#include "ui/panels/teaching.hpp"
+
+namespace pw::ui {
+
+void Teaching::drawDomainWindow(PanelContext& ctx) {
+    domainPanes.clear();
+    windowRect = {0, 0, 0, 0};
+    labelBoxes.clear();
+    if (!showDomain) return;
+    const ImGuiIO& io = ImGui::GetIO();
+    const PanelLayout& layout = ctx.layout();
+    const TessSettings ts = shownTess(ctx.session().doc.tess);
+    ImGui::SetNextWindowPos(ImVec2(layout.left + 16.0f, ImGui::GetFrameHeight() + 16.0f), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(430.0f * ctx.uiScale(), 430.0f * ctx.uiScale()), ImGuiCond_FirstUseEver);
+    // No window background: the GPU draws the domain into this rectangle before ImGui draws the
+    // labels over it (drawDomainPanes).
+    if (ImGui::Begin("Domain view", &showDomain, ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NoScrollbar)) {
+        // Kept between the side panels and under the menu bar at any window size (the panels
+        // would hide part of it, and the 3D view's axis gizmo moves out of its way).
+        {
+            // In presentation mode the panels are gone; the levels overlay (top left) is kept clear.
+            const float x0 = presentation ? 16.0f + overlaySize[0] + 8.0f : layout.left + 4.0f;
+            const float x1 = presentation ? io.DisplaySize.x - 4.0f : io.DisplaySize.x - layout.right - 4.0f;
+            const float y0 = ImGui::GetFrameHeight() + 4.0f, y1 = io.DisplaySize.y - 4.0f;
+            const ImVec2 size(std::min(ImGui::GetWindowSize().x, std::max(160.0f, x1 - x0)),
+                              std::min(ImGui::GetWindowSize().y, std::max(160.0f, y1 - y0)));
+            if (size.x != ImGui::GetWindowSize().x || size.y != ImGui::GetWindowSize().y) ImGui::SetWindowSize(size);
+            const ImVec2 pos(std::clamp(ImGui::GetWindowPos().x, x0, std::max(x0, x1 - size.x)),
+                             std::clamp(ImGui::GetWindowPos().y, y0, std::max(y0, y1 - size.y)));
+            if (pos.x != ImGui::GetWindowPos().x || pos.y != ImGui::GetWindowPos().y) ImGui::SetWindowPos(pos);
+            windowRect = {pos.x, pos.y, size.x, size.y};
+        }
+        const ImVec2 wp = ImGui::GetWindowPos(), a = ImGui::GetWindowContentRegionMin(), b = ImGui::GetWindowContentRegionMax();
+        const std::array<float, 4> area{wp.x + a.x, wp.y + a.y, b.x - a.x, b.y - a.y};
+        const auto rects = render::splitPanes(paneCount, area);
+        const float px = ImGui::GetFontSize(), sx = io.DisplayFramebufferScale.x, sy = io.DisplayFramebufferScale.y;
+        ImDrawList* dl = ImGui::GetWindowDrawList();
+        for (size_t i = 0; i < rects.size(); ++i) {
+            render::DomainViewOptions o;
+            o.kind = DomainKind(domainKind);
+            o.levels = {ts.outer, ts.inner};
+            o.spacing = paneCount > 1 ? kPaneSpacings[paneSpacing[i]] : ts.spacing;
+            if (paneCount > 1 && paneLevel[i] > 0.0f) o.levels = withUniformLevel(o.levels, paneLevel[i]);
+            o.rect = rects[i];
+            o.margin = render::domainLabelMargin(px);
+            const render::DomainPane pane{o.kind, o.levels, o.spacing};
+            const auto counts = render::shownCounts(i < domainStats.size() ? domainStats[i] : render::DomainStats{}, pane);
+            const auto widthOf = [](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x; };
+            for (const render::DomainLabel& l : render::domainLabels(o, counts[0], counts[1], px, widthOf)) {
+                // A label still wider than its pane (a very narrow window) is drawn smaller to fit.
+                const ImVec2 full = ImGui::CalcTextSize(l.text.c_str());
+                const float fit = std::min(1.0f, (o.rect[2] - 4.0f) / std::max(1.0f, full.x));
+                const ImVec2 size(full.x * fit, full.y * fit), at(l.x - l.ax * size.x, l.y - l.ay * size.y);
+                const ImU32 col = l.role == render::DomainLabel::Role::Edge ? IM_COL32(170, 30, 20, 255) : IM_COL32(25, 30, 40, 255);
+                dl->AddText(ImGui::GetFont(), px * fit, at, col, l.text.c_str());
+                labelBoxes.push_back({at.x, at.y, size.x, size.y});
+            }
+            // In framebuffer pixels for the GPU pass.
+            o.rect = {o.rect[0] * sx, o.rect[1] * sy, o.rect[2] * sx, o.rect[3] * sy};
+            o.margin *= sx;
+            o.pointSize = 4.0f * sx;
+            domainPanes.push_back(o);
+        }
+    }
+    ImGui::End();
+}
+
+void Teaching::drawDomainPanes() {
+    if (domainPanes.empty()) return;
+    if (!domainView_)
+        domainView_ = std::make_unique<render::DomainView>(window_.device(), window_.target().colorFormat(), window_.target().depthFormat(), window_.target().samples());
+    domainStats = domainView_->draw(window_.target(), domainPanes, false);
+}
+
+}  // namespace pw::ui

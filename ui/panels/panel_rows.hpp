@@ -1,0 +1,37 @@
+// Rows the settings panels share: a row of the settings table (core/model/settings.hpp) drawn as
+// its widget, and an edited value committed as one undo step.
+#pragma once
+
+#include <imgui.h>
+
+#include <span>
+#include <string_view>
+
+#include "ui/panels/panel_context.hpp"
+
+namespace pw::ui {
+
+// After a slider, drag or field: redraws while it changes and commits one undo step `step` when
+// the user lets go (or at once for a click that is already over).
+inline void commitEdit(PanelContext& ctx, bool changed, const char* step) {
+    if (changed) ctx.settingsChanged();
+    if (ImGui::IsItemDeactivatedAfterEdit() || (changed && !ImGui::IsItemActive())) ctx.session().commit(step);
+}
+
+// A combo whose entries are the values of enum E in order; a pick is one undo step `step`.
+template <class E>
+void enumCombo(PanelContext& ctx, const char* label, E& value, std::span<const char* const> labels, const char* step) {
+    int i = int(value);
+    if (!ImGui::Combo(label, &i, labels.data(), int(labels.size()))) return;
+    value = E(i);
+    ctx.session().commit(step);
+}
+
+// The setting `key` as its widget (slider, drag, colour, checkbox or combo) with its label and
+// tooltip. It reads the document and writes it only through the `set` command: a live preview while
+// a slider moves, one undo step when it is let go. Typed values are clamped to the row's range, so
+// the panel cannot make a document its reader refuses. `trace` names the widget for the e2e tests.
+// Returns true when the value changed this frame.
+bool settingRow(PanelContext& ctx, std::string_view key, const char* trace = nullptr);
+
+}  // namespace pw::ui

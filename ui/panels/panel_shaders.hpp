@@ -1,0 +1,33 @@
+// The Shaders window: the GLSL of the tessellation pipelines the current settings draw with
+// (surface, triangles, wireframe, normal vectors, domain panes), stage by stage, read-only, with
+// the glslc defines of each variant and the lines those defines switch off dimmed
+// (render/shader_listing), Copy.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "render/domain/domain_view.hpp"
+#include "render/scene/shader_listing.hpp"
+#include "ui/panels/panel_context.hpp"
+
+namespace pw::ui {
+
+class ShaderPanel {
+public:
+    // `geometryShader`: the device has them (the normal vectors' pipeline differs without).
+    void draw(PanelContext& ctx, bool geometryShader, const TessSettings& shownTess, const std::vector<render::DomainViewOptions>& domainPanes);
+
+    bool open = false;
+    std::string shown;                   // the variant on screen this frame ("" = closed)
+    std::vector<std::string> variantsInUse;
+
+private:
+    bool hideInactive_ = false;
+    std::string pipeline_;  // the pipeline picked (by name: the list changes)
+    std::map<std::string, render::ShaderListing, std::less<>> listings_;  // cache by variant
+};
+
+}  // namespace pw::ui

@@ -1,0 +1,218 @@
+// The Teaching section of the right panel (ui/panels/teaching.hpp): the domain view and its panes, the
+// split 3D view, the notes' presets, the level sweep, presentation mode on and off.
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "core/tess/tess_presets.hpp"
+#include "ui/platform/imgui_tip.hpp"
+#include "ui/panels/teaching.hpp"
+#include "ui/platform/item_trace.hpp"
+
+namespace pw::ui {
+
+namespace {
+
+const char* const kSpacingNames[] = {"equal", "fractional_odd", "fractional_even", "pow2"};
+const char* const kDomainNames[] = {"quad", "triangle", "isoline"};
+
+// Presentation mode's theme: black panels, white text, yellow accents.
+void highContrastTheme() {
+    ImGui::StyleColorsDark();
+    ImVec4* c = ImGui::GetStyle().Colors;
+    c[ImGuiCol_Text] = ImVec4(1, 1, 1, 1);
+    c[ImGuiCol_WindowBg] = ImVec4(0, 0, 0, 0.92f);
+    c[ImGuiCol_Border] = ImVec4(1.0f, 0.85f, 0.1f, 1.0f);
+    c[ImGuiCol_TitleBgActive] = c[ImGuiCol_TitleBg] = ImVec4(0.2f, 0.2f, 0.0f, 1.0f);
+    c[ImGuiCol_FrameBg] = ImVec4(0.15f, 0.15f, 0.15f, 1.0f);
+    c[ImGuiCol_Button] = c[ImGuiCol_Header] = ImVec4(0.45f, 0.38f, 0.0f, 1.0f);
+}
+
+}  // namespace
+
+void Teaching::setPresentation(PanelContext& ctx, bool on) {
+    presentation = on;
+    if (on) highContrastTheme();
+    else ImGui::StyleColorsDark();
+    ctx.wake();
+}
+
+TessSettings Teaching::shownTess(const TessSettings& doc) const {
+    if (!lesson.active) return doc;
+    TessSettings t = doc;
+    t.adaptive = AdaptiveMode::None;
+    t.outer = lesson.outer;
+    t.inner = lesson.inner;
+    t.spacing = lesson.spacing;
+    return t;
+}
+
+void Teaching::endLesson(PanelContext& ctx, bool keep) {
+    if (!lesson.active) return;
+    sweep.playing = false;
+    if (keep) {
+        TessSettings& ts = ctx.session().doc.tess;
+        ts = shownTess(ts);
+        ts.linked = false;
+        ctx.settingsChanged();
+        ctx.session().commit(lesson.name + " levels");
+    }
+    lesson.active = false;
+    ctx.wake();
+}
+
+void Teaching::input(PanelContext& ctx) {
+    if (!sweep.playing) return;
+    // The sweep drives the lesson's uniform level (the document's levels stay as they are).
+    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - sweep.start).count();
+    double f = t / std::max(0.05f, sweep.seconds);
+    if (f >= 1.0) {
+        if (sweep.loop) {
+            sweep.start = std::chrono::steady_clock::now();
+            f = 0.0;
+        } else {
+            f = 1.0;
+            sweep.playing = false;
+        }
+    }
+    sweep.level = sweep.from + (sweep.to - sweep.from) * float(f);
+    const Spacing spacing = lesson.active ? lesson.spacing : ctx.session().doc.tess.spacing;
+    lesson = {true, "Sweep", {sweep.level, sweep.level, sweep.level, sweep.level}, {sweep.level, sweep.level}, spacing};
+    ctx.wake();
+}
+
+void Teaching::drawControls(PanelContext& ctx) {
+    const bool open = ImGui::CollapsingHeader("Teaching");
+    traceItem("panel.teaching");
+    if (!open) return;
+    Document& doc = ctx.session().doc;
+    TessSettings& ts = doc.tess;
+    ImGui::Checkbox("Domain view", &showDomain);
+    traceItem("teach.domain");
+    tip("The parametric domain tessellated by the GPU with the current levels and partitioning");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x);
+    ImGui::Combo("##domain", &domainKind, kDomainNames, 3);
+    tip("Quad: outer u0, v0, u1, v1 and inner u, v. Triangle: outer 1-3 and inner 1. Isoline: outer 1 = lines, outer 2 = segments");
+    ImGui::Checkbox("Shaders", &shadersOpen_);
+    traceItem("teach.shaders");
+    tip("The GLSL of the tessellation stages in use, read-only, with the active defines");
+    ImGui::SameLine();
+    commandButton(ctx, "Save figure...", "domain-figure", "teach.saveFigure");
+    ImGui::TextUnformatted("Panes");
+    for (int n : {1, 2, 4}) {
+        ImGui::SameLine();
+        char label[8];
+        std::snprintf(label, sizeof label, "%d", n);
+        if (ImGui::RadioButton(label, paneCount == n)) {
+            paneCount = n;
+            if (splitView) ctx.frameBox(computeBounds(doc.points));  // fit the new pane shape
+        }
+        traceItem("teach.panes" + std::to_string(n));
+    }
+    tip("Compare partitionings (or levels) side by side: the domain view, and the 3D view when split");
+    if (paneCount > 1) {
+        if (ImGui::Checkbox("Split 3D view", &splitView)) ctx.frameBox(computeBounds(doc.points));  // fit the new pane shape
+        traceItem("teach.splitView");
+        tip("Show the model once per pane, each with its own partitioning and level, under one camera");
+        const float w = ImGui::GetContentRegionAvail().x;
+        for (int i = 0; i < paneCount; ++i) {
+            char label[24];
+            std::snprintf(label, sizeof label, "##paneSpacing%d", i);
+            ImGui::SetNextItemWidth(w * 0.5f);
+            ImGui::Combo(label, &paneSpacing[size_t(i)], kSpacingNames, 4);
+            traceItem("teach.paneSpacing" + std::to_string(i));
+            tip("Partitioning of this pane");
+            ImGui::SameLine();
+            std::snprintf(label, sizeof label, "##paneLevel%d", i);
+            float& level = paneLevel[size_t(i)];
+            ImGui::SetNextItemWidth(-1.0f);
+            if (ImGui::SliderFloat(label, &level, 0.0f, 64.0f, level < 1.0f ? "doc levels" : "level %.2f")) ctx.wake();
+            if (level < 1.0f) level = 0.0f;  // below 1: the document's levels
+            traceItem("teach.paneLevel" + std::to_string(i));
+            tip("This pane's own uniform level; at the left end the pane uses the document's levels (Ctrl+click to type)");
+        }
+    }
+
+    // Presets: the notes' factor sets, their Bézier patch, their distance formula.
+    const auto& presets = tessPresets();
+    if (ImGui::BeginCombo("Preset", "choose...", ImGuiComboFlags_HeightLargest)) {
+        for (const TessPreset& p : presets) {
+            const bool chosen = ImGui::Selectable(p.label.c_str());
+            traceItem("preset." + p.name);
+            if (chosen) {  // shown as a lesson: the document keeps its levels
+                const auto& L = p.levels;
+                sweep.playing = false;
+                lesson = {true, "Preset " + p.label, L.outer, L.inner, p.spacing};
+                if (p.kind == DomainKind::Triangle) {  // the quad's unused 4th edge and 2nd inner follow
+                    lesson.outer[3] = L.outer[2];
+                    lesson.inner[1] = L.inner[0];
+                }
+                domainKind = int(p.kind);
+                paneCount = 1;
+                showDomain = true;
+                ctx.wake();
+            }
+            tip(p.note.c_str());
+        }
+        ImGui::Separator();
+        if (ImGui::Selectable("Bézier patch of the notes")) ctx.runLine("open-notes-patch");
+        tip("The notes' 16 control points at level 25 (replaces the document; asks first if it has changes)");
+        if (ImGui::Selectable("Distance formula of the notes")) {  // adaptivity is the document's: a visible undo step
+            endLesson(ctx, false);
+            applyNotesDistanceFormula(ts);
+            ctx.settingsChanged();
+            ctx.session().commit("Distance formula");
+            ctx.host().status("The notes' distance formula is now the document's adaptive tessellation (Ctrl+Z undoes it)");
+        }
+        tip("Sets the document's adaptive tessellation: level = 64 * saturate((d1 - d) / (d1 - d0)) per edge, d0 = 20, d1 = 100 (one undo step)");
+        ImGui::EndCombo();
+    }
+    traceItem("teach.preset");
+    tip("Factor sets from the lecture notes, shown without changing the document's levels");
+    if (lesson.active) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.3f, 1.0f));
+        ImGui::TextWrapped("Showing %s; the document keeps its own levels.", lesson.name.c_str());
+        ImGui::PopStyleColor();
+        if (ImGui::Button("Back to document")) endLesson(ctx, false);
+        traceItem("teach.lessonBack");
+        tip("Show the document's own levels again");
+        ImGui::SameLine();
+        if (ImGui::Button("Keep in document")) endLesson(ctx, true);
+        traceItem("teach.lessonKeep");
+        tip("Make these levels the document's (one undo step)");
+    }
+
+    // Sweep.
+    ImGui::DragFloatRange2("From / to", &sweep.from, &sweep.to, 0.05f, 1.0f, 64.0f, "%.2f", "%.2f", ImGuiSliderFlags_AlwaysClamp);
+    tip("The uniform level animated from the first to the second value");
+    ImGui::DragFloat("Seconds", &sweep.seconds, 0.05f, 0.5f, 60.0f, "%.1f", ImGuiSliderFlags_AlwaysClamp);
+    tip("Length of one pass");
+    if (ImGui::Button(sweep.playing ? "Pause" : "Play")) {
+        sweep.playing = !sweep.playing;
+        if (sweep.playing) {
+            const float span = sweep.to - sweep.from;
+            const float f = span != 0.0f ? std::clamp((sweep.level - sweep.from) / span, 0.0f, 0.999f) : 0.0f;
+            sweep.start = std::chrono::steady_clock::now() -
+                           std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(f * sweep.seconds));
+            ctx.wake();
+        }
+    }
+    traceItem("teach.play");
+    tip("Play or pause the sweep: integer spacing pops vertices in, fractional spacing slides them (the document's levels stay)");
+    ImGui::SameLine();
+    ImGui::Checkbox("Loop", &sweep.loop);
+    tip("Start again at the first value");
+    ImGui::SameLine();
+    ImGui::Text("level %.2f", double(sweep.level));
+    commandButton(ctx, "Save animation...", "sweep-animation", "teach.saveAnimation");
+
+    bool present = presentation;
+    if (ImGui::Checkbox("Presentation (F5)", &present)) setPresentation(ctx, present);
+    tip("Hide the editing panels; show levels and counts large in high contrast. F5 toggles.");
+    ImGui::SliderFloat("Text scale", &presentationScale, 1.5f, 3.0f, "%.1fx");
+    tip("Size of the presentation text relative to the interface");
+}
+
+}  // namespace pw::ui

@@ -1,0 +1,35 @@
+// Tessellation (right panel): levels (linked or per edge), partitioning, adaptive modes, the
+// isoline levels, culling. Every widget is a row of the settings table (core/model/settings.hpp)
+// and writes the document through the `set` command; each change is one undo step.
+#include <imgui.h>
+
+#include "ui/panels/panel_rows.hpp"
+#include "ui/panels/side_panels.hpp"
+
+namespace pw::ui {
+
+void drawTessellationPanel(PanelContext& ctx) {
+    if (!ImGui::CollapsingHeader("Tessellation", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const TessSettings& ts = ctx.session().doc.tess;
+    settingRow(ctx, "tess.linked");
+    if (ts.linked) {
+        settingRow(ctx, "tess.level", "tess.level");
+    } else {
+        settingRow(ctx, "tess.outer");
+        settingRow(ctx, "tess.inner");
+    }
+    settingRow(ctx, "tess.spacing");
+    settingRow(ctx, "tess.adaptive");
+    if (ts.adaptive == AdaptiveMode::Distance) {
+        settingRow(ctx, "tess.distanceNear");
+        settingRow(ctx, "tess.distanceFar");
+    }
+    if (ts.adaptive == AdaptiveMode::ScreenSpace) settingRow(ctx, "tess.targetPixels");
+    settingRow(ctx, "tess.maxLevel");
+    settingRow(ctx, "tess.isoline", "tess.isolines");
+    settingRow(ctx, "tess.cullBackfaces");
+    ImGui::SameLine();
+    settingRow(ctx, "tess.cullOffscreen");
+}
+
+}  // namespace pw::ui
