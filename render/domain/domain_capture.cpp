@@ -20,22 +20,15 @@ namespace {
 
 constexpr VkDeviceSize kStride = 2 * sizeof(float);
 
-const spirv::Blob& captureShader(DomainKind kind, int variant) {
-    static const spirv::Blob* const blobs[3][3] = {
-        {&spirv::domain_tese_quad_equal_capture, &spirv::domain_tese_quad_odd_capture, &spirv::domain_tese_quad_even_capture},
-        {&spirv::domain_tese_tri_equal_capture, &spirv::domain_tese_tri_odd_capture, &spirv::domain_tese_tri_even_capture},
-        {&spirv::domain_tese_iso_equal_capture, &spirv::domain_tese_iso_odd_capture, &spirv::domain_tese_iso_even_capture}};
-    return *blobs[size_t(kind)][size_t(variant)];
-}
 
 }  // namespace
 
 VkPipeline DomainView::capturePipeline(DomainKind kind, Spacing spacing) {
     const size_t d = size_t(kind), s = size_t(spacingVariant(spacing));
     if (!capturePipes_[d][s]) {
-        OwnedShaderModule vert(dev_.device(), makeModule(dev_, spirv::domain_vert));
-        OwnedShaderModule tesc(dev_.device(), makeModule(dev_, spirv::domain_tesc));
-        OwnedShaderModule tese(dev_.device(), makeModule(dev_, captureShader(kind, int(s))));
+        OwnedShaderModule vert(dev_.device(), makeModule(dev_, spirv::domain_vert()));
+        OwnedShaderModule tesc(dev_.device(), makeModule(dev_, spirv::domain_tesc()));
+        OwnedShaderModule tese(dev_.device(), makeModule(dev_, spirv::domain_tese(d, s, spirv::domain_tese_output_capture)));
         PipelineDesc pd;
         pd.tess = true;
         pd.patchControlPoints = 1;

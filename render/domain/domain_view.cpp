@@ -69,17 +69,7 @@ DomainView::DomainView(Device& dev, VkFormat color, VkFormat depth, VkSampleCoun
     pointsSupported_ = dev.caps().tessGeomPointSize;
     std::vector<OwnedShaderModule> modules;  // destroyed once the pipelines exist
     auto mod = [&](const spirv::Blob& b) { return modules.emplace_back(dev.device(), makeModule(dev, b)).get(); };
-    const VkShaderModule vert = mod(spirv::domain_vert), tesc = mod(spirv::domain_tesc), frag = mod(spirv::line_frag);
-    const spirv::Blob* tese[3][3][2] = {
-        {{&spirv::domain_tese_quad_equal, &spirv::domain_tese_quad_equal_points},
-         {&spirv::domain_tese_quad_odd, &spirv::domain_tese_quad_odd_points},
-         {&spirv::domain_tese_quad_even, &spirv::domain_tese_quad_even_points}},
-        {{&spirv::domain_tese_tri_equal, &spirv::domain_tese_tri_equal_points},
-         {&spirv::domain_tese_tri_odd, &spirv::domain_tese_tri_odd_points},
-         {&spirv::domain_tese_tri_even, &spirv::domain_tese_tri_even_points}},
-        {{&spirv::domain_tese_iso_equal, &spirv::domain_tese_iso_equal_points},
-         {&spirv::domain_tese_iso_odd, &spirv::domain_tese_iso_odd_points},
-         {&spirv::domain_tese_iso_even, &spirv::domain_tese_iso_even_points}}};
+    const VkShaderModule vert = mod(spirv::domain_vert()), tesc = mod(spirv::domain_tesc()), frag = mod(spirv::line_frag());
     for (int d = 0; d < 3; ++d)
         for (int s = 0; s < 3; ++s) {
             PipelineDesc pd;
@@ -88,7 +78,7 @@ DomainView::DomainView(Device& dev, VkFormat color, VkFormat depth, VkSampleCoun
             pd.vertexLayout = -1;
             pd.depthTest = pd.depthWrite = false;
             pd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc},
-                         {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(*tese[d][s][0])}, {VK_SHADER_STAGE_FRAGMENT_BIT, frag}};
+                         {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::domain_tese(size_t(d), size_t(s), 0))}, {VK_SHADER_STAGE_FRAGMENT_BIT, frag}};
             pipes_[size_t(d)][size_t(s)][0] = OwnedPipeline(dev.device(), buildPipeline(dev, layout_, VK_NULL_HANDLE, pd, color, depth, samples));
             if (d != int(DomainKind::Isoline)) {  // isolines are lines already
                 pd.polygon = VK_POLYGON_MODE_LINE;
@@ -96,7 +86,7 @@ DomainView::DomainView(Device& dev, VkFormat color, VkFormat depth, VkSampleCoun
             }
             if (pointsSupported_) {
                 pd.polygon = VK_POLYGON_MODE_FILL;
-                pd.stages[2].second = mod(*tese[d][s][1]);
+                pd.stages[2].second = mod(spirv::domain_tese(size_t(d), size_t(s), spirv::domain_tese_output_points));
                 pipes_[size_t(d)][size_t(s)][2] = OwnedPipeline(dev.device(), buildPipeline(dev, layout_, VK_NULL_HANDLE, pd, color, depth, samples));
             }
         }

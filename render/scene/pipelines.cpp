@@ -49,13 +49,23 @@ struct FamilyOut {
 
 using ModuleMaker = std::function<VkShaderModule(const spirv::Blob&)>;
 
+// One patch family (quad windows or Bézier triangles) from its generated shader index
+// (shaders/CMakeLists.txt): control shader by levels, evaluation shader by spacing x varyings x
+// displacement, the normals' point-mode evaluation by spacing x displacement.
+struct TessShaders {
+    const spirv::Blob& (*tesc)(std::size_t levels);
+    const spirv::Blob& (*tese)(std::size_t spacing, std::size_t varyings, std::size_t displace);
+    const spirv::Blob& (*points)(std::size_t spacing, std::size_t displace);
+};
+
 template <class Mod>
-void buildTessFamily(const Targets& t, const SharedStages& sh, uint32_t controlPoints, std::array<VkShaderModule, kLevelsVariants> tesc,
-                     const spirv::Blob* const (&tese)[kSpacingVariants][kVaryingsVariants],
-                     const spirv::Blob* const (&pointsTese)[kSpacingVariants], Mod&& mod, FamilyOut out) {
+void buildTessFamily(const Targets& t, const SharedStages& sh, uint32_t controlPoints, const TessShaders& shaders, size_t displaced, Mod&& mod,
+                     FamilyOut out) {
+    const VkShaderModule tesc[kLevelsVariants] = {mod(shaders.tesc(size_t(LevelsVariant::Fixed))), mod(shaders.tesc(size_t(LevelsVariant::Full)))};
     for (int s = 0; s < kSpacingVariants; ++s) {
-        const VkShaderModule te[kVaryingsVariants] = {mod(*tese[s][0]), mod(*tese[s][1])};
-        const VkShaderModule pte = sh.geom ? mod(*pointsTese[s]) : VK_NULL_HANDLE;
+        const VkShaderModule te[kVaryingsVariants] = {mod(shaders.tese(size_t(s), size_t(VaryingsVariant::Lean), displaced)),
+                                                      mod(shaders.tese(size_t(s), size_t(VaryingsVariant::Full), displaced))};
+        const VkShaderModule pte = sh.geom ? mod(shaders.points(size_t(s), displaced)) : VK_NULL_HANDLE;
         for (int l = 0; l < kLevelsVariants; ++l) {
             const auto lv = LevelsVariant(l);
             for (int v = 0; v < kVaryingsVariants; ++v) {
@@ -87,39 +97,17 @@ void buildTessFamily(const Targets& t, const SharedStages& sh, uint32_t controlP
 // The vertex, fragment, line and normals-geometry modules every family shares; `frag` holds
 // kVaryingsVariants modules and must outlive the result.
 SharedStages makeSharedStages(Device& dev, const ModuleMaker& mod, VkShaderModule (&frag)[kVaryingsVariants]) {
-    frag[0] = mod(spirv::surface_frag);
-    frag[1] = mod(spirv::surface_frag_full);
-    return {mod(spirv::surface_vert), frag, mod(spirv::line_frag), dev.caps().geometryShader ? mod(spirv::normals_geom) : VK_NULL_HANDLE};
+    for (int v = 0; v < kVaryingsVariants; ++v) frag[v] = mod(spirv::surface_frag(size_t(v)));
+    return {mod(spirv::surface_vert()), frag, mod(spirv::line_frag()), dev.caps().geometryShader ? mod(spirv::normals_geom()) : VK_NULL_HANDLE};
 }
 
 // The quad and triangle surface families, plain or displaced (-DDISPLACE evaluation shaders).
 void buildSurfaceFamilies(const Targets& t, const SharedStages& shared, SurfacePipelines& out, bool displaced, const ModuleMaker& mod) {
-    using spirv::Blob;
-    const Blob* tese[2][kSpacingVariants][kVaryingsVariants] = {
-        {{&spirv::surface_tese_equal, &spirv::surface_tese_equal_full},
-         {&spirv::surface_tese_odd, &spirv::surface_tese_odd_full},
-         {&spirv::surface_tese_even, &spirv::surface_tese_even_full}},
-        {{&spirv::surface_tese_equal_disp, &spirv::surface_tese_equal_full_disp},
-         {&spirv::surface_tese_odd_disp, &spirv::surface_tese_odd_full_disp},
-         {&spirv::surface_tese_even_disp, &spirv::surface_tese_even_full_disp}}};
-    const Blob* ptese[2][kSpacingVariants] = {{&spirv::points_tese_equal, &spirv::points_tese_odd, &spirv::points_tese_even},
-                                              {&spirv::points_tese_equal_disp, &spirv::points_tese_odd_disp, &spirv::points_tese_even_disp}};
-    const int d = displaced ? 1 : 0;
-    buildTessFamily(t, shared, 16, {mod(spirv::surface_tesc_fixed), mod(spirv::surface_tesc_full)}, tese[d], ptese[d], mod,
-                    {out.surface, out.wire, out.normals});
+    const size_t d = displaced ? 1 : 0;
+    buildTessFamily(t, shared, 16, {spirv::surface_tesc, spirv::surface_tese, spirv::points_tese}, d, mod, {out.surface, out.wire, out.normals});
     // Bézier triangles: the same vertex and fragment shaders, their own control and evaluation shaders.
-    const Blob* ttese[2][kSpacingVariants][kVaryingsVariants] = {
-        {{&spirv::tri_surface_tese_equal, &spirv::tri_surface_tese_equal_full},
-         {&spirv::tri_surface_tese_odd, &spirv::tri_surface_tese_odd_full},
-         {&spirv::tri_surface_tese_even, &spirv::tri_surface_tese_even_full}},
-        {{&spirv::tri_surface_tese_equal_disp, &spirv::tri_surface_tese_equal_full_disp},
-         {&spirv::tri_surface_tese_odd_disp, &spirv::tri_surface_tese_odd_full_disp},
-         {&spirv::tri_surface_tese_even_disp, &spirv::tri_surface_tese_even_full_disp}}};
-    const Blob* tptese[2][kSpacingVariants] = {
-        {&spirv::tri_points_tese_equal, &spirv::tri_points_tese_odd, &spirv::tri_points_tese_even},
-        {&spirv::tri_points_tese_equal_disp, &spirv::tri_points_tese_odd_disp, &spirv::tri_points_tese_even_disp}};
-    buildTessFamily(t, shared, 10, {mod(spirv::tri_surface_tesc_fixed), mod(spirv::tri_surface_tesc_full)}, ttese[d], tptese[d],
-                    mod, {out.triSurface, out.triWire, out.triNormals});
+    buildTessFamily(t, shared, 10, {spirv::tri_surface_tesc, spirv::tri_surface_tese, spirv::tri_points_tese}, d, mod,
+                    {out.triSurface, out.triWire, out.triNormals});
 }
 
 }  // namespace
@@ -184,44 +172,41 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
     buildSurfaceFamilies(targets, shared, set.tess[0], false, mod);
     // Curves and isocurves: the isoline domain; lines drawn depth-tested over the surface.
     {
-        const VkShaderModule ctesc = mod(spirv::curve_tesc), itesc = mod(spirv::isocurve_tesc);
-        const spirv::Blob* ctese[kSpacingVariants] = {&spirv::curve_tese_equal, &spirv::curve_tese_odd, &spirv::curve_tese_even};
-        const spirv::Blob* itese[kSpacingVariants] = {&spirv::isocurve_tese_equal, &spirv::isocurve_tese_odd, &spirv::isocurve_tese_even};
+        const VkShaderModule ctesc = mod(spirv::curve_tesc()), itesc = mod(spirv::isocurve_tesc());
         for (int s = 0; s < kSpacingVariants; ++s) {
             PipelineDesc cd;
             cd.tess = true;
             cd.patchControlPoints = 4;
             cd.depthWrite = false;
             cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, ctesc},
-                         {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(*ctese[s])}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
+                         {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::curve_tese(size_t(s)))}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
             set.curves[size_t(s)] = targets.build(cd);
             cd.patchControlPoints = 16;
             cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, itesc},
-                         {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(*itese[s])}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
+                         {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::isocurve_tese(size_t(s)))}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
             set.isocurves[size_t(s)] = targets.build(cd);
         }
         PipelineDesc cd;
         cd.tess = true;
         cd.patchControlPoints = 4;
         cd.depthWrite = false;
-        cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, mod(spirv::comb_tesc)},
-                     {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::comb_tese)}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
+        cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, mod(spirv::comb_tesc())},
+                     {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::comb_tese())}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
         set.combs = targets.build(cd);
         cd.patchControlPoints = 16;
-        cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, mod(spirv::isocomb_tesc)},
-                     {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::isocomb_tese)}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
+        cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, mod(spirv::isocomb_tesc())},
+                     {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::isocomb_tese())}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
         set.isoCombs = targets.build(cd);
     }
-    const spirv::Blob* meshVert[kVaryingsVariants] = {&spirv::mesh_vert, &spirv::mesh_vert_full};
     for (int v = 0; v < kVaryingsVariants; ++v) {
         PipelineDesc md;
         md.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
         md.vertexLayout = v == int(VaryingsVariant::Full) ? 1 : 3;
-        md.stages = {{VK_SHADER_STAGE_VERTEX_BIT, mod(*meshVert[v])}, {VK_SHADER_STAGE_FRAGMENT_BIT, frag[v]}};
+        md.stages = {{VK_SHADER_STAGE_VERTEX_BIT, mod(spirv::mesh_vert(size_t(v)))}, {VK_SHADER_STAGE_FRAGMENT_BIT, frag[v]}};
         set.mesh[v] = targets.build(md);
     }
     {
-        VkShaderModule gv = mod(spirv::grid_vert);
+        VkShaderModule gv = mod(spirv::grid_vert());
         PipelineDesc gd;
         gd.topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST;
         gd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, gv}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
@@ -234,7 +219,7 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
         cd.topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST;
         cd.vertexLayout = 2;
         cd.depthWrite = false;
-        cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, mod(spirv::colorline_vert)}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
+        cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, mod(spirv::colorline_vert())}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
         set.colorLines = targets.build(cd);
         cd.blend = true;
         set.groundLines = targets.build(cd);

@@ -6,12 +6,12 @@
 #include <set>
 
 #include "shaders/glsl_sources.hpp"
+#include "shaders/spirv.hpp"
 #include "render/scene/shader_variants.hpp"
 
 namespace pw::render {
 namespace {
 
-const char* const kSpacingSuffix[kSpacingVariants] = {"equal", "odd", "even"};
 
 // Which settings chose the spacing and control-shader variants.
 std::string describe(const TessSettings& t) {
@@ -91,69 +91,70 @@ struct Preprocessor {
 }  // namespace
 
 std::vector<PipelineUse> pipelinesInUse(const ShaderContext& c) {
-    const std::string sp = kSpacingSuffix[spacingVariant(c.tess.spacing)];
-    const bool fullLevels = levelsVariant(c.tess) == LevelsVariant::Full;
-    const bool fullVaryings = varyingsVariant(c.display.shading) == VaryingsVariant::Full;
-    const std::string tesc = fullLevels ? "tesc_full" : "tesc_fixed";
-    const std::string vary = fullVaryings ? "_full" : "";
+    // Stage names from the generated variant index (shaders/CMakeLists.txt), as the renderer picks them.
+    const size_t sp = size_t(spacingVariant(c.tess.spacing)), lv = size_t(levelsVariant(c.tess));
+    const size_t varyings = size_t(varyingsVariant(c.display.shading));
+    auto stage = [](const spirv::Blob& b) { return std::string(b.name); };
     const std::string why = describe(c.tess);
     const std::string shading = std::string(shadingName(c.display.shading)) + " shading";
     std::vector<PipelineUse> out;
-    auto surface = [&](const std::string& name, const std::string& prefix, const std::string& v) {
-        const std::string varyings = v.empty() ? "; lean varyings (position and normal: " + (name.starts_with("Wire") ? "wireframe" : shading) + ")"
-                                               : "; full varyings (UV, patch id, curvatures: " + shading + ")";
-        out.push_back({name, why + varyings,
-                       {{"vertex", "surface_vert"},
-                        {"tessellation control", prefix + tesc},
-                        {"tessellation evaluation", prefix + "tese_" + sp + v},
-                        {"fragment", "surface_frag" + v}}});
+    const bool tri = true, quad = false;
+    auto surface = [&](const std::string& title, bool triangles, size_t v) {
+        const std::string vary = v == size_t(VaryingsVariant::Lean)
+                                     ? "; lean varyings (position and normal: " + (title.starts_with("Wire") ? "wireframe" : shading) + ")"
+                                     : "; full varyings (UV, patch id, curvatures: " + shading + ")";
+        out.push_back({title, why + vary,
+                       {{"vertex", stage(spirv::surface_vert())},
+                        {"tessellation control", stage(triangles ? spirv::tri_surface_tesc(lv) : spirv::surface_tesc(lv))},
+                        {"tessellation evaluation", stage(triangles ? spirv::tri_surface_tese(sp, v, 0) : spirv::surface_tese(sp, v, 0))},
+                        {"fragment", stage(spirv::surface_frag(v))}}});
     };
-    if (c.windows) surface("Surface (quad windows, 16 points)", "surface_", vary);
-    if (c.triangles) surface("Surface (Bézier triangles, 10 points)", "tri_surface_", vary);
+    const size_t lean = size_t(VaryingsVariant::Lean);
+    if (c.windows) surface("Surface (quad windows, 16 points)", quad, varyings);
+    if (c.triangles) surface("Surface (Bézier triangles, 10 points)", tri, varyings);
     if (c.display.showWireframe) {
-        if (c.windows) surface("Wireframe (quad windows)", "surface_", "");
-        if (c.triangles) surface("Wireframe (Bézier triangles)", "tri_surface_", "");
+        if (c.windows) surface("Wireframe (quad windows)", quad, lean);
+        if (c.triangles) surface("Wireframe (Bézier triangles)", tri, lean);
     }
-    auto normals = [&](const std::string& name, const std::string& prefix) {
-        out.push_back({name, why,
-                       {{"vertex", "surface_vert"},
-                        {"tessellation control", prefix + "surface_" + tesc},
-                        {"tessellation evaluation", prefix + "points_tese_" + sp},
-                        {"geometry", "normals_geom"},
-                        {"fragment", "line_frag"}}});
+    auto normals = [&](const std::string& title, bool triangles) {
+        out.push_back({title, why,
+                       {{"vertex", stage(spirv::surface_vert())},
+                        {"tessellation control", stage(triangles ? spirv::tri_surface_tesc(lv) : spirv::surface_tesc(lv))},
+                        {"tessellation evaluation", stage(triangles ? spirv::tri_points_tese(sp, 0) : spirv::points_tese(sp, 0))},
+                        {"geometry", stage(spirv::normals_geom())},
+                        {"fragment", stage(spirv::line_frag())}}});
     };
-    if (c.display.showNormals && c.windows && c.geometryShader) normals("Normal vectors (point mode)", "");
-    if (c.display.showNormals && c.triangles && c.geometryShader) normals("Normal vectors (Bézier triangles, point mode)", "tri_");
+    if (c.display.showNormals && c.windows && c.geometryShader) normals("Normal vectors (point mode)", quad);
+    if (c.display.showNormals && c.triangles && c.geometryShader) normals("Normal vectors (Bézier triangles, point mode)", tri);
     char levels[96];
     std::snprintf(levels, sizeof levels, "isoline domain: outer level 0 = lines (%g), outer level 1 = segments (%g)",
                   double(c.tess.isolineLevels[0]), double(c.tess.isolineLevels[1]));
     const std::string isoWhy = levels + std::string(" under partitioning ") + std::string(spacingName(c.tess.spacing));
     if (c.display.showIsocurves && c.windows)
         out.push_back({"Isocurves (isoline domain, 16 points)", isoWhy,
-                       {{"vertex", "surface_vert"},
-                        {"tessellation control", "isocurve_tesc"},
-                        {"tessellation evaluation", "isocurve_tese_" + sp},
-                        {"fragment", "line_frag"}}});
+                       {{"vertex", stage(spirv::surface_vert())},
+                        {"tessellation control", stage(spirv::isocurve_tesc())},
+                        {"tessellation evaluation", stage(spirv::isocurve_tese(sp))},
+                        {"fragment", stage(spirv::line_frag())}}});
     if (c.curves)
         out.push_back({"Bézier curves (isoline domain, 4 points)", isoWhy + "; one line per curve",
-                       {{"vertex", "surface_vert"},
-                        {"tessellation control", "curve_tesc"},
-                        {"tessellation evaluation", "curve_tese_" + sp},
-                        {"fragment", "line_frag"}}});
-    static const char* const kDomain[] = {"quad", "tri", "iso"};
+                       {{"vertex", stage(spirv::surface_vert())},
+                        {"tessellation control", stage(spirv::curve_tesc())},
+                        {"tessellation evaluation", stage(spirv::curve_tese(sp))},
+                        {"fragment", stage(spirv::line_frag())}}});
     for (size_t i = 0; i < c.domainPanes.size(); ++i) {
         const auto [kind, spacing] = c.domainPanes[i];
-        const std::string dom = std::string("domain_tese_") + kDomain[int(kind)] + "_" + kSpacingSuffix[spacingVariant(spacing)];
+        const size_t dk = size_t(kind), ds = size_t(spacingVariant(spacing));
         std::string name = "Domain view: " + std::string(domainName(kind)) + ", " + std::string(spacingName(spacing));
         if (c.domainPanes.size() > 1) name += " (pane " + std::to_string(i + 1) + ")";
         out.push_back({name,
                        "the evaluation shader outputs gl_TessCoord; partitioning " + std::string(spacingName(spacing)) +
                            (spacing == Spacing::Pow2 ? " (equal spacing, levels rounded up to powers of two)" : ""),
-                       {{"vertex", "domain_vert"},
-                        {"tessellation control", "domain_tesc"},
-                        {"tessellation evaluation", dom},
-                        {"tessellation evaluation (vertex dots)", dom + "_points"},
-                        {"fragment", "line_frag"}}});
+                       {{"vertex", stage(spirv::domain_vert())},
+                        {"tessellation control", stage(spirv::domain_tesc())},
+                        {"tessellation evaluation", stage(spirv::domain_tese(dk, ds, 0))},
+                        {"tessellation evaluation (vertex dots)", stage(spirv::domain_tese(dk, ds, spirv::domain_tese_output_points))},
+                        {"fragment", stage(spirv::line_frag())}}});
     }
     return out;
 }

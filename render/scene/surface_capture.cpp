@@ -50,19 +50,12 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
     // Pipelines on first use: vertex, the frame's control shader, the capture evaluation shader
     // (plain, or displaced by the height map).
     if (!captureWindows[slot]) {
-        static const spirv::Blob* const windows[2][kSpacingVariants] = {
-            {&spirv::surface_tese_equal_capture, &spirv::surface_tese_odd_capture, &spirv::surface_tese_even_capture},
-            {&spirv::surface_tese_equal_capture_disp, &spirv::surface_tese_odd_capture_disp, &spirv::surface_tese_even_capture_disp}};
-        static const spirv::Blob* const triangles[2][kSpacingVariants] = {
-            {&spirv::tri_surface_tese_equal_capture, &spirv::tri_surface_tese_odd_capture, &spirv::tri_surface_tese_even_capture},
-            {&spirv::tri_surface_tese_equal_capture_disp, &spirv::tri_surface_tese_odd_capture_disp,
-             &spirv::tri_surface_tese_even_capture_disp}};
-        const bool full = plan.levels == LevelsVariant::Full;
-        OwnedShaderModule vert(dev_.device(), makeModule(dev_, spirv::surface_vert));
-        OwnedShaderModule tesc(dev_.device(), makeModule(dev_, full ? spirv::surface_tesc_full : spirv::surface_tesc_fixed));
-        OwnedShaderModule tese(dev_.device(), makeModule(dev_, *windows[disp][plan.variant]));
-        OwnedShaderModule ttesc(dev_.device(), makeModule(dev_, full ? spirv::tri_surface_tesc_full : spirv::tri_surface_tesc_fixed));
-        OwnedShaderModule ttese(dev_.device(), makeModule(dev_, *triangles[disp][plan.variant]));
+        const size_t levels = size_t(plan.levels), spacing = size_t(plan.variant), capture = spirv::surface_tese_varyings_capture;
+        OwnedShaderModule vert(dev_.device(), makeModule(dev_, spirv::surface_vert()));
+        OwnedShaderModule tesc(dev_.device(), makeModule(dev_, spirv::surface_tesc(levels)));
+        OwnedShaderModule tese(dev_.device(), makeModule(dev_, spirv::surface_tese(spacing, capture, size_t(disp))));
+        OwnedShaderModule ttesc(dev_.device(), makeModule(dev_, spirv::tri_surface_tesc(levels)));
+        OwnedShaderModule ttese(dev_.device(), makeModule(dev_, spirv::tri_surface_tese(spacing, capture, size_t(disp))));
         PipelineDesc pd;
         pd.tess = true;
         pd.rasterizerDiscard = true;
