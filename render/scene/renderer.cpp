@@ -10,6 +10,7 @@
 #include <glm/matrix.hpp>
 
 #include "render/scene/adaptive_bounds.hpp"
+#include "render/scene/frame_passes.hpp"
 #include "core/eval/displacement.hpp"
 #include "core/base/point_upload.hpp"
 #include "render/vk/buffers.hpp"
@@ -204,7 +205,6 @@ FrameStats Renderer::render(const RenderOptions& opt) {
     const auto t0 = std::chrono::steady_clock::now();
     const VkRect2D area = paneRect(opt, target_.extent());
     const VkExtent2D ext = area.extent;  // the pane's size: aspect, pixel sizes
-    const TessSettings& ts = opt.tess;
     const DisplaySettings& ds = opt.display;
 
     // Step 1: frame uniforms, shader variants, batching.
@@ -242,36 +242,12 @@ FrameStats Renderer::render(const RenderOptions& opt) {
     vkCmdSetScissor(cmd, 0, 1, &scissor);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.layout, 0, 1, &m.set, 0, nullptr);
 
-    const int variant = plan.variant;
-    const LevelsVariant levels = plan.levels;
-    const VaryingsVariant varyings = varyingsVariant(ds.shading);
-    const uint32_t budget = plan.budget, perDraw = plan.perDraw;
-    const std::vector<uint8_t>* bounds = plan.bounds();
-    gpu::DrawPush push;
-    const SurfacePipelines& fam = pipes_.tess[m.displaced ? 1 : 0];
-
-    // Step 3: the surface (statistics cover this pass only).
-    if (opt.plainMesh) {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.mesh[size_t(varyings)]);
-        push.drawMode = gpu::kDrawPlainMesh;
-        vkCmdPushConstants(cmd, pipes_.layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
-        recordPlainMesh(cmd, m.mesh);
-        stats.draws = m.mesh.indexCount ? 1 : 0;
-    } else {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fam.surface[surfaceIndex(variant, levels, varyings)]);
-        stats.draws = recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, push, bounds, budget);
-        stats.patches = m.scene.windowCount;
-        if (m.scene.triangleCount) {  // Bézier triangles after the windows, inside the same statistics
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fam.triSurface[surfaceIndex(variant, levels, varyings)]);
-            stats.draws += recordTriangleDraws(cmd, pipes_.layout, m.scene, perDraw, push);
-            stats.patches += m.scene.triangleCount;
-        }
-    }
+    // Step 3: the surface (statistics cover this pass only), then the overlays (FramePasses).
+    FramePasses::Frame frame{cmd, dev_, opt, plan, m, pipes_, pipes_.tess[m.displaced ? 1 : 0], varyingsVariant(ds.shading), stats};
+    FramePasses::surface(frame);
     // Step 4: overlays, after the statistics query ends (outside rendering, see stats.hpp).
-    // Curves count as overlays: the statistics are the surface's triangles.
-    const bool ground = opt.groundGridStep > 0.0 && std::isfinite(opt.groundGridStep);
-    const bool anyOverlay =
-        ds.showWireframe || ds.showNormals || ds.showBoundaries || ds.showGrid || ds.showIsocurves || ds.showCombs || m.scene.curveCount || ground;
+    bool anyOverlay = false;
+    for (const FramePasses::Pass& pass : FramePasses::overlays()) anyOverlay = anyOverlay || pass.wanted(frame);
     if (anyOverlay) {
         target_.pauseRendering(cmd);
         m.queries->statsEnd(cmd);
@@ -280,121 +256,8 @@ FrameStats Renderer::render(const RenderOptions& opt) {
         vkCmdSetScissor(cmd, 0, 1, &scissor);
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.layout, 0, 1, &m.set, 0, nullptr);
     }
-    const VkDeviceSize zero = 0;
-    if (ground) {  // behind the surface where the surface is nearer (depth test, no depth write)
-        if (!m.ground.buffer || m.groundStep != opt.groundGridStep || m.groundZUp != opt.camera.zUp) {
-            const std::vector<float> v = groundGridVertices(opt.groundGridStep, opt.camera.zUp);
-            m.ground = uploadStatic(dev_, v, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);  // no frame reads the old one: render() waits for its own submission
-            m.groundVertexCount = uint32_t(v.size() / 7);
-            m.groundStep = opt.groundGridStep;
-            m.groundZUp = opt.camera.zUp;
-        }
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.groundLines);
-        vkCmdPushConstants(cmd, pipes_.layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
-        vkCmdBindVertexBuffers(cmd, 0, 1, m.ground.buffer.ptr(), &zero);
-        vkCmdDraw(cmd, m.groundVertexCount, 1, 0, 0);
-        ++stats.draws;
-    }
-    if (ds.showWireframe && !opt.plainMesh) {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fam.wire[overlayIndex(variant, levels)]);
-        gpu::DrawPush wp;
-        wp.drawMode = gpu::kDrawFlatColour;
-        wp.color = {0.08f, 0.09f, 0.12f, 1.0f};
-        stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, wp, bounds, budget);
-        if (m.scene.triangleCount) {
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fam.triWire[overlayIndex(variant, levels)]);
-            stats.draws += recordTriangleDraws(cmd, pipes_.layout, m.scene, perDraw, wp);
-        }
-    }
-    if (ds.showNormals && !opt.plainMesh && fam.normals[overlayIndex(variant, levels)]) {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fam.normals[overlayIndex(variant, levels)]);
-        gpu::DrawPush np;
-        np.drawMode = gpu::kDrawFlatColour;  // an overlay: the control shader counts culled patches once, in the surface pass
-        np.color = {0.2f, 0.9f, 1.0f, 1.0f};
-        stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perDraw, np, bounds, budget);
-        if (m.scene.triangleCount && fam.triNormals[overlayIndex(variant, levels)]) {
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fam.triNormals[overlayIndex(variant, levels)]);
-            stats.draws += recordTriangleDraws(cmd, pipes_.layout, m.scene, perDraw, np);
-        }
-    }
-    // The isoline domain: isoparametric curves of every window (two passes: along u, along v), then
-    // the document's Bézier curves.
-    if (ds.showIsocurves && !opt.plainMesh && m.scene.windowCount) {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.isocurves[size_t(variant)]);
-        gpu::DrawPush ip;
-        ip.color = {0.35f, 0.95f, 0.45f, 1.0f};
-        // A window draws lines x (segments + 1) <= 64 x 65 evaluation vertices.
-        const uint32_t lines = uint32_t(std::ceil(std::clamp(ts.isolineLevels[0], 1.0f, 64.0f)));
-        const uint32_t perIso = budget == 0 ? UINT32_MAX : std::max(1u, budget / (65u * lines));
-        for (uint32_t dir : {0u, 1u}) {
-            ip.isoDirection = dir;
-            stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perIso, ip, nullptr, budget);
-        }
-    }
-    if (m.scene.curveCount) {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.curves[size_t(variant)]);
-        gpu::DrawPush cp;
-        cp.color = {0.95f, 0.35f, 0.25f, 1.0f};
-        stats.draws += recordCurveDraws(cmd, pipes_.layout, m.scene, cp, budget);
-    }
-    // Curvature combs: teeth, then the envelope through their tips, on every curve, on the isocurve
-    // overlay's lines, and on the five isocurves crossing the selected join on either side.
-    if (ds.showCombs && !opt.plainMesh) {
-        gpu::DrawPush kp;
-        const uint32_t lines = uint32_t(std::ceil(std::clamp(ts.isolineLevels[0], 1.0f, 64.0f)));
-        const uint32_t perIso = budget == 0 ? UINT32_MAX : std::max(1u, budget / (65u * lines));
-        const Join* graph = opt.combJoin >= 0 && size_t(opt.combJoin) < m.joins.size() ? &m.joins[size_t(opt.combJoin)] : nullptr;
-        for (uint32_t mode : {gpu::kDrawCombTeeth, gpu::kDrawCombEnvelope}) {
-            kp.drawMode = mode;
-            kp.color = mode == gpu::kDrawCombTeeth ? glm::vec4(0.95f, 0.5f, 0.85f, 1.0f) : glm::vec4(1.0f, 0.8f, 0.95f, 1.0f);
-            if (m.scene.curveCount) {
-                vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.combs);
-                stats.draws += recordCurveDraws(cmd, pipes_.layout, m.scene, kp, budget);
-            }
-            if ((ds.showIsocurves || graph) && m.scene.windowCount) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.isoCombs);
-            if (ds.showIsocurves && m.scene.windowCount)
-                for (uint32_t dir : {0u, 1u}) {
-                    kp.isoDirection = dir;
-                    stats.draws += recordSurfaceDraws(cmd, pipes_.layout, m.scene, perIso, kp, nullptr, budget);
-                }
-            if (graph) {  // the isocurves across the seam: along u for a u0/u1 edge, along v for v0/v1
-                const auto across = [](Edge e) { return e == Edge::U0 || e == Edge::U1 ? 0u : 1u; };
-                kp.isoDirection = across(graph->edgeA) | 2u;
-                stats.draws += recordWindowDraw(cmd, pipes_.layout, m.scene, graph->patchA, kp);
-                kp.isoDirection = across(graph->edgeB) | 2u;
-                stats.draws += recordWindowDraw(cmd, pipes_.layout, m.scene, graph->patchB, kp);
-            }
-        }
-    }
-    if (ds.showBoundaries && m.overlays.boundaryVertexCount) {
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.colorLines);
-        vkCmdPushConstants(cmd, pipes_.layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
-        vkCmdBindVertexBuffers(cmd, 0, 1, m.overlays.boundaryVerts.buffer.ptr(), &zero);
-        vkCmdDraw(cmd, m.overlays.boundaryVertexCount, 1, 0, 0);
-        ++stats.draws;
-    }
-    if (ds.showGrid && m.scene.pointCount) {
-        gpu::DrawPush gp;
-        gp.color = {0.95f, 0.75f, 0.2f, 1.0f};
-        vkCmdBindVertexBuffers(cmd, 0, 1, m.scene.pool.buffer.ptr(), &zero);
-        if (m.overlays.gridIndexCount) {
-            vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.gridLines);
-            vkCmdPushConstants(cmd, pipes_.layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(gp), &gp);
-            vkCmdBindIndexBuffer(cmd, m.overlays.gridIndices.buffer, 0, VK_INDEX_TYPE_UINT32);
-            vkCmdDrawIndexed(cmd, m.overlays.gridIndexCount, 1, 0, 0, 0);
-        }
-        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.gridPoints);
-        gp.drawMode = gpu::kDrawGridPoints;
-        gp.color = {0.1f, 0.1f, 0.1f, 1.0f};
-        vkCmdPushConstants(cmd, pipes_.layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(gp), &gp);
-        if (m.scene.shownPointCount) {  // only the points of shown items (gl_VertexIndex is still the pool index)
-            vkCmdBindIndexBuffer(cmd, m.scene.shownPoints.buffer, 0, VK_INDEX_TYPE_UINT32);
-            vkCmdDrawIndexed(cmd, m.scene.shownPointCount, 1, 0, 0, 0);
-        } else {
-            vkCmdDraw(cmd, m.scene.pointCount, 1, 0, 0);
-        }
-        stats.draws += 2;
-    }
+    for (const FramePasses::Pass& pass : FramePasses::overlays())
+        if (pass.wanted(frame)) pass.record(frame);
     target_.endRendering(cmd);
     if (!anyOverlay) m.queries->statsEnd(cmd);
     m.queries->timestampEnd(cmd);

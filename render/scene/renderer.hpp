@@ -85,6 +85,7 @@ public:
     double modelSize() const { return modelSize_; }
 
 private:
+    friend class FramePasses;  // render/scene/frame_passes: what a frame records, pass by pass
     struct Impl;
     struct FramePlan;
     // Writes the frame uniforms for `opt` drawn into `area` and plans the draws.
