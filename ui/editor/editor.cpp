@@ -144,6 +144,27 @@ void Editor::runCommand(const std::vector<std::string>& words, bool guarded) {
     wake();
 }
 
+EditorSnapshot Editor::snapshot() const {
+    return {.session = session_,
+            .teaching = teaching_,
+            .report = report_,
+            .dialogs = dialogs_,
+            .shaders = shaders_,
+            .palette = palette_,
+            .continuity = continuity_,
+            .join = join_,
+            .usedMask = usedMask_,
+            .windowSize = window_.windowSize(),
+            .framebufferSize = window_.framebufferSize(),
+            .frame = frameCount_,
+            .mode = mode_,
+            .hovered = hovered_,
+            .help = showHelp_,
+            .axisGizmo = axisGizmoRect_,
+            .viewArea = viewArea_,
+            .layout = layout()};
+}
+
 void Editor::previewCommand(const std::vector<std::string>& words) {
     try {
         commands_.preview(session_, *this, words);
@@ -320,7 +341,7 @@ void Editor::drawFrame() {
     const auto t4 = clock::now();
     report_.times = {ms(t0, t1), dragMs_, ms(t1, t2), ms(t2, t3), ms(t3, t4), ms(t0, t4)};
     ++frameCount_;
-    if (trace_.enabled()) trace_.write(*this);
+    if (trace_.enabled()) trace_.write(snapshot());
 }
 
 }  // namespace pw::ui

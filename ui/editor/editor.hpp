@@ -56,6 +56,38 @@ int runEditorBench(const EditorBenchOptions& options);
 
 enum class Interaction { None, Orbit, Pan, BoxSelect, PendingDrag, DragPoints, Grab };
 
+// The join tool (J, ui/editor/join_tool.cpp): the join runs at once as a preview; the panel changes
+// its continuity, keeps it or takes it back.
+struct JoinToolState {
+    bool on = false;
+    std::optional<PatchEdge> first, hover;  // the first pick; the open edge under the mouse
+    bool preview = false;                    // the join a-b is applied, waiting for Apply or Cancel
+    PatchEdge a, b;
+    Continuity continuity = Continuity::C1;
+    uint64_t version = 0;  // the session's version right after the preview ran
+};
+
+// What the editor holds and shows after a frame, read-only, for observers outside it (the test
+// trace, ui/editor/test_trace): valid until the next frame.
+struct EditorSnapshot {
+    const EditSession& session;
+    const Teaching& teaching;
+    const FrameReport& report;
+    const Dialogs& dialogs;
+    const ShaderPanel& shaders;
+    const CommandPalette& palette;
+    const ContinuityWatch& continuity;
+    const JoinToolState& join;
+    const std::vector<bool>& usedMask;  // pool points some shown item uses
+    std::array<int, 2> windowSize, framebufferSize;
+    uint64_t frame = 0;
+    Interaction mode = Interaction::None;
+    int hovered = -1;  // the control point under the mouse
+    bool help = false;  // the F1 window is open
+    std::array<float, 4> axisGizmo, viewArea;  // window pixels: x, y, w, h
+    PanelLayout layout;
+};
+
 class Editor final : public CommandHost, public PanelContext, public WindowClient {
 public:
     Editor(AppWindow& window, const std::string& file);
@@ -63,9 +95,9 @@ public:
     int run();
     // The editor benchmark (ui/editor/editor_bench.cpp): drives this editor's own frames.
     int runBench(const EditorBenchOptions& options);
+    EditorSnapshot snapshot() const;
 
 private:
-    friend class TestTrace;  // reads the state it writes (ui/editor/test_trace.cpp)
 
     // editor.cpp: documents, commands, autosave, the frame
     void setDocument(Document doc, const std::string& path);
@@ -140,16 +172,7 @@ private:
     DragView dragView() const;            // the interaction pane as the drag sees it
     std::array<int, 2> viewSize() const;  // the interaction pane's width and height in pixels, at least 1
     void drawViewportOverlays();
-    // join_tool.cpp: join by picking (J). The join runs at once as a preview; the panel changes its
-    // continuity, keeps it or takes it back.
-    struct JoinTool {
-        bool on = false;
-        std::optional<PatchEdge> first, hover;  // the first pick; the open edge under the mouse
-        bool preview = false;                    // the join a-b is applied, waiting for Apply or Cancel
-        PatchEdge a, b;
-        Continuity continuity = Continuity::C1;
-        uint64_t version = 0;  // the session's version right after the preview ran
-    };
+    // join_tool.cpp: join by picking (J), its state a JoinToolState.
     void setJoinTool(bool on);
     void joinToolInput(double mx, double my, bool overUi);
     void joinPreview(Continuity c);   // runs `join a b c`
@@ -182,7 +205,7 @@ private:
     int hovered_ = -1;
     int hoveredGizmo_ = -1;
     std::array<float, 4> axisGizmoRect_{0, 0, 0, 0};  // where the axis gizmo went last frame (x, y, w, h; the test trace)
-    JoinTool join_;
+    JoinToolState join_;
     bool grabAfterShortcut_ = false;  // the last shortcut was Shift+D: grab the copy
     double pressX_ = 0, pressY_ = 0;
     bool pressShift_ = false;

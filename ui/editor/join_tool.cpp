@@ -21,7 +21,7 @@ constexpr double kEdgePickPx = 10.0;
 
 void Editor::setJoinTool(bool on) {
     if (join_.preview) endJoinPreview(true);
-    join_ = JoinTool{};
+    join_ = JoinToolState{};
     join_.on = on;
     if (on) status("Join: click an open edge of the first patch");
     wake();

@@ -29,26 +29,26 @@ TestTrace::~TestTrace() {
 
 void TestTrace::beginFrame() { items_.clear(); }
 
-void TestTrace::write(const Editor& e) {
+void TestTrace::write(const EditorSnapshot& e) {
     nlohmann::json j;
-    const auto [ww, wh] = e.window_.windowSize();
-    const auto [fw, fh] = e.window_.framebufferSize();
-    const Document& doc = e.session_.doc;
-    const Selection& sel = e.session_.sel;
-    const Teaching& teaching = e.teaching_;
-    const render::FrameStats& stats = e.report_.stats;
-    j["frame"] = e.frameCount_;
+    const auto [ww, wh] = e.windowSize;
+    const auto [fw, fh] = e.framebufferSize;
+    const Document& doc = e.session.doc;
+    const Selection& sel = e.session.sel;
+    const Teaching& teaching = e.teaching;
+    const render::FrameStats& stats = e.report.stats;
+    j["frame"] = e.frame;
     j["window"] = {ww, wh};
     j["framebuffer"] = {fw, fh};
-    j["file"] = e.session_.path();
-    j["modified"] = e.session_.isModified();
-    j["mode"] = int(e.mode_);
-    j["undoSteps"] = e.session_.history().size();
-    j["canUndo"] = e.session_.history().canUndo();
-    j["hovered"] = e.hovered_;
+    j["file"] = e.session.path();
+    j["modified"] = e.session.isModified();
+    j["mode"] = int(e.mode);
+    j["undoSteps"] = e.session.history().size();
+    j["canUndo"] = e.session.history().canUndo();
+    j["hovered"] = e.hovered;
     j["selection"] = sel.points;
     j["selectedPatch"] = sel.patch;
-    j["recoverable"] = e.dialogs_.recoverable.size();
+    j["recoverable"] = e.dialogs.recoverable.size();
     j["modal"] = items_.modal;
     j["textInput"] = ImGui::GetIO().WantTextInput;
     j["presentation"] = teaching.presentation;
@@ -65,22 +65,22 @@ void TestTrace::write(const Editor& e) {
                                {"expectedPrimitives", want.primitives}});
     }
     j["viewPanes"] = nlohmann::json::array();
-    const auto viewRects = teaching.viewPaneRects(e.layout());
+    const auto viewRects = teaching.viewPaneRects(e.layout);
     for (size_t i = 0; teaching.viewSplit() && i < viewRects.size() && i < teaching.viewPanes.size(); ++i)
         j["viewPanes"].push_back({{"spacing", spacingName(teaching.viewPanes[i].tess.spacing)},
                                   {"level", teaching.paneLevel[i]},
                                   {"rect", viewRects[i]},
                                   {"triangles", teaching.viewPanes[i].stats.triangles()}});
     j["activePane"] = teaching.activePane;
-    j["layout"] = {{"domainWindow", teaching.windowRect}, {"domainLabels", teaching.labelBoxes}, {"axisGizmo", e.axisGizmoRect_},
-                   {"left", e.layout().left}, {"right", e.layout().right}};
-    j["shaders"] = {{"open", e.shaders_.open}, {"shown", e.shaders_.shown}, {"inUse", e.shaders_.variantsInUse}};
+    j["layout"] = {{"domainWindow", teaching.windowRect}, {"domainLabels", teaching.labelBoxes}, {"axisGizmo", e.axisGizmo},
+                   {"left", e.layout.left}, {"right", e.layout.right}};
+    j["shaders"] = {{"open", e.shaders.open}, {"shown", e.shaders.shown}, {"inUse", e.shaders.variantsInUse}};
     j["items"] = items_.items;
-    j["unsavedPrompt"] = e.dialogs_.unsavedPromptOpen();
-    j["palette"] = e.palette_.open;
-    j["help"] = e.showHelp_;
-    j["error"] = e.dialogs_.errorMessage();
-    j["frameMs"] = e.report_.frameMs;
+    j["unsavedPrompt"] = e.dialogs.unsavedPromptOpen();
+    j["palette"] = e.palette.open;
+    j["help"] = e.help;
+    j["error"] = e.dialogs.errorMessage();
+    j["frameMs"] = e.report.frameMs;
     j["renderMs"] = stats.wallMs;
     j["gpuMs"] = stats.gpuMs;
     j["triangles"] = stats.triangles();
@@ -89,28 +89,28 @@ void TestTrace::write(const Editor& e) {
     j["joins"] = doc.joins.size();
     j["patchIdx"] = nlohmann::json::array();
     for (const Patch& p : doc.patches) j["patchIdx"].push_back(p.idx);
-    j["cursor"] = {e.session_.cursor.x, e.session_.cursor.y, e.session_.cursor.z};
+    j["cursor"] = {e.session.cursor.x, e.session.cursor.y, e.session.cursor.z};
     auto edgeJson = [](const std::optional<PatchEdge>& pe) { return pe ? nlohmann::json(patchEdgeName(*pe)) : nlohmann::json(nullptr); };
-    j["joinTool"] = {{"on", e.join_.on}, {"first", edgeJson(e.join_.first)}, {"hover", edgeJson(e.join_.hover)},
-                     {"preview", e.join_.preview}, {"continuity", std::string(continuityName(e.join_.continuity))}};
+    j["joinTool"] = {{"on", e.join.on}, {"first", edgeJson(e.join.first)}, {"hover", edgeJson(e.join.hover)},
+                     {"preview", e.join.preview}, {"continuity", std::string(continuityName(e.join.continuity))}};
     j["surfaces"] = doc.surfaces.size();
     j["curves"] = doc.curves.size();
     j["bezierTriangles"] = doc.triangles.size();
     j["selectedTriangle"] = sel.triangle;
     j["isocurves"] = doc.display.showIsocurves;
-    j["maxConstraintResidual"] = e.mode_ == Interaction::None ? maxConstraintResidual(doc) : -1.0;
+    j["maxConstraintResidual"] = e.mode == Interaction::None ? maxConstraintResidual(doc) : -1.0;
     // The live continuity readout (what the Continuity panel and the orange seams show).
-    j["joinsOutOfTolerance"] = e.continuity_.outOfTolerance();
+    j["joinsOutOfTolerance"] = e.continuity.outOfTolerance();
     nlohmann::json curv = nlohmann::json::array();
-    for (const JoinContinuity& c : e.continuity_.report()) curv.push_back(c.curvatureDeviationPct);
+    for (const JoinContinuity& c : e.continuity.report()) curv.push_back(c.curvatureDeviationPct);
     j["curvatureDeviationPct"] = std::move(curv);
     j["combs"] = doc.display.showCombs;
     // Where the points are on screen, in the pane the mouse works in (the whole window unless split).
-    const std::array<float, 4> pane = teaching.viewSplit() ? e.viewArea_ : std::array<float, 4>{0.0f, 0.0f, float(ww), float(wh)};
-    const auto proj = projectPoints(e.cam_, doc.points, int(pane[2]), int(pane[3]));
+    const std::array<float, 4> pane = teaching.viewSplit() ? e.viewArea : std::array<float, 4>{0.0f, 0.0f, float(ww), float(wh)};
+    const auto proj = projectPoints(e.session.camera, doc.points, int(pane[2]), int(pane[3]));
     nlohmann::json pts = nlohmann::json::array();
     for (size_t i = 0; i < proj.size(); ++i) {
-        if (proj[i] && i < e.usedMask_.size() && e.usedMask_[i])
+        if (proj[i] && i < e.usedMask.size() && e.usedMask[i])
             pts.push_back({proj[i]->x + pane[0], proj[i]->y + pane[1]});
         else
             pts.push_back(nullptr);

@@ -11,7 +11,7 @@
 
 namespace pw::ui {
 
-class Editor;
+struct EditorSnapshot;
 
 class TestTrace {
 public:
@@ -22,7 +22,7 @@ public:
     bool enabled() const { return !path_.empty(); }
 
     void beginFrame();                // forgets the last frame's items and modal
-    void write(const Editor& editor);  // after the frame: the whole state, written atomically
+    void write(const EditorSnapshot& editor);  // after the frame: the whole state, written atomically
 
 private:
     std::string path_;
