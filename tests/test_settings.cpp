@@ -111,7 +111,10 @@ TEST(Settings, TheFileReaderAcceptsExactlyTheRowsRange) {
     const fs::path dir = test::freshTempDir("settings");
     for (const Setting& row : settings()) {
         if (row.kind != SettingKind::Number) continue;
+        // Displacement settings are saved with a height map only (DESIGN §11): their range is checked below.
+        const bool savedAlone = !row.key.starts_with("displacement.");
         for (double edge : {row.min, row.max}) {
+            if (!savedAlone) break;
             EditSession s;
             std::vector<std::string> words = {"set", std::string(row.key)};
             for (int i = 0; i < row.count; ++i) words.push_back(formatSettingValues(row, {edge})[0]);

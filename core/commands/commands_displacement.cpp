@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "core/commands/command_table.hpp"
+#include "core/model/settings.hpp"
 #include "core/eval/displacement.hpp"
 #include "core/base/errors.hpp"
 
@@ -23,9 +24,10 @@ std::string documentMapPath(const std::filesystem::path& file, const std::string
     return abs.string();
 }
 
+// A scale or bias: the settings row's range (core/model/settings), as the panel and the reader take it.
 float heightNumber(const std::string& word, const char* what) {
     const double v = commandNumber(word, what);
-    if (std::abs(v) > 1e9) throw EditError(std::string(what) + " must lie within ±1e9, got " + word);
+    if (auto problem = settingProblem(setting("displacement.scale"), {v})) throw EditError(std::string(what) + ": " + *problem);
     return float(v);
 }
 

@@ -175,8 +175,8 @@ DisplacementSettings readDisplacement(const Reader& r, const json& v, const std:
     r.object(v, path);
     DisplacementSettings d;
     r.optional(v, path, "map", [&](const json& x, const std::string& p) { d.map = r.string(x, p); });
-    r.optional(v, path, "scale", [&](const json& x, const std::string& p) { d.scale = r.floatValue(x, p, -1e9, 1e9); });
-    r.optional(v, path, "bias", [&](const json& x, const std::string& p) { d.bias = r.floatValue(x, p, -1e9, 1e9); });
+    r.optional(v, path, "scale", [&](const json& x, const std::string& p) { readSetting(r, x, p, "displacement.scale", d.scale); });
+    r.optional(v, path, "bias", [&](const json& x, const std::string& p) { readSetting(r, x, p, "displacement.bias", d.bias); });
     r.optional(v, path, "mapping", [&](const json& x, const std::string& p) {
         d.mapping = r.named<DisplacementMapping>(x, p, parseDisplacementMapping, "patch, planar");
     });

@@ -151,6 +151,16 @@ std::vector<Setting> makeSettings() {
     t.push_back(std::move(light));
     t.push_back(numberRow("display.background", "Background", "Viewport clear colour", "", -1e9, 1e9, SettingWidget::Colour, "%.2f",
                           [](Document& d) -> std::array<float, 3>& { return d.display.background; }));
+    // Displacement (the Displacement panel, `displacement` in files; DESIGN §11).
+    t.push_back(numberRow("displacement.scale", "Scale", "Height of the map's white above its black (model units)", "model units", -1e9,
+                          1e9, SettingWidget::Drag, "%.4g", [](Document& d) -> float& { return d.displacement.scale; }));
+    t.push_back(numberRow("displacement.bias", "Bias", "Height of the map's black (model units)", "model units", -1e9, 1e9,
+                          SettingWidget::Drag, "%.4g", [](Document& d) -> float& { return d.displacement.bias; }));
+    t.push_back(choiceRow<DisplacementMapping>(
+        "displacement.mapping", "Mapping",
+        "Planar: the map lies over the ground plane (the model's bounds), crack-free across every seam.\n"
+        "Patch parameters: each patch gets the whole map; a net's patches tile it",
+        {"patch", "planar"}, {"patch parameters", "planar"}, [](Document& d) -> DisplacementMapping& { return d.displacement.mapping; }));
     return t;
 }
 

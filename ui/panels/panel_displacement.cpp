@@ -38,16 +38,10 @@ void drawDisplacementPanel(PanelContext& ctx) {
     ImGui::SameLine();
     if (ImGui::Button("Remove")) return ctx.runCommand({"displacement", "off"});
     ImGui::TextWrapped("%s", d.map.c_str());
+    settingRow(ctx, "displacement.scale", "displacement.scale");
+    settingRow(ctx, "displacement.bias");
+    settingRow(ctx, "displacement.mapping");
     const float speed = float(std::max(modelSize(s.doc), 1e-6) * 1e-3);
-    commitEdit(ctx, ImGui::DragFloat("Scale", &d.scale, speed, -1e6f, 1e6f, "%.4g"), "Displacement scale");
-    traceItem("displacement.scale");
-    tip("Height of the map's white above its black (model units)");
-    commitEdit(ctx, ImGui::DragFloat("Bias", &d.bias, speed, -1e6f, 1e6f, "%.4g"), "Displacement bias");
-    tip("Height of the map's black (model units)");
-    const char* mappings[] = {"patch parameters", "planar"};
-    enumCombo(ctx, "Mapping", d.mapping, mappings, "Displacement mapping");
-    tip("Planar: the map lies over the ground plane (the model's bounds), crack-free across every seam.\n"
-        "Patch parameters: each patch gets the whole map; a net's patches tile it");
     if (std::optional<DisplacementOverride>* own = selectedOwn(s)) {
         bool has = own->has_value();
         if (ImGui::Checkbox("Own scale and bias", &has)) {

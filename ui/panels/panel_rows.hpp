@@ -4,7 +4,6 @@
 
 #include <imgui.h>
 
-#include <span>
 #include <string_view>
 
 #include "ui/panels/panel_context.hpp"
@@ -16,15 +15,6 @@ namespace pw::ui {
 inline void commitEdit(PanelContext& ctx, bool changed, const char* step) {
     if (changed) ctx.settingsChanged();
     if (ImGui::IsItemDeactivatedAfterEdit() || (changed && !ImGui::IsItemActive())) ctx.session().commit(step);
-}
-
-// A combo whose entries are the values of enum E in order; a pick is one undo step `step`.
-template <class E>
-void enumCombo(PanelContext& ctx, const char* label, E& value, std::span<const char* const> labels, const char* step) {
-    int i = int(value);
-    if (!ImGui::Combo(label, &i, labels.data(), int(labels.size()))) return;
-    value = E(i);
-    ctx.session().commit(step);
 }
 
 // The setting `key` as its widget (slider, drag, colour, checkbox or combo) with its label and
