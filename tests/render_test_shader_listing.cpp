@@ -68,7 +68,8 @@ TEST(ShaderListing, DefinesSwitchBranchesOnAndOff) {
     const auto points = render::shaderListing("points_tese_odd");
     ASSERT_TRUE(surface && points);
     EXPECT_EQ(surface->defines, std::vector<std::string>{"-DSPACING=fractional_odd_spacing"});
-    EXPECT_EQ(points->defines, (std::vector<std::string>{"-DSPACING=fractional_odd_spacing", "-DPOINT_MODE"}));
+    // A family's own defines come first, then its axes' (shaders/CMakeLists.txt).
+    EXPECT_EQ(points->defines, (std::vector<std::string>{"-DPOINT_MODE", "-DSPACING=fractional_odd_spacing"}));
     const std::string tri = "layout(quads, SPACING, ccw) in;", pts = "layout(quads, SPACING, ccw, point_mode) in;";
     ASSERT_TRUE(findLine(*surface, tri) && findLine(*surface, pts));
     EXPECT_TRUE(findLine(*surface, tri)->active);
@@ -177,7 +178,8 @@ TEST(ShaderListing, CommandPrintsTheStagesInUse) {
     RunResult r = runCommand(bin + " shaders --stage tese --spacing fractional_even --active-only");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("surface_tese_even: surface.tese, glslc --target-env=vulkan1.3 -O -DSPACING=fractional_even_spacing"),
-              std::string::npos) << r.output;
+              std::string::npos)
+        << r.output;
     EXPECT_NE(r.output.find("layout(quads, SPACING, ccw) in;"), std::string::npos);
     EXPECT_EQ(r.output.find("point_mode"), std::string::npos);  // switched off, left out
     EXPECT_EQ(r.output.find("-- vertex"), std::string::npos);
