@@ -7,24 +7,24 @@
 #include <cstdlib>
 #include <fstream>
 #include <functional>
-#include <map>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
-#include "core/model/camera_math.hpp"
 #include "app/commands.hpp"
-#include "render/vk/device.hpp"
-#include "core/io/document_io.hpp"
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
-#include "core/mesh/mesh_tessellate.hpp"
 #include "core/construct/model_builders.hpp"
 #include "core/construct/terrain.hpp"
-#include "render/targets/offscreen_target.hpp"
+#include "core/io/document_io.hpp"
+#include "core/mesh/mesh_tessellate.hpp"
+#include "core/model/camera_math.hpp"
 #include "render/scene/renderer.hpp"
+#include "render/targets/offscreen_target.hpp"
+#include "render/vk/device.hpp"
 
 #ifdef PATCHWORK_HAVE_EDITOR
 #include "ui/editor/editor.hpp"
@@ -40,9 +40,9 @@ struct BenchArgs {
     std::string json, device;
     bool validation = false;
     bool msaa = false;
-    bool editor = false;  // the editor's frame while dragging, against a bare render
-    std::string file;     // editor: the document (default: the built-in teapot)
-    float level = 16.0f;  // editor: uniform level
+    bool editor = false;            // the editor's frame while dragging, against a bare render
+    std::string file;               // editor: the document (default: the built-in teapot)
+    float level = 16.0f;            // editor: uniform level
     std::string size = "1280x720";  // editor: window size
 };
 
@@ -52,9 +52,9 @@ struct Scene {
     float level = 16;
     bool adaptive = false;
     bool grid = false;
-    bool bigOnly = false;  // only on real GPUs unless named
+    bool bigOnly = false;    // only on real GPUs unless named
     std::string comparedTo;  // adaptive: the uniform scene with the same view
-    bool terrain = false;  // the terrain's own table (runTerrain), only when named
+    bool terrain = false;    // the terrain's own table (runTerrain), only when named
 };
 
 std::vector<Scene> allScenes() {
@@ -135,9 +135,15 @@ nlohmann::json runTerrain(render::Renderer& renderer, int frames) {
     far.target = {0.0, 0.0, 0.0};
     far.distance = 420.0;
     far.pitchDeg = 50.0;
-    struct Row { const char* name; bool nearView, adaptive, cull; };
-    const Row rows[] = {{"near uniform 64", true, false, false}, {"near adaptive", true, true, false}, {"near adaptive+cull", true, true, true},
-                        {"far adaptive", false, true, false}, {"far adaptive+cull", false, true, true}};
+    struct Row {
+        const char* name;
+        bool nearView, adaptive, cull;
+    };
+    const Row rows[] = {{"near uniform 64", true, false, false},
+                        {"near adaptive", true, true, false},
+                        {"near adaptive+cull", true, true, true},
+                        {"far adaptive", false, true, false},
+                        {"far adaptive+cull", false, true, true}};
     std::vector<render::RenderOptions> variants;
     for (const Row& r : rows) {
         render::RenderOptions o = base;
@@ -159,9 +165,16 @@ nlohmann::json runTerrain(render::Renderer& renderer, int frames) {
         const double fewer = m[i].triangles ? double(m[0].triangles) / double(m[i].triangles) : 0.0;
         std::printf("%-20s %9.2f %9.2f %11llu %8u %8.1fx\n", rows[i].name, m[i].wall, m[i].gpu, (unsigned long long)m[i].triangles,
                     s.patchesCulled, fewer);
-        j.push_back({{"view", rows[i].name}, {"near", rows[i].nearView}, {"adaptive", rows[i].adaptive}, {"cull", rows[i].cull},
-                     {"wall_ms", m[i].wall}, {"gpu_ms", m[i].gpu}, {"triangles", m[i].triangles}, {"patches_culled", s.patchesCulled},
-                     {"displaced_edges", s.displacedEdges}, {"fewer_triangles_than_uniform", fewer}});
+        j.push_back({{"view", rows[i].name},
+                     {"near", rows[i].nearView},
+                     {"adaptive", rows[i].adaptive},
+                     {"cull", rows[i].cull},
+                     {"wall_ms", m[i].wall},
+                     {"gpu_ms", m[i].gpu},
+                     {"triangles", m[i].triangles},
+                     {"patches_culled", s.patchesCulled},
+                     {"displaced_edges", s.displacedEdges},
+                     {"fewer_triangles_than_uniform", fewer}});
     }
     std::fflush(stdout);
     return j;
@@ -187,10 +200,10 @@ int runBench(const BenchArgs& a) {
     render::OffscreenTarget target(dev, W, H, a.msaa);
     target.setReadback(false);
     render::Renderer renderer(dev, target);
-    std::cout << "device: " << dev.name() << ", 1280x720" << (target.samples() > 1 ? " 4x MSAA" : " 1 sample") << ", " << a.frames << " frames per scene, medians; pipelines created in "
-              << renderer.pipelines().createMs << " ms\n";
-    std::printf("%-20s %9s %9s %9s %11s %8s %7s | %9s %8s %7s\n", "scene", "wall ms", "submit", "gpu ms", "triangles",
-                "Mtri/s", "draws", "plain ms", "Mtri/s", "ratio");
+    std::cout << "device: " << dev.name() << ", 1280x720" << (target.samples() > 1 ? " 4x MSAA" : " 1 sample") << ", " << a.frames
+              << " frames per scene, medians; pipelines created in " << renderer.pipelines().createMs << " ms\n";
+    std::printf("%-20s %9s %9s %9s %11s %8s %7s | %9s %8s %7s\n", "scene", "wall ms", "submit", "gpu ms", "triangles", "Mtri/s", "draws",
+                "plain ms", "Mtri/s", "ratio");
 
     bool warmed = false;
     nlohmann::json out = nlohmann::json::array();
@@ -234,8 +247,9 @@ int runBench(const BenchArgs& a) {
         const Measure& t = measured[0];
         trianglesByScene[sc.name] = t.triangles;
         const double mtri = t.gpu > 0 ? double(t.triangles) / (t.gpu * 1000.0) : 0.0;
-        nlohmann::json j{{"scene", sc.name}, {"patches", expandPatches(doc).size()}, {"wall_ms", t.wall},
-                         {"submit_wait_ms", t.submit}, {"gpu_ms", t.gpu}, {"triangles", t.triangles},
+        nlohmann::json j{{"scene", sc.name},   {"patches", expandPatches(doc).size()},
+                         {"wall_ms", t.wall},  {"submit_wait_ms", t.submit},
+                         {"gpu_ms", t.gpu},    {"triangles", t.triangles},
                          {"mtri_per_s", mtri}, {"draws", t.draws}};
         double plainMs = 0, plainMtri = 0, ratio = 0;
         if (!sc.adaptive) {
@@ -243,8 +257,11 @@ int runBench(const BenchArgs& a) {
             plainMs = pm.gpu;
             plainMtri = pm.gpu > 0 ? double(pm.triangles) / (pm.gpu * 1000.0) : 0.0;
             ratio = plainMtri > 0 ? mtri / plainMtri : 0.0;
-            j["plain"] = {{"wall_ms", pm.wall}, {"submit_wait_ms", pm.submit}, {"gpu_ms", pm.gpu},
-                          {"triangles", pm.triangles}, {"mtri_per_s", plainMtri}};
+            j["plain"] = {{"wall_ms", pm.wall},
+                          {"submit_wait_ms", pm.submit},
+                          {"gpu_ms", pm.gpu},
+                          {"triangles", pm.triangles},
+                          {"mtri_per_s", plainMtri}};
             j["throughput_ratio_tess_over_plain"] = ratio;
             renderer.setPlainMesh(TriangleMesh{});
         } else if (trianglesByScene.count(sc.comparedTo) && t.triangles > 0) {
@@ -252,18 +269,19 @@ int runBench(const BenchArgs& a) {
         }
         out.push_back(j);
         if (sc.adaptive)
-            std::printf("%-20s %9.2f %9.2f %9.2f %11llu %8.2f %7u | %9s %8s %7s  (%.1fx fewer triangles than %s)\n",
-                        sc.name.c_str(), t.wall, t.submit, t.gpu, (unsigned long long)t.triangles, mtri, t.draws, "-", "-",
-                        "-", trianglesByScene.count(sc.comparedTo) && t.triangles ? double(trianglesByScene[sc.comparedTo]) / t.triangles : 0.0,
+            std::printf("%-20s %9.2f %9.2f %9.2f %11llu %8.2f %7u | %9s %8s %7s  (%.1fx fewer triangles than %s)\n", sc.name.c_str(),
+                        t.wall, t.submit, t.gpu, (unsigned long long)t.triangles, mtri, t.draws, "-", "-", "-",
+                        trianglesByScene.count(sc.comparedTo) && t.triangles ? double(trianglesByScene[sc.comparedTo]) / t.triangles : 0.0,
                         sc.comparedTo.c_str());
         else
-            std::printf("%-20s %9.2f %9.2f %9.2f %11llu %8.2f %7u | %9.2f %8.2f %7.2f\n", sc.name.c_str(), t.wall, t.submit,
-                        t.gpu, (unsigned long long)t.triangles, mtri, t.draws, plainMs, plainMtri, ratio);
+            std::printf("%-20s %9.2f %9.2f %9.2f %11llu %8.2f %7u | %9.2f %8.2f %7.2f\n", sc.name.c_str(), t.wall, t.submit, t.gpu,
+                        (unsigned long long)t.triangles, mtri, t.draws, plainMs, plainMtri, ratio);
         std::fflush(stdout);
     }
     if (!a.json.empty()) {
-        writeFileAtomic(a.json, nlohmann::json{{"device", dev.name()}, {"width", W}, {"height", H}, {"frames", a.frames},
-                                               {"scenes", out}}.dump(2) + "\n");
+        writeFileAtomic(
+            a.json,
+            nlohmann::json{{"device", dev.name()}, {"width", W}, {"height", H}, {"frames", a.frames}, {"scenes", out}}.dump(2) + "\n");
     }
     if (dev.validationEnabled() && render::Device::validationMessageCount() > 0) {
         std::cerr << "patchwork bench: " << render::Device::validationMessageCount() << " Vulkan validation message(s)\n";
@@ -275,9 +293,11 @@ int runBench(const BenchArgs& a) {
 }  // namespace
 
 void registerBenchCommand(CLI::App& app, Action& run) {
-    const auto [cmd, a] = addSubcommand<BenchArgs>(app, run, "bench", "Benchmark the GPU tessellation pipeline against a plain pre-tessellated mesh", runBench);
+    const auto [cmd, a] = addSubcommand<BenchArgs>(
+        app, run, "bench", "Benchmark the GPU tessellation pipeline against a plain pre-tessellated mesh", runBench);
     cmd->add_option("--frames", a->frames, "Measured frames per scene (default 20)");
-    cmd->add_option("--scene", a->scenes, "Scene(s) to run: teapot16, teapot64, grid32, grid32-adaptive8px, grid128, terrain (only when named: "
+    cmd->add_option("--scene", a->scenes,
+                    "Scene(s) to run: teapot16, teapot64, grid32, grid32-adaptive8px, grid128, terrain (only when named: "
                     "near and far, culling off and on)");
     cmd->add_option("--json", a->json, "Write the results as JSON");
     cmd->add_option("--device", a->device, "Vulkan device: substring of its name");

@@ -10,10 +10,10 @@
 #include "app/commands.hpp"
 #include "app/displacement_args.hpp"
 #include "app/displayed_mesh.hpp"
-#include "core/io/formats.hpp"
-#include "core/io/document_io.hpp"
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
+#include "core/io/document_io.hpp"
+#include "core/io/formats.hpp"
 
 namespace pw::app {
 
@@ -40,15 +40,16 @@ int runConvert(const ConvertOptions& opt) {
     }
     saveDocument(doc, opt.output, options, displayed ? &*displayed : nullptr);
     if (!opt.quiet)
-        std::cout << "wrote " << opt.output << " (" << doc.patches.size() << " patches, " << doc.surfaces.size()
-                  << " surfaces, " << doc.points.size() << " points, " << doc.joins.size() << " joins)\n";
+        std::cout << "wrote " << opt.output << " (" << doc.patches.size() << " patches, " << doc.surfaces.size() << " surfaces, "
+                  << doc.points.size() << " points, " << doc.joins.size() << " joins)\n";
     return 0;
 }
 
 }  // namespace
 
 void registerConvertCommand(CLI::App& app, Action& run) {
-    const auto [cmd, opt] = addSubcommand<ConvertOptions>(app, run, "convert", "Convert a document between formats, chosen by the file extensions", runConvert);
+    const auto [cmd, opt] =
+        addSubcommand<ConvertOptions>(app, run, "convert", "Convert a document between formats, chosen by the file extensions", runConvert);
     cmd->add_option("input", opt->input, "Input (" + formatList(FormatUse::Load, ", ") + ")")->required();
     cmd->add_option("output", opt->output, "Output (" + formatList(FormatUse::Save, ", ") + "); replaced atomically")->required();
     cmd->add_flag("-q,--quiet", opt->quiet, "Print nothing on success");

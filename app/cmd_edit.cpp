@@ -8,12 +8,12 @@
 #include <utility>
 #include <vector>
 
-#include "core/io/formats.hpp"
-#include "core/commands/command_table.hpp"
 #include "app/commands.hpp"
-#include "core/io/document_io.hpp"
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
+#include "core/commands/command_table.hpp"
+#include "core/io/document_io.hpp"
+#include "core/io/formats.hpp"
 
 namespace pw::app {
 
@@ -34,8 +34,8 @@ public:
 int runEdit(const EditOptions& opt) {
     const FileFormat* format = formatOf(opt.output);
     if (!format || !format->document || !format->save)
-        throw OutputError(opt.output, "unknown file type '" + lowerExtension(opt.output) + "'; Patchwork writes " +
-                                          formatList(FormatUse::Document));
+        throw OutputError(opt.output,
+                          "unknown file type '" + lowerExtension(opt.output) + "'; Patchwork writes " + formatList(FormatUse::Document));
     EditSession session;
     if (!opt.input.empty()) session.open(opt.input);
     const CommandTable table = makeCommandTable();
@@ -47,17 +47,19 @@ int runEdit(const EditOptions& opt) {
     saveDocument(out, opt.output, session.exportOptions);
     if (!opt.quiet)
         std::cout << "wrote " << opt.output << " (" << out.patches.size() << " patches, " << out.surfaces.size() << " nets, "
-                  << out.triangles.size() << " triangles, " << out.curves.size() << " curves, " << out.points.size()
-                  << " points, " << out.joins.size() << " joins)\n";
+                  << out.triangles.size() << " triangles, " << out.curves.size() << " curves, " << out.points.size() << " points, "
+                  << out.joins.size() << " joins)\n";
     return 0;
 }
 
 }  // namespace
 
 void registerEditCommand(CLI::App& app, Action& run) {
-    const auto [cmd, opt] = addSubcommand<EditOptions>(app, run, "edit", "Run editor commands without a window (the names of the F1 help and the palette)", runEdit);
+    const auto [cmd, opt] = addSubcommand<EditOptions>(
+        app, run, "edit", "Run editor commands without a window (the names of the F1 help and the palette)", runEdit);
     cmd->add_option("input", opt->input, "Document to start from (" + formatList(FormatUse::Load, ", ") + "); default: an empty document");
-    cmd->add_option("-o,--output", opt->output, "Where to write the result (" + formatList(FormatUse::Document, ", ") + "; by extension)")->required();
+    cmd->add_option("-o,--output", opt->output, "Where to write the result (" + formatList(FormatUse::Document, ", ") + "; by extension)")
+        ->required();
     cmd->add_option("--run", opt->script, "Script file: one command per line or ';'-separated, '#' starts a comment");
     cmd->add_option("-c,--commands", opt->commands, "Commands, ';'-separated (run after --run)");
     cmd->add_flag("-q,--quiet", opt->quiet, "Print nothing on success");

@@ -1,8 +1,8 @@
 // `patchwork export FILE -o OUT [--tess N | --as-displayed [--size WxH] [--device NAME]]
 // [--primitives surfaces|patches|single] [--cage]`: tessellates the document and writes a glTF 2.0
 // file (.gltf with an embedded buffer, or .glb) that also carries the editable patches, or OBJ; or
-// exact STEP. --as-displayed writes the triangles the GPU draws for the document's view (app/displayed_mesh). Options not given come from FILE's own export options when it
-// is a Patchwork glTF (so re-exporting it without flags writes the same file), else the defaults.
+// exact STEP. --as-displayed writes the triangles the GPU draws for the document's view (app/displayed_mesh). Options not given come from
+// FILE's own export options when it is a Patchwork glTF (so re-exporting it without flags writes the same file), else the defaults.
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -13,12 +13,12 @@
 #include "app/displacement_args.hpp"
 #include "app/displayed_mesh.hpp"
 #include "app/level_args.hpp"
-#include "core/io/formats.hpp"
-#include "core/io/document_io.hpp"
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
-#include "core/io/gltf_export.hpp"
 #include "core/base/limits.hpp"
+#include "core/io/document_io.hpp"
+#include "core/io/formats.hpp"
+#include "core/io/gltf_export.hpp"
 #include "core/io/obj_export.hpp"
 #include "core/io/step_export.hpp"
 #include "render/vk/device.hpp"
@@ -96,13 +96,14 @@ int runStepExport(const ExportArgs& args) {
     LoadReport report;
     const Document doc = loadForExport(args, report);
     if (doc.displacement.active())
-        std::cerr << "patchwork export: STEP holds the exact patches without their displacement (a height map is not a surface STEP can carry)\n";
+        std::cerr
+            << "patchwork export: STEP holds the exact patches without their displacement (a height map is not a surface STEP can carry)\n";
     StepExportOptions options;
     options.schema = args.schema == "ap242" ? StepSchema::AP242 : StepSchema::AP214;
     const StepExportStats stats = exportStep(doc, args.output, options);
     std::cout << "wrote " << args.output << ": " << stats.faces << " exact faces in " << stats.shells
-              << (stats.shells == 1 ? " shell, " : " shells, ") << stats.sharedEdges << " shared edges, " << stats.freeEdges
-              << " free, " << stats.degenerateEdges << " collapsed, " << stats.bytes << " bytes (" << (args.schema == "ap242" ? "AP242" : "AP214")
+              << (stats.shells == 1 ? " shell, " : " shells, ") << stats.sharedEdges << " shared edges, " << stats.freeEdges << " free, "
+              << stats.degenerateEdges << " collapsed, " << stats.bytes << " bytes (" << (args.schema == "ap242" ? "AP242" : "AP214")
               << ")\n";
     return 0;
 }
@@ -116,10 +117,11 @@ int runObjExport(const ExportArgs& args) {
     std::filesystem::path mtl = args.output;
     mtl.replace_extension(".mtl");
     std::cout << "wrote " << args.output << " and " << mtl.filename().string() << ": " << stats.triangles << " triangles, "
-              << stats.positions << " positions, " << stats.normals << " normals, " << stats.uvs << " texture coordinates, "
-              << stats.groups << " groups";
+              << stats.positions << " positions, " << stats.normals << " normals, " << stats.uvs << " texture coordinates, " << stats.groups
+              << " groups";
     if (stats.lineSegments) std::cout << ", " << stats.lineSegments << " curve segments";
-    std::cout << ", " << stats.bytes << " bytes (" << (stats.asDisplayed ? std::string("as displayed") : "level " + std::to_string(stats.level)) << ")\n";
+    std::cout << ", " << stats.bytes << " bytes ("
+              << (stats.asDisplayed ? std::string("as displayed") : "level " + std::to_string(stats.level)) << ")\n";
     return 0;
 }
 
@@ -140,8 +142,9 @@ int runGltfExport(const ExportArgs& args) {
     std::cout << "wrote " << args.output << ": " << stats.triangles << " triangles, " << stats.vertices << " vertices";
     if (options.cage) std::cout << ", " << stats.cageSegments << " cage segments";
     if (stats.curveSegments) std::cout << ", " << stats.curveSegments << " curve segments";
-    std::cout << ", " << stats.bytes << " bytes (" << (options.asDisplayed ? std::string("as displayed") : "level " + std::to_string(stats.level)) << ", "
-              << stats.primitives << (stats.primitives == 1 ? " primitive" : " primitives") << " ("
+    std::cout << ", " << stats.bytes << " bytes ("
+              << (options.asDisplayed ? std::string("as displayed") : "level " + std::to_string(stats.level)) << ", " << stats.primitives
+              << (stats.primitives == 1 ? " primitive" : " primitives") << " ("
               << (options.primitives == MeshGrouping::Surfaces  ? "one per connected surface"
                   : options.primitives == MeshGrouping::Patches ? "one per patch"
                                                                 : "all in one")
@@ -154,8 +157,8 @@ int runExport(const ExportArgs& args) {
     const FileFormat* format = formatOf(args.output);
     if (format && format->save && !format->mesh && !format->document) {
         if (args.asDisplayedGiven && args.asDisplayed) {
-            std::cerr << "patchwork export: --as-displayed applies to tessellated exports (" << formatList(FormatUse::Mesh, ", ")
-                      << "); " << format->name << " is exact\n";
+            std::cerr << "patchwork export: --as-displayed applies to tessellated exports (" << formatList(FormatUse::Mesh, ", ") << "); "
+                      << format->name << " is exact\n";
             return 2;
         }
         return runStepExport(args);  // exact: no level
@@ -165,8 +168,7 @@ int runExport(const ExportArgs& args) {
         return 2;
     }
     if (args.tessGiven && (args.tess < 1 || args.tess > limits::kMaxExportLevel)) {
-        std::cerr << "patchwork export: --tess must be an integer from 1 to " << limits::kMaxExportLevel << " (got "
-                  << args.tess << ")\n";
+        std::cerr << "patchwork export: --tess must be an integer from 1 to " << limits::kMaxExportLevel << " (got " << args.tess << ")\n";
         return 2;
     }
     const int rc = ext == ".obj" ? runObjExport(args) : runGltfExport(args);
@@ -180,15 +182,17 @@ int runExport(const ExportArgs& args) {
 }  // namespace
 
 void registerExportCommand(CLI::App& app, Action& run) {
-    const auto [cmd, args] = addSubcommand<ExportArgs>(app, run, "export", "Write a document as glTF 2.0 (.gltf, .glb) or OBJ (.obj), tessellated, or STEP (.step, .stp), exact", runExport);
+    const auto [cmd, args] = addSubcommand<ExportArgs>(
+        app, run, "export", "Write a document as glTF 2.0 (.gltf, .glb) or OBJ (.obj), tessellated, or STEP (.step, .stp), exact",
+        runExport);
     cmd->add_option("file", args->input, "Document to export (" + formatList(FormatUse::Load, ", ") + ")")->required();
     cmd->add_option("-o,--output", args->output,
                     "Output file: .glb (binary glTF), .gltf (JSON glTF, embedded buffer), .obj (+ .mtl beside it), .step or "
                     ".stp (exact surfaces)")
         ->required();
-    cmd->add_option("--tess", args->tess,
-                    "Tessellation level per patch side, 1.." + std::to_string(limits::kMaxExportLevel) +
-                        " (default: the document's level)");
+    cmd->add_option(
+        "--tess", args->tess,
+        "Tessellation level per patch side, 1.." + std::to_string(limits::kMaxExportLevel) + " (default: the document's level)");
     cmd->add_option("--primitives", args->primitives,
                     "surfaces: one welded primitive per connected surface (default); patches: one per patch, each with "
                     "its own vertices; single: one for everything");

@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "app/commands.hpp"
-#include "core/io/formats.hpp"
 #include "core/base/errors.hpp"
+#include "core/io/document_io.hpp"
+#include "core/io/formats.hpp"
 #include "core/solve/constraint_solver.hpp"
 #include "core/solve/continuity_report.hpp"
-#include "core/io/document_io.hpp"
 
 namespace pw::app {
 
@@ -69,25 +69,28 @@ int runInfo(const InfoOptions& opt) {
 
     if (opt.json) {
         using nlohmann::json;
-        json j{{"file", opt.file},
-               {"name", doc.name},
-               {"points", doc.points.size()},
-               {"patches", doc.patches.size()},
-               {"surfaces", doc.surfaces.size()},
-               {"triangles", doc.triangles.size()},
-               {"curves", doc.curves.size()},
-               {"windows", windows.size()},
-               {"joins", {{"total", doc.joins.size()}, {"C0", byKind[0]}, {"C1", byKind[1]}, {"G1", byKind[2]}, {"C2", byKind[3]}, {"G2", byKind[4]}}},
-               {"modelSize", bounds.empty ? 0.0 : bounds.diagonal()},
-               {"maxConstraintResidual", residual},
-               {"tolerances", {{"position", doc.tolerances.position}, {"angleDeg", doc.tolerances.angleDeg}, {"curvaturePct", doc.tolerances.curvaturePct}}},
-               {"joinsOutOfTolerance", outOfTolerance},
-               {"largest",
-                {{"c0Gap", worst.c0Gap},
-                 {"c1Residual", worst.c1Residual},
-                 {"c2Residual", worst.c2Residual},
-                 {"normalAngleDeg", worst.normalAngleDeg},
-                 {"curvatureDeviationPct", worst.curvatureDeviationPct}}}};
+        json j{
+            {"file", opt.file},
+            {"name", doc.name},
+            {"points", doc.points.size()},
+            {"patches", doc.patches.size()},
+            {"surfaces", doc.surfaces.size()},
+            {"triangles", doc.triangles.size()},
+            {"curves", doc.curves.size()},
+            {"windows", windows.size()},
+            {"joins",
+             {{"total", doc.joins.size()}, {"C0", byKind[0]}, {"C1", byKind[1]}, {"G1", byKind[2]}, {"C2", byKind[3]}, {"G2", byKind[4]}}},
+            {"modelSize", bounds.empty ? 0.0 : bounds.diagonal()},
+            {"maxConstraintResidual", residual},
+            {"tolerances",
+             {{"position", doc.tolerances.position}, {"angleDeg", doc.tolerances.angleDeg}, {"curvaturePct", doc.tolerances.curvaturePct}}},
+            {"joinsOutOfTolerance", outOfTolerance},
+            {"largest",
+             {{"c0Gap", worst.c0Gap},
+              {"c1Residual", worst.c1Residual},
+              {"c2Residual", worst.c2Residual},
+              {"normalAngleDeg", worst.normalAngleDeg},
+              {"curvatureDeviationPct", worst.curvatureDeviationPct}}}};
         if (!bounds.empty)
             j["bounds"] = {{"min", {bounds.min.x, bounds.min.y, bounds.min.z}}, {"max", {bounds.max.x, bounds.max.y, bounds.max.z}}};
         else
@@ -123,8 +126,8 @@ int runInfo(const InfoOptions& opt) {
     std::cout << "  triangles   " << doc.triangles.size() << "  (cubic Bézier triangles)\n";
     std::cout << "  curves      " << doc.curves.size() << "  (cubic Bézier curves)\n";
     std::cout << "  windows     " << windows.size() << "  (patches + surface windows)\n";
-    std::cout << "  joins       " << doc.joins.size() << "  (C0 " << byKind[0] << ", C1 " << byKind[1] << ", G1 " << byKind[2]
-              << ", C2 " << byKind[3] << ", G2 " << byKind[4] << ")\n";
+    std::cout << "  joins       " << doc.joins.size() << "  (C0 " << byKind[0] << ", C1 " << byKind[1] << ", G1 " << byKind[2] << ", C2 "
+              << byKind[3] << ", G2 " << byKind[4] << ")\n";
     if (bounds.empty)
         std::cout << "  bounds      (empty)\n";
     else
@@ -136,7 +139,8 @@ int runInfo(const InfoOptions& opt) {
     std::cout << "  largest seam normal angle " << fmt("%.3g", worst.normalAngleDeg) << " deg\n";
     std::cout << "  largest curvature dev.    " << fmt("%.3g", worst.curvatureDeviationPct) << " %  (C2/G2 joins)\n";
     std::cout << "  out of tolerance          " << outOfTolerance << " joins  (position " << fmt("%.3g", doc.tolerances.position)
-              << ", angle " << fmt("%.3g", doc.tolerances.angleDeg) << " deg, curvature " << fmt("%.3g", doc.tolerances.curvaturePct) << " %)\n";
+              << ", angle " << fmt("%.3g", doc.tolerances.angleDeg) << " deg, curvature " << fmt("%.3g", doc.tolerances.curvaturePct)
+              << " %)\n";
     std::cout << "  max constraint residual   " << fmt("%.3g", residual) << "  (" << fmt("%.3g", residual / size)
               << " x model size; edits keep it <= 1e-6)\n";
 
@@ -146,11 +150,11 @@ int runInfo(const InfoOptions& opt) {
             const Join& jn = doc.joins[c.join];
             char line[200];
             std::string out;
-            for (const std::string& n : failureNames(toleranceFailures(c, jn.continuity, doc.tolerances))) out += (out.empty() ? "" : ",") + n;
+            for (const std::string& n : failureNames(toleranceFailures(c, jn.continuity, doc.tolerances)))
+                out += (out.empty() ? "" : ",") + n;
             std::snprintf(line, sizeof line, "  %4zu  %5u %-4s  %5u %-4s  %-3s  %-4s %9.6g  %9.3g  %9.3g  %9.3g  %9.3g  %s\n", c.join,
-                          jn.patchA, std::string(edgeName(jn.edgeA)).c_str(), jn.patchB,
-                          std::string(edgeName(jn.edgeB)).c_str(), jn.reversed ? "yes" : "no",
-                          std::string(continuityName(jn.continuity)).c_str(), jn.alpha, c.c0Gap, c.c1Residual,
+                          jn.patchA, std::string(edgeName(jn.edgeA)).c_str(), jn.patchB, std::string(edgeName(jn.edgeB)).c_str(),
+                          jn.reversed ? "yes" : "no", std::string(continuityName(jn.continuity)).c_str(), jn.alpha, c.c0Gap, c.c1Residual,
                           c.normalAngleDeg, c.curvatureDeviationPct, out.empty() ? "-" : out.c_str());
             std::cout << line;
         }
@@ -161,12 +165,11 @@ int runInfo(const InfoOptions& opt) {
 }  // namespace
 
 void registerInfoCommand(CLI::App& app, Action& run) {
-    const auto [cmd, opt] = addSubcommand<InfoOptions>(app, run, "info", "Print counts, bounds, joins and measured continuity of a document", runInfo);
+    const auto [cmd, opt] =
+        addSubcommand<InfoOptions>(app, run, "info", "Print counts, bounds, joins and measured continuity of a document", runInfo);
     cmd->add_option("file", opt->file, "Document (" + formatList(FormatUse::Load, ", ") + ")")->required();
     cmd->add_flag("--json", opt->json, "Machine-readable output (JSON)");
-    cmd->add_option("--samples", opt->samples, "Samples per seam for the continuity report")
-        ->default_val(32)
-        ->check(CLI::Range(1, 4096));
+    cmd->add_option("--samples", opt->samples, "Samples per seam for the continuity report")->default_val(32)->check(CLI::Range(1, 4096));
     cmd->add_flag("--no-joins", opt->noJoins, "Omit the per-join table");
 }
 

@@ -14,8 +14,8 @@ void registerPresetsCommand(CLI::App& app, Action& run) {
         run = [] {
             for (const TessPreset& p : tessPresets()) {
                 const DomainCounts c = expectedDomainCounts(p.kind, p.levels, p.spacing);
-                std::cout << std::left << std::setw(36) << p.name << std::setw(34) << p.label << std::right << std::setw(4)
-                          << c.vertices << " vertices " << std::setw(4) << c.primitives << " primitives  " << p.note << "\n";
+                std::cout << std::left << std::setw(36) << p.name << std::setw(34) << p.label << std::right << std::setw(4) << c.vertices
+                          << " vertices " << std::setw(4) << c.primitives << " primitives  " << p.note << "\n";
             }
             std::cout << "Model presets in the editor: the notes' Bézier patch (16 control points, level 25) and the notes' "
                          "distance formula 64*saturate((d1-d)/(d1-d0)), d0 = 20, d1 = 100.\n";

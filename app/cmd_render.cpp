@@ -2,36 +2,35 @@
 // pipeline (offscreen Vulkan target) and writes a PNG, optionally with frame statistics as JSON.
 #include <array>
 #include <cmath>
-#include <nlohmann/json.hpp>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "app/commands.hpp"
+#include "app/domain_args.hpp"
+#include "app/level_args.hpp"
+#include "app/render_args.hpp"
+#include "core/base/errors.hpp"
+#include "core/base/file_io.hpp"
+#include "core/base/limits.hpp"
+#include "core/io/document_io.hpp"
 #include "core/io/formats.hpp"
 #include "core/model/camera_math.hpp"
-#include "app/commands.hpp"
-#include "render/vk/device.hpp"
-#include "core/io/document_io.hpp"
-#include "app/domain_args.hpp"
-#include "app/render_args.hpp"
 #include "render/figures/domain_figure.hpp"
 #include "render/figures/domain_figure_file.hpp"
 #include "render/figures/figure_vector.hpp"
-#include "core/base/errors.hpp"
-#include "core/base/file_io.hpp"
-#include "app/level_args.hpp"
-#include "core/base/limits.hpp"
 #include "render/figures/model_figure.hpp"
+#include "render/scene/renderer.hpp"
 #include "render/targets/offscreen_target.hpp"
 #include "render/targets/png_writer.hpp"
-#include "render/scene/renderer.hpp"
+#include "render/vk/device.hpp"
 
 namespace pw::app {
 
 namespace {
-
 
 [[noreturn]] void bad(const std::string& option, const std::string& what) { badOption("render", option, what); }
 float parseLevel(const std::string& option, const std::string& text) { return app::parseLevel("render", option, text); }
@@ -93,13 +92,20 @@ render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& do
         o.display.shading = *s;
     }
     for (const std::string& ov : splitList(a.overlay)) {
-        if (ov == "grid") o.display.showGrid = true;
-        else if (ov == "wire") o.display.showWireframe = true;
-        else if (ov == "normals") o.display.showNormals = true;
-        else if (ov == "boundaries") o.display.showBoundaries = true;
-        else if (ov == "isocurves") o.display.showIsocurves = true;
-        else if (ov == "combs") o.display.showCombs = true;
-        else if (ov != "none") bad("--overlay", "'" + ov + "' is not one of grid, wire, normals, boundaries, isocurves, combs, none");
+        if (ov == "grid")
+            o.display.showGrid = true;
+        else if (ov == "wire")
+            o.display.showWireframe = true;
+        else if (ov == "normals")
+            o.display.showNormals = true;
+        else if (ov == "boundaries")
+            o.display.showBoundaries = true;
+        else if (ov == "isocurves")
+            o.display.showIsocurves = true;
+        else if (ov == "combs")
+            o.display.showCombs = true;
+        else if (ov != "none")
+            bad("--overlay", "'" + ov + "' is not one of grid, wire, normals, boundaries, isocurves, combs, none");
     }
     const double aspect = double(width) / double(height);
     if (!a.view.empty()) {
@@ -135,10 +141,12 @@ int runDomainRender(const RenderArgs& a, const std::vector<render::DomainPane>& 
             const auto& p = panes[i];
             const DomainCounts want = expectedDomainCounts(p.kind, p.levels, p.spacing, float(dev.caps().maxTessLevel));
             const auto shown = render::shownCounts(stats[i], p);
-            said << "wrote " << a.output << " pane " << i + 1 << ": " << domainName(p.kind) << " " << spacingName(p.spacing)
-                      << ", " << shown[0] << " vertices, " << shown[1] << " primitives";
-            if (stats[i].valid) said << " (GPU: " << stats[i].primitives << " primitives, " << stats[i].vertices << " evaluations)";
-            else said << " (rules; the device has no pipeline statistics)";
+            said << "wrote " << a.output << " pane " << i + 1 << ": " << domainName(p.kind) << " " << spacingName(p.spacing) << ", "
+                 << shown[0] << " vertices, " << shown[1] << " primitives";
+            if (stats[i].valid)
+                said << " (GPU: " << stats[i].primitives << " primitives, " << stats[i].vertices << " evaluations)";
+            else
+                said << " (rules; the device has no pipeline statistics)";
             said << "\n";
             j["panes"].push_back({{"domain", domainName(p.kind)},
                                   {"spacing", spacingName(p.spacing)},
@@ -203,9 +211,8 @@ int runRender(const RenderArgs& a) {
         if (panes.empty()) {
             const render::FrameStats st = renderer.render(opt);
             out.stage(a.output, render::encodePng(a.output, w, h, target.pixels()));
-            said << "wrote " << a.output << " (" << w << "x" << h << ", " << dev.name() << "): " << st.triangles()
-                      << " triangles, " << st.patches << " patches (" << st.patchesCulled << " culled), " << st.draws
-                      << " draws, GPU " << st.gpuMs << " ms\n";
+            said << "wrote " << a.output << " (" << w << "x" << h << ", " << dev.name() << "): " << st.triangles() << " triangles, "
+                 << st.patches << " patches (" << st.patchesCulled << " culled), " << st.draws << " draws, GPU " << st.gpuMs << " ms\n";
             if (!a.stats.empty()) out.stage(a.stats, render::statsToJson(st) + "\n");
         } else {
             const render::LabelRaster labels;
@@ -216,8 +223,8 @@ int runRender(const RenderArgs& a) {
             j["device"] = dev.name();
             for (size_t i = 0; i < results.size(); ++i) {
                 const render::PaneResult& r = results[i];
-                said << "wrote " << a.output << " pane " << i + 1 << ": " << render::paneCaption(r.tess, r.stats.triangles())
-                          << ", GPU " << r.stats.gpuMs << " ms\n";
+                said << "wrote " << a.output << " pane " << i + 1 << ": " << render::paneCaption(r.tess, r.stats.triangles()) << ", GPU "
+                     << r.stats.gpuMs << " ms\n";
                 nlohmann::json p = render::statsJson(r.stats);
                 p["spacing"] = spacingName(r.tess.spacing);
                 p["outer"] = r.tess.outer;
@@ -248,21 +255,29 @@ void addRenderOptions(CLI::App* cmd, RenderArgs& a) {
     cmd->add_option("file", a.input, "Document (" + formatList(FormatUse::Load, ", ") + "); default: the built-in teapot");
     cmd->add_option("--size", a.size, "Image size WIDTHxHEIGHT (default 1280x720)");
     cmd->add_option("--tess", a.tess, "Uniform tessellation level 1..64 (all outer and inner levels)");
-    cmd->add_option("--outer", a.outer, "Four outer levels a,b,c,d (edges u0, v0, u1, v1), 1..64; with --domain tri three, isoline two (lines, segments)");
+    cmd->add_option("--outer", a.outer,
+                    "Four outer levels a,b,c,d (edges u0, v0, u1, v1), 1..64; with --domain tri three, isoline two (lines, segments)");
     cmd->add_option("--inner", a.inner, "Two inner levels a,b (along u, along v), 1..64; with --domain tri one");
     cmd->add_option("--spacing", a.spacing, "equal | fractional_odd | fractional_even | pow2");
     cmd->add_option("--adaptive", a.adaptive, "none | distance | screen | orientation");
     cmd->add_option("--target-px", a.targetPx, "Screen-space adaptive: pixels per segment (default 8)");
     cmd->add_option("--max-level", a.maxLevel, "Adaptive: largest level, 1..64");
     cmd->add_option("--shading", a.shading, "lit | normal | patch | uv | zebra | curvature | gauss | mean");
-    cmd->add_option("--overlay", a.overlay, "Comma-separated overlays: grid, wire, normals, boundaries, isocurves, combs (curvature combs on curves and isocurves)");
-    cmd->add_option("--comb-join", a.combJoin, "Draw the curvature graph across join J (combs on the isocurves crossing it; turns combs on)");
-    cmd->add_option("--isolines", a.isolines, "Isoline levels LINES,SEGMENTS for curves and the isocurve overlay (default: the document's, 2,16)");
+    cmd->add_option(
+        "--overlay", a.overlay,
+        "Comma-separated overlays: grid, wire, normals, boundaries, isocurves, combs (curvature combs on curves and isocurves)");
+    cmd->add_option("--comb-join", a.combJoin,
+                    "Draw the curvature graph across join J (combs on the isocurves crossing it; turns combs on)");
+    cmd->add_option("--isolines", a.isolines,
+                    "Isoline levels LINES,SEGMENTS for curves and the isocurve overlay (default: the document's, 2,16)");
     cmd->add_option("--view", a.view, "front | back | left | right | top | bottom | iso (framed to the model)");
     cmd->add_option("--stats", a.stats, "Write frame statistics (triangles, GPU time, ...) as JSON to this file");
     cmd->add_option("--domain", a.domain, "Draw the parametric domain instead: quad | tri | isoline (levels from --tess/--outer/--inner)");
-    cmd->add_option("--preset", a.preset, "Domain figure of the notes' factor sets: preset id(s), comma-separated (see `patchwork presets`)");
-    cmd->add_option("--compare", a.compare, "2-4 panes side by side, each a partitioning with an optional level: equal,fractional_odd:4.5 (model or domain figure)");
+    cmd->add_option("--preset", a.preset,
+                    "Domain figure of the notes' factor sets: preset id(s), comma-separated (see `patchwork presets`)");
+    cmd->add_option(
+        "--compare", a.compare,
+        "2-4 panes side by side, each a partitioning with an optional level: equal,fractional_odd:4.5 (model or domain figure)");
     cmd->add_option("--device", a.device, "Vulkan device: substring of its name");
     cmd->add_flag("--cull", a.cull, "Cull back-facing patches (conservative normal-cone test)");
     cmd->add_flag("--validation", a.validation, "Enable the Vulkan validation layer (also PATCHWORK_VALIDATION=1)");
@@ -271,7 +286,9 @@ void addRenderOptions(CLI::App* cmd, RenderArgs& a) {
 }
 
 void registerRenderCommand(CLI::App& app, Action& run) {
-    const auto [cmd, a] = addSubcommand<RenderArgs>(app, run, "render", "Render a document offscreen on the GPU tessellation pipeline to a PNG (domain figures also SVG, PDF)", runRender);
+    const auto [cmd, a] = addSubcommand<RenderArgs>(
+        app, run, "render", "Render a document offscreen on the GPU tessellation pipeline to a PNG (domain figures also SVG, PDF)",
+        runRender);
     addRenderOptions(cmd, *a);
     cmd->add_option("-o,--output", a->output, "Output PNG; a domain figure also .svg or .pdf (vector paths, one per triangle)")->required();
 }

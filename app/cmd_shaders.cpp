@@ -6,10 +6,10 @@
 #include <memory>
 
 #include "app/commands.hpp"
-#include "core/io/document_io.hpp"
 #include "app/domain_args.hpp"
 #include "app/level_args.hpp"
 #include "app/render_args.hpp"
+#include "core/io/document_io.hpp"
 #include "render/scene/shader_listing.hpp"
 
 namespace pw::app {
@@ -23,9 +23,11 @@ struct ShadersArgs {
 
 bool stageMatches(const std::string& stage, const std::string& filter) {
     if (filter.empty()) return true;
-    static const std::pair<const char*, const char*> kShort[] = {
-        {"vert", "vertex"}, {"tesc", "tessellation control"}, {"tese", "tessellation evaluation"},
-        {"geom", "geometry"}, {"frag", "fragment"}};
+    static const std::pair<const char*, const char*> kShort[] = {{"vert", "vertex"},
+                                                                 {"tesc", "tessellation control"},
+                                                                 {"tese", "tessellation evaluation"},
+                                                                 {"geom", "geometry"},
+                                                                 {"frag", "fragment"}};
     for (const auto& [s, full] : kShort)
         if (filter == s) return stage.starts_with(full);
     return stage.starts_with(filter);
@@ -86,7 +88,8 @@ int runShaders(const ShadersArgs& a) {
 }  // namespace
 
 void registerShadersCommand(CLI::App& app, Action& run) {
-    const auto [cmd, a] = addSubcommand<ShadersArgs>(app, run, "shaders", "Print the GLSL of the tessellation pipelines the given settings use, with their defines", runShaders);
+    const auto [cmd, a] = addSubcommand<ShadersArgs>(
+        app, run, "shaders", "Print the GLSL of the tessellation pipelines the given settings use, with their defines", runShaders);
     addRenderOptions(cmd, a->render);
     cmd->add_option("--stage", a->stage, "Only this stage: vert | tesc | tese | geom | frag");
     cmd->add_option("--variant", a->variant, "Print one compiled variant by name instead");

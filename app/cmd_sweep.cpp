@@ -13,18 +13,18 @@
 #include <regex>
 
 #include "app/commands.hpp"
-#include "core/io/document_io.hpp"
-#include "render/domain/domain_labels.hpp"
+#include "app/level_args.hpp"
+#include "app/render_args.hpp"
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
-#include "app/level_args.hpp"
 #include "core/construct/model_builders.hpp"
+#include "core/io/document_io.hpp"
+#include "render/domain/domain_labels.hpp"
+#include "render/figures/animation_writer.hpp"
 #include "render/figures/model_figure.hpp"
+#include "render/figures/sweep_figure.hpp"
 #include "render/targets/offscreen_target.hpp"
 #include "render/targets/png_writer.hpp"
-#include "render/figures/sweep_figure.hpp"
-#include "render/figures/animation_writer.hpp"
-#include "app/render_args.hpp"
 
 namespace pw::app {
 
@@ -138,8 +138,10 @@ int runSweep(const SweepArgs& a) {
         std::unique_ptr<render::AnimationEncoder> encoder;
         if (animation) encoder = std::make_unique<render::AnimationEncoder>(a.output, *animation, w, h, a.fps);
         render::renderSweep(dev, spec, [&](int k, const std::vector<uint8_t>& rgba) {
-            if (encoder) encoder->addFrame(rgba);
-            else out.stage((*names)(k), render::encodePng((*names)(k), spec.width, spec.height, rgba));
+            if (encoder)
+                encoder->addFrame(rgba);
+            else
+                out.stage((*names)(k), render::encodePng((*names)(k), spec.width, spec.height, rgba));
         });
         if (encoder) out.stage(a.output, encoder->finish());
         out.commit();
@@ -159,9 +161,13 @@ int runSweep(const SweepArgs& a) {
 }  // namespace
 
 void registerSweepCommand(CLI::App& app, Action& run) {
-    const auto [cmd, a] = addSubcommand<SweepArgs>(app, run, "sweep", "Animate a tessellation level from --from to --to: a GIF, MP4 or WebM, or numbered PNG frames", runSweep);
+    const auto [cmd, a] = addSubcommand<SweepArgs>(
+        app, run, "sweep", "Animate a tessellation level from --from to --to: a GIF, MP4 or WebM, or numbered PNG frames", runSweep);
     addRenderOptions(cmd, a->render);
-    cmd->add_option("-o,--output", a->output, "An animation (.gif, .mp4, .webm; encoded by ffmpeg), a frame file pattern with one %d or %04d, or a directory (frame_0000.png ...)")->required();
+    cmd->add_option("-o,--output", a->output,
+                    "An animation (.gif, .mp4, .webm; encoded by ffmpeg), a frame file pattern with one %d or %04d, or a directory "
+                    "(frame_0000.png ...)")
+        ->required();
     cmd->add_option("--from", a->from, "First level, 1..64 (default 1)");
     cmd->add_option("--to", a->to, "Last level, 1..64 (default 16)");
     cmd->add_option("--seconds", a->seconds, "Length of the animation (default 3)");

@@ -9,7 +9,8 @@ void addDisplacementOptions(CLI::App* cmd, DisplacementArgs& a) {
     cmd->add_option("--displacement", a.file, "Height map (8- or 16-bit PNG) displacing the surface along its normal");
     cmd->add_option("--displacement-scale", a.scale, "Displacement: height of the map's white over its black (model units)");
     cmd->add_option("--displacement-bias", a.bias, "Displacement: height of the map's black (model units, default 0)");
-    cmd->add_option("--displacement-mapping", a.mapping, "Displacement UVs: planar (over the ground plane) | patch (each patch's parameters)");
+    cmd->add_option("--displacement-mapping", a.mapping,
+                    "Displacement UVs: planar (over the ground plane) | patch (each patch's parameters)");
 }
 
 void applyDisplacementArgs(const std::string& command, const DisplacementArgs& a, Document& doc) {

@@ -1,7 +1,7 @@
 #include "app/displayed_mesh.hpp"
 
-#include "render/vk/device.hpp"
 #include "render/targets/offscreen_target.hpp"
+#include "render/vk/device.hpp"
 
 namespace pw::app {
 

@@ -8,8 +8,8 @@
 #include <memory>
 #include <string>
 
-#include "core/model/document.hpp"
 #include "core/io/gltf_export.hpp"
+#include "core/model/document.hpp"
 #include "render/scene/renderer.hpp"
 
 namespace pw::app {
@@ -18,7 +18,7 @@ struct DisplayedMeshRequest {
     std::array<int, 2> viewport{1280, 720};  // pixels: screen-space adaptive levels and the camera's aspect
     std::string device;                      // substring of the Vulkan device's name; empty = best available
     bool validation = false;
-    std::shared_ptr<const HeightMap> map;    // the document's height map (displacement), or none
+    std::shared_ptr<const HeightMap> map;  // the document's height map (displacement), or none
 };
 
 // The request a file exported as displayed asks for again: its stored viewport (when it has one)

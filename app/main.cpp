@@ -5,8 +5,8 @@
 #include <iostream>
 
 #include "app/commands.hpp"
-#include "core/io/formats.hpp"
 #include "core/base/errors.hpp"
+#include "core/io/formats.hpp"
 
 int main(int argc, char** argv) {
     CLI::App app{"Patchwork — a Bézier/spline patch editor on the GPU tessellation pipeline"};

@@ -5,16 +5,16 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
-#include "core/model/document.hpp"
 #include "app/displacement_args.hpp"
 #include "app/domain_args.hpp"
+#include "core/model/document.hpp"
 #include "render/scene/renderer.hpp"
 
 namespace pw::app {
 
 struct RenderArgs {
-    std::string input, output = "", size = "1280x720", tess, outer, inner, spacing, adaptive, shading, overlay, view, stats,
-                device, targetPx, maxLevel, domain, preset, compare, isolines, combJoin;
+    std::string input, output = "", size = "1280x720", tess, outer, inner, spacing, adaptive, shading, overlay, view, stats, device,
+                       targetPx, maxLevel, domain, preset, compare, isolines, combJoin;
     bool cull = false, validation = false, noMsaa = false;
     DisplacementArgs displacement;
 };

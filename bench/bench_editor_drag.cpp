@@ -6,10 +6,10 @@
 
 #include <vector>
 
-#include "core/model/camera_math.hpp"
-#include "core/edit/drag_controller.hpp"
-#include "core/construct/model_builders.hpp"
 #include "core/base/point_upload.hpp"
+#include "core/construct/model_builders.hpp"
+#include "core/edit/drag_controller.hpp"
+#include "core/model/camera_math.hpp"
 
 namespace {
 
@@ -28,7 +28,8 @@ void runDrag(benchmark::State& state, const std::vector<uint32_t>& dragged, pw::
     pw::DragController drag;
     const double x0 = 640, y0 = 360;
     const pw::Vec3 pivot = pw::transformPivot(doc, sel, dragged, pw::PivotMode::Median, pw::Vec3(0.0));
-    if (!drag.begin(doc, pw::TransformStart{dragged, pivot, kind, true}, view, x0 + 40.0, y0)) return state.SkipWithError("the drag did not start");
+    if (!drag.begin(doc, pw::TransformStart{dragged, pivot, kind, true}, view, x0 + 40.0, y0))
+        return state.SkipWithError("the drag did not start");
     std::vector<float> gpuPool(4 * doc.points.size());  // stands in for the mapped vertex buffer
     size_t totalChanged = 0;
     int step = 0;
@@ -76,9 +77,13 @@ BENCHMARK(BM_EditorDragRotate_Grid32_Row)->Unit(benchmark::kMicrosecond);
 
 // C2 joins everywhere (issue 21): the β-constraints couple three rows on each side of every seam,
 // so the whole grid is one component of the solve. Budget: <= 1 ms per mouse event.
-void BM_EditorDragMove_Grid32C2_Corner(benchmark::State& state) { runDrag(state, {lat(48, 48)}, pw::TransformKind::Move, pw::Continuity::C2); }
+void BM_EditorDragMove_Grid32C2_Corner(benchmark::State& state) {
+    runDrag(state, {lat(48, 48)}, pw::TransformKind::Move, pw::Continuity::C2);
+}
 BENCHMARK(BM_EditorDragMove_Grid32C2_Corner)->Unit(benchmark::kMicrosecond);
-void BM_EditorDragMove_Grid32C2_Tangent(benchmark::State& state) { runDrag(state, {lat(40, 44)}, pw::TransformKind::Move, pw::Continuity::C2); }
+void BM_EditorDragMove_Grid32C2_Tangent(benchmark::State& state) {
+    runDrag(state, {lat(40, 44)}, pw::TransformKind::Move, pw::Continuity::C2);
+}
 BENCHMARK(BM_EditorDragMove_Grid32C2_Tangent)->Unit(benchmark::kMicrosecond);
 void BM_EditorDragMove_Grid32C2_Row(benchmark::State& state) { runDrag(state, wholeRow(48), pw::TransformKind::Move, pw::Continuity::C2); }
 BENCHMARK(BM_EditorDragMove_Grid32C2_Row)->Unit(benchmark::kMicrosecond);

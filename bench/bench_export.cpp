@@ -12,13 +12,13 @@
 #include <random>
 #include <vector>
 
-#include "core/io/document_io.hpp"
-#include "core/mesh/mesh_tessellate.hpp"
-#include "core/io/obj_export.hpp"
-#include "core/io/step_export.hpp"
-#include "core/io/gltf_export.hpp"
 #include "core/construct/model_builders.hpp"
 #include "core/eval/patch_eval.hpp"
+#include "core/io/document_io.hpp"
+#include "core/io/gltf_export.hpp"
+#include "core/io/obj_export.hpp"
+#include "core/io/step_export.hpp"
+#include "core/mesh/mesh_tessellate.hpp"
 
 namespace {
 
@@ -42,8 +42,7 @@ double currentRssMiB() {
 // Registered first so that the baseline is the process before any other benchmark grew it.
 void BM_ExportGlbGrid32x32Level32(benchmark::State& state) {
     const pw::Document doc = pw::makePatchGrid(32, 32);
-    const std::filesystem::path dir =
-        std::filesystem::temp_directory_path() / ("patchwork-bench-export-" + std::to_string(::getpid()));
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("patchwork-bench-export-" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     const std::filesystem::path out = dir / "grid32.glb";
     pw::ExportOptions options;
@@ -88,11 +87,21 @@ void BM_TeapotLevel64(benchmark::State& state) {
     size_t bytes = 0;
     for (auto _ : state) {
         switch (format) {
-            case Format::Tessellate: bytes = pw::tessellateDocument(doc, 64).indices.size() * 4; break;
-            case Format::Glb: bytes = pw::exportGltfBytes(doc, true, {64, pw::MeshGrouping::Surfaces, false}).size(); break;
-            case Format::Gltf: bytes = pw::exportGltfBytes(doc, false, {64, pw::MeshGrouping::Surfaces, false}).size(); break;
-            case Format::Obj: bytes = pw::exportObjText(doc, 64, "teapot.mtl").obj.size(); break;
-            case Format::Step: bytes = pw::exportStepText(doc, {}).size(); break;
+            case Format::Tessellate:
+                bytes = pw::tessellateDocument(doc, 64).indices.size() * 4;
+                break;
+            case Format::Glb:
+                bytes = pw::exportGltfBytes(doc, true, {64, pw::MeshGrouping::Surfaces, false}).size();
+                break;
+            case Format::Gltf:
+                bytes = pw::exportGltfBytes(doc, false, {64, pw::MeshGrouping::Surfaces, false}).size();
+                break;
+            case Format::Obj:
+                bytes = pw::exportObjText(doc, 64, "teapot.mtl").obj.size();
+                break;
+            case Format::Step:
+                bytes = pw::exportStepText(doc, {}).size();
+                break;
         }
         benchmark::DoNotOptimize(bytes);
     }

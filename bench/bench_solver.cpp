@@ -4,8 +4,8 @@
 
 #include <stdexcept>
 
-#include "core/solve/constraint_solver.hpp"
 #include "core/construct/model_builders.hpp"
+#include "core/solve/constraint_solver.hpp"
 
 namespace {
 

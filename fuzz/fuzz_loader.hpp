@@ -7,8 +7,8 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "core/model/document.hpp"
 #include "core/base/errors.hpp"
+#include "core/model/document.hpp"
 
 namespace pw::fuzz {
 

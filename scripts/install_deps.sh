@@ -2,7 +2,8 @@
 # Installs the Debian/Ubuntu packages Patchwork needs that are not installed yet. Idempotent and
 # quiet: prints one line when everything is present. Usage: scripts/install_deps.sh [--tests]
 #   --tests  also what the test suite needs (validation layers, Xvfb, xdotool, ImageMagick, a window
-#            manager (openbox) for minimise tests, clang with libFuzzer, desktop-file-validate for
+#            manager (openbox) for minimise tests, clang with libFuzzer, clang-format (the code's
+#            formatting, tests/format), desktop-file-validate for
 #            the installed desktop entry, assimp as an independent reader of the glTF and OBJ
 #            exports, rsvg-convert, xmllint and pdftoppm as independent readers of the SVG and PDF
 #            figures, ffprobe (with ffmpeg, which sweeps use) for the animations, Node.js for the
@@ -19,7 +20,7 @@ build_packages=(
   libcairo2-dev ffmpeg
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev
 )
-test_packages=(vulkan-validationlayers vulkan-tools xvfb xdotool imagemagick openbox clang libclang-rt-dev desktop-file-utils assimp-utils librsvg2-bin libxml2-utils poppler-utils)
+test_packages=(vulkan-validationlayers vulkan-tools xvfb xdotool imagemagick openbox clang clang-format libclang-rt-dev desktop-file-utils assimp-utils librsvg2-bin libxml2-utils poppler-utils)
 
 wanted=("${build_packages[@]}")
 if [[ "${1:-}" == "--tests" ]]; then

@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "core/model/camera_math.hpp"
-#include "render/vk/device.hpp"
-#include "render/targets/offscreen_target.hpp"
 #include "render/scene/renderer.hpp"
+#include "render/targets/offscreen_target.hpp"
+#include "render/vk/device.hpp"
 
 namespace pw::test {
 
@@ -40,9 +40,7 @@ protected:
         render::Device::resetValidationMessageCount();
         ASSERT_TRUE(sharedDevice().validationEnabled());
     }
-    void TearDown() override {
-        EXPECT_EQ(render::Device::validationMessageCount(), 0u) << "Vulkan validation messages (see stderr)";
-    }
+    void TearDown() override { EXPECT_EQ(render::Device::validationMessageCount(), 0u) << "Vulkan validation messages (see stderr)"; }
 };
 
 // Renders `doc` once (the first frame also warms the pipeline) and returns the pixels and stats.
@@ -53,8 +51,7 @@ struct Rendered {
 
 class Offscreen {
 public:
-    Offscreen(uint32_t w, uint32_t h, bool msaa = true)
-        : target_(sharedDevice(), w, h, msaa), renderer_(sharedDevice(), target_) {}
+    Offscreen(uint32_t w, uint32_t h, bool msaa = true) : target_(sharedDevice(), w, h, msaa), renderer_(sharedDevice(), target_) {}
     void setDocument(const Document& doc, std::shared_ptr<const HeightMap> map = {}) { renderer_.setDocument(doc, std::move(map)); }
     void setPlainMesh(const TriangleMesh& m) { renderer_.setPlainMesh(m); }
     Rendered render(const render::RenderOptions& o) {

@@ -10,10 +10,10 @@
 #include <map>
 #include <set>
 
+#include "core/construct/model_builders.hpp"
 #include "core/io/bpt_format.hpp"
 #include "core/io/document_io.hpp"
 #include "core/mesh/mesh_tessellate.hpp"
-#include "core/construct/model_builders.hpp"
 #include "render_support.hpp"
 #include "support.hpp"
 
@@ -133,9 +133,12 @@ TEST_F(RenderCapture, EveryPartitioningAndAdaptiveModeIsCapturedWholeAndWatertig
         AdaptiveMode adaptive;
         float level;
     };
-    const Case cases[] = {{Spacing::FractionalOdd, AdaptiveMode::None, 5.3f},   {Spacing::FractionalEven, AdaptiveMode::None, 6.7f},
-                          {Spacing::Pow2, AdaptiveMode::None, 5.0f},            {Spacing::Equal, AdaptiveMode::Distance, 8.0f},
-                          {Spacing::FractionalOdd, AdaptiveMode::ScreenSpace, 8.0f}, {Spacing::FractionalEven, AdaptiveMode::Orientation, 4.0f}};
+    const Case cases[] = {{Spacing::FractionalOdd, AdaptiveMode::None, 5.3f},
+                          {Spacing::FractionalEven, AdaptiveMode::None, 6.7f},
+                          {Spacing::Pow2, AdaptiveMode::None, 5.0f},
+                          {Spacing::Equal, AdaptiveMode::Distance, 8.0f},
+                          {Spacing::FractionalOdd, AdaptiveMode::ScreenSpace, 8.0f},
+                          {Spacing::FractionalEven, AdaptiveMode::Orientation, 4.0f}};
     for (const Case& k : cases) {
         const render::RenderOptions o = teapotOptions(doc, k.spacing, k.adaptive, k.level);
         const Rendered frame = off.render(o);

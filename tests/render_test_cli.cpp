@@ -35,11 +35,20 @@ TEST(RenderCli, RejectsBadOptionsNamingThem) {
         std::string args, option;
     };
     const Case cases[] = {
-        {"--tess 0", "--tess"},           {"--tess 65", "--tess"},         {"--tess nan", "--tess"},
-        {"--tess abc", "--tess"},         {"--outer 1,2,3", "--outer"},    {"--outer 1,2,3,nan --inner 2,2", "--outer"},
-        {"--inner 0,4", "--inner"},       {"--spacing odd", "--spacing"},  {"--adaptive far", "--adaptive"},
-        {"--shading glossy", "--shading"}, {"--overlay grid,foo", "--overlay"}, {"--view diagonal", "--view"},
-        {"--size 0x10", "--size"},        {"--tess 4 --outer 1,1,1,1", "--tess"},
+        {"--tess 0", "--tess"},
+        {"--tess 65", "--tess"},
+        {"--tess nan", "--tess"},
+        {"--tess abc", "--tess"},
+        {"--outer 1,2,3", "--outer"},
+        {"--outer 1,2,3,nan --inner 2,2", "--outer"},
+        {"--inner 0,4", "--inner"},
+        {"--spacing odd", "--spacing"},
+        {"--adaptive far", "--adaptive"},
+        {"--shading glossy", "--shading"},
+        {"--overlay grid,foo", "--overlay"},
+        {"--view diagonal", "--view"},
+        {"--size 0x10", "--size"},
+        {"--tess 4 --outer 1,1,1,1", "--tess"},
     };
     for (const Case& c : cases) {
         const RunResult r = runCommand(bin() + " render" + out + " " + c.args);

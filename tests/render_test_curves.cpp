@@ -53,9 +53,9 @@ TEST_F(Curves, SegmentsLevelDecidesBetweenChordAndCurve) {
 
     o.tess.isolineLevels = {1.0f, 1.0f};
     const Rendered one = off.render(o);
-    EXPECT_TRUE(near(one, o, chordMid, curveRed));   // one segment: the straight chord
+    EXPECT_TRUE(near(one, o, chordMid, curveRed));  // one segment: the straight chord
     EXPECT_FALSE(near(one, o, apex, curveRed, 3));
-    EXPECT_EQ(one.stats.triangles(), 0u);              // curves are not surface triangles
+    EXPECT_EQ(one.stats.triangles(), 0u);  // curves are not surface triangles
 
     o.tess.isolineLevels = {1.0f, 32.0f};
     const Rendered many = off.render(o);

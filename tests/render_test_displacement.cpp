@@ -10,10 +10,10 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "core/construct/terrain.hpp"
 #include "core/eval/displacement.hpp"
 #include "core/io/document_io.hpp"
 #include "core/io/patchwork_format.hpp"
-#include "core/construct/terrain.hpp"
 #include "render_support.hpp"
 #include "support.hpp"
 
@@ -59,7 +59,7 @@ TEST_F(Displacement, RampHeightsAreWithinOneLevelOfTheRampAndNormalsFollowItsSlo
             // u along x under both mappings (the patch's u runs along x, and planar u = x here).
             worst = std::max(worst, std::abs(double(p[2]) - (0.1 + 0.5 * p[0])));
             EXPECT_NEAR(p[1], std::round(p[1] * 32.0) / 32.0, 1e-5);  // the grid stays put across
-            if (p[0] > 0.05f && p[0] < 0.95f) {  // away from the clamped half texels: slope 0.5 * 256/255
+            if (p[0] > 0.05f && p[0] < 0.95f) {                       // away from the clamped half texels: slope 0.5 * 256/255
                 const double slope = 0.5 * 256.0 / 255.0;
                 const auto& n = c.mesh.normals[i];
                 EXPECT_NEAR(n[0], -slope / std::sqrt(1 + slope * slope), 2e-3);
@@ -186,8 +186,10 @@ TEST_F(Displacement, CommandLineRendersAndExportsDisplacedAndRefusesBadMaps) {
     const auto ramp = dir / "ramp.png";
     ASSERT_NE(stbi_write_png(ramp.c_str(), 64, 64, 1, px.data(), 64), 0);
     const auto png = dir / "teapot.png", stats = dir / "stats.json";
-    r = runCommand(bin + " render --displacement '" + ramp.string() + "' --displacement-scale 0.2 --displacement-mapping patch --validation"
-                   " --size 320x200 -o '" + png.string() + "' --stats '" + stats.string() + "' 2>&1");
+    r = runCommand(bin + " render --displacement '" + ramp.string() +
+                   "' --displacement-scale 0.2 --displacement-mapping patch --validation"
+                   " --size 320x200 -o '" +
+                   png.string() + "' --stats '" + stats.string() + "' 2>&1");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_GT(nlohmann::json::parse(readBytes(stats))["triangles"].get<uint64_t>(), 0u);
     // A missing or broken map: exit 2 naming it, nothing written.

@@ -19,8 +19,8 @@ const DomainKind kDomains[] = {DomainKind::Quad, DomainKind::Triangle, DomainKin
 
 std::string describe(const DomainLevels& l) {
     std::ostringstream s;
-    s << "{" << l.outer[0] << "," << l.outer[1] << "," << l.outer[2] << "," << l.outer[3] << " | " << l.inner[0] << ","
-      << l.inner[1] << "}";
+    s << "{" << l.outer[0] << "," << l.outer[1] << "," << l.outer[2] << "," << l.outer[3] << " | " << l.inner[0] << "," << l.inner[1]
+      << "}";
     return s.str();
 }
 
@@ -33,9 +33,8 @@ size_t checkAgainstRules(DomainKind kind, Spacing spacing, const std::vector<Dom
         EXPECT_TRUE(got[i].valid);
         const DomainCounts want = expectedDomainCounts(kind, sets[i], spacing, float(sharedDevice().caps().maxTessLevel));
         if ((got[i].vertices != want.vertices || got[i].primitives != want.primitives) && reported++ < 5)
-            ADD_FAILURE() << domainName(kind) << " " << spacingName(spacing) << " " << describe(sets[i]) << ": GPU "
-                          << got[i].vertices << " vertices / " << got[i].primitives << " primitives, rules "
-                          << want.vertices << " / " << want.primitives;
+            ADD_FAILURE() << domainName(kind) << " " << spacingName(spacing) << " " << describe(sets[i]) << ": GPU " << got[i].vertices
+                          << " vertices / " << got[i].primitives << " primitives, rules " << want.vertices << " / " << want.primitives;
     }
     return sets.size();
 }
@@ -64,10 +63,14 @@ TEST_F(DomainTest, MixedLevelsFollowTheRoundingRules) {
     std::uniform_int_distribution<int> small(1, 4), pick(0, 3);
     auto level = [&] {
         switch (pick(rng)) {
-            case 0: return float(small(rng));
-            case 1: return 1.0f;
-            case 2: return std::round(any(rng) * 4.0f) / 4.0f;
-            default: return any(rng);
+            case 0:
+                return float(small(rng));
+            case 1:
+                return 1.0f;
+            case 2:
+                return std::round(any(rng) * 4.0f) / 4.0f;
+            default:
+                return any(rng);
         }
     };
     std::vector<DomainLevels> sets;

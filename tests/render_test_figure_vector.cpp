@@ -40,9 +40,12 @@ SvgPaths countPaths(const std::string& svg) {
     const std::string page = svg.substr(body == std::string::npos ? 0 : body);
     for (std::sregex_iterator it(page.begin(), page.end(), path), end; it != end; ++it) {
         const std::string d = (*it)[1];
-        if (std::regex_match(d, triangle)) ++c.triangles;
-        else if (std::regex_match(d, segment)) ++c.segments;
-        else ++c.other;
+        if (std::regex_match(d, triangle))
+            ++c.triangles;
+        else if (std::regex_match(d, segment))
+            ++c.segments;
+        else
+            ++c.other;
     }
     return c;
 }
@@ -79,16 +82,20 @@ TEST_F(DomainCapture, PatternFollowsTheRulesForEveryDomainAndPartitioning) {
     render::Device& dev = sharedDevice();
     if (!dev.caps().transformFeedback) GTEST_SKIP() << "no VK_EXT_transform_feedback";
     render::DomainView view(dev, VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D32_SFLOAT, VK_SAMPLE_COUNT_1_BIT);
-    const std::vector<DomainLevels> sets = {kNotes, {{1, 2, 3, 4}, {4, 4}}, {{7.3f, 2.2f, 5.5f, 9.9f}, {3.1f, 6.6f}},
-                                            {{1, 1, 1, 1}, {1, 1}}, {{64, 64, 64, 64}, {64, 64}}, {{2.5f, 13.f, 1.f, 6.f}, {1.f, 17.5f}}};
+    const std::vector<DomainLevels> sets = {kNotes,
+                                            {{1, 2, 3, 4}, {4, 4}},
+                                            {{7.3f, 2.2f, 5.5f, 9.9f}, {3.1f, 6.6f}},
+                                            {{1, 1, 1, 1}, {1, 1}},
+                                            {{64, 64, 64, 64}, {64, 64}},
+                                            {{2.5f, 13.f, 1.f, 6.f}, {1.f, 17.5f}}};
     for (DomainKind kind : {DomainKind::Quad, DomainKind::Triangle, DomainKind::Isoline})
         for (Spacing s : kSpacings)
             for (const DomainLevels& raw : sets) {
                 const DomainLevels l = levelsFor(kind, raw);
                 const render::DomainPattern p = view.capture({kind, l, s});
                 const DomainCounts want = expectedDomainCounts(kind, l, s, float(dev.caps().maxTessLevel));
-                SCOPED_TRACE(std::string(domainName(kind)) + " " + std::string(spacingName(s)) + " outer " +
-                             std::to_string(l.outer[0]) + "," + std::to_string(l.outer[1]));
+                SCOPED_TRACE(std::string(domainName(kind)) + " " + std::string(spacingName(s)) + " outer " + std::to_string(l.outer[0]) +
+                             "," + std::to_string(l.outer[1]));
                 EXPECT_EQ(p.primitives(), want.primitives);
                 // A triangle with inner level 1 and a finer edge is tessellated as inner 1 + epsilon
                 // (Vulkan spec): under fractional_odd that is 3 segments, two of them of length ~0,
@@ -115,7 +122,9 @@ TEST_F(DomainCapture, PatternFollowsTheRulesForEveryDomainAndPartitioning) {
 TEST(VectorFigureCli, SvgHasOnePathPerTriangleAndMatchesThePng) {
     const auto dir = freshTempDir("vector-svg");
     const auto svg = dir / "f.svg", png = dir / "f.png", raster = dir / "r.png";
-    const std::string args = " render --domain quad --outer 4.9,4.5,4.1,4.4 --inner 4.4,4.4 --compare equal,fractional_odd,fractional_even,pow2 --size 1024x640 -o ";
+    const std::string args =
+        " render --domain quad --outer 4.9,4.5,4.1,4.4 --inner 4.4,4.4 --compare equal,fractional_odd,fractional_even,pow2 --size 1024x640 "
+        "-o ";
     RunResult r = runCommand(bin() + args + svg.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     r = runCommand(bin() + args + png.string());

@@ -85,7 +85,8 @@ TEST_F(RenderImage, OverlaysChangePixels) {
     const Rendered hovered = off.render(sel);
     auto differs = [&](const Image& a, const Image& b) {
         return std::abs(int(a.at(x, y)[0]) - int(b.at(x, y)[0])) + std::abs(int(a.at(x, y)[1]) - int(b.at(x, y)[1])) +
-                   std::abs(int(a.at(x, y)[2]) - int(b.at(x, y)[2])) > 30;
+                   std::abs(int(a.at(x, y)[2]) - int(b.at(x, y)[2])) >
+               30;
     };
     EXPECT_TRUE(differs(plain.image, grid.image));
     EXPECT_TRUE(differs(grid.image, selected.image));

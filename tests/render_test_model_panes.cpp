@@ -114,7 +114,8 @@ TEST_F(ModelPanes, FigureCaptionsEachPane) {
     renderer.setDocument(doc);
     std::vector<uint8_t> rgba;
     const render::RenderOptions base = plainOptions(doc, 3.0f, 1.0);
-    const auto panes = render::renderModelFigure(renderer, target, labels, base, {{Spacing::Equal, 0}, {Spacing::FractionalOdd, 3.5f}}, 14.0f, rgba);
+    const auto panes =
+        render::renderModelFigure(renderer, target, labels, base, {{Spacing::Equal, 0}, {Spacing::FractionalOdd, 3.5f}}, 14.0f, rgba);
     ASSERT_EQ(panes.size(), 2u);
     EXPECT_EQ(panes[0].stats.triangles(), 32u * 2 * 9);
     EXPECT_EQ(panes[1].stats.triangles(), 32u * 2 * 25);  // fractional_odd 3.5 -> 5

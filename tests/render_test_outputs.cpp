@@ -42,7 +42,8 @@ TEST(CliOutputs, RenderOntoAFifoIsRefusedAndTheFifoStays) {
 TEST(CliOutputs, SweepIsAllFramesOrNone) {
     const fs::path dir = freshTempDir("out-sweep");
     ASSERT_EQ(::mkfifo((dir / "f02.png").c_str(), 0644), 0);
-    const RunResult r = runCommand(bin() + " sweep --domain quad --from 1 --to 5 --frames 5 --size 64x64 -o " + (dir / "f%02d.png").string());
+    const RunResult r =
+        runCommand(bin() + " sweep --domain quad --from 1 --to 5 --frames 5 --size 64x64 -o " + (dir / "f%02d.png").string());
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_NE(r.output.find("f02.png"), std::string::npos) << r.output;
     EXPECT_EQ(entryCount(dir), 1u);  // the FIFO only

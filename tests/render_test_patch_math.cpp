@@ -10,10 +10,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "patch_math_check.h"
 #include "render/vk/buffers.hpp"
 #include "render/vk/vk_owned.hpp"
 #include "render_support.hpp"
-#include "patch_math_check.h"
 
 namespace pw::test {
 namespace {
@@ -33,9 +33,8 @@ std::vector<float> runOnGpu(render::Device& dev, const gpu::CheckInput& in) {
     const VkShaderModuleCreateInfo smi{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO, nullptr, 0, sizeof kCheckSpirv, kCheckSpirv};
     render::OwnedShaderModule module;
     VK_CHECK(vkCreateShaderModule(d, &smi, nullptr, module.replace(d)));
-    VkDescriptorSetLayoutBinding bindings[2] = {
-        {0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
-        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr}};
+    VkDescriptorSetLayoutBinding bindings[2] = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
+                                                {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr}};
     const VkDescriptorSetLayoutCreateInfo dli{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO, nullptr, 0, 2, bindings};
     render::OwnedDescriptorSetLayout setLayout;
     VK_CHECK(vkCreateDescriptorSetLayout(d, &dli, nullptr, setLayout.replace(d)));
@@ -82,13 +81,43 @@ gpu::CheckInput makeInput() {
     in.eye = {3, -8, 4, 1};
     in.params = {2.0f, 14.0f, 48.0f, 6.0f};
     in.viewport = {1200, 800, 0, 0};
-    const float levels[] = {std::numeric_limits<float>::quiet_NaN(), -3, 0, 0.25f, 1, 1.0001f, 1.5f, 2, 2.5f, 3, 3.999f,
-                            4, 4.0001f, 4.5f, 5, 6.3f, 7, 7.99f, 8, 8.01f, 15, 16, 16.5f, 31, 32, 32.2f, 33, 62.5f,
-                            63, 63.5f, 64, 64.5f, 100, 1e30f};
+    const float levels[] = {std::numeric_limits<float>::quiet_NaN(),
+                            -3,
+                            0,
+                            0.25f,
+                            1,
+                            1.0001f,
+                            1.5f,
+                            2,
+                            2.5f,
+                            3,
+                            3.999f,
+                            4,
+                            4.0001f,
+                            4.5f,
+                            5,
+                            6.3f,
+                            7,
+                            7.99f,
+                            8,
+                            8.01f,
+                            15,
+                            16,
+                            16.5f,
+                            31,
+                            32,
+                            32.2f,
+                            33,
+                            62.5f,
+                            63,
+                            63.5f,
+                            64,
+                            64.5f,
+                            100,
+                            1e30f};
     std::mt19937 rng(18);
     std::uniform_real_distribution<float> level(0.0f, 70.0f), coord(-3.0f, 3.0f);
-    for (int i = 0; i < gpu::kCheckLevels; ++i)
-        in.levels[i] = i < int(std::size(levels)) ? levels[i] : level(rng);
+    for (int i = 0; i < gpu::kCheckLevels; ++i) in.levels[i] = i < int(std::size(levels)) ? levels[i] : level(rng);
     std::uniform_int_distribution<uint32_t> small(0, 3), big(0, 4000000000u);
     for (int i = 0; i < gpu::kCheckPools; ++i) {
         const bool ties = i < gpu::kCheckPools / 2;  // small indices: equal ends, equal middles, palindromes
@@ -124,8 +153,7 @@ TEST_F(PatchMath, TheShadersAndTheCpuAgree) {
     }
     for (int e = 0; e < 4; ++e)
         for (int k = 0; k < 4; ++k)
-            for (int d = 0; d < 4; ++d)
-                EXPECT_EQ(float(gpu::quadEdgeSlot(e, k, d)), g[size_t(gpu::kOutSlots + e * 16 + k * 4 + d)]);
+            for (int d = 0; d < 4; ++d) EXPECT_EQ(float(gpu::quadEdgeSlot(e, k, d)), g[size_t(gpu::kOutSlots + e * 16 + k * 4 + d)]);
     for (int e = 0; e < 3; ++e)
         for (int k = 0; k < 4; ++k) EXPECT_EQ(float(gpu::triEdgeSlot(e, k)), g[size_t(gpu::kOutSlots + 64 + e * 4 + k)]);
     int reversed = 0;
@@ -141,8 +169,8 @@ TEST_F(PatchMath, TheShadersAndTheCpuAgree) {
     for (int i = 0; i < gpu::kCheckEdges; ++i) {
         const glm::vec3 p0 = in.edges[i * 4], p1 = in.edges[i * 4 + 1], p2 = in.edges[i * 4 + 2], p3 = in.edges[i * 4 + 3];
         for (uint32_t m = 0; m < 3; ++m) {
-            const float cpu = gpu::adaptiveEdgeLevel(p0, p1, p2, p3, gpu::kAdaptiveDistance + m, in.params.z, in.eye,
-                                                     in.params.x, in.params.y, in.viewProj, in.viewport, in.params.w);
+            const float cpu = gpu::adaptiveEdgeLevel(p0, p1, p2, p3, gpu::kAdaptiveDistance + m, in.params.z, in.eye, in.params.x,
+                                                     in.params.y, in.viewProj, in.viewport, in.params.w);
             EXPECT_NEAR(cpu, g[size_t(gpu::kOutAdaptive + i * 3 + int(m))], 1e-4f * std::max(1.0f, std::abs(cpu)))
                 << "edge " << i << " mode " << gpu::kAdaptiveDistance + m;
         }

@@ -4,8 +4,8 @@
 
 #include <cstdlib>
 
-#include "core/mesh/mesh_tessellate.hpp"
 #include "core/construct/model_builders.hpp"
+#include "core/mesh/mesh_tessellate.hpp"
 #include "render/targets/png_writer.hpp"
 #include "render_support.hpp"
 
@@ -20,8 +20,10 @@ bool insideConvex(const std::array<glm::dvec2, 4>& q, glm::dvec2 p) {
         const glm::dvec2 a = q[size_t(i)], b = q[size_t((i + 1) % 4)];
         const double c = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
         const int s = c > 0 ? 1 : -1;
-        if (sign == 0) sign = s;
-        else if (s != sign) return false;
+        if (sign == 0)
+            sign = s;
+        else if (s != sign)
+            return false;
     }
     return true;
 }
@@ -111,8 +113,10 @@ TEST_F(RenderSeams, MixedPerPatchLevelsHaveNoCracks) {
     Document doc = makePatchGrid(rows, cols);
     for (size_t p = 0; p < doc.patches.size(); ++p) {
         const size_t r = p / size_t(cols), c = p % size_t(cols);
-        if ((r + c) % 3 == 0) doc.patches[p].tessOverride = std::array<float, 6>{2, 2, 2, 2, 2, 2};
-        else if ((r + c) % 3 == 1) doc.patches[p].tessOverride = std::array<float, 6>{16, 5, 16, 5, 9, 9};
+        if ((r + c) % 3 == 0)
+            doc.patches[p].tessOverride = std::array<float, 6>{2, 2, 2, 2, 2, 2};
+        else if ((r + c) % 3 == 1)
+            doc.patches[p].tessOverride = std::array<float, 6>{16, 5, 16, 5, 9, 9};
     }
     Offscreen off(640, 480, false);
     off.setDocument(doc);

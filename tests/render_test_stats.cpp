@@ -7,8 +7,8 @@
 #include <cmath>
 
 #include "core/construct/model_builders.hpp"
-#include "render_support.hpp"
 #include "core/tess/tess_levels.hpp"
+#include "render_support.hpp"
 
 namespace pw::test {
 namespace {
@@ -19,10 +19,21 @@ constexpr uint32_t W = 256, H = 256;
 // of core/tess/tess_levels.cpp.
 int segments(float f, Spacing s) {
     switch (s) {
-        case Spacing::Equal: return int(std::ceil(std::clamp(f, 1.0f, 64.0f)));
-        case Spacing::FractionalOdd: { int n = int(std::ceil(std::clamp(f, 1.0f, 63.0f))); return n % 2 ? n : n + 1; }
-        case Spacing::FractionalEven: { int n = int(std::ceil(std::clamp(f, 2.0f, 64.0f))); return n % 2 ? n + 1 : n; }
-        case Spacing::Pow2: { int n = 1; while (n < std::ceil(f)) n *= 2; return n; }
+        case Spacing::Equal:
+            return int(std::ceil(std::clamp(f, 1.0f, 64.0f)));
+        case Spacing::FractionalOdd: {
+            int n = int(std::ceil(std::clamp(f, 1.0f, 63.0f)));
+            return n % 2 ? n : n + 1;
+        }
+        case Spacing::FractionalEven: {
+            int n = int(std::ceil(std::clamp(f, 2.0f, 64.0f)));
+            return n % 2 ? n + 1 : n;
+        }
+        case Spacing::Pow2: {
+            int n = 1;
+            while (n < std::ceil(f)) n *= 2;
+            return n;
+        }
     }
     return 0;
 }
@@ -107,8 +118,8 @@ TEST_F(RenderStats, PerEdgeLevelsGiveTheCountsTheSpacingRulesPredict) {
         o.tess.spacing = c.spacing;
         const Rendered r = off.render(o);
         EXPECT_EQ(long(r.stats.triangles()), quadTriangles(c.outer, c.inner, c.spacing))
-            << spacingName(c.spacing) << " outer " << c.outer[0] << "," << c.outer[1] << "," << c.outer[2] << ","
-            << c.outer[3] << " inner " << c.inner[0] << "," << c.inner[1];
+            << spacingName(c.spacing) << " outer " << c.outer[0] << "," << c.outer[1] << "," << c.outer[2] << "," << c.outer[3] << " inner "
+            << c.inner[0] << "," << c.inner[1];
     }
 }
 

@@ -14,9 +14,10 @@ std::string bin() { return "PATCHWORK_VALIDATION=1 " + patchworkBinary().string(
 
 // "width,height,frames,rate" of the first video stream, decoded frame by frame.
 std::string probe(const std::filesystem::path& file) {
-    const RunResult r = runCommand("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
-                                   "stream=width,height,nb_read_frames,r_frame_rate -of csv=p=0 " +
-                                   file.string());
+    const RunResult r = runCommand(
+        "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+        "stream=width,height,nb_read_frames,r_frame_rate -of csv=p=0 " +
+        file.string());
     EXPECT_EQ(r.exitCode, 0) << r.output;
     std::string s = r.output;
     while (!s.empty() && (s.back() == '\n' || s.back() == '\r')) s.pop_back();

@@ -6,10 +6,10 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "render/figures/domain_figure.hpp"
-#include "render/domain/domain_labels.hpp"
-#include "support.hpp"
 #include "core/tess/tess_presets.hpp"
+#include "render/domain/domain_labels.hpp"
+#include "render/figures/domain_figure.hpp"
+#include "support.hpp"
 
 namespace pw::test {
 namespace {
@@ -37,8 +37,8 @@ nlohmann::json readJson(const std::filesystem::path& p) {
 TEST(TeachingCli, PresetFigureCountsFollowTheRulesAndIsLabelled) {
     const auto dir = freshTempDir("teach-preset");
     const auto png = dir / "d.png", stats = dir / "d.json";
-    const RunResult r = runCommand(bin() + " render --preset quad-1_2_3_4-4_4 --size 400x400 -o " + png.string() + " --stats " +
-                                   stats.string());
+    const RunResult r =
+        runCommand(bin() + " render --preset quad-1_2_3_4-4_4 --size 400x400 -o " + png.string() + " --stats " + stats.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const nlohmann::json j = readJson(stats);
     ASSERT_EQ(j["panes"].size(), 1u);
@@ -68,8 +68,9 @@ TEST(TeachingCli, PresetFigureCountsFollowTheRulesAndIsLabelled) {
 TEST(TeachingCli, ComparisonPanesEachHaveTheirPartitioning) {
     const auto dir = freshTempDir("teach-compare");
     const auto png = dir / "c.png", stats = dir / "c.json";
-    const RunResult r = runCommand(bin() + " render --domain tri --outer 4.9,4.5,4.1 --inner 4.4 --compare "
-                                           "equal,fractional_odd,fractional_even,pow2 --size 600x500 -o " +
+    const RunResult r = runCommand(bin() +
+                                   " render --domain tri --outer 4.9,4.5,4.1 --inner 4.4 --compare "
+                                   "equal,fractional_odd,fractional_even,pow2 --size 600x500 -o " +
                                    png.string() + " --stats " + stats.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const nlohmann::json j = readJson(stats);

@@ -85,8 +85,10 @@ size_t holesInside(const Rendered& r, const Document& doc, std::vector<glm::dvec
         for (size_t i = 0; i < poly.size(); ++i) {
             const glm::dvec2 a = poly[i], b = poly[(i + 1) % poly.size()];
             const int s = (b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x) > 0 ? 1 : -1;
-            if (sign == 0) sign = s;
-            else if (s != sign) return false;
+            if (sign == 0)
+                sign = s;
+            else if (s != sign)
+                return false;
         }
         return true;
     };
@@ -120,10 +122,10 @@ std::vector<glm::dvec2> projected(const Rendered& r, const render::RenderOptions
 
 TEST(TriangleDomainFormula, HandCountedCases) {
     EXPECT_EQ(triangleDomainTriangles({1, 1, 1}, 1), 1);
-    EXPECT_EQ(triangleDomainTriangles({2, 2, 2}, 2), 6);    // a fan of 2 per edge around the centre
-    EXPECT_EQ(triangleDomainTriangles({3, 3, 3}, 3), 13);   // ring of 3+1 per edge, 1 inside
-    EXPECT_EQ(triangleDomainTriangles({4, 4, 4}, 4), 24);   // 3(4+2) + 3(2+0)
-    EXPECT_EQ(triangleDomainTriangles({1, 2, 3}, 1), 6);    // inner 1 -> 2: fans of 1, 2, 3
+    EXPECT_EQ(triangleDomainTriangles({2, 2, 2}, 2), 6);   // a fan of 2 per edge around the centre
+    EXPECT_EQ(triangleDomainTriangles({3, 3, 3}, 3), 13);  // ring of 3+1 per edge, 1 inside
+    EXPECT_EQ(triangleDomainTriangles({4, 4, 4}, 4), 24);  // 3(4+2) + 3(2+0)
+    EXPECT_EQ(triangleDomainTriangles({1, 2, 3}, 1), 6);   // inner 1 -> 2: fans of 1, 2, 3
 }
 
 TEST_F(RenderTriangles, SingleTriangleUniformLevelCountsFollowTheTriangleDomain) {
@@ -237,7 +239,8 @@ TEST_F(RenderTriangles, NormalVectorOverlayDrawsTheTrianglesNormals) {
     o.display.normalLength = 0.3f;
     auto cyan = [](const Rendered& r) {
         size_t n = 0;
-        for (size_t i = 0; i < r.image.rgba.size(); i += 4) n += r.image.rgba[i] < 110 && r.image.rgba[i + 1] > 180 && r.image.rgba[i + 2] > 200;
+        for (size_t i = 0; i < r.image.rgba.size(); i += 4)
+            n += r.image.rgba[i] < 110 && r.image.rgba[i + 1] > 180 && r.image.rgba[i + 2] > 200;
         return n;
     };
     EXPECT_EQ(cyan(off.render(o)), 0u);
@@ -290,8 +293,8 @@ TEST_F(RenderTriangles, EverySpacingShadingAndOverlayRenders) {
     Offscreen off(W, H);
     off.setDocument(doc);
     for (Spacing s : {Spacing::Equal, Spacing::FractionalOdd, Spacing::FractionalEven, Spacing::Pow2})
-        for (ShadingMode m : {ShadingMode::Lit, ShadingMode::Normal, ShadingMode::PatchId, ShadingMode::UvChecker,
-                              ShadingMode::Zebra, ShadingMode::GaussCurvature, ShadingMode::MeanCurvature}) {
+        for (ShadingMode m : {ShadingMode::Lit, ShadingMode::Normal, ShadingMode::PatchId, ShadingMode::UvChecker, ShadingMode::Zebra,
+                              ShadingMode::GaussCurvature, ShadingMode::MeanCurvature}) {
             render::RenderOptions o = topView(doc, 5.5f);
             o.tess.spacing = s;
             o.display.shading = m;

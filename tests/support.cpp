@@ -101,7 +101,8 @@ std::filesystem::path gltfValidatorScript() {
     }
     const auto node = runCommand("node --version");
     if (node.exitCode != 0) {
-        ADD_FAILURE() << "node is not available (" << node.output << "): run scripts/test.sh, which installs the glTF "
+        ADD_FAILURE() << "node is not available (" << node.output
+                      << "): run scripts/test.sh, which installs the glTF "
                          "validator (npm install --prefix tests/gltf)";
         return {};
     }
@@ -132,8 +133,10 @@ Png loadPng(const std::filesystem::path& file) {
     Png img;
     int n = 0;
     unsigned char* data = stbi_load(file.c_str(), &img.w, &img.h, &n, 4);
-    if (data) img.rgba.assign(data, data + size_t(img.w) * size_t(img.h) * 4);
-    else img.w = img.h = 0;
+    if (data)
+        img.rgba.assign(data, data + size_t(img.w) * size_t(img.h) * 4);
+    else
+        img.w = img.h = 0;
     stbi_image_free(data);
     return img;
 }

@@ -6,17 +6,17 @@
 #include <string>
 
 #include "core/commands/command_table.hpp"
-#include "core/model/document.hpp"
 #include "core/edit/edit_session.hpp"
+#include "core/model/document.hpp"
 
 namespace pw::test {
 
-std::filesystem::path dataDir();           // the repository's data/ (tea set)
-std::filesystem::path testsDir();          // the repository's tests/
-std::filesystem::path patchworkBinary();   // the built `patchwork`
+std::filesystem::path dataDir();                             // the repository's data/ (tea set)
+std::filesystem::path testsDir();                            // the repository's tests/
+std::filesystem::path patchworkBinary();                     // the built `patchwork`
 std::filesystem::path freshTempDir(const std::string& tag);  // empty, unique per call
-std::string readBytes(const std::filesystem::path& file);      // the whole file ("" when missing)
-size_t entryCount(const std::filesystem::path& dir);           // files, folders and links in dir
+std::string readBytes(const std::filesystem::path& file);    // the whole file ("" when missing)
+size_t entryCount(const std::filesystem::path& dir);         // files, folders and links in dir
 
 // A PNG read with stb_image as RGBA8 (w = h = 0 when it cannot be read).
 struct Png {

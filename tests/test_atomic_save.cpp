@@ -65,8 +65,8 @@ TEST(AtomicSave, KilledInTheMiddleOfASaveLeavesTheOldFileIntact) {
         int status = 0;
         waitpid(child, &status, 0);
         const std::string now = pw::test::readBytes(target);
-        ASSERT_TRUE(now == oldData || now == newData) << "trial " << trial << ": the file holds " << now.size()
-                                                      << " bytes of neither version";
+        ASSERT_TRUE(now == oldData || now == newData)
+            << "trial " << trial << ": the file holds " << now.size() << " bytes of neither version";
         const bool killed = WIFSIGNALED(status);
         if (now == oldData) ++intact;
         if (now == newData) ++replaced;
@@ -78,7 +78,7 @@ TEST(AtomicSave, KilledInTheMiddleOfASaveLeavesTheOldFileIntact) {
     }
     EXPECT_GT(interrupted, 0) << "no kill landed inside a save (one save takes " << saveUs << " µs)";
     EXPECT_GT(intact, 0);
-    std::printf("atomic save: %.0f ms per save; 16 kills: %d left the old file, %d the new one, %d interrupted a save\n",
-                saveUs / 1000.0, intact, replaced, interrupted);
+    std::printf("atomic save: %.0f ms per save; 16 kills: %d left the old file, %d the new one, %d interrupted a save\n", saveUs / 1000.0,
+                intact, replaced, interrupted);
     fs::remove_all(dir);
 }

@@ -4,10 +4,10 @@
 
 #include <unistd.h>
 
-#include "core/edit/autosave.hpp"
 #include "core/base/errors.hpp"
-#include "core/io/document_io.hpp"
 #include "core/construct/model_builders.hpp"
+#include "core/edit/autosave.hpp"
+#include "core/io/document_io.hpp"
 #include "support.hpp"
 
 using namespace pw;

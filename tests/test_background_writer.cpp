@@ -5,9 +5,9 @@
 
 #include <filesystem>
 
+#include "core/construct/model_builders.hpp"
 #include "core/edit/background_writer.hpp"
 #include "core/io/document_io.hpp"
-#include "core/construct/model_builders.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;

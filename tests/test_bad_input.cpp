@@ -10,9 +10,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/base/errors.hpp"
 #include "core/io/bpt_format.hpp"
 #include "core/io/document_io.hpp"
-#include "core/base/errors.hpp"
 #include "support.hpp"
 
 using namespace pw;
@@ -181,10 +181,8 @@ void expectOneLineError(const test::RunResult& r, const std::string& file) {
 TEST(BadInput, CorpusAndTableAgree) {
     const auto files = corpusFiles();
     ASSERT_GE(files.size(), 60u);
-    for (const fs::path& f : files)
-        EXPECT_TRUE(expectedLocations().count(f.filename().string())) << f << " has no expected location";
-    for (const auto& [name, where] : expectedLocations())
-        EXPECT_TRUE(fs::exists(corpusDir() / name)) << name << " missing from the corpus";
+    for (const fs::path& f : files) EXPECT_TRUE(expectedLocations().count(f.filename().string())) << f << " has no expected location";
+    for (const auto& [name, where] : expectedLocations()) EXPECT_TRUE(fs::exists(corpusDir() / name)) << name << " missing from the corpus";
 }
 
 TEST(BadInput, EveryCorpusFileIsRefusedWithItsLocation) {
@@ -234,8 +232,7 @@ TEST(BadInput, SpecificMessages) {
     EXPECT_NE(message("truncated.bpt").find("ends early"), std::string::npos);
     EXPECT_NE(message("trailing_garbage.bpt").find("after the last"), std::string::npos);
     EXPECT_NE(message("count_above_limit.bpt").find("limit"), std::string::npos);
-    EXPECT_NE(message("newer_version.patchwork")
-                  .find("was written by a newer Patchwork (format version 2); this build reads version 1"),
+    EXPECT_NE(message("newer_version.patchwork").find("was written by a newer Patchwork (format version 2); this build reads version 1"),
               std::string::npos);
     EXPECT_NE(message("malformed.patchwork").find("JSON syntax error"), std::string::npos);
     EXPECT_NE(message("index_out_of_range.patchwork").find("out of range"), std::string::npos);
@@ -245,8 +242,8 @@ TEST(BadInput, DirectoryMissingFileAndUnknownExtension) {
     const fs::path dir = test::freshTempDir("badfs");
     fs::create_directories(dir / "x.patchwork");
     fs::create_directories(dir / "y.bpt");
-    for (const fs::path& p : {dir / "x.patchwork", dir / "y.bpt", dir / "missing.patchwork", dir / "missing.bpt",
-                              dir / "missing.glb", dir / "model.obj"}) {
+    for (const fs::path& p :
+         {dir / "x.patchwork", dir / "y.bpt", dir / "missing.patchwork", dir / "missing.bpt", dir / "missing.glb", dir / "model.obj"}) {
         SCOPED_TRACE(p.string());
         try {
             loadDocument(p);
@@ -284,8 +281,8 @@ TEST(BadInputCli, HelpWorksForEachCommand) {
 }
 
 TEST(BadInputCli, InfoOnBadFilesExitsTwoWithOneLine) {
-    for (const char* name : {"truncated.bpt", "nan.bpt", "malformed.patchwork", "index_out_of_range.patchwork",
-                             "newer_version.patchwork", "empty.bpt"}) {
+    for (const char* name :
+         {"truncated.bpt", "nan.bpt", "malformed.patchwork", "index_out_of_range.patchwork", "newer_version.patchwork", "empty.bpt"}) {
         const fs::path f = corpusDir() / name;
         const auto r = test::runCommand(bin() + " info " + quote(f));
         SCOPED_TRACE(name);
@@ -330,9 +327,7 @@ TEST(BadInputCli, FailedConversionLeavesExistingOutputIntact) {
     const fs::path dir = test::freshTempDir("convkeep");
     for (const char* out : {"keep.patchwork", "keep.bpt", "keep.glb"}) {
         const fs::path target = dir / out;
-        {
-            std::ofstream(target, std::ios::binary) << "ORIGINAL CONTENT\n";
-        }
+        { std::ofstream(target, std::ios::binary) << "ORIGINAL CONTENT\n"; }
         const fs::path in = corpusDir() / "index_out_of_range.patchwork";
         const auto r = test::runCommand(bin() + " convert " + quote(in) + " " + quote(target));
         SCOPED_TRACE(out);

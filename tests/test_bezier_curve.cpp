@@ -7,12 +7,12 @@
 #include <cmath>
 #include <random>
 
+#include "core/base/errors.hpp"
 #include "core/eval/bezier_curve.hpp"
 #include "core/io/bpt_format.hpp"
-#include "core/model/edit_history.hpp"
-#include "core/base/errors.hpp"
-#include "core/ops/patch_ops.hpp"
 #include "core/io/patchwork_format.hpp"
+#include "core/model/edit_history.hpp"
+#include "core/ops/patch_ops.hpp"
 #include "support.hpp"
 
 namespace pw {

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <random>
 
-#include "core/model/basis.hpp"
 #include "core/eval/bezier_triangle.hpp"
-#include "core/model/document.hpp"
 #include "core/eval/patch_eval.hpp"
+#include "core/model/basis.hpp"
+#include "core/model/document.hpp"
 
 using namespace pw;
 
@@ -28,8 +28,7 @@ Net10 randomNet(std::mt19937& rng) {
 Vec3 deCasteljauTriangle(const Net10& net, double u, double v, double w) {
     // b[i][j] at the current level (k = deg - i - j).
     Vec3 b[4][4];
-    const int order[10][3] = {{3, 0, 0}, {2, 1, 0}, {2, 0, 1}, {1, 2, 0}, {1, 1, 1},
-                              {1, 0, 2}, {0, 3, 0}, {0, 2, 1}, {0, 1, 2}, {0, 0, 3}};
+    const int order[10][3] = {{3, 0, 0}, {2, 1, 0}, {2, 0, 1}, {1, 2, 0}, {1, 1, 1}, {1, 0, 2}, {0, 3, 0}, {0, 2, 1}, {0, 1, 2}, {0, 0, 3}};
     for (int s = 0; s < 10; ++s) b[order[s][0]][order[s][1]] = net[s];
     for (int deg = 3; deg > 0; --deg) {
         Vec3 nb[4][4];
@@ -77,7 +76,10 @@ TEST(BezierTriangle, MatchesDeCasteljauOnTheNet) {
         const Net10 net = randomNet(rng);
         for (int s = 0; s < 20; ++s) {
             double u = d(rng), v = d(rng);
-            if (u + v > 1) { u = 1 - u; v = 1 - v; }
+            if (u + v > 1) {
+                u = 1 - u;
+                v = 1 - v;
+            }
             const double w = 1 - u - v;
             const Vec3 ref = deCasteljauTriangle(net, u, v, w);
             EXPECT_LT(dist(evaluateTriangle(net, u, v).p, ref), 1e-12);

@@ -6,12 +6,12 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "core/construct/model_builders.hpp"
+#include "core/io/document_io.hpp"
+#include "core/model/document.hpp"
 #include "core/solve/constraint_solver.hpp"
 #include "core/solve/continuity_report.hpp"
 #include "core/solve/continuity_watch.hpp"
-#include "core/io/document_io.hpp"
-#include "core/model/document.hpp"
-#include "core/construct/model_builders.hpp"
 #include "tests/support.hpp"
 
 using namespace pw;
@@ -181,7 +181,8 @@ TEST(ContinuityWatch, InfoJsonReportsTolerances) {
     doc.points[lat(2, 0, 1)].z += 0.05;
     const std::filesystem::path dir = test::freshTempDir("info_tol");
     saveDocument(doc, dir / "broken.patchwork");
-    const test::RunResult r = test::runCommand(test::patchworkBinary().string() + " info --json '" + (dir / "broken.patchwork").string() + "'");
+    const test::RunResult r =
+        test::runCommand(test::patchworkBinary().string() + " info --json '" + (dir / "broken.patchwork").string() + "'");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const nlohmann::json j = nlohmann::json::parse(r.output);
     EXPECT_EQ(j["joins"]["C2"], 4);

@@ -10,16 +10,16 @@
 #include <cmath>
 #include <random>
 
+#include "core/base/errors.hpp"
 #include "core/commands/command_table.hpp"
+#include "core/construct/model_builders.hpp"
+#include "core/edit/edit_session.hpp"
+#include "core/eval/patch_eval.hpp"
+#include "core/gpu/curvature_math.h"
+#include "core/io/patchwork_format.hpp"
+#include "core/ops/patch_ops.hpp"
 #include "core/solve/constraint_solver.hpp"
 #include "core/solve/continuity_report.hpp"
-#include "core/gpu/curvature_math.h"
-#include "core/edit/edit_session.hpp"
-#include "core/base/errors.hpp"
-#include "core/construct/model_builders.hpp"
-#include "core/eval/patch_eval.hpp"
-#include "core/ops/patch_ops.hpp"
-#include "core/io/patchwork_format.hpp"
 #include "tests/support.hpp"
 
 using namespace pw;

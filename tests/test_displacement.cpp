@@ -6,16 +6,16 @@
 #include <stb/stb_image_write.h>
 
 #include <cmath>
-#include <fstream>
 #include <cstdlib>
+#include <fstream>
 
+#include "core/base/errors.hpp"
 #include "core/commands/command_table.hpp"
+#include "core/construct/terrain.hpp"
+#include "core/edit/edit_session.hpp"
 #include "core/eval/displacement.hpp"
 #include "core/io/document_io.hpp"
-#include "core/edit/edit_session.hpp"
-#include "core/base/errors.hpp"
 #include "core/io/patchwork_format.hpp"
-#include "core/construct/terrain.hpp"
 #include "png16.hpp"
 #include "support.hpp"
 
@@ -126,7 +126,8 @@ TEST(DisplacementWindows, NetWindowsTileTheMapAndSharedEdgesGetOneDetail) {
     // A flat map has no detail; no map, none either.
     const HeightMap flat = heightMapFromValues(8, 8, std::vector<double>(64, 0.5));
     for (const WindowDisplacement& wd : windowDisplacements(doc, expandPatches(doc), &flat)) EXPECT_EQ(wd.detail, (std::array<float, 4>{}));
-    for (const WindowDisplacement& wd : windowDisplacements(doc, expandPatches(doc), nullptr)) EXPECT_EQ(wd.texels, (std::array<float, 4>{}));
+    for (const WindowDisplacement& wd : windowDisplacements(doc, expandPatches(doc), nullptr))
+        EXPECT_EQ(wd.texels, (std::array<float, 4>{}));
 }
 
 TEST(DisplacementCommands, MapScaleBiasMappingAndOwnValuesAreUndoableSteps) {

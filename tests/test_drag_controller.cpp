@@ -6,12 +6,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/model/camera_math.hpp"
-#include "core/solve/constraint_solver.hpp"
+#include "core/construct/model_builders.hpp"
 #include "core/edit/drag_controller.hpp"
 #include "core/edit/edit_session.hpp"
-#include "core/construct/model_builders.hpp"
+#include "core/model/camera_math.hpp"
 #include "core/select/picking.hpp"
+#include "core/solve/constraint_solver.hpp"
 
 using namespace pw;
 

@@ -6,10 +6,10 @@
 #include <map>
 #include <random>
 
-#include "core/eval/bezier_triangle.hpp"
-#include "core/tess/edge_levels.hpp"
 #include "core/construct/model_builders.hpp"
+#include "core/eval/bezier_triangle.hpp"
 #include "core/gpu/patch_math.h"
+#include "core/tess/edge_levels.hpp"
 
 using namespace pw;
 
@@ -68,7 +68,7 @@ TEST(EdgeLevels, BothSidesOverriddenTakeTheLargerLevel) {
     EXPECT_EQ(l[1].outer[0], 16.0f);
     EXPECT_EQ(l[0].fixedMask, 0xFu);  // every window on every edge has its own levels
     EXPECT_EQ(l[1].fixedMask, 0xFu);
-    EXPECT_EQ(l[0].outer[0], 2.0f);   // its own, unshared edges keep their levels
+    EXPECT_EQ(l[0].outer[0], 2.0f);  // its own, unshared edges keep their levels
     EXPECT_EQ(l[0].outer[1], 2.0f);
     ASSERT_TRUE(l[0].inner.has_value());
     EXPECT_EQ(*l[0].inner, (std::array<float, 2>{3, 4}));  // inner levels are the window's own

@@ -32,8 +32,8 @@ TEST(EditCli, ScriptBuildsAJoinedShapeAndSavesIt) {
     EXPECT_EQ(d.joins[0].continuity, Continuity::C1);
     EXPECT_EQ(loadDocument(dir / "copy.patchwork").patches.size(), 2u);
     // Starting from that file: -c commands, OUT's format from its extension.
-    const auto r2 = test::runCommand(bin() + " edit " + q(dir / "pair.patchwork") + " -o " + q(dir / "pair.glb") +
-                                     " -c 'select patch 1; delete'");
+    const auto r2 =
+        test::runCommand(bin() + " edit " + q(dir / "pair.patchwork") + " -o " + q(dir / "pair.glb") + " -c 'select patch 1; delete'");
     ASSERT_EQ(r2.exitCode, 0) << r2.output;
     EXPECT_EQ(loadDocument(dir / "pair.glb").patches.size(), 1u);
 }

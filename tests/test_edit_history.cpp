@@ -5,8 +5,8 @@
 #include <cstring>
 #include <random>
 
-#include "core/model/edit_history.hpp"
 #include "core/construct/model_builders.hpp"
+#include "core/model/edit_history.hpp"
 #include "core/ops/net_ops.hpp"
 #include "core/ops/patch_ops.hpp"
 
@@ -23,22 +23,47 @@ void randomOperation(Document& doc, std::mt19937& rng) {
     const Edge e = static_cast<Edge>(rng() % 4);
     try {
         if (np > 40 || ns > 4) {  // keep the document small: 10 000 steps keep whole documents
-            if (ns > 4) deleteNetSurface(d, s);
-            else deletePatch(d, p);
+            if (ns > 4)
+                deleteNetSurface(d, s);
+            else
+                deletePatch(d, p);
             doc = std::move(d);
             return;
         }
         switch (rng() % 10) {
-            case 0: if (np) splitPatch(d, p, rng() % 2 == 0, 0.25 + 0.5 * double(rng() % 3) / 2.0); break;
-            case 1: if (np) extrudeEdge(d, p, e); break;
-            case 2: if (np) flipPatch(d, p); break;
-            case 3: if (np > 1) joinEdges(d, p, e, static_cast<uint32_t>(rng() % np), static_cast<Edge>(rng() % 4), Continuity(rng() % 3)); break;
-            case 4: if (!d.joins.empty()) unjoin(d, rng() % d.joins.size()); break;
-            case 5: addNetSurface(d, 4 + rng() % 4, 4 + rng() % 4, NetShape(rng() % 3), Basis::BSpline, Vec3(double(rng() % 5)), 2.0); break;
-            case 6: if (ns) insertNetRow(d, s, static_cast<uint32_t>(rng() % (d.surfaces[s].rows + 1))); break;
-            case 7: if (ns) deleteNetColumn(d, s, static_cast<uint32_t>(rng() % d.surfaces[s].cols)); break;
-            case 8: if (ns) setNetBasis(d, s, Basis(rng() % 3), 0.5); break;
-            default: if (ns && rng() % 4 == 0) convertNetToPatches(d, s); else if (np) duplicatePatch(d, p, Vec3(1.0, 0.0, 0.0)); break;
+            case 0:
+                if (np) splitPatch(d, p, rng() % 2 == 0, 0.25 + 0.5 * double(rng() % 3) / 2.0);
+                break;
+            case 1:
+                if (np) extrudeEdge(d, p, e);
+                break;
+            case 2:
+                if (np) flipPatch(d, p);
+                break;
+            case 3:
+                if (np > 1) joinEdges(d, p, e, static_cast<uint32_t>(rng() % np), static_cast<Edge>(rng() % 4), Continuity(rng() % 3));
+                break;
+            case 4:
+                if (!d.joins.empty()) unjoin(d, rng() % d.joins.size());
+                break;
+            case 5:
+                addNetSurface(d, 4 + rng() % 4, 4 + rng() % 4, NetShape(rng() % 3), Basis::BSpline, Vec3(double(rng() % 5)), 2.0);
+                break;
+            case 6:
+                if (ns) insertNetRow(d, s, static_cast<uint32_t>(rng() % (d.surfaces[s].rows + 1)));
+                break;
+            case 7:
+                if (ns) deleteNetColumn(d, s, static_cast<uint32_t>(rng() % d.surfaces[s].cols));
+                break;
+            case 8:
+                if (ns) setNetBasis(d, s, Basis(rng() % 3), 0.5);
+                break;
+            default:
+                if (ns && rng() % 4 == 0)
+                    convertNetToPatches(d, s);
+                else if (np)
+                    duplicatePatch(d, p, Vec3(1.0, 0.0, 0.0));
+                break;
         }
     } catch (const EditError&) {
         return;

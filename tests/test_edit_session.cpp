@@ -5,13 +5,13 @@
 #include <cmath>
 #include <fstream>
 
+#include "core/base/errors.hpp"
 #include "core/commands/command_table.hpp"
-#include "core/solve/constraint_solver.hpp"
+#include "core/construct/model_builders.hpp"
 #include "core/io/document_io.hpp"
 #include "core/model/document_merge.hpp"
-#include "core/base/errors.hpp"
-#include "core/construct/model_builders.hpp"
 #include "core/ops/patch_ops.hpp"
+#include "core/solve/constraint_solver.hpp"
 #include "support.hpp"
 
 using namespace pw;
@@ -90,8 +90,7 @@ TEST(EditSession, MergeKeepsTrianglesCurvesNetsAndJoins) {
     }
     EXPECT_LT(maxConstraintResidual(into), 1e-9);
     // Every imported item's points are the source's, shifted.
-    for (size_t k = 0; k < 10; ++k)
-        EXPECT_EQ(into.points[into.triangles[0].idx[k]], from.points[from.triangles[0].idx[k]]);
+    for (size_t k = 0; k < 10; ++k) EXPECT_EQ(into.points[into.triangles[0].idx[k]], from.points[from.triangles[0].idx[k]]);
     EXPECT_EQ(into.points[into.curves[0].idx[3]], from.points[from.curves[0].idx[3]]);
 }
 
@@ -143,8 +142,8 @@ TEST(Commands, TableNamesAreUniqueAndEveryCommandIsDocumented) {
                 EXPECT_EQ(std::count(keys.begin(), keys.end(), k), 0) << k << " is bound twice";
                 keys.push_back(k);
             }
-    for (const char* name : {"new", "open", "import", "select", "move", "rotate", "scale", "cursor", "add-patch", "join",
-                             "delete", "undo", "redo", "save", "extrude", "split", "duplicate", "frame", "view"})
+    for (const char* name : {"new", "open", "import", "select", "move", "rotate", "scale", "cursor", "add-patch", "join", "delete", "undo",
+                             "redo", "save", "extrude", "split", "duplicate", "frame", "view"})
         EXPECT_NE(t.find(name), nullptr) << name;
 }
 
@@ -158,7 +157,8 @@ TEST(Commands, ScriptBuildsAJoinedPairAndTransformsHoldTheJoin) {
     // A rigid move of everything keeps every point's offset exactly.
     const Document before = s.doc;
     run(s, "select all; move 1 2 -3");
-    for (size_t i = 0; i < s.doc.points.size(); ++i) EXPECT_NEAR(glm::length(s.doc.points[i] - before.points[i] - Vec3(1, 2, -3)), 0.0, 1e-12);
+    for (size_t i = 0; i < s.doc.points.size(); ++i)
+        EXPECT_NEAR(glm::length(s.doc.points[i] - before.points[i] - Vec3(1, 2, -3)), 0.0, 1e-12);
     // Moving one patch alone goes through the solver: the join still holds.
     run(s, "select patch 1; rotate Z 30; scale 1.5");
     EXPECT_LT(maxConstraintResidual(s.doc), 1e-9);
@@ -187,7 +187,8 @@ TEST(Commands, DeleteRemovesWhatTheSelectedPointsCover) {
 }
 
 TEST(Commands, BadLinesNameTheScriptAndLine) {
-    EXPECT_EQ(scriptError("add-patch\n\nfrobnicate 3"), "s.txt:3: unknown command 'frobnicate' (the F1 help and the palette list every command)");
+    EXPECT_EQ(scriptError("add-patch\n\nfrobnicate 3"),
+              "s.txt:3: unknown command 'frobnicate' (the F1 help and the palette list every command)");
     EXPECT_NE(scriptError("move 1 2").find("s.txt:1: move: expected 3 arguments, got 2 (usage: move DX DY DZ)"), std::string::npos);
     EXPECT_NE(scriptError("select all; move 1 x 2").find("s.txt:1: move: DY: expected a finite number, got 'x'"), std::string::npos);
     EXPECT_NE(scriptError("select patch 9").find("s.txt:1: select: patch 9 does not exist"), std::string::npos);

@@ -4,9 +4,9 @@
 
 #include <random>
 
+#include "core/eval/patch_eval.hpp"
 #include "core/model/basis.hpp"
 #include "core/model/document.hpp"
-#include "core/eval/patch_eval.hpp"
 
 using namespace pw;
 
@@ -182,7 +182,6 @@ TEST(Eval, GridMatchesPointEvaluationAndSharedEdgesAreBitIdentical) {
     for (int r = 0; r <= 7; ++r) {
         // bit-identical seam: A's u=1 column at v=r/7 equals B's u=0 column at v=(7-r)/7
         EXPECT_EQ(ga[r * 8 + 7].p, gb[(7 - r) * 8 + 0].p) << "row " << r;
-        for (int c = 0; c <= 7; ++c)
-            EXPECT_LE(dist(ga[r * 8 + c].p, evaluateNet(a, Basis::Bezier, 0.5, c / 7.0, r / 7.0).p), 1e-12);
+        for (int c = 0; c <= 7; ++c) EXPECT_LE(dist(ga[r * 8 + c].p, evaluateNet(a, Basis::Bezier, 0.5, c / 7.0, r / 7.0).p), 1e-12);
     }
 }

@@ -10,9 +10,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/solve/continuity_report.hpp"
-#include "core/io/document_io.hpp"
 #include "core/eval/patch_eval.hpp"
+#include "core/io/document_io.hpp"
+#include "core/solve/continuity_report.hpp"
 #include "tests/support.hpp"
 
 using namespace pw;
@@ -28,7 +28,8 @@ Document made(const std::string& name) {
     const RunResult r = runCommand(patchworkBinary().string() + " edit -q -o '" + out.string() + "' --run '" + script.string() + "' 2>&1");
     EXPECT_EQ(r.exitCode, 0) << r.output;
     const std::filesystem::path stored = dataDir() / (name + ".patchwork");
-    if (std::getenv("PATCHWORK_REGENERATE_DATA")) std::filesystem::copy_file(out, stored, std::filesystem::copy_options::overwrite_existing);
+    if (std::getenv("PATCHWORK_REGENERATE_DATA"))
+        std::filesystem::copy_file(out, stored, std::filesystem::copy_options::overwrite_existing);
     EXPECT_EQ(readBytes(out), readBytes(stored)) << stored << " is not what " << script << " makes";
     return loadDocument(stored);
 }

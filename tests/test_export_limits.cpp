@@ -7,12 +7,12 @@
 
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
+#include "core/base/limits.hpp"
+#include "core/construct/model_builders.hpp"
 #include "core/io/gltf_export.hpp"
 #include "core/io/gltf_import.hpp"
-#include "core/base/limits.hpp"
-#include "core/mesh/mesh_tessellate.hpp"
-#include "core/construct/model_builders.hpp"
 #include "core/io/patchwork_format.hpp"
+#include "core/mesh/mesh_tessellate.hpp"
 #include "support.hpp"
 
 using namespace pw;

@@ -15,9 +15,9 @@
 #include <string>
 #include <vector>
 
+#include "core/base/errors.hpp"
 #include "core/eval/bezier_curve.hpp"
 #include "core/io/bpt_format.hpp"
-#include "core/base/errors.hpp"
 #include "core/io/gltf_export.hpp"
 #include "core/io/obj_export.hpp"
 #include "core/ops/patch_ops.hpp"
@@ -89,10 +89,14 @@ ObjText readObj(const fs::path& p) {
             s >> x[0] >> x[1] >> x[2];
             o.positions.push_back(x);
             ++o.v;
-        } else if (tag == "vt") ++o.vt;
-        else if (tag == "vn") ++o.vn;
-        else if (tag == "g") ++o.groups;
-        else if (tag == "mtllib") s >> o.mtllib;
+        } else if (tag == "vt")
+            ++o.vt;
+        else if (tag == "vn")
+            ++o.vn;
+        else if (tag == "g")
+            ++o.groups;
+        else if (tag == "mtllib")
+            s >> o.mtllib;
         else if (tag == "f") {
             std::array<uint32_t, 3> f{};
             for (auto& i : f) {
@@ -133,7 +137,7 @@ TEST(ExportReaders, AssimpReadsTheTeapotGltfAndObjUprightWithoutWarnings) {
         EXPECT_EQ(a.maxPoint.substr(a.maxPoint.find(' ')), " 3.150000 2.000000)");
         if (name != "pot.obj") {
             EXPECT_EQ(a.vertices, long(stats.vertices));  // the welded count: nothing copied per patch
-            EXPECT_EQ(a.meshes, 1);                        // one piece (three welded primitives, one material)
+            EXPECT_EQ(a.meshes, 1);                       // one piece (three welded primitives, one material)
         } else {
             EXPECT_EQ(a.meshes, 32);  // assimp makes a mesh of each OBJ group (one per patch)
         }
@@ -150,8 +154,8 @@ TEST(ExportReaders, TheSurfacesAreWeldedInGltfAndObj) {
         tinygltf::TinyGLTF loader;
         tinygltf::Model model;
         std::string err, warn;
-        ASSERT_TRUE(loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
-                                                unsigned(bytes.size())))
+        ASSERT_TRUE(
+            loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()), unsigned(bytes.size())))
             << err;
         size_t open = 0, over = 0;
         for (const auto& mesh : model.meshes)

@@ -11,13 +11,13 @@
 #include <nlohmann/json.hpp>
 #include <random>
 
-#include "core/io/bpt_format.hpp"
-#include "core/io/document_io.hpp"
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
-#include "core/model/join_detect.hpp"
 #include "core/base/limits.hpp"
+#include "core/io/bpt_format.hpp"
+#include "core/io/document_io.hpp"
 #include "core/io/patchwork_format.hpp"
+#include "core/model/join_detect.hpp"
 #include "support.hpp"
 
 using namespace pw;
@@ -44,8 +44,7 @@ void expectBitIdentical(const Document& a, const Document& b) {
     ASSERT_EQ(a.points.size(), b.points.size());
     for (size_t i = 0; i < a.points.size(); ++i)
         for (int c = 0; c < 3; ++c)
-            ASSERT_EQ(std::bit_cast<uint64_t>(a.points[i][c]), std::bit_cast<uint64_t>(b.points[i][c]))
-                << "point " << i << " axis " << c;
+            ASSERT_EQ(std::bit_cast<uint64_t>(a.points[i][c]), std::bit_cast<uint64_t>(b.points[i][c])) << "point " << i << " axis " << c;
     ASSERT_EQ(a.joins.size(), b.joins.size());
     for (size_t i = 0; i < a.joins.size(); ++i)
         EXPECT_EQ(std::bit_cast<uint64_t>(a.joins[i].alpha), std::bit_cast<uint64_t>(b.joins[i].alpha));
@@ -57,21 +56,22 @@ double randomDouble(std::mt19937_64& rng) {
     std::uniform_int_distribution<int> kind(0, 3);
     std::uniform_real_distribution<double> unit(-1.0, 1.0);
     switch (kind(rng)) {
-        case 0: return std::round(unit(rng) * 1e4) / 1e4;
-        case 1: return unit(rng) * std::pow(10.0, std::uniform_int_distribution<int>(-12, 8)(rng));
+        case 0:
+            return std::round(unit(rng) * 1e4) / 1e4;
+        case 1:
+            return unit(rng) * std::pow(10.0, std::uniform_int_distribution<int>(-12, 8)(rng));
         case 2: {
             // Random bits with the exponent confined to ±1e9.
             uint64_t bits = rng();
             double d = std::bit_cast<double>((bits & 0x800FFFFFFFFFFFFFull) | (uint64_t(1023 + int(bits % 58) - 30) << 52));
             return d;
         }
-        default: return unit(rng);
+        default:
+            return unit(rng);
     }
 }
 
-float randomLevel(std::mt19937_64& rng) {
-    return std::uniform_real_distribution<float>(limits::kMinTessLevel, limits::kMaxTessLevel)(rng);
-}
+float randomLevel(std::mt19937_64& rng) { return std::uniform_real_distribution<float>(limits::kMinTessLevel, limits::kMaxTessLevel)(rng); }
 
 // A document with every field away from its default: patches with overrides and names, surfaces
 // of each basis, joins of each continuity, and all settings changed.
@@ -404,8 +404,7 @@ TEST(PatchworkFormat, EveryFieldIsWritten) {
     EXPECT_FALSE(j["patches"][0].contains("tess"));
     for (const char* k : {"rows", "cols", "idx", "basis", "tension", "closedU", "closedV", "name"})
         EXPECT_TRUE(j["surfaces"][0].contains(k)) << k;
-    for (const char* k : {"a", "edgeA", "b", "edgeB", "reversed", "continuity", "alpha"})
-        EXPECT_TRUE(j["joins"][0].contains(k)) << k;
+    for (const char* k : {"a", "edgeA", "b", "edgeB", "reversed", "continuity", "alpha"}) EXPECT_TRUE(j["joins"][0].contains(k)) << k;
     EXPECT_EQ(j["tess"].size(), 11u);
     EXPECT_EQ(j["display"].size(), 8u);
     EXPECT_EQ(j["camera"].size(), 7u);

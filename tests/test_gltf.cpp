@@ -17,14 +17,14 @@
 #include <string>
 #include <vector>
 
+#include "core/base/errors.hpp"
+#include "core/construct/model_builders.hpp"
 #include "core/eval/bezier_curve.hpp"
 #include "core/io/bpt_format.hpp"
-#include "core/ops/patch_ops.hpp"
-#include "core/base/errors.hpp"
 #include "core/io/gltf_export.hpp"
-#include "core/ops/net_ops.hpp"
 #include "core/io/gltf_import.hpp"
-#include "core/construct/model_builders.hpp"
+#include "core/ops/net_ops.hpp"
+#include "core/ops/patch_ops.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;
@@ -81,7 +81,7 @@ std::vector<uint32_t> readIndicesAs(const tinygltf::Model& model, const tinygltf
 std::vector<uint32_t> readIndices(const tinygltf::Model& model, int accessor) {
     const tinygltf::Accessor& acc = model.accessors[size_t(accessor)];
     return acc.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? readIndicesAs<uint16_t>(model, acc)
-                                                                     : readIndicesAs<uint32_t>(model, acc);
+                                                                       : readIndicesAs<uint32_t>(model, acc);
 }
 
 // Layout: a root node with the surface (and cage) children; one surface primitive per group, each
@@ -213,7 +213,8 @@ TEST(Gltf, BezierTriangleExportsAreValidAndRoundTrip) {
     for (const pw::Document& doc : {pw::makeTriangleDome(1.0, 0.5), mixed}) {
         for (int level : {1, 5, 16}) {
             for (pw::MeshGrouping grouping : kGroupings) {
-                const fs::path out = dir / ("tri" + std::to_string(n++) + "-" + pw::meshGroupingName(grouping) + (level == 5 ? ".gltf" : ".glb"));
+                const fs::path out =
+                    dir / ("tri" + std::to_string(n++) + "-" + pw::meshGroupingName(grouping) + (level == 5 ? ".gltf" : ".glb"));
                 pw::ExportOptions options;
                 options.level = level;
                 options.primitives = grouping;

@@ -6,12 +6,12 @@
 
 #include <cmath>
 
-#include "core/model/camera_math.hpp"
-#include "core/solve/constraint_solver.hpp"
-#include "core/select/edge_pick.hpp"
 #include "core/edit/edit_session.hpp"
 #include "core/eval/patch_eval.hpp"
+#include "core/model/camera_math.hpp"
 #include "core/ops/patch_ops.hpp"
+#include "core/select/edge_pick.hpp"
+#include "core/solve/constraint_solver.hpp"
 #include "support.hpp"
 
 using namespace pw;
@@ -25,10 +25,14 @@ SurfacePoint at(const Document& doc, uint32_t p, double u, double v) {
 // (u, v) of the point k/3 along edge e.
 std::pair<double, double> onEdge(Edge e, double t) {
     switch (e) {
-        case Edge::U0: return {0.0, t};
-        case Edge::U1: return {1.0, t};
-        case Edge::V0: return {t, 0.0};
-        default: return {t, 1.0};
+        case Edge::U0:
+            return {0.0, t};
+        case Edge::U1:
+            return {1.0, t};
+        case Edge::V0:
+            return {t, 0.0};
+        default:
+            return {t, 1.0};
     }
 }
 
@@ -75,7 +79,7 @@ TEST(JoinPick, APatchLyingBackOverAIsTurnedOverNotFolded) {
     const size_t j = joinEdges(doc, 0, Edge::U1, 1, Edge::U1, Continuity::C1);
     EXPECT_EQ(doc.joins[j].edgeB, Edge::U0);  // the same physical edge, renamed by the flip
     for (size_t s = 0; s < 16; ++s) EXPECT_EQ(doc.points[doc.patches[0].idx[s]], aBefore[s]);  // A stays
-    for (uint32_t i : doc.patches[1].idx) EXPECT_GE(doc.points[i].x, 0.5 - 1e-12);           // B beyond the seam
+    for (uint32_t i : doc.patches[1].idx) EXPECT_GE(doc.points[i].x, 0.5 - 1e-12);             // B beyond the seam
     EXPECT_LE(maxConstraintResidual(doc), 1e-12);
     expectNormalsAgree(doc, doc.joins[j]);
 }
@@ -112,7 +116,7 @@ TEST(JoinPick, MatchMovesOnlyBsBoundaryAndTangentRows) {
         Document doc;
         addFlatPatch(doc, {0, 0, 0}, 1.0);
         doc.points[doc.patches[0].idx[6]].z += 0.4;  // A curved
-        addFlatPatch(doc, {2.5, 0.3, 1.0}, 1.0);    // B away from A, its u0 edge facing A's u1
+        addFlatPatch(doc, {2.5, 0.3, 1.0}, 1.0);     // B away from A, its u0 edge facing A's u1
         const auto aBefore = gatherNet(doc, doc.patches[0].idx);
         const auto bBefore = gatherNet(doc, doc.patches[1].idx);
         const size_t j = joinEdges(doc, 0, Edge::U1, 1, Edge::U0, c);
@@ -131,7 +135,7 @@ TEST(JoinPick, APatchThatCannotTurnOverIsRefusedAndNothingChanges) {
     Document doc;
     addFlatPatch(doc, {0, 0, 0}, 1.0);
     addFlatPatch(doc, {0.2, 0, 0.5}, 1.0);  // B, lying back over A from its u1 edge...
-    extrudeEdge(doc, 1, Edge::V0);           // ...and joined to a third patch
+    extrudeEdge(doc, 1, Edge::V0);          // ...and joined to a third patch
     const Document before = doc;
     EXPECT_THROW(joinEdges(doc, 0, Edge::U1, 1, Edge::U1, Continuity::C1), EditError);
     EXPECT_EQ(doc.points, before.points);

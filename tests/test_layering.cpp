@@ -101,7 +101,7 @@ void checkIncludes(const fs::path& root, const LayerMap& layers, std::vector<std
     };
     // Libraries that belong to one layer: the folders that may include them.
     const std::vector<std::pair<std::regex, std::set<std::string>>> owned = {
-        {std::regex(R"(\.hxx$)"), {"core/io"}},                   // OpenCASCADE
+        {std::regex(R"(\.hxx$)"), {"core/io"}},  // OpenCASCADE
         {std::regex(R"(^(Eigen/|unsupported/Eigen))"), {"core/solve"}},
         {std::regex(R"(^tiny_gltf)"), {"core/io"}},
     };
@@ -119,9 +119,11 @@ void checkIncludes(const fs::path& root, const LayerMap& layers, std::vector<std
                 const std::string where = file + ":" + std::to_string(n) + ": " + line;
                 if (m[1] == "<") {
                     for (const SystemRule& r : rules)
-                        if (dir.rfind(r.folderPrefix, 0) == 0 && std::regex_search(name, r.include)) problems.push_back(where + " (" + r.why + ")");
+                        if (dir.rfind(r.folderPrefix, 0) == 0 && std::regex_search(name, r.include))
+                            problems.push_back(where + " (" + r.why + ")");
                     for (const auto& [re, owners] : owned)
-                        if (std::regex_search(name, re) && !owners.count(dir)) problems.push_back(where + " (belongs to " + *owners.begin() + ")");
+                        if (std::regex_search(name, re) && !owners.count(dir))
+                            problems.push_back(where + " (belongs to " + *owners.begin() + ")");
                     continue;
                 }
                 const std::string target = fs::path(name).parent_path().generic_string();
@@ -257,7 +259,8 @@ TEST(Layering, EveryDesignReferenceResolvesInTheRepository) {
             for (int n = 1; std::getline(f, line); ++n)
                 for (auto it = std::sregex_iterator(line.begin(), line.end(), cite); it != std::sregex_iterator(); ++it) {
                     ++cites;
-                    if (!sections.count((*it)[1])) dangling.push_back(relPath(repo(), e.path()) + ":" + std::to_string(n) + ": §" + (*it)[1].str());
+                    if (!sections.count((*it)[1]))
+                        dangling.push_back(relPath(repo(), e.path()) + ":" + std::to_string(n) + ": §" + (*it)[1].str());
                 }
         }
     EXPECT_GT(cites, 40u);

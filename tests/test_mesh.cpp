@@ -10,11 +10,11 @@
 #include <utility>
 #include <vector>
 
-#include "core/io/bpt_format.hpp"
-#include "core/model/document.hpp"
-#include "core/mesh/mesh_tessellate.hpp"
-#include "core/ops/net_ops.hpp"
 #include "core/construct/model_builders.hpp"
+#include "core/io/bpt_format.hpp"
+#include "core/mesh/mesh_tessellate.hpp"
+#include "core/model/document.hpp"
+#include "core/ops/net_ops.hpp"
 #include "support.hpp"
 
 namespace {
@@ -423,7 +423,7 @@ TEST(Mesh, ClosedNetsAreWatertightAndKeptC1BezierSeamsShareVertices) {
             const TriangleMesh mesh = pw::tessellateDocument(doc, level);
             const EdgeStats st = edgeStats(mesh);
             const size_t around = basis == pw::Basis::Bezier ? 3 : 9;  // windows around the tube
-            EXPECT_EQ(st.boundaryEdges, 2 * around * level);          // the tube's two open ends only
+            EXPECT_EQ(st.boundaryEdges, 2 * around * level);           // the tube's two open ends only
             EXPECT_EQ(st.overusedEdges, 0u);
             EXPECT_EQ(st.inconsistentEdges, 0u);
             EXPECT_EQ(st.degenerateTriangles, 0u);

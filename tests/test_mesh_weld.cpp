@@ -16,8 +16,7 @@ SoupVertex v(float x, float y, float z, uint32_t item, float nx = 0, float ny = 
 TEST(MeshWeld, SharedEdgesWeldWithinTheToleranceAndOnlyThere) {
     // Two windows sharing the edge x = 1; the second's copy of it is off by float rounding.
     const float e = 1e-7f;
-    const std::vector<SoupVertex> soup = {v(0, 0, 0, 0), v(1, 0, 0, 0), v(1, 1, 0, 0),
-                                          v(1 + e, 0, 0, 1), v(2, 0, 0, 1), v(1, 1 + e, 0, 1)};
+    const std::vector<SoupVertex> soup = {v(0, 0, 0, 0), v(1, 0, 0, 0), v(1, 1, 0, 0), v(1 + e, 0, 0, 1), v(2, 0, 0, 1), v(1, 1 + e, 0, 1)};
     const TriangleMesh m = weldTriangleSoup(soup, 2, 0, 1e-6);
     EXPECT_EQ(m.positions.size(), 4u);
     ASSERT_EQ(m.indices.size(), 6u);
@@ -31,7 +30,7 @@ TEST(MeshWeld, SharedEdgesWeldWithinTheToleranceAndOnlyThere) {
 
 TEST(MeshWeld, CreasesKeepTheirNormalsAndSmoothSeamsAverageThem) {
     // A crease (normals 90 degrees apart) along x = 1 ...
-    std::vector<SoupVertex> soup = {v(0, 0, 0, 0), v(1, 0, 0, 0), v(1, 1, 0, 0),
+    std::vector<SoupVertex> soup = {v(0, 0, 0, 0),          v(1, 0, 0, 0),           v(1, 1, 0, 0),
                                     v(1, 0, 0, 1, 1, 0, 0), v(1, 0, -1, 1, 1, 0, 0), v(1, 1, 0, 1, 1, 0, 0)};
     EXPECT_EQ(weldTriangleSoup(soup, 2, 0, 1e-6).positions.size(), 6u);
     // ... and a seam whose sides' normals differ by 0.5 degrees: one vertex, the normals averaged.
@@ -61,8 +60,8 @@ TEST(MeshWeld, TrianglesCollapsedByTheWeldAreLeftOutWithTheirVertices) {
 }
 
 TEST(MeshWeld, TrianglesAreGroupedByItemKeepingTheirOrder) {
-    const std::vector<SoupVertex> soup = {v(0, 0, 0, 1), v(1, 0, 0, 1), v(0, 1, 0, 1), v(5, 0, 0, 0), v(6, 0, 0, 0), v(5, 1, 0, 0),
-                                          v(0, 2, 0, 1), v(1, 2, 0, 1), v(0, 3, 0, 1)};
+    const std::vector<SoupVertex> soup = {v(0, 0, 0, 1), v(1, 0, 0, 1), v(0, 1, 0, 1), v(5, 0, 0, 0), v(6, 0, 0, 0),
+                                          v(5, 1, 0, 0), v(0, 2, 0, 1), v(1, 2, 0, 1), v(0, 3, 0, 1)};
     const TriangleMesh m = weldTriangleSoup(soup, 2, 0, 1e-6);
     ASSERT_EQ(m.perWindow.size(), 2u);
     EXPECT_EQ(m.perWindow[0].indexCount, 3u);

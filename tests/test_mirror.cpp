@@ -3,15 +3,15 @@
 // right angle, else C0), keeps the joins among the copies, and is one undo step.
 #include <gtest/gtest.h>
 
-#include "core/eval/bezier_triangle.hpp"
-#include "core/commands/command_table.hpp"
-#include "core/solve/constraint_solver.hpp"
-#include "core/edit/edit_session.hpp"
 #include "core/base/errors.hpp"
-#include "core/ops/mirror.hpp"
+#include "core/commands/command_table.hpp"
 #include "core/construct/model_builders.hpp"
+#include "core/edit/edit_session.hpp"
+#include "core/eval/bezier_triangle.hpp"
 #include "core/eval/patch_eval.hpp"
+#include "core/ops/mirror.hpp"
 #include "core/ops/patch_ops.hpp"
+#include "core/solve/constraint_solver.hpp"
 
 #include "support.hpp"
 

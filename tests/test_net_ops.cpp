@@ -5,11 +5,11 @@
 #include <cmath>
 #include <random>
 
-#include "core/solve/constraint_solver.hpp"
-#include "core/ops/net_ops.hpp"
-#include "core/ops/patch_ops.hpp"
 #include "core/eval/patch_eval.hpp"
 #include "core/io/patchwork_format.hpp"
+#include "core/ops/net_ops.hpp"
+#include "core/ops/patch_ops.hpp"
+#include "core/solve/constraint_solver.hpp"
 
 namespace {
 
@@ -56,10 +56,10 @@ struct Case {
 };
 
 const Case kCases[] = {
-    {Basis::BSpline, 6, 7, pw::NetShape::Flat, 0.5},     {Basis::BSpline, 5, 8, pw::NetShape::Tube, 0.5},
-    {Basis::BSpline, 6, 6, pw::NetShape::Torus, 0.5},    {Basis::CatmullRom, 5, 6, pw::NetShape::Flat, 0.5},
-    {Basis::CatmullRom, 7, 5, pw::NetShape::Flat, 0.3},  {Basis::CatmullRom, 6, 9, pw::NetShape::Torus, 0.8},
-    {Basis::Bezier, 7, 10, pw::NetShape::Flat, 0.5},     {Basis::Bezier, 6, 9, pw::NetShape::Torus, 0.5},
+    {Basis::BSpline, 6, 7, pw::NetShape::Flat, 0.5},    {Basis::BSpline, 5, 8, pw::NetShape::Tube, 0.5},
+    {Basis::BSpline, 6, 6, pw::NetShape::Torus, 0.5},   {Basis::CatmullRom, 5, 6, pw::NetShape::Flat, 0.5},
+    {Basis::CatmullRom, 7, 5, pw::NetShape::Flat, 0.3}, {Basis::CatmullRom, 6, 9, pw::NetShape::Torus, 0.8},
+    {Basis::Bezier, 7, 10, pw::NetShape::Flat, 0.5},    {Basis::Bezier, 6, 9, pw::NetShape::Torus, 0.5},
 };
 
 }  // namespace
@@ -186,7 +186,7 @@ TEST(NetOps, RowsAndColumnsInsertDeleteAndClose) {
     pw::insertNetRow(doc, 0, 1);
     ASSERT_EQ(doc.surfaces[0].rows, 5u);
     EXPECT_EQ(doc.points[doc.surfaces[0].idx[5]], 0.5 * (r0 + r1));  // midway
-    pw::insertNetRow(doc, 0, 5);  // past the end: continues the spacing
+    pw::insertNetRow(doc, 0, 5);                                     // past the end: continues the spacing
     const pw::Surface& s = doc.surfaces[0];
     EXPECT_LE(glm::length(doc.points[s.idx[25]] - (2.0 * doc.points[s.idx[20]] - doc.points[s.idx[15]])), 1e-12);
     pw::insertNetColumn(doc, 0, 0);

@@ -57,7 +57,7 @@ TEST(Occlusion, ADomesOwnControlPointsAboveItAreSeenAndThoseUnderItAreNot) {
     Document doc;
     addFlatPatch(doc, {0, 0, 0}, 2.0);
     for (int s : {5, 6, 9, 10}) doc.points[doc.patches[0].idx[size_t(s)]].z = 1.0;  // a dome; its inner points float above it
-    doc.points.push_back({0.1, 0.1, 0.2});  // a loose point inside the dome
+    doc.points.push_back({0.1, 0.1, 0.2});                                          // a loose point inside the dome
     const uint32_t inside = uint32_t(doc.points.size() - 1);
     addFlatPatch(doc, {5, 5, 0}, 0.5);  // give the model its size; far away
     std::vector<uint32_t> cand = all(doc);

@@ -2,12 +2,12 @@
 // out), and a model turned inside out is turned back with its joins intact.
 #include <gtest/gtest.h>
 
+#include "core/eval/patch_eval.hpp"
 #include "core/io/bpt_format.hpp"
+#include "core/ops/orientation.hpp"
+#include "core/ops/patch_ops.hpp"
 #include "core/solve/constraint_solver.hpp"
 #include "core/solve/continuity_report.hpp"
-#include "core/ops/orientation.hpp"
-#include "core/eval/patch_eval.hpp"
-#include "core/ops/patch_ops.hpp"
 #include "support.hpp"
 
 using namespace pw;

@@ -4,12 +4,12 @@
 
 #include <cmath>
 
-#include "core/solve/constraint_solver.hpp"
-#include "core/solve/continuity_report.hpp"
 #include "core/construct/model_builders.hpp"
 #include "core/eval/patch_eval.hpp"
 #include "core/ops/patch_ops.hpp"
 #include "core/select/picking.hpp"
+#include "core/solve/constraint_solver.hpp"
+#include "core/solve/continuity_report.hpp"
 
 using namespace pw;
 
@@ -85,7 +85,7 @@ TEST(EditorPatchOps, ExtrudeIsC1) {
         const auto rep = continuityReport(d, 16);
         ASSERT_EQ(rep.size(), 1u);
         EXPECT_LT(rep[0].c1Residual, 1e-9);
-        EXPECT_LT(rep[0].normalAngleDeg, 1e-3);  // same orientation on both sides
+        EXPECT_LT(rep[0].normalAngleDeg, 1e-3);         // same orientation on both sides
         EXPECT_THROW(extrudeEdge(d, 0, e), EditError);  // already joined
     }
 }
@@ -118,7 +118,7 @@ TEST(EditorPatchOps, JoinAndUnjoin) {
     for (Continuity c : {Continuity::C0, Continuity::C1, Continuity::G1}) {
         Document doc;
         addFlatPatch(doc, {0, 0, 0}, 1.0);
-        addFlatPatch(doc, {1.05, 0, 0.02}, 1.0);  // a small gap to the right
+        addFlatPatch(doc, {1.05, 0, 0.02}, 1.0);     // a small gap to the right
         doc.points[doc.patches[1].idx[5]].z += 0.2;  // bend the second patch a little
         const size_t j = joinEdges(doc, 0, Edge::U1, 1, Edge::U0, c);
         EXPECT_EQ(j, 0u);

@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "core/model/camera_math.hpp"
 #include "core/construct/model_builders.hpp"
 #include "core/eval/patch_eval.hpp"
+#include "core/model/camera_math.hpp"
 #include "core/select/picking.hpp"
 
 using namespace pw;

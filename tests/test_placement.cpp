@@ -5,8 +5,8 @@
 #include "core/commands/command_table.hpp"
 #include "core/edit/edit_session.hpp"
 #include "core/io/document_io.hpp"
-#include "core/ops/patch_ops.hpp"
 #include "core/model/placement.hpp"
+#include "core/ops/patch_ops.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;

@@ -19,7 +19,7 @@ TEST(EditorUpload, ChangedPointsAreFoundAndWritten) {
     EXPECT_EQ(gpu[4], 1.5f);
     EXPECT_EQ(gpu[5], 1.0f);
     EXPECT_EQ(gpu[14], -3.0f);
-    EXPECT_EQ(gpu[7], -7.0f);   // the weight stays
+    EXPECT_EQ(gpu[7], -7.0f);  // the weight stays
     EXPECT_EQ(gpu[15], -7.0f);
     EXPECT_EQ(gpu[0], -7.0f);  // untouched
     takeChangedPoints(uploaded, now, changed);

@@ -8,17 +8,17 @@
 #include <cmath>
 #include <random>
 
-#include "core/commands/command_table.hpp"
-#include "core/solve/constraint_solver.hpp"
-#include "core/gpu/curvature_math.h"
-#include "core/edit/edit_session.hpp"
 #include "core/base/errors.hpp"
-#include "core/model/join_detect.hpp"
+#include "core/commands/command_table.hpp"
 #include "core/construct/model_builders.hpp"
-#include "core/ops/patch_ops.hpp"
-#include "core/io/patchwork_format.hpp"
 #include "core/construct/primitives.hpp"
+#include "core/edit/edit_session.hpp"
 #include "core/eval/rational_eval.hpp"
+#include "core/gpu/curvature_math.h"
+#include "core/io/patchwork_format.hpp"
+#include "core/model/join_detect.hpp"
+#include "core/ops/patch_ops.hpp"
+#include "core/solve/constraint_solver.hpp"
 #include "tests/support.hpp"
 
 using namespace pw;
@@ -126,7 +126,7 @@ TEST(Rational, TheSphereIsASphere) {
     forEachSample(doc, [&](const SurfaceJet& j, double v, size_t) {
         worstR = std::max(worstR, std::abs(glm::length(j.p - c) - R));
         worstN = std::max(worstN, glm::length(j.n - (j.p - c) / R));  // outward, poles included
-        if (v > 0.0 && v < 1.0) {  // away from the collapsed rows, where the first form is singular
+        if (v > 0.0 && v < 1.0) {                                     // away from the collapsed rows, where the first form is singular
             const glm::dvec2 kh = gpu::gaussMeanCurvature(j.du, j.dv, j.duu, j.duv, j.dvv, j.n);
             worstK = std::max(worstK, std::abs(kh.x * R * R - 1.0));
             worstH = std::max(worstH, std::abs(kh.y * R + 1.0));  // bends away from the outward normal
@@ -156,10 +156,14 @@ TEST(Rational, CylinderConeAndTorusLieOnTheirSurfaces) {
             const double rho = std::hypot(j.p.x, j.p.y), z = j.p.z;
             double err = 0.0;
             const bool cap = kind < 2 && (patch < 4 || (kind == 0 && patch >= 8));  // the profile: base, side(, top)
-            if (kind == 2) err = std::abs(std::hypot(rho - R, z) - r);
-            else if (cap) err = std::max(0.0, rho - R);
-            else if (kind == 0) err = std::abs(rho - R);
-            else err = std::abs(rho - R * (1.0 - z / H));
+            if (kind == 2)
+                err = std::abs(std::hypot(rho - R, z) - r);
+            else if (cap)
+                err = std::max(0.0, rho - R);
+            else if (kind == 0)
+                err = std::abs(rho - R);
+            else
+                err = std::abs(rho - R * (1.0 - z / H));
             worst = std::max(worst, err);
             // The normal points out of the solid: away from the axis on the sides, down/up on the caps.
             Vec3 out = kind == 2 ? Vec3(j.p.x - R * j.p.x / rho, j.p.y - R * j.p.y / rho, z) : Vec3(j.p.x, j.p.y, 0.0);
@@ -231,7 +235,7 @@ TEST(Rational, FilesCarryWeightsAndRefuseBadOnes) {
             EXPECT_NE(std::string(e.what()).find("t.patchwork"), std::string::npos) << e.what();
         }
     };
-    refused("\"weights\": [\n", "\"weights\": [\n-1.0,\n", "weights");   // a count that does not match
+    refused("\"weights\": [\n", "\"weights\": [\n-1.0,\n", "weights");  // a count that does not match
     refused("\"weights\": [\n    1.0", "\"weights\": [\n    0.0", "weights[0]");
     refused("\"weights\": [\n    1.0", "\"weights\": [\n    \"heavy\"", "weights[0]");
 }
@@ -277,8 +281,7 @@ TEST(Rational, WeldingAndMergingKeepPointsOfDifferentWeights) {
     merged.patches.push_back(plain);
     mergeCoincidentPoints(merged, 0.0);
     for (uint32_t i : merged.patches.back().idx) EXPECT_EQ(pointWeight(merged, i), 1.0);
-    for (size_t k = 0; k < 16; ++k)
-        EXPECT_EQ(pointWeight(merged, merged.patches[0].idx[k]), pointWeight(doc, doc.patches[0].idx[k])) << k;
+    for (size_t k = 0; k < 16; ++k) EXPECT_EQ(pointWeight(merged, merged.patches[0].idx[k]), pointWeight(doc, doc.patches[0].idx[k])) << k;
     EXPECT_NE(merged.patches.back().idx[5], merged.patches[0].idx[5]);  // an inner point of weight ≠ 1 stays apart from its plain twin
 }
 

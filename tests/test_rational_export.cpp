@@ -84,8 +84,8 @@ TEST(RationalExport, TheSphereIsASphereToTheLastBitOfAFloat) {
         }
     EXPECT_GT(vertices, 8u * 24u * 24u / 2u);
     EXPECT_EQ(triangles, size_t(8 * 2 * 24 * 24 - 8 * 24));  // the pole rows fan: no degenerate triangles
-    EXPECT_LE(worst, 2.0 * FLT_EPSILON);  // a float's precision at radius 1 (rounding each coordinate)
-    EXPECT_EQ(unpaired, 0u);               // watertight: a closed surface
+    EXPECT_LE(worst, 2.0 * FLT_EPSILON);                     // a float's precision at radius 1 (rounding each coordinate)
+    EXPECT_EQ(unpaired, 0u);                                 // watertight: a closed surface
 
     // assimp reads both without a warning; the OBJ's faces close up by position id.
     for (const fs::path& f : {glb, obj}) {

@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "core/model/camera_math.hpp"
 #include "core/construct/model_builders.hpp"
+#include "core/model/camera_math.hpp"
 #include "core/select/selection.hpp"
 
 using namespace pw;

@@ -4,13 +4,13 @@
 
 #include <algorithm>
 
-#include "core/model/camera_math.hpp"
-#include "core/commands/command_table.hpp"
-#include "core/edit/edit_session.hpp"
 #include "core/base/errors.hpp"
+#include "core/commands/command_table.hpp"
 #include "core/construct/model_builders.hpp"
-#include "core/ops/patch_ops.hpp"
+#include "core/edit/edit_session.hpp"
 #include "core/io/patchwork_format.hpp"
+#include "core/model/camera_math.hpp"
+#include "core/ops/patch_ops.hpp"
 #include "core/select/picking.hpp"
 #include "core/select/selection_ops.hpp"
 

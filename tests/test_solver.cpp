@@ -9,13 +9,13 @@
 #include <random>
 #include <set>
 
+#include "core/base/embedded_data.hpp"
+#include "core/construct/model_builders.hpp"
 #include "core/io/bpt_format.hpp"
+#include "core/model/document.hpp"
+#include "core/model/join_detect.hpp"
 #include "core/solve/constraint_solver.hpp"
 #include "core/solve/continuity_report.hpp"
-#include "core/model/document.hpp"
-#include "core/base/embedded_data.hpp"
-#include "core/model/join_detect.hpp"
-#include "core/construct/model_builders.hpp"
 
 using namespace pw;
 
@@ -37,8 +37,7 @@ std::vector<Triple> triples(const Document& doc) {
         const Patch& B = doc.patches[j.patchB];
         for (int k = 0; k < 4; ++k) {
             const int kb = j.reversed ? 3 - k : k;
-            out.push_back({A.idx[edgeSlot(j.edgeA, k, 1)], A.idx[edgeSlot(j.edgeA, k, 0)],
-                           B.idx[edgeSlot(j.edgeB, kb, 1)], j.alpha});
+            out.push_back({A.idx[edgeSlot(j.edgeA, k, 1)], A.idx[edgeSlot(j.edgeA, k, 0)], B.idx[edgeSlot(j.edgeB, kb, 1)], j.alpha});
         }
     }
     return out;
@@ -68,8 +67,7 @@ void expectVecNear(const Vec3& a, const Vec3& b, double tol) {
 
 // Drags `sel` by `delta` (in `steps` increments with one factorisation, like an interactive
 // drag), then checks the constraints and that the selection sits exactly where it was put.
-void dragAndCheck(Document& doc, const std::vector<uint32_t>& sel, const Vec3& delta, int steps = 3,
-                  SolverOptions opt = {}) {
+void dragAndCheck(Document& doc, const std::vector<uint32_t>& sel, const Vec3& delta, int steps = 3, SolverOptions opt = {}) {
     DragSolver solver(doc, sel, opt);
     std::vector<Vec3> start(sel.size());
     for (size_t i = 0; i < sel.size(); ++i) start[i] = doc.points[sel[i]];
@@ -118,8 +116,8 @@ Document makeRing(int around, int rows) {
     for (int i = 0; i < rows; ++i)
         for (int j = 0; j < around; ++j) {
             const auto p = static_cast<uint32_t>(i * around + j);
-            doc.joins.push_back(Join{p, Edge::U1, static_cast<uint32_t>(i * around + (j + 1) % around), Edge::U0,
-                                     false, Continuity::C1, 1.0});
+            doc.joins.push_back(
+                Join{p, Edge::U1, static_cast<uint32_t>(i * around + (j + 1) % around), Edge::U0, false, Continuity::C1, 1.0});
             if (i + 1 < rows)
                 doc.joins.push_back(Join{p, Edge::V1, static_cast<uint32_t>(p + around), Edge::V0, false, Continuity::C1, 1.0});
         }

@@ -5,14 +5,14 @@
 // STEP is stable; faces Patchwork cannot edit are skipped with a note, files with none refused.
 #include <gtest/gtest.h>
 
+#include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepBuilderAPI_MakeWire.hxx>
-#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepLib.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
-#include <Geom_BSplineSurface.hxx>
 #include <Geom2d_Circle.hxx>
-#include <BRepLib.hxx>
+#include <Geom_BSplineSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <IGESControl_Controller.hxx>
 #include <IGESControl_Writer.hxx>
@@ -35,17 +35,17 @@
 #include <string>
 #include <vector>
 
-#include "core/eval/bezier_triangle.hpp"
-#include "core/io/bpt_format.hpp"
-#include "core/io/document_io.hpp"
 #include "core/base/errors.hpp"
 #include "core/construct/model_builders.hpp"
-#include "core/ops/net_ops.hpp"
-#include "core/eval/patch_eval.hpp"
 #include "core/construct/primitives.hpp"
+#include "core/eval/bezier_triangle.hpp"
+#include "core/eval/patch_eval.hpp"
 #include "core/eval/rational_eval.hpp"
+#include "core/io/bpt_format.hpp"
+#include "core/io/document_io.hpp"
 #include "core/io/step_export.hpp"
 #include "core/io/step_import.hpp"
+#include "core/ops/net_ops.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;
@@ -76,7 +76,7 @@ ReadBack readWithOcct(const fs::path& path) {
     return r;
 }
 
-pw::Vec3 value(const Handle(Geom_Surface)& s, double u, double v) {
+pw::Vec3 value(const Handle(Geom_Surface) & s, double u, double v) {
     const gp_Pnt p = s->Value(u, v);
     return {p.X(), p.Y(), p.Z()};
 }
@@ -187,7 +187,8 @@ TEST(StepExport, TheSphereIsExactRationalFaces) {
         bs->Bounds(u0, u1, v0, v1);
         for (int i = 0; i <= 16; ++i)
             for (int j = 0; j <= 16; ++j)
-                worstRadius = std::max(worstRadius, std::abs(glm::length(value(bs, u0 + (u1 - u0) * j / 16.0, v0 + (v1 - v0) * i / 16.0) - c) - 4.0));
+                worstRadius =
+                    std::max(worstRadius, std::abs(glm::length(value(bs, u0 + (u1 - u0) * j / 16.0, v0 + (v1 - v0) * i / 16.0) - c) - 4.0));
         double best = 1e300;
         for (const pw::Patch& p : doc.patches) {
             const pw::WindowNet net = pw::gatherWindow(doc, p.idx);
@@ -374,7 +375,7 @@ TEST(StepImport, FacesPatchworkCannotEditAreSkippedWithANote) {
         EXPECT_LT(worst, 1e-9);
         doc.patches.erase(doc.patches.begin());
     }
-    auto on = [&](const Handle(Geom_BSplineSurface)& s, double u0, double u1, double v0, double v1, const pw::Patch& p, double us,
+    auto on = [&](const Handle(Geom_BSplineSurface) & s, double u0, double u1, double v0, double v1, const pw::Patch& p, double us,
                   double vs) {
         double worst = 0.0;
         const pw::Net16 net = pw::gatherNet(doc, p.idx);
@@ -442,7 +443,8 @@ TEST(StepImport, DamagedFilesAreRefusedNamingTheFile) {
         {"text.igs", "this is not IGES\n"},
         {"empty.stp", ""},
     };
-    for (double cut : {0.1, 0.5, 0.9}) files.push_back({"cut" + std::to_string(int(cut * 10)) + ".step", whole.substr(0, size_t(cut * double(whole.size())))});
+    for (double cut : {0.1, 0.5, 0.9})
+        files.push_back({"cut" + std::to_string(int(cut * 10)) + ".step", whole.substr(0, size_t(cut * double(whole.size())))});
     for (const auto& [name, text] : files) {
         SCOPED_TRACE(name);
         std::ofstream(dir / name, std::ios::binary) << text;

@@ -6,11 +6,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/model/camera_math.hpp"
-#include "core/solve/constraint_solver.hpp"
 #include "core/edit/drag_controller.hpp"
 #include "core/edit/edit_session.hpp"
+#include "core/model/camera_math.hpp"
 #include "core/select/symmetry.hpp"
+#include "core/solve/constraint_solver.hpp"
 #include "support.hpp"
 
 using namespace pw;

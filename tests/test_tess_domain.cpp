@@ -114,7 +114,6 @@ TEST(TessDomain, IsolineCounts) {
 }
 
 TEST(TessDomain, NamesRoundTrip) {
-    for (DomainKind k : {DomainKind::Quad, DomainKind::Triangle, DomainKind::Isoline})
-        EXPECT_EQ(parseDomain(domainName(k)), k);
+    for (DomainKind k : {DomainKind::Quad, DomainKind::Triangle, DomainKind::Isoline}) EXPECT_EQ(parseDomain(domainName(k)), k);
     EXPECT_FALSE(parseDomain("hexagon"));
 }

@@ -8,16 +8,16 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/model/camera_math.hpp"
+#include "core/base/errors.hpp"
 #include "core/commands/command_table.hpp"
-#include "core/solve/constraint_solver.hpp"
+#include "core/construct/model_builders.hpp"
 #include "core/edit/drag_controller.hpp"
 #include "core/edit/edit_session.hpp"
-#include "core/base/errors.hpp"
-#include "core/construct/model_builders.hpp"
 #include "core/eval/patch_eval.hpp"
+#include "core/model/camera_math.hpp"
 #include "core/ops/patch_ops.hpp"
 #include "core/select/picking.hpp"
+#include "core/solve/constraint_solver.hpp"
 
 #include "support.hpp"
 
@@ -117,7 +117,8 @@ TEST(Transforms, TypedValuesReplaceTheMouse) {
     d.setAxis(2);
     d.typeChar('9'), d.typeChar('0');
     ASSERT_TRUE(d.update(g.s.doc, g.view, 401, 300, false));
-    for (uint32_t p : moved) EXPECT_NEAR(glm::length(g.s.doc.points[p] - rotatedAbout(before[p], g.s.cursor, Vec3(0, 0, 1), 90.0)), 0.0, 1e-12);
+    for (uint32_t p : moved)
+        EXPECT_NEAR(glm::length(g.s.doc.points[p] - rotatedAbout(before[p], g.s.cursor, Vec3(0, 0, 1), 90.0)), 0.0, 1e-12);
     EXPECT_NEAR(d.lastAngle(), 90.0, 0.0);
     d.finish(g.s);
     EXPECT_EQ(g.s.history().undoLabel(), "Rotate 16 points");
@@ -183,7 +184,8 @@ TEST(Transforms, PartialRotationAndScaleGoThroughTheSolver) {
     EXPECT_LT(maxConstraintResidual(g.s.doc), 1e-9);
     bool neighbourMoved = false;
     for (uint32_t p : g.s.doc.patches[1].idx)
-        if (g.s.doc.points[p] != before[p] && !std::count(g.s.doc.patches[0].idx.begin(), g.s.doc.patches[0].idx.end(), p)) neighbourMoved = true;
+        if (g.s.doc.points[p] != before[p] && !std::count(g.s.doc.patches[0].idx.begin(), g.s.doc.patches[0].idx.end(), p))
+            neighbourMoved = true;
     EXPECT_TRUE(neighbourMoved);
     d.cancel(g.s.doc);
     EXPECT_EQ(g.s.doc.points, before);
@@ -247,7 +249,7 @@ TEST(Transforms, AxisDragsAlongTheViewDirectionAreDepthBounded) {
     ASSERT_TRUE(d.update(g.s.doc, front, at.x, at.y - 120.0, false));
     const double along = std::abs(d.lastOffset().y);
     EXPECT_EQ(d.lastOffset().x, 0.0);
-    EXPECT_GT(along, 0.5 * free);          // it moves
+    EXPECT_GT(along, 0.5 * free);         // it moves
     EXPECT_LE(along, 4.0 * free + 1e-9);  // but at most four times as fast as the view plane
     EXPECT_LT(maxConstraintResidual(g.s.doc), 1e-9);
     // An axis across the view still follows the mouse exactly.
@@ -262,12 +264,12 @@ TEST(Transforms, AxisDragsAlongTheViewDirectionAreDepthBounded) {
 TEST(Transforms, SnapsToPointsEdgesAndSurfacesOfOtherItems) {
     EditSession s;
     Document doc;
-    addFlatPatch(doc, Vec3(0.0, 0.0, 0.0), 2.0);   // patch 0: moved
-    addFlatPatch(doc, Vec3(3.0, 0.0, 0.5), 2.0);   // patch 1: the target, raised 0.5
+    addFlatPatch(doc, Vec3(0.0, 0.0, 0.0), 2.0);  // patch 0: moved
+    addFlatPatch(doc, Vec3(3.0, 0.0, 0.5), 2.0);  // patch 1: the target, raised 0.5
     s.reset(doc, "");
     s.sel.patch = 0;
     const DragView view = viewOf(0.0, 89.0, Vec3(1.5, 0.0, 0.0), 10.0);
-    const uint32_t grabbed = s.doc.patches[0].idx[15];  // the (+1, +1) corner
+    const uint32_t grabbed = s.doc.patches[0].idx[15];          // the (+1, +1) corner
     const Vec3 target = s.doc.points[s.doc.patches[1].idx[0]];  // patch 1's (2, -1) corner
     const glm::dvec2 from = pixel(view, s.doc.points[grabbed]);
     const glm::dvec2 to = pixel(view, target);
@@ -318,7 +320,8 @@ TEST(Transforms, ScriptCommandsUseThePivotAndSnapSettings) {
     const std::vector<Vec3> before = s.doc.points;
     run(s, "select patch 0; pivot cursor; cursor 0 0 0; rotate Z 90");
     EXPECT_EQ(s.pivot, PivotMode::Cursor);
-    for (uint32_t p : s.doc.patches[0].idx) EXPECT_NEAR(glm::length(s.doc.points[p] - rotatedAbout(before[p], Vec3(0.0), Vec3(0, 0, 1), 90.0)), 0.0, 1e-12);
+    for (uint32_t p : s.doc.patches[0].idx)
+        EXPECT_NEAR(glm::length(s.doc.points[p] - rotatedAbout(before[p], Vec3(0.0), Vec3(0, 0, 1), 90.0)), 0.0, 1e-12);
     EXPECT_LT(maxConstraintResidual(s.doc), 1e-9);
     run(s, "undo; select all; pivot median; scale 2");
     EXPECT_LT(maxConstraintResidual(s.doc), 1e-12);  // the whole joined grid: no correction needed

@@ -7,16 +7,16 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "core/io/document_io.hpp"
-#include "core/model/edit_history.hpp"
 #include "core/base/errors.hpp"
-#include "core/model/join_detect.hpp"
 #include "core/construct/model_builders.hpp"
-#include "core/ops/patch_ops.hpp"
+#include "core/eval/bezier_triangle.hpp"
+#include "core/io/document_io.hpp"
 #include "core/io/patchwork_format.hpp"
+#include "core/model/edit_history.hpp"
+#include "core/model/join_detect.hpp"
+#include "core/ops/patch_ops.hpp"
 #include "core/select/picking.hpp"
 #include "core/select/selection.hpp"
-#include "core/eval/bezier_triangle.hpp"
 #include "support.hpp"
 
 using namespace pw;

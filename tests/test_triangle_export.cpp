@@ -6,9 +6,9 @@
 #include <cmath>
 #include <map>
 
+#include "core/construct/model_builders.hpp"
 #include "core/eval/bezier_triangle.hpp"
 #include "core/mesh/mesh_tessellate.hpp"
-#include "core/construct/model_builders.hpp"
 
 using namespace pw;
 
@@ -95,8 +95,7 @@ TEST(TriangleMesh, DomeIsWeldedAndWatertight) {
         }
         // Winding agrees with the normals (counter-clockwise seen from the normal side).
         for (size_t t = 0; t < m.indices.size(); t += 3) {
-            const Vec3 a = v3(m.positions[m.indices[t]]), b = v3(m.positions[m.indices[t + 1]]),
-                       c = v3(m.positions[m.indices[t + 2]]);
+            const Vec3 a = v3(m.positions[m.indices[t]]), b = v3(m.positions[m.indices[t + 1]]), c = v3(m.positions[m.indices[t + 2]]);
             const Vec3 face = glm::cross(b - a, c - a);
             EXPECT_GT(glm::dot(face, v3(m.normals[m.indices[t]])), 0.0);
         }

@@ -6,4 +6,4 @@
 namespace pw::embedded {
 extern const std::string_view teapotBpt;  // data/teapot.bpt, the default document
 extern const std::string_view uiFontTtf;  // DejaVu Sans (fonts-dejavu-core): figure labels, presentation fonts
-}
+}  // namespace pw::embedded

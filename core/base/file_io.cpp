@@ -23,8 +23,7 @@ std::string readFileLimited(const std::filesystem::path& path) {
     const auto size = std::filesystem::file_size(path, ec);
     if (ec) throw InputError(name, "cannot read: " + ec.message());
     if (size > limits::kMaxFileBytes)
-        throw InputError(name, "file is " + std::to_string(size) + " bytes; the limit is " +
-                                   std::to_string(limits::kMaxFileBytes));
+        throw InputError(name, "file is " + std::to_string(size) + " bytes; the limit is " + std::to_string(limits::kMaxFileBytes));
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(name, std::string("cannot open: ") + std::strerror(errno));
     std::string data(static_cast<size_t>(size), '\0');
@@ -81,8 +80,7 @@ OutputTarget checkOutputPath(const std::filesystem::path& path) {
     std::error_code ec;
     if (!std::filesystem::is_directory(dir, ec)) throw OutputError(name, "directory " + dir.string() + " does not exist");
     if (::stat(t.path.c_str(), &st) == 0) {
-        if (!S_ISREG(st.st_mode))
-            throw OutputError(name, "is " + fileKind(st.st_mode) + "; Patchwork writes only regular files");
+        if (!S_ISREG(st.st_mode)) throw OutputError(name, "is " + fileKind(st.st_mode) + "; Patchwork writes only regular files");
         if ((st.st_mode & 0222) == 0) throw OutputError(name, "is read-only; make it writable or choose another name");
         t.exists = true;
         t.mode = st.st_mode & 07777;
@@ -118,7 +116,8 @@ void OutputBatch::stage(const std::filesystem::path& path, std::string_view data
     if (!writeAll(fd, data)) fail(errno ? std::strerror(errno) : "short write");
     if (t.exists) {
         // Keep the old file's permissions and, where allowed, its owner.
-        if (::fchown(fd, t.uid, t.gid) != 0) { /* not ours to give away: keep ours */ }
+        if (::fchown(fd, t.uid, t.gid) != 0) { /* not ours to give away: keep ours */
+        }
         if (::fchmod(fd, t.mode) != 0) fail(std::string("cannot keep the permissions: ") + std::strerror(errno));
     }
     if (::fsync(fd) != 0) fail(std::strerror(errno));

@@ -34,9 +34,12 @@ size_t excessiveNesting(std::string_view text, int maxDepth) {
     for (size_t i = 0; i < text.size(); ++i) {
         const char c = text[i];
         if (inString) {
-            if (escaped) escaped = false;
-            else if (c == '\\') escaped = true;
-            else if (c == '"') inString = false;
+            if (escaped)
+                escaped = false;
+            else if (c == '\\')
+                escaped = true;
+            else if (c == '"')
+                inString = false;
         } else if (c == '"') {
             inString = true;
         } else if (c == '[' || c == '{') {
@@ -51,8 +54,8 @@ size_t excessiveNesting(std::string_view text, int maxDepth) {
 namespace {
 void guardJsonText(std::string_view text, const std::string& sourceName, int maxDepth) {
     if (text.size() > limits::kMaxFileBytes)
-        throw InputError(sourceName, "JSON is " + std::to_string(text.size()) + " bytes; the limit is " +
-                                         std::to_string(limits::kMaxFileBytes));
+        throw InputError(sourceName,
+                         "JSON is " + std::to_string(text.size()) + " bytes; the limit is " + std::to_string(limits::kMaxFileBytes));
     if (const size_t at = excessiveNesting(text, maxDepth); at != std::string_view::npos)
         throw InputError(sourceName, "JSON nested deeper than " + std::to_string(maxDepth) + " levels", lineAt(text, at));
 }
@@ -70,8 +73,7 @@ nlohmann::json parseJsonGuarded(std::string_view text, const std::string& source
         // E.g. "number overflow parsing '1e400'" (out_of_range.406), which carries no position:
         // locate the quoted token in the text.
         std::string what = e.what();
-        if (what.rfind("[json.exception.", 0) == 0 && what.find("] ") != std::string::npos)
-            what = what.substr(what.find("] ") + 2);
+        if (what.rfind("[json.exception.", 0) == 0 && what.find("] ") != std::string::npos) what = what.substr(what.find("] ") + 2);
         int line = 0;
         const size_t q0 = what.find('\''), q1 = q0 == std::string::npos ? q0 : what.find('\'', q0 + 1);
         if (q1 != std::string::npos && q1 > q0 + 1) {

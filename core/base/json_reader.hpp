@@ -62,15 +62,13 @@ public:
 
     const json& array(const json& v, const std::string& path, size_t maxSize, const char* what) const {
         if (!v.is_array()) wrongType(v, path, "an array");
-        if (v.size() > maxSize)
-            fail(path, std::to_string(v.size()) + " " + what + "; the limit is " + std::to_string(maxSize));
+        if (v.size() > maxSize) fail(path, std::to_string(v.size()) + " " + what + "; the limit is " + std::to_string(maxSize));
         return v;
     }
 
     const json& fixedArray(const json& v, const std::string& path, size_t n) const {
         if (!v.is_array()) wrongType(v, path, ("an array of " + std::to_string(n)).c_str());
-        if (v.size() != n)
-            fail(path, "expected an array of " + std::to_string(n) + " elements, found " + std::to_string(v.size()));
+        if (v.size() != n) fail(path, "expected an array of " + std::to_string(n) + " elements, found " + std::to_string(v.size()));
         return v;
     }
 
@@ -84,15 +82,13 @@ public:
     double numberInRange(const json& v, const std::string& path, double lo, double hi, bool openLo = false) const {
         const double d = number(v, path);
         if (d < lo || d > hi || (openLo && d == lo))
-            fail(path, "value " + shortNumber(d) + " is outside " + (openLo ? "(" : "[") + shortNumber(lo) + ", " +
-                           shortNumber(hi) + "]");
+            fail(path, "value " + shortNumber(d) + " is outside " + (openLo ? "(" : "[") + shortNumber(lo) + ", " + shortNumber(hi) + "]");
         return d;
     }
 
     double coordinate(const json& v, const std::string& path) const {
         const double d = number(v, path);
-        if (std::abs(d) > limits::kMaxCoordinate)
-            fail(path, "coordinate " + shortNumber(d) + " is too large (the limit is ±1e9)");
+        if (std::abs(d) > limits::kMaxCoordinate) fail(path, "coordinate " + shortNumber(d) + " is too large (the limit is ±1e9)");
         return d;
     }
 

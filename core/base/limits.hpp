@@ -8,11 +8,11 @@
 namespace pw::limits {
 
 inline constexpr std::size_t kMaxFileBytes = 256u * 1024u * 1024u;  // any file read
-inline constexpr std::size_t kMaxPoints = 4'000'000;                 // pool entries
-inline constexpr std::size_t kMaxPatches = 1'000'000;                // patches + surface windows
+inline constexpr std::size_t kMaxPoints = 4'000'000;                // pool entries
+inline constexpr std::size_t kMaxPatches = 1'000'000;               // patches + surface windows
 inline constexpr std::size_t kMaxJoins = 4'000'000;
-inline constexpr uint32_t kMaxNetSide = 4096;                        // rows or columns of one net
-inline constexpr double kMaxCoordinate = 1e9;                        // |x|, |y|, |z|
+inline constexpr uint32_t kMaxNetSide = 4096;  // rows or columns of one net
+inline constexpr double kMaxCoordinate = 1e9;  // |x|, |y|, |z|
 inline constexpr float kMinTessLevel = 1.0f;
 inline constexpr float kMaxTessLevel = 64.0f;  // Vulkan's guaranteed maxTessellationGenerationLevel
 inline constexpr int kMaxExportLevel = 256;    // CPU tessellation for export

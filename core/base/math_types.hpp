@@ -2,8 +2,8 @@
 #pragma once
 
 #include <array>
-#include <glm/vec3.hpp>
 #include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 
 namespace pw {
 

@@ -8,7 +8,6 @@
 #include "core/base/errors.hpp"
 #include "core/base/limits.hpp"
 
-
 namespace pw {
 
 void CommandTable::add(Command c) {
@@ -125,14 +124,18 @@ uint32_t commandIndex(const std::string& word, size_t count, const char* what) {
     const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), v);
     if (ec != std::errc() || ptr != word.data() + word.size())
         throw EditError(std::string(what) + ": expected an index, got '" + word + "'");
-    if (v >= count)
-        throw EditError(std::string(what) + " " + word + " does not exist (the document has " + std::to_string(count) + ")");
+    if (v >= count) throw EditError(std::string(what) + " " + word + " does not exist (the document has " + std::to_string(count) + ")");
     return uint32_t(v);
 }
 
 Command windowToggle(const char* name, const char* label, const char* menu, WindowToggle which, std::vector<std::string> keys,
                      const char* help) {
-    return {.name = name, .label = label, .menu = menu, .help = help, .bindings = {{"", "", std::move(keys)}}, .windowOnly = true,
+    return {.name = name,
+            .label = label,
+            .menu = menu,
+            .help = help,
+            .bindings = {{"", "", std::move(keys)}},
+            .windowOnly = true,
             .checked = [which](const EditSession&, const CommandHost& h) { return h.toggled(which); },
             .run = [which](CommandContext& ctx) { ctx.host.toggle(which); }};
 }
@@ -141,8 +144,8 @@ void expectArgs(const CommandContext& ctx, size_t min, size_t max) {
     const size_t n = ctx.args.size();
     if (n >= min && n <= max) return;
     std::string want = min == max ? std::to_string(min) : std::to_string(min) + " to " + std::to_string(max);
-    throw EditError("expected " + want + " argument" + (max == 1 ? "" : "s") + ", got " + std::to_string(n) + " (usage: " +
-                    ctx.command.name + (ctx.command.usage.empty() ? "" : " " + ctx.command.usage) + ")");
+    throw EditError("expected " + want + " argument" + (max == 1 ? "" : "s") + ", got " + std::to_string(n) +
+                    " (usage: " + ctx.command.name + (ctx.command.usage.empty() ? "" : " " + ctx.command.usage) + ")");
 }
 
 CommandTable makeCommandTable() {

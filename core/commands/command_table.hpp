@@ -28,7 +28,10 @@ public:
     // Before the command `words` (name and arguments) replaces a modified document: true to go on
     // now. A window asks the user and returns false; it runs the command again (unguarded) once the
     // user saved or discarded.
-    virtual bool confirmDiscard(const std::vector<std::string>& words) { (void)words; return true; }
+    virtual bool confirmDiscard(const std::vector<std::string>& words) {
+        (void)words;
+        return true;
+    }
     // Writes `doc` to `path` (by extension). A script host keeps every write until the script ended
     // well, so that a failing script leaves no file behind.
     virtual void write(const Document& doc, const std::string& path) = 0;
@@ -50,7 +53,10 @@ public:
     virtual void sweepAnimation(const std::string& path) { (void)path; }
     // Fits `box` into the 3D view (a window knows its panels and panes); false: no view, the
     // command frames for a 16:9 image.
-    virtual bool frame(const Bounds& box) { (void)box; return false; }
+    virtual bool frame(const Bounds& box) {
+        (void)box;
+        return false;
+    }
     virtual void status(const std::string& message) { (void)message; }
 };
 
@@ -75,14 +81,14 @@ struct CommandBinding {
 };
 
 struct Command {
-    std::string name;   // script and palette name: "save", "view", "add-patch"
-    std::string label;  // "Save", "Add Flat Patch"
-    std::string menu;   // "File", "Edit", "Select", "Add", "Patch", "View", "Display", "Help"; "" = none
-    std::string usage;  // argument synopsis for scripts and F1: "[FILE]", "X Y Z"
-    std::string help;   // one sentence for tooltips, F1 and the palette
+    std::string name;                      // script and palette name: "save", "view", "add-patch"
+    std::string label;                     // "Save", "Add Flat Patch"
+    std::string menu;                      // "File", "Edit", "Select", "Add", "Patch", "View", "Display", "Help"; "" = none
+    std::string usage;                     // argument synopsis for scripts and F1: "[FILE]", "X Y Z"
+    std::string help;                      // one sentence for tooltips, F1 and the palette
     std::vector<CommandBinding> bindings;  // menu entries with shortcuts; empty: one entry, no args
     bool windowOnly = false;
-    bool previewable = false;  // takes CommandContext::preview
+    bool previewable = false;                                             // takes CommandContext::preview
     std::function<bool(const EditSession&)> enabled;                      // null: always
     std::function<bool(const EditSession&, const CommandHost&)> checked;  // null: not a toggle
     std::function<void(CommandContext&)> run;
@@ -121,12 +127,12 @@ std::vector<std::string> splitCommandWords(std::string_view line);
 // The document, file, selection, transform, patch, view and display commands, and the
 // window-only ones (their runs call the host).
 CommandTable makeCommandTable();
-void addFileCommands(CommandTable& t);       // core/commands/commands_file.cpp: new, open, import, save, undo, …
-void addSelectCommands(CommandTable& t);     // core/commands/commands_select.cpp: select, move, rotate, scale, cursor
-void addModelCommands(CommandTable& t);      // core/commands/commands_model.cpp: add, delete, duplicate, join, split, …
-void addPrimitiveCommands(CommandTable& t);  // core/commands/commands_primitives.cpp: exact sphere, cylinder, cone, torus; weight
-void addViewCommands(CommandTable& t);       // core/commands/commands_view.cpp: views, frame, overlays, shading, levels
-void addSettingCommands(CommandTable& t);    // core/commands/commands_settings.cpp: `set KEY VALUE...` for every settings row
+void addFileCommands(CommandTable& t);          // core/commands/commands_file.cpp: new, open, import, save, undo, …
+void addSelectCommands(CommandTable& t);        // core/commands/commands_select.cpp: select, move, rotate, scale, cursor
+void addModelCommands(CommandTable& t);         // core/commands/commands_model.cpp: add, delete, duplicate, join, split, …
+void addPrimitiveCommands(CommandTable& t);     // core/commands/commands_primitives.cpp: exact sphere, cylinder, cone, torus; weight
+void addViewCommands(CommandTable& t);          // core/commands/commands_view.cpp: views, frame, overlays, shading, levels
+void addSettingCommands(CommandTable& t);       // core/commands/commands_settings.cpp: `set KEY VALUE...` for every settings row
 void addDisplacementCommands(CommandTable& t);  // core/commands/commands_displacement.cpp: height map, scale, bias, mapping
 
 // Argument parsing for commands: a number, an index, an "A:EDGE" pair; EditError naming the word.

@@ -3,11 +3,10 @@
 #include <cmath>
 #include <filesystem>
 
-#include "core/commands/command_table.hpp"
-#include "core/model/settings.hpp"
-#include "core/eval/displacement.hpp"
 #include "core/base/errors.hpp"
-
+#include "core/commands/command_table.hpp"
+#include "core/eval/displacement.hpp"
+#include "core/model/settings.hpp"
 
 namespace pw {
 
@@ -38,64 +37,89 @@ void requireMap(const CommandContext& ctx) {
 }  // namespace
 
 void addDisplacementCommands(CommandTable& t) {
-    t.add({.name = "displacement", .label = "Height Map...", .menu = "Display", .usage = "FILE | off",
+    t.add({.name = "displacement",
+           .label = "Height Map...",
+           .menu = "Display",
+           .usage = "FILE | off",
            .help = "Displace the surface along its normal by an 8- or 16-bit PNG height map (off: remove it)",
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, ctx.host.hasWindow() ? 0 : 1, 1);
                if (ctx.args.empty()) return ctx.host.fileDialog(FileDialogKind::HeightMap);
                if (ctx.args[0] == "off") {
                    requireMap(ctx);
-                   return ctx.session.apply("Remove height map", [](Document& d) { d.displacement.map.clear(); }, false);
+                   return ctx.session.apply(
+                       "Remove height map", [](Document& d) { d.displacement.map.clear(); }, false);
                }
                const HeightMap map = loadHeightMap(ctx.args[0]);  // refused here, naming the file, when unreadable
                const std::string stored = documentMapPath(ctx.args[0], ctx.session.path());
-               ctx.session.apply("Height map", [&](Document& d) {
-                   const bool first = !d.displacement.active() && d.displacement.scale == 0.0f;
-                   d.displacement.map = stored;
-                   if (first) d.displacement.scale = float(0.05 * modelSize(d));  // visible, not overwhelming
-               }, false);
+               ctx.session.apply(
+                   "Height map",
+                   [&](Document& d) {
+                       const bool first = !d.displacement.active() && d.displacement.scale == 0.0f;
+                       d.displacement.map = stored;
+                       if (first) d.displacement.scale = float(0.05 * modelSize(d));  // visible, not overwhelming
+                   },
+                   false);
                ctx.host.status("Height map " + std::to_string(map.width) + " x " + std::to_string(map.height) + ", " +
                                std::to_string(map.bits) + "-bit: " + stored);
            }});
-    t.add({.name = "displacement-scale", .label = "Displacement Scale", .usage = "S",
+    t.add({.name = "displacement-scale",
+           .label = "Displacement Scale",
+           .usage = "S",
            .help = "Height of the map's white above its black, in model units",
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 1, 1);
                requireMap(ctx);
                const float s = heightNumber(ctx.args[0], "the scale");
-               ctx.session.apply("Displacement scale", [&](Document& d) { d.displacement.scale = s; }, false);
+               ctx.session.apply(
+                   "Displacement scale", [&](Document& d) { d.displacement.scale = s; }, false);
            }});
-    t.add({.name = "displacement-bias", .label = "Displacement Bias", .usage = "B",
+    t.add({.name = "displacement-bias",
+           .label = "Displacement Bias",
+           .usage = "B",
            .help = "Height of the map's black, in model units",
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 1, 1);
                requireMap(ctx);
                const float b = heightNumber(ctx.args[0], "the bias");
-               ctx.session.apply("Displacement bias", [&](Document& d) { d.displacement.bias = b; }, false);
+               ctx.session.apply(
+                   "Displacement bias", [&](Document& d) { d.displacement.bias = b; }, false);
            }});
-    t.add({.name = "displacement-mapping", .label = "Displacement Mapping", .usage = "planar|patch",
+    t.add({.name = "displacement-mapping",
+           .label = "Displacement Mapping",
+           .usage = "planar|patch",
            .help = "Map UVs: planar over the ground plane (crack-free everywhere) or each patch's parameters (nets tile the map)",
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 1, 1);
                const auto m = parseDisplacementMapping(ctx.args[0]);
                if (!m) throw EditError("expected planar or patch, got '" + ctx.args[0] + "'");
-               ctx.session.apply("Displacement mapping", [&](Document& d) { d.displacement.mapping = *m; }, false);
+               ctx.session.apply(
+                   "Displacement mapping", [&](Document& d) { d.displacement.mapping = *m; }, false);
            }});
-    t.add({.name = "displacement-own", .label = "Own Displacement", .usage = "S B | off",
+    t.add({.name = "displacement-own",
+           .label = "Own Displacement",
+           .usage = "S B | off",
            .help = "Give the selected patch, net or triangle its own displacement scale and bias (off: the document's again)",
            .enabled = [](const EditSession& s) { return s.sel.patch >= 0 || s.sel.surface >= 0 || s.sel.triangle >= 0; },
-           .run = [](CommandContext& ctx) {
-               const bool off = ctx.args.size() == 1 && ctx.args[0] == "off";
-               if (!off) expectArgs(ctx, 2, 2);
-               std::optional<DisplacementOverride> own;
-               if (!off) own = DisplacementOverride{heightNumber(ctx.args[0], "the scale"), heightNumber(ctx.args[1], "the bias")};
-               const Selection& sel = ctx.session.sel;
-               ctx.session.apply("Own displacement", [&](Document& d) {
-                   if (sel.patch >= 0) d.patches[size_t(sel.patch)].displacement = own;
-                   else if (sel.surface >= 0) d.surfaces[size_t(sel.surface)].displacement = own;
-                   else d.triangles[size_t(sel.triangle)].displacement = own;
-               }, false);
-           }});
+           .run =
+               [](CommandContext& ctx) {
+                   const bool off = ctx.args.size() == 1 && ctx.args[0] == "off";
+                   if (!off) expectArgs(ctx, 2, 2);
+                   std::optional<DisplacementOverride> own;
+                   if (!off) own = DisplacementOverride{heightNumber(ctx.args[0], "the scale"), heightNumber(ctx.args[1], "the bias")};
+                   const Selection& sel = ctx.session.sel;
+                   ctx.session.apply(
+                       "Own displacement",
+                       [&](Document& d) {
+                           if (sel.patch >= 0)
+                               d.patches[size_t(sel.patch)].displacement = own;
+                           else if (sel.surface >= 0)
+                               d.surfaces[size_t(sel.surface)].displacement = own;
+                           else
+                               d.triangles[size_t(sel.triangle)].displacement = own;
+                       },
+                       false);
+               }});
 }
 
 }  // namespace pw

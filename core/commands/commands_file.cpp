@@ -4,11 +4,11 @@
 #include <initializer_list>
 #include <optional>
 
-#include "core/commands/command_table.hpp"
+#include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
+#include "core/commands/command_table.hpp"
 #include "core/io/document_io.hpp"
 #include "core/io/formats.hpp"
-#include "core/base/errors.hpp"
 
 #include "core/tess/tess_presets.hpp"
 
@@ -55,13 +55,19 @@ void save(CommandContext& ctx, const std::string& path) {
 }  // namespace
 
 void addFileCommands(CommandTable& t) {
-    t.add({.name = "new", .label = "New", .menu = "File", .help = "Start a new document with one flat patch",
+    t.add({.name = "new",
+           .label = "New",
+           .menu = "File",
+           .help = "Start a new document with one flat patch",
            .bindings = {{"", "", {"Ctrl+N"}}},
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 0, 0);
                if (mayReplace(ctx)) ctx.session.newDocument();
            }});
-    t.add({.name = "open", .label = "Open...", .menu = "File", .usage = "[FILE]",
+    t.add({.name = "open",
+           .label = "Open...",
+           .menu = "File",
+           .usage = "[FILE]",
            .help = "Open a document (" + formatList(FormatUse::Load, ", ") + "; glTF files that Patchwork wrote)",
            .bindings = {{"", "", {"Ctrl+O"}}},
            .run = [](CommandContext& ctx) {
@@ -72,13 +78,17 @@ void addFileCommands(CommandTable& t) {
                else if (const auto notes = ctx.session.open(ctx.args[0]); !notes.empty())
                    ctx.host.status(skippedSummary(notes));
            }});
-    t.add({.name = "open-notes-patch", .label = "Open the Notes' Bézier Patch",
+    t.add({.name = "open-notes-patch",
+           .label = "Open the Notes' Bézier Patch",
            .help = "Replace the document with the 16-point Bézier patch of the lecture notes",
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 0, 0);
                if (mayReplace(ctx)) ctx.session.reset(notesBezierPatch(), "");
            }});
-    t.add({.name = "import", .label = "Import...", .menu = "File", .usage = "[FILE]",
+    t.add({.name = "import",
+           .label = "Import...",
+           .menu = "File",
+           .usage = "[FILE]",
            .help = "Add everything in a .patchwork, .bpt or Patchwork glTF file to this document, selected",
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, ctx.host.hasWindow() ? 0 : 1, 1);
@@ -87,7 +97,10 @@ void addFileCommands(CommandTable& t) {
                else
                    ctx.session.import(ctx.args[0]);
            }});
-    t.add({.name = "save", .label = "Save", .menu = "File", .usage = "[FILE]",
+    t.add({.name = "save",
+           .label = "Save",
+           .menu = "File",
+           .usage = "[FILE]",
            .help = "Save to the document's file (atomic write); untitled or .bpt documents ask for a name",
            .bindings = {{"", "", {"Ctrl+S"}}},
            .run = [](CommandContext& ctx) {
@@ -99,11 +112,17 @@ void addFileCommands(CommandTable& t) {
                else
                    ctx.host.fileDialog(FileDialogKind::SaveAs);
            }});
-    t.add({.name = "save-as", .label = "Save As...", .menu = "File",
+    t.add({.name = "save-as",
+           .label = "Save As...",
+           .menu = "File",
            .help = "Save under a new name (" + formatList(FormatUse::Document, ", ") + ")",
-           .bindings = {{"", "", {"Ctrl+Shift+S"}}}, .windowOnly = true,
+           .bindings = {{"", "", {"Ctrl+Shift+S"}}},
+           .windowOnly = true,
            .run = [](CommandContext& ctx) { ctx.host.fileDialog(FileDialogKind::SaveAs); }});
-    t.add({.name = "export-gltf", .label = "Export...", .menu = "File", .usage = "[FILE]",
+    t.add({.name = "export-gltf",
+           .label = "Export...",
+           .menu = "File",
+           .usage = "[FILE]",
            .help = "Write a glTF 2.0 (.gltf, .glb; the patches kept in extras) or OBJ (.obj + .mtl) mesh, or exact "
                    "STEP surfaces (.step, .stp)",
            .run = [](CommandContext& ctx) {
@@ -115,14 +134,21 @@ void addFileCommands(CommandTable& t) {
                    throw EditError("'" + ctx.args[0] + "' is not a " + formatList(FormatUse::Export) + " file");
                ctx.host.exportFile(ctx.session.documentToSave(), ctx.args[0]);
            }});
-    t.add({.name = "screenshot", .label = "Save Screenshot...", .menu = "File", .usage = "[FILE]",
+    t.add({.name = "screenshot",
+           .label = "Save Screenshot...",
+           .menu = "File",
+           .usage = "[FILE]",
            .help = "Save the 3D viewport (without panels) as a PNG",
-           .bindings = {{"", "", {"F12"}}}, .windowOnly = true,
+           .bindings = {{"", "", {"F12"}}},
+           .windowOnly = true,
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 0, 1);
                ctx.host.screenshot(ctx.args.empty() ? std::string() : ctx.args[0]);
            }});
-    t.add({.name = "domain-figure", .label = "Save Domain Figure...", .menu = "File", .usage = "[FILE]",
+    t.add({.name = "domain-figure",
+           .label = "Save Domain Figure...",
+           .menu = "File",
+           .usage = "[FILE]",
            .help = "Save the domain view (its panes, levels and counts) as a vector figure for slides: .svg or .pdf (every "
                    "triangle one path), or .png",
            .windowOnly = true,
@@ -130,7 +156,10 @@ void addFileCommands(CommandTable& t) {
                if (const auto path = outputArgument(ctx, FileDialogKind::DomainFigure, {".svg", ".pdf", ".png"}))
                    ctx.host.domainFigure(*path);
            }});
-    t.add({.name = "sweep-animation", .label = "Save Sweep Animation...", .menu = "File", .usage = "[FILE]",
+    t.add({.name = "sweep-animation",
+           .label = "Save Sweep Animation...",
+           .menu = "File",
+           .usage = "[FILE]",
            .help = "Save the Teaching panel's level sweep (from, to, seconds) as an animation at 10 frames a second: the domain "
                    "view's panes when it is open, else the 3D view; .gif, .mp4 or .webm",
            .windowOnly = true,
@@ -138,20 +167,32 @@ void addFileCommands(CommandTable& t) {
                if (const auto path = outputArgument(ctx, FileDialogKind::SweepAnimation, {".gif", ".mp4", ".webm"}))
                    ctx.host.sweepAnimation(*path);
            }});
-    t.add({.name = "quit", .label = "Quit", .menu = "File", .help = "Close the editor (asks about unsaved changes)",
-           .bindings = {{"", "", {"Ctrl+Q"}}}, .windowOnly = true,
+    t.add({.name = "quit",
+           .label = "Quit",
+           .menu = "File",
+           .help = "Close the editor (asks about unsaved changes)",
+           .bindings = {{"", "", {"Ctrl+Q"}}},
+           .windowOnly = true,
            .run = [](CommandContext& ctx) {
                if (mayReplace(ctx)) ctx.host.quit();
            }});
-    t.add({.name = "undo", .label = "Undo", .menu = "Edit", .help = "Undo the last edit (one drag is one step)",
-           .bindings = {{"", "", {"Ctrl+Z"}}}, .enabled = canUndo,
+    t.add({.name = "undo",
+           .label = "Undo",
+           .menu = "Edit",
+           .help = "Undo the last edit (one drag is one step)",
+           .bindings = {{"", "", {"Ctrl+Z"}}},
+           .enabled = canUndo,
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 0, 0);
                ctx.session.undo();
                ctx.host.status("Undone");
            }});
-    t.add({.name = "redo", .label = "Redo", .menu = "Edit", .help = "Redo the undone edit",
-           .bindings = {{"", "", {"Ctrl+Shift+Z", "Ctrl+Y"}}}, .enabled = canRedo,
+    t.add({.name = "redo",
+           .label = "Redo",
+           .menu = "Edit",
+           .help = "Redo the undone edit",
+           .bindings = {{"", "", {"Ctrl+Shift+Z", "Ctrl+Y"}}},
+           .enabled = canRedo,
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 0, 0);
                ctx.session.redo();

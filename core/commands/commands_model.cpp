@@ -3,10 +3,10 @@
 #include <algorithm>
 
 #include "core/commands/command_table.hpp"
+#include "core/model/placement.hpp"
 #include "core/ops/mirror.hpp"
 #include "core/ops/net_ops.hpp"
 #include "core/ops/patch_ops.hpp"
-#include "core/model/placement.hpp"
 
 namespace pw {
 
@@ -57,8 +57,7 @@ void deleteSelection(Document& d, const Selection& sel) {
 // returns its index), beside the model where the cursor is inside it, and selects it as `field`.
 Command addAtCursor(const char* name, const char* label, const char* help, const char* undoLabel, int Selection::*field,
                     uint32_t (*add)(Document&, const Vec3&, double, bool)) {
-    return {.name = name, .label = label, .menu = "Add", .help = help,
-            .run = [=](CommandContext& ctx) {
+    return {.name = name, .label = label, .menu = "Add", .help = help, .run = [=](CommandContext& ctx) {
                 expectArgs(ctx, 0, 0);
                 EditSession& s = ctx.session;
                 int created = -1;
@@ -76,7 +75,12 @@ Command addAtCursor(const char* name, const char* label, const char* help, const
 // returns its index; the edge is the argument or the highlighted one) and selects it as `field`.
 Command fromEdge(const char* name, const char* label, const char* help, const char* undoLabel, int Selection::*field,
                  uint32_t (*make)(Document&, uint32_t, Edge)) {
-    return {.name = name, .label = label, .menu = "Patch", .usage = "[u0|v0|u1|v1]", .help = help, .enabled = hasPatch,
+    return {.name = name,
+            .label = label,
+            .menu = "Patch",
+            .usage = "[u0|v0|u1|v1]",
+            .help = help,
+            .enabled = hasPatch,
             .run = [=](CommandContext& ctx) {
                 expectArgs(ctx, 0, 1);
                 EditSession& s = ctx.session;
@@ -92,12 +96,17 @@ Command fromEdge(const char* name, const char* label, const char* help, const ch
 }  // namespace
 
 void addModelCommands(CommandTable& t) {
-    t.add(addAtCursor("add-patch", "Flat Patch", "Add a flat 1x1 Bézier patch at the 3D cursor", "Add patch", &Selection::patch, addFlatPatch));
+    t.add(addAtCursor("add-patch", "Flat Patch", "Add a flat 1x1 Bézier patch at the 3D cursor", "Add patch", &Selection::patch,
+                      addFlatPatch));
     t.add(addAtCursor("add-triangle", "Bézier Triangle", "Add a flat cubic Bézier triangle (10 points) at the 3D cursor", "Add triangle",
                       &Selection::triangle, addTriangle));
-    t.add(addAtCursor("add-curve", "Bézier Curve", "Add a cubic Bézier curve (4 points) at the 3D cursor, drawn through the isoline tessellator",
-                      "Add curve", &Selection::curve, addCurve));
-    t.add({.name = "add-net", .label = "Net Surface", .menu = "Add", .usage = "[ROWS COLS [flat|tube|torus [bezier|bspline|catmull-rom]]]",
+    t.add(addAtCursor("add-curve", "Bézier Curve",
+                      "Add a cubic Bézier curve (4 points) at the 3D cursor, drawn through the isoline tessellator", "Add curve",
+                      &Selection::curve, addCurve));
+    t.add({.name = "add-net",
+           .label = "Net Surface",
+           .menu = "Add",
+           .usage = "[ROWS COLS [flat|tube|torus [bezier|bspline|catmull-rom]]]",
            .help = "Add a control net (default 7x7 flat B-spline) at the 3D cursor",
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 0, 4);
@@ -109,9 +118,12 @@ void addModelCommands(CommandTable& t) {
                NetShape shape = NetShape::Flat;
                if (ctx.args.size() >= 3) {
                    const std::string& w = ctx.args[2];
-                   if (w == "tube") shape = NetShape::Tube;
-                   else if (w == "torus") shape = NetShape::Torus;
-                   else if (w != "flat") throw EditError("expected flat, tube or torus, got '" + w + "'");
+                   if (w == "tube")
+                       shape = NetShape::Tube;
+                   else if (w == "torus")
+                       shape = NetShape::Torus;
+                   else if (w != "flat")
+                       throw EditError("expected flat, tube or torus, got '" + w + "'");
                }
                Basis basis = Basis::BSpline;
                if (ctx.args.size() == 4) {
@@ -128,39 +140,48 @@ void addModelCommands(CommandTable& t) {
                s.sel.clear();
                s.sel.surface = created;
            }});
-    t.add({.name = "delete", .label = "Delete", .menu = "Edit",
+    t.add({.name = "delete",
+           .label = "Delete",
+           .menu = "Edit",
            .help = "Delete the selected patch, net, triangle or curve (or everything the selected points cover)",
            .bindings = {{"", "", {"Delete"}}},
            .enabled = [](const EditSession& s) { return !s.sel.empty(); },
-           .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 0, 0);
-               const Selection sel = ctx.session.sel;
-               ctx.session.apply("Delete", [&](Document& d) { deleteSelection(d, sel); });
-               ctx.session.sel.clear();
-           }});
-    t.add({.name = "duplicate", .label = "Duplicate", .menu = "Edit",
+           .run =
+               [](CommandContext& ctx) {
+                   expectArgs(ctx, 0, 0);
+                   const Selection sel = ctx.session.sel;
+                   ctx.session.apply("Delete", [&](Document& d) { deleteSelection(d, sel); });
+                   ctx.session.sel.clear();
+               }});
+    t.add({.name = "duplicate",
+           .label = "Duplicate",
+           .menu = "Edit",
            .help = "Copy the selected patch or Bézier triangle with its own points",
            .bindings = {{"", "", {"Shift+D"}}},
            .enabled = [](const EditSession& s) { return hasPatch(s) || s.sel.triangle >= 0; },
-           .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 0, 0);
-               EditSession& s = ctx.session;
-               const Vec3 off(0.1 * modelSize(s.doc), 0.0, 0.0);
-               if (s.sel.triangle >= 0) {
-                   const uint32_t tri = uint32_t(s.sel.triangle);
-                   int created = -1;
-                   s.apply("Duplicate triangle", [&](Document& d) { created = int(duplicateTriangle(d, tri, off)); });
-                   s.sel.clear();
-                   s.sel.triangle = created;
-               } else {
-                   const uint32_t p = uint32_t(s.sel.patch);
-                   int created = -1;
-                   s.apply("Duplicate patch", [&](Document& d) { created = int(duplicatePatch(d, p, off)); });
-                   s.sel.clear();
-                   s.sel.patch = created;
-               }
-           }});
-    t.add({.name = "mirror", .label = "Mirror", .menu = "Edit", .usage = "X|Y|Z",
+           .run =
+               [](CommandContext& ctx) {
+                   expectArgs(ctx, 0, 0);
+                   EditSession& s = ctx.session;
+                   const Vec3 off(0.1 * modelSize(s.doc), 0.0, 0.0);
+                   if (s.sel.triangle >= 0) {
+                       const uint32_t tri = uint32_t(s.sel.triangle);
+                       int created = -1;
+                       s.apply("Duplicate triangle", [&](Document& d) { created = int(duplicateTriangle(d, tri, off)); });
+                       s.sel.clear();
+                       s.sel.triangle = created;
+                   } else {
+                       const uint32_t p = uint32_t(s.sel.patch);
+                       int created = -1;
+                       s.apply("Duplicate patch", [&](Document& d) { created = int(duplicatePatch(d, p, off)); });
+                       s.sel.clear();
+                       s.sel.patch = created;
+                   }
+               }});
+    t.add({.name = "mirror",
+           .label = "Mirror",
+           .menu = "Edit",
+           .usage = "X|Y|Z",
            .help = "Copy the selected patches, triangles and curves reflected across the plane through the 3D cursor normal to X, Y or Z, "
                    "joined where they meet the plane (C1 where the rows there are perpendicular to it)",
            .bindings = {{"Mirror X", "X", {}}, {"Mirror Y", "Y", {}}, {"Mirror Z", "Z", {}}},
@@ -172,12 +193,16 @@ void addModelCommands(CommandTable& t) {
                EditSession& s = ctx.session;
                const std::vector<uint32_t> selected = s.selectedPoints();
                MirrorResult made;
-               s.apply("Mirror " + std::string(1, char('X' + axis)), [&](Document& d) { made = mirrorItems(d, selected, axis, s.cursor[axis]); });
+               s.apply("Mirror " + std::string(1, char('X' + axis)),
+                       [&](Document& d) { made = mirrorItems(d, selected, axis, s.cursor[axis]); });
                s.sel.clear();
                s.sel.points = made.points;
                if (made.patches.size() == 1) s.sel.patch = int(made.patches[0]);
            }});
-    t.add({.name = "flip", .label = "Flip", .menu = "Patch", .help = "Reverse the selected patch's u direction so its normal points the other way",
+    t.add({.name = "flip",
+           .label = "Flip",
+           .menu = "Patch",
+           .help = "Reverse the selected patch's u direction so its normal points the other way",
            .enabled = hasPatch,
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 0, 0);
@@ -186,7 +211,10 @@ void addModelCommands(CommandTable& t) {
            }});
     t.add(fromEdge("extrude", "Extrude Edge", "Add a C1 patch continuing an edge of the selected patch (default: the highlighted edge)",
                    "Extrude edge", &Selection::patch, extrudeEdge));
-    t.add({.name = "split", .label = "Split", .menu = "Patch", .usage = "u|v [T]",
+    t.add({.name = "split",
+           .label = "Split",
+           .menu = "Patch",
+           .usage = "u|v [T]",
            .help = "Exact de Casteljau split of the selected patch along u or v at T (default 0.5)",
            .bindings = {{"Split at u", "u", {}}, {"Split at v", "v", {}}},
            .enabled = hasPatch,
@@ -199,11 +227,15 @@ void addModelCommands(CommandTable& t) {
                const uint32_t p = uint32_t(ctx.session.sel.patch);
                ctx.session.apply("Split patch", [&](Document& d) { splitPatch(d, p, dir == "u", t); });
            }});
-    t.add({.name = "join", .label = "Join", .menu = "Patch", .usage = "A:EDGE B:EDGE C0|C1|G1|C2|G2",
-           .help = "Join an edge of patch A to an edge of patch B (edges u0 v0 u1 v1) with C0, C1, G1, C2 or G2 continuity, held while you "
-                   "drag; B is turned to lie beyond the seam with agreeing normals, and when the edges do not meet A stays and B's boundary, "
-                   "tangent (and for C2/G2 third) rows move onto it (Match). G1 and G2 keep the shape parameters measured when joining; "
-                   "a join that cannot hold together with the others is refused, naming them",
+    t.add({.name = "join",
+           .label = "Join",
+           .menu = "Patch",
+           .usage = "A:EDGE B:EDGE C0|C1|G1|C2|G2",
+           .help =
+               "Join an edge of patch A to an edge of patch B (edges u0 v0 u1 v1) with C0, C1, G1, C2 or G2 continuity, held while you "
+               "drag; B is turned to lie beyond the seam with agreeing normals, and when the edges do not meet A stays and B's boundary, "
+               "tangent (and for C2/G2 third) rows move onto it (Match). G1 and G2 keep the shape parameters measured when joining; "
+               "a join that cannot hold together with the others is refused, naming them",
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 3, 3);
                const Document& doc = ctx.session.doc;
@@ -212,7 +244,10 @@ void addModelCommands(CommandTable& t) {
                if (!c) throw EditError("expected C0, C1, G1, C2 or G2, got '" + ctx.args[2] + "'");
                ctx.session.apply("Join edges", [&](Document& d) { joinEdges(d, a.first, a.second, b.first, b.second, *c); });
            }});
-    t.add({.name = "tolerances", .label = "Continuity Tolerances", .menu = "Patch", .usage = "POSITION ANGLE_DEG CURVATURE_PCT",
+    t.add({.name = "tolerances",
+           .label = "Continuity Tolerances",
+           .menu = "Patch",
+           .usage = "POSITION ANGLE_DEG CURVATURE_PCT",
            .help = "What the continuity readout checks every join against (Rhino's three): the gap between the sides in model units, "
                    "the largest angle between their normals in degrees and the curvature deviation across the seam in percent; "
                    "joins out of tolerance show in the Continuity panel, in the viewport (Boundaries) and in `info`",
@@ -222,12 +257,20 @@ void addModelCommands(CommandTable& t) {
                                     commandNumber(ctx.args[2], "CURVATURE_PCT")};
                for (int i = 0; i < 3; ++i)
                    if (!(v[i] > 0.0) || v[i] > 1e9) throw EditError("a tolerance must be a positive number, got " + ctx.args[size_t(i)]);
-               ctx.session.apply("Continuity tolerances", [&](Document& d) { d.tolerances = ContinuityTolerances{v[0], v[1], v[2]}; }, false);
+               ctx.session.apply(
+                   "Continuity tolerances",
+                   [&](Document& d) {
+                       d.tolerances = ContinuityTolerances{v[0], v[1], v[2]};
+                   },
+                   false);
            }});
     t.add(windowToggle("join-pick", "Join by Picking", "Patch", WindowToggle::JoinTool, {"J"},
                        "Hover an open edge and click it, then click the edge to join it to; the join shows at once (C1) "
                        "and the panel changes its continuity, keeps it (Enter) or takes it back (Esc). It runs `join`"));
-    t.add({.name = "unjoin", .label = "Unjoin Edge", .menu = "Patch", .usage = "[A:EDGE]",
+    t.add({.name = "unjoin",
+           .label = "Unjoin Edge",
+           .menu = "Patch",
+           .usage = "[A:EDGE]",
            .help = "Remove the join on an edge (default: the selected patch's highlighted edge); the patches can then move apart",
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 0, 1);

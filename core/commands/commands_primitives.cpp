@@ -4,11 +4,11 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "core/commands/command_table.hpp"
-#include "core/edit/edit_session.hpp"
 #include "core/base/errors.hpp"
-#include "core/model/placement.hpp"
+#include "core/commands/command_table.hpp"
 #include "core/construct/primitives.hpp"
+#include "core/edit/edit_session.hpp"
+#include "core/model/placement.hpp"
 
 namespace pw {
 
@@ -20,11 +20,10 @@ using Make = PrimitiveResult (*)(Document&, const Vec3&, double, double, bool);
 
 // A command adding a primitive of one or two sizes (default: `ratio`s of the model's scale) at the
 // 3D cursor, beside the model where the cursor is inside it; the new points are selected.
-Command primitive(const char* name, const char* label, const char* usage, const char* help, const char* undoLabel,
-                  const char* first, const char* second, double ratio1, double ratio2, Make make) {
+Command primitive(const char* name, const char* label, const char* usage, const char* help, const char* undoLabel, const char* first,
+                  const char* second, double ratio1, double ratio2, Make make) {
     const size_t maxArgs = second ? 2 : 1;
-    return {.name = name, .label = label, .menu = "Add", .usage = usage, .help = help,
-            .run = [=](CommandContext& ctx) {
+    return {.name = name, .label = label, .menu = "Add", .usage = usage, .help = help, .run = [=](CommandContext& ctx) {
                 expectArgs(ctx, 0, maxArgs);
                 EditSession& s = ctx.session;
                 const double base = defaultSize(s.doc);
@@ -65,7 +64,10 @@ void addPrimitiveCommands(CommandTable& t) {
                     "Add an exact torus around the 3D cursor: sixteen rational patches; MAJOR is the distance from the axis to the tube's "
                     "centre, MINOR the tube's radius",
                     "Add torus", "MAJOR", "MINOR", 1.0, 0.35, addTorus));
-    t.add({.name = "weight", .label = "Set Weight", .menu = "Edit", .usage = "W",
+    t.add({.name = "weight",
+           .label = "Set Weight",
+           .menu = "Edit",
+           .usage = "W",
            .help = "Set the weight of the selected control points (rational patches: a heavier point pulls the surface towards it; "
                    "1 = polynomial). Bézier triangles take no weights",
            .run = [](CommandContext& ctx) {

@@ -5,9 +5,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/base/errors.hpp"
 #include "core/commands/command_table.hpp"
 #include "core/solve/constraint_solver.hpp"
-#include "core/base/errors.hpp"
 
 #include "core/select/picking.hpp"
 #include "core/select/selection_ops.hpp"
@@ -89,13 +89,16 @@ void transformSelection(CommandContext& ctx, const std::string& label, const std
     const std::vector<uint32_t> moved = ctx.session.selectedPoints();
     if (moved.empty()) throw EditError("nothing is selected (select points, a patch, a net, a triangle or a curve first)");
     const Symmetry sym = ctx.session.symmetry;
-    ctx.session.apply(label, [&](Document& d) {
-        const SymmetryPairs pairs = symmetryPairs(d, moved, sym);
-        const DragSolver solver(d, pairs.driven(moved));
-        for (uint32_t p : moved) d.points[p] = f(d.points[p]);
-        applySymmetry(d.points, pairs, sym);
-        if (const Projection p = solver.project(d.points); !p.ok()) throw EditError("the joins cannot follow: " + conflictMessage(p));
-    }, false);
+    ctx.session.apply(
+        label,
+        [&](Document& d) {
+            const SymmetryPairs pairs = symmetryPairs(d, moved, sym);
+            const DragSolver solver(d, pairs.driven(moved));
+            for (uint32_t p : moved) d.points[p] = f(d.points[p]);
+            applySymmetry(d.points, pairs, sym);
+            if (const Projection p = solver.project(d.points); !p.ok()) throw EditError("the joins cannot follow: " + conflictMessage(p));
+        },
+        false);
 }
 
 int axisIndex(const std::string& word) {
@@ -108,20 +111,29 @@ int axisIndex(const std::string& word) {
 }  // namespace
 
 void addSelectCommands(CommandTable& t) {
-    t.add({.name = "select", .label = "Select", .menu = "Select",
+    t.add({.name = "select",
+           .label = "Select",
+           .menu = "Select",
            .usage = "all|none|linked|invert|point N[,N...]|patch N[,N...]|net N|triangle N|curve N",
-           .help = "Select control points, or whole patches, nets, triangles or curves by number; linked: everything connected to the selection; invert",
-           .bindings = {{"Select All", "all", {"A"}}, {"Select None", "none", {"Alt+A"}}, {"Select Linked", "linked", {"L", "Ctrl+L"}},
+           .help = "Select control points, or whole patches, nets, triangles or curves by number; linked: everything connected to the "
+                   "selection; invert",
+           .bindings = {{"Select All", "all", {"A"}},
+                        {"Select None", "none", {"Alt+A"}},
+                        {"Select Linked", "linked", {"L", "Ctrl+L"}},
                         {"Invert Selection", "invert", {"Ctrl+I"}}},
            .run = select});
-    t.add({.name = "move", .label = "Move", .usage = "DX DY DZ",
+    t.add({.name = "move",
+           .label = "Move",
+           .usage = "DX DY DZ",
            .help = "Move the selection by a vector; joins are held",
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 3, 3);
                const Vec3 d(commandNumber(ctx.args[0], "DX"), commandNumber(ctx.args[1], "DY"), commandNumber(ctx.args[2], "DZ"));
                transformSelection(ctx, "Move", [d](const Vec3& p) { return p + d; });
            }});
-    t.add({.name = "rotate", .label = "Rotate", .usage = "X|Y|Z DEG",
+    t.add({.name = "rotate",
+           .label = "Rotate",
+           .usage = "X|Y|Z DEG",
            .help = "Rotate the selection about an axis through the pivot (median, active or 3D cursor); joins are held",
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 2, 2);
@@ -132,21 +144,28 @@ void addSelectCommands(CommandTable& t) {
                const glm::dmat4 m = glm::rotate(glm::dmat4(1.0), rad, axis);
                transformSelection(ctx, "Rotate", [&](const Vec3& p) { return c + Vec3(m * glm::dvec4(p - c, 0.0)); });
            }});
-    t.add({.name = "scale", .label = "Scale", .usage = "S | SX SY SZ",
+    t.add({.name = "scale",
+           .label = "Scale",
+           .usage = "S | SX SY SZ",
            .help = "Scale the selection about the pivot (median, active or 3D cursor); joins are held",
            .run = [](CommandContext& ctx) {
                if (ctx.args.size() != 1) expectArgs(ctx, 3, 3);
                Vec3 s(commandNumber(ctx.args[0], "S"));
-               if (ctx.args.size() == 3) s = Vec3(commandNumber(ctx.args[0], "SX"), commandNumber(ctx.args[1], "SY"), commandNumber(ctx.args[2], "SZ"));
+               if (ctx.args.size() == 3)
+                   s = Vec3(commandNumber(ctx.args[0], "SX"), commandNumber(ctx.args[1], "SY"), commandNumber(ctx.args[2], "SZ"));
                const Vec3 c = ctx.session.transformPivot();
                transformSelection(ctx, "Scale", [&](const Vec3& p) { return c + s * (p - c); });
            }});
-    t.add({.name = "hide", .label = "Hide", .menu = "Select", .usage = "[unselected]",
+    t.add({.name = "hide",
+           .label = "Hide",
+           .menu = "Select",
+           .usage = "[unselected]",
            .help = "Hide the selected items (or every item the selection does not touch); hidden items are not drawn or picked",
            .bindings = {{"Hide Selected", "", {"H"}}, {"Hide Unselected", "unselected", {"Shift+H"}}},
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 0, 1);
-               if (ctx.args.size() == 1 && ctx.args[0] != "unselected") throw EditError("expected 'unselected' or nothing, got '" + ctx.args[0] + "'");
+               if (ctx.args.size() == 1 && ctx.args[0] != "unselected")
+                   throw EditError("expected 'unselected' or nothing, got '" + ctx.args[0] + "'");
                const bool unselected = ctx.args.size() == 1;
                const std::vector<uint32_t> pts = ctx.session.selectedPoints();
                if (pts.empty()) throw EditError("nothing is selected (select what to hide, or what to keep for 'hide unselected')");
@@ -156,7 +175,9 @@ void addSelectCommands(CommandTable& t) {
                });
                if (!unselected) ctx.session.sel.clear();
            }});
-    t.add({.name = "unhide", .label = "Reveal Hidden", .menu = "Select",
+    t.add({.name = "unhide",
+           .label = "Reveal Hidden",
+           .menu = "Select",
            .help = "Show every hidden item again and select it",
            .bindings = {{"", "", {"Alt+H"}}},
            .run = [](CommandContext& ctx) {
@@ -166,7 +187,10 @@ void addSelectCommands(CommandTable& t) {
                ctx.session.sel.clear();
                ctx.session.sel.points = std::move(revealed);
            }});
-    t.add({.name = "pivot", .label = "Pivot", .menu = "Select", .usage = "median|active|cursor",
+    t.add({.name = "pivot",
+           .label = "Pivot",
+           .menu = "Select",
+           .usage = "median|active|cursor",
            .help = "What rotate and scale turn about: the median of the selection, the active point or item, or the 3D cursor",
            .bindings = {{"Pivot: Median", "median", {}}, {"Pivot: Active", "active", {}}, {"Pivot: 3D Cursor", "cursor", {}}},
            .run = [](CommandContext& ctx) {
@@ -175,7 +199,10 @@ void addSelectCommands(CommandTable& t) {
                if (!m) throw EditError("expected median, active or cursor, got '" + ctx.args[0] + "'");
                ctx.session.pivot = *m;
            }});
-    t.add({.name = "symmetry", .label = "Symmetry", .menu = "Select", .usage = "X|Y|Z|off",
+    t.add({.name = "symmetry",
+           .label = "Symmetry",
+           .menu = "Select",
+           .usage = "X|Y|Z|off",
            .help = "Live symmetry: every transform moves each point's mirror partner across the plane normal to the axis through "
                    "the 3D cursor, and points on that plane stay on it",
            .bindings = {{"Symmetry: Off", "off", {}}, {"Symmetry: X", "X", {}}, {"Symmetry: Y", "Y", {}}, {"Symmetry: Z", "Z", {}}},
@@ -188,16 +215,24 @@ void addSelectCommands(CommandTable& t) {
                const int a = axisIndex(ctx.args[0]);
                ctx.session.symmetry = Symmetry{a, ctx.session.cursor[a]};
            }});
-    t.add({.name = "snap", .label = "Snap To", .menu = "Select", .usage = "grid|points|edges|surfaces",
+    t.add({.name = "snap",
+           .label = "Snap To",
+           .menu = "Select",
+           .usage = "grid|points|edges|surfaces",
            .help = "What a move snaps to while Ctrl is held: grid increments, control points, boundary edges or surfaces",
-           .bindings = {{"Snap: Grid", "grid", {}}, {"Snap: Points", "points", {}}, {"Snap: Edges", "edges", {}}, {"Snap: Surfaces", "surfaces", {}}},
+           .bindings = {{"Snap: Grid", "grid", {}},
+                        {"Snap: Points", "points", {}},
+                        {"Snap: Edges", "edges", {}},
+                        {"Snap: Surfaces", "surfaces", {}}},
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 1, 1);
                const auto m = parseSnapTarget(ctx.args[0]);
                if (!m) throw EditError("expected grid, points, edges or surfaces, got '" + ctx.args[0] + "'");
                ctx.session.snap = *m;
            }});
-    t.add({.name = "cursor", .label = "Place 3D Cursor", .usage = "X Y Z",
+    t.add({.name = "cursor",
+           .label = "Place 3D Cursor",
+           .usage = "X Y Z",
            .help = "Place the 3D cursor, where new patches, triangles, curves and nets appear",
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 3, 3);

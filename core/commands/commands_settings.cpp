@@ -19,7 +19,9 @@ std::string settingKeys() {
 }  // namespace
 
 void addSettingCommands(CommandTable& t) {
-    t.add({.name = "set", .label = "Set a Setting", .usage = "KEY VALUE...",
+    t.add({.name = "set",
+           .label = "Set a Setting",
+           .usage = "KEY VALUE...",
            .help = "Set a tessellation or display setting by its file name (" + settingKeys() +
                    "): numbers within the setting's range, on|off, or one of its choices",
            .previewable = true,
@@ -33,7 +35,8 @@ void addSettingCommands(CommandTable& t) {
                    ctx.session.changed(false);
                    return;
                }
-               ctx.session.apply(std::string(s->label), [&](Document& d) { s->set(d, values); }, false);
+               ctx.session.apply(
+                   std::string(s->label), [&](Document& d) { s->set(d, values); }, false);
            }});
 }
 

@@ -3,11 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/model/camera_math.hpp"
-#include "core/commands/command_table.hpp"
-#include "core/model/settings.hpp"
 #include "core/base/errors.hpp"
-
+#include "core/commands/command_table.hpp"
+#include "core/model/camera_math.hpp"
+#include "core/model/settings.hpp"
 
 namespace pw {
 
@@ -23,7 +22,8 @@ constexpr Overlay kOverlays[] = {
     {"grid", "Control Net", &DisplaySettings::showGrid, "Show the control points and net lines"},
     {"wireframe", "Wireframe", &DisplaySettings::showWireframe, "Show the tessellated triangles"},
     {"normals", "Normals", &DisplaySettings::showNormals, "Show surface normals"},
-    {"boundaries", "Boundaries", &DisplaySettings::showBoundaries, "Patch boundaries coloured by continuity (grey open, red C0, green C1, blue G1)"},
+    {"boundaries", "Boundaries", &DisplaySettings::showBoundaries,
+     "Patch boundaries coloured by continuity (grey open, red C0, green C1, blue G1)"},
     {"isocurves", "Isocurves", &DisplaySettings::showIsocurves, "Isoparametric curves of every patch through the isoline tessellator"},
     {"combs", "Curvature Combs", &DisplaySettings::showCombs,
      "Curvature combs on every curve and isocurve (2 isocurve lines: the boundaries) and the curvature graph across the selected join"},
@@ -38,14 +38,14 @@ const Overlay& overlayNamed(const std::string& name) {
 // A command that sets one enum-valued setting from its name (one of `usage`, '|'-separated), as
 // one undo step named `label`.
 template <class E>
-Command enumSetting(const char* name, const char* label, const char* usage, const char* help,
-                    std::optional<E> (*parse)(std::string_view), void (*set)(Document&, E)) {
-    return {.name = name, .label = label, .usage = usage, .help = help,
-            .run = [=](CommandContext& ctx) {
+Command enumSetting(const char* name, const char* label, const char* usage, const char* help, std::optional<E> (*parse)(std::string_view),
+                    void (*set)(Document&, E)) {
+    return {.name = name, .label = label, .usage = usage, .help = help, .run = [=](CommandContext& ctx) {
                 expectArgs(ctx, 1, 1);
                 const std::optional<E> v = parse(ctx.args[0]);
                 if (!v) throw EditError("expected one of " + std::string(usage) + ", got '" + ctx.args[0] + "'");
-                ctx.session.apply(label, [&](Document& d) { set(d, *v); }, false);
+                ctx.session.apply(
+                    label, [&](Document& d) { set(d, *v); }, false);
             }};
 }
 
@@ -60,26 +60,40 @@ bool switchArg(const CommandContext& ctx, size_t i, bool current) {
 }  // namespace
 
 void addViewCommands(CommandTable& t) {
-    t.add({.name = "view", .label = "View", .menu = "View", .usage = "front|back|right|left|top|bottom|iso",
+    t.add({.name = "view",
+           .label = "View",
+           .menu = "View",
+           .usage = "front|back|right|left|top|bottom|iso",
            .help = "Look at the model from a named direction",
-           .bindings = {{"Front", "front", {"Numpad1", "1"}}, {"Back", "back", {"Ctrl+Numpad1", "Ctrl+1"}},
-                        {"Right", "right", {"Numpad3", "3"}}, {"Left", "left", {"Ctrl+Numpad3", "Ctrl+3"}},
-                        {"Top", "top", {"Numpad7", "7"}}, {"Bottom", "bottom", {"Ctrl+Numpad7", "Ctrl+7"}}, {"Iso", "iso", {}}},
+           .bindings = {{"Front", "front", {"Numpad1", "1"}},
+                        {"Back", "back", {"Ctrl+Numpad1", "Ctrl+1"}},
+                        {"Right", "right", {"Numpad3", "3"}},
+                        {"Left", "left", {"Ctrl+Numpad3", "Ctrl+3"}},
+                        {"Top", "top", {"Numpad7", "7"}},
+                        {"Bottom", "bottom", {"Ctrl+Numpad7", "Ctrl+7"}},
+                        {"Iso", "iso", {}}},
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 1, 1);
                const auto c = applyNamedView(ctx.session.camera, ctx.args[0]);
                if (!c) throw EditError("expected front, back, right, left, top, bottom or iso, got '" + ctx.args[0] + "'");
                ctx.session.camera = *c;
            }});
-    t.add({.name = "ortho", .label = "Orthographic", .menu = "View", .usage = "[on|off]",
+    t.add({.name = "ortho",
+           .label = "Orthographic",
+           .menu = "View",
+           .usage = "[on|off]",
            .help = "Toggle perspective / orthographic projection",
            .bindings = {{"", "", {"Numpad5", "5"}}},
            .checked = [](const EditSession& s, const CommandHost&) { return s.camera.orthographic; },
-           .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 0, 1);
-               ctx.session.camera.orthographic = switchArg(ctx, 0, ctx.session.camera.orthographic);
-           }});
-    t.add({.name = "frame", .label = "Frame Selection", .menu = "View", .help = "Fit the selection (or the model) in the view",
+           .run =
+               [](CommandContext& ctx) {
+                   expectArgs(ctx, 0, 1);
+                   ctx.session.camera.orthographic = switchArg(ctx, 0, ctx.session.camera.orthographic);
+               }});
+    t.add({.name = "frame",
+           .label = "Frame Selection",
+           .menu = "View",
+           .help = "Fit the selection (or the model) in the view",
            .bindings = {{"", "", {"F"}}},
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 0, 0);
@@ -98,16 +112,23 @@ void addViewCommands(CommandTable& t) {
 
     std::vector<CommandBinding> overlayBindings;
     for (const Overlay& o : kOverlays) overlayBindings.push_back({o.label, o.name, {}});
-    t.add({.name = "overlay", .label = "Overlay", .menu = "Display", .usage = "grid|wireframe|normals|boundaries|isocurves [on|off]",
+    t.add({.name = "overlay",
+           .label = "Overlay",
+           .menu = "Display",
+           .usage = "grid|wireframe|normals|boundaries|isocurves [on|off]",
            .help = "Show or hide an overlay: control net, wireframe, normals, boundaries by continuity, isocurves",
            .bindings = overlayBindings,
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 1, 2);
                const Overlay& o = overlayNamed(ctx.args[0]);
                const bool on = switchArg(ctx, 1, ctx.session.doc.display.*o.flag);
-               ctx.session.apply(o.label, [&](Document& d) { d.display.*o.flag = on; }, false);
+               ctx.session.apply(
+                   o.label, [&](Document& d) { d.display.*o.flag = on; }, false);
            }});
-    t.add({.name = "comb", .label = "Comb Scale and Density", .menu = "Display", .usage = "SCALE [TEETH]",
+    t.add({.name = "comb",
+           .label = "Comb Scale and Density",
+           .menu = "Display",
+           .usage = "SCALE [TEETH]",
            .help = "Curvature comb length (1 = a tooth of 0.02 × model size² × curvature; negative draws the teeth inward) and teeth per "
                    "curve (2..21); `overlay combs` shows them",
            .run = [](CommandContext& ctx) {
@@ -120,14 +141,19 @@ void addViewCommands(CommandTable& t) {
                    if (t != std::floor(t) || t < 2 || t > 21) throw EditError("TEETH must be a whole number in 2..21, got " + ctx.args[1]);
                    teeth = int(t);
                }
-               ctx.session.apply("Comb", [&](Document& d) {
-                   d.display.combScale = float(scale);
-                   d.display.combDensity = teeth;
-               }, false);
+               ctx.session.apply(
+                   "Comb",
+                   [&](Document& d) {
+                       d.display.combScale = float(scale);
+                       d.display.combDensity = teeth;
+                   },
+                   false);
            }});
     t.add(enumSetting<ShadingMode>("shading", "Shading", "lit|normal|patch|uv|zebra|gauss|mean", "How the surface is coloured",
                                    parseShading, [](Document& d, ShadingMode m) { d.display.shading = m; }));
-    t.add({.name = "tess", .label = "Tessellation Levels", .usage = "LEVEL | O0 O1 O2 O3 I0 I1",
+    t.add({.name = "tess",
+           .label = "Tessellation Levels",
+           .usage = "LEVEL | O0 O1 O2 O3 I0 I1",
            .help = "Set every outer and inner level (one number), or the four outer and two inner levels",
            .run = [](CommandContext& ctx) {
                if (ctx.args.size() != 1) expectArgs(ctx, 6, 6);
@@ -137,11 +163,14 @@ void addViewCommands(CommandTable& t) {
                    if (auto problem = settingProblem(setting("tess.level"), {x})) throw EditError("LEVEL: " + *problem);
                    v[i] = float(x);
                }
-               ctx.session.apply("Tessellation levels", [&](Document& d) {
-                   std::copy_n(v.begin(), 4, d.tess.outer.begin());
-                   std::copy_n(v.begin() + 4, 2, d.tess.inner.begin());
-                   d.tess.linked = ctx.args.size() == 1;
-               }, false);
+               ctx.session.apply(
+                   "Tessellation levels",
+                   [&](Document& d) {
+                       std::copy_n(v.begin(), 4, d.tess.outer.begin());
+                       std::copy_n(v.begin() + 4, 2, d.tess.inner.begin());
+                       d.tess.linked = ctx.args.size() == 1;
+                   },
+                   false);
            }});
     t.add(enumSetting<Spacing>("spacing", "Partitioning", "equal|fractional_odd|fractional_even|pow2",
                                "Spacing of the tessellator: equal, fractional odd/even (smooth level changes), pow2 (rounded up)",

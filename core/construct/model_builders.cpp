@@ -92,10 +92,8 @@ Document makePatchGrid(int rows, int cols, Continuity continuity) {
     auto patchIndex = [&](int i, int j) { return static_cast<uint32_t>(i * cols + j); };
     for (int i = 0; i < rows; ++i) {
         for (int j = 0; j < cols; ++j) {
-            if (j + 1 < cols)
-                doc.joins.push_back(Join{patchIndex(i, j), Edge::U1, patchIndex(i, j + 1), Edge::U0, false, continuity, 1.0});
-            if (i + 1 < rows)
-                doc.joins.push_back(Join{patchIndex(i, j), Edge::V1, patchIndex(i + 1, j), Edge::V0, false, continuity, 1.0});
+            if (j + 1 < cols) doc.joins.push_back(Join{patchIndex(i, j), Edge::U1, patchIndex(i, j + 1), Edge::U0, false, continuity, 1.0});
+            if (i + 1 < rows) doc.joins.push_back(Join{patchIndex(i, j), Edge::V1, patchIndex(i + 1, j), Edge::V0, false, continuity, 1.0});
         }
     }
     return doc;
@@ -145,8 +143,7 @@ Document makeTriangleDome(double radius, double height) {
                 key[size_t(m1)] += j;
                 key[6] += k;
                 if (i > 0 && j > 0 && k > 0) key[7] = m + 1;
-                tri.idx[static_cast<size_t>(triangleSlot(i, k))] =
-                    pointFor(key, Vec3(xy.x, xy.y, blossom(args[0], args[1], args[2])));
+                tri.idx[static_cast<size_t>(triangleSlot(i, k))] = pointFor(key, Vec3(xy.x, xy.y, blossom(args[0], args[1], args[2])));
             }
         doc.triangles.push_back(tri);
     }

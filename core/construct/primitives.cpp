@@ -52,7 +52,7 @@ PrimitiveResult revolve(Document& doc, const Vec3& center, bool zUp, const std::
     if (doc.points.size() + profileCount * 12 > limits::kMaxPoints || doc.patches.size() + 4 * profile.size() > limits::kMaxPatches)
         throw EditError("the document is full (" + name + " needs " + std::to_string(4 * profile.size()) + " patches)");
     PrimitiveResult out;
-    std::map<std::pair<size_t, size_t>, uint32_t> made;  // (profile point, turn point) → pool point
+    std::map<std::pair<size_t, size_t>, uint32_t> made;    // (profile point, turn point) → pool point
     std::map<std::pair<size_t, double>, uint32_t> onAxis;  // (profile point, weight) → pool point
     const auto point = [&](size_t g, size_t c, const ProfilePoint& pp, const ProfilePoint& cp) {
         const double w = pp.w * cp.w;
@@ -65,8 +65,10 @@ PrimitiveResult revolve(Document& doc, const Vec3& center, bool zUp, const std::
         doc.points.push_back(center + pp.rho * (cp.rho * e1 + cp.z * e2) + pp.z * up);
         setPointWeight(doc, i, w);
         out.points.push_back(i);
-        if (pp.rho == 0.0) onAxis[{g, w}] = i;
-        else made[{g, c}] = i;
+        if (pp.rho == 0.0)
+            onAxis[{g, w}] = i;
+        else
+            made[{g, c}] = i;
         return i;
     };
     const uint32_t first = uint32_t(doc.patches.size());
@@ -88,7 +90,8 @@ PrimitiveResult revolve(Document& doc, const Vec3& center, bool zUp, const std::
     // segments meet smoothly (arcs of one circle), C0 at a crease (the cylinder's rims, the cone's).
     const auto patchAt = [&](size_t s, int q) { return first + uint32_t(s * 4 + size_t(q)); };
     for (size_t s = 0; s < profile.size(); ++s)
-        for (int q = 0; q < 4; ++q) doc.joins.push_back(Join{patchAt(s, q), Edge::U1, patchAt(s, (q + 1) % 4), Edge::U0, false, Continuity::C1, 1.0});
+        for (int q = 0; q < 4; ++q)
+            doc.joins.push_back(Join{patchAt(s, q), Edge::U1, patchAt(s, (q + 1) % 4), Edge::U0, false, Continuity::C1, 1.0});
     for (size_t s = 0; s + (closedProfile ? 0 : 1) < profile.size(); ++s) {
         const Segment& a = profile[s];
         const Segment& b = profile[(s + 1) % profile.size()];

@@ -10,9 +10,9 @@
 namespace pw {
 
 struct TerrainSpec {
-    int windows = 32;        // per side
-    double size = 128.0;     // side of the square (model units), centred on the origin, z up
-    float height = 14.0f;    // displacement scale (the map's white)
+    int windows = 32;      // per side
+    double size = 128.0;   // side of the square (model units), centred on the origin, z up
+    float height = 14.0f;  // displacement scale (the map's white)
     std::string map = "terrain.png";
 };
 

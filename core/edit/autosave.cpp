@@ -1,5 +1,7 @@
 #include "core/edit/autosave.hpp"
 
+#include <sys/stat.h>
+#include <unistd.h>
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -10,13 +12,11 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <system_error>
-#include <sys/stat.h>
-#include <unistd.h>
 
-#include "core/io/document_io.hpp"
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
 #include "core/base/json_guard.hpp"
+#include "core/io/document_io.hpp"
 
 namespace pw {
 
@@ -54,8 +54,7 @@ Autosaver::Autosaver(fs::path dir, int pid) : dir_(std::move(dir)), pid_(pid ? p
 void Autosaver::save(const Document& doc, const std::string& originalPath) {
     ensurePrivateDirectory(dir_);
     saveDocument(doc, doc_);
-    const long long now =
-        std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+    const long long now = std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count();
     nlohmann::json j{{"original", originalPath}, {"pid", pid_}, {"savedAt", now}, {"name", doc.name}};
     writeFileAtomic(note_, j.dump(2));
     // This autosave holds the adopted (recovered) work now.

@@ -54,7 +54,7 @@ void BackgroundWriter::work() {
     for (;;) {
         wake_.wait(lock, [this] { return stop_ || !queue_.empty(); });
         if (queue_.empty()) return;  // stop_ with nothing left to write
-        Job& job = queue_.front();  // stays put: only this thread pops
+        Job& job = queue_.front();   // stays put: only this thread pops
         lock.unlock();
         Result r{job.path, {}};
         try {

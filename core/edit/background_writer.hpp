@@ -11,9 +11,9 @@
 #include <thread>
 #include <vector>
 
-#include "core/model/document.hpp"
 #include "core/io/gltf_export.hpp"
 #include "core/mesh/mesh_tessellate.hpp"
+#include "core/model/document.hpp"
 
 namespace pw {
 

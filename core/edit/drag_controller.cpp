@@ -8,10 +8,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/model/camera_math.hpp"
 #include "core/base/limits.hpp"
-#include "core/select/picking.hpp"
 #include "core/base/point_upload.hpp"
+#include "core/model/camera_math.hpp"
+#include "core/select/picking.hpp"
 
 namespace pw {
 
@@ -43,7 +43,8 @@ std::optional<glm::dvec2> pixelOf(const DragView& view, const Vec3& p) {
 }  // namespace
 
 bool DragController::begin(const Document& doc, const Selection& sel, const DragView& view, double x, double y, bool grab) {
-    return begin(doc, TransformStart{sel.points, selectionCentroid(doc, Selection{.points = sel.points}), TransformKind::Move, grab}, view, x, y);
+    return begin(doc, TransformStart{sel.points, selectionCentroid(doc, Selection{.points = sel.points}), TransformKind::Move, grab}, view,
+                 x, y);
 }
 
 bool DragController::begin(const Document& doc, const TransformStart& start, const DragView& view, double x, double y) {
@@ -81,13 +82,17 @@ void DragController::setAxis(int axis, bool plane) {
 }
 
 void DragController::toggleAxis(int axis, bool plane) {
-    if (axis_ == axis && plane_ == plane) setAxis(-1);
-    else setAxis(axis, plane);
+    if (axis_ == axis && plane_ == plane)
+        setAxis(-1);
+    else
+        setAxis(axis, plane);
 }
 
 void DragController::typeChar(char c) {
-    if ((c >= '0' && c <= '9') || c == '.' || (c == '-' && typed_.empty())) typed_ += c;
-    else if (c == '-' && typed_ == "-") typed_.clear();
+    if ((c >= '0' && c <= '9') || c == '.' || (c == '-' && typed_.empty()))
+        typed_ += c;
+    else if (c == '-' && typed_ == "-")
+        typed_.clear();
 }
 
 void DragController::backspace() {
@@ -149,8 +154,7 @@ std::optional<Vec3> DragController::moveOffset(const Document& doc, const DragVi
         } else {
             Vec3 right, up, fwd;
             cameraAxes(view.camera, right, up, fwd);
-            glm::dvec2 dir = glm::length(s) > 1e-9 * perUnit ? s / glm::length(s)
-                                                             : glm::dvec2(0.0, glm::dot(a, fwd) < 0.0 ? -1.0 : 1.0);
+            glm::dvec2 dir = glm::length(s) > 1e-9 * perUnit ? s / glm::length(s) : glm::dvec2(0.0, glm::dot(a, fwd) < 0.0 ? -1.0 : 1.0);
             delta = a * (glm::dot(glm::dvec2(x - startX_, y - startY_), dir) * kMaxAxisRate / std::max(perUnit, 1e-300));
         }
     }
@@ -184,16 +188,20 @@ bool DragController::update(Document& doc, const DragView& view, double x, doubl
             // Screen angles grow clockwise (y down); a positive turn about an axis towards the
             // viewer shows counter-clockwise.
             double deg = -glm::degrees(accumAngle_) * (glm::dot(axis, -fwd) >= 0.0 ? 1.0 : -1.0);
-            if (v) deg = *v;
-            else if (snap) deg = 5.0 * std::round(deg / 5.0);
+            if (v)
+                deg = *v;
+            else if (snap)
+                deg = 5.0 * std::round(deg / 5.0);
             lastAngle_ = deg;
             const glm::dmat4 m = glm::rotate(glm::dmat4(1.0), glm::radians(deg), axis);
             f = [m, c0 = anchor_](const Vec3& p) { return c0 + Vec3(m * glm::dvec4(p - c0, 0.0)); };
         } else {
             const double d0 = std::max(std::hypot(startX_ - c.x, startY_ - c.y), 5.0);
             double k = std::hypot(x - c.x, y - c.y) / d0;
-            if (v) k = *v;
-            else if (snap) k = 0.1 * std::round(k / 0.1);
+            if (v)
+                k = *v;
+            else if (snap)
+                k = 0.1 * std::round(k / 0.1);
             Vec3 s(k);
             if (axis_ >= 0) {
                 s = plane_ ? Vec3(k) : Vec3(1.0);
@@ -214,15 +222,25 @@ std::string DragController::status() const {
     static const char* const kAxis[3] = {"X", "Y", "Z"};
     static const char* const kPlane[3] = {"YZ", "ZX", "XY"};
     char where[32] = "";
-    if (axis_ < 0) std::snprintf(where, sizeof where, "%s", kind_ == TransformKind::Move ? " in the view plane" : kind_ == TransformKind::Rotate ? " about the view axis" : "");
-    else if (plane_) std::snprintf(where, sizeof where, " in the %s plane", kPlane[axis_]);
-    else std::snprintf(where, sizeof where, " %s %s", kind_ == TransformKind::Rotate ? "about" : "along", kAxis[axis_]);
+    if (axis_ < 0)
+        std::snprintf(where, sizeof where, "%s",
+                      kind_ == TransformKind::Move     ? " in the view plane"
+                      : kind_ == TransformKind::Rotate ? " about the view axis"
+                                                       : "");
+    else if (plane_)
+        std::snprintf(where, sizeof where, " in the %s plane", kPlane[axis_]);
+    else
+        std::snprintf(where, sizeof where, " %s %s", kind_ == TransformKind::Rotate ? "about" : "along", kAxis[axis_]);
     char buf[200];
-    if (kind_ == TransformKind::Move) std::snprintf(buf, sizeof buf, "%.4g, %.4g, %.4g", lastOffset_.x, lastOffset_.y, lastOffset_.z);
-    else if (kind_ == TransformKind::Rotate) std::snprintf(buf, sizeof buf, "%.4g°", lastAngle_);
-    else std::snprintf(buf, sizeof buf, "×%.4g", lastScale_[axis_ < 0 ? 0 : plane_ ? (axis_ + 1) % 3 : axis_]);
+    if (kind_ == TransformKind::Move)
+        std::snprintf(buf, sizeof buf, "%.4g, %.4g, %.4g", lastOffset_.x, lastOffset_.y, lastOffset_.z);
+    else if (kind_ == TransformKind::Rotate)
+        std::snprintf(buf, sizeof buf, "%.4g°", lastAngle_);
+    else
+        std::snprintf(buf, sizeof buf, "×%.4g", lastScale_[axis_ < 0 ? 0 : plane_ ? (axis_ + 1) % 3 : axis_]);
     const std::string value = buf;
-    std::snprintf(buf, sizeof buf, "%s %zu point%s%s: %s", kindName(kind_), moved_.size(), moved_.size() == 1 ? "" : "s", where, value.c_str());
+    std::snprintf(buf, sizeof buf, "%s %zu point%s%s: %s", kindName(kind_), moved_.size(), moved_.size() == 1 ? "" : "s", where,
+                  value.c_str());
     std::string out = buf;
     if (!typed_.empty()) out += "  [typed " + typed_ + "]";
     if (!projection_.ok()) out += "\n" + conflictMessage(projection_);
@@ -233,7 +251,8 @@ void DragController::finish(EditSession& session) {
     const size_t n = moved_.size();
     const std::string kind = kindName(kind_);
     *this = DragController{};
-    if (session.doc.points != session.committed().points) session.commit(n == 1 ? kind + " point" : kind + " " + std::to_string(n) + " points");
+    if (session.doc.points != session.committed().points)
+        session.commit(n == 1 ? kind + " point" : kind + " " + std::to_string(n) + " points");
 }
 
 void DragController::cancel(Document& doc) {

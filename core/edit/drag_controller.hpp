@@ -15,12 +15,12 @@
 #include <string>
 #include <vector>
 
-#include "core/solve/constraint_solver.hpp"
-#include "core/model/document.hpp"
 #include "core/edit/edit_session.hpp"
+#include "core/model/document.hpp"
 #include "core/select/selection.hpp"
 #include "core/select/snapping.hpp"
 #include "core/select/symmetry.hpp"
+#include "core/solve/constraint_solver.hpp"
 
 namespace pw {
 
@@ -36,9 +36,9 @@ struct TransformStart {
     std::vector<uint32_t> points;  // the points the transform moves (fixed in the solver)
     Vec3 pivot{0.0};               // rotate / scale about this point; moves keep it as the anchor
     TransformKind kind = TransformKind::Move;
-    bool grab = false;             // started by a key (G/R/S, no button held): click or Enter confirms
+    bool grab = false;                   // started by a key (G/R/S, no button held): click or Enter confirms
     SnapTarget snap = SnapTarget::Grid;  // what Ctrl snaps a move to
-    Symmetry symmetry;             // on: each point's mirror partner follows (core/select/symmetry.hpp)
+    Symmetry symmetry;                   // on: each point's mirror partner follows (core/select/symmetry.hpp)
 };
 
 class DragController {
@@ -95,7 +95,7 @@ public:
     const Vec3& lastScale() const { return lastScale_; }
 
 private:
-    std::vector<Vec3> start_;      // the whole pool at begin()
+    std::vector<Vec3> start_;  // the whole pool at begin()
     std::vector<uint32_t> moved_;
     std::vector<bool> movedMask_;  // what the transform drives: the moved points and their mirror partners
     Symmetry symmetry_;
@@ -105,7 +105,7 @@ private:
     TransformKind kind_ = TransformKind::Move;
     Vec3 anchor_{0.0};
     Vec3 planeNormal_{0.0, 0.0, 1.0};
-    Vec3 startHit_{0.0};           // where the start ray met the drag plane
+    Vec3 startHit_{0.0};  // where the start ray met the drag plane
     double startX_ = 0, startY_ = 0;
     int axis_ = -1;
     bool plane_ = false;
@@ -115,7 +115,7 @@ private:
     Vec3 lastOffset_{0.0}, lastScale_{1.0};
     double lastAngle_ = 0.0;
     double prevMouseAngle_ = 0.0, accumAngle_ = 0.0;  // rotations: the mouse's turn about the pivot
-    std::vector<Vec3> uploaded_;   // the pool as of the last changed() list
+    std::vector<Vec3> uploaded_;                      // the pool as of the last changed() list
     std::vector<uint32_t> changed_;
     std::optional<double> typedValue() const;
     std::optional<Vec3> moveOffset(const Document& doc, const DragView& view, double x, double y, bool snap) const;
@@ -130,7 +130,7 @@ public:
     // commit() is the caller's. Returns "" or, for a coordinate that is
     // not finite or beyond limits::kMaxCoordinate, the message (and changes nothing).
     std::string set(EditSession& session, uint32_t point, const Vec3& position);
-    void reset() { solver_.reset(); }  // another document
+    void reset() { solver_.reset(); }                             // another document
     const Projection& projection() const { return projection_; }  // of the last set()
 
 private:

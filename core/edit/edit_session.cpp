@@ -3,8 +3,8 @@
 #include <algorithm>
 
 #include "core/io/document_io.hpp"
-#include "core/ops/patch_ops.hpp"
 #include "core/model/placement.hpp"
+#include "core/ops/patch_ops.hpp"
 
 namespace pw {
 
@@ -83,8 +83,10 @@ bool EditSession::redo() { return step(true); }
 
 bool EditSession::step(bool forward) {
     if (!(forward ? history_.canRedo() : history_.canUndo())) return false;
-    if (forward) history_.redo(doc);
-    else history_.undo(doc);
+    if (forward)
+        history_.redo(doc);
+    else
+        history_.undo(doc);
     markCommitted();
     changed(true);
     return true;

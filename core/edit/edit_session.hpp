@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "core/io/gltf_export.hpp"
 #include "core/model/document.hpp"
 #include "core/model/document_merge.hpp"
 #include "core/model/edit_history.hpp"
-#include "core/io/gltf_export.hpp"
 #include "core/select/selection.hpp"
 #include "core/select/snapping.hpp"
 #include "core/select/symmetry.hpp"
@@ -28,15 +28,15 @@ public:
     Document doc;
     Selection sel;
     Camera camera;
-    Vec3 cursor{0.0};  // the 3D cursor: where new geometry is placed
+    Vec3 cursor{0.0};                     // the 3D cursor: where new geometry is placed
     PivotMode pivot = PivotMode::Median;  // what rotate and scale turn about
     SnapTarget snap = SnapTarget::Grid;   // what moves snap to while Ctrl is held
     Symmetry symmetry;                    // live symmetry: transforms mirror each point's partner
-    Edge activeEdge = Edge::U1;  // the selected patch's edge nearest the last surface click (extrude, unjoin)
+    Edge activeEdge = Edge::U1;           // the selected patch's edge nearest the last surface click (extrude, unjoin)
     ExportOptions exportOptions;
 
     const std::string& path() const { return path_; }  // "" = untitled
-    const std::string& title() const;                    // the path, else the document's name, else "untitled"
+    const std::string& title() const;                  // the path, else the document's name, else "untitled"
     const Document& committed() const { return committed_; }
     // Bumped whenever committed() changes (commit, undo, redo, a new document): caches built from
     // the committed state (a factorised solver) compare it.
@@ -51,7 +51,7 @@ public:
     // Replaces the document (new, open, recover): history cleared, saved state, camera from the
     // document, selection cleared.
     void reset(Document d, const std::string& path);
-    void newDocument();             // untitled, one flat patch (File > New)
+    void newDocument();                                      // untitled, one flat patch (File > New)
     std::vector<std::string> open(const std::string& path);  // returns what the load skipped and why (STEP/IGES faces)
     // Adds a file's content (every kind, with its joins) as one undo step and selects it.
     MergedRange import(const std::string& path);

@@ -32,7 +32,8 @@ std::vector<Vec3> sampleCurve(const std::array<Vec3, 4>& p, int segments) {
 
 std::vector<Vec3> sampleCurve(const Document& doc, const BezierCurve& c, int segments) {
     const std::array<Vec3, 4> p = curvePoints(doc, c);
-    const std::array<double, 4> w{pointWeight(doc, c.idx[0]), pointWeight(doc, c.idx[1]), pointWeight(doc, c.idx[2]), pointWeight(doc, c.idx[3])};
+    const std::array<double, 4> w{pointWeight(doc, c.idx[0]), pointWeight(doc, c.idx[1]), pointWeight(doc, c.idx[2]),
+                                  pointWeight(doc, c.idx[3])};
     if (w == std::array<double, 4>{1.0, 1.0, 1.0, 1.0}) return sampleCurve(p, segments);
     segments = std::max(segments, 1);
     std::vector<Vec3> out(size_t(segments) + 1);

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 
-#include "core/model/document.hpp"
 #include "core/base/net_scale.hpp"
 #include "core/eval/patch_eval.hpp"
 #include "core/gpu/patch_math.h"
+#include "core/model/document.hpp"
 
 namespace pw {
 
@@ -88,9 +88,12 @@ std::array<uint32_t, 4> triEdgePool(const std::array<uint32_t, 10>& idx, int edg
 
 std::array<int, 2> triGridEdgePoint(int edge, int k, int n) {
     switch (edge) {
-        case 0: return {0, n - k};
-        case 1: return {k, 0};
-        default: return {n - k, k};
+        case 0:
+            return {0, n - k};
+        case 1:
+            return {k, 0};
+        default:
+            return {n - k, k};
     }
 }
 
@@ -98,8 +101,8 @@ void evaluateTriangleGrid(const Net10& net, const std::array<uint32_t, 10>& pool
     out.resize(triGridSize(n));
     for (int j = 0; j <= n; ++j)
         for (int i = 0; i <= n - j; ++i)
-            out[triGridIndex(i, j, n)] = evaluateTriangle(net, static_cast<double>(i) / n, static_cast<double>(j) / n,
-                                                          static_cast<double>(n - i - j) / n);
+            out[triGridIndex(i, j, n)] =
+                evaluateTriangle(net, static_cast<double>(i) / n, static_cast<double>(j) / n, static_cast<double>(n - i - j) / n);
     for (int e = 0; e < 3; ++e) {
         std::array<Vec3, 4> pts;
         for (int k = 0; k < 4; ++k) pts[k] = net[triEdgeSlot(e, k)];
@@ -123,7 +126,7 @@ Net16 triangleAsCollapsedQuad(const Net10& net) {
                 S[a][b] = a == 0 ? net[0] : evaluateTriangleBernsteinSum(net, 1.0 - sv, sv * (1.0 - tv), sv * tv);
             }
         Net16 out;
-        for (int i = 0; i < 4; ++i)      // t
+        for (int i = 0; i < 4; ++i)        // t
             for (int j = 0; j < 4; ++j) {  // s
                 Vec3 sum(0.0);
                 for (int a = 0; a < 4; ++a)

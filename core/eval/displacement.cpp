@@ -67,8 +67,7 @@ std::optional<DisplacementOverride> ownOf(const Document& doc, const PatchInstan
 
 }  // namespace
 
-std::vector<WindowDisplacement> windowDisplacements(const Document& doc, const std::vector<PatchInstance>& windows,
-                                                    const HeightMap* map) {
+std::vector<WindowDisplacement> windowDisplacements(const Document& doc, const std::vector<PatchInstance>& windows, const HeightMap* map) {
     std::vector<WindowDisplacement> out(windows.size() + doc.triangles.size());
     const bool planar = doc.displacement.mapping == DisplacementMapping::Planar;
     const std::array<double, 4> rect = planarRect(doc);
@@ -98,7 +97,9 @@ std::vector<WindowDisplacement> windowDisplacements(const Document& doc, const s
             std::array<uint32_t, 4> key{};
             for (int k = 0; k < 4; ++k) key[size_t(k)] = pi.idx[size_t(edgeSlot(Edge(e), k, depth))];
             // The edge as (u, v) of the window at t along it (u0: u = 0, v0: v = 0, u1: u = 1, v1: v = 1).
-            auto param = [e](double t) { return e == 0 ? std::array{0.0, t} : e == 1 ? std::array{t, 0.0} : e == 2 ? std::array{1.0, t} : std::array{t, 1.0}; };
+            auto param = [e](double t) {
+                return e == 0 ? std::array{0.0, t} : e == 1 ? std::array{t, 0.0} : e == 2 ? std::array{1.0, t} : std::array{t, 1.0};
+            };
             const std::array<float, 4> r = wd.uvRect;
             const EdgeDetail d = detailOf(key, [&](double t) {
                 const auto [u, v] = param(t);

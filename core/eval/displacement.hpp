@@ -42,7 +42,6 @@ struct WindowDisplacement {
 // Every window of expandPatches(doc) (`windows`), then every triangle. A shared edge gets the same
 // detail on both sides (computed once per edge, keyed by the pool points its levels come from), so
 // displacement-adaptive levels never open a crack. Without a map the details are zero.
-std::vector<WindowDisplacement> windowDisplacements(const Document& doc, const std::vector<PatchInstance>& windows,
-                                                    const HeightMap* map);
+std::vector<WindowDisplacement> windowDisplacements(const Document& doc, const std::vector<PatchInstance>& windows, const HeightMap* map);
 
 }  // namespace pw

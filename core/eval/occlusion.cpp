@@ -18,7 +18,10 @@ namespace {
 class DepthBuffer {
 public:
     DepthBuffer(const Camera& cam, int width, int height)
-        : w_(std::max(width, 1)), h_(std::max(height, 1)), vm_(viewMatrices(cam, double(w_) / h_)), ortho_(cam.orthographic),
+        : w_(std::max(width, 1)),
+          h_(std::max(height, 1)),
+          vm_(viewMatrices(cam, double(w_) / h_)),
+          ortho_(cam.orthographic),
           depth_(size_t(w_) * size_t(h_), std::numeric_limits<float>::infinity()) {}
 
     struct Vertex {
@@ -38,8 +41,10 @@ public:
         if (!a.ok || !b.ok || !c.ok) return;
         const double area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
         if (std::abs(area) < 1e-12) return;
-        const int x0 = std::max(0, int(std::floor(std::min({a.x, b.x, c.x})))), x1 = std::min(w_ - 1, int(std::ceil(std::max({a.x, b.x, c.x}))));
-        const int y0 = std::max(0, int(std::floor(std::min({a.y, b.y, c.y})))), y1 = std::min(h_ - 1, int(std::ceil(std::max({a.y, b.y, c.y}))));
+        const int x0 = std::max(0, int(std::floor(std::min({a.x, b.x, c.x})))),
+                  x1 = std::min(w_ - 1, int(std::ceil(std::max({a.x, b.x, c.x}))));
+        const int y0 = std::max(0, int(std::floor(std::min({a.y, b.y, c.y})))),
+                  y1 = std::min(h_ - 1, int(std::ceil(std::max({a.y, b.y, c.y}))));
         for (int y = y0; y <= y1; ++y)
             for (int x = x0; x <= x1; ++x) {
                 const double px = x + 0.5, py = y + 0.5;

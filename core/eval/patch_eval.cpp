@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/model/document.hpp"
 #include "core/base/net_scale.hpp"
 #include "core/eval/tensor_sums.hpp"
+#include "core/model/document.hpp"
 
 namespace pw {
 
@@ -62,8 +62,10 @@ Vec3 normalAt(const Net16& net, Basis basis, double tension, double u, double v,
     const double tiny = 1e-9 * scale;
     const bool duZero = glm::length(du) <= tiny;
     const bool dvZero = glm::length(dv) <= tiny;
-    if (duZero && !dvZero) n = glm::cross(d.duv, dv) * (v < 0.5 ? 1.0 : -1.0);
-    else if (dvZero && !duZero) n = glm::cross(du, d.duv) * (u < 0.5 ? 1.0 : -1.0);
+    if (duZero && !dvZero)
+        n = glm::cross(d.duv, dv) * (v < 0.5 ? 1.0 : -1.0);
+    else if (dvZero && !duZero)
+        n = glm::cross(du, d.duv) * (u < 0.5 ? 1.0 : -1.0);
     if (!degenerateCross(n, scale2)) return n / glm::length(n);
 
     // Last resort: the normal a small step towards the centre of the domain.
@@ -109,8 +111,14 @@ Vec3 casteljau4(const Vec3 (&p)[4], double t, Vec3 (&left)[4], Vec3 (&right)[4])
     const Vec3 a = glm::mix(p[0], p[1], t), b = glm::mix(p[1], p[2], t), c = glm::mix(p[2], p[3], t);
     const Vec3 d = glm::mix(a, b, t), e = glm::mix(b, c, t);
     const Vec3 f = glm::mix(d, e, t);
-    left[0] = p[0]; left[1] = a; left[2] = d; left[3] = f;
-    right[0] = f; right[1] = e; right[2] = c; right[3] = p[3];
+    left[0] = p[0];
+    left[1] = a;
+    left[2] = d;
+    left[3] = f;
+    right[0] = f;
+    right[1] = e;
+    right[2] = c;
+    right[3] = p[3];
     return f;
 }
 
@@ -170,8 +178,7 @@ GridWeights makeGridWeights(Basis basis, double tension, int nu, int nv) {
         out.resize(n + 1);
         for (int k = 0; k <= n; ++k) {
             const double t = static_cast<double>(k) / n;
-            out[k] = basis == Basis::Bezier ? bernsteinWeights(t, static_cast<double>(n - k) / n)
-                                            : basisWeights(basis, tension, t);
+            out[k] = basis == Basis::Bezier ? bernsteinWeights(t, static_cast<double>(n - k) / n) : basisWeights(basis, tension, t);
         }
     };
     fill(nu, g.u);
@@ -179,8 +186,7 @@ GridWeights makeGridWeights(Basis basis, double tension, int nu, int nv) {
     return g;
 }
 
-void evaluateGrid(const Net16& net, const std::array<uint32_t, 16>& poolIdx, const GridWeights& gw,
-                  std::vector<SurfacePoint>& out) {
+void evaluateGrid(const Net16& net, const std::array<uint32_t, 16>& poolIdx, const GridWeights& gw, std::vector<SurfacePoint>& out) {
     const int nu = gw.nu, nv = gw.nv, stride = nu + 1;
     out.resize(static_cast<size_t>(stride) * (nv + 1));
     const double scale = netScale(net), scale2 = scale * scale;
@@ -198,8 +204,10 @@ void evaluateGrid(const Net16& net, const std::array<uint32_t, 16>& poolIdx, con
             sp.du = wu.dw[0] * q[0] + wu.dw[1] * q[1] + wu.dw[2] * q[2] + wu.dw[3] * q[3];
             sp.dv = wu.w[0] * dq[0] + wu.w[1] * dq[1] + wu.w[2] * dq[2] + wu.w[3] * dq[3];
             const Vec3 n = glm::cross(sp.du, sp.dv);
-            if (!degenerateCross(n, scale2)) sp.n = n / glm::length(n);
-            else sp.n = normalAt(net, gw.basis, gw.tension, static_cast<double>(c) / nu, static_cast<double>(r) / nv, sp.du, sp.dv);
+            if (!degenerateCross(n, scale2))
+                sp.n = n / glm::length(n);
+            else
+                sp.n = normalAt(net, gw.basis, gw.tension, static_cast<double>(c) / nu, static_cast<double>(r) / nv, sp.du, sp.dv);
         }
     }
     if (gw.basis != Basis::Bezier) return;

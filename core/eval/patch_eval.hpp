@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "core/model/basis.hpp"
 #include "core/base/math_types.hpp"
+#include "core/model/basis.hpp"
 
 namespace pw {
 
@@ -37,7 +37,7 @@ SurfaceJet evaluateJet(const Net16& net, Basis basis, double tension, double u, 
 Vec3 normalAt(const Net16& net, Basis basis, double tension, double u, double v, const Vec3& du, const Vec3& dv);
 
 // Reference evaluators used to check the fast one.
-Vec3 evaluateBezierBernsteinSum(const Net16& net, double u, double v);   // Σ B_i(v) B_j(u) P_ij
+Vec3 evaluateBezierBernsteinSum(const Net16& net, double u, double v);         // Σ B_i(v) B_j(u) P_ij
 Vec3 evaluateMatrixForm(const Net16& net, const Mat4& m, double u, double v);  // V·M·G·Mᵀ·Uᵀ
 Vec3 evaluateBezierDeCasteljau(const Net16& net, double u, double v);
 
@@ -60,7 +60,6 @@ GridWeights makeGridWeights(Basis basis, double tension, int nu, int nv);
 
 // Evaluates the window on the grid u = c/nu, v = r/nv; out[r*(nu+1)+c]. For Bézier windows the
 // boundary rows and columns come from evaluateSharedBezierEdge (watertight seams).
-void evaluateGrid(const Net16& net, const std::array<uint32_t, 16>& poolIdx, const GridWeights& weights,
-                  std::vector<SurfacePoint>& out);
+void evaluateGrid(const Net16& net, const std::array<uint32_t, 16>& poolIdx, const GridWeights& weights, std::vector<SurfacePoint>& out);
 
 }  // namespace pw

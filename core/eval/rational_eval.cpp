@@ -2,11 +2,11 @@
 
 #include <glm/vec4.hpp>
 
-#include "core/model/basis.hpp"
 #include "core/base/net_scale.hpp"
+#include "core/eval/tensor_sums.hpp"
 #include "core/gpu/patch_math.h"
 #include "core/gpu/rational_math.h"
-#include "core/eval/tensor_sums.hpp"
+#include "core/model/basis.hpp"
 
 namespace pw {
 
@@ -53,8 +53,10 @@ Vec3 rationalNormal(const HomogeneousNet& hn, double scale, Basis basis, double 
     if (!degenerateCross(n, scale2)) return n / glm::length(n);
     const double tiny = 1e-9 * scale;
     const bool duZero = glm::length(j.du) <= tiny, dvZero = glm::length(j.dv) <= tiny;
-    if (duZero && !dvZero) n = glm::cross(j.duv, j.dv) * (v < 0.5 ? 1.0 : -1.0);
-    else if (dvZero && !duZero) n = glm::cross(j.du, j.duv) * (u < 0.5 ? 1.0 : -1.0);
+    if (duZero && !dvZero)
+        n = glm::cross(j.duv, j.dv) * (v < 0.5 ? 1.0 : -1.0);
+    else if (dvZero && !duZero)
+        n = glm::cross(j.du, j.duv) * (u < 0.5 ? 1.0 : -1.0);
     if (!degenerateCross(n, scale2)) return n / glm::length(n);
     for (double step : {1e-7, 1e-5, 1e-3, 1e-2}) {
         const SurfaceJet e = jetAt(hn, basis, tension, u + (0.5 - u) * step * 2.0, v + (0.5 - v) * step * 2.0);

@@ -10,8 +10,8 @@
 #include <optional>
 #include <vector>
 
-#include "core/model/document.hpp"
 #include "core/eval/patch_eval.hpp"
+#include "core/model/document.hpp"
 
 namespace pw {
 

@@ -11,8 +11,8 @@ PW_BEGIN_NAMESPACE
 // Gaussian and mean curvature (K, H) from the fundamental forms (E F G from du dv; L M N from the
 // second derivatives and the unit normal n). (0, 0) where the first form is singular (a collapsed
 // edge), whose curvature the derivatives there cannot give.
-PW_REAL_FN PW_REAL_VEC2 gaussMeanCurvature(PW_REAL_VEC3 du, PW_REAL_VEC3 dv, PW_REAL_VEC3 duu, PW_REAL_VEC3 duv,
-                                           PW_REAL_VEC3 dvv, PW_REAL_VEC3 n) {
+PW_REAL_FN PW_REAL_VEC2 gaussMeanCurvature(PW_REAL_VEC3 du, PW_REAL_VEC3 dv, PW_REAL_VEC3 duu, PW_REAL_VEC3 duv, PW_REAL_VEC3 dvv,
+                                           PW_REAL_VEC3 n) {
     PW_REAL E = dot(du, du), F = dot(du, dv), G = dot(dv, dv);
     PW_REAL L = dot(duu, n), M = dot(duv, n), N = dot(dvv, n);
     PW_REAL den = E * G - F * F;
@@ -22,8 +22,8 @@ PW_REAL_FN PW_REAL_VEC2 gaussMeanCurvature(PW_REAL_VEC3 du, PW_REAL_VEC3 dv, PW_
 
 // Normal curvature II(w, w) / I(w, w) in the parameter direction (a, b), i.e. along the surface
 // tangent a·du + b·dv; positive where the surface bends towards n. 0 for a zero tangent.
-PW_REAL_FN PW_REAL normalCurvature(PW_REAL_VEC3 du, PW_REAL_VEC3 dv, PW_REAL_VEC3 duu, PW_REAL_VEC3 duv,
-                                   PW_REAL_VEC3 dvv, PW_REAL_VEC3 n, PW_REAL a, PW_REAL b) {
+PW_REAL_FN PW_REAL normalCurvature(PW_REAL_VEC3 du, PW_REAL_VEC3 dv, PW_REAL_VEC3 duu, PW_REAL_VEC3 duv, PW_REAL_VEC3 dvv, PW_REAL_VEC3 n,
+                                   PW_REAL a, PW_REAL b) {
     PW_REAL first = a * a * dot(du, du) + PW_REAL(2) * a * b * dot(du, dv) + b * b * dot(dv, dv);
     PW_REAL second = a * a * dot(duu, n) + PW_REAL(2) * a * b * dot(duv, n) + b * b * dot(dvv, n);
     return first > PW_REAL(0) ? second / first : PW_REAL(0);

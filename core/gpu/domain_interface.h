@@ -14,7 +14,8 @@ PW_BLOCK(layout(push_constant) uniform DomainPushBlock, DomainPush) {
     vec4 transform;  // clip = domain * xy + zw (domain coordinates: x right, y up, in [0,1]^2)
     vec4 color;      // colour of this pass
     vec4 point;      // x point size (point-size variants only)
-} PW_END_BLOCK(dp)
+}
+PW_END_BLOCK(dp)
 
 PW_END_NAMESPACE
 

@@ -17,21 +17,24 @@
 #include <glm/vec4.hpp>
 
 #define PW_BEGIN_NAMESPACE \
-    namespace pw::gpu {   \
+    namespace pw::gpu {    \
     using uint = std::uint32_t;
 #define PW_END_NAMESPACE }
-#define PW_FN inline                 // a function defined in a header
-#define PW_CONST inline constexpr    // a named constant
-#define PW_OUT(T) T&                 // an out parameter
-#define PW_PRECISE                   // GLSL's `precise` (no contraction); no-op in C++, whose uses
-                                     // (batching bounds, tests) tolerate float-rounding differences
-#define PW_INIT(x) {x}               // a C++ default member value (GLSL blocks have none)
+#define PW_FN inline               // a function defined in a header
+#define PW_CONST inline constexpr  // a named constant
+#define PW_OUT(T) T&               // an out parameter
+#define PW_PRECISE                 // GLSL's `precise` (no contraction); no-op in C++, whose uses
+                                   // (batching bounds, tests) tolerate float-rounding differences
+#define PW_INIT(x) \
+    { x }  // a C++ default member value (GLSL blocks have none)
 // A uniform or storage block: a plain struct in C++, the block with its layout in GLSL.
 #define PW_BLOCK(glslHead, cppName) struct cppName
 #define PW_END_BLOCK(instance) ;
 // Functions over a real type: templates in C++ (float for the GPU's rules, double for the CPU's
 // evaluation), float in GLSL.
-#define PW_REAL_FN template <typename PwReal> inline
+#define PW_REAL_FN             \
+    template <typename PwReal> \
+    inline
 #define PW_REAL PwReal
 #define PW_REAL_VEC2 glm::vec<2, PwReal>
 #define PW_REAL_VEC3 glm::vec<3, PwReal>
@@ -45,10 +48,10 @@ using glm::dot;
 using glm::exp2;
 using glm::length;
 using glm::log2;
+using glm::mat4;
 using glm::max;
 using glm::min;
 using glm::normalize;
-using glm::mat4;
 using glm::uvec4;
 using glm::vec2;
 using glm::vec3;

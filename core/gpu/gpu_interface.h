@@ -12,31 +12,32 @@ PW_BEGIN_NAMESPACE
 
 // binding 0: per-frame constants (camera, tessellation settings, display settings).
 PW_BLOCK(layout(set = 0, binding = 0, std140) uniform Frame, FrameUniforms) {
-    mat4 viewProj;   // world -> clip (Vulkan: y down, depth 0..1)
-    mat4 view;       // world -> eye
-    vec4 eye;        // xyz camera position
-    vec4 lightDir;   // xyz direction towards the light, w: normal overlay length
-    vec4 viewport;   // xy size in pixels, zw the pane's top-left corner in the target
-    vec4 outer;      // uniform outer levels (u0, v0, u1, v1)
-    vec4 inner;      // xy uniform inner levels, z max level, w target pixels per segment
-    vec4 dist;       // x d0 (full level), y d1 (level 1), z curvature colour scale, w zebra stripes
-    uvec4 modes;     // x spacing (kSpacing*), y adaptive (kAdaptive*), z cull bits (kCull*), w shading (kShading*)
-    uvec4 sel;       // x hovered point, y selected point (kNoPoint = none)
+    mat4 viewProj;  // world -> clip (Vulkan: y down, depth 0..1)
+    mat4 view;      // world -> eye
+    vec4 eye;       // xyz camera position
+    vec4 lightDir;  // xyz direction towards the light, w: normal overlay length
+    vec4 viewport;  // xy size in pixels, zw the pane's top-left corner in the target
+    vec4 outer;     // uniform outer levels (u0, v0, u1, v1)
+    vec4 inner;     // xy uniform inner levels, z max level, w target pixels per segment
+    vec4 dist;      // x d0 (full level), y d1 (level 1), z curvature colour scale, w zebra stripes
+    uvec4 modes;    // x spacing (kSpacing*), y adaptive (kAdaptive*), z cull bits (kCull*), w shading (kShading*)
+    uvec4 sel;      // x hovered point, y selected point (kNoPoint = none)
     // View rays: the direction from the eye through NDC (x, y) is rayZ + x rayX + y rayY (the
     // fragment shader's view vector, so no world position travels as a varying).
     vec4 rayX;
     vec4 rayY;
     vec4 rayZ;
-    vec4 isoline;    // isoline domain (curves, isocurves): x lines, y segments
+    vec4 isoline;  // isoline domain (curves, isocurves): x lines, y segments
     // Displacement (the -DDISPLACE evaluation shaders, DESIGN §11): x scale, y bias (the document's),
     // z mapping (0 the window's parameters, 1 planar), w 1 for a Z-up document (planar over x-y,
     // else x-z).
     vec4 displace;
-    vec4 planar;     // planar mapping: xy the rectangle's corner, zw 1 / its size
+    vec4 planar;  // planar mapping: xy the rectangle's corner, zw 1 / its size
     // Curvature combs (shaders/comb.tese): x tooth length per unit curvature (model units²; a tooth
     // is −x·κN), y teeth per curve or isocurve.
     vec4 comb;
-} PW_END_BLOCK(frame)
+}
+PW_END_BLOCK(frame)
 
 // binding 1: per-patch tessellation overrides, indexed by patchBase + gl_PrimitiveID.
 struct PatchData {
@@ -57,7 +58,8 @@ PW_BLOCK(layout(set = 0, binding = 2, std430) buffer Counters, GpuCounters) {
     uint displacedEdges;     // window edges whose level the height map's detail raised (surface pass)
     uint displacementLevel;  // the largest such level
     uint pad2;
-} PW_END_BLOCK(counters)
+}
+PW_END_BLOCK(counters)
 
 // Per draw: the basis matrix (rows for t^3, t^2, t, 1 stored row-major, so weights = basis * T).
 PW_BLOCK(layout(push_constant) uniform Draw, DrawPush) {
@@ -67,7 +69,8 @@ PW_BLOCK(layout(push_constant) uniform Draw, DrawPush) {
     uint drawMode PW_INIT(0u);      // kDraw*
     uint isoDirection PW_INIT(0u);  // isocurve overlay: 0 lines along u, 1 along v
     vec4 color PW_INIT(1.0f);       // flat colour
-} PW_END_BLOCK(draw)
+}
+PW_END_BLOCK(draw)
 
 PW_END_NAMESPACE
 

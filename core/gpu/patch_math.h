@@ -42,11 +42,11 @@ PW_CONST uint kBasisBSpline = 1u;
 PW_CONST uint kBasisCatmullRom = 2u;
 
 // What a draw draws.
-PW_CONST uint kDrawShaded = 0u;      // the lit surface
-PW_CONST uint kDrawFlatColour = 1u;  // one colour (wireframe, isocurves, cage)
-PW_CONST uint kDrawPlainMesh = 2u;   // a pre-tessellated mesh (the benchmark's reference)
-PW_CONST uint kDrawGridPoints = 3u;  // the control points as dots
-PW_CONST uint kDrawCombTeeth = 4u;   // curvature comb teeth (shaders/comb.tese)
+PW_CONST uint kDrawShaded = 0u;        // the lit surface
+PW_CONST uint kDrawFlatColour = 1u;    // one colour (wireframe, isocurves, cage)
+PW_CONST uint kDrawPlainMesh = 2u;     // a pre-tessellated mesh (the benchmark's reference)
+PW_CONST uint kDrawGridPoints = 3u;    // the control points as dots
+PW_CONST uint kDrawCombTeeth = 4u;     // curvature comb teeth (shaders/comb.tese)
 PW_CONST uint kDrawCombEnvelope = 5u;  // the line through the comb teeth's tips
 
 PW_CONST uint kNoPoint = 0xffffffffu;  // no hovered or selected point
@@ -84,12 +84,11 @@ PW_REAL_FN PW_REAL_VEC4 bernstein3(PW_REAL t, PW_REAL s) {
     return PW_REAL_VEC4(s * s * s, PW_REAL(3) * t * s * s, PW_REAL(3) * t * t * s, t * t * t);
 }
 PW_REAL_FN PW_REAL_VEC4 bernstein3D1(PW_REAL t, PW_REAL s) {
-    return PW_REAL_VEC4(PW_REAL(-3) * s * s, PW_REAL(3) * s * s - PW_REAL(6) * t * s,
-                        PW_REAL(6) * t * s - PW_REAL(3) * t * t, PW_REAL(3) * t * t);
+    return PW_REAL_VEC4(PW_REAL(-3) * s * s, PW_REAL(3) * s * s - PW_REAL(6) * t * s, PW_REAL(6) * t * s - PW_REAL(3) * t * t,
+                        PW_REAL(3) * t * t);
 }
 PW_REAL_FN PW_REAL_VEC4 bernstein3D2(PW_REAL t, PW_REAL s) {
-    return PW_REAL_VEC4(PW_REAL(6) * s, PW_REAL(6) * t - PW_REAL(12) * s, PW_REAL(6) * s - PW_REAL(12) * t,
-                        PW_REAL(6) * t);
+    return PW_REAL_VEC4(PW_REAL(6) * s, PW_REAL(6) * t - PW_REAL(12) * s, PW_REAL(6) * s - PW_REAL(12) * t, PW_REAL(6) * t);
 }
 
 // The point at t of the cubic Bézier boundary q0 q1 q2 q3 (t along the edge as this patch walks it),
@@ -118,9 +117,7 @@ PW_FN vec4 canonicalBoundaryPointH(vec4 q0, vec4 q1, vec4 q2, vec4 q3, float t, 
 // The outer level of an edge under the shared-edge rule (core/tess/edge_levels.hpp): `stored` as is when
 // the edge's level is fixed (every window on it has its own levels), else the level the settings
 // give (`computed`, the same on both sides) raised to `stored` (the windows' largest own level).
-PW_FN float sharedEdgeLevel(float computed, float stored, bool fixedLevel) {
-    return fixedLevel ? stored : max(computed, stored);
-}
+PW_FN float sharedEdgeLevel(float computed, float stored, bool fixedLevel) { return fixedLevel ? stored : max(computed, stored); }
 
 // The level a control shader hands the tessellator for requested level f (DESIGN §3): equal ceil(f)
 // in [1, 64]; fractional_odd f in [1, 63]; fractional_even f in [2, 64] (the tessellator rounds
@@ -145,8 +142,8 @@ PW_FN vec2 toPixels(vec3 p, mat4 viewProj, vec2 viewport, PW_OUT(bool) behind) {
 // canonical order, so a neighbour sharing the curve gets the same value and no crack opens.
 // distance: maxLevel at distance d0 or nearer, 0 at d1 or farther; screen: the control polygon's
 // length in pixels over `targetPx`; orientation: edges whose bend is seen side-on get more.
-PW_FN float adaptiveEdgeLevel(vec3 p0, vec3 p1, vec3 p2, vec3 p3, uint mode, float maxLevel, vec3 eye, float d0,
-                              float d1, mat4 viewProj, vec2 viewport, float targetPx) {
+PW_FN float adaptiveEdgeLevel(vec3 p0, vec3 p1, vec3 p2, vec3 p3, uint mode, float maxLevel, vec3 eye, float d0, float d1, mat4 viewProj,
+                              vec2 viewport, float targetPx) {
     if (mode == kAdaptiveDistance) {
         PW_PRECISE vec3 mid = 0.5f * (p0 + p3);
         float d = distance(eye, mid);

@@ -30,8 +30,8 @@ PW_REAL_FN PW_REAL_VEC3 rationalDerivative(PW_REAL_VEC4 h, PW_REAL_VEC4 ha, PW_R
 
 // The second derivative ∂²/∂a∂b from the sums h, ha, hb, hab, the point p and its first
 // derivatives pa, pb (rationalDerivative).
-PW_REAL_FN PW_REAL_VEC3 rationalSecondDerivative(PW_REAL_VEC4 h, PW_REAL_VEC4 ha, PW_REAL_VEC4 hb, PW_REAL_VEC4 hab,
-                                                 PW_REAL_VEC3 p, PW_REAL_VEC3 pa, PW_REAL_VEC3 pb) {
+PW_REAL_FN PW_REAL_VEC3 rationalSecondDerivative(PW_REAL_VEC4 h, PW_REAL_VEC4 ha, PW_REAL_VEC4 hb, PW_REAL_VEC4 hab, PW_REAL_VEC3 p,
+                                                 PW_REAL_VEC3 pa, PW_REAL_VEC3 pb) {
     return (PW_REAL_VEC3(hab.x, hab.y, hab.z) - ha.w * pb - hb.w * pa - hab.w * p) / (PW_REAL(1) + h.w);
 }
 

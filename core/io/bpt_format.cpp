@@ -10,9 +10,9 @@
 
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
+#include "core/base/limits.hpp"
 #include "core/model/join_detect.hpp"
 #include "core/ops/orientation.hpp"
-#include "core/base/limits.hpp"
 
 namespace pw {
 
@@ -89,8 +89,7 @@ public:
         const auto countTok = tokens(line);
         uint64_t count = 0;
         if (countTok.size() != 1 || !parseCount(countTok[0], count)) {
-            const bool digits = countTok.size() == 1 &&
-                                countTok[0].find_first_not_of("0123456789") == std::string_view::npos;
+            const bool digits = countTok.size() == 1 && countTok[0].find_first_not_of("0123456789") == std::string_view::npos;
             if (digits)  // too many digits for 64 bits
                 fail(reader_.lineNo(), quoted(countTok[0]) + " patches; the limit is " + std::to_string(limits::kMaxPatches));
             fail(reader_.lineNo(), "expected the number of patches, found " + quoted(line));
@@ -106,8 +105,7 @@ public:
         for (uint64_t p = 0; p < count; ++p) {
             const std::string which = "patch " + std::to_string(p + 1) + " of " + std::to_string(count);
             // Degree line "3 3".
-            if (!reader_.next(line))
-                fail(reader_.lineNo() + 1, "file ends early: expected the degree line '3 3' of " + which);
+            if (!reader_.next(line)) fail(reader_.lineNo() + 1, "file ends early: expected the degree line '3 3' of " + which);
             const auto deg = tokens(line);
             uint64_t du = 0, dv = 0;
             if (deg.size() != 2 || !parseCount(deg[0], du) || !parseCount(deg[1], dv))
@@ -118,8 +116,7 @@ public:
             Patch patch;
             for (int k = 0; k < 16; ++k) {
                 if (!reader_.next(line))
-                    fail(reader_.lineNo() + 1, "file ends early: expected control point " + std::to_string(k + 1) +
-                                                   " of 16 of " + which);
+                    fail(reader_.lineNo() + 1, "file ends early: expected control point " + std::to_string(k + 1) + " of 16 of " + which);
                 patch.idx[k] = static_cast<uint32_t>(doc.points.size());
                 doc.points.push_back(parsePoint(line));
             }
@@ -128,13 +125,11 @@ public:
         // Only blank lines may follow.
         while (reader_.next(line))
             if (!isBlank(line))
-                fail(reader_.lineNo(), "unexpected content after the last of " + std::to_string(count) +
-                                           " patches: " + quoted(line));
+                fail(reader_.lineNo(), "unexpected content after the last of " + std::to_string(count) + " patches: " + quoted(line));
 
         mergeCoincidentPoints(doc);
         if (doc.points.size() > limits::kMaxPoints)
-            fail(0, std::to_string(doc.points.size()) + " distinct points; the limit is " +
-                        std::to_string(limits::kMaxPoints));
+            fail(0, std::to_string(doc.points.size()) + " distinct points; the limit is " + std::to_string(limits::kMaxPoints));
         doc.joins = detectJoins(doc);
         // The format has no orientation convention: the teacup comes inside out. After a flip the
         // pool is renumbered by first use and the joins detected afresh, so that writing and
@@ -159,8 +154,8 @@ private:
     Vec3 parsePoint(std::string_view line) {
         const auto tok = tokens(line);
         if (tok.size() != 3)
-            fail(reader_.lineNo(), "expected 3 numbers (x y z), found " + std::to_string(tok.size()) +
-                                       (tok.empty() ? "" : ": " + quoted(line)));
+            fail(reader_.lineNo(),
+                 "expected 3 numbers (x y z), found " + std::to_string(tok.size()) + (tok.empty() ? "" : ": " + quoted(line)));
         Vec3 p;
         for (int c = 0; c < 3; ++c) p[c] = parseNumber(tok[c], "xyz"[c]);
         return p;
@@ -177,8 +172,7 @@ private:
             fail(reader_.lineNo(), what + " is beyond the range of a double (coordinates are limited to ±1e9)");
         if (ec != std::errc() || ptr != end || t.empty()) fail(reader_.lineNo(), what + " is not a number");
         if (!std::isfinite(v)) fail(reader_.lineNo(), what + " is not finite");
-        if (std::abs(v) > limits::kMaxCoordinate)
-            fail(reader_.lineNo(), what + " is too large (the limit is ±1e9)");
+        if (std::abs(v) > limits::kMaxCoordinate) fail(reader_.lineNo(), what + " is too large (the limit is ±1e9)");
         return v;
     }
 
@@ -228,11 +222,10 @@ Document loadBpt(const std::filesystem::path& path) { return parseBpt(readFileLi
 std::string formatBpt(const Document& doc) {
     if (!doc.triangles.empty())
         throw InputError(doc.name.empty() ? "document" : doc.name,
-                         "Bézier triangles cannot be written as .bpt, which holds rectangular patches only", 0,
-                         "triangles[0]");
+                         "Bézier triangles cannot be written as .bpt, which holds rectangular patches only", 0, "triangles[0]");
     if (!doc.curves.empty())
-        throw InputError(doc.name.empty() ? "document" : doc.name, "Bézier curves cannot be written as .bpt, which holds rectangular patches only", 0,
-                         "curves[0]");
+        throw InputError(doc.name.empty() ? "document" : doc.name,
+                         "Bézier curves cannot be written as .bpt, which holds rectangular patches only", 0, "curves[0]");
     const std::vector<PatchInstance> windows = expandPatches(doc);
     std::string out;
     out.reserve(windows.size() * 16 * 32 + 16);
@@ -240,12 +233,11 @@ std::string formatBpt(const Document& doc) {
     out += '\n';
     for (const PatchInstance& w : windows) {
         if (w.basis != Basis::Bezier) {
-            const std::string field = w.patch >= 0 ? "patches[" + std::to_string(w.patch) + "]"
-                                                   : "surfaces[" + std::to_string(w.surface) + "]";
+            const std::string field =
+                w.patch >= 0 ? "patches[" + std::to_string(w.patch) + "]" : "surfaces[" + std::to_string(w.surface) + "]";
             throw InputError(doc.name.empty() ? "document" : doc.name,
-                             "basis " + std::string(basisName(w.basis)) +
-                                 " cannot be written as .bpt, which holds Bézier patches only",
-                             0, field);
+                             "basis " + std::string(basisName(w.basis)) + " cannot be written as .bpt, which holds Bézier patches only", 0,
+                             field);
         }
         out += "3 3\n";
         for (int k = 0; k < 16; ++k) {

@@ -20,10 +20,12 @@ Document loadDocument(const std::filesystem::path& path, LoadReport* report) {
 void saveDocument(const Document& doc, const std::filesystem::path& path, const ExportOptions& options, TriangleMesh* displayed) {
     const FileFormat* f = formatOf(path);
     if (!f || !f->save)
-        throw OutputError(path.string(), "unknown file type '" + lowerExtension(path) + "'; Patchwork writes " + formatList(FormatUse::Save));
+        throw OutputError(path.string(),
+                          "unknown file type '" + lowerExtension(path) + "'; Patchwork writes " + formatList(FormatUse::Save));
     if (f->mesh && options.asDisplayed && !displayed)
-        throw OutputError(path.string(), "the surface as displayed comes from the GPU; export it with `patchwork export "
-                                         "--as-displayed` or the editor's File > Export As Displayed");
+        throw OutputError(path.string(),
+                          "the surface as displayed comes from the GPU; export it with `patchwork export "
+                          "--as-displayed` or the editor's File > Export As Displayed");
     f->save(doc, path, options, displayed);
 }
 

@@ -9,15 +9,15 @@
 #include <string>
 #include <vector>
 
-#include "core/model/document.hpp"
 #include "core/io/gltf_export.hpp"
+#include "core/model/document.hpp"
 
 namespace pw {
 
 // What a load learnt beside the document.
 struct LoadReport {
     std::optional<ExportOptions> exportOptions;  // a Patchwork glTF's own export options
-    std::vector<std::string> notes;                  // what was skipped (STEP/IGES faces) and why
+    std::vector<std::string> notes;              // what was skipped (STEP/IGES faces) and why
 };
 
 Document loadDocument(const std::filesystem::path& path, LoadReport* report = nullptr);

@@ -10,9 +10,9 @@
 namespace pw {
 
 struct ExportOptions {
-    int level = 0;  // tessellation level; 0 = the document's (max of its uniform levels, rounded up)
+    int level = 0;                                     // tessellation level; 0 = the document's (max of its uniform levels, rounded up)
     MeshGrouping primitives = MeshGrouping::Surfaces;  // one primitive per connected surface, patch, or one
-    bool cage = false;  // add the control cage (LINES, its own node)
+    bool cage = false;                                 // add the control cage (LINES, its own node)
     // The surface as the GPU tessellated it for the document's view (per-edge, adaptive levels;
     // render/surface_capture), passed in as `displayed`; `level` then only samples the curves.
     bool asDisplayed = false;

@@ -32,32 +32,51 @@ void saveGltf(const Document& doc, const std::filesystem::path& path, const Expo
 
 std::vector<FileFormat> makeFormats() {
     std::vector<FileFormat> f;
-    f.push_back({.name = "Patchwork document", .extensions = {".patchwork"}, .document = true, .keepsEverything = true,
+    f.push_back({.name = "Patchwork document",
+                 .extensions = {".patchwork"},
+                 .document = true,
+                 .keepsEverything = true,
                  .load = [](const std::filesystem::path& p, LoadReport*) { return parseDocument(readFileLimited(p), p.string()); },
-                 .save = [](const Document& d, const std::filesystem::path& p, const ExportOptions&, TriangleMesh*) {
-                     writeFileAtomic(p, serializeDocument(d));
-                 }});
-    f.push_back({.name = "Newell tea-set patches", .extensions = {".bpt"}, .document = true,
+                 .save = [](const Document& d, const std::filesystem::path& p, const ExportOptions&,
+                            TriangleMesh*) { writeFileAtomic(p, serializeDocument(d)); }});
+    f.push_back({.name = "Newell tea-set patches",
+                 .extensions = {".bpt"},
+                 .document = true,
                  .load = [](const std::filesystem::path& p, LoadReport*) { return loadBpt(p); },
-                 .save = [](const Document& d, const std::filesystem::path& p, const ExportOptions&, TriangleMesh*) {
-                     std::string text;
-                     try {
-                         text = formatBpt(d);
-                     } catch (const InputError& e) {
-                         // Not representable in the format: a problem with the output the user asked for.
-                         throw OutputError(p.string(), (e.field().empty() ? "" : e.field() + ": ") + e.reason());
-                     }
-                     writeFileAtomic(p, text);
-                 }});
-    f.push_back({.name = "glTF 2.0", .extensions = {".gltf"}, .document = true, .mesh = true, .keepsEverything = true,
-                 .load = loadGltf, .save = saveGltf});
-    f.push_back({.name = "glTF 2.0 binary", .extensions = {".glb"}, .document = true, .mesh = true, .keepsEverything = true,
-                 .load = loadGltf, .save = saveGltf});
-    f.push_back({.name = "Wavefront OBJ", .extensions = {".obj"}, .mesh = true,
+                 .save =
+                     [](const Document& d, const std::filesystem::path& p, const ExportOptions&, TriangleMesh*) {
+                         std::string text;
+                         try {
+                             text = formatBpt(d);
+                         } catch (const InputError& e) {
+                             // Not representable in the format: a problem with the output the user asked for.
+                             throw OutputError(p.string(), (e.field().empty() ? "" : e.field() + ": ") + e.reason());
+                         }
+                         writeFileAtomic(p, text);
+                     }});
+    f.push_back({.name = "glTF 2.0",
+                 .extensions = {".gltf"},
+                 .document = true,
+                 .mesh = true,
+                 .keepsEverything = true,
+                 .load = loadGltf,
+                 .save = saveGltf});
+    f.push_back({.name = "glTF 2.0 binary",
+                 .extensions = {".glb"},
+                 .document = true,
+                 .mesh = true,
+                 .keepsEverything = true,
+                 .load = loadGltf,
+                 .save = saveGltf});
+    f.push_back({.name = "Wavefront OBJ",
+                 .extensions = {".obj"},
+                 .mesh = true,
                  .save = [](const Document& d, const std::filesystem::path& p, const ExportOptions& o, TriangleMesh* displayed) {
                      exportObj(d, p, o.level, o.asDisplayed ? displayed : nullptr);
                  }});
-    f.push_back({.name = "STEP", .extensions = {".step", ".stp"}, .load = loadCad,
+    f.push_back({.name = "STEP",
+                 .extensions = {".step", ".stp"},
+                 .load = loadCad,
                  .save = [](const Document& d, const std::filesystem::path& p, const ExportOptions&, TriangleMesh*) { exportStep(d, p); }});
     f.push_back({.name = "IGES", .extensions = {".iges", ".igs"}, .load = loadCad});
     return f;
@@ -80,11 +99,16 @@ const FileFormat* formatOf(const std::filesystem::path& path) {
 
 bool formatDoes(const FileFormat& f, FormatUse use) {
     switch (use) {
-        case FormatUse::Load: return bool(f.load);
-        case FormatUse::Save: return bool(f.save);
-        case FormatUse::Document: return f.document;
-        case FormatUse::Mesh: return f.mesh;
-        case FormatUse::Export: return f.save && (f.mesh || !f.document);
+        case FormatUse::Load:
+            return bool(f.load);
+        case FormatUse::Save:
+            return bool(f.save);
+        case FormatUse::Document:
+            return f.document;
+        case FormatUse::Mesh:
+            return f.mesh;
+        case FormatUse::Export:
+            return f.save && (f.mesh || !f.document);
     }
     return false;
 }

@@ -26,10 +26,11 @@ struct FileFormat {
     // Reopens as the patches it was written from (.patchwork, .bpt, Patchwork glTF): what
     // `patchwork edit` and Save As write. The others are imports (STEP, IGES) or exports (OBJ).
     bool document = false;
-    bool mesh = false;           // a tessellated mesh: export level and "as displayed" apply
+    bool mesh = false;             // a tessellated mesh: export level and "as displayed" apply
     bool keepsEverything = false;  // holds all a document can (nets, triangles, curves, joins): Save writes it without asking
     std::function<Document(const std::filesystem::path&, LoadReport*)> load;  // null: not read
-    std::function<void(const Document&, const std::filesystem::path&, const ExportOptions&, TriangleMesh* displayed)> save;  // null: not written
+    std::function<void(const Document&, const std::filesystem::path&, const ExportOptions&, TriangleMesh* displayed)>
+        save;  // null: not written
 };
 
 // Every format, documents first.

@@ -17,7 +17,7 @@ uint32_t u32At(std::string_view data, size_t at) {
     std::memcpy(&v, data.data() + at, 4);
     return v;
 }
-}
+}  // namespace
 
 GlbParts splitGlb(std::string_view data, const std::string& name) {
     auto u32 = [&](size_t at) { return u32At(data, at); };
@@ -30,8 +30,8 @@ GlbParts splitGlb(std::string_view data, const std::string& name) {
     const uint32_t jsonLength = u32(12);
     if (u32(16) != kJsonChunk) throw InputError(name, "not a valid glTF binary (.glb) file: the first chunk is not JSON");
     if (jsonLength > data.size() - 20)
-        throw InputError(name, "not a valid glTF binary (.glb) file: the JSON chunk says " + std::to_string(jsonLength) +
-                                   " bytes, " + std::to_string(data.size() - 20) + " follow");
+        throw InputError(name, "not a valid glTF binary (.glb) file: the JSON chunk says " + std::to_string(jsonLength) + " bytes, " +
+                                   std::to_string(data.size() - 20) + " follow");
     return {data.substr(20, jsonLength), data.substr(20 + size_t(jsonLength))};
 }
 

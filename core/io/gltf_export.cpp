@@ -15,14 +15,14 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/eval/bezier_curve.hpp"
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
-#include "core/io/glb_container.hpp"
 #include "core/base/limits.hpp"
+#include "core/eval/bezier_curve.hpp"
+#include "core/io/glb_container.hpp"
+#include "core/io/patchwork_format.hpp"
 #include "core/mesh/mesh_split.hpp"
 #include "core/mesh/mesh_tessellate.hpp"
-#include "core/io/patchwork_format.hpp"
 
 namespace pw {
 
@@ -139,8 +139,8 @@ int addLineMaterial(tinygltf::Model& model, const std::string& name, std::vector
 }
 
 // A mesh of one LINES primitive over its own positions.
-tinygltf::Mesh linesMesh(tinygltf::Model& model, const std::vector<std::array<float, 3>>& positions,
-                         const std::vector<uint32_t>& indices, int material) {
+tinygltf::Mesh linesMesh(tinygltf::Model& model, const std::vector<std::array<float, 3>>& positions, const std::vector<uint32_t>& indices,
+                         int material) {
     const size_t nv = positions.size();
     const int posView = addView(model, positions.data(), nv * 12, TINYGLTF_TARGET_ARRAY_BUFFER);
     const int posAcc = addAccessor(model, posView, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, nv);
@@ -195,7 +195,9 @@ std::optional<ExportOptions> exportOptionsFromJson(const nlohmann::json& j, cons
         o.asDisplayed = d->get<bool>();
     }
     if (const auto v = j.find("viewport"); v != j.end()) {
-        const auto size = [](const nlohmann::json& e) { return e.is_number_integer() && e.get<int64_t>() >= 1 && e.get<int64_t>() <= 16384; };
+        const auto size = [](const nlohmann::json& e) {
+            return e.is_number_integer() && e.get<int64_t>() >= 1 && e.get<int64_t>() <= 16384;
+        };
         if (!v->is_array() || v->size() != 2 || !size((*v)[0]) || !size((*v)[1]))
             throw InputError(source, "must be [width, height] in pixels, each 1 to 16384", 0, at + ".viewport");
         o.viewport = {(*v)[0].get<int>(), (*v)[1].get<int>()};
@@ -282,8 +284,7 @@ std::string exportGltfBytes(const Document& doc, bool binary, const ExportOption
         st.primitives = mesh.groups.size();
         if (!mesh.indices.empty()) {
             const size_t nv = mesh.positions.size();
-            model.buffers[0].data.reserve(nv * 32 + mesh.indices.size() * 4 + cage.positions.size() * 12 +
-                                          cage.indices.size() * 4 + 64);
+            model.buffers[0].data.reserve(nv * 32 + mesh.indices.size() * 4 + cage.positions.size() * 12 + cage.indices.size() * 4 + 64);
             const int posView = addView(model, mesh.positions.data(), nv * 12, TINYGLTF_TARGET_ARRAY_BUFFER, 12);
             const int nrmView = addView(model, mesh.normals.data(), nv * 12, TINYGLTF_TARGET_ARRAY_BUFFER, 12);
             const int uvView = addView(model, mesh.uvs.data(), nv * 8, TINYGLTF_TARGET_ARRAY_BUFFER, 8);
@@ -296,10 +297,13 @@ std::string exportGltfBytes(const Document& doc, bool binary, const ExportOption
             tinygltf::Mesh gmesh;
             for (const MeshGroup& g : mesh.groups) {
                 tinygltf::Primitive prim;
-                prim.attributes["POSITION"] = addAccessor(model, posView, g.firstVertex * 12, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, g.vertexCount);
+                prim.attributes["POSITION"] =
+                    addAccessor(model, posView, g.firstVertex * 12, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, g.vertexCount);
                 setMinMax(model.accessors.back(), mesh.positions.data() + g.firstVertex, g.vertexCount);
-                prim.attributes["NORMAL"] = addAccessor(model, nrmView, g.firstVertex * 12, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, g.vertexCount);
-                prim.attributes["TEXCOORD_0"] = addAccessor(model, uvView, g.firstVertex * 8, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, g.vertexCount);
+                prim.attributes["NORMAL"] =
+                    addAccessor(model, nrmView, g.firstVertex * 12, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, g.vertexCount);
+                prim.attributes["TEXCOORD_0"] =
+                    addAccessor(model, uvView, g.firstVertex * 8, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC2, g.vertexCount);
                 prim.indices = addAccessor(model, idxView, g.firstIndex * componentSize, componentType, TINYGLTF_TYPE_SCALAR, g.indexCount);
                 int& m = material[g.closed ? 0 : 1];
                 if (m < 0) m = addSurfaceMaterial(model, !g.closed);
@@ -315,7 +319,10 @@ std::string exportGltfBytes(const Document& doc, bool binary, const ExportOption
     // The control cage: LINES with their own positions and an unlit material, in their own node.
     if (options.cage) {
         st.cageSegments = cage.indices.size() / 2;
-        if (!cage.indices.empty()) addMeshNode(linesMesh(model, cage.positions, cage.indices, addLineMaterial(model, "Patchwork control cage", {0.25, 0.35, 0.55, 1.0})), "control cage");
+        if (!cage.indices.empty())
+            addMeshNode(
+                linesMesh(model, cage.positions, cage.indices, addLineMaterial(model, "Patchwork control cage", {0.25, 0.35, 0.55, 1.0})),
+                "control cage");
     }
 
     // Bézier curves: `level` segments each, as LINES (pairs), unlit, in their own node.
@@ -371,8 +378,7 @@ std::string exportGltfBytes(const Document& doc, bool binary, const ExportOption
 GltfExportStats exportGltfWithStats(const Document& doc, const std::filesystem::path& path, const ExportOptions& options,
                                     TriangleMesh* displayed) {
     const std::string ext = lowerExtension(path);
-    if (ext != ".glb" && ext != ".gltf")
-        throw OutputError(path.string(), "unknown glTF extension '" + ext + "' (use .gltf or .glb)");
+    if (ext != ".glb" && ext != ".gltf") throw OutputError(path.string(), "unknown glTF extension '" + ext + "' (use .gltf or .glb)");
     GltfExportStats stats;
     std::string bytes;
     try {

@@ -9,9 +9,9 @@
 
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
+#include "core/base/json_guard.hpp"
 #include "core/io/glb_container.hpp"
 #include "core/io/gltf_structure.hpp"
-#include "core/base/json_guard.hpp"
 #include "core/io/patchwork_format.hpp"
 
 namespace pw {
@@ -85,9 +85,7 @@ bool refuseExternalFile(std::vector<unsigned char>*, std::string* err, const std
 }
 bool fileNeverExists(const std::string&, void*) { return false; }
 std::string keepPath(const std::string& path, void*) { return path; }
-bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
-    return true;
-}
+bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) { return true; }
 
 }  // namespace
 
@@ -144,8 +142,10 @@ Document parsePatchworkGltf(std::string_view data, const std::string& name, std:
     }
 
     if (!extras)
-        throw InputError(name, "not a Patchwork glTF: it has no patchwork extras (only files exported by Patchwork "
-                               "can be imported as patches)", 0, "asset.extras.patchwork");
+        throw InputError(name,
+                         "not a Patchwork glTF: it has no patchwork extras (only files exported by Patchwork "
+                         "can be imported as patches)",
+                         0, "asset.extras.patchwork");
     if (!json.is_object()) throw InputError(name, "the patchwork extras are not an object", 0, field);
     restoreDroppedEmpties(json, documentTemplate());
     Document doc = documentFromJson(json, name, field);

@@ -7,8 +7,8 @@
 #include <string>
 #include <string_view>
 
-#include "core/model/document.hpp"
 #include "core/io/gltf_export.hpp"
+#include "core/model/document.hpp"
 
 namespace pw {
 
@@ -18,7 +18,6 @@ Document importPatchworkGltf(const std::filesystem::path& path, std::optional<Ex
 
 // The same from the file's bytes (.glb when they start with "glTF", else JSON). Reads no other
 // file and decodes no image: a hostile glTF cannot make Patchwork open paths its URIs name.
-Document parsePatchworkGltf(std::string_view data, const std::string& sourceName,
-                            std::optional<ExportOptions>* exportOptions = nullptr);
+Document parsePatchworkGltf(std::string_view data, const std::string& sourceName, std::optional<ExportOptions>* exportOptions = nullptr);
 
 }  // namespace pw

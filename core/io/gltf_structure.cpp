@@ -38,9 +38,7 @@ class Checker {
 public:
     Checker(const json& root, const std::string& name) : root_(root), name_(name) {}
 
-    [[noreturn]] void fail(const std::string& field, const std::string& what) const {
-        throw InputError(name_, what, 0, field);
-    }
+    [[noreturn]] void fail(const std::string& field, const std::string& what) const { throw InputError(name_, what, 0, field); }
 
     // The array `key` of the root (empty when absent), each element checked to be an object.
     const json& array(const char* key) const {
@@ -54,8 +52,7 @@ public:
     }
 
     // obj[key] as an integer in [lo, hi]; nullptr when absent and optional.
-    const json* integer(const json& obj, const char* key, const std::string& path, int64_t lo, int64_t hi,
-                        bool required = false) const {
+    const json* integer(const json& obj, const char* key, const std::string& path, int64_t lo, int64_t hi, bool required = false) const {
         const auto it = obj.find(key);
         const std::string field = member(path, key);
         if (it == obj.end()) {
@@ -74,21 +71,18 @@ public:
         } else if (v.is_number_integer()) {
             inRange = v.get<int64_t>() >= lo && v.get<int64_t>() <= hi;
         }
-        if (!inRange)
-            fail(field, "expected an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + ", found " + found(v));
+        if (!inRange) fail(field, "expected an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + ", found " + found(v));
     }
 
     // obj[key] as an index into the root array `into`.
     void index(const json& obj, const char* key, const std::string& path, const char* into, bool required = false) const {
         const size_t n = sizeOf(into);
         const auto it = obj.find(key);
-        if (it != obj.end() && n == 0)
-            fail(member(path, key), std::string("refers to ") + into + ", but the file has none");
+        if (it != obj.end() && n == 0) fail(member(path, key), std::string("refers to ") + into + ", but the file has none");
         integer(obj, key, path, 0, static_cast<int64_t>(n) - 1, required);
     }
 
-    void enumOf(const json& obj, const char* key, const std::string& path, std::initializer_list<int64_t> allowed,
-                bool required) const {
+    void enumOf(const json& obj, const char* key, const std::string& path, std::initializer_list<int64_t> allowed, bool required) const {
         const json* v = integer(obj, key, path, INT64_MIN, INT64_MAX, required);
         if (v && std::find(allowed.begin(), allowed.end(), v->get<int64_t>()) == allowed.end())
             fail(member(path, key), "not one of glTF 2.0's values for it, found " + found(*v));

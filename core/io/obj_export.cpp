@@ -6,9 +6,9 @@
 #include <map>
 #include <system_error>
 
-#include "core/eval/bezier_curve.hpp"
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
+#include "core/eval/bezier_curve.hpp"
 #include "core/io/gltf_export.hpp"
 #include "core/mesh/mesh_tessellate.hpp"
 
@@ -116,8 +116,9 @@ ObjFiles exportObjText(const Document& doc, int requestedLevel, const std::strin
         st.lineSegments += curveIds[c].size() - 1;
     }
 
-    f.mtl = "# Patchwork materials\n"
-            "newmtl patchwork_surface\nKa 0 0 0\nKd 0.8 0.8 0.8\nKs 0.2 0.2 0.2\nNs 50\nd 1\nillum 2\n";
+    f.mtl =
+        "# Patchwork materials\n"
+        "newmtl patchwork_surface\nKa 0 0 0\nKd 0.8 0.8 0.8\nKs 0.2 0.2 0.2\nNs 50\nd 1\nillum 2\n";
     if (!curveIds.empty()) f.mtl += "\nnewmtl patchwork_curves\nKa 0 0 0\nKd 0.85 0.45 0.1\nKs 0 0 0\nd 1\nillum 0\n";
 
     st.positions = positions.size();
@@ -148,8 +149,10 @@ ObjExportStats exportObj(const Document& doc, const std::filesystem::path& path,
     try {
         writeFileAtomic(path, files.obj);
     } catch (...) {
-        if (hadMtl) writeFileAtomic(mtl, oldMtl);
-        else std::filesystem::remove(mtl, ec);
+        if (hadMtl)
+            writeFileAtomic(mtl, oldMtl);
+        else
+            std::filesystem::remove(mtl, ec);
         throw;
     }
     return stats;

@@ -9,8 +9,8 @@
 #include <filesystem>
 #include <string>
 
-#include "core/model/document.hpp"
 #include "core/mesh/mesh_tessellate.hpp"
+#include "core/model/document.hpp"
 
 namespace pw {
 

@@ -12,8 +12,8 @@
 #include "core/base/errors.hpp"
 #include "core/base/json_guard.hpp"
 #include "core/base/json_reader.hpp"
-#include "core/model/settings.hpp"
 #include "core/base/limits.hpp"
+#include "core/model/settings.hpp"
 
 namespace pw {
 
@@ -49,29 +49,25 @@ json floatArray(const std::array<float, N>& a) {
 
 json tessJson(const TessSettings& t) {
     json j{{"outer", floatArray(t.outer)},
-                {"inner", floatArray(t.inner)},
-                {"linked", t.linked},
-                {"spacing", spacingName(t.spacing)},
-                {"adaptive", adaptiveName(t.adaptive)},
-                {"distanceNear", floatJson(t.distanceNear)},
-                {"distanceFar", floatJson(t.distanceFar)},
-                {"targetPixels", floatJson(t.targetPixels)},
-                {"maxLevel", floatJson(t.maxLevel)},
-                {"cullBackfaces", t.cullBackfaces},
-                {"cullOffscreen", t.cullOffscreen}};
+           {"inner", floatArray(t.inner)},
+           {"linked", t.linked},
+           {"spacing", spacingName(t.spacing)},
+           {"adaptive", adaptiveName(t.adaptive)},
+           {"distanceNear", floatJson(t.distanceNear)},
+           {"distanceFar", floatJson(t.distanceFar)},
+           {"targetPixels", floatJson(t.targetPixels)},
+           {"maxLevel", floatJson(t.maxLevel)},
+           {"cullBackfaces", t.cullBackfaces},
+           {"cullOffscreen", t.cullOffscreen}};
     if (t.isolineLevels != TessSettings{}.isolineLevels) j["isoline"] = floatArray(t.isolineLevels);  // older files stay as they were
     return j;
 }
 
 json displayJson(const DisplaySettings& d) {
-    json j{{"shading", shadingName(d.shading)},
-                {"showGrid", d.showGrid},
-                {"showWireframe", d.showWireframe},
-                {"showNormals", d.showNormals},
-                {"showBoundaries", d.showBoundaries},
-                {"normalLength", floatJson(d.normalLength)},
-                {"lightDir", floatArray(d.lightDir)},
-                {"background", floatArray(d.background)}};
+    json j{{"shading", shadingName(d.shading)},  {"showGrid", d.showGrid},
+           {"showWireframe", d.showWireframe},   {"showNormals", d.showNormals},
+           {"showBoundaries", d.showBoundaries}, {"normalLength", floatJson(d.normalLength)},
+           {"lightDir", floatArray(d.lightDir)}, {"background", floatArray(d.background)}};
     if (d.showIsocurves) j["showIsocurves"] = true;
     if (d.showCombs) j["showCombs"] = true;
     if (d.combScale != 1.0f) j["combScale"] = floatJson(d.combScale);
@@ -103,12 +99,10 @@ void putOverride(json& o, const std::optional<DisplacementOverride>& d) {
 // ---------------------------------------------------------------------------------------------
 // Reading
 
-
 constexpr double kMinLevel = limits::kMinTessLevel, kMaxLevel = limits::kMaxTessLevel;
 
 template <size_t N>
-void readFloats(const Reader& r, const json& v, const std::string& path, std::array<float, N>& out, double lo,
-                double hi) {
+void readFloats(const Reader& r, const json& v, const std::string& path, std::array<float, N>& out, double lo, double hi) {
     r.fixedArray(v, path, N);
     for (size_t i = 0; i < N; ++i) out[i] = r.floatValue(v[i], at(path, i), lo, hi);
 }
@@ -118,9 +112,12 @@ void readFloats(const Reader& r, const json& v, const std::string& path, std::ar
 template <class T>
 void readSetting(const Reader& r, const json& v, const std::string& path, std::string_view key, T& out) {
     const Setting& s = setting(key);
-    if constexpr (std::is_same_v<T, float>) out = r.floatValue(v, path, s.min, s.max);
-    else if constexpr (std::is_same_v<T, int>) out = int(r.numberInRange(v, path, s.min, s.max));
-    else readFloats(r, v, path, out, s.min, s.max);
+    if constexpr (std::is_same_v<T, float>)
+        out = r.floatValue(v, path, s.min, s.max);
+    else if constexpr (std::is_same_v<T, int>)
+        out = int(r.numberInRange(v, path, s.min, s.max));
+    else
+        readFloats(r, v, path, out, s.min, s.max);
 }
 
 TessSettings readTess(const Reader& r, const json& v, const std::string& path) {
@@ -161,7 +158,8 @@ DisplaySettings readDisplay(const Reader& r, const json& v, const std::string& p
     r.optional(v, path, "showIsocurves", [&](const json& x, const std::string& p) { d.showIsocurves = r.boolean(x, p); });
     r.optional(v, path, "showCombs", [&](const json& x, const std::string& p) { d.showCombs = r.boolean(x, p); });
     auto number = [&](const char* field, auto& out) {
-        r.optional(v, path, field, [&](const json& x, const std::string& p) { readSetting(r, x, p, "display." + std::string(field), out); });
+        r.optional(v, path, field,
+                   [&](const json& x, const std::string& p) { readSetting(r, x, p, "display." + std::string(field), out); });
     };
     number("combScale", d.combScale);
     number("combDensity", d.combDensity);
@@ -208,7 +206,8 @@ Camera readCamera(const Reader& r, const json& v, const std::string& path) {
     r.optional(v, path, "distance", [&](const json& x, const std::string& p) { c.distance = r.numberInRange(x, p, 0, 1e12, true); });
     r.optional(v, path, "yawDeg", [&](const json& x, const std::string& p) { c.yawDeg = r.numberInRange(x, p, -1e6, 1e6); });
     r.optional(v, path, "pitchDeg", [&](const json& x, const std::string& p) { c.pitchDeg = r.numberInRange(x, p, -1e6, 1e6); });
-    r.optional(v, path, "fovYDeg", [&](const json& x, const std::string& p) { c.fovYDeg = r.numberInRange(x, p, 0, limits::kMaxFovYDeg, true); });
+    r.optional(v, path, "fovYDeg",
+               [&](const json& x, const std::string& p) { c.fovYDeg = r.numberInRange(x, p, 0, limits::kMaxFovYDeg, true); });
     r.optional(v, path, "orthographic", [&](const json& x, const std::string& p) { c.orthographic = r.boolean(x, p); });
     r.optional(v, path, "zUp", [&](const json& x, const std::string& p) { c.zUp = r.boolean(x, p); });
     return c;
@@ -297,9 +296,11 @@ json documentToJson(const Document& doc) {
     j["tess"] = tessJson(doc.tess);
     j["display"] = displayJson(doc.display);
     j["camera"] = cameraJson(doc.camera);
-    if (doc.displacement != DisplacementSettings{}) j["displacement"] = displacementJson(doc.displacement);  // older files stay as they were
+    if (doc.displacement != DisplacementSettings{})
+        j["displacement"] = displacementJson(doc.displacement);  // older files stay as they were
     if (doc.tolerances != ContinuityTolerances{})
-        j["tolerances"] = json{{"position", doc.tolerances.position}, {"angle", doc.tolerances.angleDeg}, {"curvature", doc.tolerances.curvaturePct}};
+        j["tolerances"] =
+            json{{"position", doc.tolerances.position}, {"angle", doc.tolerances.angleDeg}, {"curvature", doc.tolerances.curvaturePct}};
     return j;
 }
 
@@ -316,8 +317,8 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
     const bool negative = !version.is_number_unsigned() && version.get<int64_t>() < 0;
     const uint64_t v = negative ? 0 : version.get<uint64_t>();
     if (v > static_cast<uint64_t>(Document::kFormatVersion))
-        r.fail("version", "was written by a newer Patchwork (format version " + std::to_string(v) +
-                              "); this build reads version " + std::to_string(Document::kFormatVersion));
+        r.fail("version", "was written by a newer Patchwork (format version " + std::to_string(v) + "); this build reads version " +
+                              std::to_string(Document::kFormatVersion));
     if (negative || v < 1)
         r.fail("version", "format version " + version.dump() + " is not valid (this build reads version " +
                               std::to_string(Document::kFormatVersion) + ")");
@@ -337,7 +338,8 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
     if (const json* wv = r.member(j, "", "weights", false)) {
         const json& weights = r.array(*wv, "weights", limits::kMaxPoints, "weights");
         if (weights.size() != nPoints)
-            r.fail("weights", "has " + std::to_string(weights.size()) + " entries; the document has " + std::to_string(nPoints) + " points (one weight each)");
+            r.fail("weights", "has " + std::to_string(weights.size()) + " entries; the document has " + std::to_string(nPoints) +
+                                  " points (one weight each)");
         doc.weights.resize(weights.size());
         for (size_t i = 0; i < weights.size(); ++i) {
             doc.weights[i] = r.numberInRange(weights[i], at("weights", i), 0.0, kMaxWeight, true);
@@ -377,8 +379,10 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
             const std::string path = at("surfaces", i);
             const json& o = r.object(surfaces[i], path);
             Surface& s = doc.surfaces[i];
-            s.rows = static_cast<uint32_t>(r.index(*r.member(o, path, "rows", true), at(path, "rows"), limits::kMaxNetSide + 1, "row count"));
-            s.cols = static_cast<uint32_t>(r.index(*r.member(o, path, "cols", true), at(path, "cols"), limits::kMaxNetSide + 1, "column count"));
+            s.rows =
+                static_cast<uint32_t>(r.index(*r.member(o, path, "rows", true), at(path, "rows"), limits::kMaxNetSide + 1, "row count"));
+            s.cols =
+                static_cast<uint32_t>(r.index(*r.member(o, path, "cols", true), at(path, "cols"), limits::kMaxNetSide + 1, "column count"));
             if (s.rows < 1) r.fail(at(path, "rows"), "a net needs at least 1 row");
             if (s.cols < 1) r.fail(at(path, "cols"), "a net needs at least 1 column");
             r.optional(o, path, "basis", [&](const json& x, const std::string& p) { s.basis = r.named<Basis>(x, p, parseBasis, kBases); });
@@ -426,7 +430,8 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
 
     // Cubic Bézier triangles (optional).
     if (const json* tv = r.member(j, "", "triangles", false)) {
-        const json& triangles = r.array(*tv, "triangles", limits::kMaxPatches - std::min<uint64_t>(windows, limits::kMaxPatches), "triangles");
+        const json& triangles =
+            r.array(*tv, "triangles", limits::kMaxPatches - std::min<uint64_t>(windows, limits::kMaxPatches), "triangles");
         doc.triangles.resize(triangles.size());
         for (size_t i = 0; i < triangles.size(); ++i) {
             const std::string path = at("triangles", i);
@@ -489,7 +494,8 @@ std::string serializeDocument(const Document& doc) {
     auto dump = [](const json& v) { return v.dump(-1, ' ', false, json::error_handler_t::replace); };
     std::string out = "{\n";
     bool first = true;
-    for (const char* key : {"format", "version", "name", "points", "weights", "patches", "surfaces", "joins", "triangles", "curves", "tess", "display", "camera", "displacement", "tolerances"}) {
+    for (const char* key : {"format", "version", "name", "points", "weights", "patches", "surfaces", "joins", "triangles", "curves", "tess",
+                            "display", "camera", "displacement", "tolerances"}) {
         auto it = j.find(key);
         if (it == j.end()) continue;
         if (!first) out += ",\n";

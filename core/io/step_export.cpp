@@ -14,10 +14,10 @@
 #include <StepData_Protocol.hxx>
 #include <StepData_StepModel.hxx>
 #include <StepData_StepWriter.hxx>
-#include <TCollection_HAsciiString.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
+#include <TCollection_HAsciiString.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
@@ -30,11 +30,11 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/eval/bezier_triangle.hpp"
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
-#include "core/ops/net_ops.hpp"
+#include "core/eval/bezier_triangle.hpp"
 #include "core/io/occt_support.hpp"
+#include "core/ops/net_ops.hpp"
 
 namespace pw {
 
@@ -105,15 +105,18 @@ std::string exportStepText(const Document& doc, const StepExportOptions& options
     for (size_t s = 0; s < doc.surfaces.size(); ++s)
         for (uint32_t i : doc.surfaces[s].idx)
             if (pointWeight(doc, i) != 1.0)
-                throw std::runtime_error("surface " + std::to_string(s) + ": a net with weights is not written to STEP yet (convert it to patches first)");
+                throw std::runtime_error("surface " + std::to_string(s) +
+                                         ": a net with weights is not written to STEP yet (convert it to patches first)");
     const auto held = occt::lock();
     try {
         const double size = std::max(1.0, modelSize(doc));
         const double tol = std::max(Precision::Confusion(), 1e-9 * size);
         BRepBuilderAPI_Sewing sewing(std::max(Precision::Confusion(), 1e-7 * size));
-        auto addFace = [&](const Handle(Geom_Surface)& surface, const std::string& what) {
+        auto addFace = [&](const Handle(Geom_Surface) & surface, const std::string& what) {
             BRepBuilderAPI_MakeFace face(surface, Precision::Confusion());
-            if (!face.IsDone()) throw std::runtime_error(what + ": OpenCASCADE could not make a face of it (error " + std::to_string(int(face.Error())) + ")");
+            if (!face.IsDone())
+                throw std::runtime_error(what + ": OpenCASCADE could not make a face of it (error " + std::to_string(int(face.Error())) +
+                                         ")");
             sewing.Add(face.Face());
         };
         for (size_t p = 0; p < doc.patches.size(); ++p) {
@@ -122,7 +125,8 @@ std::string exportStepText(const Document& doc, const StepExportOptions& options
         }
         for (size_t s = 0; s < doc.surfaces.size(); ++s) addFace(netSurface(doc, doc.surfaces[s], tol), "surface " + std::to_string(s));
         for (size_t t = 0; t < doc.triangles.size(); ++t)
-            addFace(occt::bezierSurface(triangleAsCollapsedQuad(gatherTriangleNet(doc, doc.triangles[t].idx))), "triangle " + std::to_string(t));
+            addFace(occt::bezierSurface(triangleAsCollapsedQuad(gatherTriangleNet(doc, doc.triangles[t].idx))),
+                    "triangle " + std::to_string(t));
         sewing.Perform();
         const TopoDS_Shape shape = shellsOf(sewing.SewedShape());
 
@@ -130,7 +134,8 @@ std::string exportStepText(const Document& doc, const StepExportOptions& options
         Interface_Static::SetCVal("write.step.schema", options.schema == StepSchema::AP242 ? "AP242DIS" : "AP214IS");
         Interface_Static::SetCVal("write.step.unit", "MM");
         STEPControl_Writer writer;
-        if (writer.Transfer(shape, STEPControl_AsIs) != IFSelect_RetDone) throw std::runtime_error("OpenCASCADE could not transfer the shape to STEP");
+        if (writer.Transfer(shape, STEPControl_AsIs) != IFSelect_RetDone)
+            throw std::runtime_error("OpenCASCADE could not transfer the shape to STEP");
         {
             APIHeaderSection_MakeHeader header(writer.Model());
             header.SetName(new TCollection_HAsciiString(doc.name.empty() ? "Patchwork" : doc.name.c_str()));

@@ -3,11 +3,11 @@
 
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
-#include <GeomConvert.hxx>
-#include <GeomConvert_BSplineSurfaceToBezierSurface.hxx>
 #include <Geom2d_BSplineCurve.hxx>
 #include <Geom2d_Line.hxx>
 #include <Geom2d_TrimmedCurve.hxx>
+#include <GeomConvert.hxx>
+#include <GeomConvert_BSplineSurfaceToBezierSurface.hxx>
 #include <Geom_BezierSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <IGESControl_Reader.hxx>
@@ -23,15 +23,15 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
-#include <vector>
 #include <variant>
+#include <vector>
 
-#include "core/model/camera_math.hpp"
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
-#include "core/model/join_detect.hpp"
 #include "core/base/limits.hpp"
 #include "core/io/occt_support.hpp"
+#include "core/model/camera_math.hpp"
+#include "core/model/join_detect.hpp"
 
 namespace pw {
 
@@ -40,14 +40,17 @@ namespace {
 // When the 2-D curve is a line of constant u or constant v (an edge of the parameter rectangle),
 // possibly trimmed, or a B-spline whose poles all share u or v: records that value in `us` or `vs`
 // and returns true.
-bool isoCurve(const Handle(Geom2d_Curve)& c, std::vector<double>& us, std::vector<double>& vs) {
+bool isoCurve(const Handle(Geom2d_Curve) & c, std::vector<double>& us, std::vector<double>& vs) {
     Handle(Geom2d_Curve) curve = c;
     if (auto t = Handle(Geom2d_TrimmedCurve)::DownCast(curve)) curve = t->BasisCurve();
     if (auto l = Handle(Geom2d_Line)::DownCast(curve)) {
         const gp_Dir2d d = l->Direction();
-        if (std::abs(d.X()) < 1e-12) us.push_back(l->Location().X());
-        else if (std::abs(d.Y()) < 1e-12) vs.push_back(l->Location().Y());
-        else return false;
+        if (std::abs(d.X()) < 1e-12)
+            us.push_back(l->Location().X());
+        else if (std::abs(d.Y()) < 1e-12)
+            vs.push_back(l->Location().Y());
+        else
+            return false;
         return true;
     }
     if (auto b = Handle(Geom2d_BSplineCurve)::DownCast(curve)) {
@@ -57,14 +60,16 @@ bool isoCurve(const Handle(Geom2d_Curve)& c, std::vector<double>& us, std::vecto
             sameU = sameU && std::abs(b->Pole(i).X() - p0.X()) < 1e-12;
             sameV = sameV && std::abs(b->Pole(i).Y() - p0.Y()) < 1e-12;
         }
-        if (sameU) us.push_back(p0.X());
-        else if (sameV) vs.push_back(p0.Y());
+        if (sameU)
+            us.push_back(p0.X());
+        else if (sameV)
+            vs.push_back(p0.Y());
         return sameU || sameV;
     }
     return false;
 }
 
-std::string typeName(const Handle(Geom_Surface)& s) {
+std::string typeName(const Handle(Geom_Surface) & s) {
     std::string n = s->DynamicType()->Name();
     if (n.rfind("Geom_", 0) == 0) n = n.substr(5);
     return n;
@@ -167,7 +172,8 @@ Document importCadSurfaces(const std::filesystem::path& path, CadImportReport* r
                             const gp_Pnt p = z->Pole(c + 1, r + 1);
                             patch.idx[size_t(r * 4 + c)] = uint32_t(doc.points.size());
                             doc.points.push_back(Vec3(p.X(), p.Y(), p.Z()));
-                            if (z->IsURational() || z->IsVRational()) setPointWeight(doc, uint32_t(doc.points.size() - 1), z->Weight(c + 1, r + 1));
+                            if (z->IsURational() || z->IsVRational())
+                                setPointWeight(doc, uint32_t(doc.points.size() - 1), z->Weight(c + 1, r + 1));
                         }
                     doc.patches.push_back(patch);
                     if (doc.patches.size() > limits::kMaxPatches)

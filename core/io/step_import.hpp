@@ -15,9 +15,9 @@
 namespace pw {
 
 struct CadImportReport {
-    size_t faces = 0;                 // faces in the file
-    size_t importedFaces = 0;         // of them, turned into patches
-    std::vector<std::string> notes;   // one per skipped face: "face 3: trimmed by a curve (...)"
+    size_t faces = 0;                // faces in the file
+    size_t importedFaces = 0;        // of them, turned into patches
+    std::vector<std::string> notes;  // one per skipped face: "face 3: trimmed by a curve (...)"
 };
 
 Document importCadSurfaces(const std::filesystem::path& path, CadImportReport* report = nullptr);

@@ -68,8 +68,8 @@ std::vector<uint32_t> groupTriangles(const TriangleMesh& mesh, MeshGrouping grou
 }
 
 // closed[g]: every edge of group g's triangles, by position, is used by exactly two of them.
-std::vector<bool> closedGroups(const std::vector<uint32_t>& indices, const std::vector<uint32_t>& group,
-                               const std::vector<uint32_t>& pid, size_t groups) {
+std::vector<bool> closedGroups(const std::vector<uint32_t>& indices, const std::vector<uint32_t>& group, const std::vector<uint32_t>& pid,
+                               size_t groups) {
     struct Key {
         uint32_t g, a, b;
         bool operator<(const Key& o) const { return std::tie(g, a, b) < std::tie(o.g, o.a, o.b); }
@@ -97,9 +97,12 @@ std::vector<bool> closedGroups(const std::vector<uint32_t>& indices, const std::
 
 const char* meshGroupingName(MeshGrouping g) {
     switch (g) {
-        case MeshGrouping::Surfaces: return "surfaces";
-        case MeshGrouping::Patches: return "patches";
-        case MeshGrouping::Single: return "single";
+        case MeshGrouping::Surfaces:
+            return "surfaces";
+        case MeshGrouping::Patches:
+            return "patches";
+        case MeshGrouping::Single:
+            return "single";
     }
     return "surfaces";
 }
@@ -113,9 +116,8 @@ std::optional<MeshGrouping> parseMeshGrouping(const std::string& name) {
 std::vector<uint32_t> positionIds(const std::vector<std::array<float, 3>>& positions) {
     std::vector<uint32_t> order(positions.size());
     std::iota(order.begin(), order.end(), 0u);
-    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-        return positions[a] < positions[b] || (positions[a] == positions[b] && a < b);
-    });
+    std::sort(order.begin(), order.end(),
+              [&](uint32_t a, uint32_t b) { return positions[a] < positions[b] || (positions[a] == positions[b] && a < b); });
     std::vector<uint32_t> id(positions.size());
     for (size_t i = 0; i < order.size();) {
         size_t j = i;

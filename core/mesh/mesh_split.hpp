@@ -22,8 +22,8 @@ std::optional<MeshGrouping> parseMeshGrouping(const std::string& name);
 struct MeshGroup {
     uint32_t firstIndex = 0, indexCount = 0;    // in SplitMesh::indices (triangles)
     uint32_t firstVertex = 0, vertexCount = 0;  // in SplitMesh::positions / normals / uvs
-    bool closed = false;  // every edge (by position) is shared by exactly two of the group's triangles
-    int item = -1;        // Patches: the window (expandPatches order) or, after them, the Bézier triangle
+    bool closed = false;                        // every edge (by position) is shared by exactly two of the group's triangles
+    int item = -1;                              // Patches: the window (expandPatches order) or, after them, the Bézier triangle
 };
 
 struct SplitMesh {

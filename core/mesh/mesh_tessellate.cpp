@@ -43,8 +43,10 @@ struct UnionFind {
         a = find(a);
         b = find(b);
         if (a == b) return;
-        if (a < b) parent[b] = a;
-        else parent[a] = b;
+        if (a < b)
+            parent[b] = a;
+        else
+            parent[a] = b;
     }
 };
 
@@ -67,7 +69,7 @@ enum class WeldMode : uint8_t {
 
 struct SurfaceGridInfo {
     uint32_t gridRows = 0, gridCols = 0;  // vertex rows and columns (closed directions wrap)
-    size_t base = 0;  // offset in the shared id array
+    size_t base = 0;                      // offset in the shared id array
 };
 
 }  // namespace
@@ -123,8 +125,10 @@ void tessellateWindows(const Document& doc, const std::vector<PatchInstance>& wi
                 auto it = netWindow.find({s, rr, cc});
                 return it == netWindow.end() || it->second == w ? -1 : int64_t(it->second);
             };
-            if (const int64_t b = next(r, (c + 3) % surf.cols); b >= 0) welds.push_back(Join{w, Edge::U1, uint32_t(b), Edge::U0, false, Continuity::C1, 1.0});
-            if (const int64_t b = next((r + 3) % surf.rows, c); b >= 0) welds.push_back(Join{w, Edge::V1, uint32_t(b), Edge::V0, false, Continuity::C1, 1.0});
+            if (const int64_t b = next(r, (c + 3) % surf.cols); b >= 0)
+                welds.push_back(Join{w, Edge::U1, uint32_t(b), Edge::U0, false, Continuity::C1, 1.0});
+            if (const int64_t b = next((r + 3) % surf.rows, c); b >= 0)
+                welds.push_back(Join{w, Edge::V1, uint32_t(b), Edge::V0, false, Continuity::C1, 1.0});
         }
     }
     for (const Join& j : welds) {
@@ -138,7 +142,7 @@ void tessellateWindows(const Document& doc, const std::vector<PatchInstance>& wi
         const bool same = ea == eb, rev = ea == reversedEdgePool(eb);
         const size_t ka = j.patchA * size_t{4} + static_cast<size_t>(j.edgeA);
         const size_t kb = j.patchB * size_t{4} + static_cast<size_t>(j.edgeB);
-        if (!same && !rev) continue;  // not a shared boundary: nothing to weld
+        if (!same && !rev) continue;                  // not a shared boundary: nothing to weld
         if (same && rev && !collapsed[ka]) continue;  // a closed loop: no unambiguous direction
         const uint32_t a0 = static_cast<uint32_t>(j.patchA * 4 + cornerOfSlot(edgeSlot(j.edgeA, 0)));
         const uint32_t a3 = static_cast<uint32_t>(j.patchA * 4 + cornerOfSlot(edgeSlot(j.edgeA, 3)));
@@ -229,8 +233,8 @@ void tessellateWindows(const Document& doc, const std::vector<PatchInstance>& wi
         evaluateWindowGrid(net, inst.idx, gw, pts);
 
         const WeldMode mode = inst.basis == Basis::Bezier ? WeldMode::Bezier
-                              : inst.surface >= 0        ? WeldMode::SurfaceGrid
-                                                         : WeldMode::Isolated;
+                              : inst.surface >= 0         ? WeldMode::SurfaceGrid
+                                                          : WeldMode::Isolated;
 
         // Interior points: always this window's own vertices.
         for (int r = 1; r < L; ++r)
@@ -281,10 +285,14 @@ void tessellateWindows(const Document& doc, const std::vector<PatchInstance>& wi
                 const auto pool = edgePool(inst.idx, e);
                 auto onEdge = [&](int k) {
                     switch (e) {
-                        case Edge::U0: return ids[size_t(k * S)];
-                        case Edge::U1: return ids[size_t(k * S + L)];
-                        case Edge::V0: return ids[size_t(k)];
-                        default: return ids[size_t(L * S + k)];
+                        case Edge::U0:
+                            return ids[size_t(k * S)];
+                        case Edge::U1:
+                            return ids[size_t(k * S + L)];
+                        case Edge::V0:
+                            return ids[size_t(k)];
+                        default:
+                            return ids[size_t(L * S + k)];
                     }
                 };
                 boundaryByPool.corners.try_emplace(pool[0], onEdge(0));
@@ -322,7 +330,6 @@ void tessellateWindows(const Document& doc, const std::vector<PatchInstance>& wi
         const Vec3 n = bSum[o] / len;
         mesh.normals[bVid[o]] = {static_cast<float>(n.x), static_cast<float>(n.y), static_cast<float>(n.z)};
     }
-
 }
 
 }  // namespace
@@ -372,8 +379,8 @@ TriangleMesh tessellateDocument(const Document& doc, int level) {
                                     std::to_string(limits::kMaxExportLevel));
     const std::vector<PatchInstance> windows = expandPatches(doc);
     if (meshBound(doc, level).vertices >= 4294967295.0)
-        throw std::length_error(std::to_string(windows.size() + doc.triangles.size()) + " patches at level " +
-                                std::to_string(level) + " would need more than 2^32 vertices; use a lower level");
+        throw std::length_error(std::to_string(windows.size() + doc.triangles.size()) + " patches at level " + std::to_string(level) +
+                                " would need more than 2^32 vertices; use a lower level");
     TriangleMesh mesh;
     BoundaryVertices quadBoundaries;
     tessellateWindows(doc, windows, level, mesh, quadBoundaries);

@@ -20,8 +20,8 @@ struct TriangleMesh {
     std::vector<std::array<float, 3>> positions;
     std::vector<std::array<float, 3>> normals;
     std::vector<std::array<float, 2>> uvs;
-    std::vector<uint32_t> indices;     // triangles, counter-clockwise seen from the normal side
-    std::vector<MeshRange> perWindow;  // one per expandPatches() entry
+    std::vector<uint32_t> indices;       // triangles, counter-clockwise seen from the normal side
+    std::vector<MeshRange> perWindow;    // one per expandPatches() entry
     std::vector<MeshRange> perTriangle;  // one per Document::triangles entry (after the windows)
 
     // Appends triangle (a, b, c) unless it is degenerate: a repeated index or two equal positions

@@ -25,7 +25,7 @@ struct SoupVertex {
 static_assert(sizeof(SoupVertex) == 36, "the transform-feedback stride of surface.tese's CAPTURE variant");
 
 struct WeldStats {
-    size_t soupTriangles = 0;       // triangles in the soup
+    size_t soupTriangles = 0;        // triangles in the soup
     size_t degenerateTriangles = 0;  // of them, left out (collapsed by the welding)
 };
 

@@ -18,10 +18,7 @@ Mat4 basisMatrix(Basis basis, double tension) {
             return {{{-1, 3, -3, 1}, {3, -6, 3, 0}, {-3, 3, 0, 0}, {1, 0, 0, 0}}};
         case Basis::BSpline: {
             const double s = 1.0 / 6.0;
-            return {{{-1 * s, 3 * s, -3 * s, 1 * s},
-                     {3 * s, -6 * s, 3 * s, 0},
-                     {-3 * s, 0, 3 * s, 0},
-                     {1 * s, 4 * s, 1 * s, 0}}};
+            return {{{-1 * s, 3 * s, -3 * s, 1 * s}, {3 * s, -6 * s, 3 * s, 0}, {-3 * s, 0, 3 * s, 0}, {1 * s, 4 * s, 1 * s, 0}}};
         }
         case Basis::CatmullRom: {
             const double t = tension;

@@ -58,14 +58,29 @@ ViewMatrices viewMatrices(const Camera& cam, double aspect, double nearPlane, do
 }
 
 std::optional<Camera> applyNamedView(Camera cam, std::string_view name) {
-    if (name == "front") { cam.yawDeg = 0; cam.pitchDeg = 0; }
-    else if (name == "back") { cam.yawDeg = 180; cam.pitchDeg = 0; }
-    else if (name == "right") { cam.yawDeg = 90; cam.pitchDeg = 0; }
-    else if (name == "left") { cam.yawDeg = -90; cam.pitchDeg = 0; }
-    else if (name == "top") { cam.yawDeg = 0; cam.pitchDeg = 90; }
-    else if (name == "bottom") { cam.yawDeg = 0; cam.pitchDeg = -90; }
-    else if (name == "iso") { cam.yawDeg = 45; cam.pitchDeg = 35.264389682754654; }
-    else return std::nullopt;
+    if (name == "front") {
+        cam.yawDeg = 0;
+        cam.pitchDeg = 0;
+    } else if (name == "back") {
+        cam.yawDeg = 180;
+        cam.pitchDeg = 0;
+    } else if (name == "right") {
+        cam.yawDeg = 90;
+        cam.pitchDeg = 0;
+    } else if (name == "left") {
+        cam.yawDeg = -90;
+        cam.pitchDeg = 0;
+    } else if (name == "top") {
+        cam.yawDeg = 0;
+        cam.pitchDeg = 90;
+    } else if (name == "bottom") {
+        cam.yawDeg = 0;
+        cam.pitchDeg = -90;
+    } else if (name == "iso") {
+        cam.yawDeg = 45;
+        cam.pitchDeg = 35.264389682754654;
+    } else
+        return std::nullopt;
     return cam;
 }
 

@@ -1,9 +1,9 @@
 #include "core/model/document.hpp"
 
-#include "core/model/basis.hpp"
 #include "core/base/enum_names.hpp"
 #include "core/base/errors.hpp"
 #include "core/gpu/patch_math.h"
+#include "core/model/basis.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -19,8 +19,7 @@ static_assert(uint32_t(AdaptiveMode::None) == gpu::kAdaptiveNone && uint32_t(Ada
               uint32_t(AdaptiveMode::Orientation) == gpu::kAdaptiveOrientation);
 static_assert(uint32_t(ShadingMode::Lit) == gpu::kShadingLit && uint32_t(ShadingMode::Normal) == gpu::kShadingNormal &&
               uint32_t(ShadingMode::PatchId) == gpu::kShadingPatchId && uint32_t(ShadingMode::UvChecker) == gpu::kShadingUvChecker &&
-              uint32_t(ShadingMode::Zebra) == gpu::kShadingZebra &&
-              uint32_t(ShadingMode::GaussCurvature) == gpu::kShadingGaussCurvature &&
+              uint32_t(ShadingMode::Zebra) == gpu::kShadingZebra && uint32_t(ShadingMode::GaussCurvature) == gpu::kShadingGaussCurvature &&
               uint32_t(ShadingMode::MeanCurvature) == gpu::kShadingMeanCurvature);
 static_assert(uint32_t(Basis::Bezier) == gpu::kBasisBezier && uint32_t(Basis::BSpline) == gpu::kBasisBSpline &&
               uint32_t(Basis::CatmullRom) == gpu::kBasisCatmullRom);
@@ -121,8 +120,7 @@ void trimWeights(std::vector<double>& weights) {
 void setPointWeight(Document& doc, uint32_t i, double w) {
     if (i >= doc.points.size())
         throw EditError("point " + std::to_string(i) + " does not exist (the document has " + std::to_string(doc.points.size()) + ")");
-    if (!(w > 0.0) || !(w <= kMaxWeight))
-        throw EditError("a weight must be positive and at most 1e6 (got " + std::to_string(w) + ")");
+    if (!(w > 0.0) || !(w <= kMaxWeight)) throw EditError("a weight must be positive and at most 1e6 (got " + std::to_string(w) + ")");
     if (i >= doc.weights.size()) {
         if (w == 1.0) return;
         doc.weights.resize(i + 1, 1.0);

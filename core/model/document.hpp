@@ -9,8 +9,8 @@
 #include <string_view>
 #include <vector>
 
-#include "core/model/basis.hpp"
 #include "core/base/math_types.hpp"
+#include "core/model/basis.hpp"
 
 namespace pw {
 
@@ -72,7 +72,7 @@ struct Patch {
     std::string name;
     // Per-patch tessellation override: four outer and two inner levels.
     std::optional<std::array<float, 6>> tessOverride;
-    bool hidden = false;  // H: not drawn, not picked (saved with the document)
+    bool hidden = false;                               // H: not drawn, not picked (saved with the document)
     std::optional<DisplacementOverride> displacement;  // own scale and bias (else the document's)
     bool operator==(const Patch&) const = default;
 };
@@ -155,9 +155,9 @@ struct TessSettings {
     bool linked = true;  // UI: one slider drives all six
     Spacing spacing = Spacing::Equal;
     AdaptiveMode adaptive = AdaptiveMode::None;
-    float distanceNear = 2.0f;   // d0: full level at or below this distance
-    float distanceFar = 30.0f;   // d1: level 1 at or beyond this distance
-    float targetPixels = 8.0f;   // screen-space mode: pixels per segment
+    float distanceNear = 2.0f;  // d0: full level at or below this distance
+    float distanceFar = 30.0f;  // d1: level 1 at or beyond this distance
+    float targetPixels = 8.0f;  // screen-space mode: pixels per segment
     float maxLevel = 64.0f;
     bool cullBackfaces = false;
     bool cullOffscreen = true;
@@ -175,7 +175,7 @@ std::optional<ShadingMode> parseShading(std::string_view name);
 
 struct DisplaySettings {
     ShadingMode shading = ShadingMode::Lit;
-    bool showGrid = true;       // control-net lines and points
+    bool showGrid = true;  // control-net lines and points
     bool showWireframe = false;
     bool showNormals = false;
     bool showBoundaries = false;  // patch boundaries and joins coloured by continuity

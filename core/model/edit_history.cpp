@@ -8,10 +8,9 @@ namespace {
 
 // True when the two documents differ only in point coordinates (same pool size).
 bool onlyPointsDiffer(const Document& a, const Document& b) {
-    return a.points.size() == b.points.size() && a.patches == b.patches && a.surfaces == b.surfaces &&
-           a.triangles == b.triangles && a.curves == b.curves && a.joins == b.joins && a.tess == b.tess && a.display == b.display && a.camera == b.camera &&
-           a.displacement == b.displacement && a.tolerances == b.tolerances && a.weights == b.weights &&
-           a.name == b.name;
+    return a.points.size() == b.points.size() && a.patches == b.patches && a.surfaces == b.surfaces && a.triangles == b.triangles &&
+           a.curves == b.curves && a.joins == b.joins && a.tess == b.tess && a.display == b.display && a.camera == b.camera &&
+           a.displacement == b.displacement && a.tolerances == b.tolerances && a.weights == b.weights && a.name == b.name;
 }
 
 const std::string kEmpty;
@@ -25,14 +24,13 @@ void EditHistory::commit(const Document& before, const Document& after, std::str
     step.label = std::move(label);
     if (onlyPointsDiffer(before, after)) {
         for (size_t i = 0; i < before.points.size(); ++i)
-            if (before.points[i] != after.points[i])
-                step.points.push_back({static_cast<uint32_t>(i), before.points[i], after.points[i]});
+            if (before.points[i] != after.points[i]) step.points.push_back({static_cast<uint32_t>(i), before.points[i], after.points[i]});
         if (step.points.empty()) return;
     } else {
         step.before = std::make_unique<Document>(before);
         step.after = std::make_unique<Document>(after);
     }
-    steps_.resize(cursor_);  // a new edit drops the redo branch
+    steps_.resize(cursor_);                                               // a new edit drops the redo branch
     if (savedCursor_ > static_cast<int64_t>(cursor_)) savedCursor_ = -1;  // saved state is gone
     steps_.push_back(std::move(step));
     ++cursor_;

@@ -45,7 +45,7 @@ private:
     };
     struct Step {
         std::string label;
-        std::vector<PointChange> points;       // used when the edit moved points only
+        std::vector<PointChange> points;          // used when the edit moved points only
         std::unique_ptr<Document> before, after;  // used otherwise
     };
 

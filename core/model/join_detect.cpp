@@ -55,8 +55,8 @@ void classify(const Document& doc, const Patch& A, const Patch& B, Join& j, cons
         a[k] = doc.points[A.idx[edgeSlot(j.edgeA, k, 0)]] - doc.points[A.idx[edgeSlot(j.edgeA, k, 1)]];
         b[k] = doc.points[B.idx[edgeSlot(j.edgeB, kb, 1)]] - doc.points[B.idx[edgeSlot(j.edgeB, kb, 0)]];
         const bool za = glm::length(a[k]) <= tol, zb = glm::length(b[k]) <= tol;
-        if (za && zb) continue;     // collapsed tangent on both sides: no information
-        if (za != zb) return;       // one side has a tangent, the other none: a crease (C0)
+        if (za && zb) continue;  // collapsed tangent on both sides: no information
+        if (za != zb) return;    // one side has a tangent, the other none: a crease (C0)
         use[k] = true;
         num += glm::dot(a[k], b[k]);
         den += glm::dot(a[k], a[k]);

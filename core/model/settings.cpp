@@ -24,10 +24,17 @@ void toArray(std::array<float, N>& a, const Values& v) {
 
 // A number row bound to a float (or float array) member reached through `field`.
 template <class F>
-Setting numberRow(std::string_view key, std::string_view label, std::string_view tooltip, std::string_view unit, double lo,
-                  double hi, SettingWidget widget, std::string_view format, F field) {
-    Setting s{.key = key, .label = label, .tooltip = tooltip, .unit = unit, .kind = SettingKind::Number, .min = lo, .max = hi,
-              .widget = widget, .format = format};
+Setting numberRow(std::string_view key, std::string_view label, std::string_view tooltip, std::string_view unit, double lo, double hi,
+                  SettingWidget widget, std::string_view format, F field) {
+    Setting s{.key = key,
+              .label = label,
+              .tooltip = tooltip,
+              .unit = unit,
+              .kind = SettingKind::Number,
+              .min = lo,
+              .max = hi,
+              .widget = widget,
+              .format = format};
     using T = std::remove_reference_t<decltype(field(std::declval<Document&>()))>;
     if constexpr (std::is_same_v<T, float>) {
         s.count = 1;
@@ -42,7 +49,13 @@ Setting numberRow(std::string_view key, std::string_view label, std::string_view
 }
 
 Setting switchRow(std::string_view key, std::string_view label, std::string_view tooltip, bool& (*field)(Document&)) {
-    return {.key = key, .label = label, .tooltip = tooltip, .kind = SettingKind::Switch, .min = 0, .max = 1, .integer = true,
+    return {.key = key,
+            .label = label,
+            .tooltip = tooltip,
+            .kind = SettingKind::Switch,
+            .min = 0,
+            .max = 1,
+            .integer = true,
             .get = [field](const Document& d) { return Values{field(const_cast<Document&>(d)) ? 1.0 : 0.0}; },
             .set = [field](Document& d, const Values& v) { field(d) = v[0] != 0.0; }};
 }
@@ -51,8 +64,15 @@ template <class E>
 Setting choiceRow(std::string_view key, std::string_view label, std::string_view tooltip, std::vector<std::string_view> names,
                   std::vector<std::string_view> labels, E& (*field)(Document&)) {
     const double last = double(names.size() - 1);
-    return {.key = key, .label = label, .tooltip = tooltip, .kind = SettingKind::Choice, .min = 0, .max = last, .integer = true,
-            .choices = std::move(names), .choiceLabels = std::move(labels),
+    return {.key = key,
+            .label = label,
+            .tooltip = tooltip,
+            .kind = SettingKind::Choice,
+            .min = 0,
+            .max = last,
+            .integer = true,
+            .choices = std::move(names),
+            .choiceLabels = std::move(labels),
             .get = [field](const Document& d) { return Values{double(int(field(const_cast<Document&>(d))))}; },
             .set = [field](Document& d, const Values& v) { field(d) = E(int(v[0])); }};
 }
@@ -76,11 +96,10 @@ std::vector<Setting> makeSettings() {
                           [](Document& d) -> std::array<float, 4>& { return d.tess.outer; }));
     t.push_back(numberRow("tess.inner", "Inner", "Inner levels along u and v", "", kLo, kHi, SettingWidget::Slider, "%.1f",
                           [](Document& d) -> std::array<float, 2>& { return d.tess.inner; }));
-    t.push_back(choiceRow<Spacing>("tess.spacing", "Partitioning",
-                                   "Spacing of the tessellator: equal, fractional odd/even (smooth level changes), pow2 (rounded up)",
-                                   {"equal", "fractional_odd", "fractional_even", "pow2"},
-                                   {"equal", "fractional odd", "fractional even", "pow2"},
-                                   [](Document& d) -> Spacing& { return d.tess.spacing; }));
+    t.push_back(choiceRow<Spacing>(
+        "tess.spacing", "Partitioning", "Spacing of the tessellator: equal, fractional odd/even (smooth level changes), pow2 (rounded up)",
+        {"equal", "fractional_odd", "fractional_even", "pow2"}, {"equal", "fractional odd", "fractional even", "pow2"},
+        [](Document& d) -> Spacing& { return d.tess.spacing; }));
     t.push_back(choiceRow<AdaptiveMode>("tess.adaptive", "Adaptive",
                                         "Per-edge levels from the distance to the eye, the projected edge length, or the silhouette",
                                         {"none", "distance", "screen", "orientation"}, {"none", "distance", "screen space", "orientation"},
@@ -89,9 +108,9 @@ std::vector<Setting> makeSettings() {
                           "%.3g", [](Document& d) -> float& { return d.tess.distanceNear; }));
     t.push_back(numberRow("tess.distanceFar", "Far", "Level 1 at or beyond this distance", "model units", 0.0, 1e9, SettingWidget::Drag,
                           "%.3g", [](Document& d) -> float& { return d.tess.distanceFar; }));
-    Setting pixels = numberRow("tess.targetPixels", "Pixels/segment",
-                               "Target length of one segment on screen (about 8 px is the lecture advice)", "px", 0.0, 1e9,
-                               SettingWidget::Slider, "%.1f", [](Document& d) -> float& { return d.tess.targetPixels; });
+    Setting pixels =
+        numberRow("tess.targetPixels", "Pixels/segment", "Target length of one segment on screen (about 8 px is the lecture advice)", "px",
+                  0.0, 1e9, SettingWidget::Slider, "%.1f", [](Document& d) -> float& { return d.tess.targetPixels; });
     pixels.sliderMin = 1.0;
     pixels.sliderMax = 64.0;
     t.push_back(std::move(pixels));
@@ -115,7 +134,8 @@ std::vector<Setting> makeSettings() {
                           [](Document& d) -> bool& { return d.display.showGrid; }));
     t.push_back(switchRow("display.showWireframe", "Wireframe", "Show the tessellated triangles",
                           [](Document& d) -> bool& { return d.display.showWireframe; }));
-    t.push_back(switchRow("display.showNormals", "Normals", "Show surface normals", [](Document& d) -> bool& { return d.display.showNormals; }));
+    t.push_back(
+        switchRow("display.showNormals", "Normals", "Show surface normals", [](Document& d) -> bool& { return d.display.showNormals; }));
     t.push_back(switchRow("display.showBoundaries", "Boundaries",
                           "Patch boundaries coloured by continuity (grey open, red C0, green C1, blue G1, yellow C2, violet G2); joins out "
                           "of tolerance thick in orange",
@@ -134,8 +154,14 @@ std::vector<Setting> makeSettings() {
     combScale.sliderMin = -10.0;
     combScale.sliderMax = 10.0;
     t.push_back(std::move(combScale));
-    Setting teeth{.key = "display.combDensity", .label = "Comb teeth", .tooltip = "Teeth per curve or isocurve", .kind = SettingKind::Number,
-                  .min = 2, .max = 21, .integer = true, .format = "%.0f",
+    Setting teeth{.key = "display.combDensity",
+                  .label = "Comb teeth",
+                  .tooltip = "Teeth per curve or isocurve",
+                  .kind = SettingKind::Number,
+                  .min = 2,
+                  .max = 21,
+                  .integer = true,
+                  .format = "%.0f",
                   .get = [](const Document& d) { return Values{double(d.display.combDensity)}; },
                   .set = [](Document& d, const Values& v) { d.display.combDensity = int(v[0]); }};
     t.push_back(std::move(teeth));
@@ -204,9 +230,12 @@ std::optional<std::string> settingProblem(const Setting& s, const std::vector<do
 std::vector<std::string> formatSettingValues(const Setting& s, const std::vector<double>& values) {
     std::vector<std::string> out;
     for (double v : values) {
-        if (s.kind == SettingKind::Switch) out.emplace_back(v != 0.0 ? "on" : "off");
-        else if (s.kind == SettingKind::Choice && v >= 0 && size_t(v) < s.choices.size()) out.emplace_back(s.choices[size_t(v)]);
-        else out.push_back(number(v));
+        if (s.kind == SettingKind::Switch)
+            out.emplace_back(v != 0.0 ? "on" : "off");
+        else if (s.kind == SettingKind::Choice && v >= 0 && size_t(v) < s.choices.size())
+            out.emplace_back(s.choices[size_t(v)]);
+        else
+            out.push_back(number(v));
     }
     return out;
 }

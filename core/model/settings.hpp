@@ -31,14 +31,14 @@ struct Setting {
     std::string_view tooltip;  // the panel's tooltip and the `set` command's help
     std::string_view unit;     // "", "px", "model units"
     SettingKind kind = SettingKind::Number;
-    int count = 1;  // numbers in the row
-    double min = 0.0, max = 0.0;        // the values accepted anywhere (panel, command, file)
+    int count = 1;                            // numbers in the row
+    double min = 0.0, max = 0.0;              // the values accepted anywhere (panel, command, file)
     double sliderMin = 0.0, sliderMax = 0.0;  // the panel's slider when narrower (both 0: min, max)
     bool integer = false;
     SettingWidget widget = SettingWidget::Slider;
-    std::string_view format = "%.1f";               // the panel's number format
-    std::vector<std::string_view> choices;          // Choice: names in enum order (files, commands)
-    std::vector<std::string_view> choiceLabels;     // Choice: what the panel shows
+    std::string_view format = "%.1f";            // the panel's number format
+    std::vector<std::string_view> choices;       // Choice: names in enum order (files, commands)
+    std::vector<std::string_view> choiceLabels;  // Choice: what the panel shows
     std::function<std::vector<double>(const Document&)> get;
     std::function<void(Document&, const std::vector<double>&)> set;  // values already checked
 };

@@ -5,11 +5,10 @@
 #include <cmath>
 #include <map>
 
-#include "core/eval/bezier_triangle.hpp"
 #include "core/base/errors.hpp"
+#include "core/eval/bezier_triangle.hpp"
 #include "core/model/join_detect.hpp"
 #include "core/model/topology.hpp"
-
 
 namespace pw {
 

@@ -7,8 +7,8 @@
 #include <map>
 #include <numbers>
 
-#include "core/model/basis.hpp"
 #include "core/base/limits.hpp"
+#include "core/model/basis.hpp"
 #include "core/ops/patch_ops.hpp"
 
 namespace pw {
@@ -39,8 +39,7 @@ void refuseWeights(const Document& doc, const Indices& idx, const char* what) {
 // Bézier nets tile exactly with 3k + 1 open or 3k closed rows; a closed direction needs 2 windows.
 void checkBezierSide(uint32_t n, bool closed, const char* what) {
     if (closed && (n % 3 != 0 || n < 6))
-        throw EditError(std::string("a closed Bézier net needs a multiple of 3 ") + what + " (at least 6); it has " +
-                        std::to_string(n));
+        throw EditError(std::string("a closed Bézier net needs a multiple of 3 ") + what + " (at least 6); it has " + std::to_string(n));
 }
 
 void checkWindowLimit(const Surface& s) {
@@ -84,7 +83,9 @@ std::vector<Vec3> bezierToDeBoor(const std::vector<Vec3>& b, bool closed) {
 }
 
 using EdgeKey = std::array<uint32_t, 4>;
-EdgeKey slots(const Patch& p, int a, int b, int c, int d) { return {p.idx[size_t(a)], p.idx[size_t(b)], p.idx[size_t(c)], p.idx[size_t(d)]}; }
+EdgeKey slots(const Patch& p, int a, int b, int c, int d) {
+    return {p.idx[size_t(a)], p.idx[size_t(b)], p.idx[size_t(c)], p.idx[size_t(d)]};
+}
 EdgeKey col0(const Patch& p) { return slots(p, 0, 4, 8, 12); }
 EdgeKey col3(const Patch& p) { return slots(p, 3, 7, 11, 15); }
 EdgeKey row0(const Patch& p) { return slots(p, 0, 1, 2, 3); }
@@ -92,8 +93,8 @@ EdgeKey row3(const Patch& p) { return slots(p, 12, 13, 14, 15); }
 
 }  // namespace
 
-uint32_t addNetSurface(Document& doc, uint32_t rows, uint32_t cols, NetShape shape, Basis basis, const Vec3& center,
-                       double size, bool zUp) {
+uint32_t addNetSurface(Document& doc, uint32_t rows, uint32_t cols, NetShape shape, Basis basis, const Vec3& center, double size,
+                       bool zUp) {
     if (rows < 4 || cols < 4) throw EditError("a net needs at least 4 rows and 4 columns");
     if (rows > limits::kMaxNetSide || cols > limits::kMaxNetSide)
         throw EditError("a net has at most " + std::to_string(limits::kMaxNetSide) + " rows and columns");
@@ -159,9 +160,12 @@ void insertNetRow(Document& doc, uint32_t si, uint32_t at) {
     std::vector<uint32_t> fresh(s.cols);
     for (uint32_t c = 0; c < s.cols; ++c) {
         Vec3 p;
-        if (s.closedV || (at > 0 && at < oldRows)) p = 0.5 * (old((at + oldRows - 1) % oldRows, c) + old(at % oldRows, c));
-        else if (at == 0) p = 2.0 * old(0, c) - old(1, c);
-        else p = 2.0 * old(oldRows - 1, c) - old(oldRows - 2, c);
+        if (s.closedV || (at > 0 && at < oldRows))
+            p = 0.5 * (old((at + oldRows - 1) % oldRows, c) + old(at % oldRows, c));
+        else if (at == 0)
+            p = 2.0 * old(0, c) - old(1, c);
+        else
+            p = 2.0 * old(oldRows - 1, c) - old(oldRows - 2, c);
         fresh[c] = appendPoint(doc, p);
     }
     for (uint32_t r = 0; r <= oldRows; ++r) {
@@ -316,8 +320,10 @@ std::vector<uint32_t> convertNetToPatches(Document& doc, uint32_t si) {
     auto at = [&](uint32_t wr, uint32_t wc) { return first + wr * wu + wc; };
     for (uint32_t wr = 0; wr < wv; ++wr)
         for (uint32_t wc = 0; wc < wu; ++wc) {
-            if (wc + 1 < wu || (s.closedU && wu > 1)) d.joins.push_back(Join{at(wr, wc), Edge::U1, at(wr, (wc + 1) % wu), Edge::U0, false, c, 1.0});
-            if (wr + 1 < wv || (s.closedV && wv > 1)) d.joins.push_back(Join{at(wr, wc), Edge::V1, at((wr + 1) % wv, wc), Edge::V0, false, c, 1.0});
+            if (wc + 1 < wu || (s.closedU && wu > 1))
+                d.joins.push_back(Join{at(wr, wc), Edge::U1, at(wr, (wc + 1) % wu), Edge::U0, false, c, 1.0});
+            if (wr + 1 < wv || (s.closedV && wv > 1))
+                d.joins.push_back(Join{at(wr, wc), Edge::V1, at((wr + 1) % wv, wc), Edge::V0, false, c, 1.0});
         }
     d.surfaces.erase(d.surfaces.begin() + si);
     compactPool(d);
@@ -382,7 +388,8 @@ uint32_t convertPatchesToNet(Document& doc, std::vector<uint32_t> patches, doubl
     const uint32_t C = uint32_t(row.size()), R = uint32_t(columns.front().size());
     for (const auto& col : columns)
         if (col.size() != R) throw EditError(notGrid);
-    if (size_t(R) * C != patches.size()) throw EditError(notGrid + ": " + std::to_string(patches.size() - size_t(R) * C) + " patch(es) left over");
+    if (size_t(R) * C != patches.size())
+        throw EditError(notGrid + ": " + std::to_string(patches.size() - size_t(R) * C) + " patch(es) left over");
     for (uint32_t r = 0; r < R; ++r)
         for (uint32_t c = 0; c + 1 < C || (closedU && c < C); ++c)
             if (right(columns[c][r]) != int(columns[(c + 1) % C][r])) throw EditError(notGrid);
@@ -428,8 +435,10 @@ uint32_t convertPatchesToNet(Document& doc, std::vector<uint32_t> patches, doubl
     const double size = modelSize(doc);
     if (!(worst <= tolerance * size)) {
         char msg[200];
-        std::snprintf(msg, sizeof msg, "the patches are not C2 across their seams (control points off by up to %.3g × the model size); "
-                      "only a C2 grid converts to a B-spline net exactly", worst / size);
+        std::snprintf(msg, sizeof msg,
+                      "the patches are not C2 across their seams (control points off by up to %.3g × the model size); "
+                      "only a C2 grid converts to a B-spline net exactly",
+                      worst / size);
         throw EditError(msg);
     }
 

@@ -10,10 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "core/base/errors.hpp"
 #include "core/model/document.hpp"
 #include "core/model/topology.hpp"
-#include "core/base/errors.hpp"
-
 
 namespace pw {
 
@@ -21,8 +20,8 @@ enum class NetShape { Flat, Tube, Torus };
 
 // A new rows x cols net (each ≥ 4) of `size` centred at `center`: flat in the ground plane, a tube
 // (columns closed around the up axis) or a torus (both directions closed). Returns its index.
-uint32_t addNetSurface(Document& doc, uint32_t rows, uint32_t cols, NetShape shape, Basis basis, const Vec3& center,
-                       double size, bool zUp = true);
+uint32_t addNetSurface(Document& doc, uint32_t rows, uint32_t cols, NetShape shape, Basis basis, const Vec3& center, double size,
+                       bool zUp = true);
 
 // Removes net s and the points nobody else uses.
 void deleteNetSurface(Document& doc, uint32_t s);
@@ -63,6 +62,5 @@ std::vector<uint32_t> convertNetToPatches(Document& doc, uint32_t s);
 // they form a regular grid (neighbours share whole edges, same orientation; a direction may wrap)
 // that is C2 across every seam within `tolerance` × model size. Returns the new surface index.
 uint32_t convertPatchesToNet(Document& doc, std::vector<uint32_t> patches, double tolerance = 1e-9);
-
 
 }  // namespace pw

@@ -1,6 +1,5 @@
 #include "core/ops/orientation.hpp"
 
-
 #include "core/eval/rational_eval.hpp"
 #include "core/ops/patch_ops.hpp"
 
@@ -29,8 +28,7 @@ double openBoundaryShare(const Document& doc) {
         const Patch& pt = doc.patches[p];
         for (Edge e : {Edge::U0, Edge::V0, Edge::U1, Edge::V1}) {
             bool collapsed = true;
-            for (int k = 1; k < 4; ++k)
-                collapsed = collapsed && doc.points[pt.idx[edgeSlot(e, k)]] == doc.points[pt.idx[edgeSlot(e, 0)]];
+            for (int k = 1; k < 4; ++k) collapsed = collapsed && doc.points[pt.idx[edgeSlot(e, k)]] == doc.points[pt.idx[edgeSlot(e, 0)]];
             if (collapsed) continue;
             ++curves;
             if (findJoin(doc, p, e) < 0) ++open;

@@ -4,10 +4,10 @@
 #include <cmath>
 #include <utility>
 
-#include "core/solve/constraint_solver.hpp"
 #include "core/eval/bezier_triangle.hpp"
 #include "core/eval/patch_eval.hpp"
 #include "core/eval/rational_eval.hpp"
+#include "core/solve/constraint_solver.hpp"
 
 namespace pw {
 
@@ -16,7 +16,8 @@ namespace {
 template <class Item>
 void checkItem(const std::vector<Item>& items, uint32_t i, const char* kind) {
     if (i >= items.size())
-        throw EditError(std::string(kind) + " " + std::to_string(i) + " does not exist (the document has " + std::to_string(items.size()) + ")");
+        throw EditError(std::string(kind) + " " + std::to_string(i) + " does not exist (the document has " + std::to_string(items.size()) +
+                        ")");
 }
 
 void checkPatch(const Document& doc, uint32_t p) { checkItem(doc.patches, p, "patch"); }
@@ -43,10 +44,14 @@ uint32_t addPoint(Document& doc, const Vec3& v, double weight = 1.0) {
 
 Edge opposite(Edge e) {
     switch (e) {
-        case Edge::U0: return Edge::U1;
-        case Edge::U1: return Edge::U0;
-        case Edge::V0: return Edge::V1;
-        default: return Edge::V0;
+        case Edge::U0:
+            return Edge::U1;
+        case Edge::U1:
+            return Edge::U0;
+        case Edge::V0:
+            return Edge::V1;
+        default:
+            return Edge::V0;
     }
 }
 
@@ -132,8 +137,9 @@ void flipPatch(Document& doc, uint32_t p) {
 
 uint32_t extrudeEdge(Document& doc, uint32_t p, Edge e) {
     checkBezier(doc, p, "extrude");
-    if (findJoin(doc, p, e) >= 0) throw EditError("edge " + std::string(edgeName(e)) + " of patch " + std::to_string(p) +
-                                                  " is already joined; extrude an open boundary edge");
+    if (findJoin(doc, p, e) >= 0)
+        throw EditError("edge " + std::string(edgeName(e)) + " of patch " + std::to_string(p) +
+                        " is already joined; extrude an open boundary edge");
     const Patch src = doc.patches[p];
     const Edge ne = opposite(e);  // the new patch's edge on the seam keeps both parameter directions
     Patch np;
@@ -182,7 +188,9 @@ std::pair<uint32_t, uint32_t> splitPatch(Document& doc, uint32_t p, bool alongU,
     const int cornerSlot[4] = {0, 3, 12, 15};
     for (int c = 0; c < 4; ++c) {
         const size_t s = size_t(cornerSlot[c]);
-        const auto same = [&](uint32_t i) { return doc.points[i] == doc.points[corner[c]] && pointWeight(doc, i) == pointWeight(doc, corner[c]); };
+        const auto same = [&](uint32_t i) {
+            return doc.points[i] == doc.points[corner[c]] && pointWeight(doc, i) == pointWeight(doc, corner[c]);
+        };
         if (same(a.idx[s])) a.idx[s] = corner[c];
         if (same(b.idx[s])) b.idx[s] = corner[c];
     }
@@ -290,8 +298,9 @@ JoinPlan planJoin(const Document& doc, uint32_t a, Edge ea, uint32_t b, Edge eb)
     if (glm::dot(chord, chord) > 0.0) out -= glm::dot(out, chord) / glm::dot(chord, chord) * chord;
     if (side < 0.0 && glm::length(out) > 1e-12) {
         if (!free)
-            throw EditError("patch " + std::to_string(b) + " lies back over patch " + std::to_string(a) +
-                            " at that seam and is joined to other patches, so it cannot be turned over; pick the other edge or unjoin it first");
+            throw EditError(
+                "patch " + std::to_string(b) + " lies back over patch " + std::to_string(a) +
+                " at that seam and is joined to other patches, so it cannot be turned over; pick the other edge or unjoin it first");
         plan.reflectB = true;
         plan.reflectNormal = glm::normalize(out);
     }
@@ -302,7 +311,8 @@ size_t joinEdges(Document& doc, uint32_t a, Edge ea, uint32_t b, Edge ebPicked, 
     checkBezier(doc, a, "join");
     checkBezier(doc, b, "join");
     if (a == b) throw EditError("join needs two different patches");
-    if (findJoin(doc, a, ea) >= 0 || findJoin(doc, b, ebPicked) >= 0) throw EditError("one of the edges is already joined; unjoin it first");
+    if (findJoin(doc, a, ea) >= 0 || findJoin(doc, b, ebPicked) >= 0)
+        throw EditError("one of the edges is already joined; unjoin it first");
     const JoinPlan plan = planJoin(doc, a, ea, b, ebPicked);
     const Edge eb = plan.edgeB;
     const bool reversed = plan.reversed;
@@ -437,7 +447,6 @@ uint32_t addTriangle(Document& doc, const Vec3& center, double size, bool zUp) {
     doc.triangles.push_back(t);
     return uint32_t(doc.triangles.size() - 1);
 }
-
 
 uint32_t duplicateTriangle(Document& doc, uint32_t t, const Vec3& offset) {
     checkItem(doc.triangles, t, "triangle");

@@ -10,9 +10,9 @@
 #include <string>
 #include <utility>
 
+#include "core/base/errors.hpp"
 #include "core/model/document.hpp"
 #include "core/model/topology.hpp"
-#include "core/base/errors.hpp"
 
 namespace pw {
 
@@ -69,7 +69,6 @@ size_t joinEdges(Document& doc, uint32_t a, Edge ea, uint32_t b, Edge eb, Contin
 // Removes join j; patch B of the join gets its own copies of the edge points, so the patches can
 // be moved apart.
 void unjoin(Document& doc, size_t j);
-
 
 // Removes pool points that no patch, surface or triangle uses and renumbers the rest.
 void compactPool(Document& doc);

@@ -49,7 +49,8 @@ std::optional<PatchEdge> pickBoundaryEdge(const Document& doc, const Camera& cam
         }
     }
     if (near.empty()) return std::nullopt;
-    const auto nearest = std::min_element(near.begin(), near.end(), [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; });
+    const auto nearest =
+        std::min_element(near.begin(), near.end(), [](const Candidate& a, const Candidate& b) { return a.distance < b.distance; });
     // Edges within 2 px of the nearest lie on top of each other: the patch under the mouse wins.
     if (near.size() < 2) return nearest->edge;
     if (const auto hit = pickSurface(doc, rayThroughPixel(cam, x, y, width, height)); hit && hit->patch >= 0)

@@ -61,8 +61,8 @@ int pickPoint(const Camera& cam, const std::vector<Vec3>& points, double x, doub
     return best;
 }
 
-std::vector<uint32_t> pointsInBox(const Camera& cam, const std::vector<Vec3>& points, glm::dvec2 a, glm::dvec2 b, int width,
-                                  int height, const std::vector<bool>* used) {
+std::vector<uint32_t> pointsInBox(const Camera& cam, const std::vector<Vec3>& points, glm::dvec2 a, glm::dvec2 b, int width, int height,
+                                  const std::vector<bool>* used) {
     const glm::dvec2 lo = glm::min(a, b), hi = glm::max(a, b);
     const double aspect = double(std::max(width, 1)) / double(std::max(height, 1));
     const ViewMatrices vm = viewMatrices(cam, aspect);
@@ -164,7 +164,8 @@ std::optional<SurfaceHit> pickSurface(const Document& doc, const Ray& ray, int l
                     if (t && (!best || *t < best->t)) best = SurfaceHit{-1, -1, -1, int(k), *t, cu / level, cv / level};
                 };
                 hit(intersectTriangle(ray, at(i, j), at(i + 1, j), at(i, j + 1)), i + 1.0 / 3.0, j + 1.0 / 3.0);
-                if (i + 1 < level - j) hit(intersectTriangle(ray, at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)), i + 2.0 / 3.0, j + 2.0 / 3.0);
+                if (i + 1 < level - j)
+                    hit(intersectTriangle(ray, at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)), i + 2.0 / 3.0, j + 2.0 / 3.0);
             }
     }
     return best;

@@ -29,12 +29,12 @@ std::vector<std::optional<glm::dvec2>> projectPoints(const Camera& cam, const st
 // Nearest pool point whose projection lies within `radiusPx` of (x, y); ties go to the point
 // nearer the eye. -1 when none. Only points used by some patch, surface or triangle count when `used` is
 // given (a mask the size of the pool).
-int pickPoint(const Camera& cam, const std::vector<Vec3>& points, double x, double y, int width, int height,
-              double radiusPx, const std::vector<bool>* used = nullptr);
+int pickPoint(const Camera& cam, const std::vector<Vec3>& points, double x, double y, int width, int height, double radiusPx,
+              const std::vector<bool>* used = nullptr);
 
 // Pool points whose projections fall inside the pixel rectangle spanned by a and b.
-std::vector<uint32_t> pointsInBox(const Camera& cam, const std::vector<Vec3>& points, glm::dvec2 a, glm::dvec2 b, int width,
-                                  int height, const std::vector<bool>* used = nullptr);
+std::vector<uint32_t> pointsInBox(const Camera& cam, const std::vector<Vec3>& points, glm::dvec2 a, glm::dvec2 b, int width, int height,
+                                  const std::vector<bool>* used = nullptr);
 
 // Mask of pool points referenced by a patch, a surface or a triangle.
 std::vector<bool> usedPointMask(const Document& doc);
@@ -46,8 +46,8 @@ struct SurfaceHit {
     int instance = -1;  // index into expandPatches(doc)
     int patch = -1;     // Document::patches index or -1 (surface window)
     int surface = -1;
-    int triangle = -1;  // Document::triangles index or -1 (then instance is -1 too)
-    double t = 0.0;     // distance along the ray
+    int triangle = -1;        // Document::triangles index or -1 (then instance is -1 too)
+    double t = 0.0;           // distance along the ray
     double u = 0.0, v = 0.0;  // window parameters, or a triangle's barycentric u, v
 };
 // Nearest hit of the ray with the surface: each window tessellated as a `level` x `level` grid,

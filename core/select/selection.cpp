@@ -4,8 +4,8 @@
 #include <array>
 #include <cmath>
 
-#include "core/model/camera_math.hpp"
 #include "core/base/enum_names.hpp"
+#include "core/model/camera_math.hpp"
 
 namespace pw {
 
@@ -55,7 +55,8 @@ std::optional<PivotMode> parsePivot(std::string_view name) { return parseEnum<Pi
 Vec3 transformPivot(const Document& doc, const Selection& sel, const std::vector<uint32_t>& moved, PivotMode mode, const Vec3& cursor) {
     if (mode == PivotMode::Cursor) return cursor;
     if (mode == PivotMode::Active) {
-        if (sel.active >= 0 && size_t(sel.active) < doc.points.size() && sel.contains(uint32_t(sel.active))) return doc.points[size_t(sel.active)];
+        if (sel.active >= 0 && size_t(sel.active) < doc.points.size() && sel.contains(uint32_t(sel.active)))
+            return doc.points[size_t(sel.active)];
         Selection item = sel;  // the selected patch, net, triangle or curve: its centre
         item.points.clear();
         if (!item.empty()) return selectionCentroid(doc, item);
@@ -118,14 +119,12 @@ void orbitCamera(Camera& cam, double dxPx, double dyPx, double degPerPixel) {
 void panCamera(Camera& cam, double dxPx, double dyPx, int viewportHeightPx) {
     Vec3 right, up, fwd;
     cameraAxes(cam, right, up, fwd);
-    const double worldPerPx = 2.0 * cam.distance * std::tan(cam.fovYDeg * 3.14159265358979323846 / 360.0) /
-                              double(std::max(viewportHeightPx, 1));
+    const double worldPerPx =
+        2.0 * cam.distance * std::tan(cam.fovYDeg * 3.14159265358979323846 / 360.0) / double(std::max(viewportHeightPx, 1));
     const Vec3 t = Vec3(cam.target[0], cam.target[1], cam.target[2]) - right * (dxPx * worldPerPx) + up * (dyPx * worldPerPx);
     cam.target = {t.x, t.y, t.z};
 }
 
-void zoomCamera(Camera& cam, double steps, double factor) {
-    cam.distance = std::clamp(cam.distance * std::pow(factor, steps), 1e-6, 1e9);
-}
+void zoomCamera(Camera& cam, double steps, double factor) { cam.distance = std::clamp(cam.distance * std::pow(factor, steps), 1e-6, 1e9); }
 
 }  // namespace pw

@@ -21,7 +21,14 @@ struct Selection {
 
     bool contains(uint32_t p) const;
     bool empty() const { return points.empty() && patch < 0 && surface < 0 && curve < 0 && triangle < 0; }
-    void clear() { points.clear(); patch = -1; surface = -1; curve = -1; triangle = -1; active = -1; }
+    void clear() {
+        points.clear();
+        patch = -1;
+        surface = -1;
+        curve = -1;
+        triangle = -1;
+        active = -1;
+    }
     bool operator==(const Selection&) const = default;
 };
 

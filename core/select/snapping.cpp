@@ -5,10 +5,10 @@
 #include <array>
 #include <cmath>
 
-#include "core/eval/bezier_triangle.hpp"
-#include "core/model/camera_math.hpp"
 #include "core/base/enum_names.hpp"
+#include "core/eval/bezier_triangle.hpp"
 #include "core/eval/rational_eval.hpp"
+#include "core/model/camera_math.hpp"
 #include "core/select/picking.hpp"
 #include "core/select/selection_ops.hpp"
 
@@ -47,7 +47,10 @@ struct EdgeSearch {
         const double g = 0.5 * (std::sqrt(5.0) - 1.0);
         for (int it = 0; it < 40; ++it) {
             const double c = b - g * (b - a), d = a + g * (b - a);
-            if (dist2(at(c)) < dist2(at(d))) b = d; else a = c;
+            if (dist2(at(c)) < dist2(at(d)))
+                b = d;
+            else
+                a = c;
         }
         const Vec3 p = at(0.5 * (a + b));
         const double dp = dist2(p);
@@ -60,10 +63,11 @@ struct EdgeSearch {
 std::string_view snapTargetName(SnapTarget t) { return enumName(t, kSnapNames); }
 std::optional<SnapTarget> parseSnapTarget(std::string_view name) { return parseEnum<SnapTarget>(name, kSnapNames); }
 
-std::optional<Vec3> snapPoint(const Document& doc, const std::vector<bool>& moved, SnapTarget target,
-                              const Camera& cam, int width, int height, double x, double y, double radiusPx) {
+std::optional<Vec3> snapPoint(const Document& doc, const std::vector<bool>& moved, SnapTarget target, const Camera& cam, int width,
+                              int height, double x, double y, double radiusPx) {
     switch (target) {
-        case SnapTarget::Grid: return std::nullopt;
+        case SnapTarget::Grid:
+            return std::nullopt;
         case SnapTarget::Points: {
             std::vector<bool> mask = visiblePointMask(doc);
             for (size_t i = 0; i < mask.size() && i < moved.size(); ++i) mask[i] = mask[i] && !moved[i];
@@ -86,9 +90,9 @@ std::optional<Vec3> snapPoint(const Document& doc, const std::vector<bool>& move
             for (const TrianglePatch& tri : doc.triangles) {
                 if (usesAnyPoint(tri.idx, moved) || tri.hidden) continue;
                 const Net10 net = gatherTriangleNet(doc, tri.idx);
-                s.curve([&](double t) { return evaluateTriangle(net, 0.0, t).p; });        // u = 0
-                s.curve([&](double t) { return evaluateTriangle(net, t, 0.0).p; });        // v = 0
-                s.curve([&](double t) { return evaluateTriangle(net, t, 1.0 - t).p; });    // w = 0
+                s.curve([&](double t) { return evaluateTriangle(net, 0.0, t).p; });      // u = 0
+                s.curve([&](double t) { return evaluateTriangle(net, t, 0.0).p; });      // v = 0
+                s.curve([&](double t) { return evaluateTriangle(net, t, 1.0 - t).p; });  // w = 0
             }
             return s.hit;
         }

@@ -22,7 +22,7 @@ std::optional<SnapTarget> parseSnapTarget(std::string_view name);
 //   Surfaces: where the mouse ray first meets a surface.
 // Items with a point in `moved` (a pool mask) are left out, and so are moved points and hidden items. nullopt:
 // nothing there, the move is not snapped.
-std::optional<Vec3> snapPoint(const Document& doc, const std::vector<bool>& moved, SnapTarget target,
-                              const Camera& cam, int width, int height, double x, double y, double radiusPx = 12.0);
+std::optional<Vec3> snapPoint(const Document& doc, const std::vector<bool>& moved, SnapTarget target, const Camera& cam, int width,
+                              int height, double x, double y, double radiusPx = 12.0);
 
 }  // namespace pw

@@ -16,7 +16,7 @@
 namespace pw {
 
 struct Symmetry {
-    int axis = -1;        // -1 off, 0..2 the plane x, y or z = offset
+    int axis = -1;  // -1 off, 0..2 the plane x, y or z = offset
     double offset = 0.0;
     bool on() const { return axis >= 0; }
     bool operator==(const Symmetry&) const = default;

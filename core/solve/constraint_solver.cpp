@@ -89,12 +89,8 @@ std::vector<ConstraintRow> buildConstraintRows(const Document& doc) {
             const bool aFlat = jp.a1[k] == jp.a0[k] || jp.a2[k] == jp.a1[k];
             const bool bFlat = jp.b1[k] == jp.b0[k] || jp.b2[k] == jp.b1[k];
             if (aFlat || bFlat) continue;  // a degenerate row: the curvature condition says nothing there
-            ConstraintRow row = makeRow({{jp.b2[k], 1.0},
-                                         {jp.b1[k], -2.0},
-                                         {jp.a0[k], 1.0 - a2 - h},
-                                         {jp.a1[k], 2.0 * a2 + h},
-                                         {jp.a2[k], -a2}},
-                                        ji);
+            ConstraintRow row =
+                makeRow({{jp.b2[k], 1.0}, {jp.b1[k], -2.0}, {jp.a0[k], 1.0 - a2 - h}, {jp.a1[k], 2.0 * a2 + h}, {jp.a2[k], -a2}}, ji);
             if (!row.terms.empty()) rows.push_back(std::move(row));
         }
     }
@@ -132,8 +128,8 @@ namespace {
 // components (on a patch grid each four-patch corner is one small component) and factorises each
 // on its own, so a drag only pays for the components it disturbs.
 struct Component {
-    std::vector<uint32_t> rows;  // indices into Impl::rowStart
-    std::vector<uint32_t> vars;  // free variables (indices into Impl::freePoints)
+    std::vector<uint32_t> rows;     // indices into Impl::rowStart
+    std::vector<uint32_t> vars;     // free variables (indices into Impl::freePoints)
     Eigen::SparseMatrix<double> C;  // rows × vars, local numbering
     Eigen::LDLT<Eigen::MatrixXd> dense;
     std::unique_ptr<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>> sparse;
@@ -166,10 +162,11 @@ void freezeOutside(const Document& doc, std::vector<char>& fixed, int rings) {
         if (fixed[i])
             for (uint32_t p : patchesOf[i])
                 if (!inRegion[p]) inRegion[p] = 1, frontier.push_back(p);
-    if (frontier.empty()) return;  // nothing fixed on a patch: the whole model takes part
+    if (frontier.empty()) return;                                   // nothing fixed on a patch: the whole model takes part
     std::vector<std::vector<uint32_t>> joined(doc.patches.size());  // joins whose edges are stored twice share no point
     for (const Join& j : doc.joins)
-        if (j.patchA < joined.size() && j.patchB < joined.size()) joined[j.patchA].push_back(j.patchB), joined[j.patchB].push_back(j.patchA);
+        if (j.patchA < joined.size() && j.patchB < joined.size())
+            joined[j.patchA].push_back(j.patchB), joined[j.patchB].push_back(j.patchA);
     for (int r = 0; r < rings && !frontier.empty(); ++r) {
         std::vector<uint32_t> next;
         auto reach = [&](uint32_t q) {
@@ -195,7 +192,7 @@ void freezeOutside(const Document& doc, std::vector<char>& fixed, int rings) {
 
 struct DragSolver::Impl {
     size_t pointCount = 0;
-    double tolerance = 0;  // residual to reach: 1e-13 × model size (well inside 1e-9)
+    double tolerance = 0;          // residual to reach: 1e-13 × model size (well inside 1e-9)
     double conflictTolerance = 0;  // residual left after refinement that counts as a conflict: 1e-9 × size
     // Active constraints (at least one free point) in compressed rows over pool indices.
     std::vector<uint32_t> rowStart{0};
@@ -229,8 +226,8 @@ struct DragSolver::Impl {
                 }
             }
             if (worst2 <= tol2 || round == 4) break;
-            const Eigen::MatrixXd y = comp.sparse ? Eigen::MatrixXd(comp.sparse->solve(r.topRows(m)))
-                                                  : Eigen::MatrixXd(comp.dense.solve(r.topRows(m)));
+            const Eigen::MatrixXd y =
+                comp.sparse ? Eigen::MatrixXd(comp.sparse->solve(r.topRows(m))) : Eigen::MatrixXd(comp.dense.solve(r.topRows(m)));
             const Eigen::MatrixXd d = comp.C.transpose() * y;
             for (size_t k = 0; k < comp.vars.size(); ++k) {
                 const uint32_t v = comp.vars[k];
@@ -358,10 +355,8 @@ void DragSolver::build(Impl& im, const Setup& setup, const std::vector<char>& fi
     }
 }
 
-DragSolver::DragSolver(const Document& doc, std::vector<uint32_t> fixedPoints, SolverOptions options)
-    : impl_(std::make_unique<Impl>()) {
-    if (!(options.boundaryWeight > 0) || !(options.tangentWeight > 0))
-        throw std::invalid_argument("DragSolver: weights must be positive");
+DragSolver::DragSolver(const Document& doc, std::vector<uint32_t> fixedPoints, SolverOptions options) : impl_(std::make_unique<Impl>()) {
+    if (!(options.boundaryWeight > 0) || !(options.tangentWeight > 0)) throw std::invalid_argument("DragSolver: weights must be positive");
     auto setup = std::make_unique<Setup>();
     setup->rows = solver_detail::buildConstraintRows(doc);
     setup->boundary = solver_detail::joinedBoundaryPoints(doc);

@@ -19,7 +19,7 @@ namespace pw {
 
 struct SolverOptions {
     double boundaryWeight = 1e4;  // weight of points on a joined boundary (tangent drags mirror to 0.9996)
-    double tangentWeight = 1.0;     // weight of every other point
+    double tangentWeight = 1.0;   // weight of every other point
     // Independent groups of constraints are factorised separately; groups of at most this many
     // constraints use a dense LDLT, larger ones a sparse one (0: sparse everywhere).
     int denseComponentLimit = 48;
@@ -63,9 +63,9 @@ private:
     struct Setup;
     static void build(Impl& im, const Setup& setup, const std::vector<char>& fixed);
     static Projection projectWith(const Impl& im, std::vector<Vec3>& points);
-    std::unique_ptr<Impl> impl_;              // the local (or global) solve
-    std::unique_ptr<Setup> setup_;            // local solvers: what widening needs
-    mutable std::unique_ptr<Impl> global_;    // built when the local region cannot hold the joins
+    std::unique_ptr<Impl> impl_;            // the local (or global) solve
+    std::unique_ptr<Setup> setup_;          // local solvers: what widening needs
+    mutable std::unique_ptr<Impl> global_;  // built when the local region cannot hold the joins
 };
 
 // One-shot projection (builds and factorises a DragSolver).

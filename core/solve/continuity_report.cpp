@@ -6,8 +6,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/gpu/curvature_math.h"
 #include "core/eval/rational_eval.hpp"
+#include "core/gpu/curvature_math.h"
 #include "core/solve/solver_constraints.hpp"
 
 namespace pw {
@@ -17,10 +17,18 @@ namespace {
 // (u, v) of the point at parameter t along edge e (t increases with k, like edgeSlot).
 void edgeParam(Edge e, double t, double& u, double& v) {
     switch (e) {
-        case Edge::U0: u = 0, v = t; return;
-        case Edge::U1: u = 1, v = t; return;
-        case Edge::V0: u = t, v = 0; return;
-        case Edge::V1: u = t, v = 1; return;
+        case Edge::U0:
+            u = 0, v = t;
+            return;
+        case Edge::U1:
+            u = 1, v = t;
+            return;
+        case Edge::V0:
+            u = t, v = 0;
+            return;
+        case Edge::V1:
+            u = t, v = 1;
+            return;
     }
 }
 
@@ -55,7 +63,11 @@ struct Seam {
     double flip;
 
     Seam(const Document& doc, const Join& j)
-        : join(j), A(doc.patches[j.patchA]), B(doc.patches[j.patchB]), netA(gatherWindow(doc, A.idx)), netB(gatherWindow(doc, B.idx)),
+        : join(j),
+          A(doc.patches[j.patchA]),
+          B(doc.patches[j.patchB]),
+          netA(gatherWindow(doc, A.idx)),
+          netB(gatherWindow(doc, B.idx)),
           flip(edgeSign(j.edgeA) * edgeSign(j.edgeB) * (j.reversed ? -1.0 : 1.0) > 0 ? -1.0 : 1.0) {}
 
     struct Sample {
@@ -139,7 +151,8 @@ std::vector<JoinContinuity> continuityReport(const Document& doc, int samples, c
             jc.normalAngleDeg = std::max(jc.normalAngleDeg, angle * 180.0 / std::numbers::pi);
             const double big = std::max(std::abs(q.kappaA), std::abs(q.kappaB));
             jc.maxCurvature = std::max(jc.maxCurvature, big);
-            jc.curvatureDeviationPct = std::max(jc.curvatureDeviationPct, 100.0 * std::abs(q.kappaA - q.kappaB) / std::max(big, flatCurvature));
+            jc.curvatureDeviationPct =
+                std::max(jc.curvatureDeviationPct, 100.0 * std::abs(q.kappaA - q.kappaB) / std::max(big, flatCurvature));
         }
         out.push_back(jc);
     };

@@ -12,15 +12,15 @@ namespace pw {
 
 struct JoinContinuity {
     size_t join = 0;
-    double c0Gap = 0;            // largest distance between the two sides' surface points on the seam
-    double c1Residual = 0;       // largest |B1k - B0k - alpha·(A0k - A1k)| over the edge's points
-    double c2Residual = 0;       // C2/G2: largest residual of the β-constraint rows (else 0)
-    double normalAngleDeg = 0;   // largest angle between the two sides' normals along the seam
+    double c0Gap = 0;           // largest distance between the two sides' surface points on the seam
+    double c1Residual = 0;      // largest |B1k - B0k - alpha·(A0k - A1k)| over the edge's points
+    double c2Residual = 0;      // C2/G2: largest residual of the β-constraint rows (else 0)
+    double normalAngleDeg = 0;  // largest angle between the two sides' normals along the seam
     // Largest |κA − κB| / max(|κA|, |κB|, κ0) · 100 along the seam, κ the normal curvature in the
     // direction across the seam (in the tangent plane, perpendicular to the edge) on each side and
     // κ0 = 1e-3 / model size (bends flatter than a thousand model sizes count as flat).
     double curvatureDeviationPct = 0;
-    double maxCurvature = 0;     // largest |κ| across the seam on either side (1 / model units)
+    double maxCurvature = 0;  // largest |κ| across the seam on either side (1 / model units)
 };
 
 // What a join fails of the tolerances its continuity asks for: position for every join, the

@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/solve/continuity_report.hpp"
 #include "core/model/document.hpp"
+#include "core/solve/continuity_report.hpp"
 
 namespace pw {
 

@@ -6,15 +6,15 @@
 #include <utility>
 #include <vector>
 
-#include "core/solve/constraint_solver.hpp"
 #include "core/model/document.hpp"
+#include "core/solve/constraint_solver.hpp"
 
 namespace pw::solver_detail {
 
 // One scalar constraint Σ coef·p[idx] = 0, applied identically to x, y and z.
 struct ConstraintRow {
     std::vector<std::pair<uint32_t, double>> terms;  // sorted by pool index, no zero coefficients
-    uint32_t join = 0;                                // the join it comes from (kNetSeamJoin: a net seam)
+    uint32_t join = 0;                               // the join it comes from (kNetSeamJoin: a net seam)
 };
 
 // The pool indices along one join, point k of A's edge against the matching point of B's edge.

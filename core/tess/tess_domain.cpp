@@ -21,9 +21,7 @@ std::optional<DomainKind> parseDomain(std::string_view name) {
     return parseEnum<DomainKind>(name, kDomainPlurals);
 }
 
-float controlShaderLevel(float level, Spacing s) {
-    return s == Spacing::Pow2 ? gpu::roundLevel(level, gpu::kSpacingPow2) : level;
-}
+float controlShaderLevel(float level, Spacing s) { return s == Spacing::Pow2 ? gpu::roundLevel(level, gpu::kSpacingPow2) : level; }
 
 Spacing tessellatorSpacing(Spacing s) { return s == Spacing::Pow2 ? Spacing::Equal : s; }
 
@@ -32,9 +30,12 @@ namespace {
 // The level clamped as the tessellator clamps it for a spacing.
 float clampLevel(float level, Spacing s, float maxLevel) {
     switch (s) {
-        case Spacing::FractionalOdd: return std::clamp(level, 1.0f, maxLevel - 1.0f);
-        case Spacing::FractionalEven: return std::clamp(level, 2.0f, maxLevel);
-        default: return std::clamp(level, 1.0f, maxLevel);
+        case Spacing::FractionalOdd:
+            return std::clamp(level, 1.0f, maxLevel - 1.0f);
+        case Spacing::FractionalEven:
+            return std::clamp(level, 2.0f, maxLevel);
+        default:
+            return std::clamp(level, 1.0f, maxLevel);
     }
 }
 
@@ -44,9 +45,12 @@ int roundClamped(float clamped, Spacing s, bool plusEpsilon) {
     if (plusEpsilon && clamped == 1.0f) f = 1.0 + 1e-6;
     const int c = int(std::ceil(f - 1e-9));
     switch (s) {
-        case Spacing::FractionalOdd: return c % 2 == 1 ? c : c + 1;
-        case Spacing::FractionalEven: return c % 2 == 0 ? c : c + 1;
-        default: return std::max(1, c);
+        case Spacing::FractionalOdd:
+            return c % 2 == 1 ? c : c + 1;
+        case Spacing::FractionalEven:
+            return c % 2 == 0 ? c : c + 1;
+        default:
+            return std::max(1, c);
     }
 }
 
@@ -115,11 +119,9 @@ DomainCounts expectedDomainCounts(DomainKind kind, const DomainLevels& levels, S
         return out;
     }
     // Otherwise an inner level of exactly one counts as 1 + ε (two or three segments).
-    for (int i = 0; i < nInner; ++i)
-        out.innerSegments[size_t(i)] = roundClamped(clampLevel(inner[size_t(i)], ts, maxLevel), ts, true);
-    const uint64_t interior =
-        kind == DomainKind::Quad ? uint64_t(out.innerSegments[0] - 1) * uint64_t(out.innerSegments[1] - 1)
-                                 : triangleInteriorVertices(out.innerSegments[0]);
+    for (int i = 0; i < nInner; ++i) out.innerSegments[size_t(i)] = roundClamped(clampLevel(inner[size_t(i)], ts, maxLevel), ts, true);
+    const uint64_t interior = kind == DomainKind::Quad ? uint64_t(out.innerSegments[0] - 1) * uint64_t(out.innerSegments[1] - 1)
+                                                       : triangleInteriorVertices(out.innerSegments[0]);
     out.vertices = boundary + interior;
     // A triangulated disc with B boundary and I interior vertices has B + 2I - 2 triangles (Euler).
     out.primitives = boundary + 2 * interior - 2;

@@ -14,7 +14,7 @@
 namespace pw {
 
 enum class DomainKind : uint8_t { Quad, Triangle, Isoline };
-std::string_view domainName(DomainKind k);  // "quad", "tri", "isoline"
+std::string_view domainName(DomainKind k);                     // "quad", "tri", "isoline"
 std::optional<DomainKind> parseDomain(std::string_view name);  // also "triangle", "isolines"
 
 // Levels as a tessellation control shader writes them. Quad: outer[0..3] = edges u=0, v=0, u=1,

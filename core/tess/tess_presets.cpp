@@ -77,9 +77,9 @@ const TessPreset* findTessPreset(std::string_view name) {
 Document notesBezierPatch() {
     // The notes' 16 control points (x, y, z with y up), row by row from z = +15 to z = -15.
     static const double pts[16][3] = {
-        {-10, -10, 15}, {-5, 0, 15},  {5, 0, 15},  {10, 0, 15},   //
-        {-15, 0, 5},    {-5, 0, 5},   {5, 20, 5},  {15, 0, 5},    //
-        {-15, 0, -5},   {-5, 0, -5},  {5, 0, -5},  {15, 0, -5},   //
+        {-10, -10, 15}, {-5, 0, 15},  {5, 0, 15},  {10, 0, 15},  //
+        {-15, 0, 5},    {-5, 0, 5},   {5, 20, 5},  {15, 0, 5},   //
+        {-15, 0, -5},   {-5, 0, -5},  {5, 0, -5},  {15, 0, -5},  //
         {-10, 10, -15}, {-5, 0, -15}, {5, 0, -15}, {25, 10, -15},
     };
     Document d;
@@ -98,9 +98,7 @@ Document notesBezierPatch() {
     return d;
 }
 
-float notesDistanceLevel(float distance, float d0, float d1) {
-    return 64.0f * std::clamp((d1 - distance) / (d1 - d0), 0.0f, 1.0f);
-}
+float notesDistanceLevel(float distance, float d0, float d1) { return 64.0f * std::clamp((d1 - distance) / (d1 - d0), 0.0f, 1.0f); }
 
 void applyNotesDistanceFormula(TessSettings& t) {
     t.adaptive = AdaptiveMode::Distance;

@@ -13,12 +13,12 @@
 namespace pw {
 
 struct TessPreset {
-    std::string name;         // id for the command line: "quad-1_2_3_4-4_4", "tri-4.9_4.5_4.1-4.4-fractional_odd"
-    std::string label;        // as the notes write it: "quad {1,2,3,4 | 4,4}"
+    std::string name;   // id for the command line: "quad-1_2_3_4-4_4", "tri-4.9_4.5_4.1-4.4-fractional_odd"
+    std::string label;  // as the notes write it: "quad {1,2,3,4 | 4,4}"
     DomainKind kind = DomainKind::Quad;
     DomainLevels levels;
     Spacing spacing = Spacing::Equal;
-    std::string note;         // one line for the tooltip / figure caption
+    std::string note;  // one line for the tooltip / figure caption
 };
 
 // Every factor-set preset, quad first, then triangle, then the fractional example (twice: integer

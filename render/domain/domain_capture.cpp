@@ -6,12 +6,12 @@
 #include <string>
 
 #include "core/base/errors.hpp"
-#include "render/vk/buffers.hpp"
 #include "core/gpu/domain_interface.h"
 #include "render/domain/domain_view.hpp"
+#include "render/scene/shader_variants.hpp"
+#include "render/vk/buffers.hpp"
 #include "render/vk/pipeline_builder.hpp"
 #include "render/vk/stats.hpp"
-#include "render/scene/shader_variants.hpp"
 #include "shaders/spirv.hpp"
 
 namespace pw::render {
@@ -19,7 +19,6 @@ namespace pw::render {
 namespace {
 
 constexpr VkDeviceSize kStride = 2 * sizeof(float);
-
 
 }  // namespace
 
@@ -35,7 +34,8 @@ VkPipeline DomainView::capturePipeline(DomainKind kind, Spacing spacing) {
         pd.vertexLayout = -1;
         pd.depthTest = pd.depthWrite = false;
         pd.rasterizerDiscard = true;
-        pd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc},
+        pd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert},
+                     {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc},
                      {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, tese}};
         capturePipes_[d][s] = OwnedPipeline(dev_.device(), buildPipeline(dev_, layout_, VK_NULL_HANDLE, pd, VK_FORMAT_UNDEFINED,
                                                                          VK_FORMAT_UNDEFINED, VK_SAMPLE_COUNT_1_BIT));
@@ -67,7 +67,7 @@ DomainPattern DomainView::capture(const DomainPane& pane) {
         Buffer buf = createBuffer(dev_, capacity, VK_BUFFER_USAGE_TRANSFORM_FEEDBACK_BUFFER_BIT_EXT, MemoryUse::Readback);
         dev_.submitAndWait([&](VkCommandBuffer cmd) {
             vkCmdResetQueryPool(cmd, query, 0, 1);
-            vkCmdBeginQuery(cmd, query, 0, 0);  // outside rendering, like the statistics queries
+            vkCmdBeginQuery(cmd, query, 0, 0);                     // outside rendering, like the statistics queries
             VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};  // no attachments: nothing is drawn
             ri.renderArea = {{0, 0}, {1, 1}};
             ri.layerCount = 1;
@@ -93,8 +93,8 @@ DomainPattern DomainView::capture(const DomainPane& pane) {
         const std::array<uint64_t, 2> prims = readTransformFeedbackQuery(dev_, query);  // written, needed
         if (prims[1] > prims[0]) {
             if (attempt > 0)
-                throw OutputError("(capture)", "the GPU made " + std::to_string(prims[1]) + " primitives but wrote only " +
-                                                   std::to_string(prims[0]));
+                throw OutputError("(capture)",
+                                  "the GPU made " + std::to_string(prims[1]) + " primitives but wrote only " + std::to_string(prims[0]));
             capacity = VkDeviceSize(prims[1]) * out.vertsPerPrimitive * kStride;
             continue;
         }

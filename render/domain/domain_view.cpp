@@ -4,9 +4,9 @@
 #include <cmath>
 
 #include "core/gpu/domain_interface.h"
+#include "render/scene/shader_variants.hpp"
 #include "render/targets/offscreen_target.hpp"
 #include "render/vk/pipeline_builder.hpp"
-#include "render/scene/shader_variants.hpp"
 #include "shaders/spirv.hpp"
 
 namespace pw::render {
@@ -77,17 +77,22 @@ DomainView::DomainView(Device& dev, VkFormat color, VkFormat depth, VkSampleCoun
             pd.patchControlPoints = 1;
             pd.vertexLayout = -1;
             pd.depthTest = pd.depthWrite = false;
-            pd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc},
-                         {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::domain_tese(size_t(d), size_t(s), 0))}, {VK_SHADER_STAGE_FRAGMENT_BIT, frag}};
-            pipes_[size_t(d)][size_t(s)][0] = OwnedPipeline(dev.device(), buildPipeline(dev, layout_, VK_NULL_HANDLE, pd, color, depth, samples));
+            pd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert},
+                         {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc},
+                         {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::domain_tese(size_t(d), size_t(s), 0))},
+                         {VK_SHADER_STAGE_FRAGMENT_BIT, frag}};
+            pipes_[size_t(d)][size_t(s)][0] =
+                OwnedPipeline(dev.device(), buildPipeline(dev, layout_, VK_NULL_HANDLE, pd, color, depth, samples));
             if (d != int(DomainKind::Isoline)) {  // isolines are lines already
                 pd.polygon = VK_POLYGON_MODE_LINE;
-                pipes_[size_t(d)][size_t(s)][1] = OwnedPipeline(dev.device(), buildPipeline(dev, layout_, VK_NULL_HANDLE, pd, color, depth, samples));
+                pipes_[size_t(d)][size_t(s)][1] =
+                    OwnedPipeline(dev.device(), buildPipeline(dev, layout_, VK_NULL_HANDLE, pd, color, depth, samples));
             }
             if (pointsSupported_) {
                 pd.polygon = VK_POLYGON_MODE_FILL;
                 pd.stages[2].second = mod(spirv::domain_tese(size_t(d), size_t(s), spirv::domain_tese_output_points));
-                pipes_[size_t(d)][size_t(s)][2] = OwnedPipeline(dev.device(), buildPipeline(dev, layout_, VK_NULL_HANDLE, pd, color, depth, samples));
+                pipes_[size_t(d)][size_t(s)][2] =
+                    OwnedPipeline(dev.device(), buildPipeline(dev, layout_, VK_NULL_HANDLE, pd, color, depth, samples));
             }
         }
 }
@@ -127,7 +132,8 @@ std::vector<DomainStats> DomainView::draw(RenderTarget& target, const std::vecto
     const auto viewportAndScissor = [&](VkCommandBuffer cmd, const DomainViewOptions& o) {
         const VkViewport vp{0, 0, float(ext.width), float(ext.height), 0, 1};
         vkCmdSetViewport(cmd, 0, 1, &vp);
-        const int x0 = std::clamp(int(std::floor(o.rect[0])), 0, int(ext.width)), y0 = std::clamp(int(std::floor(o.rect[1])), 0, int(ext.height));
+        const int x0 = std::clamp(int(std::floor(o.rect[0])), 0, int(ext.width)),
+                  y0 = std::clamp(int(std::floor(o.rect[1])), 0, int(ext.height));
         const int x1 = std::clamp(int(std::ceil(o.rect[0] + o.rect[2])), x0, int(ext.width));
         const int y1 = std::clamp(int(std::ceil(o.rect[1] + o.rect[3])), y0, int(ext.height));
         const VkRect2D sc{{x0, y0}, {uint32_t(x1 - x0), uint32_t(y1 - y0)}};
@@ -141,8 +147,10 @@ std::vector<DomainStats> DomainView::draw(RenderTarget& target, const std::vecto
             const DomainPlacement at = placeDomain(o);
             // The statistics query of each fill pass sits outside rendering (render/vk/stats.hpp: lavapipe).
             if (pool) vkCmdBeginQuery(cmd, pool, i, 0);
-            if (i == 0 && clearTarget) target.beginRendering(cmd, o.background);
-            else target.resumeRendering(cmd);
+            if (i == 0 && clearTarget)
+                target.beginRendering(cmd, o.background);
+            else
+                target.resumeRendering(cmd);
             const VkRect2D sc = viewportAndScissor(cmd, o);
             const bool visible = sc.extent.width > 0 && sc.extent.height > 0;
             if (o.clearRect && !(i == 0 && clearTarget) && visible) {

@@ -9,10 +9,10 @@
 #include <array>
 #include <vector>
 
+#include "core/tess/tess_domain.hpp"
+#include "render/targets/render_target.hpp"
 #include "render/vk/device.hpp"
 #include "render/vk/vk_owned.hpp"
-#include "render/targets/render_target.hpp"
-#include "core/tess/tess_domain.hpp"
 
 namespace pw::gpu {
 struct DomainPush;
@@ -94,9 +94,9 @@ public:
 
 private:
     VkPipeline pipeline(DomainKind kind, Spacing spacing, int pass) const;  // pass 0 fill, 1 lines, 2 points
-    VkPipeline capturePipeline(DomainKind kind, Spacing spacing);          // built on first use
-    void recordPass(VkCommandBuffer cmd, const DomainViewOptions& o, int pass, const DomainPlacement& at,
-                    const std::array<float, 4>& color, VkExtent2D extent) const;
+    VkPipeline capturePipeline(DomainKind kind, Spacing spacing);           // built on first use
+    void recordPass(VkCommandBuffer cmd, const DomainViewOptions& o, int pass, const DomainPlacement& at, const std::array<float, 4>& color,
+                    VkExtent2D extent) const;
 
     Device& dev_;
     OwnedPipelineLayout layout_;

@@ -4,11 +4,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <fcntl.h>
 #include <cerrno>
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
-#include <fcntl.h>
 #include <fstream>
 #include <iterator>
 
@@ -33,14 +33,24 @@ namespace {
 std::vector<std::string> encodeArgs(AnimationFormat f) {
     switch (f) {
         case AnimationFormat::Gif:  // one palette for the whole sweep, made from its frames
-            return {"-filter_complex", "[0:v]split[a][b];[a]palettegen=stats_mode=full[p];[b][p]paletteuse=dither=sierra2_4a",
-                    "-loop", "0"};
+            return {"-filter_complex", "[0:v]split[a][b];[a]palettegen=stats_mode=full[p];[b][p]paletteuse=dither=sierra2_4a", "-loop",
+                    "0"};
         case AnimationFormat::Mp4:  // yuv420p needs even sizes: an odd last column or row is left out
-            return {"-vf", "crop=trunc(iw/2)*2:trunc(ih/2)*2:0:0", "-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf", "18",
-                    "-preset", "medium", "-movflags", "+faststart"};
+            return {"-vf",       "crop=trunc(iw/2)*2:trunc(ih/2)*2:0:0",
+                    "-c:v",      "libx264",
+                    "-pix_fmt",  "yuv420p",
+                    "-crf",      "18",
+                    "-preset",   "medium",
+                    "-movflags", "+faststart"};
         case AnimationFormat::Webm:
-            return {"-vf", "crop=trunc(iw/2)*2:trunc(ih/2)*2:0:0", "-c:v", "libvpx-vp9", "-pix_fmt", "yuv420p", "-crf", "30",
-                    "-b:v", "0", "-deadline", "good", "-cpu-used", "4", "-row-mt", "1"};
+            return {"-vf",       "crop=trunc(iw/2)*2:trunc(ih/2)*2:0:0",
+                    "-c:v",      "libvpx-vp9",
+                    "-pix_fmt",  "yuv420p",
+                    "-crf",      "30",
+                    "-b:v",      "0",
+                    "-deadline", "good",
+                    "-cpu-used", "4",
+                    "-row-mt",   "1"};
     }
     return {};
 }
@@ -61,8 +71,7 @@ std::string tailOf(const std::string& text, size_t lines) {
 
 }  // namespace
 
-AnimationEncoder::AnimationEncoder(const std::filesystem::path& output, AnimationFormat format, uint32_t width, uint32_t height,
-                                   double fps)
+AnimationEncoder::AnimationEncoder(const std::filesystem::path& output, AnimationFormat format, uint32_t width, uint32_t height, double fps)
     : output_(output), width_(width), height_(height) {
     // A broken pipe (ffmpeg stopped early) is reported by write() and finish(), not a signal.
     std::signal(SIGPIPE, SIG_IGN);
@@ -73,8 +82,20 @@ AnimationEncoder::AnimationEncoder(const std::filesystem::path& output, Animatio
     const std::string ffmpeg = program && *program ? program : "ffmpeg";
     char rate[32];
     std::snprintf(rate, sizeof rate, "%.6g", fps);
-    std::vector<std::string> args = {ffmpeg, "-hide_banner", "-nostdin", "-loglevel", "error", "-f", "rawvideo", "-pix_fmt", "rgba",
-                                     "-video_size", std::to_string(width) + "x" + std::to_string(height), "-framerate", rate, "-i",
+    std::vector<std::string> args = {ffmpeg,
+                                     "-hide_banner",
+                                     "-nostdin",
+                                     "-loglevel",
+                                     "error",
+                                     "-f",
+                                     "rawvideo",
+                                     "-pix_fmt",
+                                     "rgba",
+                                     "-video_size",
+                                     std::to_string(width) + "x" + std::to_string(height),
+                                     "-framerate",
+                                     rate,
+                                     "-i",
                                      "pipe:0"};
     for (std::string& a : encodeArgs(format)) args.push_back(std::move(a));
     args.push_back("-y");
@@ -152,7 +173,8 @@ std::string AnimationEncoder::finish() {
     const std::string bytes = slurp(encodedFile());
     stop();
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || bytes.empty())
-        throw OutputError(output_.string(), "ffmpeg could not encode the animation" + (log.empty() ? std::string() : ": " + tailOf(log, 3)));
+        throw OutputError(output_.string(),
+                          "ffmpeg could not encode the animation" + (log.empty() ? std::string() : ": " + tailOf(log, 3)));
     return bytes;
 }
 

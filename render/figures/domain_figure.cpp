@@ -36,8 +36,7 @@ DomainFigureLayout layoutDomainFigure(const std::vector<DomainPane>& panes, uint
 }
 
 std::vector<DomainStats> renderDomainFigure(DomainView& view, OffscreenTarget& target, const LabelRaster& labels,
-                                            const std::vector<DomainPane>& panes, float textPixels,
-                                            std::vector<uint8_t>& rgba) {
+                                            const std::vector<DomainPane>& panes, float textPixels, std::vector<uint8_t>& rgba) {
     const VkExtent2D ext = target.extent();
     const DomainFigureLayout layout = layoutDomainFigure(panes, ext.width, ext.height, textPixels);
     const auto& opts = layout.panes;

@@ -10,8 +10,8 @@
 #include "render/domain/domain_labels.hpp"
 #include "render/domain/domain_view.hpp"
 #include "render/figures/label_raster.hpp"
-#include "render/targets/offscreen_target.hpp"
 #include "render/figures/pane_layout.hpp"
+#include "render/targets/offscreen_target.hpp"
 
 namespace pw::render {
 
@@ -37,7 +37,6 @@ TextStyle domainLabelStyle(DomainLabel::Role role, float textPixels);
 // line height (0: from the pane size), and returns the statistics per pane; the labelled image is
 // in `rgba` (target-sized).
 std::vector<DomainStats> renderDomainFigure(DomainView& view, OffscreenTarget& target, const LabelRaster& labels,
-                                            const std::vector<DomainPane>& panes, float textPixels,
-                                            std::vector<uint8_t>& rgba);
+                                            const std::vector<DomainPane>& panes, float textPixels, std::vector<uint8_t>& rgba);
 
 }  // namespace pw::render

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "render/vk/device.hpp"
 #include "render/domain/domain_view.hpp"
+#include "render/vk/device.hpp"
 
 namespace pw::render {
 

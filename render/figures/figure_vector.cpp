@@ -106,9 +106,8 @@ cairo_status_t appendBytes(void* closure, const unsigned char* data, unsigned in
 std::string domainFigureVector(VectorFormat format, uint32_t width, uint32_t height, const DomainFigureLayout& layout,
                                const std::vector<DomainPattern>& patterns, const std::vector<std::array<uint64_t, 2>>& counts) {
     std::string bytes;
-    cairo_surface_t* surface = format == VectorFormat::Svg
-                                   ? cairo_svg_surface_create_for_stream(appendBytes, &bytes, width, height)
-                                   : cairo_pdf_surface_create_for_stream(appendBytes, &bytes, width, height);
+    cairo_surface_t* surface = format == VectorFormat::Svg ? cairo_svg_surface_create_for_stream(appendBytes, &bytes, width, height)
+                                                           : cairo_pdf_surface_create_for_stream(appendBytes, &bytes, width, height);
     if (format == VectorFormat::Svg) cairo_svg_surface_set_document_unit(surface, CAIRO_SVG_UNIT_PX);
     if (format == VectorFormat::Pdf) cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "Patchwork");
     cairo_t* cr = cairo_create(surface);

@@ -71,8 +71,7 @@ void blend(PixelImage& img, int x, int y, const std::array<uint8_t, 4>& c, float
 
 }  // namespace
 
-void LabelRaster::draw(PixelImage image, float x, float y, std::string_view text, const TextStyle& style, float ax,
-                       float ay) const {
+void LabelRaster::draw(PixelImage image, float x, float y, std::string_view text, const TextStyle& style, float ax, float ay) const {
     const auto size = measure(text, style.pixels);
     const float left = x - ax * size[0], top = y - ay * size[1];
     if (style.box) {

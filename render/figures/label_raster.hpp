@@ -11,9 +11,9 @@
 namespace pw::render {
 
 struct TextStyle {
-    float pixels = 18.0f;                            // line height in pixels
-    std::array<uint8_t, 4> color{20, 24, 34, 255};   // RGBA
-    bool box = false;                                // a filled box behind the text
+    float pixels = 18.0f;                           // line height in pixels
+    std::array<uint8_t, 4> color{20, 24, 34, 255};  // RGBA
+    bool box = false;                               // a filled box behind the text
     std::array<uint8_t, 4> boxColor{255, 255, 255, 215};
 };
 
@@ -34,8 +34,7 @@ public:
     std::array<float, 2> measure(std::string_view text, float pixels) const;
     // Draws `text` with its anchor point at (x, y): ax, ay pick the anchor within the text's box
     // (0, 0 top left; 0.5, 0.5 centre; 1, 1 bottom right). Clipped to the image.
-    void draw(PixelImage image, float x, float y, std::string_view text, const TextStyle& style, float ax = 0.0f,
-              float ay = 0.0f) const;
+    void draw(PixelImage image, float x, float y, std::string_view text, const TextStyle& style, float ax = 0.0f, float ay = 0.0f) const;
 
 private:
     struct Font;

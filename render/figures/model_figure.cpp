@@ -64,9 +64,8 @@ std::string paneCaption(const TessSettings& ts, uint64_t triangles, bool twoLine
            " triangles";
 }
 
-std::vector<PaneResult> renderModelFigure(Renderer& renderer, OffscreenTarget& target, const LabelRaster& labels,
-                                          const RenderOptions& base, const std::vector<ModelPane>& panes, float textPixels,
-                                          std::vector<uint8_t>& rgba) {
+std::vector<PaneResult> renderModelFigure(Renderer& renderer, OffscreenTarget& target, const LabelRaster& labels, const RenderOptions& base,
+                                          const std::vector<ModelPane>& panes, float textPixels, std::vector<uint8_t>& rgba) {
     const VkExtent2D ext = target.extent();
     const auto rects = splitPanes(int(panes.size()), {0.0f, 0.0f, float(ext.width), float(ext.height)});
     std::vector<PaneResult> results;
@@ -80,7 +79,8 @@ std::vector<PaneResult> renderModelFigure(Renderer& renderer, OffscreenTarget& t
         TextStyle st;
         st.pixels = textPixels > 0.0f ? textPixels : std::clamp(std::min(rects[i][2], rects[i][3]) / 24.0f, 11.0f, 36.0f);
         st.box = true;
-        labels.draw(img, rects[i][0] + st.pixels * 0.5f, rects[i][1] + st.pixels * 0.5f, paneCaption(results[i].tess, results[i].stats.triangles()), st);
+        labels.draw(img, rects[i][0] + st.pixels * 0.5f, rects[i][1] + st.pixels * 0.5f,
+                    paneCaption(results[i].tess, results[i].stats.triangles()), st);
     }
     drawPaneDividers(rgba, ext.width, ext.height, rects);
     return results;

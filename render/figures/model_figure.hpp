@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "render/figures/label_raster.hpp"
-#include "render/targets/offscreen_target.hpp"
 #include "render/figures/pane_layout.hpp"
 #include "render/scene/renderer.hpp"
+#include "render/targets/offscreen_target.hpp"
 
 namespace pw::render {
 
@@ -40,8 +40,7 @@ std::string paneCaption(const TessSettings& ts, uint64_t triangles, bool twoLine
 // Draws the panes side by side (1, 2) or in a 2 x 2 grid (3, 4) into `target` (which must read
 // back), one submission each, captions them with `labels` (`textPixels` line height, 0: from the
 // pane size) and returns what each pane drew; the image is in `rgba` (target-sized).
-std::vector<PaneResult> renderModelFigure(Renderer& renderer, OffscreenTarget& target, const LabelRaster& labels,
-                                          const RenderOptions& base, const std::vector<ModelPane>& panes, float textPixels,
-                                          std::vector<uint8_t>& rgba);
+std::vector<PaneResult> renderModelFigure(Renderer& renderer, OffscreenTarget& target, const LabelRaster& labels, const RenderOptions& base,
+                                          const std::vector<ModelPane>& panes, float textPixels, std::vector<uint8_t>& rgba);
 
 }  // namespace pw::render

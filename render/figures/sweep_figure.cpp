@@ -4,8 +4,8 @@
 #include <memory>
 #include <string>
 
-#include "render/figures/domain_figure.hpp"
 #include "render/domain/domain_labels.hpp"
+#include "render/figures/domain_figure.hpp"
 #include "render/figures/label_raster.hpp"
 #include "render/targets/offscreen_target.hpp"
 
@@ -22,9 +22,7 @@ void caption(const LabelRaster& labels, std::vector<uint8_t>& rgba, unsigned w, 
 
 }  // namespace
 
-float sweepLevel(const SweepSpec& s, int k) {
-    return s.frames > 1 ? s.from + (s.to - s.from) * float(k) / float(s.frames - 1) : s.from;
-}
+float sweepLevel(const SweepSpec& s, int k) { return s.frames > 1 ? s.from + (s.to - s.from) * float(k) / float(s.frames - 1) : s.from; }
 
 void renderSweep(Device& dev, const SweepSpec& s, const std::function<void(int, const std::vector<uint8_t>&)>& frame) {
     const bool domain = !s.domainPanes.empty();
@@ -57,7 +55,8 @@ void renderSweep(Device& dev, const SweepSpec& s, const std::function<void(int, 
             } else {
                 const FrameStats st = renderer->render(opt);
                 rgba = target.pixels();
-                text += "  \u00b7  " + std::string(spacingName(opt.tess.spacing)) + "  \u00b7  " + std::to_string(st.triangles()) + " triangles";
+                text += "  \u00b7  " + std::string(spacingName(opt.tess.spacing)) + "  \u00b7  " + std::to_string(st.triangles()) +
+                        " triangles";
             }
         }
         if (s.modelPanes.empty() || domain) caption(labels, rgba, s.width, s.height, text);

@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "core/model/document.hpp"
-#include "render/vk/device.hpp"
 #include "render/domain/domain_view.hpp"
 #include "render/figures/model_figure.hpp"
 #include "render/scene/renderer.hpp"
+#include "render/vk/device.hpp"
 
 namespace pw::render {
 

@@ -10,8 +10,8 @@
 
 namespace pw::render {
 
-std::vector<uint8_t> adaptiveLevelBounds(const SurfaceScene& s, const TessSettings& tess, const ViewMatrices& vm,
-                                         float viewportW, float viewportH, float maxLevel) {
+std::vector<uint8_t> adaptiveLevelBounds(const SurfaceScene& s, const TessSettings& tess, const ViewMatrices& vm, float viewportW,
+                                         float viewportH, float maxLevel) {
     std::vector<uint8_t> out(s.windowCount, uint8_t(roundedSegments(maxLevel, tess.spacing)));
     if (tess.adaptive == AdaptiveMode::None) return out;
     std::vector<uint32_t> kind(s.windowCount, 0);
@@ -28,9 +28,8 @@ std::vector<uint8_t> adaptiveLevelBounds(const SurfaceScene& s, const TessSettin
             const bool rev = gpu::edgeReversed(pool[0], pool[1], pool[2], pool[3]);
             glm::vec3 p[4];
             for (int k = 0; k < 4; ++k) p[k] = s.cpuPoints[pool[rev ? 3 - k : k]];
-            const float l = gpu::adaptiveEdgeLevel(p[0], p[1], p[2], p[3], uint32_t(tess.adaptive), maxLevel, vm.eye,
-                                                   tess.distanceNear, tess.distanceFar, vm.viewProj, viewport,
-                                                   tess.targetPixels);
+            const float l = gpu::adaptiveEdgeLevel(p[0], p[1], p[2], p[3], uint32_t(tess.adaptive), maxLevel, vm.eye, tess.distanceNear,
+                                                   tess.distanceFar, vm.viewProj, viewport, tess.targetPixels);
             level = std::max(level, std::clamp(l, 1.0f, maxLevel));
         }
         level = std::max(level, s.overrideLevel[w]);

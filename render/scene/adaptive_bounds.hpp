@@ -13,7 +13,7 @@
 namespace pw::render {
 
 // Per window: an upper bound of its outer and inner segments (1..64), +1 for float differences.
-std::vector<uint8_t> adaptiveLevelBounds(const SurfaceScene& s, const TessSettings& tess, const ViewMatrices& vm,
-                                         float viewportW, float viewportH, float maxLevel);
+std::vector<uint8_t> adaptiveLevelBounds(const SurfaceScene& s, const TessSettings& tess, const ViewMatrices& vm, float viewportW,
+                                         float viewportH, float maxLevel);
 
 }  // namespace pw::render

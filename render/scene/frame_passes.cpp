@@ -45,7 +45,8 @@ void groundPass(Frame& f) {
     auto& m = f.m;
     if (!m.ground.buffer || m.groundStep != f.opt.groundGridStep || m.groundZUp != f.opt.camera.zUp) {
         const std::vector<float> v = groundGridVertices(f.opt.groundGridStep, f.opt.camera.zUp);
-        m.ground = uploadStatic(f.dev, v, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);  // no frame reads the old one: render() waits for its own submission
+        m.ground =
+            uploadStatic(f.dev, v, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);  // no frame reads the old one: render() waits for its own submission
         m.groundVertexCount = uint32_t(v.size() / 7);
         m.groundStep = f.opt.groundGridStep;
         m.groundZUp = f.opt.camera.zUp;

@@ -42,11 +42,16 @@ std::vector<uint32_t> controlGridLines(const Document& doc) {
 std::array<float, 4> continuityColor(const Continuity* c) {
     if (!c) return {0.75f, 0.75f, 0.75f, 1.0f};
     switch (*c) {
-        case Continuity::C0: return {0.95f, 0.25f, 0.2f, 1.0f};
-        case Continuity::C1: return {0.2f, 0.85f, 0.3f, 1.0f};
-        case Continuity::G1: return {0.3f, 0.5f, 1.0f, 1.0f};
-        case Continuity::C2: return {0.95f, 0.85f, 0.2f, 1.0f};
-        case Continuity::G2: return {0.75f, 0.45f, 1.0f, 1.0f};
+        case Continuity::C0:
+            return {0.95f, 0.25f, 0.2f, 1.0f};
+        case Continuity::C1:
+            return {0.2f, 0.85f, 0.3f, 1.0f};
+        case Continuity::G1:
+            return {0.3f, 0.5f, 1.0f, 1.0f};
+        case Continuity::C2:
+            return {0.95f, 0.85f, 0.2f, 1.0f};
+        case Continuity::G2:
+            return {0.75f, 0.45f, 1.0f, 1.0f};
     }
     return {1, 1, 1, 1};
 }
@@ -63,11 +68,13 @@ std::vector<float> groundGridVertices(double step, bool zUp) {
     };
     for (int i = -n; i <= n; ++i)
         for (int dir = 0; dir < 2; ++dir) {
-            const std::array<float, 4> c = i != 0 ? std::array<float, 4>{0.59f, 0.59f, 0.59f, 0.18f}
+            const std::array<float, 4> c = i != 0     ? std::array<float, 4>{0.59f, 0.59f, 0.59f, 0.18f}
                                            : dir == 0 ? std::array<float, 4>{0.78f, 0.27f, 0.27f, 0.55f}
                                                       : std::array<float, 4>{0.27f, 0.71f, 0.27f, 0.55f};
-            if (dir == 0) vertex(-n, i, c), vertex(n, i, c);  // along x
-            else vertex(i, -n, c), vertex(i, n, c);
+            if (dir == 0)
+                vertex(-n, i, c), vertex(n, i, c);  // along x
+            else
+                vertex(i, -n, c), vertex(i, n, c);
         }
     return v;
 }

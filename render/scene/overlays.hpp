@@ -7,8 +7,8 @@
 #include <array>
 #include <vector>
 
-#include "render/vk/buffers.hpp"
 #include "core/model/document.hpp"
+#include "render/vk/buffers.hpp"
 
 namespace pw::render {
 

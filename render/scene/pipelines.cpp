@@ -3,9 +3,9 @@
 #include "render/vk/vk_owned.hpp"
 
 #include <chrono>
-#include <functional>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <vector>
 
 #include "core/gpu/gpu_interface.h"
@@ -59,9 +59,10 @@ struct TessShaders {
 };
 
 template <class Mod>
-void buildTessFamily(const Targets& t, const SharedStages& sh, uint32_t controlPoints, const TessShaders& shaders, size_t displaced, Mod&& mod,
-                     FamilyOut out) {
-    const VkShaderModule tesc[kLevelsVariants] = {mod(shaders.tesc(size_t(LevelsVariant::Fixed))), mod(shaders.tesc(size_t(LevelsVariant::Full)))};
+void buildTessFamily(const Targets& t, const SharedStages& sh, uint32_t controlPoints, const TessShaders& shaders, size_t displaced,
+                     Mod&& mod, FamilyOut out) {
+    const VkShaderModule tesc[kLevelsVariants] = {mod(shaders.tesc(size_t(LevelsVariant::Fixed))),
+                                                  mod(shaders.tesc(size_t(LevelsVariant::Full)))};
     for (int s = 0; s < kSpacingVariants; ++s) {
         const VkShaderModule te[kVaryingsVariants] = {mod(shaders.tese(size_t(s), size_t(VaryingsVariant::Lean), displaced)),
                                                       mod(shaders.tese(size_t(s), size_t(VaryingsVariant::Full), displaced))};
@@ -72,8 +73,10 @@ void buildTessFamily(const Targets& t, const SharedStages& sh, uint32_t controlP
                 PipelineDesc pd;
                 pd.tess = true;
                 pd.patchControlPoints = controlPoints;
-                pd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, sh.vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc[size_t(l)]},
-                             {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, te[v]}, {VK_SHADER_STAGE_FRAGMENT_BIT, sh.frag[v]}};
+                pd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, sh.vert},
+                             {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc[size_t(l)]},
+                             {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, te[v]},
+                             {VK_SHADER_STAGE_FRAGMENT_BIT, sh.frag[v]}};
                 out.surface[surfaceIndex(s, lv, VaryingsVariant(v))] = t.build(pd);
                 if (v != int(VaryingsVariant::Lean)) continue;
                 pd.polygon = VK_POLYGON_MODE_LINE;
@@ -85,9 +88,11 @@ void buildTessFamily(const Targets& t, const SharedStages& sh, uint32_t controlP
             PipelineDesc nd;
             nd.tess = true;
             nd.patchControlPoints = controlPoints;
-            nd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, sh.vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc[size_t(l)]},
+            nd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, sh.vert},
+                         {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc[size_t(l)]},
                          {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, pte},
-                         {VK_SHADER_STAGE_GEOMETRY_BIT, sh.geom}, {VK_SHADER_STAGE_FRAGMENT_BIT, sh.lineFrag}};
+                         {VK_SHADER_STAGE_GEOMETRY_BIT, sh.geom},
+                         {VK_SHADER_STAGE_FRAGMENT_BIT, sh.lineFrag}};
             nd.depthWrite = false;
             out.normals[overlayIndex(s, lv)] = t.build(nd);
         }
@@ -98,13 +103,15 @@ void buildTessFamily(const Targets& t, const SharedStages& sh, uint32_t controlP
 // kVaryingsVariants modules and must outlive the result.
 SharedStages makeSharedStages(Device& dev, const ModuleMaker& mod, VkShaderModule (&frag)[kVaryingsVariants]) {
     for (int v = 0; v < kVaryingsVariants; ++v) frag[v] = mod(spirv::surface_frag(size_t(v)));
-    return {mod(spirv::surface_vert()), frag, mod(spirv::line_frag()), dev.caps().geometryShader ? mod(spirv::normals_geom()) : VK_NULL_HANDLE};
+    return {mod(spirv::surface_vert()), frag, mod(spirv::line_frag()),
+            dev.caps().geometryShader ? mod(spirv::normals_geom()) : VK_NULL_HANDLE};
 }
 
 // The quad and triangle surface families, plain or displaced (-DDISPLACE evaluation shaders).
 void buildSurfaceFamilies(const Targets& t, const SharedStages& shared, SurfacePipelines& out, bool displaced, const ModuleMaker& mod) {
     const size_t d = displaced ? 1 : 0;
-    buildTessFamily(t, shared, 16, {spirv::surface_tesc, spirv::surface_tese, spirv::points_tese}, d, mod, {out.surface, out.wire, out.normals});
+    buildTessFamily(t, shared, 16, {spirv::surface_tesc, spirv::surface_tese, spirv::points_tese}, d, mod,
+                    {out.surface, out.wire, out.normals});
     // Bézier triangles: the same vertex and fragment shaders, their own control and evaluation shaders.
     buildTessFamily(t, shared, 10, {spirv::tri_surface_tesc, spirv::tri_surface_tese, spirv::tri_points_tese}, d, mod,
                     {out.triSurface, out.triWire, out.triNormals});
@@ -125,8 +132,8 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
 
     // Pipeline cache from disk (the driver rejects a blob from another device or driver version).
     const auto& props = dev.properties();
-    set.cacheFile = pipelineCacheDir() / ("pipelines-" + std::to_string(props.vendorID) + "-" +
-                                          std::to_string(props.deviceID) + "-" + std::to_string(props.driverVersion) + ".bin");
+    set.cacheFile = pipelineCacheDir() / ("pipelines-" + std::to_string(props.vendorID) + "-" + std::to_string(props.deviceID) + "-" +
+                                          std::to_string(props.driverVersion) + ".bin");
     std::vector<char> blob = readFile(set.cacheFile);
     VkPipelineCacheCreateInfo pc{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
     pc.initialDataSize = blob.size();
@@ -159,9 +166,7 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
 
     // Shader modules (destroyed once the pipelines exist).
     std::vector<OwnedShaderModule> modules;
-    auto mod = [&](const spirv::Blob& blob) {
-        return modules.emplace_back(dev.device(), makeModule(dev, blob)).get();
-    };
+    auto mod = [&](const spirv::Blob& blob) { return modules.emplace_back(dev.device(), makeModule(dev, blob)).get(); };
     VkShaderModule frag[kVaryingsVariants] = {};
     const SharedStages shared = makeSharedStages(dev, mod, frag);
     const VkShaderModule vert = shared.vert, lineFrag = shared.lineFrag;
@@ -178,24 +183,32 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
             cd.tess = true;
             cd.patchControlPoints = 4;
             cd.depthWrite = false;
-            cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, ctesc},
-                         {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::curve_tese(size_t(s)))}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
+            cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert},
+                         {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, ctesc},
+                         {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::curve_tese(size_t(s)))},
+                         {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
             set.curves[size_t(s)] = targets.build(cd);
             cd.patchControlPoints = 16;
-            cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, itesc},
-                         {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::isocurve_tese(size_t(s)))}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
+            cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert},
+                         {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, itesc},
+                         {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::isocurve_tese(size_t(s)))},
+                         {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
             set.isocurves[size_t(s)] = targets.build(cd);
         }
         PipelineDesc cd;
         cd.tess = true;
         cd.patchControlPoints = 4;
         cd.depthWrite = false;
-        cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, mod(spirv::comb_tesc())},
-                     {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::comb_tese())}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
+        cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert},
+                     {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, mod(spirv::comb_tesc())},
+                     {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::comb_tese())},
+                     {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
         set.combs = targets.build(cd);
         cd.patchControlPoints = 16;
-        cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, mod(spirv::isocomb_tesc())},
-                     {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::isocomb_tese())}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
+        cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert},
+                     {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, mod(spirv::isocomb_tesc())},
+                     {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::isocomb_tese())},
+                     {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
         set.isoCombs = targets.build(cd);
     }
     for (int v = 0; v < kVaryingsVariants; ++v) {

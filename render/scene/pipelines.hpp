@@ -7,8 +7,8 @@
 
 #include <array>
 #include <filesystem>
-#include <utility>
 #include <string>
+#include <utility>
 
 #include "render/vk/device.hpp"
 
@@ -61,10 +61,10 @@ struct PipelineHandles {
     // Curvature combs (shaders/comb.*): on Bézier curves and on windows' isocurves; equal spacing.
     VkPipeline combs{}, isoCombs{};
     std::array<VkPipeline, kVaryingsVariants> mesh{};  // plain pre-tessellated triangles
-    VkPipeline gridLines = VK_NULL_HANDLE;   // control net lines (over everything)
-    VkPipeline gridPoints = VK_NULL_HANDLE;  // control points
-    VkPipeline colorLines = VK_NULL_HANDLE;  // coloured lines, depth-tested (boundaries)
-    VkPipeline groundLines = VK_NULL_HANDLE; // coloured translucent lines, depth-tested (the editor's ground grid)
+    VkPipeline gridLines = VK_NULL_HANDLE;             // control net lines (over everything)
+    VkPipeline gridPoints = VK_NULL_HANDLE;            // control points
+    VkPipeline colorLines = VK_NULL_HANDLE;            // coloured lines, depth-tested (boundaries)
+    VkPipeline groundLines = VK_NULL_HANDLE;           // coloured translucent lines, depth-tested (the editor's ground grid)
     VkPipelineCache cache = VK_NULL_HANDLE;
     std::filesystem::path cacheFile;
     VkFormat colorFormat = VK_FORMAT_UNDEFINED, depthFormat = VK_FORMAT_UNDEFINED;  // what the pipelines draw into

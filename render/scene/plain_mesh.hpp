@@ -3,8 +3,8 @@
 // Static data in device-local memory, like the tessellated input's indices (render/vk/buffers.hpp).
 #pragma once
 
-#include "render/vk/buffers.hpp"
 #include "core/mesh/mesh_tessellate.hpp"
+#include "render/vk/buffers.hpp"
 
 namespace pw::render {
 

@@ -2,27 +2,27 @@
 #include "render/scene/renderer_impl.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "core/base/point_upload.hpp"
+#include "core/eval/displacement.hpp"
+#include "core/gpu/gpu_interface.h"
+#include "core/model/camera_math.hpp"
+#include "core/tess/tess_levels.hpp"
 #include "render/scene/adaptive_bounds.hpp"
 #include "render/scene/frame_passes.hpp"
-#include "core/eval/displacement.hpp"
-#include "core/base/point_upload.hpp"
-#include "render/vk/buffers.hpp"
-#include "render/vk/vk_owned.hpp"
-#include "core/model/camera_math.hpp"
-#include "core/gpu/gpu_interface.h"
 #include "render/scene/overlays.hpp"
 #include "render/scene/plain_mesh.hpp"
 #include "render/scene/shader_variants.hpp"
 #include "render/scene/surface_scene.hpp"
-#include "core/tess/tess_levels.hpp"
 #include "render/scene/triangle_draws.hpp"
+#include "render/vk/buffers.hpp"
+#include "render/vk/vk_owned.hpp"
 
 namespace pw::render {
 
@@ -49,9 +49,8 @@ namespace {
 
 void writeDescriptors(Device& dev, VkDescriptorSet set, const Buffer& ubo, const Buffer& patches, const Buffer& counters,
                       const HeightTexture& height) {
-    VkDescriptorBufferInfo infos[3] = {{ubo.buffer, 0, VK_WHOLE_SIZE},
-                                       {patches.buffer, 0, VK_WHOLE_SIZE},
-                                       {counters.buffer, 0, VK_WHOLE_SIZE}};
+    VkDescriptorBufferInfo infos[3] = {
+        {ubo.buffer, 0, VK_WHOLE_SIZE}, {patches.buffer, 0, VK_WHOLE_SIZE}, {counters.buffer, 0, VK_WHOLE_SIZE}};
     VkWriteDescriptorSet w[4];
     for (uint32_t i = 0; i < 3; ++i) {
         w[i] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -73,8 +72,7 @@ void writeDescriptors(Device& dev, VkDescriptorSet set, const Buffer& ubo, const
 
 }  // namespace
 
-Renderer::Renderer(Device& dev, RenderTarget& target)
-    : dev_(dev), target_(target), impl_(std::make_unique<Impl>()) {
+Renderer::Renderer(Device& dev, RenderTarget& target) : dev_(dev), target_(target), impl_(std::make_unique<Impl>()) {
     pipes_ = createPipelines(dev, target.colorFormat(), target.depthFormat(), target.samples());
     Impl& m = *impl_;
     m.frameUbo = createBuffer(dev, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::HostWritten);
@@ -83,8 +81,8 @@ Renderer::Renderer(Device& dev, RenderTarget& target)
     m.scene.patchData = uploadStatic(dev, std::vector<gpu::PatchData>(1), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
 
     m.height = uploadHeightTexture(dev, nullptr);
-    VkDescriptorPoolSize sizes[3] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2},
-                                     {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
+    VkDescriptorPoolSize sizes[3] = {
+        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2}, {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
     VkDescriptorPoolCreateInfo dp{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     dp.maxSets = 1;
     dp.poolSizeCount = 3;
@@ -221,8 +219,8 @@ FrameStats Renderer::render(const RenderOptions& opt) {
     VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     mb.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     mb.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT, 0, 1, &mb, 0,
-                         nullptr, 0, nullptr);
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT, 0, 1, &mb, 0, nullptr, 0,
+                         nullptr);
     m.queries->timestampBegin(cmd);
     m.queries->statsBegin(cmd);
     const std::array<float, 4> background{ds.background[0], ds.background[1], ds.background[2], 1.0f};
@@ -287,7 +285,7 @@ void Renderer::warmUp() {
     o.tess.inner = {2, 2};
     o.display.showGrid = o.display.showWireframe = o.display.showNormals = o.display.showBoundaries = o.display.showIsocurves = true;
     for (Spacing s : {Spacing::Equal, Spacing::FractionalOdd, Spacing::FractionalEven})
-        for (bool culling : {false, true})                                      // both levels variants
+        for (bool culling : {false, true})                                          // both levels variants
             for (ShadingMode shading : {ShadingMode::Lit, ShadingMode::PatchId}) {  // both varying sets
                 o.tess.spacing = s;
                 o.tess.cullBackfaces = o.tess.cullOffscreen = culling;

@@ -8,12 +8,12 @@
 #include <optional>
 #include <vector>
 
-#include "render/vk/device.hpp"
+#include "core/mesh/mesh_tessellate.hpp"
 #include "core/model/document.hpp"
 #include "core/model/height_map.hpp"
-#include "core/mesh/mesh_tessellate.hpp"
 #include "render/scene/pipelines.hpp"
 #include "render/targets/render_target.hpp"
+#include "render/vk/device.hpp"
 #include "render/vk/stats.hpp"
 
 namespace pw::render {

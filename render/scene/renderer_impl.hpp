@@ -7,14 +7,14 @@
 #include <vector>
 
 #include "core/model/camera_math.hpp"
-#include "render/vk/buffers.hpp"
 #include "render/scene/height_texture.hpp"
 #include "render/scene/overlays.hpp"
 #include "render/scene/pipelines.hpp"
 #include "render/scene/plain_mesh.hpp"
 #include "render/scene/renderer.hpp"
-#include "render/vk/stats.hpp"
 #include "render/scene/surface_scene.hpp"
+#include "render/vk/buffers.hpp"
+#include "render/vk/stats.hpp"
 #include "render/vk/vk_check.hpp"
 #include "render/vk/vk_owned.hpp"
 

@@ -5,13 +5,12 @@
 #include <cstdio>
 #include <set>
 
+#include "render/scene/shader_variants.hpp"
 #include "shaders/glsl_sources.hpp"
 #include "shaders/spirv.hpp"
-#include "render/scene/shader_variants.hpp"
 
 namespace pw::render {
 namespace {
-
 
 // Which settings chose the spacing and control-shader variants.
 std::string describe(const TessSettings& t) {
@@ -53,7 +52,9 @@ struct Preprocessor {
 
     // Appends `file`'s lines; includes are expanded in place, one level deeper.
     void expand(const glsl::File& file, int depth, bool outerActive) {
-        struct Branch { bool parentActive, taken; };
+        struct Branch {
+            bool parentActive, taken;
+        };
         std::vector<Branch> stack;
         std::string_view text = file.text;
         int lineNo = 0;
@@ -103,7 +104,8 @@ std::vector<PipelineUse> pipelinesInUse(const ShaderContext& c) {
         const std::string vary = v == size_t(VaryingsVariant::Lean)
                                      ? "; lean varyings (position and normal: " + (title.starts_with("Wire") ? "wireframe" : shading) + ")"
                                      : "; full varyings (UV, patch id, curvatures: " + shading + ")";
-        out.push_back({title, why + vary,
+        out.push_back({title,
+                       why + vary,
                        {{"vertex", stage(spirv::surface_vert())},
                         {"tessellation control", stage(triangles ? spirv::tri_surface_tesc(lv) : spirv::surface_tesc(lv))},
                         {"tessellation evaluation", stage(triangles ? spirv::tri_surface_tese(sp, v, 0) : spirv::surface_tese(sp, v, 0))},
@@ -117,7 +119,8 @@ std::vector<PipelineUse> pipelinesInUse(const ShaderContext& c) {
         if (c.triangles) surface("Wireframe (Bézier triangles)", tri, lean);
     }
     auto normals = [&](const std::string& title, bool triangles) {
-        out.push_back({title, why,
+        out.push_back({title,
+                       why,
                        {{"vertex", stage(spirv::surface_vert())},
                         {"tessellation control", stage(triangles ? spirv::tri_surface_tesc(lv) : spirv::surface_tesc(lv))},
                         {"tessellation evaluation", stage(triangles ? spirv::tri_points_tese(sp, 0) : spirv::points_tese(sp, 0))},
@@ -131,13 +134,15 @@ std::vector<PipelineUse> pipelinesInUse(const ShaderContext& c) {
                   double(c.tess.isolineLevels[0]), double(c.tess.isolineLevels[1]));
     const std::string isoWhy = levels + std::string(" under partitioning ") + std::string(spacingName(c.tess.spacing));
     if (c.display.showIsocurves && c.windows)
-        out.push_back({"Isocurves (isoline domain, 16 points)", isoWhy,
+        out.push_back({"Isocurves (isoline domain, 16 points)",
+                       isoWhy,
                        {{"vertex", stage(spirv::surface_vert())},
                         {"tessellation control", stage(spirv::isocurve_tesc())},
                         {"tessellation evaluation", stage(spirv::isocurve_tese(sp))},
                         {"fragment", stage(spirv::line_frag())}}});
     if (c.curves)
-        out.push_back({"Bézier curves (isoline domain, 4 points)", isoWhy + "; one line per curve",
+        out.push_back({"Bézier curves (isoline domain, 4 points)",
+                       isoWhy + "; one line per curve",
                        {{"vertex", stage(spirv::surface_vert())},
                         {"tessellation control", stage(spirv::curve_tesc())},
                         {"tessellation evaluation", stage(spirv::curve_tese(sp))},

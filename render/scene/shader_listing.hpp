@@ -29,9 +29,9 @@ struct PipelineUse {
 struct ShaderContext {
     TessSettings tess;
     DisplaySettings display;
-    bool windows = true;        // the document has quad windows (Bézier, B-spline, Catmull-Rom)
-    bool triangles = false;     // the document has Bézier triangles
-    bool curves = false;        // the document has Bézier curves
+    bool windows = true;         // the document has quad windows (Bézier, B-spline, Catmull-Rom)
+    bool triangles = false;      // the document has Bézier triangles
+    bool curves = false;         // the document has Bézier curves
     bool geometryShader = true;  // the device draws the normal-vector overlay
     // Domain-view panes (kind and partitioning each), empty when the domain view is closed.
     std::vector<std::pair<DomainKind, Spacing>> domainPanes;
@@ -42,9 +42,9 @@ std::vector<PipelineUse> pipelinesInUse(const ShaderContext& c);
 
 struct ListingLine {
     std::string text;
-    std::string file;  // the file this line comes from (an include's name inside it)
-    int line = 0;      // 1-based line number in that file
-    int depth = 0;     // include depth (0: the stage's own file)
+    std::string file;    // the file this line comes from (an include's name inside it)
+    int line = 0;        // 1-based line number in that file
+    int depth = 0;       // include depth (0: the stage's own file)
     bool active = true;  // false inside an #ifdef/#ifndef/#else branch the defines switch off
 };
 

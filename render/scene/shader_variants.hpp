@@ -10,9 +10,12 @@ namespace pw::render {
 // Evaluation-shader spacing: pow2 uses equal spacing (its levels are rounded in the control shader).
 inline int spacingVariant(Spacing s) {
     switch (s) {
-        case Spacing::FractionalOdd: return int(SpacingVariant::FractionalOdd);
-        case Spacing::FractionalEven: return int(SpacingVariant::FractionalEven);
-        default: return int(SpacingVariant::Equal);
+        case Spacing::FractionalOdd:
+            return int(SpacingVariant::FractionalOdd);
+        case Spacing::FractionalEven:
+            return int(SpacingVariant::FractionalEven);
+        default:
+            return int(SpacingVariant::Equal);
     }
 }
 
@@ -28,8 +31,10 @@ inline VaryingsVariant varyingsVariant(ShadingMode m) {
         case ShadingMode::PatchId:
         case ShadingMode::UvChecker:
         case ShadingMode::GaussCurvature:
-        case ShadingMode::MeanCurvature: return VaryingsVariant::Full;
-        default: return VaryingsVariant::Lean;
+        case ShadingMode::MeanCurvature:
+            return VaryingsVariant::Full;
+        default:
+            return VaryingsVariant::Lean;
     }
 }
 

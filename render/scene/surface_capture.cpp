@@ -5,16 +5,16 @@
 // ones the screen shows.
 #include <algorithm>
 #include <cstring>
-#include <utility>
 #include <string>
+#include <utility>
 
 #include "core/base/errors.hpp"
 #include "core/mesh/mesh_weld.hpp"
-#include "render/vk/pipeline_builder.hpp"
-#include "render/vk/stats.hpp"
 #include "render/scene/renderer.hpp"
 #include "render/scene/renderer_impl.hpp"
 #include "render/scene/triangle_draws.hpp"
+#include "render/vk/pipeline_builder.hpp"
+#include "render/vk/stats.hpp"
 #include "shaders/spirv.hpp"
 
 namespace pw::render {
@@ -61,23 +61,28 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
         pd.rasterizerDiscard = true;
         pd.depthTest = pd.depthWrite = false;
         pd.patchControlPoints = 16;
-        pd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc},
+        pd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert},
+                     {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc},
                      {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, tese}};
         // Rendering without attachments: nothing is drawn, so the capture never touches the target
         // (the editor's swapchain image belongs to its frame).
         const VkFormat none = VK_FORMAT_UNDEFINED;
-        captureWindows[slot] = OwnedPipeline(dev_.device(), buildPipeline(dev_, pipes_.layout, pipes_.cache, pd, none, none, VK_SAMPLE_COUNT_1_BIT));
+        captureWindows[slot] =
+            OwnedPipeline(dev_.device(), buildPipeline(dev_, pipes_.layout, pipes_.cache, pd, none, none, VK_SAMPLE_COUNT_1_BIT));
         pd.patchControlPoints = 10;
-        pd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert}, {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, ttesc},
+        pd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert},
+                     {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, ttesc},
                      {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, ttese}};
-        captureTriangles[slot] = OwnedPipeline(dev_.device(), buildPipeline(dev_, pipes_.layout, pipes_.cache, pd, none, none, VK_SAMPLE_COUNT_1_BIT));
+        captureTriangles[slot] =
+            OwnedPipeline(dev_.device(), buildPipeline(dev_, pipes_.layout, pipes_.cache, pd, none, none, VK_SAMPLE_COUNT_1_BIT));
     }
 
     // The first try holds the bound from the largest segment count these settings can give (capped:
     // adaptive levels bound it by 64); when the query says more were needed, once more at that size.
     int segments = maxSegments(opt.tess, m.scene.overrideMax, plan.maxLevel);
     if (!plan.levelBounds.empty()) segments = *std::max_element(plan.levelBounds.begin(), plan.levelBounds.end());
-    VkDeviceSize capacity = std::clamp<VkDeviceSize>(captureBound(m.scene, std::max(segments, 1) + 1), 3 * kStride, VkDeviceSize(256) << 20);
+    VkDeviceSize capacity =
+        std::clamp<VkDeviceSize>(captureBound(m.scene, std::max(segments, 1) + 1), 3 * kStride, VkDeviceSize(256) << 20);
     Buffer counter = createBuffer(dev_, 16, VK_BUFFER_USAGE_TRANSFORM_FEEDBACK_COUNTER_BUFFER_BIT_EXT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                   MemoryUse::Readback);
     const OwnedQueryPool query = makeTransformFeedbackQuery(dev_);
@@ -97,14 +102,15 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
         mb.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
         mb.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFORM_FEEDBACK_COUNTER_READ_BIT_EXT;
         vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                             VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT, 0, 1, &mb, 0, nullptr, 0,
-                             nullptr);
+                             VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT, 0, 1, &mb, 0, nullptr,
+                             0, nullptr);
         vkCmdBeginQuery(cmd, query, 0, 0);  // outside rendering, like the statistics query
         VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
         ri.renderArea = area;
         ri.layerCount = 1;
         vkCmdBeginRendering(cmd, &ri);
-        const VkViewport viewport{float(area.offset.x), float(area.offset.y), float(area.extent.width), float(area.extent.height), 0.0f, 1.0f};
+        const VkViewport viewport{
+            float(area.offset.x), float(area.offset.y), float(area.extent.width), float(area.extent.height), 0.0f, 1.0f};
         vkCmdSetViewport(cmd, 0, 1, &viewport);
         vkCmdSetScissor(cmd, 0, 1, &area);
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.layout, 0, 1, &m.set, 0, nullptr);
@@ -135,8 +141,8 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
         vkCmdEndRendering(cmd);
         vkCmdEndQuery(cmd, query, 0);
         VkMemoryBarrier hb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-        hb.srcAccessMask = VK_ACCESS_TRANSFORM_FEEDBACK_WRITE_BIT_EXT | VK_ACCESS_TRANSFORM_FEEDBACK_COUNTER_WRITE_BIT_EXT |
-                           VK_ACCESS_SHADER_WRITE_BIT;
+        hb.srcAccessMask =
+            VK_ACCESS_TRANSFORM_FEEDBACK_WRITE_BIT_EXT | VK_ACCESS_TRANSFORM_FEEDBACK_COUNTER_WRITE_BIT_EXT | VK_ACCESS_SHADER_WRITE_BIT;
         hb.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
         vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFORM_FEEDBACK_BIT_EXT | VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT,
                              VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &hb, 0, nullptr, 0, nullptr);
@@ -146,8 +152,8 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
         const std::array<uint64_t, 2> prims = readTransformFeedbackQuery(dev_, query);  // written, needed
         if (prims[1] > prims[0]) {
             if (attempt > 0)
-                throw OutputError("(capture)", "the GPU made " + std::to_string(prims[1]) + " triangles but wrote only " +
-                                                   std::to_string(prims[0]));
+                throw OutputError("(capture)",
+                                  "the GPU made " + std::to_string(prims[1]) + " triangles but wrote only " + std::to_string(prims[0]));
             capacity = VkDeviceSize(prims[1]) * 3 * kStride;
             continue;
         }

@@ -3,8 +3,8 @@
 #include <algorithm>
 
 #include "core/eval/displacement.hpp"
-#include "core/tess/edge_levels.hpp"
 #include "core/select/picking.hpp"
+#include "core/tess/edge_levels.hpp"
 
 namespace pw::render {
 
@@ -54,8 +54,7 @@ SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc, const HeightMa
         const PatchInstance& pi = inst[w];
         idx.insert(idx.end(), pi.idx.begin(), pi.idx.end());
         const uint32_t kind = pi.basis == Basis::Bezier ? 0u : pi.basis == Basis::BSpline ? 1u : 2u;
-        if (s.runs.empty() || s.runs.back().basisKind != kind ||
-            (kind == 2u && inst[s.runs.back().first].tension != pi.tension)) {
+        if (s.runs.empty() || s.runs.back().basisKind != kind || (kind == 2u && inst[s.runs.back().first].tension != pi.tension)) {
             s.runs.push_back({uint32_t(w), 0, kind, basisPushMatrix(pi.basis, pi.tension)});
         }
         ++s.runs.back().count;
@@ -106,8 +105,8 @@ uint32_t recordWindowDraw(VkCommandBuffer cmd, VkPipelineLayout layout, const Su
     return 0;
 }
 
-uint32_t recordSurfaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t perDraw,
-                            gpu::DrawPush push, const std::vector<uint8_t>* levels, uint32_t vertexBudget) {
+uint32_t recordSurfaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t perDraw, gpu::DrawPush push,
+                            const std::vector<uint8_t>* levels, uint32_t vertexBudget) {
     if (s.windowCount == 0) return 0;
     const VkDeviceSize zero = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, s.pool.buffer.ptr(), &zero);

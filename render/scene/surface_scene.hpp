@@ -6,11 +6,11 @@
 
 #include <vector>
 
-#include "render/vk/buffers.hpp"
+#include "core/gpu/gpu_interface.h"
 #include "core/model/document.hpp"
 #include "core/model/height_map.hpp"
-#include "core/gpu/gpu_interface.h"
 #include "core/tess/tess_levels.hpp"
+#include "render/vk/buffers.hpp"
 
 namespace pw::render {
 
@@ -30,8 +30,8 @@ struct SurfaceScene {
     std::vector<BasisRun> runs;
     // CPU copies for per-frame level bounds (adaptive batching).
     std::vector<glm::vec3> cpuPoints;
-    std::vector<uint32_t> cpuIndices;         // 16 per window
-    std::vector<float> overrideLevel;          // per window: largest override level, 0 = none
+    std::vector<uint32_t> cpuIndices;  // 16 per window
+    std::vector<float> overrideLevel;  // per window: largest override level, 0 = none
     // Bézier triangles: 10 uint32 pool indices each; their gpu::PatchData follows the windows' in
     // patchData (triangle t is entry windowCount + t).
     Buffer triIndices;
@@ -55,9 +55,8 @@ SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc, const HeightMa
 // One window alone (the curvature graph across a join); 0 draws for a window the scene lacks.
 uint32_t recordWindowDraw(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t window, gpu::DrawPush push);
 
-uint32_t recordSurfaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t perDraw,
-                            gpu::DrawPush push, const std::vector<uint8_t>* levels = nullptr,
-                            uint32_t vertexBudget = kCpuDrawVertexBudget);
+uint32_t recordSurfaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t perDraw, gpu::DrawPush push,
+                            const std::vector<uint8_t>* levels = nullptr, uint32_t vertexBudget = kCpuDrawVertexBudget);
 
 glm::mat4 basisPushMatrix(Basis basis, double tension);
 

@@ -13,13 +13,11 @@ namespace pw::render {
 
 // Binds the pool and the triangle index buffer and issues the draws; patchBase is
 // windowCount + first triangle (their gpu::PatchData follows the windows'). Returns the number of draws.
-uint32_t recordTriangleDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t perDraw,
-                             gpu::DrawPush push);
+uint32_t recordTriangleDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t perDraw, gpu::DrawPush push);
 
 // Binds the pool and the curve index buffer and draws every Bézier curve (patch lists of 4 control
 // points through the isoline domain): a curve has at most 65 evaluation vertices, so a draw holds
 // vertexBudget / 65 curves (lavapipe: 63; 0 = no budget, one draw). Returns the number of draws.
-uint32_t recordCurveDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, gpu::DrawPush push,
-                          uint32_t vertexBudget);
+uint32_t recordCurveDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, gpu::DrawPush push, uint32_t vertexBudget);
 
 }  // namespace pw::render

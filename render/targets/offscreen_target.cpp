@@ -7,14 +7,13 @@ namespace pw::render {
 OffscreenTarget::OffscreenTarget(Device& dev, uint32_t width, uint32_t height, bool msaa)
     : dev_(dev), extent_{width, height}, samples_(msaa ? dev.caps().maxSamples : VkSampleCountFlagBits(VK_SAMPLE_COUNT_1_BIT)) {
     const bool ms = samples_ != VK_SAMPLE_COUNT_1_BIT;
-    color_ = createImage(dev, extent_, colorFormat(), samples_,
-                         VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | (ms ? 0u : uint32_t(VK_IMAGE_USAGE_TRANSFER_SRC_BIT)),
-                         VK_IMAGE_ASPECT_COLOR_BIT);
+    color_ =
+        createImage(dev, extent_, colorFormat(), samples_,
+                    VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | (ms ? 0u : uint32_t(VK_IMAGE_USAGE_TRANSFER_SRC_BIT)), VK_IMAGE_ASPECT_COLOR_BIT);
     if (ms)
         resolve_ = createImage(dev, extent_, colorFormat(), VK_SAMPLE_COUNT_1_BIT,
                                VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
-    depth_ = createImage(dev, extent_, depthFormat(), samples_, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
-                         VK_IMAGE_ASPECT_DEPTH_BIT);
+    depth_ = createImage(dev, extent_, depthFormat(), samples_, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT);
     readbackBuf_ = createBuffer(dev, VkDeviceSize(width) * height * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback);
 }
 
@@ -28,9 +27,9 @@ void OffscreenTarget::pauseRendering(VkCommandBuffer cmd) { pauseColorDepthRende
 
 void OffscreenTarget::resumeRendering(VkCommandBuffer cmd) {
     if (readImageInTransferSrc_) {  // a later submission draws on top of a finished frame (comparison panes)
-        imageBarrier(cmd, resolve_.image ? resolve_.image : color_.image, VK_IMAGE_ASPECT_COLOR_BIT,
-                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                     VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+        imageBarrier(cmd, resolve_.image ? resolve_.image : color_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                     VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT,
+                     VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                      VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT);
         readImageInTransferSrc_ = false;
     }

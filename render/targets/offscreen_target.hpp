@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "render/vk/buffers.hpp"
 #include "render/targets/render_target.hpp"
+#include "render/vk/buffers.hpp"
 
 namespace pw::render {
 

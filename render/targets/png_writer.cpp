@@ -14,7 +14,9 @@ std::string encodePng(const std::filesystem::path& path, uint32_t width, uint32_
     std::vector<uint8_t> opaque(rgba.begin(), rgba.begin() + size_t(width) * height * 4);
     for (size_t i = 3; i < opaque.size(); i += 4) opaque[i] = 255;
     std::string png;
-    const auto append = [](void* out, void* data, int size) { static_cast<std::string*>(out)->append(static_cast<char*>(data), size_t(size)); };
+    const auto append = [](void* out, void* data, int size) {
+        static_cast<std::string*>(out)->append(static_cast<char*>(data), size_t(size));
+    };
     if (!stbi_write_png_to_func(append, &png, int(width), int(height), 4, opaque.data(), int(width * 4)))
         throw OutputError(path.string(), "PNG encoding failed");
     return png;

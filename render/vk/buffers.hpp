@@ -4,8 +4,8 @@
 
 #include <vulkan/vulkan.h>
 
-#include <cstddef>
 #include <algorithm>
+#include <cstddef>
 #include <cstring>
 #include <utility>
 #include <vector>

@@ -6,8 +6,8 @@
 #include <cstring>
 #include <iostream>
 
-#include "core/tess/tess_levels.hpp"
 #include <sstream>
+#include "core/tess/tess_levels.hpp"
 
 #include "core/base/errors.hpp"
 
@@ -15,18 +15,30 @@ namespace pw::render {
 
 const char* vkResultName(VkResult r) {
     switch (r) {
-        case VK_SUCCESS: return "VK_SUCCESS";
-        case VK_NOT_READY: return "VK_NOT_READY";
-        case VK_TIMEOUT: return "VK_TIMEOUT";
-        case VK_ERROR_OUT_OF_HOST_MEMORY: return "VK_ERROR_OUT_OF_HOST_MEMORY";
-        case VK_ERROR_OUT_OF_DEVICE_MEMORY: return "VK_ERROR_OUT_OF_DEVICE_MEMORY";
-        case VK_ERROR_INITIALIZATION_FAILED: return "VK_ERROR_INITIALIZATION_FAILED";
-        case VK_ERROR_DEVICE_LOST: return "VK_ERROR_DEVICE_LOST";
-        case VK_ERROR_LAYER_NOT_PRESENT: return "VK_ERROR_LAYER_NOT_PRESENT";
-        case VK_ERROR_EXTENSION_NOT_PRESENT: return "VK_ERROR_EXTENSION_NOT_PRESENT";
-        case VK_ERROR_FEATURE_NOT_PRESENT: return "VK_ERROR_FEATURE_NOT_PRESENT";
-        case VK_ERROR_INCOMPATIBLE_DRIVER: return "VK_ERROR_INCOMPATIBLE_DRIVER";
-        default: return "VkResult error";
+        case VK_SUCCESS:
+            return "VK_SUCCESS";
+        case VK_NOT_READY:
+            return "VK_NOT_READY";
+        case VK_TIMEOUT:
+            return "VK_TIMEOUT";
+        case VK_ERROR_OUT_OF_HOST_MEMORY:
+            return "VK_ERROR_OUT_OF_HOST_MEMORY";
+        case VK_ERROR_OUT_OF_DEVICE_MEMORY:
+            return "VK_ERROR_OUT_OF_DEVICE_MEMORY";
+        case VK_ERROR_INITIALIZATION_FAILED:
+            return "VK_ERROR_INITIALIZATION_FAILED";
+        case VK_ERROR_DEVICE_LOST:
+            return "VK_ERROR_DEVICE_LOST";
+        case VK_ERROR_LAYER_NOT_PRESENT:
+            return "VK_ERROR_LAYER_NOT_PRESENT";
+        case VK_ERROR_EXTENSION_NOT_PRESENT:
+            return "VK_ERROR_EXTENSION_NOT_PRESENT";
+        case VK_ERROR_FEATURE_NOT_PRESENT:
+            return "VK_ERROR_FEATURE_NOT_PRESENT";
+        case VK_ERROR_INCOMPATIBLE_DRIVER:
+            return "VK_ERROR_INCOMPATIBLE_DRIVER";
+        default:
+            return "VkResult error";
     }
 }
 
@@ -40,8 +52,7 @@ namespace {
 
 std::atomic<uint64_t> g_validationMessages{0};
 
-VKAPI_ATTR VkBool32 VKAPI_CALL debugCallback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
-                                             VkDebugUtilsMessageTypeFlagsEXT /*types*/,
+VKAPI_ATTR VkBool32 VKAPI_CALL debugCallback(VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT /*types*/,
                                              const VkDebugUtilsMessengerCallbackDataEXT* data, void*) {
     if (severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT) {
         ++g_validationMessages;
@@ -79,11 +90,16 @@ bool hasDeviceExtension(VkPhysicalDevice d, const char* name) {
 
 int typeRank(VkPhysicalDeviceType t) {
     switch (t) {
-        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 0;
-        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 1;
-        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
-        case VK_PHYSICAL_DEVICE_TYPE_CPU: return 3;
-        default: return 4;
+        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+            return 0;
+        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+            return 1;
+        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+            return 2;
+        case VK_PHYSICAL_DEVICE_TYPE_CPU:
+            return 3;
+        default:
+            return 4;
     }
 }
 
@@ -163,8 +179,8 @@ Device::Device(const DeviceOptions& options) {
     try {
         // Step 1: debug messenger (counts and prints every warning/error of the validation layer).
         if (validation) {
-            auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
-                vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
+            auto create =
+                reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
             VkDebugUtilsMessengerCreateInfoEXT mi{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
             mi.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
             mi.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
@@ -221,8 +237,9 @@ Device::Device(const DeviceOptions& options) {
         caps_.timestampPeriodNs = props_.limits.timestampPeriod;
         caps_.maxTessLevel = props_.limits.maxTessellationGenerationLevel;
         const VkSampleCountFlags both = props_.limits.framebufferColorSampleCounts & props_.limits.framebufferDepthSampleCounts;
-        caps_.maxSamples = (both & VK_SAMPLE_COUNT_4_BIT) ? VK_SAMPLE_COUNT_4_BIT
-                           : (both & VK_SAMPLE_COUNT_2_BIT) ? VK_SAMPLE_COUNT_2_BIT : VK_SAMPLE_COUNT_1_BIT;
+        caps_.maxSamples = (both & VK_SAMPLE_COUNT_4_BIT)   ? VK_SAMPLE_COUNT_4_BIT
+                           : (both & VK_SAMPLE_COUNT_2_BIT) ? VK_SAMPLE_COUNT_2_BIT
+                                                            : VK_SAMPLE_COUNT_1_BIT;
 
         // Step 4: a graphics queue.
         uint32_t qn = 0;
@@ -247,8 +264,8 @@ Device::Device(const DeviceOptions& options) {
         for (VkBool32 VkPhysicalDeviceFeatures::*m :
              {&VkPhysicalDeviceFeatures::geometryShader, &VkPhysicalDeviceFeatures::pipelineStatisticsQuery,
               &VkPhysicalDeviceFeatures::wideLines, &VkPhysicalDeviceFeatures::largePoints,
-              &VkPhysicalDeviceFeatures::vertexPipelineStoresAndAtomics,
-              &VkPhysicalDeviceFeatures::shaderTessellationAndGeometryPointSize, &VkPhysicalDeviceFeatures::depthBiasClamp})
+              &VkPhysicalDeviceFeatures::vertexPipelineStoresAndAtomics, &VkPhysicalDeviceFeatures::shaderTessellationAndGeometryPointSize,
+              &VkPhysicalDeviceFeatures::depthBiasClamp})
             enable.*m = f.*m;
         VkPhysicalDeviceVulkan13Features e13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
         e13.dynamicRendering = VK_TRUE;
@@ -287,7 +304,8 @@ Device::Device(const DeviceOptions& options) {
         if (caps_.transformFeedback) {
             xfb_.bind = reinterpret_cast<PFN_vkCmdBindTransformFeedbackBuffersEXT>(
                 vkGetDeviceProcAddr(device_, "vkCmdBindTransformFeedbackBuffersEXT"));
-            xfb_.begin = reinterpret_cast<PFN_vkCmdBeginTransformFeedbackEXT>(vkGetDeviceProcAddr(device_, "vkCmdBeginTransformFeedbackEXT"));
+            xfb_.begin =
+                reinterpret_cast<PFN_vkCmdBeginTransformFeedbackEXT>(vkGetDeviceProcAddr(device_, "vkCmdBeginTransformFeedbackEXT"));
             xfb_.end = reinterpret_cast<PFN_vkCmdEndTransformFeedbackEXT>(vkGetDeviceProcAddr(device_, "vkCmdEndTransformFeedbackEXT"));
             caps_.transformFeedback = xfb_.bind && xfb_.begin && xfb_.end;
         }
@@ -313,8 +331,8 @@ Device::~Device() {
         device_ = VK_NULL_HANDLE;
     }
     if (messenger_) {
-        auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-            vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
+        auto destroy =
+            reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
         if (destroy) destroy(instance_, messenger_, nullptr);
         messenger_ = VK_NULL_HANDLE;
     }
@@ -324,9 +342,7 @@ Device::~Device() {
     }
 }
 
-uint32_t Device::drawVertexBudget() const {
-    return props_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? kCpuDrawVertexBudget : 0u;
-}
+uint32_t Device::drawVertexBudget() const { return props_.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? kCpuDrawVertexBudget : 0u; }
 
 uint32_t Device::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags flags) const {
     for (uint32_t i = 0; i < memProps_.memoryTypeCount; ++i)

@@ -16,8 +16,8 @@
 namespace pw::render {
 
 struct DeviceOptions {
-    std::string name;         // substring of the device name; empty = best available
-    bool validation = false;  // also enabled by PATCHWORK_VALIDATION=1
+    std::string name;                             // substring of the device name; empty = best available
+    bool validation = false;                      // also enabled by PATCHWORK_VALIDATION=1
     std::vector<const char*> instanceExtensions;  // e.g. surface extensions (editor)
     std::vector<const char*> deviceExtensions;    // e.g. VK_KHR_swapchain (editor)
 };

@@ -20,8 +20,7 @@ struct ColorDepthAttachments {
 void discardDepthToAttachment(VkCommandBuffer cmd, VkImage depth);
 
 // vkCmdBeginRendering with both attachments cleared (`load` false) or loaded (`load` true).
-void beginColorDepthRendering(VkCommandBuffer cmd, const ColorDepthAttachments& at, bool load,
-                              const std::array<float, 4>& clear);
+void beginColorDepthRendering(VkCommandBuffer cmd, const ColorDepthAttachments& at, bool load, const std::array<float, 4>& clear);
 
 // vkCmdEndRendering, then a barrier ordering the attachment writes before the next pass's loads.
 void pauseColorDepthRendering(VkCommandBuffer cmd);

@@ -11,8 +11,8 @@ VkShaderModule makeModule(Device& dev, const spirv::Blob& blob) {
     return m;
 }
 
-VkPipeline buildPipeline(Device& dev, VkPipelineLayout layout, VkPipelineCache cache, const PipelineDesc& d, VkFormat color,
-                         VkFormat depth, VkSampleCountFlagBits samples) {
+VkPipeline buildPipeline(Device& dev, VkPipelineLayout layout, VkPipelineCache cache, const PipelineDesc& d, VkFormat color, VkFormat depth,
+                         VkSampleCountFlagBits samples) {
     std::vector<VkPipelineShaderStageCreateInfo> stages;
     for (auto& [stage, module] : d.stages) {
         VkPipelineShaderStageCreateInfo s{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
@@ -70,9 +70,14 @@ VkPipeline buildPipeline(Device& dev, VkPipelineLayout layout, VkPipelineCache c
     ds.depthWriteEnable = d.depthWrite;
     ds.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
     // Blending "over" (colour by source alpha, alpha accumulated), or none; all four channels written.
-    const VkPipelineColorBlendAttachmentState cb{VkBool32(d.blend), VK_BLEND_FACTOR_SRC_ALPHA, VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
-                                                 VK_BLEND_OP_ADD, VK_BLEND_FACTOR_ONE, VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
-                                                 VK_BLEND_OP_ADD, 0xf};
+    const VkPipelineColorBlendAttachmentState cb{VkBool32(d.blend),
+                                                 VK_BLEND_FACTOR_SRC_ALPHA,
+                                                 VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
+                                                 VK_BLEND_OP_ADD,
+                                                 VK_BLEND_FACTOR_ONE,
+                                                 VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
+                                                 VK_BLEND_OP_ADD,
+                                                 0xf};
     VkPipelineColorBlendStateCreateInfo cbs{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
     cbs.attachmentCount = 1;
     cbs.pAttachments = &cb;

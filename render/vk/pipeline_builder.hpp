@@ -19,7 +19,7 @@ struct PipelineDesc {
     uint32_t patchControlPoints = 16;
     VkPolygonMode polygon = VK_POLYGON_MODE_FILL;
     bool depthTest = true, depthWrite = true, depthBias = false;
-    bool blend = false;  // source-alpha blending (translucent lines)
+    bool blend = false;              // source-alpha blending (translucent lines)
     bool rasterizerDiscard = false;  // nothing rasterised (transform feedback capture)
     int vertexLayout = 0;  // -1: none; 0: the pool (vec4: position, weight); 1: position, normal, uv (mesh); 2: position + rgba colour;
                            // 3: position, normal (mesh, lean varyings)
@@ -29,7 +29,7 @@ VkShaderModule makeModule(Device& dev, const spirv::Blob& blob);
 
 // A pipeline for dynamic rendering into one colour attachment of `color` and a `depth` attachment
 // (VK_FORMAT_UNDEFINED for both: no attachments), with dynamic viewport and scissor.
-VkPipeline buildPipeline(Device& dev, VkPipelineLayout layout, VkPipelineCache cache, const PipelineDesc& d, VkFormat color,
-                         VkFormat depth, VkSampleCountFlagBits samples);
+VkPipeline buildPipeline(Device& dev, VkPipelineLayout layout, VkPipelineCache cache, const PipelineDesc& d, VkFormat color, VkFormat depth,
+                         VkSampleCountFlagBits samples);
 
 }  // namespace pw::render

@@ -16,13 +16,21 @@ constexpr VkQueryPipelineStatisticFlags kStatFlags =
 
 nlohmann::json statsJson(const FrameStats& s) {
     // Grouped as the stats read: pipeline counts, patches and draws, times.
-    return {
-        {"triangles", s.triangles()}, {"clipping_invocations", s.clippingInvocations}, {"clipping_primitives", s.clippingPrimitives},
-        {"tess_eval_invocations", s.tesInvocations}, {"tess_control_patches", s.tcsPatches}, {"input_primitives", s.inputPrimitives},
-        {"pipeline_statistics", s.pipelineStatsValid},
-        {"patches", s.patches}, {"patches_culled", s.patchesCulled}, {"draws", s.draws},
-        {"displaced_edges", s.displacedEdges}, {"displacement_level", s.displacementLevel},
-        {"gpu_ms", s.gpuMs}, {"wall_ms", s.wallMs}, {"submit_wait_ms", s.submitMs}};
+    return {{"triangles", s.triangles()},
+            {"clipping_invocations", s.clippingInvocations},
+            {"clipping_primitives", s.clippingPrimitives},
+            {"tess_eval_invocations", s.tesInvocations},
+            {"tess_control_patches", s.tcsPatches},
+            {"input_primitives", s.inputPrimitives},
+            {"pipeline_statistics", s.pipelineStatsValid},
+            {"patches", s.patches},
+            {"patches_culled", s.patchesCulled},
+            {"draws", s.draws},
+            {"displaced_edges", s.displacedEdges},
+            {"displacement_level", s.displacementLevel},
+            {"gpu_ms", s.gpuMs},
+            {"wall_ms", s.wallMs},
+            {"submit_wait_ms", s.submitMs}};
 }
 
 std::string statsToJson(const FrameStats& s, int indent) { return statsJson(s).dump(indent); }

@@ -21,11 +21,11 @@ struct FrameStats {
     double submitMs = 0.0;  // submit + wait
     double gpuMs = -1.0;    // timestamps; -1 when unsupported
     bool pipelineStatsValid = false;
-    uint64_t inputPrimitives = 0;       // patches (or plain triangles) fed to the surface pass
-    uint64_t tcsPatches = 0;            // control shader patches
-    uint64_t tesInvocations = 0;        // evaluation shader invocations
-    uint64_t clippingInvocations = 0;   // triangles reaching the clipper = triangles drawn
-    uint64_t clippingPrimitives = 0;    // primitives leaving the clipper
+    uint64_t inputPrimitives = 0;      // patches (or plain triangles) fed to the surface pass
+    uint64_t tcsPatches = 0;           // control shader patches
+    uint64_t tesInvocations = 0;       // evaluation shader invocations
+    uint64_t clippingInvocations = 0;  // triangles reaching the clipper = triangles drawn
+    uint64_t clippingPrimitives = 0;   // primitives leaving the clipper
     uint32_t patchesCulled = 0;
     uint32_t displacedEdges = 0;     // window edges whose level the height map's detail raised (adaptive)
     uint32_t displacementLevel = 0;  // the largest of those levels

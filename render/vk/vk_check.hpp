@@ -19,8 +19,8 @@ const char* vkResultName(VkResult r);
 
 }  // namespace pw::render
 
-#define VK_CHECK(call)                                                                   \
-    do {                                                                                 \
-        const VkResult pw_vk_result_ = (call);                                           \
+#define VK_CHECK(call)                                                                                         \
+    do {                                                                                                       \
+        const VkResult pw_vk_result_ = (call);                                                                 \
         if (pw_vk_result_ != VK_SUCCESS) ::pw::render::throwVkError(pw_vk_result_, #call, __FILE__, __LINE__); \
     } while (0)

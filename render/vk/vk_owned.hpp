@@ -40,7 +40,7 @@ public:
     }
     H get() const { return handle_; }
     const H* ptr() const { return &handle_; }  // for Vulkan calls that take an array of one
-    operator H() const { return handle_; }  // NOLINT: passes straight into Vulkan calls
+    operator H() const { return handle_; }     // NOLINT: passes straight into Vulkan calls
     explicit operator bool() const { return handle_ != H(VK_NULL_HANDLE); }
 
 private:
@@ -72,8 +72,7 @@ public:
     OwnedCommandBuffer() = default;
     OwnedCommandBuffer(VkDevice device, VkCommandPool pool);  // allocates one
     ~OwnedCommandBuffer() { reset(); }
-    OwnedCommandBuffer(OwnedCommandBuffer&& o) noexcept
-        : device_(o.device_), pool_(o.pool_), cmd_(std::exchange(o.cmd_, VK_NULL_HANDLE)) {}
+    OwnedCommandBuffer(OwnedCommandBuffer&& o) noexcept : device_(o.device_), pool_(o.pool_), cmd_(std::exchange(o.cmd_, VK_NULL_HANDLE)) {}
     OwnedCommandBuffer& operator=(OwnedCommandBuffer&& o) noexcept {
         if (this != &o) {
             reset();

@@ -13,13 +13,13 @@
 #include "core/model/camera_math.hpp"
 #include "core/model/topology.hpp"
 
-#include "core/io/document_io.hpp"
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
+#include "core/io/document_io.hpp"
 #include "core/select/picking.hpp"
 #include "core/select/selection_ops.hpp"
-#include "render/vk/device.hpp"
 #include "render/scene/renderer.hpp"
+#include "render/vk/device.hpp"
 #include "ui/platform/swapchain_target.hpp"
 
 namespace pw::ui {
@@ -236,7 +236,6 @@ void Editor::idleTick() {
         autosaveError_ = std::string("Autosave failed: ") + e.what();
     }
 }
-
 
 int Editor::run() {
     window_.run(*this);

@@ -15,20 +15,20 @@
 
 #include <glm/vec2.hpp>
 
+#include "core/commands/command_table.hpp"
 #include "core/edit/autosave.hpp"
 #include "core/edit/background_writer.hpp"
-#include "core/commands/command_table.hpp"
 #include "core/edit/drag_controller.hpp"
-#include "core/select/edge_pick.hpp"
 #include "core/edit/edit_session.hpp"
-#include "ui/platform/app_window.hpp"
+#include "core/select/edge_pick.hpp"
+#include "ui/editor/test_trace.hpp"
 #include "ui/panels/command_panels.hpp"
 #include "ui/panels/dialogs.hpp"
 #include "ui/panels/panel_context.hpp"
 #include "ui/panels/panel_shaders.hpp"
 #include "ui/panels/side_panels.hpp"
 #include "ui/panels/teaching.hpp"
-#include "ui/editor/test_trace.hpp"
+#include "ui/platform/app_window.hpp"
 #include "ui/platform/shortcuts.hpp"
 
 namespace pw::render {
@@ -45,11 +45,11 @@ int runEditor(const std::string& file);
 // `patchwork bench --editor`: the editor's frame cost while a control point is dragged (G grab, the
 // mouse moving every frame), against a bare offscreen render of the same view in the same run.
 struct EditorBenchOptions {
-    std::string file;          // empty: the built-in teapot
-    int frames = 100;          // measured frames
+    std::string file;                // empty: the built-in teapot
+    int frames = 100;                // measured frames
     int width = 1280, height = 720;  // window size (pixels at content scale 1)
-    float level = 16.0f;       // uniform tessellation level of the benchmarked document
-    std::string json;          // write the results here as JSON when not empty
+    float level = 16.0f;             // uniform tessellation level of the benchmarked document
+    std::string json;                // write the results here as JSON when not empty
 };
 // Needs a display (Xvfb will do); returns the exit code (2 without a display).
 int runEditorBench(const EditorBenchOptions& options);
@@ -61,7 +61,7 @@ enum class Interaction { None, Orbit, Pan, BoxSelect, PendingDrag, DragPoints, G
 struct JoinToolState {
     bool on = false;
     std::optional<PatchEdge> first, hover;  // the first pick; the open edge under the mouse
-    bool preview = false;                    // the join a-b is applied, waiting for Apply or Cancel
+    bool preview = false;                   // the join a-b is applied, waiting for Apply or Cancel
     PatchEdge a, b;
     Continuity continuity = Continuity::C1;
     uint64_t version = 0;  // the session's version right after the preview ran
@@ -82,8 +82,8 @@ struct EditorSnapshot {
     std::array<int, 2> windowSize, framebufferSize;
     uint64_t frame = 0;
     Interaction mode = Interaction::None;
-    int hovered = -1;  // the control point under the mouse
-    bool help = false;  // the F1 window is open
+    int hovered = -1;                          // the control point under the mouse
+    bool help = false;                         // the F1 window is open
     std::array<float, 4> axisGizmo, viewArea;  // window pixels: x, y, w, h
     PanelLayout layout;
 };
@@ -98,7 +98,6 @@ public:
     EditorSnapshot snapshot() const;
 
 private:
-
     // editor.cpp: documents, commands, autosave, the frame
     void setDocument(Document doc, const std::string& path);
     void documentReplaced();  // after the session's document was replaced: view, title, recent files
@@ -151,7 +150,7 @@ private:
     void status(const std::string& message) override;
     void domainFigure(const std::string& path) override;    // editor_figures.cpp
     void sweepAnimation(const std::string& path) override;  // editor_figures.cpp
-    std::vector<KeyBinding> keyBindings_;  // from the command table's shortcuts (keyBindingsOf)
+    std::vector<KeyBinding> keyBindings_;                   // from the command table's shortcuts (keyBindingsOf)
     void bindShortcuts();
     void runShortcuts();  // the table's keys pressed this frame
 
@@ -175,8 +174,8 @@ private:
     // join_tool.cpp: join by picking (J), its state a JoinToolState.
     void setJoinTool(bool on);
     void joinToolInput(double mx, double my, bool overUi);
-    void joinPreview(Continuity c);   // runs `join a b c`
-    void endJoinPreview(bool keep);   // keep it, or undo it and go back to the second pick
+    void joinPreview(Continuity c);  // runs `join a b c`
+    void endJoinPreview(bool keep);  // keep it, or undo it and go back to the second pick
     void drawJoinPanel();
     void drawJoinOverlay(const std::function<void(const Vec3&, const Vec3&, unsigned, float)>& line) const;
     void drawPaneOverlays(const std::array<float, 4>& pane, bool active);  // selection, gizmo of one pane
@@ -189,9 +188,9 @@ private:
     Document& doc_ = session_.doc;
     Selection& sel_ = session_.sel;
     Camera& cam_ = session_.camera;
-    Edge& lastEdge_ = session_.activeEdge;  // edge nearest the last surface click (extrude, unjoin)
+    Edge& lastEdge_ = session_.activeEdge;                          // edge nearest the last surface click (extrude, unjoin)
     uint64_t seenVersion_ = 0, seenTopology_ = 0, seenSerial_ = 0;  // the session as last drawn
-    uint64_t docVersion_ = 0;  // bumped by every edit and settings change (caches of the document)
+    uint64_t docVersion_ = 0;                                       // bumped by every edit and settings change (caches of the document)
     std::vector<bool> usedMask_;
     // The document's height map (displacement), loaded when the file it names changes; a map that
     // cannot be read leaves the surface undisplaced and says why once.
@@ -216,9 +215,9 @@ private:
 
     // The frame.
     uint64_t frameCount_ = 0;
-    FrameReport report_;  // the last frame's times and the 3D view's statistics
+    FrameReport report_;          // the last frame's times and the 3D view's statistics
     ContinuityWatch continuity_;  // the joins' measured continuity, updated every frame (live next to a drag)
-    double dragMs_ = 0.0;  // this frame's drag solve + upload
+    double dragMs_ = 0.0;         // this frame's drag solve + upload
     bool screenshotRequested_ = false;
     std::string screenshotPath_;
     bool quit_ = false;
@@ -230,8 +229,8 @@ private:
     std::vector<std::string> recent_;
     std::string status_;
     std::chrono::steady_clock::time_point statusTime_;
-    std::string autosaveError_;                   // shown until an autosave succeeds
-    BackgroundWriter exports_;                    // exports, written while the window goes on
+    std::string autosaveError_;  // shown until an autosave succeeds
+    BackgroundWriter exports_;   // exports, written while the window goes on
 
     // The panels.
     TestTrace trace_;

@@ -13,17 +13,17 @@
 
 #include <imgui.h>
 
-#include "core/model/camera_math.hpp"
-#include "core/solve/constraint_solver.hpp"
-#include "render/vk/device.hpp"
-#include "ui/editor/editor.hpp"
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
-#include "render/targets/offscreen_target.hpp"
+#include "core/model/camera_math.hpp"
 #include "core/select/picking.hpp"
+#include "core/solve/constraint_solver.hpp"
 #include "render/scene/renderer.hpp"
-#include "ui/platform/swapchain_target.hpp"
+#include "render/targets/offscreen_target.hpp"
+#include "render/vk/device.hpp"
+#include "ui/editor/editor.hpp"
 #include "ui/platform/app_window.hpp"
+#include "ui/platform/swapchain_target.hpp"
 
 namespace pw::ui {
 
@@ -109,15 +109,16 @@ int Editor::runBench(const EditorBenchOptions& opt) {
     // Step 6: report.
     const double frameMed = median(total), bareMed = median(bareMs);
     std::printf("editor bench: %s, %zu patches at level %g, %ux%u window, %s, %d frames of a G drag, medians\n",
-                session_.path().empty() ? "built-in teapot" : session_.path().c_str(), expandPatches(doc_).size(), double(opt.level), ext.width,
-                ext.height, window_.device().name().c_str(), opt.frames);
-    std::printf("  editor frame     %8.2f ms   (UI %.2f, of it drag solve + upload %.3f; acquire %.2f; 3D view %.2f; ImGui + present %.2f)\n",
-                frameMed, median(ui), median(drag), median(acquire), median(view), median(present));
+                session_.path().empty() ? "built-in teapot" : session_.path().c_str(), expandPatches(doc_).size(), double(opt.level),
+                ext.width, ext.height, window_.device().name().c_str(), opt.frames);
+    std::printf(
+        "  editor frame     %8.2f ms   (UI %.2f, of it drag solve + upload %.3f; acquire %.2f; 3D view %.2f; ImGui + present %.2f)\n",
+        frameMed, median(ui), median(drag), median(acquire), median(view), median(present));
     std::printf("  bare render      %8.2f ms   (the same view offscreen: record, submit, wait)\n", bareMed);
     std::printf("  editor overhead  %8.2f ms   (frame - bare render); %llu triangles a frame\n", frameMed - bareMed,
                 (unsigned long long)stats.triangles());
-    std::printf("  point %d moved up to %.4g (model size %.4g), largest join residual %.3g, restored by Esc: %s\n", point, moved,
-                size, residual, restored ? "yes" : "no");
+    std::printf("  point %d moved up to %.4g (model size %.4g), largest join residual %.3g, restored by Esc: %s\n", point, moved, size,
+                residual, restored ? "yes" : "no");
     if (!opt.json.empty()) {
         const nlohmann::json j{{"device", window_.device().name()},
                                {"width", ext.width},

@@ -6,13 +6,13 @@
 #include <cstdio>
 #include <ctime>
 
-#include "core/io/document_io.hpp"
 #include "core/base/file_io.hpp"
+#include "core/io/document_io.hpp"
 #include "core/select/selection_ops.hpp"
-#include "ui/platform/swapchain_target.hpp"
-#include "ui/platform/app_window.hpp"
 #include "ui/editor/editor.hpp"
+#include "ui/platform/app_window.hpp"
 #include "ui/platform/shortcuts.hpp"
+#include "ui/platform/swapchain_target.hpp"
 
 namespace pw::ui {
 
@@ -47,7 +47,7 @@ std::optional<TriangleMesh> Editor::displayedMesh(Document& doc, ExportOptions& 
     options.viewport = {int(e.width), int(e.height)};
     if (anyHidden(doc)) doc = visibleDocument(doc);
     status("As displayed: " + std::to_string(c.gpuTriangles) + " triangles from the tessellator" +
-              (c.patchesCulled ? ", " + std::to_string(c.patchesCulled) + " patches culled as on screen" : std::string()));
+           (c.patchesCulled ? ", " + std::to_string(c.patchesCulled) + " patches culled as on screen" : std::string()));
     return std::move(c.mesh);
 }
 
@@ -63,7 +63,7 @@ void Editor::exportFile(const Document& doc, const std::string& path) {
     Document copy = doc;
     ExportOptions options = session_.exportOptions;
     std::optional<TriangleMesh> displayed = displayedMesh(copy, options, path);  // on this thread: it uses the GPU
-    exports_.enqueue(std::move(copy), path, options, std::move(displayed));  // the status line shows it until it is done
+    exports_.enqueue(std::move(copy), path, options, std::move(displayed));      // the status line shows it until it is done
     wake();
 }
 
@@ -80,28 +80,52 @@ void Editor::fileDialog(FileDialogKind kind) {
 
 void Editor::toggle(WindowToggle which) {
     switch (which) {
-        case WindowToggle::Help: showHelp_ = !showHelp_; break;
-        case WindowToggle::Palette: palette_.toggle(); break;
-        case WindowToggle::Presentation: teaching_.setPresentation(*this, !teaching_.presentation); break;
-        case WindowToggle::DomainView: teaching_.showDomain = !teaching_.showDomain; break;
-        case WindowToggle::ShaderPanel: shaders_.open = !shaders_.open; break;
-        case WindowToggle::GroundGrid: showGround_ = !showGround_; break;
-        case WindowToggle::JoinTool: setJoinTool(!join_.on); break;
-        case WindowToggle::XRay: xray_ = !xray_; break;
+        case WindowToggle::Help:
+            showHelp_ = !showHelp_;
+            break;
+        case WindowToggle::Palette:
+            palette_.toggle();
+            break;
+        case WindowToggle::Presentation:
+            teaching_.setPresentation(*this, !teaching_.presentation);
+            break;
+        case WindowToggle::DomainView:
+            teaching_.showDomain = !teaching_.showDomain;
+            break;
+        case WindowToggle::ShaderPanel:
+            shaders_.open = !shaders_.open;
+            break;
+        case WindowToggle::GroundGrid:
+            showGround_ = !showGround_;
+            break;
+        case WindowToggle::JoinTool:
+            setJoinTool(!join_.on);
+            break;
+        case WindowToggle::XRay:
+            xray_ = !xray_;
+            break;
     }
     wake();
 }
 
 bool Editor::toggled(WindowToggle which) const {
     switch (which) {
-        case WindowToggle::Help: return showHelp_;
-        case WindowToggle::Palette: return palette_.open;
-        case WindowToggle::Presentation: return teaching_.presentation;
-        case WindowToggle::DomainView: return teaching_.showDomain;
-        case WindowToggle::ShaderPanel: return shaders_.open;
-        case WindowToggle::GroundGrid: return showGround_;
-        case WindowToggle::JoinTool: return join_.on;
-        case WindowToggle::XRay: return xray_;
+        case WindowToggle::Help:
+            return showHelp_;
+        case WindowToggle::Palette:
+            return palette_.open;
+        case WindowToggle::Presentation:
+            return teaching_.presentation;
+        case WindowToggle::DomainView:
+            return teaching_.showDomain;
+        case WindowToggle::ShaderPanel:
+            return shaders_.open;
+        case WindowToggle::GroundGrid:
+            return showGround_;
+        case WindowToggle::JoinTool:
+            return join_.on;
+        case WindowToggle::XRay:
+            return xray_;
     }
     return false;
 }

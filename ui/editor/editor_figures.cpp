@@ -8,8 +8,8 @@
 #include <cmath>
 #include <memory>
 
-#include "core/base/file_io.hpp"
 #include "core/base/errors.hpp"
+#include "core/base/file_io.hpp"
 
 #include "render/figures/animation_writer.hpp"
 #include "render/figures/domain_figure_file.hpp"
@@ -66,7 +66,8 @@ void Editor::sweepAnimation(const std::string& path) {
         spec.options = viewOptions();
         spec.options.hoveredPoint = spec.options.selectedPoint = -1;
         if (teaching_.viewSplit())
-            for (int i = 0; i < teaching_.paneCount; ++i) spec.modelPanes.push_back({kPaneSpacings[teaching_.paneSpacing[size_t(i)]], 0.0f});
+            for (int i = 0; i < teaching_.paneCount; ++i)
+                spec.modelPanes.push_back({kPaneSpacings[teaching_.paneSpacing[size_t(i)]], 0.0f});
     }
     render::AnimationEncoder encoder(path, *format, spec.width, spec.height, kAnimationFps);
     render::renderSweep(window_.device(), spec, [&](int, const std::vector<uint8_t>& rgba) { encoder.addFrame(rgba); });

@@ -61,9 +61,12 @@ void Editor::joinToolInput(double mx, double my, bool overUi) {
     const ImGuiIO& io = ImGui::GetIO();
     if (!io.WantCaptureKeyboard) {
         if (keyPressed(GLFW_KEY_ESCAPE, 0)) {
-            if (join_.preview) endJoinPreview(false);
-            else if (join_.first) join_.first.reset();
-            else setJoinTool(false);
+            if (join_.preview)
+                endJoinPreview(false);
+            else if (join_.first)
+                join_.first.reset();
+            else
+                setJoinTool(false);
             return;
         }
         if (join_.preview && (keyPressed(GLFW_KEY_ENTER, 0) || keyPressed(GLFW_KEY_KP_ENTER, 0))) {
@@ -91,8 +94,9 @@ void Editor::drawJoinPanel() {
     const ImGuiIO& io = ImGui::GetIO();
     const float left = sidePanels_.layout().left, right = io.DisplaySize.x - sidePanels_.layout().right;
     ImGui::SetNextWindowPos(ImVec2(0.5f * (left + right), ImGui::GetFrameHeight() + 8.0f), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
-    ImGui::Begin("Join by picking", nullptr,
-                 ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove);
+    ImGui::Begin(
+        "Join by picking", nullptr,
+        ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove);
     if (!join_.preview) {
         if (!join_.first)
             ImGui::TextUnformatted("1/2  Click an open edge (it lights up under the mouse)");

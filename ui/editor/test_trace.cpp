@@ -7,9 +7,9 @@
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 
-#include "core/solve/constraint_solver.hpp"
 #include "core/base/file_io.hpp"
 #include "core/select/picking.hpp"
+#include "core/solve/constraint_solver.hpp"
 #include "core/tess/tess_domain.hpp"
 #include "render/vk/device.hpp"
 #include "ui/editor/editor.hpp"
@@ -60,8 +60,11 @@ void TestTrace::write(const EditorSnapshot& e) {
     for (size_t i = 0; i < teaching.domainPanes.size() && i < teaching.domainStats.size(); ++i) {
         const auto& o = teaching.domainPanes[i];
         const DomainCounts want = expectedDomainCounts(o.kind, o.levels, o.spacing);
-        j["domain"].push_back({{"spacing", spacingName(o.spacing)}, {"kind", domainName(o.kind)}, {"vertices", teaching.domainStats[i].vertices},
-                               {"primitives", teaching.domainStats[i].primitives}, {"expectedVertices", want.vertices},
+        j["domain"].push_back({{"spacing", spacingName(o.spacing)},
+                               {"kind", domainName(o.kind)},
+                               {"vertices", teaching.domainStats[i].vertices},
+                               {"primitives", teaching.domainStats[i].primitives},
+                               {"expectedVertices", want.vertices},
                                {"expectedPrimitives", want.primitives}});
     }
     j["viewPanes"] = nlohmann::json::array();
@@ -72,8 +75,11 @@ void TestTrace::write(const EditorSnapshot& e) {
                                   {"rect", viewRects[i]},
                                   {"triangles", teaching.viewPanes[i].stats.triangles()}});
     j["activePane"] = teaching.activePane;
-    j["layout"] = {{"domainWindow", teaching.windowRect}, {"domainLabels", teaching.labelBoxes}, {"axisGizmo", e.axisGizmo},
-                   {"left", e.layout.left}, {"right", e.layout.right}};
+    j["layout"] = {{"domainWindow", teaching.windowRect},
+                   {"domainLabels", teaching.labelBoxes},
+                   {"axisGizmo", e.axisGizmo},
+                   {"left", e.layout.left},
+                   {"right", e.layout.right}};
     j["shaders"] = {{"open", e.shaders.open}, {"shown", e.shaders.shown}, {"inUse", e.shaders.variantsInUse}};
     j["items"] = items_.items;
     j["unsavedPrompt"] = e.dialogs.unsavedPromptOpen();
@@ -91,8 +97,11 @@ void TestTrace::write(const EditorSnapshot& e) {
     for (const Patch& p : doc.patches) j["patchIdx"].push_back(p.idx);
     j["cursor"] = {e.session.cursor.x, e.session.cursor.y, e.session.cursor.z};
     auto edgeJson = [](const std::optional<PatchEdge>& pe) { return pe ? nlohmann::json(patchEdgeName(*pe)) : nlohmann::json(nullptr); };
-    j["joinTool"] = {{"on", e.join.on}, {"first", edgeJson(e.join.first)}, {"hover", edgeJson(e.join.hover)},
-                     {"preview", e.join.preview}, {"continuity", std::string(continuityName(e.join.continuity))}};
+    j["joinTool"] = {{"on", e.join.on},
+                     {"first", edgeJson(e.join.first)},
+                     {"hover", edgeJson(e.join.hover)},
+                     {"preview", e.join.preview},
+                     {"continuity", std::string(continuityName(e.join.continuity))}};
     j["surfaces"] = doc.surfaces.size();
     j["curves"] = doc.curves.size();
     j["bezierTriangles"] = doc.triangles.size();

@@ -2,7 +2,8 @@
 // end-to-end tests (tests/e2e/*.sh) — window size, selection, mode, undo steps, modified flag, the
 // open modal and the window-coordinate centres of the widgets the tests click, validation count,
 // frame and GPU times, split-view panes, the projected and world positions of every pool point.
-// Widgets report themselves through ui/platform/item_trace; write() reads the rest from the editor. With the variable unset nothing is gathered or written.
+// Widgets report themselves through ui/platform/item_trace; write() reads the rest from the editor. With the variable unset nothing is
+// gathered or written.
 #pragma once
 
 #include <string>
@@ -15,13 +16,13 @@ struct EditorSnapshot;
 
 class TestTrace {
 public:
-    TestTrace();   // on when PATCHWORK_EDITOR_TRACE names a file
+    TestTrace();  // on when PATCHWORK_EDITOR_TRACE names a file
     ~TestTrace();
     TestTrace(const TestTrace&) = delete;
     TestTrace& operator=(const TestTrace&) = delete;
     bool enabled() const { return !path_.empty(); }
 
-    void beginFrame();                // forgets the last frame's items and modal
+    void beginFrame();                         // forgets the last frame's items and modal
     void write(const EditorSnapshot& editor);  // after the frame: the whole state, written atomically
 
 private:

@@ -9,9 +9,9 @@
 
 #include "render/figures/domain_figure.hpp"
 #include "render/scene/renderer.hpp"
+#include "ui/panels/teaching.hpp"
 #include "ui/platform/app_window.hpp"
 #include "ui/platform/imgui_layer.hpp"
-#include "ui/panels/teaching.hpp"
 
 namespace pw::ui {
 

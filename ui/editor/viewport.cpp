@@ -12,14 +12,14 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/eval/occlusion.hpp"
 #include "core/model/camera_math.hpp"
 #include "core/ops/patch_ops.hpp"
-#include "core/eval/occlusion.hpp"
 #include "core/select/picking.hpp"
 #include "core/select/snapping.hpp"
 #include "render/scene/renderer.hpp"
-#include "ui/platform/app_window.hpp"
 #include "ui/editor/editor.hpp"
+#include "ui/platform/app_window.hpp"
 
 namespace pw::ui {
 
@@ -104,8 +104,10 @@ void Editor::viewportInput() {
     // Step 3: navigation — wheel zoom, middle orbit / Shift+middle pan, Alt+left orbit.
     if (!overUi && mouseValid && io.MouseWheel != 0.0f) zoomCamera(cam_, io.MouseWheel);
     if (mode_ == Interaction::None && !overUi && mouseValid) {
-        if (ImGui::IsMouseClicked(ImGuiMouseButton_Middle)) mode_ = io.KeyShift ? Interaction::Pan : Interaction::Orbit;
-        else if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && io.KeyAlt) mode_ = Interaction::Orbit;
+        if (ImGui::IsMouseClicked(ImGuiMouseButton_Middle))
+            mode_ = io.KeyShift ? Interaction::Pan : Interaction::Orbit;
+        else if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && io.KeyAlt)
+            mode_ = Interaction::Orbit;
         if (mode_ != Interaction::None) lastX_ = mx, lastY_ = my;
     }
     if (mode_ == Interaction::Orbit || mode_ == Interaction::Pan) {
@@ -169,9 +171,12 @@ void Editor::viewportInput() {
             }
             break;
         case Interaction::Grab:
-            if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) cancelDrag();
-            else if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) finishDrag();
-            else updateDrag(mx, my);
+            if (ImGui::IsMouseClicked(ImGuiMouseButton_Right))
+                cancelDrag();
+            else if (ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+                finishDrag();
+            else
+                updateDrag(mx, my);
             break;
         case Interaction::BoxSelect:
             if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
@@ -201,7 +206,8 @@ void Editor::viewportInput() {
                 }
             }
             break;
-        default: break;
+        default:
+            break;
     }
     lastX_ = mx, lastY_ = my;
 }
@@ -209,7 +215,8 @@ void Editor::viewportInput() {
 void Editor::beginDrag(bool grab, TransformKind kind, int axis) {
     TransformStart start{session_.selectedPoints(), session_.transformPivot(), kind, grab, session_.snap, session_.symmetry};
     // A move started on a point carries that point (it is what snaps); G moves the pivot.
-    if (kind == TransformKind::Move && !grab && hovered_ >= 0 && size_t(hovered_) < doc_.points.size()) start.pivot = doc_.points[size_t(hovered_)];
+    if (kind == TransformKind::Move && !grab && hovered_ >= 0 && size_t(hovered_) < doc_.points.size())
+        start.pivot = doc_.points[size_t(hovered_)];
     if (!drag_.begin(doc_, start, dragView(), pressX_, pressY_)) return;
     mode_ = grab ? Interaction::Grab : Interaction::DragPoints;
     if (axis >= 0) drag_.setAxis(axis);
@@ -247,16 +254,24 @@ void Editor::transformKeys(double mx, double my) {
         for (const auto& [key, mods] : window_.queuedKeys()) {
             if (mods & (GLFW_MOD_CONTROL | GLFW_MOD_ALT | GLFW_MOD_SUPER)) continue;
             char c = 0;
-            if (key >= GLFW_KEY_0 && key <= GLFW_KEY_9 && !(mods & GLFW_MOD_SHIFT)) c = char('0' + key - GLFW_KEY_0);
-            else if (key >= GLFW_KEY_KP_0 && key <= GLFW_KEY_KP_9) c = char('0' + key - GLFW_KEY_KP_0);
-            else if (key == GLFW_KEY_PERIOD || key == GLFW_KEY_KP_DECIMAL) c = '.';
-            else if (key == GLFW_KEY_MINUS || key == GLFW_KEY_KP_SUBTRACT) c = '-';
-            if (c) drag_.typeChar(c), changed = true;
-            else if (key == GLFW_KEY_BACKSPACE) drag_.backspace(), changed = true;
+            if (key >= GLFW_KEY_0 && key <= GLFW_KEY_9 && !(mods & GLFW_MOD_SHIFT))
+                c = char('0' + key - GLFW_KEY_0);
+            else if (key >= GLFW_KEY_KP_0 && key <= GLFW_KEY_KP_9)
+                c = char('0' + key - GLFW_KEY_KP_0);
+            else if (key == GLFW_KEY_PERIOD || key == GLFW_KEY_KP_DECIMAL)
+                c = '.';
+            else if (key == GLFW_KEY_MINUS || key == GLFW_KEY_KP_SUBTRACT)
+                c = '-';
+            if (c)
+                drag_.typeChar(c), changed = true;
+            else if (key == GLFW_KEY_BACKSPACE)
+                drag_.backspace(), changed = true;
         }
     if (changed) updateDrag(mx, my);
-    if (keyPressed(GLFW_KEY_ESCAPE, 0)) cancelDrag();
-    else if (mode_ == Interaction::Grab && (keyPressed(GLFW_KEY_ENTER, 0) || keyPressed(GLFW_KEY_KP_ENTER, 0))) finishDrag();
+    if (keyPressed(GLFW_KEY_ESCAPE, 0))
+        cancelDrag();
+    else if (mode_ == Interaction::Grab && (keyPressed(GLFW_KEY_ENTER, 0) || keyPressed(GLFW_KEY_KP_ENTER, 0)))
+        finishDrag();
 }
 
 void Editor::updateDrag(double mx, double my) {

@@ -11,8 +11,8 @@
 #include <string>
 
 #include "core/eval/bezier_triangle.hpp"
-#include "core/model/camera_math.hpp"
 #include "core/eval/patch_eval.hpp"
+#include "core/model/camera_math.hpp"
 #include "core/select/picking.hpp"
 #include "ui/editor/editor.hpp"
 
@@ -66,7 +66,8 @@ void Editor::drawViewportOverlays() {
     for (size_t i = 0; i < rects.size(); ++i) {
         const auto& r = rects[i];
         // Not under the side panels: their backgrounds are filled before ImGui draws this list.
-        const float x0 = std::max(r[0], sidePanels_.layout().left), x1 = std::min(r[0] + r[2], ImGui::GetIO().DisplaySize.x - sidePanels_.layout().right);
+        const float x0 = std::max(r[0], sidePanels_.layout().left),
+                    x1 = std::min(r[0] + r[2], ImGui::GetIO().DisplaySize.x - sidePanels_.layout().right);
         dl->PushClipRect(ImVec2(x0, r[1]), ImVec2(std::max(x0, x1), r[1] + r[3]), true);
         drawPaneOverlays(r, int(i) == teaching_.activePane || !teaching_.viewSplit());
         dl->PopClipRect();
@@ -76,7 +77,8 @@ void Editor::drawViewportOverlays() {
     if (mode_ == Interaction::Grab || mode_ == Interaction::DragPoints) {
         const std::string hint = "X/Y/Z axis · Shift+X/Y/Z plane · Ctrl snap (" + std::string(snapTargetName(session_.snap)) + ")" +
                                  (mode_ == Interaction::Grab ? " · type a value · click/Enter confirm" : "") + " · Esc/right click cancel";
-        const std::string text = drag_.status() + (session_.symmetry.on() ? " · symmetry " + symmetryName(session_.symmetry) : "") + "\n" + hint;
+        const std::string text =
+            drag_.status() + (session_.symmetry.on() ? " · symmetry " + symmetryName(session_.symmetry) : "") + "\n" + hint;
         const float x = float(sidePanels_.layout().left) + 12.0f;
         const float wrap = std::max(ImGui::GetIO().DisplaySize.x - float(sidePanels_.layout().right) - x - 12.0f, 100.0f);
         dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(x, 30.0f), IM_COL32(255, 230, 120, 255), text.c_str(), nullptr, wrap);
@@ -215,7 +217,11 @@ void Editor::drawPaneOverlays(const std::array<float, 4>& pane, bool active) {
         const ImVec2 c = *corner;
         axisGizmoRect_ = {c.x - 52.0f, c.y - 52.0f, 104.0f, 104.0f};
         const float len = 40.0f;
-        struct Ax { glm::vec3 v; ImU32 col; const char* name; };
+        struct Ax {
+            glm::vec3 v;
+            ImU32 col;
+            const char* name;
+        };
         Ax axes[3] = {{glm::vec3(vm.view * glm::vec4(1, 0, 0, 0)), IM_COL32(230, 70, 70, 255), "X"},
                       {glm::vec3(vm.view * glm::vec4(0, 1, 0, 0)), IM_COL32(80, 200, 80, 255), "Y"},
                       {glm::vec3(vm.view * glm::vec4(0, 0, 1, 0)), IM_COL32(80, 130, 255, 255), "Z"}};
@@ -227,7 +233,6 @@ void Editor::drawPaneOverlays(const std::array<float, 4>& pane, bool active) {
             dl->AddText(ImVec2(e.x - 3.0f, e.y - 7.0f), a.col, a.name);
         }
     }
-
 }
 
 }  // namespace pw::ui

@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <utility>
 
-#include "core/io/formats.hpp"
 #include "core/base/limits.hpp"
+#include "core/io/formats.hpp"
 #include "ui/panels/dialogs.hpp"
 #include "ui/platform/imgui_tip.hpp"
 #include "ui/platform/item_trace.hpp"
@@ -24,8 +24,12 @@ void Dialogs::openFileDialog(FileDialogKind kind, const std::string& documentNam
     fileName_[0] = 0;
     focusName_ = true;
     switch (kind) {
-        case FileDialogKind::Open: fileMode_ = FileDialogMode::Open; break;
-        case FileDialogKind::Import: fileMode_ = FileDialogMode::Import; break;
+        case FileDialogKind::Open:
+            fileMode_ = FileDialogMode::Open;
+            break;
+        case FileDialogKind::Import:
+            fileMode_ = FileDialogMode::Import;
+            break;
         case FileDialogKind::SaveAs:
             fileMode_ = FileDialogMode::SaveAs;
             std::snprintf(fileName_, sizeof fileName_, "%s.patchwork", name.c_str());
@@ -42,7 +46,9 @@ void Dialogs::openFileDialog(FileDialogKind kind, const std::string& documentNam
             fileMode_ = FileDialogMode::DomainFigure;
             std::snprintf(fileName_, sizeof fileName_, "domain.svg");
             break;
-        case FileDialogKind::HeightMap: fileMode_ = FileDialogMode::HeightMap; break;
+        case FileDialogKind::HeightMap:
+            fileMode_ = FileDialogMode::HeightMap;
+            break;
         case FileDialogKind::SweepAnimation:
             fileMode_ = FileDialogMode::SweepAnimation;
             std::snprintf(fileName_, sizeof fileName_, "sweep.gif");
@@ -53,8 +59,15 @@ void Dialogs::openFileDialog(FileDialogKind kind, const std::string& documentNam
 void Dialogs::drawFileBrowser(PanelContext& ctx) {
     if (fileMode_ == FileDialogMode::None) return;
     static const std::string exportTitle = "Export (" + formatList(FormatUse::Export, ", ") + ")";  // the format table's
-    const char* titles[] = {"", "Open", "Save As", "Import", exportTitle.c_str(), "Save Screenshot",
-                            "Save Domain Figure (.svg, .pdf, .png)", "Save Sweep Animation (.gif, .mp4, .webm)", "Load Height Map (.png)"};
+    const char* titles[] = {"",
+                            "Open",
+                            "Save As",
+                            "Import",
+                            exportTitle.c_str(),
+                            "Save Screenshot",
+                            "Save Domain Figure (.svg, .pdf, .png)",
+                            "Save Sweep Animation (.gif, .mp4, .webm)",
+                            "Load Height Map (.png)"};
     const char* title = titles[int(fileMode_)];
     ImGui::OpenPopup("File browser");
     const ImGuiIO& io = ImGui::GetIO();
@@ -130,13 +143,20 @@ void Dialogs::drawFileBrowser(PanelContext& ctx) {
         fileMode_ = FileDialogMode::None;
         ImGui::CloseCurrentPopup();
         // The unsaved-changes prompt came before the Open dialog: the open itself is unguarded.
-        if (m == FileDialogMode::Open) ctx.runCommand({"open", p.string()}, false);
-        else if (m == FileDialogMode::Import) ctx.runCommand({"import", p.string()});
-        else if (m == FileDialogMode::ExportGltf) ctx.runCommand({"export-gltf", p.string()});
-        else if (m == FileDialogMode::Screenshot) ctx.runCommand({"screenshot", p.string()});
-        else if (m == FileDialogMode::DomainFigure) ctx.runCommand({"domain-figure", p.string()});
-        else if (m == FileDialogMode::SweepAnimation) ctx.runCommand({"sweep-animation", p.string()});
-        else if (m == FileDialogMode::HeightMap) ctx.runCommand({"displacement", p.string()});
+        if (m == FileDialogMode::Open)
+            ctx.runCommand({"open", p.string()}, false);
+        else if (m == FileDialogMode::Import)
+            ctx.runCommand({"import", p.string()});
+        else if (m == FileDialogMode::ExportGltf)
+            ctx.runCommand({"export-gltf", p.string()});
+        else if (m == FileDialogMode::Screenshot)
+            ctx.runCommand({"screenshot", p.string()});
+        else if (m == FileDialogMode::DomainFigure)
+            ctx.runCommand({"domain-figure", p.string()});
+        else if (m == FileDialogMode::SweepAnimation)
+            ctx.runCommand({"sweep-animation", p.string()});
+        else if (m == FileDialogMode::HeightMap)
+            ctx.runCommand({"displacement", p.string()});
         else if (m == FileDialogMode::SaveAs) {
             ctx.runCommand({"save", p.string()});
             // Save from the unsaved-changes prompt of an untitled document: go on with New / Open / Quit.

@@ -41,8 +41,8 @@ private:
     std::string errorMessage_;
     bool openError_ = false;
     std::vector<std::string> pendingCommand_;  // waits for the unsaved-changes prompt (empty = none)
-    bool focusName_ = false;            // the file dialog's name field takes the keyboard when it opens
-    bool runPendingAfterSave_ = false;  // Save As from that prompt: run it once the file is written
+    bool focusName_ = false;                   // the file dialog's name field takes the keyboard when it opens
+    bool runPendingAfterSave_ = false;         // Save As from that prompt: run it once the file is written
     bool openUnsavedPrompt_ = false;
     bool offerRecovery_ = false;
 };

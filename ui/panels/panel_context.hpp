@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "core/commands/command_table.hpp"
-#include "core/solve/continuity_watch.hpp"
 #include "core/edit/edit_session.hpp"
+#include "core/solve/continuity_watch.hpp"
 #include "render/vk/stats.hpp"
 
 namespace pw::ui {
@@ -51,11 +51,11 @@ public:
     // no undo step is recorded; errors are left to the runCommand that follows on release.
     virtual void previewCommand(const std::vector<std::string>& words) = 0;
     virtual void documentChanged(bool topology) = 0;  // session().doc was edited: upload it
-    virtual void settingsChanged() = 0;  // tessellation or display settings (they travel in the render options)
-    virtual uint64_t documentVersion() const = 0;  // bumped by both
+    virtual void settingsChanged() = 0;               // tessellation or display settings (they travel in the render options)
+    virtual uint64_t documentVersion() const = 0;     // bumped by both
     virtual void showError(const std::string& message) = 0;
-    virtual void wake() = 0;               // draw the next frames
-    virtual bool interacting() const = 0;  // a drag, orbit, pan or box select is under way
+    virtual void wake() = 0;                               // draw the next frames
+    virtual bool interacting() const = 0;                  // a drag, orbit, pan or box select is under way
     virtual bool keyPressed(int key, int mods) const = 0;  // queued this frame
     virtual float uiScale() const = 0;
     virtual void frameBox(const Bounds& box) = 0;  // fit the view to the box

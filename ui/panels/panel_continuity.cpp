@@ -7,8 +7,8 @@
 #include <cstdio>
 
 #include "core/solve/constraint_solver.hpp"
-#include "ui/platform/imgui_tip.hpp"
 #include "ui/panels/side_panels.hpp"
+#include "ui/platform/imgui_tip.hpp"
 #include "ui/platform/item_trace.hpp"
 
 namespace pw::ui {
@@ -51,9 +51,11 @@ void ContinuityPanel::draw(PanelContext& ctx) {
     };
     field("##position", tol_.position, "%.4g", "Position tolerance (model units): the largest gap between the two sides");
     ImGui::SameLine();
-    field("##angle", tol_.angleDeg, "%.3g°", "Angle tolerance (degrees): the largest angle between the two sides' normals (C1, G1, C2, G2)");
+    field("##angle", tol_.angleDeg, "%.3g°",
+          "Angle tolerance (degrees): the largest angle between the two sides' normals (C1, G1, C2, G2)");
     ImGui::SameLine();
-    field("##curvature", tol_.curvaturePct, "%.3g%%", "Curvature tolerance (percent): the largest curvature deviation across the seam (C2, G2)");
+    field("##curvature", tol_.curvaturePct, "%.3g%%",
+          "Curvature tolerance (percent): the largest curvature deviation across the seam (C2, G2)");
     if (edited && tol_ != doc.tolerances) {
         char line[160];
         std::snprintf(line, sizeof line, "tolerances %.17g %.17g %.17g", tol_.position, tol_.angleDeg, tol_.curvaturePct);

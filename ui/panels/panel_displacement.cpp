@@ -5,9 +5,9 @@
 
 #include <cmath>
 
-#include "ui/platform/imgui_tip.hpp"
 #include "ui/panels/panel_rows.hpp"
 #include "ui/panels/side_panels.hpp"
+#include "ui/platform/imgui_tip.hpp"
 #include "ui/platform/item_trace.hpp"
 
 namespace pw::ui {
@@ -18,7 +18,8 @@ namespace {
 std::optional<DisplacementOverride>* selectedOwn(EditSession& s) {
     if (s.sel.patch >= 0 && size_t(s.sel.patch) < s.doc.patches.size()) return &s.doc.patches[size_t(s.sel.patch)].displacement;
     if (s.sel.surface >= 0 && size_t(s.sel.surface) < s.doc.surfaces.size()) return &s.doc.surfaces[size_t(s.sel.surface)].displacement;
-    if (s.sel.triangle >= 0 && size_t(s.sel.triangle) < s.doc.triangles.size()) return &s.doc.triangles[size_t(s.sel.triangle)].displacement;
+    if (s.sel.triangle >= 0 && size_t(s.sel.triangle) < s.doc.triangles.size())
+        return &s.doc.triangles[size_t(s.sel.triangle)].displacement;
     return nullptr;
 }
 

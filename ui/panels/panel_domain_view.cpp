@@ -5,11 +5,11 @@
 
 #include <algorithm>
 
-#include "render/figures/domain_figure.hpp"
 #include "render/domain/domain_labels.hpp"
-#include "ui/platform/swapchain_target.hpp"
-#include "ui/platform/app_window.hpp"
+#include "render/figures/domain_figure.hpp"
 #include "ui/panels/teaching.hpp"
+#include "ui/platform/app_window.hpp"
+#include "ui/platform/swapchain_target.hpp"
 
 namespace pw::ui {
 
@@ -79,7 +79,8 @@ void Teaching::drawDomainWindow(PanelContext& ctx) {
 void Teaching::drawDomainPanes() {
     if (domainPanes.empty()) return;
     if (!domainView_)
-        domainView_ = std::make_unique<render::DomainView>(window_.device(), window_.target().colorFormat(), window_.target().depthFormat(), window_.target().samples());
+        domainView_ = std::make_unique<render::DomainView>(window_.device(), window_.target().colorFormat(), window_.target().depthFormat(),
+                                                           window_.target().samples());
     domainStats = domainView_->draw(window_.target(), domainPanes, false);
 }
 

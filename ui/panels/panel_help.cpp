@@ -36,12 +36,13 @@ const KeyHelp kMouseAndModal[] = {
 void drawHelp(PanelContext& ctx, bool& open) {
     const ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-    ImGui::SetNextWindowSize(ImVec2(std::min(1100.0f * ctx.uiScale(), io.DisplaySize.x * 0.9f), io.DisplaySize.y * 0.8f), ImGuiCond_Appearing);
+    ImGui::SetNextWindowSize(ImVec2(std::min(1100.0f * ctx.uiScale(), io.DisplaySize.x * 0.9f), io.DisplaySize.y * 0.8f),
+                             ImGuiCond_Appearing);
     ImGui::SetNextWindowBgAlpha(0.92f);
     if (ImGui::Begin("Keys and commands (F1)", &open)) {
         ImGui::TextDisabled("Every command runs from its menu, its keys, the palette (F3) and `patchwork edit -c '...'`.");
-        if (ImGui::BeginTable("keys", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders | ImGuiTableFlags_ScrollY |
-                                             ImGuiTableFlags_SizingStretchProp)) {
+        if (ImGui::BeginTable(
+                "keys", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders | ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingStretchProp)) {
             ImGui::TableSetupColumn("Keys", ImGuiTableColumnFlags_WidthStretch, 0.2f);
             ImGui::TableSetupColumn("Command", ImGuiTableColumnFlags_WidthStretch, 0.3f);
             ImGui::TableSetupColumn("What it does", ImGuiTableColumnFlags_WidthStretch, 0.5f);

@@ -8,8 +8,8 @@
 #include <string>
 #include <string_view>
 
-#include "ui/platform/imgui_tip.hpp"
 #include "ui/panels/side_panels.hpp"
+#include "ui/platform/imgui_tip.hpp"
 #include "ui/platform/item_trace.hpp"
 
 namespace pw::ui {
@@ -17,9 +17,9 @@ namespace pw::ui {
 namespace {
 
 struct OwnLevelsText {
-    const char* what;    // "patch", "triangle": in the undo step names
-    const char* id;      // ImGui id suffix and trace name part
-    const char* overrideTip, *outerTip, *innerTip;
+    const char* what;  // "patch", "triangle": in the undo step names
+    const char* id;    // ImGui id suffix and trace name part
+    const char *overrideTip, *outerTip, *innerTip;
 };
 
 // The name row and the own-levels rows of a patch (4 outer + 2 inner) or a triangle (3 + 1).
@@ -73,7 +73,8 @@ void transformRow(PanelContext& ctx) {
     const float w = ImGui::GetContentRegionAvail().x * 0.5f - ImGui::GetStyle().ItemSpacing.x;
     const auto combo = [&](const char* id, const char* label, std::string_view current, std::initializer_list<std::string_view> names,
                            const char* command, const char* help) {
-        ImGui::SetNextItemWidth(std::max(40.0f, w - ImGui::CalcTextSize(label).x - ImGui::GetStyle().ItemSpacing.x));  // the label stays whole
+        ImGui::SetNextItemWidth(
+            std::max(40.0f, w - ImGui::CalcTextSize(label).x - ImGui::GetStyle().ItemSpacing.x));  // the label stays whole
         if (ImGui::BeginCombo(id, std::string(current).c_str())) {
             for (std::string_view n : names)
                 if (ImGui::Selectable(std::string(n).c_str(), n == current)) ctx.runCommand({command, std::string(n)});
@@ -161,16 +162,18 @@ void InspectorPanel::draw(PanelContext& ctx) {
         ImGui::Separator();
         Patch& pt = doc.patches[size_t(sel.patch)];
         ImGui::Text("Patch %d  (%s)", sel.patch, basisName(pt.basis).data());
-        ownLevelsRows(ctx, {"patch", "patch", "Give this patch its own outer/inner levels", "Outer levels of edges u0, v0, u1, v1",
-                            "Inner levels along u and v"},
+        ownLevelsRows(ctx,
+                      {"patch", "patch", "Give this patch its own outer/inner levels", "Outer levels of edges u0, v0, u1, v1",
+                       "Inner levels along u and v"},
                       pt.name, pt.tessOverride, 4);
     }
     if (sel.triangle >= 0 && sel.triangle < int(doc.triangles.size())) {
         ImGui::Separator();
         TrianglePatch& tri = doc.triangles[size_t(sel.triangle)];
         ImGui::Text("Bézier triangle %d  (10 points)", sel.triangle);
-        ownLevelsRows(ctx, {"triangle", "tri", "Give this triangle its own three outer levels and inner level",
-                            "Outer levels of edges u = 0, v = 0, w = 0", "Inner level"},
+        ownLevelsRows(ctx,
+                      {"triangle", "tri", "Give this triangle its own three outer levels and inner level",
+                       "Outer levels of edges u = 0, v = 0, w = 0", "Inner level"},
                       tri.name, tri.tessOverride, 3);
     }
 }

@@ -25,7 +25,8 @@ void drawMenuBar(PanelContext& ctx, CommandPalette& palette, const std::vector<s
                 }
                 const std::string first = e.shortcut.substr(0, e.shortcut.find(" / "));
                 const bool checked = c.checked && c.checked(ctx.session(), ctx.host());
-                if (ImGui::MenuItem((label + (e.needsArguments() ? "..." : "")).c_str(), first.empty() ? nullptr : first.c_str(), checked, enabled))
+                if (ImGui::MenuItem((label + (e.needsArguments() ? "..." : "")).c_str(), first.empty() ? nullptr : first.c_str(), checked,
+                                    enabled))
                     e.needsArguments() ? palette.complete(ctx, c) : ctx.runCommand(e.words());
                 traceItem("menu." + c.name + (e.args.empty() ? "" : "." + e.args));
                 tip(c.help.c_str());

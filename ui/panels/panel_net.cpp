@@ -4,17 +4,17 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <optional>
 #include <cstdio>
+#include <optional>
 #include <set>
 
-#include "core/solve/constraint_solver.hpp"
-#include "ui/platform/imgui_tip.hpp"
-#include "ui/panels/side_panels.hpp"
-#include "ui/platform/item_trace.hpp"
 #include "core/base/limits.hpp"
 #include "core/ops/net_ops.hpp"
 #include "core/select/selection.hpp"
+#include "core/solve/constraint_solver.hpp"
+#include "ui/panels/side_panels.hpp"
+#include "ui/platform/imgui_tip.hpp"
+#include "ui/platform/item_trace.hpp"
 
 namespace pw::ui {
 
@@ -101,7 +101,8 @@ void NetPanel::drawCreate(PanelContext& ctx) {
         const Vec3 c = selectionCentroid(doc, sel);
         int created = -1;
         patchOp(ctx, "Add net", [&](Document& d) {
-            created = int(addNetSurface(d, uint32_t(rows_), uint32_t(cols_), NetShape(shape_), kBases[basis_], c, size, session.camera.zUp));
+            created =
+                int(addNetSurface(d, uint32_t(rows_), uint32_t(cols_), NetShape(shape_), kBases[basis_], c, size, session.camera.zUp));
         });
         if (created >= 0) {
             sel.clear();

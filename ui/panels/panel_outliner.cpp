@@ -4,8 +4,8 @@
 
 #include <cstdio>
 
-#include "ui/platform/imgui_tip.hpp"
 #include "ui/panels/side_panels.hpp"
+#include "ui/platform/imgui_tip.hpp"
 
 namespace pw::ui {
 
@@ -34,7 +34,8 @@ void drawOutliner(PanelContext& ctx) {
         const Surface& n = doc.surfaces[i];
         row(sel.surface, i, n.hidden, "net %zu  %s (%ux%u, %s)", n.name.c_str(), n.rows, n.cols, basisName(n.basis).data());
     }
-    for (size_t i = 0; i < doc.triangles.size(); ++i) row(sel.triangle, i, doc.triangles[i].hidden, "triangle %zu  %s", doc.triangles[i].name.c_str());
+    for (size_t i = 0; i < doc.triangles.size(); ++i)
+        row(sel.triangle, i, doc.triangles[i].hidden, "triangle %zu  %s", doc.triangles[i].name.c_str());
     for (size_t i = 0; i < doc.curves.size(); ++i)
         if (row(sel.curve, i, doc.curves[i].hidden, "curve %zu  %s", doc.curves[i].name.c_str()))
             applyBox(sel, {doc.curves[i].idx.begin(), doc.curves[i].idx.end()}, false);

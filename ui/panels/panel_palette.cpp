@@ -65,9 +65,9 @@ void CommandPalette::draw(PanelContext& ctx) {
         pending = false;
         return 0;
     };
-    const bool enter = ImGui::InputTextWithHint("##query", "type a command (e.g. 'save', 'move 1 0 0')", query_, sizeof query_,
-                                                ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CallbackAlways, toEnd,
-                                                &cursorToEnd_);
+    const bool enter =
+        ImGui::InputTextWithHint("##query", "type a command (e.g. 'save', 'move 1 0 0')", query_, sizeof query_,
+                                 ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CallbackAlways, toEnd, &cursorToEnd_);
     traceItem("palette.query");
     if (!ImGui::IsItemActive() && !enter && ImGui::IsWindowFocused()) ImGui::SetKeyboardFocusHere(-1);
     // Entries that contain every typed word (case-insensitive): those matching in the label or
@@ -81,15 +81,18 @@ void CommandPalette::draw(PanelContext& ctx) {
     std::vector<CommandEntry> matches, helpMatches;
     for (const Command& c : ctx.commands().commands())
         for (const CommandEntry& e : entriesOf(c)) {
-            if (containsAll(lower(e.label + " " + c.name + " " + e.args), c)) matches.push_back(e);
-            else if (containsAll(lower(e.label + " " + c.name + " " + e.args + " " + c.help), c)) helpMatches.push_back(e);
+            if (containsAll(lower(e.label + " " + c.name + " " + e.args), c))
+                matches.push_back(e);
+            else if (containsAll(lower(e.label + " " + c.name + " " + e.args + " " + c.help), c))
+                helpMatches.push_back(e);
         }
     matches.insert(matches.end(), helpMatches.begin(), helpMatches.end());
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_DownArrow))) ++cursor_;
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_UpArrow))) --cursor_;
     cursor_ = std::clamp(cursor_, 0, std::max(int(matches.size()) - 1, 0));
     int clicked = -1;
-    ImGui::BeginChild("matches", ImVec2(0, std::min(12.0f, float(std::max<size_t>(matches.size(), 1))) * ImGui::GetTextLineHeightWithSpacing()));
+    ImGui::BeginChild("matches",
+                      ImVec2(0, std::min(12.0f, float(std::max<size_t>(matches.size(), 1))) * ImGui::GetTextLineHeightWithSpacing()));
     for (size_t i = 0; i < matches.size(); ++i) {
         const CommandEntry& e = matches[i];
         const bool enabled = ctx.commands().isEnabled(*e.command, ctx.session()) && (!e.command->windowOnly || ctx.host().hasWindow());

@@ -8,8 +8,8 @@
 #include <algorithm>
 
 #include "core/ops/patch_ops.hpp"
-#include "ui/platform/imgui_tip.hpp"
 #include "ui/panels/side_panels.hpp"
+#include "ui/platform/imgui_tip.hpp"
 
 namespace pw::ui {
 
@@ -80,8 +80,9 @@ void PatchOpsPanel::draw(PanelContext& ctx) {
     tip("C0: shared edge; C1: equal tangents; G1: tangents in a fixed ratio; C2: equal first and second derivatives; "
         "G2: equal tangent planes and curvature (shape parameters fixed when joining)");
     ImGui::SameLine();
-    commandButton(ctx, "Join", "join " + std::to_string(joinA_) + ":" + kEdgeNames[joinEdgeA_] + " " + std::to_string(joinB_) + ":" +
-                                   kEdgeNames[joinEdgeB_] + " " + kinds[joinKind_]);
+    commandButton(ctx, "Join",
+                  "join " + std::to_string(joinA_) + ":" + kEdgeNames[joinEdgeA_] + " " + std::to_string(joinB_) + ":" +
+                      kEdgeNames[joinEdgeB_] + " " + kinds[joinKind_]);
 }
 
 }  // namespace pw::ui

@@ -6,9 +6,9 @@
 #include <string>
 
 #include "render/domain/domain_labels.hpp"
+#include "ui/panels/teaching.hpp"
 #include "ui/platform/app_window.hpp"
 #include "ui/platform/imgui_layer.hpp"
-#include "ui/panels/teaching.hpp"
 
 namespace pw::ui {
 
@@ -30,8 +30,9 @@ void Teaching::drawPresentationOverlay(PanelContext& ctx) {
         ImGui::Text("outer %s  %s  %s  %s", render::formatLevel(ts.outer[0]).c_str(), render::formatLevel(ts.outer[1]).c_str(),
                     render::formatLevel(ts.outer[2]).c_str(), render::formatLevel(ts.outer[3]).c_str());
         ImGui::Text("inner %s  %s", render::formatLevel(ts.inner[0]).c_str(), render::formatLevel(ts.inner[1]).c_str());
-        ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.1f, 1.0f), "%s%s", spacingName(ts.spacing).data(),
-                           ts.adaptive == AdaptiveMode::None ? "" : (std::string(", adaptive ") + adaptiveName(ts.adaptive).data()).c_str());
+        ImGui::TextColored(
+            ImVec4(1.0f, 0.85f, 0.1f, 1.0f), "%s%s", spacingName(ts.spacing).data(),
+            ts.adaptive == AdaptiveMode::None ? "" : (std::string(", adaptive ") + adaptiveName(ts.adaptive).data()).c_str());
         ImGui::Text("%llu triangles", static_cast<unsigned long long>(stats.triangles()));
         ImGui::Text("%llu evaluations", static_cast<unsigned long long>(stats.tesInvocations));
         if (sweep.playing) ImGui::Text("sweep %.2f", double(sweep.level));

@@ -27,7 +27,8 @@ bool numberWidget(const Setting& s, float* buf) {
     // The slider clamps typed values (Ctrl+click) itself where its range is the accepted one.
     const ImGuiSliderFlags clamp = narrower ? ImGuiSliderFlags_None : ImGuiSliderFlags_AlwaysClamp;
     switch (s.widget) {
-        case SettingWidget::Colour: return ImGui::ColorEdit3(label.c_str(), buf);
+        case SettingWidget::Colour:
+            return ImGui::ColorEdit3(label.c_str(), buf);
         case SettingWidget::Drag: {
             const float speed = std::max(0.001f, 0.01f * std::max(std::abs(buf[0]), 1.0f));
             return ImGui::DragScalarN(label.c_str(), ImGuiDataType_Float, buf, s.count, speed, &lo, &hi, format.c_str(), clamp);
@@ -35,7 +36,8 @@ bool numberWidget(const Setting& s, float* buf) {
         case SettingWidget::LogSlider:
             return ImGui::SliderScalarN(label.c_str(), ImGuiDataType_Float, buf, s.count, &lo, &hi, format.c_str(),
                                         clamp | ImGuiSliderFlags_Logarithmic);
-        case SettingWidget::Slider: break;
+        case SettingWidget::Slider:
+            break;
     }
     if (s.integer && s.count == 1) {
         int i = int(buf[0]);
@@ -84,8 +86,10 @@ bool settingRow(PanelContext& ctx, std::string_view key, const char* trace) {
     tip(std::string(s.tooltip).c_str());
     const bool slider = s.kind == SettingKind::Number;
     if (changed) {
-        if (slider && ImGui::IsItemActive()) ctx.previewCommand(setWords(s, next));
-        else ctx.runCommand(setWords(s, next));
+        if (slider && ImGui::IsItemActive())
+            ctx.previewCommand(setWords(s, next));
+        else
+            ctx.runCommand(setWords(s, next));
     } else if (slider && ImGui::IsItemDeactivatedAfterEdit()) {
         ctx.runCommand(setWords(s, current));  // one undo step for what the preview did
     }

@@ -5,8 +5,8 @@
 #include <cctype>
 #include <string>
 
-#include "ui/platform/imgui_tip.hpp"
 #include "ui/panels/panel_shaders.hpp"
+#include "ui/platform/imgui_tip.hpp"
 #include "ui/platform/item_trace.hpp"
 
 namespace pw::ui {
@@ -32,7 +32,8 @@ std::string listingText(const render::ShaderListing& l, bool activeOnly) {
 
 }  // namespace
 
-void ShaderPanel::draw(PanelContext& ctx, bool geometryShader, const TessSettings& shownTess, const std::vector<render::DomainViewOptions>& domainPanes) {
+void ShaderPanel::draw(PanelContext& ctx, bool geometryShader, const TessSettings& shownTess,
+                       const std::vector<render::DomainViewOptions>& domainPanes) {
     shown.clear();
     variantsInUse.clear();
     if (!open) return;

@@ -18,15 +18,16 @@ namespace pw::ui {
 class ShaderPanel {
 public:
     // `geometryShader`: the device has them (the normal vectors' pipeline differs without).
-    void draw(PanelContext& ctx, bool geometryShader, const TessSettings& shownTess, const std::vector<render::DomainViewOptions>& domainPanes);
+    void draw(PanelContext& ctx, bool geometryShader, const TessSettings& shownTess,
+              const std::vector<render::DomainViewOptions>& domainPanes);
 
     bool open = false;
-    std::string shown;                   // the variant on screen this frame ("" = closed)
+    std::string shown;  // the variant on screen this frame ("" = closed)
     std::vector<std::string> variantsInUse;
 
 private:
     bool hideInactive_ = false;
-    std::string pipeline_;  // the pipeline picked (by name: the list changes)
+    std::string pipeline_;                                                // the pipeline picked (by name: the list changes)
     std::map<std::string, render::ShaderListing, std::less<>> listings_;  // cache by variant
 };
 

@@ -2,8 +2,8 @@
 // triangles, evaluations, patches drawn and culled, draws.
 #include <imgui.h>
 
-#include "ui/platform/imgui_tip.hpp"
 #include "ui/panels/side_panels.hpp"
+#include "ui/platform/imgui_tip.hpp"
 
 namespace pw::ui {
 
@@ -13,14 +13,17 @@ void drawStatsPanel(const FrameReport& report) {
     const render::FrameStats& stats = report.stats;
     ImGui::Text("Frame       %.2f ms (work %.2f)", report.frameMs, t.total);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Time between the last two frames (paced to at most 60 fps; idle when nothing changes).\n"
-                          "Work: the frame's own time, pacing excluded: UI %.2f ms (of it drag solve + upload %.3f),\n"
-                          "swapchain image %.2f, 3D view %.2f, ImGui + present %.2f",
-                          t.ui, t.drag, t.acquire, t.view, t.present);
+        ImGui::SetTooltip(
+            "Time between the last two frames (paced to at most 60 fps; idle when nothing changes).\n"
+            "Work: the frame's own time, pacing excluded: UI %.2f ms (of it drag solve + upload %.3f),\n"
+            "swapchain image %.2f, 3D view %.2f, ImGui + present %.2f",
+            t.ui, t.drag, t.acquire, t.view, t.present);
     ImGui::Text("Render      %.2f ms (CPU wall)", stats.wallMs);
     tip("Record + submit + wait of the 3D view");
-    if (stats.gpuMs >= 0) ImGui::Text("GPU         %.2f ms", stats.gpuMs);
-    else ImGui::TextDisabled("GPU         (no timestamps)");
+    if (stats.gpuMs >= 0)
+        ImGui::Text("GPU         %.2f ms", stats.gpuMs);
+    else
+        ImGui::TextDisabled("GPU         (no timestamps)");
     tip("Timestamp queries around the frame");
     ImGui::Text("Triangles   %llu", (unsigned long long)stats.triangles());
     tip("Triangles reaching the clipper in the surface pass");

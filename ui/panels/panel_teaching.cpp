@@ -6,8 +6,8 @@
 #include <cstdio>
 
 #include "core/tess/tess_presets.hpp"
-#include "ui/platform/imgui_tip.hpp"
 #include "ui/panels/teaching.hpp"
+#include "ui/platform/imgui_tip.hpp"
 #include "ui/platform/item_trace.hpp"
 
 namespace pw::ui {
@@ -33,8 +33,10 @@ void highContrastTheme() {
 
 void Teaching::setPresentation(PanelContext& ctx, bool on) {
     presentation = on;
-    if (on) highContrastTheme();
-    else ImGui::StyleColorsDark();
+    if (on)
+        highContrastTheme();
+    else
+        ImGui::StyleColorsDark();
     ctx.wake();
 }
 
@@ -166,7 +168,8 @@ void Teaching::drawControls(PanelContext& ctx) {
             ctx.session().commit("Distance formula");
             ctx.host().status("The notes' distance formula is now the document's adaptive tessellation (Ctrl+Z undoes it)");
         }
-        tip("Sets the document's adaptive tessellation: level = 64 * saturate((d1 - d) / (d1 - d0)) per edge, d0 = 20, d1 = 100 (one undo step)");
+        tip("Sets the document's adaptive tessellation: level = 64 * saturate((d1 - d) / (d1 - d0)) per edge, d0 = 20, d1 = 100 (one undo "
+            "step)");
         ImGui::EndCombo();
     }
     traceItem("teach.preset");
@@ -195,7 +198,7 @@ void Teaching::drawControls(PanelContext& ctx) {
             const float span = sweep.to - sweep.from;
             const float f = span != 0.0f ? std::clamp((sweep.level - sweep.from) / span, 0.0f, 0.999f) : 0.0f;
             sweep.start = std::chrono::steady_clock::now() -
-                           std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(f * sweep.seconds));
+                          std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(f * sweep.seconds));
             ctx.wake();
         }
     }

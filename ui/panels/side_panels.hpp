@@ -9,8 +9,8 @@
 #include <array>
 #include <vector>
 
-#include "core/solve/continuity_report.hpp"
 #include "core/edit/drag_controller.hpp"
+#include "core/solve/continuity_report.hpp"
 #include "ui/panels/panel_context.hpp"
 
 namespace pw::ui {
@@ -58,9 +58,9 @@ public:
     void draw(PanelContext& ctx);
 
 private:
-    double residual_ = 0.0;      // maxConstraintResidual at version_
+    double residual_ = 0.0;  // maxConstraintResidual at version_
     uint64_t version_ = ~0ull;
-    ContinuityTolerances tol_;   // the fields, while edited
+    ContinuityTolerances tol_;  // the fields, while edited
     bool onlyFailing_ = false;
 };
 

@@ -41,7 +41,7 @@ public:
     void drawControls(PanelContext& ctx);  // the Teaching section of the right panel
     // panel_domain_view.cpp
     void drawDomainWindow(PanelContext& ctx);  // where its panes go this frame, their labels
-    void drawDomainPanes();  // after the 3D view, before ImGui: the GPU domain tessellation
+    void drawDomainPanes();                    // after the 3D view, before ImGui: the GPU domain tessellation
     // panel_presentation.cpp
     void drawPresentationOverlay(PanelContext& ctx);
     // view_panes.cpp
@@ -60,12 +60,12 @@ public:
     int domainKind = 0, paneCount = 1;
     std::array<int, 4> paneSpacing{0, 1, 2, 3};  // index into kPaneSpacings
     std::array<float, 4> paneLevel{0, 0, 0, 0};  // a pane's own uniform level; 0: the document's
-    bool splitView = false;  // the 3D view split into the same panes, one camera
+    bool splitView = false;                      // the 3D view split into the same panes, one camera
     int activePane = 0;
-    std::vector<render::PaneResult> viewPanes;             // what each split pane drew last frame
-    std::vector<render::DomainViewOptions> domainPanes;    // this frame's panes, framebuffer pixels
-    std::array<float, 4> windowRect{0, 0, 0, 0};            // the domain window (x, y, w, h), 0 when hidden
-    std::vector<std::array<float, 4>> labelBoxes;           // where its labels went (x, y, w, h; the test trace)
+    std::vector<render::PaneResult> viewPanes;           // what each split pane drew last frame
+    std::vector<render::DomainViewOptions> domainPanes;  // this frame's panes, framebuffer pixels
+    std::array<float, 4> windowRect{0, 0, 0, 0};         // the domain window (x, y, w, h), 0 when hidden
+    std::vector<std::array<float, 4>> labelBoxes;        // where its labels went (x, y, w, h; the test trace)
     std::vector<render::DomainStats> domainStats;
     struct Sweep {
         bool playing = false, loop = true;

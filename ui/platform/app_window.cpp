@@ -13,13 +13,13 @@
 #include <iostream>
 #include <thread>
 
-#include "core/edit/autosave.hpp"
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
-#include "render/vk/device.hpp"
+#include "core/edit/autosave.hpp"
 #include "render/targets/png_writer.hpp"
-#include "ui/platform/swapchain_target.hpp"
+#include "render/vk/device.hpp"
 #include "ui/platform/imgui_layer.hpp"
+#include "ui/platform/swapchain_target.hpp"
 #include "ui/platform/x11_present.hpp"
 
 namespace pw::ui {
@@ -40,17 +40,29 @@ void onButton(GLFWwindow*, int button, int action, int) {
     if (button == GLFW_MOUSE_BUTTON_LEFT && action == GLFW_PRESS) g_window->leftPressAt(g_cursorX, g_cursorY);
     g_window->wake();
 }
-void onScroll(GLFWwindow*, double, double) { if (g_window) g_window->wake(); }
+void onScroll(GLFWwindow*, double, double) {
+    if (g_window) g_window->wake();
+}
 void onKey(GLFWwindow*, int key, int, int action, int mods) {
     if (!g_window) return;
     if (action != GLFW_RELEASE) g_window->keyEvent(key, mods);
     g_window->wake();
 }
-void onChar(GLFWwindow*, unsigned int) { if (g_window) g_window->wake(); }
-void onSize(GLFWwindow*, int, int) { if (g_window) g_window->wake(); }
-void onRefresh(GLFWwindow*) { if (g_window) g_window->wake(); }
-void onFocus(GLFWwindow*, int) { if (g_window) g_window->wake(); }
-void onEnter(GLFWwindow*, int) { if (g_window) g_window->wake(); }
+void onChar(GLFWwindow*, unsigned int) {
+    if (g_window) g_window->wake();
+}
+void onSize(GLFWwindow*, int, int) {
+    if (g_window) g_window->wake();
+}
+void onRefresh(GLFWwindow*) {
+    if (g_window) g_window->wake();
+}
+void onFocus(GLFWwindow*, int) {
+    if (g_window) g_window->wake();
+}
+void onEnter(GLFWwindow*, int) {
+    if (g_window) g_window->wake();
+}
 
 const char* kNoDisplay =
     "patchwork: no display (DISPLAY/WAYLAND_DISPLAY unset or unreachable); use `patchwork render FILE -o out.png` for "
@@ -332,8 +344,7 @@ void AppWindow::writeScreenshot(const std::string& path, float cropLeft, float c
     const uint32_t x1 = std::max(x0 + 1, w - std::min(w - x0 - 1, uint32_t(std::max(0.0, cropRight * scale))));
     std::vector<uint8_t> out;
     out.reserve(size_t(x1 - x0) * h * 4);
-    for (uint32_t y = 0; y < h; ++y)
-        out.insert(out.end(), px.begin() + (size_t(y) * w + x0) * 4, px.begin() + (size_t(y) * w + x1) * 4);
+    for (uint32_t y = 0; y < h; ++y) out.insert(out.end(), px.begin() + (size_t(y) * w + x0) * 4, px.begin() + (size_t(y) * w + x1) * 4);
     render::writePng(path, x1 - x0, h, out);
 }
 

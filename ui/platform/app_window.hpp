@@ -65,7 +65,7 @@ public:
     // Key presses since the last frame with their modifiers (ImGui 1.86 keeps only key state, so a
     // press and release between two frames would be lost); the benchmark injects keys here too.
     void keyEvent(int key, int mods) { keyQueue_.emplace_back(key, mods); }
-    bool keyPressed(int key, int mods) const;  // `key` with exactly `mods` queued this frame
+    bool keyPressed(int key, int mods) const;                                         // `key` with exactly `mods` queued this frame
     const std::vector<std::pair<int, int>>& queuedKeys() const { return keyQueue_; }  // in the order pressed
     // Where the left button went down this frame (a press and a move can arrive in one frame).
     std::optional<std::array<double, 2>> leftPress() const;
@@ -79,8 +79,8 @@ public:
 
     // One frame, in this order. beginUi: ImGui's new frame with this frame's queued keys held down.
     void beginUi();
-    void endUi();     // ImGui::Render; the held keys released, the queue cleared
-    bool acquire();   // a swapchain image to draw into; false: the frame is skipped
+    void endUi();    // ImGui::Render; the held keys released, the queue cleared
+    bool acquire();  // a swapchain image to draw into; false: the frame is skipped
     // ImGui's draw data over the image, after clearing `fills` (window pixels) to the panels'
     // colour (ImGui's textured background quads cost ~1.5 ms a frame on CPU devices), and present.
     void present(std::span<const std::array<float, 4>> fills);

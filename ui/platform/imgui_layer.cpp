@@ -5,12 +5,12 @@
 #include <cstdio>
 #include <vector>
 
-#include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_vulkan.h>
+#include <imgui.h>
 
-#include "render/vk/device.hpp"
 #include "core/base/embedded_data.hpp"
+#include "render/vk/device.hpp"
 #include "ui/platform/swapchain_target.hpp"
 
 namespace pw::ui {
@@ -39,14 +39,14 @@ ImGuiLayer::ImGuiLayer(render::Device& dev, GLFWwindow* window, render::Swapchai
     ImFontConfig merge;
     merge.MergeMode = true;
     merge.FontDataOwnedByAtlas = false;
-    io.Fonts->AddFontFromMemoryTTF(const_cast<char*>(embedded::uiFontTtf.data()), int(embedded::uiFontTtf.size()), 13.0f * scale,
-                                   &merge, arrow);
+    io.Fonts->AddFontFromMemoryTTF(const_cast<char*>(embedded::uiFontTtf.data()), int(embedded::uiFontTtf.size()), 13.0f * scale, &merge,
+                                   arrow);
     // Presentation mode's large text: the embedded DejaVu Sans at 3x, drawn scaled 0.5-1x (1.5-3x
     // the UI size) so it stays sharp.
     ImFontConfig big;
     big.FontDataOwnedByAtlas = false;
-    presentationFont_ = io.Fonts->AddFontFromMemoryTTF(const_cast<char*>(embedded::uiFontTtf.data()), int(embedded::uiFontTtf.size()),
-                                                       39.0f * scale, &big);
+    presentationFont_ =
+        io.Fonts->AddFontFromMemoryTTF(const_cast<char*>(embedded::uiFontTtf.data()), int(embedded::uiFontTtf.size()), 39.0f * scale, &big);
 
     // Step 2: descriptor pool for the font texture (and nothing else).
     VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 8};

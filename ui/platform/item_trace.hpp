@@ -12,7 +12,7 @@ namespace pw::ui {
 
 struct ItemTrace {
     std::map<std::string, std::array<float, 2>> items;  // window-coordinate centres of named widgets
-    std::string modal;                                    // the modal (or palette) open this frame
+    std::string modal;                                  // the modal (or palette) open this frame
     void clear() {
         items.clear();
         modal.clear();

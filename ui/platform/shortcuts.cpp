@@ -14,18 +14,26 @@ std::optional<KeyChord> parseShortcut(std::string_view text) {
         const size_t plus = text.find('+');
         if (plus == std::string_view::npos || plus + 1 == text.size()) break;
         const std::string_view mod = text.substr(0, plus);
-        if (mod == "Ctrl") k.mods |= GLFW_MOD_CONTROL;
-        else if (mod == "Shift") k.mods |= GLFW_MOD_SHIFT;
-        else if (mod == "Alt") k.mods |= GLFW_MOD_ALT;
-        else return std::nullopt;
+        if (mod == "Ctrl")
+            k.mods |= GLFW_MOD_CONTROL;
+        else if (mod == "Shift")
+            k.mods |= GLFW_MOD_SHIFT;
+        else if (mod == "Alt")
+            k.mods |= GLFW_MOD_ALT;
+        else
+            return std::nullopt;
         text.remove_prefix(plus + 1);
     }
     if (text.size() == 1) {
         const char c = text[0];
-        if (c >= 'A' && c <= 'Z') k.key = GLFW_KEY_A + (c - 'A');
-        else if (c >= '0' && c <= '9') k.key = GLFW_KEY_0 + (c - '0');
-        else if (c == '/') k.key = GLFW_KEY_SLASH;
-        else return std::nullopt;
+        if (c >= 'A' && c <= 'Z')
+            k.key = GLFW_KEY_A + (c - 'A');
+        else if (c >= '0' && c <= '9')
+            k.key = GLFW_KEY_0 + (c - '0');
+        else if (c == '/')
+            k.key = GLFW_KEY_SLASH;
+        else
+            return std::nullopt;
         return k;
     }
     if (text.size() >= 2 && text[0] == 'F') {
@@ -39,11 +47,16 @@ std::optional<KeyChord> parseShortcut(std::string_view text) {
         k.key = GLFW_KEY_KP_0 + (text[6] - '0');
         return k;
     }
-    if (text == "Delete") k.key = GLFW_KEY_DELETE;
-    else if (text == "Enter") k.key = GLFW_KEY_ENTER;
-    else if (text == "Escape") k.key = GLFW_KEY_ESCAPE;
-    else if (text == "Tab") k.key = GLFW_KEY_TAB;
-    else return std::nullopt;
+    if (text == "Delete")
+        k.key = GLFW_KEY_DELETE;
+    else if (text == "Enter")
+        k.key = GLFW_KEY_ENTER;
+    else if (text == "Escape")
+        k.key = GLFW_KEY_ESCAPE;
+    else if (text == "Tab")
+        k.key = GLFW_KEY_TAB;
+    else
+        return std::nullopt;
     return k;
 }
 

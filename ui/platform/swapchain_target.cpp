@@ -15,8 +15,13 @@ SwapchainTarget::SwapchainTarget(Device& dev, VkSurfaceKHR surface, VkExtent2D f
     // Step 2: overlay render pass (ImGui): load what the renderer drew, end ready to present (or,
     // presenting from host memory, ready for the copy into it).
     // flags, format, samples, load/store, stencil load/store, initial and final layout
-    const VkAttachmentDescription att{0, format_, VK_SAMPLE_COUNT_1_BIT, VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_STORE_OP_STORE,
-                                      VK_ATTACHMENT_LOAD_OP_DONT_CARE, VK_ATTACHMENT_STORE_OP_DONT_CARE,
+    const VkAttachmentDescription att{0,
+                                      format_,
+                                      VK_SAMPLE_COUNT_1_BIT,
+                                      VK_ATTACHMENT_LOAD_OP_LOAD,
+                                      VK_ATTACHMENT_STORE_OP_STORE,
+                                      VK_ATTACHMENT_LOAD_OP_DONT_CARE,
+                                      VK_ATTACHMENT_STORE_OP_DONT_CARE,
                                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                                       hostPresent_ ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL : VK_IMAGE_LAYOUT_PRESENT_SRC_KHR};
     VkAttachmentReference ref{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
@@ -74,7 +79,6 @@ void SwapchainTarget::chooseSurfaceFormat() {
             colorSpace_ = f.colorSpace;
             break;
         }
-
 }
 
 SwapchainTarget::~SwapchainTarget() {
@@ -128,7 +132,7 @@ void SwapchainTarget::createSwapchain(VkExtent2D size) {
     ci.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
     ci.preTransform = caps.currentTransform;
     ci.compositeAlpha = (caps.supportedCompositeAlpha & VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR) ? VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR
-                                                                                            : VK_COMPOSITE_ALPHA_INHERIT_BIT_KHR;
+                                                                                           : VK_COMPOSITE_ALPHA_INHERIT_BIT_KHR;
     ci.presentMode = VK_PRESENT_MODE_FIFO_KHR;
     ci.clipped = VK_TRUE;
     ci.oldSwapchain = swapchain_;
@@ -255,9 +259,8 @@ bool SwapchainTarget::submitAndPresent(VkCommandBuffer cmd) {
 
 void SwapchainTarget::beginRendering(VkCommandBuffer cmd, const std::array<float, 4>& clear) {
     // Previous contents are discarded (UNDEFINED): every frame clears.
-    imageBarrier(cmd, images_[current_], VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-                 VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, 0,
-                 VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+    imageBarrier(cmd, images_[current_], VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                 VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, 0, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                  VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_READ_BIT);
     discardDepthToAttachment(cmd, depth_.image);
     beginColorDepthRendering(cmd, {extent_, views_[current_], depth_.view}, false, clear);

@@ -18,9 +18,9 @@
 #include <functional>
 #include <vector>
 
+#include "render/targets/render_target.hpp"
 #include "render/vk/buffers.hpp"
 #include "render/vk/vk_owned.hpp"
-#include "render/targets/render_target.hpp"
 
 namespace pw::render {
 
@@ -86,8 +86,8 @@ private:
     // Host presentation.
     HostPresent hostPresent_;
     Image hostImage_;
-    Buffer hostPixels_;                           // mapped copy of the finished frame
-    OwnedCommandBuffer copyCmd_;                  // image -> hostPixels_, recorded per size
+    Buffer hostPixels_;           // mapped copy of the finished frame
+    OwnedCommandBuffer copyCmd_;  // image -> hostPixels_, recorded per size
 };
 
 }  // namespace pw::render
