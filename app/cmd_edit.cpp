@@ -28,6 +28,8 @@ struct EditOptions {
 class ScriptHost final : public CommandHost {
 public:
     void write(const Document& doc, const std::string& path) override { writes.emplace_back(path, doc); }
+    // Notes of the edits (a construction whose inputs no longer fit) go to standard error.
+    void note(const std::string& message) override { std::cerr << "note: " << message << "\n"; }
     std::vector<std::pair<std::string, Document>> writes;
 };
 

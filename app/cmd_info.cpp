@@ -11,8 +11,10 @@
 
 #include "app/commands.hpp"
 #include "core/base/errors.hpp"
+#include "core/construct/constructions.hpp"
 #include "core/io/document_io.hpp"
 #include "core/io/formats.hpp"
+#include "core/model/construction_refs.hpp"
 #include "core/solve/constraint_solver.hpp"
 #include "core/solve/continuity_report.hpp"
 
@@ -66,6 +68,13 @@ int runInfo(const InfoOptions& opt) {
         return names;
     };
     const double residual = maxConstraintResidual(doc);
+    // Curves as `cN` and the live constructions as `kN`, each with whether its inputs still fit
+    // (made again here, as the editor does on opening).
+    Document live = doc;
+    rerunConstructions(live);
+    const auto rational = [&](const BezierCurve& c) {
+        return std::any_of(c.idx.begin(), c.idx.end(), [&](uint32_t i) { return pointWeight(doc, i) != 1.0; });
+    };
 
     if (opt.json) {
         using nlohmann::json;
@@ -115,6 +124,30 @@ int runInfo(const InfoOptions& opt) {
                              {"outOfTolerance", failureNames(toleranceFailures(c, jn.continuity, doc.tolerances))}});
         }
         j["joinReport"] = std::move(joins);
+        json curves = json::array();
+        for (size_t i = 0; i < doc.curves.size(); ++i) {
+            const BezierCurve& c = doc.curves[i];
+            curves.push_back({{"id", "c" + std::to_string(i)},
+                              {"name", c.name},
+                              {"segments", curveSegmentCount(c)},
+                              {"closed", curveClosed(c)},
+                              {"rational", rational(c)},
+                              {"points", c.idx}});
+        }
+        j["curveList"] = std::move(curves);
+        json made = json::array();
+        for (size_t k = 0; k < live.constructions.size(); ++k) {
+            const Construction& c = live.constructions[k];
+            json inputs = json::array();
+            for (const CurveInput& in : c.inputs) inputs.push_back(curveInputName(in));
+            made.push_back({{"id", "k" + std::to_string(k)},
+                            {"kind", constructionKindName(c.kind)},
+                            {"inputs", std::move(inputs)},
+                            {"patches", c.patches},
+                            {"live", c.error.empty()},
+                            {"error", c.error}});
+        }
+        j["constructions"] = std::move(made);
         std::cout << j.dump(2, ' ', false, json::error_handler_t::replace) << "\n";
         return 0;
     }
@@ -143,6 +176,17 @@ int runInfo(const InfoOptions& opt) {
               << " %)\n";
     std::cout << "  max constraint residual   " << fmt("%.3g", residual) << "  (" << fmt("%.3g", residual / size)
               << " x model size; edits keep it <= 1e-6)\n";
+
+    for (size_t i = 0; i < doc.curves.size(); ++i) {
+        const BezierCurve& c = doc.curves[i];
+        std::cout << "  curve c" << i << "  " << curveSegmentCount(c) << " segment" << (curveSegmentCount(c) == 1 ? "" : "s")
+                  << (curveClosed(c) ? ", closed" : ", open") << (rational(c) ? ", rational" : "") << "  \"" << printable(c.name) << "\"\n";
+    }
+    for (size_t k = 0; k < live.constructions.size(); ++k) {
+        const Construction& c = live.constructions[k];
+        std::cout << "  " << constructionLabel(live, k) << ": " << c.patches.size() << " patches, "
+                  << (c.error.empty() ? "live" : "inputs do not fit: " + printable(c.error)) << "\n";
+    }
 
     if (!opt.noJoins && !report.empty()) {
         std::cout << "\n  join  patch edge  patch edge  rev  cont   alpha      C0 gap     C1 resid   normal deg  curv dev %  out\n";

@@ -38,6 +38,7 @@
 #include "core/base/errors.hpp"
 #include "core/construct/model_builders.hpp"
 #include "core/construct/primitives.hpp"
+#include "core/edit/edit_session.hpp"
 #include "core/eval/bezier_triangle.hpp"
 #include "core/eval/patch_eval.hpp"
 #include "core/eval/rational_eval.hpp"
@@ -198,6 +199,33 @@ TEST(StepExport, TheSphereIsExactRationalFaces) {
     }
     EXPECT_LT(worstRadius, 1e-12);
     EXPECT_LT(worstPatch, 1e-12);
+    fs::remove_all(dir);
+}
+
+// A vase revolved from a curve through points (issue 39) as read back by OpenCASCADE: twelve
+// rational faces, each its patch within 1e-9 (the patches are the exact surface of revolution,
+// tests/test_constructions.cpp).
+TEST(StepExport, ARevolvedProfileIsExactRationalFaces) {
+    const fs::path dir = pw::test::freshTempDir("step-vase");
+    pw::EditSession s;
+    pw::test::runEditScript(s, "curve-through 1,0,0 1.5,0,1 0.8,0,2 1.2,0,3; revolve c0 Z");
+    const pw::Document& doc = s.doc;
+    pw::exportStep(doc, dir / "vase.step", {});
+    const ReadBack r = readWithOcct(dir / "vase.step");
+    ASSERT_EQ(r.faces.size(), 12u);
+    double worst = 0.0;
+    for (const TopoDS_Face& f : r.faces) {
+        const auto bs = Handle(Geom_BSplineSurface)::DownCast(BRep_Tool::Surface(f));
+        ASSERT_FALSE(bs.IsNull());
+        EXPECT_TRUE(bs->IsURational() || bs->IsVRational());  // around the axis
+        double best = 1e300;
+        for (const pw::Patch& p : doc.patches) {
+            const pw::WindowNet net = pw::gatherWindow(doc, p.idx);
+            best = std::min(best, deviation(f, [&](double u, double v) { return pw::evaluateWindow(net, p.basis, p.tension, u, v).p; }));
+        }
+        worst = std::max(worst, best);
+    }
+    EXPECT_LT(worst, 1e-9);
     fs::remove_all(dir);
 }
 

@@ -78,6 +78,7 @@ void CommandTable::run(EditSession& session, CommandHost& host, const std::vecto
     } catch (const EditError& e) {
         throw EditError(c->name + ": " + e.what());
     }
+    for (const std::string& note : session.takeNotes()) host.note(note);
 }
 
 void CommandTable::runScript(EditSession& session, CommandHost& host, std::string_view script, const std::string& scriptName) const {
@@ -157,6 +158,7 @@ CommandTable makeCommandTable() {
     addViewCommands(t);
     addSettingCommands(t);
     addDisplacementCommands(t);
+    addConstructCommands(t);
     return t;
 }
 

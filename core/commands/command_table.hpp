@@ -58,6 +58,8 @@ public:
         return false;
     }
     virtual void status(const std::string& message) { (void)message; }
+    // What an edit left to say (a live construction whose inputs no longer fit): the status line.
+    virtual void note(const std::string& message) { status(message); }
 };
 
 struct Command;
@@ -127,13 +129,16 @@ std::vector<std::string> splitCommandWords(std::string_view line);
 // The document, file, selection, transform, patch, view and display commands, and the
 // window-only ones (their runs call the host).
 CommandTable makeCommandTable();
-void addFileCommands(CommandTable& t);          // core/commands/commands_file.cpp: new, open, import, save, undo, …
-void addSelectCommands(CommandTable& t);        // core/commands/commands_select.cpp: select, move, rotate, scale, cursor
-void addModelCommands(CommandTable& t);         // core/commands/commands_model.cpp: add, delete, duplicate, join, split, …
-void addPrimitiveCommands(CommandTable& t);     // core/commands/commands_primitives.cpp: exact sphere, cylinder, cone, torus; weight
-void addViewCommands(CommandTable& t);          // core/commands/commands_view.cpp: views, frame, overlays, shading, levels
-void addSettingCommands(CommandTable& t);       // core/commands/commands_settings.cpp: `set KEY VALUE...` for every settings row
-void addDisplacementCommands(CommandTable& t);  // core/commands/commands_displacement.cpp: height map, scale, bias, mapping
+void addFileCommands(CommandTable& t);       // core/commands/commands_file.cpp: new, open, import, save, undo, …
+void addSelectCommands(CommandTable& t);     // core/commands/commands_select.cpp: select, move, rotate, scale, cursor
+void addModelCommands(CommandTable& t);      // core/commands/commands_model.cpp: add, delete, duplicate, join, split, …
+void addPrimitiveCommands(CommandTable& t);  // core/commands/commands_primitives.cpp: exact sphere, cylinder, cone, torus; weight
+void addViewCommands(CommandTable& t);       // core/commands/commands_view.cpp: views, frame, overlays, shading, levels
+void addSettingCommands(CommandTable& t);    // core/commands/commands_settings.cpp: `set KEY VALUE...` for every settings row
+void addDisplacementCommands(CommandTable& t);
+void addConstructCommands(CommandTable& t);  // core/commands/commands_construct.cpp: curves, revolve, loft, bake
+// `extrude C DX DY DZ`: the curve or edge C extruded (the `extrude` command's second form).
+void runCurveExtrude(CommandContext& ctx);  // core/commands/commands_displacement.cpp: height map, scale, bias, mapping
 
 // Argument parsing for commands: a number, an index, an "A:EDGE" pair; EditError naming the word.
 double commandNumber(const std::string& word, const char* what);

@@ -209,8 +209,19 @@ void addModelCommands(CommandTable& t) {
                const uint32_t p = uint32_t(ctx.session.sel.patch);
                ctx.session.apply("Flip patch", [p](Document& d) { flipPatch(d, p); });
            }});
-    t.add(fromEdge("extrude", "Extrude Edge", "Add a C1 patch continuing an edge of the selected patch (default: the highlighted edge)",
-                   "Extrude edge", &Selection::patch, extrudeEdge));
+    // Two forms: an edge of the selected patch continued by a C1 patch, or a curve extruded (live).
+    Command extrude = fromEdge("extrude", "Extrude Edge",
+                               "Add a C1 patch continuing an edge of the selected patch (default: the highlighted edge); with a curve or "
+                               "patch edge C and an offset, the surface C sweeps along it (live while C is edited)",
+                               "Extrude edge", &Selection::patch, extrudeEdge);
+    extrude.usage = "[u0|v0|u1|v1] | C DX DY DZ";
+    extrude.enabled = nullptr;
+    extrude.run = [edgeRun = extrude.run](CommandContext& ctx) {
+        if (ctx.args.size() >= 2) return runCurveExtrude(ctx);
+        if (!hasPatch(ctx.session)) throw EditError("select a patch to extrude its edge, or give a curve and an offset (C DX DY DZ)");
+        edgeRun(ctx);
+    };
+    t.add(std::move(extrude));
     t.add({.name = "split",
            .label = "Split",
            .menu = "Patch",

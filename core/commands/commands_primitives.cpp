@@ -8,6 +8,7 @@
 #include "core/commands/command_table.hpp"
 #include "core/construct/primitives.hpp"
 #include "core/edit/edit_session.hpp"
+#include "core/edit/live_constructions.hpp"
 #include "core/model/placement.hpp"
 
 namespace pw {
@@ -76,6 +77,7 @@ void addPrimitiveCommands(CommandTable& t) {
                const double w = commandNumber(ctx.args[0], "W");
                const std::vector<uint32_t> pts = s.selectedPoints();
                if (pts.empty()) throw EditError("select the control points to weigh first");
+               if (const std::string why = constructedPointsRefusal(s.doc, pts); !why.empty()) throw EditError(why);
                s.apply("Weight " + formatWeight(w), [&](Document& d) {
                    for (uint32_t i : pts) setPointWeight(d, i, w);
                    if (const auto tp = weightedTrianglePoint(d))

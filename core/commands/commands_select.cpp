@@ -7,6 +7,8 @@
 
 #include "core/base/errors.hpp"
 #include "core/commands/command_table.hpp"
+#include "core/construct/constructions.hpp"
+#include "core/edit/live_constructions.hpp"
 #include "core/solve/constraint_solver.hpp"
 
 #include "core/select/picking.hpp"
@@ -88,14 +90,16 @@ void select(CommandContext& ctx) {
 void transformSelection(CommandContext& ctx, const std::string& label, const std::function<Vec3(const Vec3&)>& f) {
     const std::vector<uint32_t> moved = ctx.session.selectedPoints();
     if (moved.empty()) throw EditError("nothing is selected (select points, a patch, a net, a triangle or a curve first)");
+    if (const std::string why = constructedPointsRefusal(ctx.session.doc, moved); !why.empty()) throw EditError(why);
     const Symmetry sym = ctx.session.symmetry;
     ctx.session.apply(
         label,
         [&](Document& d) {
             const SymmetryPairs pairs = symmetryPairs(d, moved, sym);
-            const DragSolver solver(d, pairs.driven(moved));
+            const DragSolver solver(d, withConstructionPoints(d, pairs.driven(moved)));
             for (uint32_t p : moved) d.points[p] = f(d.points[p]);
             applySymmetry(d.points, pairs, sym);
+            if (!d.constructions.empty()) rerunConstructions(d);  // surfaces made from moved curves follow
             if (const Projection p = solver.project(d.points); !p.ok()) throw EditError("the joins cannot follow: " + conflictMessage(p));
         },
         false);

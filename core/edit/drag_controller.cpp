@@ -3,6 +3,7 @@
 // (core/edit/drag_controller.hpp).
 #include "core/edit/drag_controller.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -10,6 +11,8 @@
 
 #include "core/base/limits.hpp"
 #include "core/base/point_upload.hpp"
+#include "core/construct/constructions.hpp"
+#include "core/edit/live_constructions.hpp"
 #include "core/model/camera_math.hpp"
 #include "core/select/picking.hpp"
 
@@ -50,6 +53,10 @@ bool DragController::begin(const Document& doc, const Selection& sel, const Drag
 bool DragController::begin(const Document& doc, const TransformStart& start, const DragView& view, double x, double y) {
     *this = DragController{};
     if (start.points.empty()) return false;
+    if (std::string why = constructedPointsRefusal(doc, start.points); !why.empty()) {
+        refusal_ = std::move(why);
+        return false;
+    }
     snapTarget_ = start.snap;
     kind_ = start.kind;
     grab_ = start.grab;
@@ -62,7 +69,9 @@ bool DragController::begin(const Document& doc, const TransformStart& start, con
     movedMask_.assign(doc.points.size(), false);
     for (uint32_t p : driven)
         if (p < movedMask_.size()) movedMask_[p] = true;
-    solver_ = std::make_unique<DragSolver>(doc, driven);  // factorised once per transform
+    // Live constructions: their surfaces and inputs stay where the constructions put them and
+    // their neighbours follow.
+    solver_ = std::make_unique<DragSolver>(doc, withConstructionPoints(doc, driven));  // factorised once per transform
     anchor_ = start.pivot;
     Vec3 r, u, f;
     cameraAxes(view.camera, r, u, f);
@@ -213,6 +222,7 @@ bool DragController::update(Document& doc, const DragView& view, double x, doubl
     }
     for (uint32_t p : moved_) doc.points[p] = f(start_[p]);
     applySymmetry(doc.points, pairs_, symmetry_);
+    if (!doc.constructions.empty()) rerunConstructions(doc);  // the surfaces follow their inputs
     projection_ = solver_->project(doc.points);
     takeChangedPoints(uploaded_, doc.points, changed_);
     return true;
@@ -268,9 +278,10 @@ std::string HeldPointEdit::set(EditSession& session, uint32_t point, const Vec3&
                           limits::kMaxCoordinate, position[k]);
             return msg;
         }
+    if (std::string why = constructedPointsRefusal(session.committed(), {point}); !why.empty()) return why;
     if (!solver_ || point_ != point || generation_ != session.generation() || symmetry_ != session.symmetry) {
         pairs_ = symmetryPairs(session.committed(), {point}, session.symmetry);
-        solver_ = std::make_unique<DragSolver>(session.committed(), pairs_.driven({point}));
+        solver_ = std::make_unique<DragSolver>(session.committed(), withConstructionPoints(session.committed(), pairs_.driven({point})));
         point_ = point;
         generation_ = session.generation();
         symmetry_ = session.symmetry;
@@ -278,8 +289,9 @@ std::string HeldPointEdit::set(EditSession& session, uint32_t point, const Vec3&
     std::vector<Vec3> pts = session.committed().points;
     pts[point] = position;
     applySymmetry(pts, pairs_, symmetry_);
-    projection_ = solver_->project(pts);
     session.doc.points = std::move(pts);
+    if (!session.doc.constructions.empty()) rerunConstructions(session.doc);
+    projection_ = solver_->project(session.doc.points);
     return "";
 }
 

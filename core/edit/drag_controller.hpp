@@ -44,11 +44,12 @@ struct TransformStart {
 class DragController {
 public:
     // Starts the transform with the mouse at (x, y). Returns false, starting nothing, when no point
-    // is given.
+    // is given or a point is made by a live construction (refusal() says so).
     bool begin(const Document& doc, const TransformStart& start, const DragView& view, double x, double y);
     // A move of sel.points about their centroid (a left drag on a selected point).
     bool begin(const Document& doc, const Selection& sel, const DragView& view, double x, double y, bool grab);
     bool active() const { return solver_ != nullptr; }
+    const std::string& refusal() const { return refusal_; }  // why the last begin() started nothing
     bool grab() const { return grab_; }
     TransformKind kind() const { return kind_; }
 
@@ -111,6 +112,7 @@ private:
     bool plane_ = false;
     bool grab_ = false;
     std::string typed_;
+    std::string refusal_;
     SnapTarget snapTarget_ = SnapTarget::Grid;
     Vec3 lastOffset_{0.0}, lastScale_{1.0};
     double lastAngle_ = 0.0;

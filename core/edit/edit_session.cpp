@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/base/errors.hpp"
+#include "core/edit/live_constructions.hpp"
 #include "core/io/document_io.hpp"
 #include "core/model/placement.hpp"
 #include "core/ops/patch_ops.hpp"
@@ -32,6 +34,11 @@ void EditSession::markCommitted() {
 
 void EditSession::reset(Document d, const std::string& path) {
     doc = std::move(d);
+    try {  // errors of constructions whose inputs no longer fit (a file edited elsewhere)
+        notes_ = refreshConstructions(doc);
+    } catch (const EditError& e) {
+        notes_ = {e.what()};
+    }
     markCommitted();
     history_.clear();
     history_.markSaved();
@@ -95,6 +102,8 @@ bool EditSession::step(bool forward) {
 void EditSession::apply(const std::string& label, const std::function<void(Document&)>& op, bool topology) {
     Document d = doc;
     op(d);
+    std::vector<std::string> notes = refreshConstructions(d);
+    notes_.insert(notes_.end(), notes.begin(), notes.end());
     doc = std::move(d);
     commit(label);
     changed(topology);

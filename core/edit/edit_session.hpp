@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/io/gltf_export.hpp"
@@ -60,8 +61,10 @@ public:
     void commit(const std::string& label);
     bool undo();
     bool redo();
-    // Runs `op` on a copy of the document; when it returns, the copy becomes the document and one
-    // undo step. When it throws, the document is unchanged and the exception goes on.
+    // Runs `op` on a copy of the document; when it returns, the live constructions are made again
+    // from their inputs with the joins held (core/edit/live_constructions.hpp), the copy becomes the
+    // document and one undo step. When either throws, the document is unchanged and the exception
+    // goes on.
     void apply(const std::string& label, const std::function<void(Document&)>& op, bool topology = true);
 
     // The document as it is saved: doc with the session's camera.
@@ -69,6 +72,10 @@ public:
     // After a successful write to `path`: a lossless format (saveKeepsEverything) becomes the
     // document's file and the saved state; other formats are exports and change neither.
     void savedTo(const std::string& path);
+
+    // Notes of the last edits for the status line (constructions whose inputs no longer fit, or
+    // that were baked); takeNotes() empties them.
+    std::vector<std::string> takeNotes() { return std::exchange(notes_, {}); }
 
     bool isModified() const { return history_.isModified() || forceModified_; }
     void setForceModified(bool on) { forceModified_ = on; }  // e.g. a recovered autosave
@@ -86,6 +93,7 @@ private:
     std::string path_;
     uint64_t generation_ = 0, version_ = 0, topologyVersion_ = 0, serial_ = 0;
     bool forceModified_ = false;
+    std::vector<std::string> notes_;
     void markCommitted();
     bool step(bool forward);  // undo (false) or redo (true)
 };

@@ -19,8 +19,9 @@ Vec3 curveTangent(const std::array<Vec3, 4>& p, double t) {
     return 3.0 * (s * s * (p[1] - p[0]) + 2.0 * s * t * (p[2] - p[1]) + t * t * (p[3] - p[2]));
 }
 
-std::array<Vec3, 4> curvePoints(const Document& doc, const BezierCurve& c) {
-    return {doc.points.at(c.idx[0]), doc.points.at(c.idx[1]), doc.points.at(c.idx[2]), doc.points.at(c.idx[3])};
+std::array<Vec3, 4> curvePoints(const Document& doc, const BezierCurve& c, size_t s) {
+    const std::array<uint32_t, 4> i = curveSegment(c, s);
+    return {doc.points.at(i[0]), doc.points.at(i[1]), doc.points.at(i[2]), doc.points.at(i[3])};
 }
 
 std::vector<Vec3> sampleCurve(const std::array<Vec3, 4>& p, int segments) {
@@ -31,15 +32,19 @@ std::vector<Vec3> sampleCurve(const std::array<Vec3, 4>& p, int segments) {
 }
 
 std::vector<Vec3> sampleCurve(const Document& doc, const BezierCurve& c, int segments) {
-    const std::array<Vec3, 4> p = curvePoints(doc, c);
-    const std::array<double, 4> w{pointWeight(doc, c.idx[0]), pointWeight(doc, c.idx[1]), pointWeight(doc, c.idx[2]),
-                                  pointWeight(doc, c.idx[3])};
-    if (w == std::array<double, 4>{1.0, 1.0, 1.0, 1.0}) return sampleCurve(p, segments);
     segments = std::max(segments, 1);
-    std::vector<Vec3> out(size_t(segments) + 1);
-    for (int i = 0; i <= segments; ++i) out[size_t(i)] = evaluateRationalCurve(p, w, double(i) / double(segments)).p;
-    out.front() = p[0];
-    out.back() = p[3];
+    std::vector<Vec3> out;
+    out.reserve(curveSegmentCount(c) * size_t(segments) + 1);
+    for (size_t s = 0; s < curveSegmentCount(c); ++s) {
+        const std::array<uint32_t, 4> i = curveSegment(c, s);
+        const std::array<Vec3, 4> p = curvePoints(doc, c, s);
+        const std::array<double, 4> w{pointWeight(doc, i[0]), pointWeight(doc, i[1]), pointWeight(doc, i[2]), pointWeight(doc, i[3])};
+        const bool rational = w != std::array<double, 4>{1.0, 1.0, 1.0, 1.0};
+        for (int k = s == 0 ? 0 : 1; k <= segments; ++k) {
+            const double t = double(k) / double(segments);
+            out.push_back(k == 0 ? p[0] : k == segments ? p[3] : rational ? evaluateRationalCurve(p, w, t).p : evaluateCurve(p, t));
+        }
+    }
     return out;
 }
 

@@ -14,11 +14,13 @@ namespace pw {
 Vec3 evaluateCurve(const std::array<Vec3, 4>& p, double t);
 // The derivative dp/dt.
 Vec3 curveTangent(const std::array<Vec3, 4>& p, double t);
-// The curve's four control points from the document's pool.
-std::array<Vec3, 4> curvePoints(const Document& doc, const BezierCurve& c);
+// The four control points of segment s of a curve, from the document's pool.
+std::array<Vec3, 4> curvePoints(const Document& doc, const BezierCurve& c, size_t s = 0);
 // segments + 1 points at t = i / segments (segments >= 1).
 std::vector<Vec3> sampleCurve(const std::array<Vec3, 4>& p, int segments);
-// The same for a curve of the document, rational where its points have weights (exact ends).
+// The same for every segment of a curve of the document, one after the other (a segment's first
+// sample is the previous one's last, kept once): n * segments + 1 points, rational where its
+// points have weights, exact at every segment's ends.
 std::vector<Vec3> sampleCurve(const Document& doc, const BezierCurve& c, int segments);
 
 }  // namespace pw

@@ -13,6 +13,7 @@
 #include "core/base/json_guard.hpp"
 #include "core/base/json_reader.hpp"
 #include "core/base/limits.hpp"
+#include "core/io/construction_format.hpp"
 #include "core/model/settings.hpp"
 
 namespace pw {
@@ -292,6 +293,7 @@ json documentToJson(const Document& doc) {
         }
         j["curves"] = std::move(curves);
     }
+    if (!doc.constructions.empty()) j["constructions"] = constructionsJson(doc);
 
     j["tess"] = tessJson(doc.tess);
     j["display"] = displayJson(doc.display);
@@ -461,13 +463,16 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
             const json& o = r.object(curves[i], path);
             BezierCurve& c = doc.curves[i];
             const std::string ip = at(path, "idx");
-            const json& idx = r.fixedArray(*r.member(o, path, "idx", true), ip, 4);
-            for (size_t k = 0; k < 4; ++k) c.idx[k] = static_cast<uint32_t>(r.index(idx[k], at(ip, k), nPoints, "point index"));
+            const json& idx = r.array(*r.member(o, path, "idx", true), ip, 3 * limits::kMaxPatches + 1, "points");
+            if (!validCurveLength(idx.size())) r.fail(ip, "a curve has 3n + 1 points (4, 7, 10, ...), not " + std::to_string(idx.size()));
+            c.idx.resize(idx.size());
+            for (size_t k = 0; k < idx.size(); ++k) c.idx[k] = static_cast<uint32_t>(r.index(idx[k], at(ip, k), nPoints, "point index"));
             r.optional(o, path, "name", [&](const json& x, const std::string& p) { c.name = r.string(x, p); });
             r.optional(o, path, "hidden", [&](const json& x, const std::string& p) { c.hidden = r.boolean(x, p); });
         }
     }
 
+    if (const json* v = r.member(j, "", "constructions", false)) readConstructions(r, *v, doc);
     if (const json* v = r.member(j, "", "tess", false)) doc.tess = readTess(r, *v, "tess");
     if (const json* v = r.member(j, "", "display", false)) doc.display = readDisplay(r, *v, "display");
     if (const json* v = r.member(j, "", "camera", false)) doc.camera = readCamera(r, *v, "camera");
@@ -494,8 +499,8 @@ std::string serializeDocument(const Document& doc) {
     auto dump = [](const json& v) { return v.dump(-1, ' ', false, json::error_handler_t::replace); };
     std::string out = "{\n";
     bool first = true;
-    for (const char* key : {"format", "version", "name", "points", "weights", "patches", "surfaces", "joins", "triangles", "curves", "tess",
-                            "display", "camera", "displacement", "tolerances"}) {
+    for (const char* key : {"format", "version", "name", "points", "weights", "patches", "surfaces", "joins", "triangles", "curves",
+                            "constructions", "tess", "display", "camera", "displacement", "tolerances"}) {
         auto it = j.find(key);
         if (it == j.end()) continue;
         if (!first) out += ",\n";

@@ -95,14 +95,24 @@ struct TrianglePatch {
     bool operator==(const TrianglePatch&) const = default;
 };
 
-// A cubic Bézier curve: four pool points. Drawn through the GPU's isoline tessellator (DESIGN §3)
-// with TessSettings::isolineLevels[1] segments; exported as a glTF line strip.
+// A curve: a chain of cubic Bézier segments (composite Bézier, issue 39) through 3n + 1 pool
+// points, segment s taking points 3s .. 3s + 3, rational where its points have weights (exact
+// circles and arcs). Closed when the last index is the first (the chain's end point is its start).
+// Each segment is drawn through the GPU's isoline tessellator (DESIGN §3) with
+// TessSettings::isolineLevels[1] segments; exported as a glTF line strip.
 struct BezierCurve {
-    std::array<uint32_t, 4> idx{};
+    std::vector<uint32_t> idx;  // 3n + 1 pool indices, n >= 1
     std::string name;
     bool hidden = false;
     bool operator==(const BezierCurve&) const = default;
 };
+inline size_t curveSegmentCount(const BezierCurve& c) { return c.idx.size() >= 4 ? (c.idx.size() - 1) / 3 : 0; }
+inline std::array<uint32_t, 4> curveSegment(const BezierCurve& c, size_t s) {
+    return {c.idx[3 * s], c.idx[3 * s + 1], c.idx[3 * s + 2], c.idx[3 * s + 3]};
+}
+inline bool curveClosed(const BezierCurve& c) { return c.idx.size() > 4 && c.idx.front() == c.idx.back(); }
+// True for a valid chain length (3n + 1 with n >= 1).
+inline bool validCurveLength(size_t n) { return n >= 4 && (n - 1) % 3 == 0; }
 
 // A larger control net (rows x cols) under one basis; every 4x4 window is a patch. Bézier windows
 // step by 3, spline windows by 1. A closed direction wraps around (tubes and rings).
@@ -139,6 +149,36 @@ struct Join {
     double alpha = 1.0;  // β1
     double beta2 = 0.0;  // β2 (G2 only)
     bool operator==(const Join&) const = default;
+};
+
+// A surface built from curves (issue 39) that stays live: its patches are re-made from its inputs
+// whenever they change (core/construct/constructions.hpp), until `bake` detaches them.
+enum class ConstructionKind : uint8_t { Revolve, Extrude, Loft };
+std::string_view constructionKindName(ConstructionKind k);  // "revolve", "extrude", "loft"
+std::optional<ConstructionKind> parseConstructionKind(std::string_view name);
+
+// An input curve: a curve of the document, or the boundary of a patch ("c3", "2:u0").
+struct CurveInput {
+    int32_t curve = -1;  // >= 0: doc.curves[curve]; else the edge below
+    uint32_t patch = 0;
+    Edge edge = Edge::U0;
+    bool operator==(const CurveInput&) const = default;
+};
+
+struct Construction {
+    ConstructionKind kind = ConstructionKind::Revolve;
+    std::vector<CurveInput> inputs;
+    std::array<double, 3> origin{0, 0, 0};  // revolve: a point of the axis
+    std::array<double, 3> vector{0, 0, 1};  // revolve: the axis; extrude: the offset
+    double degrees = 360.0;                 // revolve
+    bool closed = false;                    // loft: back to the first section
+    // The made control net: rows x cols pool indices (row-major, Bézier, 3n + 1 each way; a closed
+    // direction repeats its first row or column), and the patches that are its 4x4 windows.
+    uint32_t rows = 0, cols = 0;
+    std::vector<uint32_t> grid;
+    std::vector<uint32_t> patches;
+    std::string error;  // "" while live; else why the inputs no longer fit (the last good surface stays)
+    bool operator==(const Construction&) const = default;
 };
 
 enum class Spacing : uint8_t { Equal, FractionalOdd, FractionalEven, Pow2 };
@@ -241,6 +281,7 @@ struct Document {
     // is kept without trailing 1s (setPointWeight, trimWeights), so a polynomial document has none
     // and two documents with the same weights compare equal.
     std::vector<double> weights;
+    std::vector<Construction> constructions;  // live surfaces from curves (issue 39)
 
     bool operator==(const Document&) const = default;
 };
@@ -283,7 +324,7 @@ inline uint64_t netWindowCount(uint32_t n, bool closed, uint32_t step) {
     return n >= 4 ? (n - 4) / step + 1 : 0;
 }
 
-// Calls f(index) for every pool index of every patch, net, triangle and curve (uint32_t& for a
+// Calls f(index) for every pool index of every patch, net, triangle, curve and construction grid (uint32_t& for a
 // mutable document, so f may renumber; const uint32_t& otherwise).
 template <class Doc, class F>
 void forEachPointIndex(Doc& doc, F&& f) {
@@ -295,6 +336,8 @@ void forEachPointIndex(Doc& doc, F&& f) {
         for (auto& i : t.idx) f(i);
     for (auto& c : doc.curves)
         for (auto& i : c.idx) f(i);
+    for (auto& k : doc.constructions)
+        for (auto& i : k.grid) f(i);
 }
 
 // Control points of one window.

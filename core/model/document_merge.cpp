@@ -41,6 +41,17 @@ MergedRange mergeDocument(Document& into, const Document& from) {
         j.patchB += r.firstPatch;
         into.joins.push_back(j);
     }
+    for (Construction c : from.constructions) {  // live in the new document too
+        for (uint32_t& i : c.grid) i += r.firstPoint;
+        for (uint32_t& p : c.patches) p += r.firstPatch;
+        for (CurveInput& in : c.inputs) {
+            if (in.curve >= 0)
+                in.curve += int32_t(r.firstCurve);
+            else
+                in.patch += r.firstPatch;
+        }
+        into.constructions.push_back(std::move(c));
+    }
     return r;
 }
 

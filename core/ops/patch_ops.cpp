@@ -7,6 +7,7 @@
 #include "core/eval/bezier_triangle.hpp"
 #include "core/eval/patch_eval.hpp"
 #include "core/eval/rational_eval.hpp"
+#include "core/model/construction_refs.hpp"
 #include "core/solve/constraint_solver.hpp"
 
 namespace pw {
@@ -104,6 +105,7 @@ uint32_t duplicatePatch(Document& doc, uint32_t p, const Vec3& offset) {
 void deletePatch(Document& doc, uint32_t p) {
     checkPatch(doc, p);
     dropPatchFromJoins(doc, p);
+    dropPatchFromConstructions(doc, p);
     eraseItem(doc, doc.patches, p);
 }
 
@@ -404,6 +406,7 @@ void unjoin(Document& doc, size_t j) {
 
 uint32_t addCurve(Document& doc, const Vec3& center, double size, bool zUp) {
     BezierCurve c;
+    c.idx.resize(4);
     const double xs[4] = {-0.5, -0.25, 0.25, 0.5}, ys[4] = {0.0, 0.5, 0.5, 0.0};
     for (int k = 0; k < 4; ++k) {
         const double a = xs[k] * size, b = ys[k] * size;
@@ -417,6 +420,7 @@ uint32_t addCurve(Document& doc, const Vec3& center, double size, bool zUp) {
 uint32_t curveFromEdge(Document& doc, uint32_t p, Edge e) {
     checkBezier(doc, p, "take a curve from");
     BezierCurve c;
+    c.idx.resize(4);
     for (int k = 0; k < 4; ++k) c.idx[size_t(k)] = doc.patches[p].idx[size_t(edgeSlot(e, k, 0))];
     c.name = (doc.patches[p].name.empty() ? "patch " + std::to_string(p) : doc.patches[p].name) + " edge " + std::string(edgeName(e));
     doc.curves.push_back(c);
@@ -425,6 +429,7 @@ uint32_t curveFromEdge(Document& doc, uint32_t p, Edge e) {
 
 void deleteCurve(Document& doc, uint32_t c) {
     checkItem(doc.curves, c, "curve");
+    dropCurveFromConstructions(doc, c);
     eraseItem(doc, doc.curves, c);
 }
 

@@ -66,9 +66,12 @@ SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc, const HeightMa
     s.triangleCount = uint32_t(doc.triangles.size());
     if (!triIdx.empty()) s.triIndices = uploadStatic(dev, triIdx, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     std::vector<uint32_t> curveIdx;
-    curveIdx.reserve(doc.curves.size() * 4);
-    for (const BezierCurve& c : doc.curves) curveIdx.insert(curveIdx.end(), c.idx.begin(), c.idx.end());
-    s.curveCount = uint32_t(doc.curves.size());
+    for (const BezierCurve& c : doc.curves)  // one isoline patch per segment
+        for (size_t k = 0; k < curveSegmentCount(c); ++k) {
+            const std::array<uint32_t, 4> seg = curveSegment(c, k);
+            curveIdx.insert(curveIdx.end(), seg.begin(), seg.end());
+        }
+    s.curveCount = uint32_t(curveIdx.size() / 4);
     if (!curveIdx.empty()) s.curveIndices = uploadStatic(dev, curveIdx, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     s.cpuPoints.reserve(doc.points.size());
     for (const Vec3& p : doc.points) s.cpuPoints.emplace_back(float(p.x), float(p.y), float(p.z));

@@ -1,0 +1,186 @@
+// Curves and the surfaces made from them (issue 39): curve-through, curve-control, add-circle,
+// add-arc; revolve, extrude (of a curve), loft, and bake. Inputs are curves `cN` or patch edges
+// `P:u0|u1|v0|v1`; the surfaces stay live (core/construct/constructions.hpp).
+#include <algorithm>
+
+#include "core/base/errors.hpp"
+#include "core/commands/command_table.hpp"
+#include "core/construct/constructions.hpp"
+#include "core/construct/curves.hpp"
+#include "core/model/construction_refs.hpp"
+
+namespace pw {
+
+namespace {
+
+// "X,Y,Z" → a point.
+Vec3 pointWord(const std::string& word) {
+    Vec3 p(0.0);
+    size_t start = 0;
+    for (int k = 0; k < 3; ++k) {
+        const size_t comma = k < 2 ? word.find(',', start) : word.size();
+        if (comma == std::string::npos || (k == 2 && word.find(',', start) != std::string::npos))
+            throw EditError("expected a point X,Y,Z, got '" + word + "'");
+        p[k] = commandNumber(word.substr(start, comma - start), "a coordinate");
+        start = comma + 1;
+    }
+    return p;
+}
+
+// Adds a curve and selects it.
+void addShape(CommandContext& ctx, const std::string& undoLabel, const std::function<CurveShape()>& make) {
+    EditSession& s = ctx.session;
+    int made = -1;
+    s.apply(undoLabel, [&](Document& d) { made = int(addCurveShape(d, make(), "")); });
+    s.sel.clear();
+    s.sel.curve = made;
+}
+
+// Makes a construction and selects its first patch.
+void construct(CommandContext& ctx, Construction c, const std::string& undoLabel) {
+    EditSession& s = ctx.session;
+    size_t k = 0;
+    const std::string name(constructionKindName(c.kind));
+    s.apply(undoLabel, [&](Document& d) { k = addConstruction(d, std::move(c), name); });
+    s.sel.clear();
+    const Construction& made = s.doc.constructions[k];
+    if (!made.patches.empty()) s.sel.patch = int(made.patches.front());
+    ctx.host.status("Made " + constructionLabel(s.doc, k) + ": " + std::to_string(made.patches.size()) + " patches");
+}
+
+std::vector<CurveInput> inputs(const CommandContext& ctx, size_t first, size_t last) {
+    std::vector<CurveInput> out;
+    for (size_t i = first; i < last; ++i) out.push_back(parseCurveInput(ctx.session.doc, ctx.args[i]));
+    return out;
+}
+
+std::array<double, 3> arr(const Vec3& v) { return {v.x, v.y, v.z}; }
+
+}  // namespace
+
+void runCurveExtrude(CommandContext& ctx) {
+    expectArgs(ctx, 4, 4);
+    Construction c;
+    c.kind = ConstructionKind::Extrude;
+    c.inputs = inputs(ctx, 0, 1);
+    c.vector = {commandNumber(ctx.args[1], "DX"), commandNumber(ctx.args[2], "DY"), commandNumber(ctx.args[3], "DZ")};
+    construct(ctx, std::move(c), "Extrude " + ctx.args[0]);
+}
+
+void addConstructCommands(CommandTable& t) {
+    t.add({.name = "curve-through",
+           .label = "Curve Through Points",
+           .menu = "Add",
+           .usage = "X,Y,Z X,Y,Z ... [closed]",
+           .help = "Add a C2 cubic spline through the points (2 or more; chord-length parameters, natural ends; `closed`: back to "
+                   "the first, 3 or more), as Bézier segments you can edit like any control points",
+           .run = [](CommandContext& ctx) {
+               std::vector<std::string> words = ctx.args;
+               const bool closed = !words.empty() && words.back() == "closed";
+               if (closed) words.pop_back();
+               std::vector<Vec3> pts;
+               for (const std::string& w : words) pts.push_back(pointWord(w));
+               addShape(ctx, "Curve through points", [&] { return curveThrough(pts, closed); });
+           }});
+    t.add({.name = "curve-control",
+           .label = "Curve from Control Points",
+           .menu = "Add",
+           .usage = "X,Y,Z X,Y,Z X,Y,Z X,Y,Z ...",
+           .help = "Add the clamped uniform cubic B-spline with these control points (4 or more): it starts at the first, ends at "
+                   "the last and follows the others, one Bézier segment per knot span",
+           .run = [](CommandContext& ctx) {
+               std::vector<Vec3> pts;
+               for (const std::string& w : ctx.args) pts.push_back(pointWord(w));
+               addShape(ctx, "Curve from control points", [&] { return curveControl(pts); });
+           }});
+    const auto ground = [](const EditSession& s, Vec3& e1, Vec3& e2) {
+        e1 = Vec3(1, 0, 0);
+        e2 = s.camera.zUp ? Vec3(0, 1, 0) : Vec3(0, 0, -1);  // counter-clockwise seen from above
+    };
+    t.add({.name = "add-circle",
+           .label = "Circle (exact)",
+           .menu = "Add",
+           .usage = "R",
+           .help = "Add an exact circle of radius R about the 3D cursor in the ground plane: four rational quarter arcs",
+           .run = [ground](CommandContext& ctx) {
+               expectArgs(ctx, 1, 1);
+               const double r = commandNumber(ctx.args[0], "R");
+               Vec3 e1, e2;
+               ground(ctx.session, e1, e2);
+               addShape(ctx, "Add circle", [&] { return arcCurve(ctx.session.cursor, e1, e2, r, 360.0); });
+           }});
+    t.add({.name = "add-arc",
+           .label = "Arc (exact)",
+           .menu = "Add",
+           .usage = "R DEG",
+           .help = "Add an exact arc of radius R about the 3D cursor in the ground plane, from +X counter-clockwise through DEG "
+                   "degrees (0 < DEG <= 360): rational arcs of at most 90° each",
+           .run = [ground](CommandContext& ctx) {
+               expectArgs(ctx, 2, 2);
+               const double r = commandNumber(ctx.args[0], "R"), deg = commandNumber(ctx.args[1], "DEG");
+               Vec3 e1, e2;
+               ground(ctx.session, e1, e2);
+               addShape(ctx, "Add arc", [&] { return arcCurve(ctx.session.cursor, e1, e2, r, deg); });
+           }});
+    t.add({.name = "revolve",
+           .label = "Revolve",
+           .menu = "Surface",
+           .usage = "C X|Y|Z [DEG]",
+           .help = "Revolve a curve or patch edge C about the X, Y or Z axis through the 3D cursor by DEG degrees (default 360): exact "
+                   "rational patches, closed and joined at 360°, live while C is edited",
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 2, 3);
+               Construction c;
+               c.kind = ConstructionKind::Revolve;
+               c.inputs = inputs(ctx, 0, 1);
+               const std::string& ax = ctx.args[1];
+               if (ax != "X" && ax != "Y" && ax != "Z" && ax != "x" && ax != "y" && ax != "z")
+                   throw EditError("expected the axis X, Y or Z, got '" + ax + "'");
+               Vec3 axis(0.0);
+               axis[(ax[0] | 0x20) - 'x'] = 1.0;
+               c.vector = arr(axis);
+               c.origin = arr(ctx.session.cursor);
+               c.degrees = ctx.args.size() == 3 ? commandNumber(ctx.args[2], "DEG") : 360.0;
+               if (!(c.degrees > 0.0 && c.degrees <= 360.0)) throw EditError("DEG must be in (0, 360], got " + ctx.args[2]);
+               construct(ctx, std::move(c), "Revolve " + ctx.args[0]);
+           }});
+    t.add({.name = "loft",
+           .label = "Loft",
+           .menu = "Surface",
+           .usage = "C C ... [closed]",
+           .help = "A surface through the sections C (curves or patch edges, 2 or more, each of the same number of segments), "
+                   "passing exactly through every one: C2 between them; `closed` goes back to the first. Live while they are edited",
+           .run = [](CommandContext& ctx) {
+               size_t n = ctx.args.size();
+               Construction c;
+               c.kind = ConstructionKind::Loft;
+               c.closed = n > 0 && ctx.args.back() == "closed";
+               if (c.closed) --n;
+               c.inputs = inputs(ctx, 0, n);
+               construct(ctx, std::move(c), "Loft");
+           }});
+    t.add({.name = "bake",
+           .label = "Bake",
+           .menu = "Surface",
+           .usage = "[K]",
+           .help = "Detach a surface made from curves from its inputs (kN or N; default: the one of the selected patch): its patches "
+                   "stay and become ordinary patches you can edit point by point; the curves stay too",
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 0, 1);
+               EditSession& s = ctx.session;
+               int k = -1;
+               if (ctx.args.empty()) {
+                   if (s.sel.patch >= 0) k = constructionOfPatch(s.doc, uint32_t(s.sel.patch));
+                   if (k < 0) throw EditError("select a patch of a surface made from curves, or name it (k0, k1, ...)");
+               } else {
+                   std::string w = ctx.args[0];
+                   if (!w.empty() && (w[0] == 'k' || w[0] == 'K')) w.erase(0, 1);
+                   k = int(commandIndex(w, s.doc.constructions.size(), "construction"));
+               }
+               const std::string label = constructionLabel(s.doc, size_t(k));
+               s.apply("Bake", [k](Document& d) { bakeConstruction(d, size_t(k)); });
+               ctx.host.status("Baked " + label);
+           }});
+}
+
+}  // namespace pw

@@ -1,0 +1,263 @@
+#include "core/construct/constructions.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/base/errors.hpp"
+#include "core/base/limits.hpp"
+#include "core/model/construction_refs.hpp"
+
+namespace pw {
+
+namespace {
+
+Vec3 vec(const std::array<double, 3>& a) { return Vec3(a[0], a[1], a[2]); }
+
+std::string segmentsWord(size_t n) { return std::to_string(n) + (n == 1 ? " segment" : " segments"); }
+
+ConstructedNet revolveNet(const Document& doc, const Construction& c) {
+    if (c.inputs.size() != 1) throw EditError("revolve takes one profile");
+    const CurveShape profile = inputShape(doc, c.inputs[0]);
+    const Vec3 axisIn = vec(c.vector);
+    if (!(glm::length(axisIn) > 0.0)) throw EditError("the axis has no direction");
+    const Vec3 a = glm::normalize(axisIn), o = vec(c.origin);
+    // Any unit e1 normal to the axis; the arcs are built in (e1, e2) and mapped per profile point.
+    const CurveShape arc = arcCurve(Vec3(0.0), Vec3(1, 0, 0), Vec3(0, 1, 0), 1.0, c.degrees);
+    ConstructedNet net;
+    net.rows = uint32_t(profile.points.size());
+    net.cols = uint32_t(arc.points.size());
+    net.closedU = arc.closed;
+    net.closedV = profile.closed;
+    net.smoothU = true;
+    net.points.resize(size_t(net.rows) * net.cols);
+    double farthest = 0.0, size = 0.0;
+    for (uint32_t i = 0; i < net.rows; ++i) {
+        const double wp = profile.points[i].w;
+        const Vec3 p = euclidean(profile.points[i]);
+        const double h = glm::dot(p - o, a);
+        const Vec3 r = p - o - h * a, b = glm::cross(a, r);
+        farthest = std::max(farthest, glm::length(r));
+        size = std::max(size, glm::length(p - o));
+        for (uint32_t j = 0; j < net.cols; ++j) {
+            const double wa = arc.points[j].w;
+            const Vec3 q = euclidean(arc.points[j]);
+            net.points[size_t(i) * net.cols + j] = homogeneous(o + h * a + q.x * r + q.y * b, wp * wa);
+        }
+    }
+    if (!(farthest > 1e-12 * (1.0 + size))) throw EditError("the profile lies on the axis; there is nothing to revolve");
+    return net;
+}
+
+ConstructedNet extrudeNet(const Document& doc, const Construction& c) {
+    if (c.inputs.size() != 1) throw EditError("extrude takes one profile");
+    const CurveShape profile = inputShape(doc, c.inputs[0]);
+    const Vec3 d = vec(c.vector);
+    if (!(glm::length(d) > 0.0)) throw EditError("the extrusion has no length");
+    ConstructedNet net;
+    net.rows = 4;
+    net.cols = uint32_t(profile.points.size());
+    net.closedU = profile.closed;
+    net.points.resize(size_t(net.rows) * net.cols);
+    for (uint32_t i = 0; i < 4; ++i)
+        for (uint32_t j = 0; j < net.cols; ++j)
+            net.points[size_t(i) * net.cols + j] = homogeneous(euclidean(profile.points[j]) + (i / 3.0) * d, profile.points[j].w);
+    return net;
+}
+
+ConstructedNet loftNet(const Document& doc, const Construction& c) {
+    const size_t m = c.inputs.size();
+    if (m < (c.closed ? 3u : 2u))
+        throw EditError(c.closed ? "a closed loft needs at least 3 sections" : "a loft needs at least 2 sections");
+    std::vector<CurveShape> sections;
+    for (const CurveInput& in : c.inputs) sections.push_back(inputShape(doc, in));
+    for (size_t s = 1; s < m; ++s) {
+        if (sections[s].segments() != sections[0].segments())
+            throw EditError("sections " + curveInputName(c.inputs[0]) + " (" + segmentsWord(sections[0].segments()) + ") and " +
+                            curveInputName(c.inputs[s]) + " (" + segmentsWord(sections[s].segments()) +
+                            ") differ; loft sections need the same number of segments");
+        if (sections[s].closed != sections[0].closed)
+            throw EditError("sections " + curveInputName(c.inputs[0]) + " and " + curveInputName(c.inputs[s]) +
+                            " differ: one is closed, the other open");
+    }
+    const size_t cols = sections[0].points.size();
+    // Chord-length parameters between consecutive sections: the mean distance of their points.
+    std::vector<double> t{0.0};
+    for (size_t s = 0; s + (c.closed ? 0 : 1) < m; ++s) {
+        double d = 0.0;
+        for (size_t j = 0; j < cols; ++j) d += glm::length(euclidean(sections[(s + 1) % m].points[j]) - euclidean(sections[s].points[j]));
+        d /= double(cols);
+        if (!(d > 0.0))
+            throw EditError("sections " + curveInputName(c.inputs[s]) + " and " + curveInputName(c.inputs[(s + 1) % m]) + " coincide");
+        t.push_back(t.back() + d);
+    }
+    ConstructedNet net;
+    net.cols = uint32_t(cols);
+    net.closedU = sections[0].closed;
+    net.closedV = c.closed;
+    std::vector<std::vector<HPoint>> columns(cols);
+    for (size_t j = 0; j < cols; ++j) {
+        std::vector<HPoint> q;
+        for (const CurveShape& s : sections) q.push_back(s.points[j]);
+        columns[j] = splineThrough(q, t, c.closed);
+    }
+    net.rows = uint32_t(columns[0].size());
+    net.points.resize(size_t(net.rows) * net.cols);
+    for (uint32_t i = 0; i < net.rows; ++i)
+        for (uint32_t j = 0; j < net.cols; ++j) {
+            const HPoint& h = columns[j][i];
+            if (!(h.w > 0.0))
+                throw EditError("the sections' weights differ too much to loft (a weight between them would not be positive)");
+            net.points[size_t(i) * net.cols + j] = h;
+        }
+    return net;
+}
+
+void checkNet(const ConstructedNet& net) {
+    for (const HPoint& h : net.points)
+        for (int a = 0; a < 3; ++a) {
+            const double v = h[a] / h.w;
+            if (!std::isfinite(v) || std::abs(v) > limits::kMaxCoordinate)
+                throw EditError("the surface reaches beyond the coordinate limit of 1e9");
+        }
+}
+
+// The window (pr, pc) of a net as 16 grid positions (row-major, row = v).
+std::array<uint32_t, 16> window(const std::vector<uint32_t>& grid, uint32_t cols, uint32_t pr, uint32_t pc) {
+    std::array<uint32_t, 16> w{};
+    for (uint32_t i = 0; i < 4; ++i)
+        for (uint32_t j = 0; j < 4; ++j) w[i * 4 + j] = grid[size_t(3 * pr + i) * cols + 3 * pc + j];
+    return w;
+}
+
+bool writeNet(Document& doc, const Construction& c, const ConstructedNet& net, std::vector<uint32_t>& moved) {
+    for (size_t g = 0; g < c.grid.size(); ++g) {
+        const uint32_t i = c.grid[g];
+        const Vec3 p = euclidean(net.points[g]);
+        const double w = net.points[g].w;
+        if (doc.points[i] != p || pointWeight(doc, i) != w) {
+            doc.points[i] = p;
+            setPointWeight(doc, i, w);
+            moved.push_back(i);
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+CurveShape inputShape(const Document& doc, const CurveInput& in) {
+    CurveShape s;
+    if (in.curve >= 0) {
+        if (size_t(in.curve) >= doc.curves.size()) throw EditError("curve c" + std::to_string(in.curve) + " does not exist");
+        const BezierCurve& cv = doc.curves[size_t(in.curve)];
+        for (uint32_t i : cv.idx) s.points.push_back(homogeneous(doc.points[i], pointWeight(doc, i)));
+        s.closed = curveClosed(cv);
+        return s;
+    }
+    if (in.patch >= doc.patches.size()) throw EditError("patch " + std::to_string(in.patch) + " does not exist");
+    const Patch& p = doc.patches[in.patch];
+    if (p.basis != Basis::Bezier) throw EditError("patch " + std::to_string(in.patch) + " is not a Bézier patch; its edge is no curve");
+    for (int k = 0; k < 4; ++k) {
+        const uint32_t i = p.idx[size_t(edgeSlot(in.edge, k))];
+        s.points.push_back(homogeneous(doc.points[i], pointWeight(doc, i)));
+    }
+    return s;
+}
+
+ConstructedNet evaluateConstruction(const Document& doc, const Construction& c) {
+    ConstructedNet net;
+    switch (c.kind) {
+        case ConstructionKind::Revolve:
+            net = revolveNet(doc, c);
+            break;
+        case ConstructionKind::Extrude:
+            net = extrudeNet(doc, c);
+            break;
+        case ConstructionKind::Loft:
+            net = loftNet(doc, c);
+            break;
+    }
+    checkNet(net);
+    return net;
+}
+
+size_t addConstruction(Document& doc, Construction c, const std::string& name) {
+    const ConstructedNet net = evaluateConstruction(doc, c);
+    const uint32_t wr = (net.rows - 1) / 3, wc = (net.cols - 1) / 3;
+    if (doc.points.size() + net.points.size() > limits::kMaxPoints || doc.patches.size() + size_t(wr) * wc > limits::kMaxPatches)
+        throw EditError("the document is full (the surface needs " + std::to_string(size_t(wr) * wc) + " patches)");
+    c.rows = net.rows, c.cols = net.cols;
+    c.grid.assign(net.points.size(), 0);
+    c.error.clear();
+    for (uint32_t i = 0; i < net.rows; ++i)
+        for (uint32_t j = 0; j < net.cols; ++j) {
+            uint32_t& g = c.grid[size_t(i) * net.cols + j];
+            if (net.closedU && j == net.cols - 1)
+                g = c.grid[size_t(i) * net.cols];
+            else if (net.closedV && i == net.rows - 1)
+                g = c.grid[j];
+            else {
+                g = uint32_t(doc.points.size());
+                doc.points.push_back(Vec3(0.0));
+            }
+        }
+    std::vector<uint32_t> moved;
+    writeNet(doc, c, net, moved);
+    const uint32_t first = uint32_t(doc.patches.size());
+    for (uint32_t pr = 0; pr < wr; ++pr)
+        for (uint32_t pc = 0; pc < wc; ++pc) {
+            Patch p;
+            p.idx = window(c.grid, net.cols, pr, pc);
+            p.name = name + " " + std::to_string(pr * wc + pc);
+            c.patches.push_back(uint32_t(doc.patches.size()));
+            doc.patches.push_back(std::move(p));
+        }
+    // Joins along every seam between the windows: G1 (α = 1) where the construction makes it so,
+    // C0 elsewhere (the surface there is as smooth as its inputs; the readout measures it).
+    const auto at = [&](uint32_t pr, uint32_t pc) { return first + pr * wc + pc; };
+    for (uint32_t pr = 0; pr < wr; ++pr)
+        for (uint32_t pc = 0; pc < wc; ++pc) {
+            if (pc + 1 < wc || (net.closedU && wc > 1))
+                doc.joins.push_back(
+                    Join{at(pr, pc), Edge::U1, at(pr, (pc + 1) % wc), Edge::U0, false, net.smoothU ? Continuity::G1 : Continuity::C0, 1.0});
+            if (pr + 1 < wr || (net.closedV && wr > 1))
+                doc.joins.push_back(Join{at(pr, pc), Edge::V1, at((pr + 1) % wr, pc), Edge::V0, false, Continuity::C0, 1.0});
+        }
+    doc.constructions.push_back(std::move(c));
+    return doc.constructions.size() - 1;
+}
+
+RerunReport rerunConstructions(Document& doc) {
+    RerunReport report;
+    for (size_t k = doc.constructions.size(); k-- > 0;) {
+        const Construction& c = doc.constructions[k];
+        const uint32_t wr = c.rows >= 4 ? (c.rows - 1) / 3 : 0, wc = c.cols >= 4 ? (c.cols - 1) / 3 : 0;
+        bool intact = c.grid.size() == size_t(c.rows) * c.cols && c.patches.size() == size_t(wr) * wc;
+        for (uint32_t n = 0; intact && n < c.patches.size(); ++n)
+            intact = c.patches[n] < doc.patches.size() && doc.patches[c.patches[n]].idx == window(c.grid, c.cols, n / wc, n % wc);
+        if (!intact) {
+            report.baked.push_back(constructionLabel(doc, k));
+            bakeConstruction(doc, k);
+        }
+    }
+    for (size_t k = 0; k < doc.constructions.size(); ++k) {
+        Construction& c = doc.constructions[k];
+        try {
+            const ConstructedNet net = evaluateConstruction(doc, c);
+            if (net.rows != c.rows || net.cols != c.cols)
+                throw EditError("the inputs now make a " + std::to_string((net.rows - 1) / 3) + " × " + std::to_string((net.cols - 1) / 3) +
+                                " net of patches, the surface has " + std::to_string((c.rows - 1) / 3) + " × " +
+                                std::to_string((c.cols - 1) / 3) + " (bake it, or undo the change of the input)");
+            writeNet(doc, c, net, report.moved);
+            c.error.clear();
+        } catch (const EditError& e) {
+            c.error = e.what();
+            report.failed.push_back(constructionLabel(doc, k) + ": " + c.error);
+        }
+    }
+    std::sort(report.moved.begin(), report.moved.end());
+    report.moved.erase(std::unique(report.moved.begin(), report.moved.end()), report.moved.end());
+    return report;
+}
+
+}  // namespace pw
