@@ -217,7 +217,10 @@ void Editor::beginDrag(bool grab, TransformKind kind, int axis) {
     // A move started on a point carries that point (it is what snaps); G moves the pivot.
     if (kind == TransformKind::Move && !grab && hovered_ >= 0 && size_t(hovered_) < doc_.points.size())
         start.pivot = doc_.points[size_t(hovered_)];
-    if (!drag_.begin(doc_, start, dragView(), pressX_, pressY_)) return;
+    if (!drag_.begin(doc_, start, dragView(), pressX_, pressY_)) {
+        if (!drag_.refusal().empty()) status(drag_.refusal());
+        return;
+    }
     mode_ = grab ? Interaction::Grab : Interaction::DragPoints;
     if (axis >= 0) drag_.setAxis(axis);
 }

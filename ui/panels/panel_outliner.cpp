@@ -1,9 +1,11 @@
-// The Outliner (left panel): every patch, net surface, Bézier triangle and curve (hidden ones dimmed);
-// a click selects it.
+// The Outliner (left panel): every patch, net surface, Bézier triangle, curve (cN) and surface made
+// from curves (kN, red when its inputs no longer fit; hidden items dimmed); a click selects it.
 #include <imgui.h>
 
 #include <cstdio>
+#include <string>
 
+#include "core/model/construction_refs.hpp"
 #include "ui/panels/side_panels.hpp"
 #include "ui/platform/imgui_tip.hpp"
 
@@ -37,8 +39,23 @@ void drawOutliner(PanelContext& ctx) {
     for (size_t i = 0; i < doc.triangles.size(); ++i)
         row(sel.triangle, i, doc.triangles[i].hidden, "triangle %zu  %s", doc.triangles[i].name.c_str());
     for (size_t i = 0; i < doc.curves.size(); ++i)
-        if (row(sel.curve, i, doc.curves[i].hidden, "curve %zu  %s", doc.curves[i].name.c_str()))
+        if (row(sel.curve, i, doc.curves[i].hidden, "c%zu  %s", doc.curves[i].name.c_str()))
             applyBox(sel, {doc.curves[i].idx.begin(), doc.curves[i].idx.end()}, false);
+    // Surfaces made from curves: a click selects the first patch; inputs that no longer fit in red.
+    for (size_t k = 0; k < doc.constructions.size(); ++k) {
+        const Construction& c = doc.constructions[k];
+        const std::string label = constructionLabel(doc, k) + (c.error.empty() ? "" : "  (inputs do not fit)");
+        if (!c.error.empty()) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.35f, 1.0f));
+        const bool clicked = ImGui::Selectable(label.c_str(), !c.patches.empty() && sel.patch == int(c.patches.front()));
+        if (!c.error.empty()) {
+            ImGui::PopStyleColor();
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", c.error.c_str());
+        }
+        if (clicked && !c.patches.empty()) {
+            sel.clear();
+            sel.patch = int(c.patches.front());
+        }
+    }
     ImGui::EndChild();
     tip("Patches, net surfaces, Bézier triangles and curves of the document; click to select one");
     ImGui::Text("%zu points, %zu patches, %zu joins", doc.points.size(), doc.patches.size(), doc.joins.size());

@@ -28,6 +28,7 @@ void SidePanels::drawLeft(PanelContext& ctx) {
     drawOutliner(ctx);
     inspector.draw(ctx);
     patchOps_.draw(ctx);
+    surfaces_.draw(ctx);
     net_.draw(ctx);
     ImGui::End();
 }

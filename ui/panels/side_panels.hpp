@@ -1,5 +1,5 @@
 // The two side panels and the panels in them, one file each: left ("Scene": panel_outliner,
-// panel_inspector, panel_patch_ops, panel_net), right ("Properties": panel_tessellation,
+// panel_inspector, panel_patch_ops, panel_surfaces, panel_net), right ("Properties": panel_tessellation,
 // panel_display, panel_stats, panel_continuity, then the Teaching section of ui/panels/teaching.hpp).
 // Their backgrounds are not drawn by ImGui but filled by one clear each in the overlay pass
 // (fills()): on CPU devices ImGui's textured, blended background quads cost ~1.5 ms a frame at
@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <string>
 #include <vector>
 
 #include "core/edit/drag_controller.hpp"
@@ -41,6 +42,16 @@ public:
 private:
     float splitT_ = 0.5f;
     int joinA_ = 0, joinB_ = 1, joinEdgeA_ = 2, joinEdgeB_ = 0, joinKind_ = 1;
+};
+
+class SurfacesPanel {  // panel_surfaces.cpp: revolve, extrude and loft the selected curves; the selected patch's construction
+public:
+    void draw(PanelContext& ctx);
+
+private:
+    int axis_ = 2;
+    float degrees_ = 360.0f, length_ = 1.0f;
+    std::vector<std::string> sections_;  // the loft's sections so far ("c0", ...)
 };
 
 class NetPanel {  // panel_net.cpp: net surfaces (create, rows/columns, closing, basis, conversion)
@@ -79,6 +90,7 @@ private:
     std::vector<std::array<float, 4>> fills_;
     PanelLayout layout_;
     PatchOpsPanel patchOps_;
+    SurfacesPanel surfaces_;
     NetPanel net_;
     ContinuityPanel continuity_;
 };

@@ -1,0 +1,72 @@
+// Surfaces from curves (left panel, issue 39): the selected curve's constructions (revolve about
+// X, Y or Z through the 3D cursor by an angle, extrude along an axis, loft through a list of
+// sections collected from the selection) as buttons that run the commands of
+// core/commands/commands_construct.cpp, and the selected patch's construction (its inputs, whether
+// they still fit, Bake).
+#include <imgui.h>
+
+#include <algorithm>
+#include <string>
+
+#include "core/model/construction_refs.hpp"
+#include "ui/panels/side_panels.hpp"
+#include "ui/platform/imgui_tip.hpp"
+
+namespace pw::ui {
+
+namespace {
+const char* kAxes[] = {"X", "Y", "Z"};
+}  // namespace
+
+void SurfacesPanel::draw(PanelContext& ctx) {
+    if (!ImGui::CollapsingHeader("Surfaces from curves", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const EditSession& s = ctx.session();
+    const Document& doc = s.doc;
+    const int curve = s.sel.curve >= 0 && size_t(s.sel.curve) < doc.curves.size() ? s.sel.curve : -1;
+    const std::string c = curve >= 0 ? "c" + std::to_string(curve) : "";
+    if (curve < 0)
+        ImGui::TextDisabled("Select a curve (Outliner) to build from it");
+    else
+        ImGui::Text("Curve %s: %zu segment%s%s", c.c_str(), curveSegmentCount(doc.curves[size_t(curve)]),
+                    curveSegmentCount(doc.curves[size_t(curve)]) == 1 ? "" : "s", curveClosed(doc.curves[size_t(curve)]) ? ", closed" : "");
+    ImGui::BeginDisabled(curve < 0);
+    ImGui::SetNextItemWidth(50 * ctx.uiScale());
+    ImGui::Combo("##axis", &axis_, kAxes, 3);
+    tip("The axis: revolve about it (through the 3D cursor), extrude along it");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(90 * ctx.uiScale());
+    ImGui::SliderFloat("Angle", &degrees_, 1.0f, 360.0f, "%.0f°");
+    commandButton(ctx, "Revolve", "revolve " + c + " " + kAxes[axis_] + " " + std::to_string(degrees_), "op.revolve");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(70 * ctx.uiScale());
+    ImGui::InputFloat("##len", &length_, 0.0f, 0.0f, "%.3g");
+    tip("Extrusion length along the axis");
+    ImGui::SameLine();
+    std::string d[3] = {"0", "0", "0"};
+    d[axis_] = std::to_string(length_);
+    commandButton(ctx, "Extrude", "extrude " + c + " " + d[0] + " " + d[1] + " " + d[2], "op.extrudeCurve");
+    if (ImGui::Button("Add section")) sections_.push_back(c);
+    tip("Add the selected curve to the loft's sections (in order)");
+    ImGui::EndDisabled();
+    std::string loft = "loft";
+    for (const std::string& w : sections_) loft += " " + w;
+    ImGui::SameLine();
+    ImGui::BeginDisabled(sections_.size() < 2);
+    commandButton(ctx, "Loft", loft, "op.loft");
+    ImGui::EndDisabled();
+    if (!sections_.empty()) {
+        ImGui::SameLine();
+        if (ImGui::SmallButton("Clear")) sections_.clear();
+        ImGui::TextWrapped("%s", loft.c_str());
+    }
+    // The selected patch's construction.
+    const int k = s.sel.patch >= 0 ? constructionOfPatch(doc, uint32_t(s.sel.patch)) : -1;
+    if (k < 0) return;
+    ImGui::Separator();
+    ImGui::TextWrapped("Made by %s", constructionLabel(doc, size_t(k)).c_str());
+    const std::string& error = doc.constructions[size_t(k)].error;
+    if (!error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "Inputs do not fit: %s", error.c_str());
+    commandButton(ctx, "Bake", "bake k" + std::to_string(k), "op.bake");
+}
+
+}  // namespace pw::ui
