@@ -311,3 +311,53 @@ TEST(Constructions, BadInputsAreRefusedAndChangeNothing) {
     test::runEditScript(s, "curve-through 0,0,0 0,0,1");
     EXPECT_THROW(test::runEditScript(s, "revolve c0 Z"), std::exception);
 }
+
+TEST(Constructions, EdgeSurfaceReproducesItsBoundariesAndSharesThem) {
+    EditSession s;
+    // Four curves end to end (a loop, the last two drawn backwards): the Coons patch holds each.
+    test::runEditScript(s,
+                        "curve-through 0,0,0 1,0,0.3 2,0,0; curve-through 2,0,0 2.2,1,0.2 2,2,0; curve-through 0,2,0 1,2.3,0.5 2,2,0; "
+                        "curve-through 0,2,0 -0.2,1,0.1 0,0,0; edge-surface c0 c1 c2 c3");
+    const Document& d = s.doc;
+    ASSERT_EQ(d.constructions.size(), 1u);
+    const Construction& k = d.constructions[0];
+    ASSERT_EQ(k.patches.size(), 4u);  // two segments a side
+    // Bottom (c0) at v = 0 of the first row, right (c1) at u = 1 of the last column: the same points.
+    for (size_t q = 0; q < 2; ++q)
+        for (double t : {0.0, 0.3, 0.7, 1.0}) {
+            EXPECT_LT(glm::length(surfaceAt(d, k.patches[q], t, 0.0) - curveAt(d, d.curves[0], q, t)), 1e-12);
+            EXPECT_LT(glm::length(surfaceAt(d, k.patches[q * 2 + 1], 1.0, t) - curveAt(d, d.curves[1], q, t)), 1e-12);
+        }
+    for (uint32_t i : d.curves[2].idx) EXPECT_NE(std::find(k.grid.begin(), k.grid.end(), i), k.grid.end());  // shared
+    // Live: a side's point moves, the surface keeps it.
+    test::runEditScript(s, "select point " + std::to_string(s.doc.curves[1].idx[1]) + "; move 0.5 0 0.4");
+    EXPECT_LT(glm::length(surfaceAt(s.doc, s.doc.constructions[0].patches[1], 1.0, 0.5) - curveAt(s.doc, s.doc.curves[1], 0, 0.5)), 1e-12);
+    // Sides that are no loop, or of unequal segment counts, are refused.
+    EditSession bad;
+    test::runEditScript(bad, "curve-through 0,0,0 1,0,0; curve-through 5,0,0 5,1,0; curve-through 0,1,0 1,1,0");
+    EXPECT_THROW(test::runEditScript(bad, "edge-surface c0 c1 c2"), std::exception);
+    EXPECT_THROW(test::runEditScript(bad, "edge-surface c0"), std::exception);
+}
+
+TEST(Constructions, EdgeSurfaceBetweenTwoPatchEdgesJoinsThem) {
+    EditSession s;
+    // Two flat patches facing each other: the ruled surface between their edges is joined to both.
+    test::runEditScript(s, "add-patch; cursor 0 0 3; add-patch");
+    const size_t joins = s.doc.joins.size();
+    test::runEditScript(s, "edge-surface 0:u1 1:u1");
+    ASSERT_EQ(s.doc.constructions.size(), 1u);
+    EXPECT_EQ(s.doc.joins.size(), joins + 2);
+    EXPECT_LE(maxConstraintResidual(s.doc), 1e-12);
+    // The first patch moved: the ruled surface follows it, still joined.
+    test::runEditScript(s, "select patch 0; move 0 0 -1");
+    const Construction& k = s.doc.constructions[0];
+    for (int i = 0; i < 4; ++i) {  // the moved edge is the surface's side: the same pool points
+        const uint32_t p = s.doc.patches[0].idx[size_t(edgeSlot(Edge::U1, i))];
+        EXPECT_NE(std::find(k.grid.begin(), k.grid.end(), p), k.grid.end());
+    }
+    // and the ruled lines run straight from it to the other patch's edge.
+    const Vec3 a = surfaceAt(s.doc, 0, 1.0, 0.5), b = surfaceAt(s.doc, 1, 1.0, 0.5), m = surfaceAt(s.doc, k.patches[0], 0.5, 0.5);
+    EXPECT_LT(glm::length(glm::cross(m - a, b - a)), 1e-9);
+    EXPECT_TRUE(s.doc.constructions[0].error.empty());
+    EXPECT_LE(maxConstraintResidual(s.doc), 1e-9 * modelSize(s.doc));
+}

@@ -1,5 +1,5 @@
 // Curves and the surfaces made from them (issue 39): curve-through, curve-control, add-circle,
-// add-arc; revolve, extrude (of a curve), loft, and bake. Inputs are curves `cN` or patch edges
+// add-arc; revolve, extrude (of a curve), loft, edge-surface, and bake. Inputs are curves `cN` or patch edges
 // `P:u0|u1|v0|v1`; the surfaces stay live (core/construct/constructions.hpp).
 #include <algorithm>
 
@@ -158,6 +158,20 @@ void addConstructCommands(CommandTable& t) {
                if (c.closed) --n;
                c.inputs = inputs(ctx, 0, n);
                construct(ctx, std::move(c), "Loft");
+           }});
+    t.add({.name = "edge-surface",
+           .label = "Edge Surface",
+           .menu = "Surface",
+           .usage = "A B [C [D]]",
+           .help = "A surface from 2, 3 or 4 curves or patch edges (Coons; 2 make a ruled surface), reproducing each exactly and "
+                   "sharing its points (an edge's patch is joined to it); 3 or 4 must form a closed loop end to end, opposite sides "
+                   "of the same number of segments. Live while they are edited",
+           .run = [](CommandContext& ctx) {
+               if (ctx.args.size() < 2 || ctx.args.size() > 4) expectArgs(ctx, 2, 4);
+               Construction c;
+               c.kind = ConstructionKind::EdgeSurface;
+               c.inputs = inputs(ctx, 0, ctx.args.size());
+               construct(ctx, std::move(c), "Edge surface");
            }});
     t.add({.name = "bake",
            .label = "Bake",

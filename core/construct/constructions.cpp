@@ -112,6 +112,126 @@ ConstructedNet loftNet(const Document& doc, const Construction& c) {
     return net;
 }
 
+// The pool points of an input, in its own order.
+std::vector<uint32_t> inputPoints(const Document& doc, const CurveInput& in) {
+    if (in.curve >= 0) return doc.curves[size_t(in.curve)].idx;
+    std::vector<uint32_t> out;
+    for (int k = 0; k < 4; ++k) out.push_back(doc.patches[in.patch].idx[size_t(edgeSlot(in.edge, k))]);
+    return out;
+}
+
+struct Side {
+    std::vector<HPoint> p;
+    std::vector<uint32_t> idx;
+    std::string name;
+    void reverse() {
+        std::reverse(p.begin(), p.end());
+        std::reverse(idx.begin(), idx.end());
+    }
+    Vec3 start() const { return euclidean(p.front()); }
+    Vec3 end() const { return euclidean(p.back()); }
+};
+
+ConstructedNet edgeSurfaceNet(const Document& doc, const Construction& c) {
+    const size_t n = c.inputs.size();
+    if (n < 2 || n > 4) throw EditError("an edge surface takes 2, 3 or 4 curves or edges");
+    std::vector<Side> sides;
+    double size = 0.0;
+    for (const CurveInput& in : c.inputs) {
+        const CurveShape s = inputShape(doc, in);
+        if (s.closed) throw EditError(curveInputName(in) + " is closed; an edge surface's sides are open curves");
+        sides.push_back({s.points, inputPoints(doc, in), curveInputName(in)});
+        for (const HPoint& h : s.points) size = std::max(size, glm::length(euclidean(h)));
+    }
+    const double tol = 1e-9 * (1.0 + size);
+    const auto meet = [&](const Vec3& a, const Vec3& b) { return glm::length(a - b) <= tol; };
+    Side bottom = sides[0], top, left, right;
+    if (n == 2) {
+        top = sides[1];
+        // Ruled: the second runs the way the first does (its start nearer the first's start).
+        if (glm::length(top.start() - bottom.start()) + glm::length(top.end() - bottom.end()) >
+            glm::length(top.end() - bottom.start()) + glm::length(top.start() - bottom.end()))
+            top.reverse();
+    } else {
+        // A loop: each side starts where the one before ends.
+        std::vector<Side> chain{bottom};
+        std::vector<bool> used(n, false);
+        used[0] = true;
+        for (size_t k = 1; k < n; ++k) {
+            bool found = false;
+            for (size_t i = 1; i < n && !found; ++i) {
+                if (used[i]) continue;
+                Side s = sides[i];
+                if (!meet(s.start(), chain.back().end())) s.reverse();
+                if (!meet(s.start(), chain.back().end())) continue;
+                chain.push_back(s);
+                used[i] = found = true;
+            }
+            if (!found)
+                throw EditError("no side starts where " + chain.back().name + " ends; the curves must form a closed loop, end to end");
+        }
+        if (!meet(chain.back().end(), chain.front().start()))
+            throw EditError(chain.back().name + " ends " + std::to_string(glm::length(chain.back().end() - chain.front().start())) +
+                            " from where " + chain.front().name + " starts; the curves must form a closed loop");
+        right = chain[1];
+        top = chain[2];
+        top.reverse();  // along u, as the bottom
+        if (n == 4) {
+            left = chain[3];
+            left.reverse();  // along v, as the right
+        } else {             // three sides: the fourth collapsed to the bottom's start
+            left.p.assign(right.p.size(), bottom.p.front());
+            left.idx.assign(right.idx.size(), bottom.idx.front());
+            left.name = bottom.name;
+        }
+        if (right.p.size() != left.p.size())
+            throw EditError("sides " + right.name + " and " + left.name + " have different numbers of segments (" +
+                            segmentsWord((right.p.size() - 1) / 3) + ", " + segmentsWord((left.p.size() - 1) / 3) + ")");
+    }
+    if (top.p.size() != bottom.p.size())
+        throw EditError("sides " + bottom.name + " and " + top.name + " have different numbers of segments (" +
+                        segmentsWord((bottom.p.size() - 1) / 3) + ", " + segmentsWord((top.p.size() - 1) / 3) + ")");
+    ConstructedNet net;
+    net.cols = uint32_t(bottom.p.size());
+    net.rows = n == 2 ? 4u : uint32_t(right.p.size());
+    if (n == 2) {  // ruled: the straight lines between the sides, as a Coons patch of straight sides
+        for (uint32_t i = 0; i < 4; ++i) {
+            left.p.push_back(glm::mix(bottom.p.front(), top.p.front(), i / 3.0));
+            right.p.push_back(glm::mix(bottom.p.back(), top.p.back(), i / 3.0));
+        }
+    }
+    net.points.resize(size_t(net.rows) * net.cols);
+    net.shared.assign(net.points.size(), -1);
+    const uint32_t R = net.rows - 1, C = net.cols - 1;
+    const HPoint c00 = bottom.p.front(), c01 = bottom.p.back(), c10 = top.p.front(), c11 = top.p.back();
+    for (uint32_t i = 0; i <= R; ++i)
+        for (uint32_t j = 0; j <= C; ++j) {
+            const double u = double(j) / C, v = double(i) / R;
+            const size_t g = size_t(i) * net.cols + j;
+            HPoint h;
+            if (i == 0) {
+                h = bottom.p[j];
+                net.shared[g] = bottom.idx[j];
+            } else if (i == R) {
+                h = top.p[j];
+                net.shared[g] = top.idx[j];
+            } else if (j == 0) {
+                h = left.p[i];
+                if (n > 2) net.shared[g] = left.idx[i];
+            } else if (j == C) {
+                h = right.p[i];
+                if (n > 2) net.shared[g] = right.idx[i];
+            } else {
+                h = (1.0 - v) * bottom.p[j] + v * top.p[j] + (1.0 - u) * left.p[i] + u * right.p[i] -
+                    ((1.0 - u) * (1.0 - v) * c00 + u * (1.0 - v) * c01 + (1.0 - u) * v * c10 + u * v * c11);
+                if (!(h.w > 0.0))
+                    throw EditError("the sides' weights differ too much for an edge surface (a weight inside would not be positive)");
+            }
+            net.points[g] = h;
+        }
+    return net;
+}
+
 void checkNet(const ConstructedNet& net) {
     for (const HPoint& h : net.points)
         for (int a = 0; a < 3; ++a) {
@@ -176,6 +296,9 @@ ConstructedNet evaluateConstruction(const Document& doc, const Construction& c) 
         case ConstructionKind::Loft:
             net = loftNet(doc, c);
             break;
+        case ConstructionKind::EdgeSurface:
+            net = edgeSurfaceNet(doc, c);
+            break;
     }
     checkNet(net);
     return net;
@@ -192,7 +315,9 @@ size_t addConstruction(Document& doc, Construction c, const std::string& name) {
     for (uint32_t i = 0; i < net.rows; ++i)
         for (uint32_t j = 0; j < net.cols; ++j) {
             uint32_t& g = c.grid[size_t(i) * net.cols + j];
-            if (net.closedU && j == net.cols - 1)
+            if (!net.shared.empty() && net.shared[size_t(i) * net.cols + j] >= 0)
+                g = uint32_t(net.shared[size_t(i) * net.cols + j]);
+            else if (net.closedU && j == net.cols - 1)
                 g = c.grid[size_t(i) * net.cols];
             else if (net.closedV && i == net.rows - 1)
                 g = c.grid[j];
@@ -223,6 +348,19 @@ size_t addConstruction(Document& doc, Construction c, const std::string& name) {
             if (pr + 1 < wr || (net.closedV && wr > 1))
                 doc.joins.push_back(Join{at(pr, pc), Edge::V1, at((pr + 1) % wr, pc), Edge::V0, false, Continuity::C0, 1.0});
         }
+    // Patch edges used as sides: their patches are joined to the new ones (the points are shared).
+    for (const CurveInput& in : c.inputs) {
+        if (in.curve >= 0) continue;
+        const std::array<uint32_t, 4> e{inputPoints(doc, in)[0], inputPoints(doc, in)[1], inputPoints(doc, in)[2], inputPoints(doc, in)[3]};
+        for (uint32_t n = 0; n < c.patches.size(); ++n)
+            for (Edge mine : {Edge::U0, Edge::V0, Edge::U1, Edge::V1}) {
+                std::array<uint32_t, 4> m{};
+                for (int k = 0; k < 4; ++k) m[size_t(k)] = doc.patches[c.patches[n]].idx[size_t(edgeSlot(mine, k))];
+                const bool same = m == e, reversed = m == reversedEdgePool(e);
+                if ((same || reversed) && e.front() != e.back())
+                    doc.joins.push_back(Join{in.patch, in.edge, c.patches[n], mine, reversed, Continuity::C0, 1.0});
+            }
+    }
     doc.constructions.push_back(std::move(c));
     return doc.constructions.size() - 1;
 }

@@ -1,4 +1,4 @@
-// Surfaces from curves that stay live (issue 39): revolve, extrude and loft. A construction is
+// Surfaces from curves that stay live (issue 39): revolve, extrude, loft and edge surfaces. A construction is
 // stored in the document with its inputs (Construction in core/model/document.hpp) and its output,
 // a Bézier control net whose 4x4 windows are ordinary joined patches; rerunConstructions() makes
 // the net again from the inputs after every edit and every mouse move of a drag
@@ -9,7 +9,9 @@
 // segment, weights multiplied; Piegl & Tiller §8.5), an extrude is the profile swept straight along
 // a vector, and a loft passes through every section: each column of control points is the C2
 // cubic spline through the sections' columns at chord-length parameters, in homogeneous
-// coordinates (so rational sections are reproduced too).
+// coordinates (so rational sections are reproduced too). An edge surface is the bilinearly blended
+// Coons patch of 2 to 4 boundaries (2: ruled) on the control nets, again homogeneous, which holds
+// each boundary exactly and shares its points: a patch edge used as a side is joined (C0) to it.
 #pragma once
 
 #include <cstdint>
@@ -33,6 +35,9 @@ struct ConstructedNet {
     // Seams between neighbouring windows across u that hold G1 by construction (revolve: the
     // rotation's arcs meet with equal tangents, α = 1); every other seam is C0.
     bool smoothU = false;
+    // Per net point: the pool point it is (an input's own point on a boundary the net shares with
+    // it: an edge surface's sides), or -1 for a point of its own.
+    std::vector<int64_t> shared;
 };
 
 // The net of a construction from the document's inputs as they are now; EditError says why when

@@ -17,7 +17,7 @@ json constructionsJson(const Document& doc) {
         for (const CurveInput& in : c.inputs) inputs.push_back(curveInputName(in));
         json o{{"kind", constructionKindName(c.kind)}, {"inputs", std::move(inputs)}};
         if (c.kind == ConstructionKind::Revolve) o["origin"] = c.origin, o["degrees"] = c.degrees;
-        if (c.kind != ConstructionKind::Loft) o["vector"] = c.vector;
+        if (c.kind == ConstructionKind::Revolve || c.kind == ConstructionKind::Extrude) o["vector"] = c.vector;
         if (c.kind == ConstructionKind::Loft) o["closed"] = c.closed;
         o["rows"] = c.rows;
         o["cols"] = c.cols;
@@ -35,7 +35,7 @@ void readConstructions(const json_reader::Reader& r, const json& v, Document& do
         const json& o = r.object(list[k], path);
         Construction c;
         c.kind =
-            r.named<ConstructionKind>(*r.member(o, path, "kind", true), at(path, "kind"), parseConstructionKind, "revolve, extrude, loft");
+            r.named<ConstructionKind>(*r.member(o, path, "kind", true), at(path, "kind"), parseConstructionKind, "revolve, extrude, loft, edge-surface");
         const std::string ip = at(path, "inputs");
         const json& inputs = r.array(*r.member(o, path, "inputs", true), ip, limits::kMaxPatches, "inputs");
         if (inputs.empty()) r.fail(ip, "a construction needs at least one input");
