@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 
 #include "core/base/errors.hpp"
 #include "core/commands/command_table.hpp"
@@ -360,4 +361,43 @@ TEST(Constructions, EdgeSurfaceBetweenTwoPatchEdgesJoinsThem) {
     EXPECT_LT(glm::length(glm::cross(m - a, b - a)), 1e-9);
     EXPECT_TRUE(s.doc.constructions[0].error.empty());
     EXPECT_LE(maxConstraintResidual(s.doc), 1e-9 * modelSize(s.doc));
+}
+
+TEST(Constructions, Sweep1CarriesTheProfileAlongTheRail) {
+    // A straight rail: the exact translational sweep.
+    EditSession line;
+    test::runEditScript(line, "curve-through 0,0,0 3,0,0; add-circle 0.5; sweep1 c0 c1");
+    const Document& d = line.doc;
+    ASSERT_EQ(d.constructions.size(), 1u);
+    ASSERT_EQ(d.constructions[0].patches.size(), 4u);
+    for (size_t q = 0; q < 4; ++q)
+        for (double u : {0.0, 0.4, 1.0})
+            for (double v : {0.0, 0.5, 1.0})
+                EXPECT_LT(
+                    glm::length(surfaceAt(d, d.constructions[0].patches[q], u, v) - (curveAt(d, d.curves[1], q, u) + v * Vec3(3, 0, 0))),
+                    1e-12);
+    // A bent rail with a circle around its start: at every segment end of the rail the section is
+    // that circle moved rigidly (radius 0.3 about the rail point), and in between close to it.
+    EditSession pipe;
+    test::runEditScript(pipe, "curve-through 0,0,0 0,0,1 0.5,0,2 1.5,0,2.6; cursor 0 0 0; add-circle 0.3; sweep1 c0 c1");
+    const Document& p = pipe.doc;
+    const Construction& k = p.constructions[0];
+    ASSERT_EQ(k.patches.size(), 3u * 4u);
+    double between = 0.0;
+    for (size_t s = 0; s < 3; ++s)
+        for (size_t q = 0; q < 4; ++q) {
+            const uint32_t patch = k.patches[s * 4 + q];
+            for (double v : {0.0, 1.0}) {
+                const Vec3 centre = curveAt(p, p.curves[0], s, v);
+                for (double u : {0.0, 0.3, 0.5, 0.8}) EXPECT_NEAR(glm::length(surfaceAt(p, patch, u, v) - centre), 0.3, 1e-12);
+            }
+            const Vec3 mid = curveAt(p, p.curves[0], s, 0.5);
+            for (double u : {0.0, 0.5}) between = std::max(between, std::abs(glm::length(surfaceAt(p, patch, u, 0.5) - mid) - 0.3));
+        }
+    std::cout << "sweep1: largest radius error between the rail's segment ends " << between << " (radius 0.3)\n";
+    EXPECT_LT(between, 0.01) << "the section between the rail's segment ends";
+    // Live: the rail bends further, the pipe follows and stays exact at the segment ends.
+    test::runEditScript(pipe, "select point " + std::to_string(pipe.doc.curves[0].idx[9]) + "; move 0 1 0");
+    const Vec3 end = pipe.doc.points[pipe.doc.curves[0].idx[9]];
+    EXPECT_NEAR(glm::length(surfaceAt(pipe.doc, pipe.doc.constructions[0].patches[8], 0.5, 1.0) - end), 0.3, 1e-12);
 }

@@ -173,6 +173,20 @@ void addConstructCommands(CommandTable& t) {
                c.inputs = inputs(ctx, 0, ctx.args.size());
                construct(ctx, std::move(c), "Edge surface");
            }});
+    t.add({.name = "sweep1",
+           .label = "Sweep Along One Rail",
+           .menu = "Surface",
+           .usage = "RAIL PROFILE",
+           .help = "Carry the profile (a curve or patch edge) along the rail, turning with it (rotation-minimising frames; a closed "
+                   "rail's twist taken back evenly): exactly the moved profile at every segment end of the rail, the exact "
+                   "translational sweep on a straight rail. Live while either is edited",
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 2, 2);
+               Construction c;
+               c.kind = ConstructionKind::Sweep1;
+               c.inputs = inputs(ctx, 0, 2);
+               construct(ctx, std::move(c), "Sweep " + ctx.args[1] + " along " + ctx.args[0]);
+           }});
     t.add({.name = "bake",
            .label = "Bake",
            .menu = "Surface",

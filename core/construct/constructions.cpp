@@ -5,6 +5,7 @@
 
 #include "core/base/errors.hpp"
 #include "core/base/limits.hpp"
+#include "core/eval/rational_eval.hpp"
 #include "core/model/construction_refs.hpp"
 
 namespace pw {
@@ -232,6 +233,73 @@ ConstructedNet edgeSurfaceNet(const Document& doc, const Construction& c) {
     return net;
 }
 
+// Sweep1: the profile carried along the rail by rotation-minimising frames (double reflection,
+// Wang et al. 2008) sampled densely along the rail; net row i is the profile in frame i placed at
+// rail control point i, so at every segment end of the rail (rows 3s) the net's row is exactly the
+// profile moved with its frame, and a straight rail gives the exact translational sweep.
+ConstructedNet sweep1Net(const Document& doc, const Construction& c) {
+    if (c.inputs.size() != 2) throw EditError("sweep1 takes a rail and a profile");
+    const CurveShape rail = inputShape(doc, c.inputs[0]), profile = inputShape(doc, c.inputs[1]);
+    const size_t rows = rail.points.size(), segs = rail.segments();
+    constexpr int kSub = 8;              // frame steps per third of a segment
+    const auto railAt = [&](double s) {  // s in [0, segs]: position and unit tangent
+        const size_t k = std::min(size_t(s), segs - 1);
+        std::array<Vec3, 4> p;
+        std::array<double, 4> w;
+        for (size_t a = 0; a < 4; ++a) p[a] = euclidean(rail.points[3 * k + a]), w[a] = rail.points[3 * k + a].w;
+        const CurveJet j = evaluateRationalCurve(p, w, s - double(k));
+        return std::pair<Vec3, Vec3>{j.p, glm::length(j.d1) > 0.0 ? glm::normalize(j.d1) : Vec3(0.0)};
+    };
+    auto [x, t] = railAt(0.0);
+    if (t == Vec3(0.0)) throw EditError("the rail " + curveInputName(c.inputs[0]) + " has no direction at its start");
+    const Vec3 t0 = t;
+    Vec3 r = glm::cross(t, std::abs(t.z) < 0.9 ? Vec3(0, 0, 1) : Vec3(1, 0, 0));
+    r = glm::normalize(r);
+    const Vec3 r0 = r, b0 = glm::cross(t0, r0), x0 = x;
+    std::vector<std::array<Vec3, 3>> frames{{t, r, glm::cross(t, r)}};  // one per rail control point
+    for (size_t i = 1; i < rows; ++i)
+        for (int k = 1; k <= kSub; ++k) {
+            const auto [x1, t1] = railAt((double(i - 1) + double(k) / kSub) / 3.0);
+            if (t1 == Vec3(0.0)) throw EditError("the rail " + curveInputName(c.inputs[0]) + " stops (no direction) along its way");
+            const Vec3 v1 = x1 - x;
+            const double c1 = glm::dot(v1, v1);
+            Vec3 rl = r, tl = t;
+            if (c1 > 0.0) rl = r - (2.0 / c1) * glm::dot(v1, r) * v1, tl = t - (2.0 / c1) * glm::dot(v1, t) * v1;
+            const Vec3 v2 = t1 - tl;
+            const double c2 = glm::dot(v2, v2);
+            r = c2 > 0.0 ? rl - (2.0 / c2) * glm::dot(v2, rl) * v2 : rl;
+            r = glm::normalize(r - glm::dot(r, t1) * t1);
+            x = x1, t = t1;
+            if (k == kSub) frames.push_back({t, r, glm::cross(t, r)});
+        }
+    if (rail.closed) {  // the frames turn by some angle around the loop: take it back evenly
+        const std::array<Vec3, 3>& e = frames.back();
+        const double phi = std::atan2(glm::dot(glm::cross(e[1], r0), t0), glm::dot(e[1], r0));
+        for (size_t i = 0; i < rows; ++i) {
+            const double a = phi * double(i) / double(rows - 1), ca = std::cos(a), sa = std::sin(a);
+            std::array<Vec3, 3>& f = frames[i];
+            const Vec3 rr = ca * f[1] + sa * f[2];
+            f = {f[0], rr, glm::cross(f[0], rr)};
+        }
+    }
+    ConstructedNet net;
+    net.rows = uint32_t(rows);
+    net.cols = uint32_t(profile.points.size());
+    net.closedU = profile.closed;
+    net.closedV = rail.closed;
+    net.points.resize(size_t(net.rows) * net.cols);
+    for (uint32_t j = 0; j < net.cols; ++j) {
+        const Vec3 d = euclidean(profile.points[j]) - x0;
+        const double a = glm::dot(d, t0), b = glm::dot(d, r0), cc = glm::dot(d, b0);
+        for (uint32_t i = 0; i < net.rows; ++i) {
+            const std::array<Vec3, 3>& f = frames[i];
+            net.points[size_t(i) * net.cols + j] =
+                homogeneous(euclidean(rail.points[i]) + a * f[0] + b * f[1] + cc * f[2], profile.points[j].w);
+        }
+    }
+    return net;
+}
+
 void checkNet(const ConstructedNet& net) {
     for (const HPoint& h : net.points)
         for (int a = 0; a < 3; ++a) {
@@ -298,6 +366,9 @@ ConstructedNet evaluateConstruction(const Document& doc, const Construction& c) 
             break;
         case ConstructionKind::EdgeSurface:
             net = edgeSurfaceNet(doc, c);
+            break;
+        case ConstructionKind::Sweep1:
+            net = sweep1Net(doc, c);
             break;
     }
     checkNet(net);

@@ -1,4 +1,4 @@
-// Surfaces from curves that stay live (issue 39): revolve, extrude, loft and edge surfaces. A construction is
+// Surfaces from curves that stay live (issue 39): revolve, extrude, loft, edge surfaces and sweep1. A construction is
 // stored in the document with its inputs (Construction in core/model/document.hpp) and its output,
 // a Bézier control net whose 4x4 windows are ordinary joined patches; rerunConstructions() makes
 // the net again from the inputs after every edit and every mouse move of a drag

@@ -153,8 +153,9 @@ struct Join {
 
 // A surface built from curves (issue 39) that stays live: its patches are re-made from its inputs
 // whenever they change (core/construct/constructions.hpp), until `bake` detaches them.
-enum class ConstructionKind : uint8_t { Revolve, Extrude, Loft, EdgeSurface };
-std::string_view constructionKindName(ConstructionKind k);  // "revolve", "extrude", "loft", "edge-surface"
+enum class ConstructionKind : uint8_t { Revolve, Extrude, Loft, EdgeSurface, Sweep1 };
+// "revolve", "extrude", "loft", "edge-surface", "sweep1"
+std::string_view constructionKindName(ConstructionKind k);
 std::optional<ConstructionKind> parseConstructionKind(std::string_view name);
 
 // An input curve: a curve of the document, or the boundary of a patch ("c3", "2:u0").

@@ -28,8 +28,8 @@ void SidePanels::drawLeft(PanelContext& ctx) {
     drawOutliner(ctx);
     inspector.draw(ctx);
     patchOps_.draw(ctx);
-    surfaces_.draw(ctx);
     net_.draw(ctx);
+    surfaces_.draw(ctx);
     ImGui::End();
 }
 

@@ -1,5 +1,5 @@
 // The two side panels and the panels in them, one file each: left ("Scene": panel_outliner,
-// panel_inspector, panel_patch_ops, panel_surfaces, panel_net), right ("Properties": panel_tessellation,
+// panel_inspector, panel_patch_ops, panel_net, panel_surfaces), right ("Properties": panel_tessellation,
 // panel_display, panel_stats, panel_continuity, then the Teaching section of ui/panels/teaching.hpp).
 // Their backgrounds are not drawn by ImGui but filled by one clear each in the overlay pass
 // (fills()): on CPU devices ImGui's textured, blended background quads cost ~1.5 ms a frame at
