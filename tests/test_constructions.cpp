@@ -16,6 +16,7 @@
 #include "core/eval/rational_eval.hpp"
 #include "core/io/patchwork_format.hpp"
 #include "core/model/construction_refs.hpp"
+#include "core/select/selection_ops.hpp"
 #include "core/solve/constraint_solver.hpp"
 #include "support.hpp"
 
@@ -400,4 +401,15 @@ TEST(Constructions, Sweep1CarriesTheProfileAlongTheRail) {
     test::runEditScript(pipe, "select point " + std::to_string(pipe.doc.curves[0].idx[9]) + "; move 0 1 0");
     const Vec3 end = pipe.doc.points[pipe.doc.curves[0].idx[9]];
     EXPECT_NEAR(glm::length(surfaceAt(pipe.doc, pipe.doc.constructions[0].patches[8], 0.5, 1.0) - end), 0.3, 1e-12);
+}
+
+TEST(Constructions, TheShownDocumentWithAHiddenMadePatchStillReopens) {
+    // Exports "as displayed" write the shown document (hidden items left out and the rest
+    // renumbered): its surfaces from curves are written as plain patches, and the file reopens.
+    EditSession s;
+    test::runEditScript(s, "add-patch; " + std::string(kProfile) + "; revolve c0 Z; select patch 0; hide");
+    const Document shown = visibleDocument(s.doc);
+    EXPECT_TRUE(shown.constructions.empty());
+    EXPECT_EQ(shown.patches.size(), 12u);
+    EXPECT_NO_THROW(parseDocument(serializeDocument(shown), "shown.patchwork"));
 }

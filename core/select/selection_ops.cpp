@@ -52,6 +52,9 @@ Document visibleDocument(const Document& doc) {
     std::erase_if(out.surfaces, [](const Surface& s) { return s.hidden; });
     std::erase_if(out.triangles, [](const TrianglePatch& t) { return t.hidden; });
     std::erase_if(out.curves, [](const BezierCurve& c) { return c.hidden; });
+    // What is shown is drawn or exported, never edited: its surfaces from curves are plain patches
+    // (their patch and curve numbers would no longer fit the renumbered lists).
+    out.constructions.clear();
     return out;
 }
 
