@@ -120,6 +120,13 @@ double commandNumber(const std::string& word, const char* what) {
     return v;
 }
 
+int axisIndex(const std::string& word) {
+    if (word == "x" || word == "X") return 0;
+    if (word == "y" || word == "Y") return 1;
+    if (word == "z" || word == "Z") return 2;
+    throw EditError("expected an axis X, Y or Z, got '" + word + "'");
+}
+
 uint32_t commandIndex(const std::string& word, size_t count, const char* what) {
     uint64_t v = 0;
     const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), v);

@@ -143,6 +143,7 @@ void runCurveExtrude(CommandContext& ctx);  // core/commands/commands_displaceme
 // Argument parsing for commands: a number, an index, an "A:EDGE" pair; EditError naming the word.
 double commandNumber(const std::string& word, const char* what);
 uint32_t commandIndex(const std::string& word, size_t count, const char* what);
+int axisIndex(const std::string& word);  // X|Y|Z (either case) → 0|1|2
 void expectArgs(const CommandContext& ctx, size_t min, size_t max);
 // A window-only command that toggles `which` (checked in the menus while it is on), bound to `keys`.
 Command windowToggle(const char* name, const char* label, const char* menu, WindowToggle which, std::vector<std::string> keys,

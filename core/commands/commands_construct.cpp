@@ -133,11 +133,8 @@ void addConstructCommands(CommandTable& t) {
                Construction c;
                c.kind = ConstructionKind::Revolve;
                c.inputs = inputs(ctx, 0, 1);
-               const std::string& ax = ctx.args[1];
-               if (ax != "X" && ax != "Y" && ax != "Z" && ax != "x" && ax != "y" && ax != "z")
-                   throw EditError("expected the axis X, Y or Z, got '" + ax + "'");
                Vec3 axis(0.0);
-               axis[(ax[0] | 0x20) - 'x'] = 1.0;
+               axis[axisIndex(ctx.args[1])] = 1.0;
                c.vector = arr(axis);
                c.origin = arr(ctx.session.cursor);
                c.degrees = ctx.args.size() == 3 ? commandNumber(ctx.args[2], "DEG") : 360.0;

@@ -105,13 +105,6 @@ void transformSelection(CommandContext& ctx, const std::string& label, const std
         false);
 }
 
-int axisIndex(const std::string& word) {
-    if (word == "x" || word == "X") return 0;
-    if (word == "y" || word == "Y") return 1;
-    if (word == "z" || word == "Z") return 2;
-    throw EditError("expected an axis X, Y or Z, got '" + word + "'");
-}
-
 }  // namespace
 
 void addSelectCommands(CommandTable& t) {

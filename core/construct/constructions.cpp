@@ -317,7 +317,8 @@ std::array<uint32_t, 16> window(const std::vector<uint32_t>& grid, uint32_t cols
     return w;
 }
 
-bool writeNet(Document& doc, const Construction& c, const ConstructedNet& net, std::vector<uint32_t>& moved) {
+// Writes the net into the construction's pool points; `moved` gets those whose position or weight changed.
+void writeNet(Document& doc, const Construction& c, const ConstructedNet& net, std::vector<uint32_t>& moved) {
     for (size_t g = 0; g < c.grid.size(); ++g) {
         const uint32_t i = c.grid[g];
         const Vec3 p = euclidean(net.points[g]);
@@ -328,7 +329,6 @@ bool writeNet(Document& doc, const Construction& c, const ConstructedNet& net, s
             moved.push_back(i);
         }
     }
-    return true;
 }
 
 }  // namespace
@@ -422,7 +422,8 @@ size_t addConstruction(Document& doc, Construction c, const std::string& name) {
     // Patch edges used as sides: their patches are joined to the new ones (the points are shared).
     for (const CurveInput& in : c.inputs) {
         if (in.curve >= 0) continue;
-        const std::array<uint32_t, 4> e{inputPoints(doc, in)[0], inputPoints(doc, in)[1], inputPoints(doc, in)[2], inputPoints(doc, in)[3]};
+        const std::vector<uint32_t> pts = inputPoints(doc, in);  // an edge: four
+        const std::array<uint32_t, 4> e{pts[0], pts[1], pts[2], pts[3]};
         for (uint32_t n = 0; n < c.patches.size(); ++n)
             for (Edge mine : {Edge::U0, Edge::V0, Edge::U1, Edge::V1}) {
                 std::array<uint32_t, 4> m{};
