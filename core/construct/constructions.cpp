@@ -113,14 +113,6 @@ ConstructedNet loftNet(const Document& doc, const Construction& c) {
     return net;
 }
 
-// The pool points of an input, in its own order.
-std::vector<uint32_t> inputPoints(const Document& doc, const CurveInput& in) {
-    if (in.curve >= 0) return doc.curves[size_t(in.curve)].idx;
-    std::vector<uint32_t> out;
-    for (int k = 0; k < 4; ++k) out.push_back(doc.patches[in.patch].idx[size_t(edgeSlot(in.edge, k))]);
-    return out;
-}
-
 struct Side {
     std::vector<HPoint> p;
     std::vector<uint32_t> idx;
@@ -141,7 +133,7 @@ ConstructedNet edgeSurfaceNet(const Document& doc, const Construction& c) {
     for (const CurveInput& in : c.inputs) {
         const CurveShape s = inputShape(doc, in);
         if (s.closed) throw EditError(curveInputName(in) + " is closed; an edge surface's sides are open curves");
-        sides.push_back({s.points, inputPoints(doc, in), curveInputName(in)});
+        sides.push_back({s.points, curveInputPoints(doc, in), curveInputName(in)});
         for (const HPoint& h : s.points) size = std::max(size, glm::length(euclidean(h)));
     }
     const double tol = 1e-9 * (1.0 + size);
@@ -422,7 +414,7 @@ size_t addConstruction(Document& doc, Construction c, const std::string& name) {
     // Patch edges used as sides: their patches are joined to the new ones (the points are shared).
     for (const CurveInput& in : c.inputs) {
         if (in.curve >= 0) continue;
-        const std::vector<uint32_t> pts = inputPoints(doc, in);  // an edge: four
+        const std::vector<uint32_t> pts = curveInputPoints(doc, in);  // an edge: four
         const std::array<uint32_t, 4> e{pts[0], pts[1], pts[2], pts[3]};
         for (uint32_t n = 0; n < c.patches.size(); ++n)
             for (Edge mine : {Edge::U0, Edge::V0, Edge::U1, Edge::V1}) {

@@ -23,12 +23,8 @@ std::vector<uint32_t> constructionFixedPoints(const Document& doc) {
     for (const Construction& c : doc.constructions) {
         out.insert(out.end(), c.grid.begin(), c.grid.end());
         for (const CurveInput& in : c.inputs) {
-            if (in.curve >= 0 && size_t(in.curve) < doc.curves.size()) {
-                const auto& idx = doc.curves[size_t(in.curve)].idx;
-                out.insert(out.end(), idx.begin(), idx.end());
-            } else if (in.curve < 0 && in.patch < doc.patches.size()) {
-                for (int k = 0; k < 4; ++k) out.push_back(doc.patches[in.patch].idx[size_t(edgeSlot(in.edge, k))]);
-            }
+            const std::vector<uint32_t> pts = curveInputPoints(doc, in);
+            out.insert(out.end(), pts.begin(), pts.end());
         }
     }
     std::sort(out.begin(), out.end());

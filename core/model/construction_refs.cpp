@@ -58,6 +58,14 @@ CurveInput parseCurveInput(const Document& doc, const std::string& word) {
     return in;
 }
 
+std::vector<uint32_t> curveInputPoints(const Document& doc, const CurveInput& in) {
+    if (in.curve >= 0) return size_t(in.curve) < doc.curves.size() ? doc.curves[size_t(in.curve)].idx : std::vector<uint32_t>{};
+    std::vector<uint32_t> out;
+    if (in.patch < doc.patches.size())
+        for (int k = 0; k < 4; ++k) out.push_back(doc.patches[in.patch].idx[size_t(edgeSlot(in.edge, k))]);
+    return out;
+}
+
 std::string constructionLabel(const Document& doc, size_t k) {
     const Construction& c = doc.constructions.at(k);
     std::string s = std::string(constructionKindName(c.kind)) + " k" + std::to_string(k) + " from";
@@ -78,13 +86,8 @@ bool constructedOnly(const Document& doc, uint32_t i) {
     for (const Construction& c : doc.constructions) {
         if (std::find(c.grid.begin(), c.grid.end(), i) != c.grid.end()) made = true;
         for (const CurveInput& in : c.inputs) {
-            if (in.curve >= 0 && size_t(in.curve) < doc.curves.size()) {
-                const auto& idx = doc.curves[size_t(in.curve)].idx;
-                if (std::find(idx.begin(), idx.end(), i) != idx.end()) return false;
-            } else if (in.curve < 0 && in.patch < doc.patches.size()) {
-                for (int k = 0; k < 4; ++k)
-                    if (doc.patches[in.patch].idx[size_t(edgeSlot(in.edge, k))] == i) return false;
-            }
+            const std::vector<uint32_t> pts = curveInputPoints(doc, in);
+            if (std::find(pts.begin(), pts.end(), i) != pts.end()) return false;
         }
     }
     return made;

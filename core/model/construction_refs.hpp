@@ -17,6 +17,10 @@ std::string curveInputName(const CurveInput& in);
 // Parses one; EditError naming the word when it is neither or refers to nothing.
 CurveInput parseCurveInput(const Document& doc, const std::string& word);
 
+// The pool points of an input in its own order: a curve's, or a patch edge's four (none when it
+// refers to nothing).
+std::vector<uint32_t> curveInputPoints(const Document& doc, const CurveInput& in);
+
 // "revolve k0 from c1" for the outliner and messages.
 std::string constructionLabel(const Document& doc, size_t k);
 
