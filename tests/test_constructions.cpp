@@ -341,27 +341,33 @@ TEST(Constructions, EdgeSurfaceReproducesItsBoundariesAndSharesThem) {
     EXPECT_THROW(test::runEditScript(bad, "edge-surface c0"), std::exception);
 }
 
-TEST(Constructions, EdgeSurfaceBetweenTwoPatchEdgesJoinsThem) {
+TEST(Constructions, EdgeSurfaceBetweenTwoPatchEdgesJoinsThemG1) {
     EditSession s;
-    // Two flat patches facing each other: the ruled surface between their edges is joined to both.
+    // Two flat patches facing each other: the surface between their edges leaves each along its
+    // tangent and is joined G1 to both.
     test::runEditScript(s, "add-patch; cursor 0 0 3; add-patch");
     const size_t joins = s.doc.joins.size();
     test::runEditScript(s, "edge-surface 0:u1 1:u1");
     ASSERT_EQ(s.doc.constructions.size(), 1u);
-    EXPECT_EQ(s.doc.joins.size(), joins + 2);
+    ASSERT_EQ(s.doc.joins.size(), joins + 2);
+    for (size_t j = joins; j < s.doc.joins.size(); ++j) EXPECT_EQ(s.doc.joins[j].continuity, Continuity::G1);
     EXPECT_LE(maxConstraintResidual(s.doc), 1e-12);
-    // The first patch moved: the ruled surface follows it, still joined.
-    test::runEditScript(s, "select patch 0; move 0 0 -1");
+    // The first patch moved and tilted: the surface follows it, still joined G1.
+    test::runEditScript(s, "select patch 0; move 0 0 -1; rotate Y 20");
     const Construction& k = s.doc.constructions[0];
     for (int i = 0; i < 4; ++i) {  // the moved edge is the surface's side: the same pool points
         const uint32_t p = s.doc.patches[0].idx[size_t(edgeSlot(Edge::U1, i))];
         EXPECT_NE(std::find(k.grid.begin(), k.grid.end(), p), k.grid.end());
     }
-    // and the ruled lines run straight from it to the other patch's edge.
-    const Vec3 a = surfaceAt(s.doc, 0, 1.0, 0.5), b = surfaceAt(s.doc, 1, 1.0, 0.5), m = surfaceAt(s.doc, k.patches[0], 0.5, 0.5);
-    EXPECT_LT(glm::length(glm::cross(m - a, b - a)), 1e-9);
     EXPECT_TRUE(s.doc.constructions[0].error.empty());
     EXPECT_LE(maxConstraintResidual(s.doc), 1e-9 * modelSize(s.doc));
+    // Between two curves it stays ruled: straight lines from one to the other.
+    EditSession r;
+    test::runEditScript(r, "curve-through 0,0,0 1,0,0.5 2,0,0; curve-through 0,2,1 1,2,0 2,2,1; edge-surface c0 c1");
+    const Construction& ruled = r.doc.constructions[0];
+    const Vec3 a = curveAt(r.doc, r.doc.curves[0], 0, 0.3), b = curveAt(r.doc, r.doc.curves[1], 0, 0.3);
+    const Vec3 m = surfaceAt(r.doc, ruled.patches[0], 0.3, 0.4);
+    EXPECT_LT(glm::length(glm::cross(m - a, b - a)), 1e-9);
 }
 
 TEST(Constructions, Sweep1CarriesTheProfileAlongTheRail) {

@@ -159,3 +159,24 @@ TEST(Examples, PipeIsACircleSweptAlongARail) {
         }
     }
 }
+
+// The 3 x 3 network shell: every one of its eight curves is an isocurve of the surface.
+TEST(Examples, NetworkShellPassesThroughEveryCurve) {
+    const Document doc = made("network");
+    ASSERT_EQ(doc.constructions.size(), 1u);
+    const Construction& k = doc.constructions[0];
+    EXPECT_EQ(k.kind, ConstructionKind::Network);
+    ASSERT_EQ(k.patches.size(), 9u);
+    const auto at = [&](size_t row, size_t col, double u, double v) {
+        return evaluateWindow(gatherWindow(doc, doc.patches[k.patches[row * 3 + col]].idx), Basis::Bezier, 0.5, u, v).p;
+    };
+    const auto curve = [&](size_t c, size_t seg, double t) {
+        return evaluateRationalCurve(curvePoints(doc, doc.curves[c], seg), {1, 1, 1, 1}, t).p;
+    };
+    for (size_t r = 0; r < 4; ++r)
+        for (size_t seg = 0; seg < 3; ++seg)
+            for (double t : {0.0, 0.35, 0.8}) {
+                EXPECT_LT(glm::length(at(std::min<size_t>(r, 2), seg, t, r < 3 ? 0.0 : 1.0) - curve(r, seg, t)), 1e-12);
+                EXPECT_LT(glm::length(at(seg, std::min<size_t>(r, 2), r < 3 ? 0.0 : 1.0, t) - curve(4 + r, seg, t)), 1e-12);
+            }
+}

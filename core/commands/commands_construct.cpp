@@ -1,5 +1,5 @@
 // Curves and the surfaces made from them (issue 39): curve-through, curve-control, add-circle,
-// add-arc; revolve, extrude (of a curve), loft, edge-surface, and bake. Inputs are curves `cN` or patch edges
+// add-arc; revolve, extrude (of a curve), loft, edge-surface, sweep1, sweep2, network and bake. Inputs are curves `cN` or patch edges
 // `P:u0|u1|v0|v1`; the surfaces stay live (core/construct/constructions.hpp).
 #include <algorithm>
 
@@ -8,6 +8,7 @@
 #include "core/construct/constructions.hpp"
 #include "core/construct/curves.hpp"
 #include "core/model/construction_refs.hpp"
+#include "core/ops/patch_ops.hpp"
 
 namespace pw {
 
@@ -41,7 +42,10 @@ void construct(CommandContext& ctx, Construction c, const std::string& undoLabel
     EditSession& s = ctx.session;
     size_t k = 0;
     const std::string name(constructionKindName(c.kind));
-    s.apply(undoLabel, [&](Document& d) { k = addConstruction(d, std::move(c), name); });
+    s.apply(undoLabel, [&](Document& d) {
+        k = addConstruction(d, std::move(c), name);
+        compactPool(d);  // a network's meeting points were made one: the others are no one's now
+    });
     s.sel.clear();
     const Construction& made = s.doc.constructions[k];
     if (!made.patches.empty()) s.sel.patch = int(made.patches.front());
@@ -144,16 +148,49 @@ void addConstructCommands(CommandTable& t) {
     t.add({.name = "loft",
            .label = "Loft",
            .menu = "Surface",
-           .usage = "C C ... [closed]",
+           .usage = "C C ... [closed] [start=G0|G1] [end=G0|G1]",
            .help = "A surface through the sections C (curves or patch edges, 2 or more, each of the same number of segments), "
-                   "passing exactly through every one: C2 between them; `closed` goes back to the first. Live while they are edited",
+                   "passing exactly through every one and sharing their points: C2 between them; `closed` goes back to the first; "
+                   "start=G1 / end=G1 leave a first or last section that is a patch edge along its patch's tangent (joined G1). "
+                   "Live while they are edited",
            .run = [](CommandContext& ctx) {
-               size_t n = ctx.args.size();
+               std::vector<std::string> words = ctx.args;
                Construction c;
                c.kind = ConstructionKind::Loft;
-               c.closed = n > 0 && ctx.args.back() == "closed";
-               if (c.closed) --n;
-               c.inputs = inputs(ctx, 0, n);
+               for (size_t e = 0; e < 2; ++e) {
+                   const std::string key = e == 0 ? "start=" : "end=";
+                   const auto it = std::find_if(words.begin(), words.end(), [&](const std::string& w) { return w.rfind(key, 0) == 0; });
+                   if (it == words.end()) continue;
+                   const std::string v = it->substr(key.size());
+                   if (v == "G0" || v == "C0")
+                       c.ends[e] = Continuity::C0;
+                   else if (v == "G1")
+                       c.ends[e] = Continuity::G1;
+                   else
+                       throw EditError(key + " takes G0 or G1, got '" + v + "'");
+                   words.erase(it);
+               }
+               c.closed = !words.empty() && words.back() == "closed";
+               if (c.closed) words.pop_back();
+               if (c.closed && (c.ends[0] != Continuity::C0 || c.ends[1] != Continuity::C0))
+                   throw EditError("a closed loft has no ends; start= and end= are for open lofts");
+               for (const std::string& w : words) c.inputs.push_back(parseCurveInput(ctx.session.doc, w));
+               // α: the G1 end's tangent as long as a third of the way to the next section.
+               const Document& d = ctx.session.doc;
+               for (size_t e = 0; e < 2 && c.inputs.size() >= 2; ++e) {
+                   if (c.ends[e] == Continuity::C0) continue;
+                   const size_t k = e == 0 ? 0 : c.inputs.size() - 1, next = e == 0 ? 1 : k - 1;
+                   const CurveShape a = inputShape(d, c.inputs[k]), b = inputShape(d, c.inputs[next]);
+                   const std::vector<HPoint> row = inputTangentRow(d, c.inputs[k]);
+                   if (row.empty() || a.points.size() != b.points.size()) continue;  // the construction says why
+                   double gap = 0.0, tangent = 0.0;
+                   for (size_t j = 0; j < a.points.size(); ++j) {
+                       gap += glm::length(euclidean(b.points[j]) - euclidean(a.points[j]));
+                       tangent += glm::length(euclidean(a.points[j]) - euclidean(row[j]));
+                   }
+                   if (!(tangent > 0.0)) throw EditError("patch edge " + curveInputName(c.inputs[k]) + " has no tangent row to continue");
+                   c.endAlpha[e] = std::clamp(gap / 3.0 / tangent, 1e-3, 1e3);
+               }
                construct(ctx, std::move(c), "Loft");
            }});
     t.add({.name = "edge-surface",
@@ -183,6 +220,39 @@ void addConstructCommands(CommandTable& t) {
                c.kind = ConstructionKind::Sweep1;
                c.inputs = inputs(ctx, 0, 2);
                construct(ctx, std::move(c), "Sweep " + ctx.args[1] + " along " + ctx.args[0]);
+           }});
+    t.add({.name = "sweep2",
+           .label = "Sweep Along Two Rails",
+           .menu = "Surface",
+           .usage = "RAIL RAIL PROFILE",
+           .help = "Carry the profile between two rails (curves or patch edges of the same number of segments), turned and scaled "
+                   "so it spans them at every rail point: the surface holds both rails exactly (sharing their points) and is the "
+                   "profile moved at every segment end. Live while any of them is edited",
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 3, 3);
+               Construction c;
+               c.kind = ConstructionKind::Sweep2;
+               c.inputs = inputs(ctx, 0, 3);
+               construct(ctx, std::move(c), "Sweep " + ctx.args[2] + " along " + ctx.args[0] + " and " + ctx.args[1]);
+           }});
+    t.add({.name = "network",
+           .label = "Curve Network",
+           .menu = "Surface",
+           .usage = "U U ... / V V ...",
+           .help = "A surface through every curve of a network (Gordon): U curves, a `/`, then V curves, at least 2 each way; each "
+                   "U curve has one segment between each two V curves and they meet at segment ends. Every cell becomes one patch; "
+                   "the meeting points become one point each, so dragging one moves both curves. Live while they are edited",
+           .run = [](CommandContext& ctx) {
+               const auto slash = std::find(ctx.args.begin(), ctx.args.end(), "/");
+               if (slash == ctx.args.end() || std::count(ctx.args.begin(), ctx.args.end(), "/") != 1)
+                   throw EditError("usage: network U U ... / V V ... (one / between the U and the V curves)");
+               Construction c;
+               c.kind = ConstructionKind::Network;
+               c.split = uint32_t(slash - ctx.args.begin());
+               if (c.split < 2 || ctx.args.end() - slash - 1 < 2) throw EditError("a network needs at least 2 curves each way");
+               for (const std::string& w : ctx.args)
+                   if (w != "/") c.inputs.push_back(parseCurveInput(ctx.session.doc, w));
+               construct(ctx, std::move(c), "Network");
            }});
     t.add({.name = "bake",
            .label = "Bake",

@@ -1,4 +1,5 @@
-// Surfaces from curves that stay live (issue 39): revolve, extrude, loft, edge surfaces and sweep1. A construction is
+// Surfaces from curves that stay live (issue 39): revolve, extrude, loft, edge surfaces, sweeps and
+// curve networks (the nets: core/construct/construction_nets.hpp). A construction is
 // stored in the document with its inputs (Construction in core/model/document.hpp) and its output,
 // a Bézier control net whose 4x4 windows are ordinary joined patches; rerunConstructions() makes
 // the net again from the inputs after every edit and every mouse move of a drag
@@ -25,6 +26,8 @@ namespace pw {
 
 // The input as a Bézier chain: a curve's points, or a patch edge's four.
 CurveShape inputShape(const Document& doc, const CurveInput& in);
+// For a patch edge: the patch's tangent row next to it (homogeneous, along the edge); empty for a curve.
+std::vector<HPoint> inputTangentRow(const Document& doc, const CurveInput& in);
 
 // A made control net: rows x cols homogeneous points, row-major; a closed direction repeats its
 // first row (closedV) or column (closedU) at the end.

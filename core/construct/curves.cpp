@@ -71,21 +71,26 @@ std::vector<double> chordParameters(const std::vector<Vec3>& p, bool closed) {
     return t;
 }
 
-std::vector<HPoint> splineThrough(const std::vector<HPoint>& q, const std::vector<double>& t, bool closed) {
+std::vector<HPoint> splineThrough(const std::vector<HPoint>& q, const std::vector<double>& t, bool closed,
+                                  const std::optional<HPoint>& startD, const std::optional<HPoint>& endD) {
     const size_t m = q.size();
     const size_t segs = closed ? m : m - 1;
     std::vector<double> h(segs);
     for (size_t i = 0; i < segs; ++i) h[i] = t[i + 1] - t[i];
     const auto Q = [&](size_t i) { return q[i % m]; };
     std::vector<HPoint> d;  // the derivative at every value
-    if (!closed && m == 2) {
+    if (!closed && m == 2 && !startD && !endD) {
         d = {(q[1] - q[0]) / h[0], (q[1] - q[0]) / h[0]};
     } else {
         const size_t n = m;  // unknowns: one derivative per value
         std::vector<double> a(n, 0.0), b(n, 0.0), c(n, 0.0);
         std::vector<HPoint> r(n);
         for (size_t i = 0; i < n; ++i) {
-            if (!closed && i == 0) {
+            if (!closed && i == 0 && startD) {
+                b[i] = 1.0, r[i] = *startD;
+            } else if (!closed && i == n - 1 && endD) {
+                b[i] = 1.0, r[i] = *endD;
+            } else if (!closed && i == 0) {
                 b[i] = 2.0, c[i] = 1.0, r[i] = 3.0 * (q[1] - q[0]) / h[0];
             } else if (!closed && i == n - 1) {
                 a[i] = 1.0, b[i] = 2.0, r[i] = 3.0 * (q[i] - q[i - 1]) / h[i - 1];

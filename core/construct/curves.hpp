@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <glm/vec4.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,8 +29,10 @@ struct CurveShape {
 
 // The Bézier points of the C2 cubic spline that takes values q[i] at parameters t[i] (strictly
 // increasing; closed: one more parameter, where the spline is back at q[0]). Ends of an open
-// spline are natural (no second derivative). 2 values give the straight segment. 3n + 1 points.
-std::vector<HPoint> splineThrough(const std::vector<HPoint>& q, const std::vector<double>& t, bool closed);
+// spline are natural (no second derivative), or clamped to the derivative startD / endD where one
+// is given. 2 values and no derivative give the straight segment. 3n + 1 points.
+std::vector<HPoint> splineThrough(const std::vector<HPoint>& q, const std::vector<double>& t, bool closed,
+                                  const std::optional<HPoint>& startD = std::nullopt, const std::optional<HPoint>& endD = std::nullopt);
 // Chord-length parameters of points (closed: back to the first); EditError when two consecutive
 // points coincide.
 std::vector<double> chordParameters(const std::vector<Vec3>& p, bool closed);

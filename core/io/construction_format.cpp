@@ -18,7 +18,12 @@ json constructionsJson(const Document& doc) {
         json o{{"kind", constructionKindName(c.kind)}, {"inputs", std::move(inputs)}};
         if (c.kind == ConstructionKind::Revolve) o["origin"] = c.origin, o["degrees"] = c.degrees;
         if (c.kind == ConstructionKind::Revolve || c.kind == ConstructionKind::Extrude) o["vector"] = c.vector;
-        if (c.kind == ConstructionKind::Loft) o["closed"] = c.closed;
+        if (c.kind == ConstructionKind::Loft) {
+            o["closed"] = c.closed;
+            o["ends"] = {continuityName(c.ends[0]), continuityName(c.ends[1])};
+            o["end_alpha"] = c.endAlpha;
+        }
+        if (c.kind == ConstructionKind::Network) o["u_curves"] = c.split;
         o["rows"] = c.rows;
         o["cols"] = c.cols;
         o["grid"] = c.grid;
@@ -35,7 +40,7 @@ void readConstructions(const json_reader::Reader& r, const json& v, Document& do
         const json& o = r.object(list[k], path);
         Construction c;
         c.kind = r.named<ConstructionKind>(*r.member(o, path, "kind", true), at(path, "kind"), parseConstructionKind,
-                                           "revolve, extrude, loft, edge-surface, sweep1");
+                                           "revolve, extrude, loft, edge-surface, sweep1, sweep2, network");
         const std::string ip = at(path, "inputs");
         const json& inputs = r.array(*r.member(o, path, "inputs", true), ip, limits::kMaxPatches, "inputs");
         if (inputs.empty()) r.fail(ip, "a construction needs at least one input");
@@ -56,6 +61,21 @@ void readConstructions(const json_reader::Reader& r, const json& v, Document& do
         vec3("vector", c.vector);
         r.optional(o, path, "degrees", [&](const json& x, const std::string& p) { c.degrees = r.numberInRange(x, p, 0.0, 360.0, true); });
         r.optional(o, path, "closed", [&](const json& x, const std::string& p) { c.closed = r.boolean(x, p); });
+        r.optional(o, path, "ends", [&](const json& x, const std::string& p) {
+            const json& a = r.fixedArray(x, p, 2);
+            for (size_t i = 0; i < 2; ++i) {
+                c.ends[i] = r.named<Continuity>(a[i], at(p, i), parseContinuity, "C0, G1");
+                if (c.ends[i] != Continuity::C0 && c.ends[i] != Continuity::G1) r.fail(at(p, i), "a loft's end is C0 (G0) or G1");
+            }
+        });
+        r.optional(o, path, "end_alpha", [&](const json& x, const std::string& p) {
+            const json& a = r.fixedArray(x, p, 2);
+            for (size_t i = 0; i < 2; ++i) c.endAlpha[i] = r.numberInRange(a[i], at(p, i), 1e-6, 1e6, false);
+        });
+        r.optional(o, path, "u_curves", [&](const json& x, const std::string& p) {
+            c.split = uint32_t(r.index(x, p, c.inputs.size() - 1, "count of U curves"));
+            if (c.split < 2) r.fail(p, "a network has at least 2 U curves");
+        });
         const auto side = [&](const char* key) {
             const std::string p = at(path, key);
             const auto n = uint32_t(r.index(*r.member(o, path, key, true), p, limits::kMaxNetSide + 1, "net side"));

@@ -9,7 +9,7 @@
 namespace pw {
 
 namespace {
-constexpr std::array<std::string_view, 5> kKindNames{"revolve", "extrude", "loft", "edge-surface", "sweep1"};
+constexpr std::array<std::string_view, 7> kKindNames{"revolve", "extrude", "loft", "edge-surface", "sweep1", "sweep2", "network"};
 
 bool parseUint(std::string_view s, uint32_t& out) {
     const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
@@ -69,7 +69,7 @@ std::vector<uint32_t> curveInputPoints(const Document& doc, const CurveInput& in
 std::string constructionLabel(const Document& doc, size_t k) {
     const Construction& c = doc.constructions.at(k);
     std::string s = std::string(constructionKindName(c.kind)) + " k" + std::to_string(k) + " from";
-    for (const CurveInput& in : c.inputs) s += " " + curveInputName(in);
+    for (size_t i = 0; i < c.inputs.size(); ++i) s += (c.split > 0 && i == c.split ? " / " : " ") + curveInputName(c.inputs[i]);
     return s;
 }
 

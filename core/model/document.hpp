@@ -153,8 +153,8 @@ struct Join {
 
 // A surface built from curves (issue 39) that stays live: its patches are re-made from its inputs
 // whenever they change (core/construct/constructions.hpp), until `bake` detaches them.
-enum class ConstructionKind : uint8_t { Revolve, Extrude, Loft, EdgeSurface, Sweep1 };
-// "revolve", "extrude", "loft", "edge-surface", "sweep1"
+enum class ConstructionKind : uint8_t { Revolve, Extrude, Loft, EdgeSurface, Sweep1, Sweep2, Network };
+// "revolve", "extrude", "loft", "edge-surface", "sweep1", "sweep2", "network"
 std::string_view constructionKindName(ConstructionKind k);
 std::optional<ConstructionKind> parseConstructionKind(std::string_view name);
 
@@ -173,6 +173,11 @@ struct Construction {
     std::array<double, 3> vector{0, 0, 1};  // revolve: the axis; extrude: the offset
     double degrees = 360.0;                 // revolve
     bool closed = false;                    // loft: back to the first section
+    // loft: continuity at the first and last section against the patch whose edge it is (C0 = G0,
+    // or G1: the surface leaves the edge along the patch's tangent, scaled by endAlpha).
+    std::array<Continuity, 2> ends{Continuity::C0, Continuity::C0};
+    std::array<double, 2> endAlpha{1.0, 1.0};
+    uint32_t split = 0;  // network: the first `split` inputs run along u, the rest along v
     // The made control net: rows x cols pool indices (row-major, Bézier, 3n + 1 each way; a closed
     // direction repeats its first row or column), and the patches that are its 4x4 windows.
     uint32_t rows = 0, cols = 0;

@@ -1,0 +1,274 @@
+// Revolve, extrude, loft and edge surface nets (core/construct/construction_nets.hpp).
+#include <algorithm>
+#include <cmath>
+
+#include "core/base/errors.hpp"
+#include "core/construct/construction_nets.hpp"
+#include "core/model/construction_refs.hpp"
+
+namespace pw {
+
+namespace {
+Vec3 vec(const std::array<double, 3>& a) { return Vec3(a[0], a[1], a[2]); }
+}  // namespace
+
+ConstructedNet revolveNet(const Document& doc, const Construction& c) {
+    if (c.inputs.size() != 1) throw EditError("revolve takes one profile");
+    const CurveShape profile = inputShape(doc, c.inputs[0]);
+    const Vec3 axisIn = vec(c.vector);
+    if (!(glm::length(axisIn) > 0.0)) throw EditError("the axis has no direction");
+    const Vec3 a = glm::normalize(axisIn), o = vec(c.origin);
+    // Any unit e1 normal to the axis; the arcs are built in (e1, e2) and mapped per profile point.
+    const CurveShape arc = arcCurve(Vec3(0.0), Vec3(1, 0, 0), Vec3(0, 1, 0), 1.0, c.degrees);
+    ConstructedNet net;
+    net.rows = uint32_t(profile.points.size());
+    net.cols = uint32_t(arc.points.size());
+    net.closedU = arc.closed;
+    net.closedV = profile.closed;
+    net.smoothU = true;
+    net.points.resize(size_t(net.rows) * net.cols);
+    double farthest = 0.0, size = 0.0;
+    for (uint32_t i = 0; i < net.rows; ++i) {
+        const double wp = profile.points[i].w;
+        const Vec3 p = euclidean(profile.points[i]);
+        const double h = glm::dot(p - o, a);
+        const Vec3 r = p - o - h * a, b = glm::cross(a, r);
+        farthest = std::max(farthest, glm::length(r));
+        size = std::max(size, glm::length(p - o));
+        for (uint32_t j = 0; j < net.cols; ++j) {
+            const double wa = arc.points[j].w;
+            const Vec3 q = euclidean(arc.points[j]);
+            net.points[size_t(i) * net.cols + j] = homogeneous(o + h * a + q.x * r + q.y * b, wp * wa);
+        }
+    }
+    if (!(farthest > 1e-12 * (1.0 + size))) throw EditError("the profile lies on the axis; there is nothing to revolve");
+    return net;
+}
+
+ConstructedNet extrudeNet(const Document& doc, const Construction& c) {
+    if (c.inputs.size() != 1) throw EditError("extrude takes one profile");
+    const CurveShape profile = inputShape(doc, c.inputs[0]);
+    const Vec3 d = vec(c.vector);
+    if (!(glm::length(d) > 0.0)) throw EditError("the extrusion has no length");
+    ConstructedNet net;
+    net.rows = 4;
+    net.cols = uint32_t(profile.points.size());
+    net.closedU = profile.closed;
+    net.points.resize(size_t(net.rows) * net.cols);
+    for (uint32_t i = 0; i < 4; ++i)
+        for (uint32_t j = 0; j < net.cols; ++j)
+            net.points[size_t(i) * net.cols + j] = homogeneous(euclidean(profile.points[j]) + (i / 3.0) * d, profile.points[j].w);
+    return net;
+}
+
+ConstructedNet loftNet(const Document& doc, const Construction& c) {
+    const size_t m = c.inputs.size();
+    if (m < (c.closed ? 3u : 2u))
+        throw EditError(c.closed ? "a closed loft needs at least 3 sections" : "a loft needs at least 2 sections");
+    std::vector<CurveShape> sections;
+    for (const CurveInput& in : c.inputs) sections.push_back(inputShape(doc, in));
+    for (size_t s = 1; s < m; ++s) {
+        if (sections[s].segments() != sections[0].segments())
+            throw EditError("sections " + curveInputName(c.inputs[0]) + " (" + segmentsWord(sections[0].segments()) + ") and " +
+                            curveInputName(c.inputs[s]) + " (" + segmentsWord(sections[s].segments()) +
+                            ") differ; loft sections need the same number of segments");
+        if (sections[s].closed != sections[0].closed)
+            throw EditError("sections " + curveInputName(c.inputs[0]) + " and " + curveInputName(c.inputs[s]) +
+                            " differ: one is closed, the other open");
+    }
+    const size_t cols = sections[0].points.size();
+    // Chord-length parameters between consecutive sections: the mean distance of their points.
+    std::vector<double> t{0.0};
+    for (size_t s = 0; s + (c.closed ? 0 : 1) < m; ++s) {
+        double d = 0.0;
+        for (size_t j = 0; j < cols; ++j) d += glm::length(euclidean(sections[(s + 1) % m].points[j]) - euclidean(sections[s].points[j]));
+        d /= double(cols);
+        if (!(d > 0.0))
+            throw EditError("sections " + curveInputName(c.inputs[s]) + " and " + curveInputName(c.inputs[(s + 1) % m]) + " coincide");
+        t.push_back(t.back() + d);
+    }
+    ConstructedNet net;
+    net.cols = uint32_t(cols);
+    net.closedU = sections[0].closed;
+    net.closedV = c.closed;
+    // G1 ends: the surface leaves an edge section along its patch's tangent row, B1 - B0 = α (A0 - A1)
+    // (the join's own condition), so the column's end derivative is 3 w α (A0 - A1) / h.
+    std::array<std::vector<HPoint>, 2> tangent;
+    for (int e = 0; e < 2 && !c.closed; ++e)
+        if (c.ends[size_t(e)] != Continuity::C0) {
+            const CurveInput& in = c.inputs[e == 0 ? 0 : m - 1];
+            tangent[size_t(e)] = inputTangentRow(doc, in);
+            if (tangent[size_t(e)].empty())
+                throw EditError(std::string(e == 0 ? "start" : "end") + "=" + std::string(continuityName(c.ends[size_t(e)])) +
+                                " needs a patch edge as the " + (e == 0 ? "first" : "last") + " section; " + curveInputName(in) +
+                                " is a curve");
+        }
+    std::vector<std::vector<HPoint>> columns(cols);
+    for (size_t j = 0; j < cols; ++j) {
+        std::vector<HPoint> q;
+        for (const CurveShape& s : sections) q.push_back(s.points[j]);
+        std::array<std::optional<HPoint>, 2> d;
+        for (int e = 0; e < 2; ++e) {
+            if (tangent[size_t(e)].empty()) continue;
+            const HPoint& a0 = q[e == 0 ? 0 : m - 1];
+            const Vec3 away = euclidean(a0) - euclidean(tangent[size_t(e)][j]);
+            const double h = e == 0 ? t[1] - t[0] : t[m - 1] - t[m - 2];
+            d[size_t(e)] = HPoint((e == 0 ? 3.0 : -3.0) * a0.w * c.endAlpha[size_t(e)] * away / h, 0.0);
+        }
+        columns[j] = splineThrough(q, t, c.closed, d[0], d[1]);
+    }
+    net.rows = uint32_t(columns[0].size());
+    net.points.resize(size_t(net.rows) * net.cols);
+    for (uint32_t i = 0; i < net.rows; ++i)
+        for (uint32_t j = 0; j < net.cols; ++j) {
+            const HPoint& h = columns[j][i];
+            if (!(h.w > 0.0))
+                throw EditError("the sections' weights differ too much to loft (a weight between them would not be positive)");
+            net.points[size_t(i) * net.cols + j] = h;
+        }
+    // The sections are rows 3k of the net: the surface shares their points (an edge's patch is joined).
+    net.shared.assign(net.points.size(), -1);
+    for (size_t k = 0; k < m; ++k) {
+        const std::vector<uint32_t> idx = curveInputPoints(doc, c.inputs[k]);
+        for (size_t j = 0; j < cols; ++j) net.shared[3 * k * cols + j] = idx[j];
+    }
+    return net;
+}
+
+namespace {
+struct Side {
+    std::vector<HPoint> p;
+    std::vector<uint32_t> idx;
+    std::string name;
+    std::vector<HPoint> inner;  // a patch edge's tangent row (the surface leaves it G1), else empty
+    void reverse() {
+        std::reverse(p.begin(), p.end());
+        std::reverse(idx.begin(), idx.end());
+        std::reverse(inner.begin(), inner.end());
+    }
+    Vec3 start() const { return euclidean(p.front()); }
+    Vec3 end() const { return euclidean(p.back()); }
+};
+}  // namespace
+
+ConstructedNet edgeSurfaceNet(const Document& doc, const Construction& c) {
+    const size_t n = c.inputs.size();
+    if (n < 2 || n > 4) throw EditError("an edge surface takes 2, 3 or 4 curves or edges");
+    std::vector<Side> sides;
+    double size = 0.0;
+    for (const CurveInput& in : c.inputs) {
+        const CurveShape s = inputShape(doc, in);
+        if (s.closed) throw EditError(curveInputName(in) + " is closed; an edge surface's sides are open curves");
+        sides.push_back({s.points, curveInputPoints(doc, in), curveInputName(in), inputTangentRow(doc, in)});
+        for (const HPoint& h : s.points) size = std::max(size, glm::length(euclidean(h)));
+    }
+    const double tol = 1e-9 * (1.0 + size);
+    const auto meet = [&](const Vec3& a, const Vec3& b) { return glm::length(a - b) <= tol; };
+    Side bottom = sides[0], top, left, right;
+    if (n == 2) {
+        top = sides[1];
+        // Ruled: the second runs the way the first does (its start nearer the first's start).
+        if (glm::length(top.start() - bottom.start()) + glm::length(top.end() - bottom.end()) >
+            glm::length(top.end() - bottom.start()) + glm::length(top.start() - bottom.end()))
+            top.reverse();
+    } else {
+        // A loop: each side starts where the one before ends.
+        std::vector<Side> chain{bottom};
+        std::vector<bool> used(n, false);
+        used[0] = true;
+        for (size_t k = 1; k < n; ++k) {
+            bool found = false;
+            for (size_t i = 1; i < n && !found; ++i) {
+                if (used[i]) continue;
+                Side s = sides[i];
+                if (!meet(s.start(), chain.back().end())) s.reverse();
+                if (!meet(s.start(), chain.back().end())) continue;
+                chain.push_back(s);
+                used[i] = found = true;
+            }
+            if (!found)
+                throw EditError("no side starts where " + chain.back().name + " ends; the curves must form a closed loop, end to end");
+        }
+        if (!meet(chain.back().end(), chain.front().start()))
+            throw EditError(chain.back().name + " ends " + std::to_string(glm::length(chain.back().end() - chain.front().start())) +
+                            " from where " + chain.front().name + " starts; the curves must form a closed loop");
+        right = chain[1];
+        top = chain[2];
+        top.reverse();  // along u, as the bottom
+        if (n == 4) {
+            left = chain[3];
+            left.reverse();  // along v, as the right
+        } else {             // three sides: the fourth collapsed to the bottom's start
+            left.p.assign(right.p.size(), bottom.p.front());
+            left.idx.assign(right.idx.size(), bottom.idx.front());
+            left.name = bottom.name;
+            left.inner.clear();
+        }
+        if (right.p.size() != left.p.size())
+            throw EditError("sides " + right.name + " and " + left.name + " have different numbers of segments (" +
+                            segmentsWord((right.p.size() - 1) / 3) + ", " + segmentsWord((left.p.size() - 1) / 3) + ")");
+    }
+    if (top.p.size() != bottom.p.size())
+        throw EditError("sides " + bottom.name + " and " + top.name + " have different numbers of segments (" +
+                        segmentsWord((bottom.p.size() - 1) / 3) + ", " + segmentsWord((top.p.size() - 1) / 3) + ")");
+    ConstructedNet net;
+    net.cols = uint32_t(bottom.p.size());
+    net.rows = n == 2 ? 4u : uint32_t(right.p.size());
+    if (n == 2) {  // ruled: the straight lines between the sides, as a Coons patch of straight sides
+        for (uint32_t i = 0; i < 4; ++i) {
+            left.p.push_back(glm::mix(bottom.p.front(), top.p.front(), i / 3.0));
+            right.p.push_back(glm::mix(bottom.p.back(), top.p.back(), i / 3.0));
+        }
+    }
+    net.points.resize(size_t(net.rows) * net.cols);
+    net.shared.assign(net.points.size(), -1);
+    const uint32_t R = net.rows - 1, C = net.cols - 1;
+    const HPoint c00 = bottom.p.front(), c01 = bottom.p.back(), c10 = top.p.front(), c11 = top.p.back();
+    for (uint32_t i = 0; i <= R; ++i)
+        for (uint32_t j = 0; j <= C; ++j) {
+            const double u = double(j) / C, v = double(i) / R;
+            const size_t g = size_t(i) * net.cols + j;
+            HPoint h;
+            if (i == 0) {
+                h = bottom.p[j];
+                net.shared[g] = bottom.idx[j];
+            } else if (i == R) {
+                h = top.p[j];
+                net.shared[g] = top.idx[j];
+            } else if (j == 0) {
+                h = left.p[i];
+                if (n > 2) net.shared[g] = left.idx[i];
+            } else if (j == C) {
+                h = right.p[i];
+                if (n > 2) net.shared[g] = right.idx[i];
+            } else {
+                h = (1.0 - v) * bottom.p[j] + v * top.p[j] + (1.0 - u) * left.p[i] + u * right.p[i] -
+                    ((1.0 - u) * (1.0 - v) * c00 + u * (1.0 - v) * c01 + (1.0 - u) * v * c10 + u * v * c11);
+                if (!(h.w > 0.0))
+                    throw EditError("the sides' weights differ too much for an edge surface (a weight inside would not be positive)");
+            }
+            net.points[g] = h;
+        }
+    // A side that is a patch edge: the row next to it continues the patch across, B1 = 2 B0 - A1
+    // (G1 with α = 1). Only the rows' inner points where 3 or 4 sides meet at corners (their ends
+    // are the neighbouring sides'; addConstruction() joins G1 only where the corners agree).
+    const auto across = [&](const Side& s, uint32_t fromRow, uint32_t fromCol, int dr, int dc, bool alongRow) {
+        if (s.inner.empty()) return;
+        const uint32_t len = alongRow ? net.cols : net.rows;
+        for (uint32_t k = (n == 2 ? 0 : 1); k + (n == 2 ? 0 : 1) < len; ++k) {
+            const uint32_t i = alongRow ? fromRow : k, j = alongRow ? k : fromCol;
+            const HPoint& b0 = net.points[size_t(i) * net.cols + j];
+            const Vec3 p = 2.0 * euclidean(b0) - euclidean(s.inner[k]);
+            net.points[size_t(int(i) + dr) * net.cols + uint32_t(int(j) + dc)] = homogeneous(p, b0.w);
+        }
+    };
+    across(bottom, 0, 0, 1, 0, true);
+    across(top, R, 0, -1, 0, true);
+    if (n > 2) {
+        across(right, 0, C, 0, -1, false);
+        if (n == 4) across(left, 0, 0, 0, 1, false);
+    }
+    return net;
+}
+
+}  // namespace pw
