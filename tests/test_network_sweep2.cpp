@@ -159,3 +159,35 @@ TEST(Loft, G1EndsLeaveAPatchEdgeAlongItsTangent) {
     EXPECT_THROW(test::runEditScript(bad, "loft c0 c1 start=G1"), std::exception);
     EXPECT_THROW(test::runEditScript(bad, "loft c0 c1 end=G3"), std::exception);
 }
+
+TEST(CurvePoints, InsertKeepsTheShapeAndRemoveUndoesIt) {
+    EditSession s;
+    test::runEditScript(s, "curve-through 0,0,0 1,1,0 3,0,1 4,2,0; add-arc 1 135");
+    const Document before = s.doc;
+    const auto at = [](const Document& d, size_t c, size_t seg, double t) { return curveAt(d, d.curves[c], seg, t); };
+    test::runEditScript(s, "curve-insert c0 1.4; curve-insert c1 0.3");
+    ASSERT_EQ(curveSegmentCount(s.doc.curves[0]), 4u);
+    ASSERT_EQ(curveSegmentCount(s.doc.curves[1]), 3u);
+    for (double t : {0.0, 0.1, 0.25, 0.4}) {  // the split segment's halves trace the old one
+        EXPECT_LT(glm::length(at(s.doc, 0, 1, t / 0.4) - at(before, 0, 1, t)), 1e-12) << t;
+        EXPECT_LT(glm::length(at(s.doc, 1, 0, t / 0.3 > 1 ? 1 : t / 0.3) - at(before, 1, 0, std::min(t, 0.3))), 1e-12) << t;
+    }
+    for (double t : {0.5, 0.8, 1.0}) {
+        EXPECT_LT(glm::length(at(s.doc, 0, 2, (t - 0.4) / 0.6) - at(before, 0, 1, t)), 1e-12) << t;
+        EXPECT_NEAR(glm::length(at(s.doc, 1, 1, (t - 0.3) / 0.7) - Vec3(0.0)), 1.0, 1e-12) << t;  // still the exact arc
+    }
+    // Removing the inserted points gives the curves back.
+    test::runEditScript(s, "curve-remove c0 2; curve-remove c1 1");
+    ASSERT_EQ(curveSegmentCount(s.doc.curves[0]), 3u);
+    for (size_t c = 0; c < 2; ++c)
+        for (size_t seg = 0; seg < curveSegmentCount(before.curves[c]); ++seg)
+            for (double t : {0.2, 0.5, 0.9}) EXPECT_LT(glm::length(at(s.doc, c, seg, t) - at(before, c, seg, t)), 1e-9) << c << " " << seg;
+    EXPECT_EQ(s.doc.points.size(), before.points.size());
+    // Bad positions are refused, changing nothing.
+    const Document now = s.doc;
+    for (const char* bad : {"curve-insert c0 1", "curve-insert c0 3.5", "curve-remove c0 0", "curve-remove c0 3", "curve-remove c5 1",
+                            "curve-remove 0:u0 1"}) {
+        EXPECT_THROW(test::runEditScript(s, bad), std::exception) << bad;
+        EXPECT_EQ(s.doc, now) << bad;
+    }
+}

@@ -6,6 +6,7 @@
 #include "core/base/errors.hpp"
 #include "core/commands/command_table.hpp"
 #include "core/construct/constructions.hpp"
+#include "core/construct/curve_edit.hpp"
 #include "core/construct/curves.hpp"
 #include "core/model/construction_refs.hpp"
 #include "core/ops/patch_ops.hpp"
@@ -96,6 +97,39 @@ void addConstructCommands(CommandTable& t) {
                std::vector<Vec3> pts;
                for (const std::string& w : ctx.args) pts.push_back(pointWord(w));
                addShape(ctx, "Curve from control points", [&] { return curveControl(pts); });
+           }});
+    const auto curveWord = [](const CommandContext& ctx) {
+        const CurveInput in = parseCurveInput(ctx.session.doc, ctx.args[0]);
+        if (in.curve < 0) throw EditError("expected a curve (c0, c1, ...), got '" + ctx.args[0] + "'");
+        return uint32_t(in.curve);
+    };
+    t.add({.name = "curve-insert",
+           .label = "Insert Curve Point",
+           .menu = "Add",
+           .usage = "C T",
+           .help = "Insert an on-curve point into curve C at parameter T (segment floor(T), at its fraction): the segment is "
+                   "split in two and the curve keeps its shape exactly",
+           .run = [curveWord](CommandContext& ctx) {
+               expectArgs(ctx, 2, 2);
+               const uint32_t c = curveWord(ctx);
+               const double tt = commandNumber(ctx.args[1], "T");
+               ctx.session.apply("Insert curve point", [&](Document& d) { insertCurvePoint(d, c, tt); });
+           }});
+    t.add({.name = "curve-remove",
+           .label = "Remove Curve Point",
+           .menu = "Add",
+           .usage = "C K",
+           .help = "Remove on-curve point K of curve C (the end of segment K-1): its two segments become one cubic with their "
+                   "ends and end tangents (exactly the segment an insert split)",
+           .run = [curveWord](CommandContext& ctx) {
+               expectArgs(ctx, 2, 2);
+               const uint32_t c = curveWord(ctx);
+               const size_t k = commandIndex(ctx.args[1], 1u << 20, "on-curve point");
+               ctx.session.apply("Remove curve point", [&](Document& d) {
+                   removeCurvePoint(d, c, k);
+                   compactPool(d);
+               });
+               ctx.session.sel.points.clear();  // the pool was renumbered
            }});
     const auto ground = [](const EditSession& s, Vec3& e1, Vec3& e2) {
         e1 = Vec3(1, 0, 0);
