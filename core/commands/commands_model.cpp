@@ -278,6 +278,10 @@ void addModelCommands(CommandTable& t) {
     t.add(windowToggle("join-pick", "Join by Picking", "Patch", WindowToggle::JoinTool, {"J"},
                        "Hover an open edge and click it, then click the edge to join it to; the join shows at once (C1) "
                        "and the panel changes its continuity, keeps it (Enter) or takes it back (Esc). It runs `join`"));
+    t.add(windowToggle("draw-curve", "Draw Curve", "Add", WindowToggle::CurveTool, {"C"},
+                       "Click points on the plane through the 3D cursor (facing the view, or XY, XZ, YZ), snapping to points, "
+                       "edges and the grid; the curve through them shows as you go and Enter makes it (`curve-through`, or "
+                       "`curve-control` with Control points); Backspace takes the last point back, Esc cancels"));
     t.add({.name = "unjoin",
            .label = "Unjoin Edge",
            .menu = "Patch",

@@ -153,6 +153,7 @@ EditorSnapshot Editor::snapshot() const {
             .palette = palette_,
             .continuity = continuity_,
             .join = join_,
+            .curveTool = curve_,
             .usedMask = usedMask_,
             .windowSize = window_.windowSize(),
             .framebufferSize = window_.framebufferSize(),
@@ -286,6 +287,7 @@ void Editor::drawUi() {
     if (showHelp_) drawHelp(*this, showHelp_);
     if (palette_.open) palette_.draw(*this);
     drawJoinPanel();
+    drawCurvePanel();
     // Status line: the last message for 6 s, and a running export for as long as it runs.
     const ImGuiIO& io = ImGui::GetIO();
     std::string line = std::chrono::steady_clock::now() - statusTime_ < std::chrono::seconds(6) ? status_ : std::string();

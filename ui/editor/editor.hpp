@@ -67,6 +67,18 @@ struct JoinToolState {
     uint64_t version = 0;  // the session's version right after the preview ran
 };
 
+// The curve tool (C, ui/editor/curve_tool.cpp): click points on the construction plane through the
+// 3D cursor (snapping to points, edges and the grid); Enter makes the curve through them.
+struct CurveToolState {
+    bool on = false;
+    std::vector<Vec3> points;   // clicked so far
+    std::optional<Vec3> hover;  // where a click puts the next point
+    std::string snapped;        // what the hover point snapped to: "3D cursor", "point", "edge", "grid" or ""
+    int plane = 0;              // 0: the axis plane facing the view, 1 XY, 2 XZ, 3 YZ
+    int planeAxis = 2;          // the normal axis of the plane in use this frame
+    bool gridSnap = true, closed = false, controlPoints = false;
+};
+
 // What the editor holds and shows after a frame, read-only, for observers outside it (the test
 // trace, ui/editor/test_trace): valid until the next frame.
 struct EditorSnapshot {
@@ -78,6 +90,7 @@ struct EditorSnapshot {
     const CommandPalette& palette;
     const ContinuityWatch& continuity;
     const JoinToolState& join;
+    const CurveToolState& curveTool;
     const std::vector<bool>& usedMask;  // pool points some shown item uses
     std::array<int, 2> windowSize, framebufferSize;
     uint64_t frame = 0;
@@ -178,6 +191,12 @@ private:
     void endJoinPreview(bool keep);  // keep it, or undo it and go back to the second pick
     void drawJoinPanel();
     void drawJoinOverlay(const std::function<void(const Vec3&, const Vec3&, unsigned, float)>& line) const;
+    // curve_tool.cpp: draw a curve by clicking (C), its state a CurveToolState.
+    void setCurveTool(bool on);
+    void curveToolInput(double mx, double my, bool overUi);
+    void finishCurve();  // runs curve-through (or curve-control) with the clicked points
+    void drawCurvePanel();
+    void drawCurveOverlay(const std::function<void(const Vec3&, const Vec3&, unsigned, float)>& line) const;
     void drawPaneOverlays(const std::array<float, 4>& pane, bool active);  // selection, gizmo of one pane
 
     AppWindow& window_;
@@ -205,6 +224,7 @@ private:
     int hoveredGizmo_ = -1;
     std::array<float, 4> axisGizmoRect_{0, 0, 0, 0};  // where the axis gizmo went last frame (x, y, w, h; the test trace)
     JoinToolState join_;
+    CurveToolState curve_;
     bool grabAfterShortcut_ = false;  // the last shortcut was Shift+D: grab the copy
     double pressX_ = 0, pressY_ = 0;
     bool pressShift_ = false;

@@ -101,6 +101,9 @@ void Editor::toggle(WindowToggle which) {
         case WindowToggle::JoinTool:
             setJoinTool(!join_.on);
             break;
+        case WindowToggle::CurveTool:
+            setCurveTool(!curve_.on);
+            break;
         case WindowToggle::XRay:
             xray_ = !xray_;
             break;
@@ -124,6 +127,8 @@ bool Editor::toggled(WindowToggle which) const {
             return showGround_;
         case WindowToggle::JoinTool:
             return join_.on;
+        case WindowToggle::CurveTool:
+            return curve_.on;
         case WindowToggle::XRay:
             return xray_;
     }

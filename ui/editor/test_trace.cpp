@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/base/file_io.hpp"
+#include "core/model/camera_math.hpp"
 #include "core/select/picking.hpp"
 #include "core/solve/constraint_solver.hpp"
 #include "core/tess/tess_domain.hpp"
@@ -102,6 +103,12 @@ void TestTrace::write(const EditorSnapshot& e) {
                      {"hover", edgeJson(e.join.hover)},
                      {"preview", e.join.preview},
                      {"continuity", std::string(continuityName(e.join.continuity))}};
+    j["curveTool"] = {{"on", e.curveTool.on},
+                      {"points", e.curveTool.points.size()},
+                      {"plane", e.curveTool.planeAxis},
+                      {"snapped", e.curveTool.snapped},
+                      {"hover", e.curveTool.hover ? nlohmann::json{e.curveTool.hover->x, e.curveTool.hover->y, e.curveTool.hover->z}
+                                                  : nlohmann::json(nullptr)}};
     j["surfaces"] = doc.surfaces.size();
     j["curves"] = doc.curves.size();
     j["bezierTriangles"] = doc.triangles.size();
@@ -125,6 +132,12 @@ void TestTrace::write(const EditorSnapshot& e) {
             pts.push_back(nullptr);
     }
     j["points"] = std::move(pts);
+    // The interaction pane and its view-projection (column-major): tests place world points on screen.
+    const ViewMatrices vm = viewMatrices(e.session.camera, double(std::max(pane[2], 1.0f)) / double(std::max(pane[3], 1.0f)));
+    j["pane"] = pane;
+    j["viewProj"] = nlohmann::json::array();
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) j["viewProj"].push_back(vm.viewProj[c][r]);
     nlohmann::json world = nlohmann::json::array();
     for (const Vec3& p : doc.points) world.push_back({p.x, p.y, p.z});
     j["world"] = std::move(world);

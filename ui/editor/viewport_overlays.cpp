@@ -101,6 +101,7 @@ void Editor::drawPaneOverlays(const std::array<float, 4>& pane, bool active) {
     };
 
     drawJoinOverlay(line);
+    drawCurveOverlay(line);
 
     // Joins out of their tolerances (the Continuity panel's red rows), live while dragging: with the
     // Boundaries overlay, which colours joins by kind, these stand out thick in orange.

@@ -1,6 +1,6 @@
 // Surfaces from curves (left panel, issue 39): the selected curve's constructions (revolve about
-// X, Y or Z through the 3D cursor by an angle, extrude along an axis, loft through a list of
-// sections collected from the selection) as buttons that run the commands of
+// X, Y or Z through the 3D cursor by an angle, extrude along an axis) and those of a list of curves
+// collected from the selection (loft, edge surface, sweep1, sweep2, network) as buttons that run the commands of
 // core/commands/commands_construct.cpp, and the selected patch's construction (its inputs, whether
 // they still fit, Bake).
 #include <imgui.h>
@@ -45,19 +45,35 @@ void SurfacesPanel::draw(PanelContext& ctx) {
     std::string d[3] = {"0", "0", "0"};
     d[axis_] = std::to_string(length_);
     commandButton(ctx, "Extrude", "extrude " + c + " " + d[0] + " " + d[1] + " " + d[2], "op.extrudeCurve");
-    if (ImGui::Button("Add section")) sections_.push_back(c);
-    tip("Add the selected curve to the loft's sections (in order)");
+    if (ImGui::Button("Add to list")) sections_.push_back(c);
+    tip("Add the selected curve to the list the buttons below build from, in order: loft sections, edge-surface sides, "
+        "sweep rails then the profile, network U curves then / then V curves");
     ImGui::EndDisabled();
-    std::string loft = "loft";
-    for (const std::string& w : sections_) loft += " " + w;
     ImGui::SameLine();
-    ImGui::BeginDisabled(sections_.size() < 2);
-    commandButton(ctx, "Loft", loft, "op.loft");
-    ImGui::EndDisabled();
+    if (ImGui::Button("/")) sections_.push_back("/");
+    tip("Between a network's U curves and its V curves");
+    std::string list;
+    for (const std::string& w : sections_) list += " " + w;
+    const size_t n = sections_.size();
+    const bool slash = std::find(sections_.begin(), sections_.end(), "/") != sections_.end();
+    const auto build = [&](const char* label, const std::string& name, bool ok, const char* trace) {
+        ImGui::BeginDisabled(!ok);
+        commandButton(ctx, label, name + list, trace);
+        ImGui::EndDisabled();
+    };
+    build("Loft", "loft", n >= 2 && !slash, "op.loft");
+    ImGui::SameLine();
+    build("Edge surface", "edge-surface", n >= 2 && n <= 4 && !slash, "op.edgeSurface");
+    ImGui::SameLine();
+    build("Sweep1", "sweep1", n == 2 && !slash, "op.sweep1");
+    ImGui::SameLine();
+    build("Sweep2", "sweep2", n == 3 && !slash, "op.sweep2");
+    ImGui::SameLine();
+    build("Network", "network", n >= 5 && slash, "op.network");
     if (!sections_.empty()) {
-        ImGui::SameLine();
         if (ImGui::SmallButton("Clear")) sections_.clear();
-        ImGui::TextWrapped("%s", loft.c_str());
+        ImGui::SameLine();
+        ImGui::TextWrapped("List:%s", list.c_str());
     }
     // The selected patch's construction.
     const int k = s.sel.patch >= 0 ? constructionOfPatch(doc, uint32_t(s.sel.patch)) : -1;

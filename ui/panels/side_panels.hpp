@@ -51,7 +51,7 @@ public:
 private:
     int axis_ = 2;
     float degrees_ = 360.0f, length_ = 1.0f;
-    std::vector<std::string> sections_;  // the loft's sections so far ("c0", ...)
+    std::vector<std::string> sections_;  // the curves listed so far ("c0", ..., "/" in a network)
 };
 
 class NetPanel {  // panel_net.cpp: net surfaces (create, rows/columns, closing, basis, conversion)
