@@ -182,10 +182,11 @@ void addConstructCommands(CommandTable& t) {
     t.add({.name = "loft",
            .label = "Loft",
            .menu = "Surface",
-           .usage = "C C ... [closed] [start=G0|G1] [end=G0|G1]",
+           .usage = "C C ... [closed] [start=G0|G1|G2] [end=G0|G1|G2]",
            .help = "A surface through the sections C (curves or patch edges, 2 or more, each of the same number of segments), "
                    "passing exactly through every one and sharing their points: C2 between them; `closed` goes back to the first; "
-                   "start=G1 / end=G1 leave a first or last section that is a patch edge along its patch's tangent (joined G1). "
+                   "start=G1|G2 / end=G1|G2 leave a first or last section that is a patch edge along its patch's tangent (G1), and "
+                   "with its curvature too (G2: the end span follows the edge, C1 at the next section); joined so. "
                    "Live while they are edited",
            .run = [](CommandContext& ctx) {
                std::vector<std::string> words = ctx.args;
@@ -200,8 +201,10 @@ void addConstructCommands(CommandTable& t) {
                        c.ends[e] = Continuity::C0;
                    else if (v == "G1")
                        c.ends[e] = Continuity::G1;
+                   else if (v == "G2")
+                       c.ends[e] = Continuity::G2;
                    else
-                       throw EditError(key + " takes G0 or G1, got '" + v + "'");
+                       throw EditError(key + " takes G0, G1 or G2, got '" + v + "'");
                    words.erase(it);
                }
                c.closed = !words.empty() && words.back() == "closed";

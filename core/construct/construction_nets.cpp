@@ -91,31 +91,59 @@ ConstructedNet loftNet(const Document& doc, const Construction& c) {
     net.cols = uint32_t(cols);
     net.closedU = sections[0].closed;
     net.closedV = c.closed;
-    // G1 ends: the surface leaves an edge section along its patch's tangent row, B1 - B0 = α (A0 - A1)
-    // (the join's own condition), so the column's end derivative is 3 w α (A0 - A1) / h.
-    std::array<std::vector<HPoint>, 2> tangent;
+    // G1 and G2 ends against an edge section (A0 the edge, A1, A2 the patch's rows inward): the
+    // join's own conditions with the stored α (β2 = 0),
+    //   G1: B1 = B0 + α (A0 - A1),   G2: also B2 = 2 B1 - B0 + α² (A2 - 2 A1 + A0).
+    // G1 clamps the column's end derivative (3 w α (A0 - A1) / h); G2 fixes the whole end span (its
+    // four points), and the spline through the other sections starts from that span's end
+    // derivative, so the surface is C1 (not C2) at the section next to a G2 end.
+    std::array<std::array<std::vector<HPoint>, 2>, 2> rows;  // [end][depth - 1]
     for (int e = 0; e < 2 && !c.closed; ++e)
         if (c.ends[size_t(e)] != Continuity::C0) {
             const CurveInput& in = c.inputs[e == 0 ? 0 : m - 1];
-            tangent[size_t(e)] = inputTangentRow(doc, in);
-            if (tangent[size_t(e)].empty())
+            rows[size_t(e)][0] = inputTangentRow(doc, in, 1);
+            rows[size_t(e)][1] = inputTangentRow(doc, in, 2);
+            if (rows[size_t(e)][0].empty())
                 throw EditError(std::string(e == 0 ? "start" : "end") + "=" + std::string(continuityName(c.ends[size_t(e)])) +
                                 " needs a patch edge as the " + (e == 0 ? "first" : "last") + " section; " + curveInputName(in) +
                                 " is a curve");
         }
+    const bool g2[2] = {!c.closed && c.ends[0] == Continuity::G2, !c.closed && c.ends[1] == Continuity::G2};
+    const size_t s0 = g2[0] ? 1 : 0, s1 = g2[1] ? m - 2 : m - 1;  // the sections the C2 spline runs through
+    if (g2[0] || g2[1])
+        if (m < 2 + size_t(g2[0]) + size_t(g2[1]) || s1 <= s0)
+            throw EditError("a loft with G2 at " + std::string(g2[0] && g2[1] ? "both ends" : "an end") + " needs " +
+                            std::to_string(2 + int(g2[0]) + int(g2[1])) + " sections or more (the end span is the edge's own)");
     std::vector<std::vector<HPoint>> columns(cols);
     for (size_t j = 0; j < cols; ++j) {
         std::vector<HPoint> q;
         for (const CurveShape& s : sections) q.push_back(s.points[j]);
         std::array<std::optional<HPoint>, 2> d;
+        std::array<std::array<HPoint, 2>, 2> span{};  // a G2 end span's inner points, from its section on
         for (int e = 0; e < 2; ++e) {
-            if (tangent[size_t(e)].empty()) continue;
+            if (rows[size_t(e)][0].empty()) continue;
             const HPoint& a0 = q[e == 0 ? 0 : m - 1];
-            const Vec3 away = euclidean(a0) - euclidean(tangent[size_t(e)][j]);
-            const double h = e == 0 ? t[1] - t[0] : t[m - 1] - t[m - 2];
-            d[size_t(e)] = HPoint((e == 0 ? 3.0 : -3.0) * a0.w * c.endAlpha[size_t(e)] * away / h, 0.0);
+            const Vec3 A0 = euclidean(a0), A1 = euclidean(rows[size_t(e)][0][j]);
+            const double alpha = c.endAlpha[size_t(e)], h = e == 0 ? t[1] - t[0] : t[m - 1] - t[m - 2];
+            if (!g2[e]) {
+                d[size_t(e)] = HPoint((e == 0 ? 3.0 : -3.0) * a0.w * alpha * (A0 - A1) / h, 0.0);
+                continue;
+            }
+            const Vec3 A2 = euclidean(rows[size_t(e)][1][j]);
+            const Vec3 b1 = A0 + alpha * (A0 - A1), b2 = 2.0 * b1 - A0 + alpha * alpha * (A2 - 2.0 * A1 + A0);
+            span[size_t(e)] = {homogeneous(b1, a0.w), homogeneous(b2, a0.w)};
+            // The spline beyond starts (or ends) with this span's derivative at its far section.
+            const HPoint& far = q[e == 0 ? 1 : m - 2];
+            d[size_t(e)] = (e == 0 ? 3.0 : -3.0) * (far - span[size_t(e)][1]) / h;
         }
-        columns[j] = splineThrough(q, t, c.closed, d[0], d[1]);
+        const std::vector<HPoint> inner(q.begin() + long(s0), q.begin() + long(s1) + 1);
+        const std::vector<double> ti(t.begin() + long(s0), t.begin() + long(s1) + 1);
+        std::vector<HPoint> col;
+        if (g2[0]) col = {q[0], span[0][0], span[0][1]};
+        const std::vector<HPoint> mid = splineThrough(inner, c.closed ? t : ti, c.closed, d[0], d[1]);
+        col.insert(col.end(), mid.begin(), mid.end());
+        if (g2[1]) col.insert(col.end(), {span[1][1], span[1][0], q[m - 1]});
+        columns[j] = std::move(col);
     }
     net.rows = uint32_t(columns[0].size());
     net.points.resize(size_t(net.rows) * net.cols);

@@ -79,11 +79,11 @@ CurveShape inputShape(const Document& doc, const CurveInput& in) {
     return s;
 }
 
-std::vector<HPoint> inputTangentRow(const Document& doc, const CurveInput& in) {
+std::vector<HPoint> inputTangentRow(const Document& doc, const CurveInput& in, int depth) {
     std::vector<HPoint> row;
     if (in.curve >= 0 || in.patch >= doc.patches.size()) return row;
     for (int k = 0; k < 4; ++k) {
-        const uint32_t i = doc.patches[in.patch].idx[size_t(edgeSlot(in.edge, k, 1))];
+        const uint32_t i = doc.patches[in.patch].idx[size_t(edgeSlot(in.edge, k, depth))];
         row.push_back(homogeneous(doc.points[i], pointWeight(doc, i)));
     }
     return row;

@@ -26,8 +26,9 @@ namespace pw {
 
 // The input as a Bézier chain: a curve's points, or a patch edge's four.
 CurveShape inputShape(const Document& doc, const CurveInput& in);
-// For a patch edge: the patch's tangent row next to it (homogeneous, along the edge); empty for a curve.
-std::vector<HPoint> inputTangentRow(const Document& doc, const CurveInput& in);
+// For a patch edge: the patch's row `depth` rows inward from it (1: the tangent row; homogeneous,
+// along the edge); empty for a curve.
+std::vector<HPoint> inputTangentRow(const Document& doc, const CurveInput& in, int depth = 1);
 
 // A made control net: rows x cols homogeneous points, row-major; a closed direction repeats its
 // first row (closedV) or column (closedU) at the end.

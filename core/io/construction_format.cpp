@@ -64,8 +64,8 @@ void readConstructions(const json_reader::Reader& r, const json& v, Document& do
         r.optional(o, path, "ends", [&](const json& x, const std::string& p) {
             const json& a = r.fixedArray(x, p, 2);
             for (size_t i = 0; i < 2; ++i) {
-                c.ends[i] = r.named<Continuity>(a[i], at(p, i), parseContinuity, "C0, G1");
-                if (c.ends[i] != Continuity::C0 && c.ends[i] != Continuity::G1) r.fail(at(p, i), "a loft's end is C0 (G0) or G1");
+                c.ends[i] = r.named<Continuity>(a[i], at(p, i), parseContinuity, "C0, G1, G2");
+                if (c.ends[i] == Continuity::C1 || c.ends[i] == Continuity::C2) r.fail(at(p, i), "a loft's end is C0 (G0), G1 or G2");
             }
         });
         r.optional(o, path, "end_alpha", [&](const json& x, const std::string& p) {
