@@ -162,4 +162,44 @@ Bounds computeBounds(const std::vector<Vec3>& points) {
 
 double modelSize(const Document& doc) { return std::max(computeBounds(doc.points).diagonal(), 1e-12); }
 
+std::vector<uint32_t> withCurveHandles(const Document& doc, std::vector<uint32_t> points) {
+    std::sort(points.begin(), points.end());
+    const size_t given = points.size();
+    const auto has = [&](uint32_t i) { return std::binary_search(points.begin(), points.begin() + long(given), i); };
+    // A curve on a patch's edge (Curve from edge) shares the patch's points: its anchors are the
+    // patch's corners and move alone, as they always have (surfaces made from curves share their
+    // inputs' points too; those curves keep their handles).
+    std::vector<bool> onPatch;
+    for (const BezierCurve& c : doc.curves) {
+        bool any = false;
+        for (size_t k = 0; k < c.idx.size() && !any; k += 3) any = has(c.idx[k]);
+        if (!any || c.hidden || !validCurveLength(c.idx.size())) continue;
+        if (onPatch.empty()) {
+            onPatch.assign(doc.points.size(), false);
+            std::vector<bool> made(doc.patches.size(), false);  // a surface from curves shares its inputs' points
+            for (const Construction& k : doc.constructions)
+                for (uint32_t p : k.patches)
+                    if (p < made.size()) made[p] = true;
+            for (size_t p = 0; p < doc.patches.size(); ++p)
+                if (!made[p])
+                    for (uint32_t i : doc.patches[p].idx) onPatch[i] = true;
+        }
+        bool shared = false;
+        for (uint32_t i : c.idx) shared = shared || (i < onPatch.size() && onPatch[i]);
+        if (shared) continue;
+        const size_t last = c.idx.size() - 1;
+        const bool closed = curveClosed(c);
+        for (size_t k = 0; k <= last; k += 3) {
+            if (!has(c.idx[k])) continue;
+            if (k > 0) points.push_back(c.idx[k - 1]);
+            if (k < last) points.push_back(c.idx[k + 1]);
+            if (closed && k == 0) points.push_back(c.idx[last - 1]);
+            if (closed && k == last) points.push_back(c.idx[1]);
+        }
+    }
+    std::sort(points.begin(), points.end());
+    points.erase(std::unique(points.begin(), points.end()), points.end());
+    return points;
+}
+
 }  // namespace pw

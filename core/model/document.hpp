@@ -292,6 +292,11 @@ struct Document {
     bool operator==(const Document&) const = default;
 };
 
+// The points with, for every on-curve point of a visible curve among them (a segment end), its
+// tangent handles on either side: moving an anchor moves its handles with it (Blender, Illustrator),
+// so the curve keeps its tangent there. Sorted, without repeats.
+std::vector<uint32_t> withCurveHandles(const Document& doc, std::vector<uint32_t> points);
+
 // Weights must be positive and finite; this bound keeps the homogeneous sums well inside a float.
 inline constexpr double kMaxWeight = 1e6;
 inline double pointWeight(const Document& doc, uint32_t i) { return i < doc.weights.size() ? doc.weights[i] : 1.0; }

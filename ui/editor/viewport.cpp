@@ -215,7 +215,9 @@ void Editor::viewportInput() {
 }
 
 void Editor::beginDrag(bool grab, TransformKind kind, int axis) {
-    TransformStart start{session_.selectedPoints(), session_.transformPivot(), kind, grab, session_.snap, session_.symmetry};
+    // An on-curve point carries its tangent handles (core/model/document.hpp: withCurveHandles).
+    TransformStart start{
+        withCurveHandles(doc_, session_.selectedPoints()), session_.transformPivot(), kind, grab, session_.snap, session_.symmetry};
     // A move started on a point carries that point (it is what snaps); G moves the pivot.
     if (kind == TransformKind::Move && !grab && hovered_ >= 0 && size_t(hovered_) < doc_.points.size())
         start.pivot = doc_.points[size_t(hovered_)];
