@@ -1,5 +1,8 @@
 #include "support.hpp"
 
+#include "core/eval/bezier_curve.hpp"
+#include "core/eval/rational_eval.hpp"
+
 #include <gtest/gtest.h>
 
 #include <stb_image.h>
@@ -15,6 +18,16 @@
 #include <stdexcept>
 
 namespace pw::test {
+
+Vec3 patchPointAt(const Document& doc, uint32_t p, double u, double v) {
+    return evaluateWindow(gatherWindow(doc, doc.patches.at(p).idx), Basis::Bezier, 0.5, u, v).p;
+}
+
+Vec3 curvePointAt(const Document& doc, const BezierCurve& c, size_t seg, double t) {
+    const std::array<uint32_t, 4> i = curveSegment(c, seg);
+    const std::array<double, 4> w{pointWeight(doc, i[0]), pointWeight(doc, i[1]), pointWeight(doc, i[2]), pointWeight(doc, i[3])};
+    return evaluateRationalCurve(curvePoints(doc, c, seg), w, t).p;
+}
 
 namespace {
 

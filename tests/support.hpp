@@ -40,6 +40,11 @@ public:
 // Runs `script` (';'-separated commands) on the session through the command table, as `patchwork edit` does.
 void runEditScript(EditSession& session, const std::string& script);
 
+// The point of Bézier patch p at (u, v), and of curve c at parameter t of segment `seg`, both
+// rational where weighted (tests of surfaces built from curves compare the two).
+Vec3 patchPointAt(const Document& doc, uint32_t p, double u, double v);
+Vec3 curvePointAt(const Document& doc, const BezierCurve& c, size_t seg, double t);
+
 // Runs the Khronos glTF validator (PATCHWORK_GLTF_VALIDATOR, one node process) on the files and
 // expects 0 errors and 0 warnings each; a missing validator or node is a failure, never a skip.
 void expectValidGltf(const std::vector<std::filesystem::path>& files);

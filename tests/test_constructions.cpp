@@ -24,16 +24,8 @@ using namespace pw;
 
 namespace {
 
-Vec3 surfaceAt(const Document& d, uint32_t p, double u, double v) {
-    return evaluateWindow(gatherWindow(d, d.patches[p].idx), Basis::Bezier, 0.5, u, v).p;
-}
-
-// Point of curve c at parameter t of segment s (rational where weighted).
-Vec3 curveAt(const Document& d, const BezierCurve& c, size_t s, double t) {
-    const std::array<uint32_t, 4> i = curveSegment(c, s);
-    const std::array<double, 4> w{pointWeight(d, i[0]), pointWeight(d, i[1]), pointWeight(d, i[2]), pointWeight(d, i[3])};
-    return evaluateRationalCurve(curvePoints(d, c, s), w, t).p;
-}
+Vec3 surfaceAt(const Document& d, uint32_t p, double u, double v) { return test::patchPointAt(d, p, u, v); }
+Vec3 curveAt(const Document& d, const BezierCurve& c, size_t s, double t) { return test::curvePointAt(d, c, s, t); }
 
 // The cubic B-spline with clamped uniform knots at parameter x in [0, spans], by de Boor.
 Vec3 deBoor(const std::vector<Vec3>& P, double x) {

@@ -15,15 +15,8 @@ using namespace pw;
 
 namespace {
 
-Vec3 surfaceAt(const Document& d, uint32_t p, double u, double v) {
-    return evaluateWindow(gatherWindow(d, d.patches[p].idx), Basis::Bezier, 0.5, u, v).p;
-}
-
-Vec3 curveAt(const Document& d, const BezierCurve& c, size_t s, double t) {
-    const std::array<uint32_t, 4> i = curveSegment(c, s);
-    const std::array<double, 4> w{pointWeight(d, i[0]), pointWeight(d, i[1]), pointWeight(d, i[2]), pointWeight(d, i[3])};
-    return evaluateRationalCurve(curvePoints(d, c, s), w, t).p;
-}
+Vec3 surfaceAt(const Document& d, uint32_t p, double u, double v) { return test::patchPointAt(d, p, u, v); }
+Vec3 curveAt(const Document& d, const BezierCurve& c, size_t s, double t) { return test::curvePointAt(d, c, s, t); }
 
 // 3 U curves along X (at y = 0, 2, 4) and 3 V curves along Y (x = 0, 2, 4), the V curves drawn
 // backwards and the middle one through a raised point: a 2 x 2 network.
@@ -153,6 +146,27 @@ TEST(Loft, G1EndsLeaveAPatchEdgeAlongItsTangent) {
     test::runEditScript(s, "select patch 0; rotate X 15");
     EXPECT_TRUE(s.doc.constructions[0].error.empty()) << s.doc.constructions[0].error;
     EXPECT_LE(maxConstraintResidual(s.doc), 1e-9 * modelSize(s.doc));
+    // G2: a third section; the join holds curvature too, also after the patch moves.
+    EditSession g2;
+    test::runEditScript(g2, "add-patch");
+    const auto across = [&](double lift, double ahead2) {
+        std::string w = "curve-control";
+        for (double f : {0.0, 1 / 3.0, 2 / 3.0, 1.0})
+            w += " " + pt(glm::mix(e0, e3, f) + ahead2 * ahead + (lift + (f > 0 && f < 1 ? 0.3 : 0.0)) * up);
+        return w;
+    };
+    test::runEditScript(g2, across(1.0, 1.0) + "; " + across(1.5, 2.0));
+    EXPECT_THROW(test::runEditScript(g2, "loft 0:v1 c0 start=G2"), std::exception);  // 2 sections: the end span is all there is
+    test::runEditScript(g2, "loft 0:v1 c0 c1 start=G2");
+    ASSERT_EQ(g2.doc.joins.size(), 2u);  // to the patch, and between the loft's two rows
+    EXPECT_EQ(g2.doc.joins[1].patchA, 0u);
+    EXPECT_EQ(g2.doc.joins[1].continuity, Continuity::G2);
+    EXPECT_LE(maxConstraintResidual(g2.doc), 1e-9 * modelSize(g2.doc));
+    test::runEditScript(g2, "select patch 0; rotate X 10");
+    EXPECT_TRUE(g2.doc.constructions[0].error.empty()) << g2.doc.constructions[0].error;
+    EXPECT_LE(maxConstraintResidual(g2.doc), 1e-9 * modelSize(g2.doc));
+    // The file keeps the ends.
+    EXPECT_EQ(parseDocument(serializeDocument(g2.doc), "l.patchwork"), g2.doc);
     // start=G1 on a curve section is refused.
     EditSession bad;
     test::runEditScript(bad, "add-circle 1; cursor 0 0 1; add-circle 1");
@@ -190,4 +204,19 @@ TEST(CurvePoints, InsertKeepsTheShapeAndRemoveUndoesIt) {
         EXPECT_THROW(test::runEditScript(s, bad), std::exception) << bad;
         EXPECT_EQ(s.doc, now) << bad;
     }
+}
+
+TEST(CurvePoints, AnAnchorCarriesItsHandles) {
+    EditSession s;
+    test::runEditScript(s, "curve-through 0,0,0 1,1,0 3,0,1 4,2,0; add-circle 1; add-patch; select patch 0; curve-from-edge");
+    const std::vector<uint32_t>& c = s.doc.curves[0].idx;
+    EXPECT_EQ(withCurveHandles(s.doc, {c[3]}), (std::vector<uint32_t>{c[2], c[3], c[4]}));
+    EXPECT_EQ(withCurveHandles(s.doc, {c[0]}), (std::vector<uint32_t>{c[0], c[1]}));
+    EXPECT_EQ(withCurveHandles(s.doc, {c[4]}), (std::vector<uint32_t>{c[4]}));  // a handle moves alone
+    const std::vector<uint32_t>& ring = s.doc.curves[1].idx;                    // closed: the start has a handle on each side
+    EXPECT_EQ(withCurveHandles(s.doc, {ring[0]}), (std::vector<uint32_t>{ring[0], ring[1], ring[11]}));
+    // A curve on a patch's edge shares the patch's points: its corners move alone.
+    ASSERT_EQ(s.doc.curves.size(), 3u);
+    const uint32_t corner = s.doc.curves[2].idx[0];
+    EXPECT_EQ(withCurveHandles(s.doc, {corner}), (std::vector<uint32_t>{corner}));
 }

@@ -288,6 +288,7 @@ void Editor::drawUi() {
     if (palette_.open) palette_.draw(*this);
     drawJoinPanel();
     drawCurvePanel();
+    updateConstructionPreview();
     // Status line: the last message for 6 s, and a running export for as long as it runs.
     const ImGuiIO& io = ImGui::GetIO();
     std::string line = std::chrono::steady_clock::now() - statusTime_ < std::chrono::seconds(6) ? status_ : std::string();

@@ -132,7 +132,8 @@ private:
     CommandHost& host() override { return *this; }
     void runCommand(const std::vector<std::string>& words, bool guarded = true) override;
     void previewCommand(const std::vector<std::string>& words) override;
-    void documentChanged(bool topology) override;  // re-upload
+    void previewConstruction(const std::vector<std::string>& words) override;  // construction_preview.cpp
+    void documentChanged(bool topology) override;                              // re-upload
     void settingsChanged() override { ++docVersion_; }
     uint64_t documentVersion() const override { return docVersion_; }
     void showError(const std::string& message) override;
@@ -197,6 +198,9 @@ private:
     void finishCurve();  // runs curve-through (or curve-control) with the clicked points
     void drawCurvePanel();
     void drawCurveOverlay(const std::function<void(const Vec3&, const Vec3&, unsigned, float)>& line) const;
+    // construction_preview.cpp: the wireframe of what a Surfaces button would make.
+    void updateConstructionPreview();  // once a frame, after the panels asked
+    void drawConstructionPreview(const std::function<void(const Vec3&, const Vec3&, unsigned, float)>& line) const;
     void drawPaneOverlays(const std::array<float, 4>& pane, bool active);  // selection, gizmo of one pane
 
     AppWindow& window_;
@@ -225,6 +229,14 @@ private:
     std::array<float, 4> axisGizmoRect_{0, 0, 0, 0};  // where the axis gizmo went last frame (x, y, w, h; the test trace)
     JoinToolState join_;
     CurveToolState curve_;
+    // The construction preview: the words asked this frame, and the last ones made with the
+    // document version they were made on and the patches they would add (in a scratch document).
+    struct ConstructionPreview {
+        std::vector<std::string> asked, shown;
+        uint64_t version = 0;
+        std::unique_ptr<Document> doc;
+        size_t firstPatch = 0;
+    } preview_;
     bool grabAfterShortcut_ = false;  // the last shortcut was Shift+D: grab the copy
     double pressX_ = 0, pressY_ = 0;
     bool pressShift_ = false;

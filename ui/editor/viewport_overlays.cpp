@@ -102,6 +102,7 @@ void Editor::drawPaneOverlays(const std::array<float, 4>& pane, bool active) {
 
     drawJoinOverlay(line);
     drawCurveOverlay(line);
+    drawConstructionPreview(line);
 
     // Joins out of their tolerances (the Continuity panel's red rows), live while dragging: with the
     // Boundaries overlay, which colours joins by kind, these stand out thick in orange.

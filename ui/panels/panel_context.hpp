@@ -50,6 +50,9 @@ public:
     // A previewable command (CommandContext::preview) while a slider moves: the document changes,
     // no undo step is recorded; errors are left to the runCommand that follows on release.
     virtual void previewCommand(const std::vector<std::string>& words) = 0;
+    // A construction command (revolve c0 Z 270, loft c0 c1, ...) shown as a wireframe in the view
+    // for this frame only, the document untouched: what the button under the mouse would make.
+    virtual void previewConstruction(const std::vector<std::string>& words) { (void)words; }
     virtual void documentChanged(bool topology) = 0;  // session().doc was edited: upload it
     virtual void settingsChanged() = 0;               // tessellation or display settings (they travel in the render options)
     virtual uint64_t documentVersion() const = 0;     // bumped by both

@@ -2,7 +2,8 @@
 // X, Y or Z through the 3D cursor by an angle, extrude along an axis) and those of a list of curves
 // collected from the selection (loft, edge surface, sweep1, sweep2, network) as buttons that run the commands of
 // core/commands/commands_construct.cpp, and the selected patch's construction (its inputs, whether
-// they still fit, Bake).
+// they still fit, Bake). While the mouse is over a button (or the angle slider moves) the view shows
+// what it would make (Editor's construction preview).
 #include <imgui.h>
 
 #include <algorithm>
@@ -29,6 +30,11 @@ void SurfacesPanel::draw(PanelContext& ctx) {
     else
         ImGui::Text("Curve %s: %zu segment%s%s", c.c_str(), curveSegmentCount(doc.curves[size_t(curve)]),
                     curveSegmentCount(doc.curves[size_t(curve)]) == 1 ? "" : "s", curveClosed(doc.curves[size_t(curve)]) ? ", closed" : "");
+    // A button that runs its command, and while the mouse is over it shows what it would make.
+    const auto button = [&](const char* label, const std::string& line, const char* trace) {
+        commandButton(ctx, label, line, trace);
+        if (ImGui::IsItemHovered()) ctx.previewConstruction(splitCommandWords(line));  // (disabled: not hovered)
+    };
     ImGui::BeginDisabled(curve < 0);
     ImGui::SetNextItemWidth(50 * ctx.uiScale());
     ImGui::Combo("##axis", &axis_, kAxes, 3);
@@ -36,7 +42,9 @@ void SurfacesPanel::draw(PanelContext& ctx) {
     ImGui::SameLine();
     ImGui::SetNextItemWidth(90 * ctx.uiScale());
     ImGui::SliderFloat("Angle", &degrees_, 1.0f, 360.0f, "%.0f°");
-    commandButton(ctx, "Revolve", "revolve " + c + " " + kAxes[axis_] + " " + std::to_string(degrees_), "op.revolve");
+    const std::string revolve = "revolve " + c + " " + kAxes[axis_] + " " + std::to_string(degrees_);
+    if (ImGui::IsItemActive() && curve >= 0) ctx.previewConstruction(splitCommandWords(revolve));
+    button("Revolve", revolve, "op.revolve");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(70 * ctx.uiScale());
     ImGui::InputFloat("##len", &length_, 0.0f, 0.0f, "%.3g");
@@ -44,7 +52,7 @@ void SurfacesPanel::draw(PanelContext& ctx) {
     ImGui::SameLine();
     std::string d[3] = {"0", "0", "0"};
     d[axis_] = std::to_string(length_);
-    commandButton(ctx, "Extrude", "extrude " + c + " " + d[0] + " " + d[1] + " " + d[2], "op.extrudeCurve");
+    button("Extrude", "extrude " + c + " " + d[0] + " " + d[1] + " " + d[2], "op.extrudeCurve");
     if (ImGui::Button("Add to list")) sections_.push_back(c);
     tip("Add the selected curve to the list the buttons below build from, in order: loft sections, edge-surface sides, "
         "sweep rails then the profile, network U curves then / then V curves");
@@ -58,7 +66,7 @@ void SurfacesPanel::draw(PanelContext& ctx) {
     const bool slash = std::find(sections_.begin(), sections_.end(), "/") != sections_.end();
     const auto build = [&](const char* label, const std::string& name, bool ok, const char* trace) {
         ImGui::BeginDisabled(!ok);
-        commandButton(ctx, label, name + list, trace);
+        button(label, name + list, trace);
         ImGui::EndDisabled();
     };
     build("Loft", "loft", n >= 2 && !slash, "op.loft");

@@ -1,0 +1,61 @@
+// The live preview of the Surfaces panel (issue 39): while the mouse is over Revolve, Extrude, Loft,
+// Edge surface, Sweep1, Sweep2 or Network (or the angle slider moves), the surface that button
+// would make is drawn as a wireframe over the view: the command runs on a scratch copy of the
+// session, so the preview is exactly what the click makes, and the document, its undo history and
+// the status line are untouched. It is made again only when the words or the document change.
+#include <imgui.h>
+
+#include "core/select/edge_pick.hpp"
+#include "ui/editor/editor.hpp"
+
+namespace pw::ui {
+
+namespace {
+// Runs commands without a window: nothing written, no messages.
+class SilentHost final : public CommandHost {
+public:
+    void write(const Document&, const std::string&) override {}
+};
+}  // namespace
+
+void Editor::previewConstruction(const std::vector<std::string>& words) { preview_.asked = words; }
+
+void Editor::updateConstructionPreview() {
+    std::vector<std::string> asked = std::exchange(preview_.asked, {});
+    if (asked.empty()) {
+        if (preview_.doc) wake();  // one more frame without it
+        preview_.doc.reset();
+        preview_.shown.clear();
+        return;
+    }
+    if (asked == preview_.shown && preview_.version == docVersion_) return;
+    preview_.shown = asked;
+    preview_.version = docVersion_;
+    preview_.doc.reset();
+    EditSession scratch;
+    scratch.reset(doc_, "");
+    scratch.sel = sel_;
+    scratch.cursor = session_.cursor;
+    scratch.camera = cam_;
+    SilentHost host;
+    try {
+        commands_.run(scratch, host, asked);
+    } catch (const std::exception&) {
+        return;  // nothing to show; the click reports why
+    }
+    preview_.firstPatch = doc_.patches.size();
+    preview_.doc = std::make_unique<Document>(std::move(scratch.doc));
+    wake();
+}
+
+void Editor::drawConstructionPreview(const std::function<void(const Vec3&, const Vec3&, unsigned, float)>& line) const {
+    if (!preview_.doc) return;
+    const Document& d = *preview_.doc;
+    for (size_t p = preview_.firstPatch; p < d.patches.size(); ++p)
+        for (Edge e : {Edge::U0, Edge::V0, Edge::U1, Edge::V1}) {
+            const std::vector<Vec3> c = boundaryCurve(d, uint32_t(p), e, 12);
+            for (size_t k = 0; k + 1 < c.size(); ++k) line(c[k], c[k + 1], IM_COL32(120, 255, 160, 200), 1.5f);
+        }
+}
+
+}  // namespace pw::ui
