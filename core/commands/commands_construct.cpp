@@ -5,6 +5,7 @@
 
 #include "core/base/errors.hpp"
 #include "core/commands/command_table.hpp"
+#include "core/construct/construction_nets.hpp"
 #include "core/construct/constructions.hpp"
 #include "core/construct/curve_edit.hpp"
 #include "core/construct/curves.hpp"
@@ -247,15 +248,28 @@ void addConstructCommands(CommandTable& t) {
     t.add({.name = "sweep1",
            .label = "Sweep Along One Rail",
            .menu = "Surface",
-           .usage = "RAIL PROFILE",
+           .usage = "RAIL PROFILE [TOL]",
            .help = "Carry the profile (a curve or patch edge) along the rail, turning with it (rotation-minimising frames; a closed "
                    "rail's twist taken back evenly): exactly the moved profile at every segment end of the rail, the exact "
-                   "translational sweep on a straight rail. Live while either is edited",
+                   "translational sweep on a straight rail, and within TOL of the exact sweep in between (default 1e-4 of the "
+                   "profile's size; the rail's segments are split as often as that takes, up to 16 pieces). Live while either is edited",
            .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 2, 2);
+               expectArgs(ctx, 2, 3);
                Construction c;
                c.kind = ConstructionKind::Sweep1;
                c.inputs = inputs(ctx, 0, 2);
+               const Document& d = ctx.session.doc;
+               double tol = 0.0;
+               if (ctx.args.size() == 3) {
+                   tol = commandNumber(ctx.args[2], "TOL");
+                   if (!(tol > 0.0)) throw EditError("TOL must be positive, got " + ctx.args[2]);
+               } else {  // 1e-4 of the profile's size about the rail's start
+                   const CurveShape rail = inputShape(d, c.inputs[0]), profile = inputShape(d, c.inputs[1]);
+                   double size = 0.0;
+                   for (const HPoint& h : profile.points) size = std::max(size, glm::length(euclidean(h) - euclidean(rail.points[0])));
+                   tol = 1e-4 * std::max(size, 1e-12);
+               }
+               c.split = sweep1Pieces(d, c, tol);
                construct(ctx, std::move(c), "Sweep " + ctx.args[1] + " along " + ctx.args[0]);
            }});
     t.add({.name = "sweep2",

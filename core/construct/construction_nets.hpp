@@ -15,7 +15,12 @@ ConstructedNet revolveNet(const Document& doc, const Construction& c);
 ConstructedNet extrudeNet(const Document& doc, const Construction& c);
 ConstructedNet loftNet(const Document& doc, const Construction& c);
 ConstructedNet edgeSurfaceNet(const Document& doc, const Construction& c);
+// sweep1's rail is split into c.split pieces a segment (at least 1) for the frames to sit on.
 ConstructedNet sweep1Net(const Document& doc, const Construction& c);
+// The fewest pieces a rail segment (1, 2, 4, ... up to kMaxSweepPieces) for which sweep1 stays
+// within `tolerance` of the exact sweep (the profile in the rotation-minimising frame) at every
+// segment's middle.
+uint32_t sweep1Pieces(const Document& doc, Construction c, double tolerance);
 ConstructedNet sweep2Net(const Document& doc, const Construction& c);
 ConstructedNet networkNet(const Document& doc, const Construction& c);
 

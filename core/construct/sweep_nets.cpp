@@ -9,13 +9,44 @@
 
 namespace pw {
 
+namespace {
+
+// The rail with every segment split into `pieces` equal parameter pieces (de Casteljau, homogeneous):
+// the same curve, more control points for the sweep's frames to sit on.
+CurveShape subdivided(const CurveShape& rail, uint32_t pieces) {
+    if (pieces <= 1) return rail;
+    CurveShape out;
+    out.closed = rail.closed;
+    out.points.push_back(rail.points.front());
+    for (size_t s = 0; s < rail.segments(); ++s) {
+        std::array<HPoint, 4> q{rail.points[3 * s], rail.points[3 * s + 1], rail.points[3 * s + 2], rail.points[3 * s + 3]};
+        for (uint32_t k = pieces; k > 1; --k) {  // split off the first 1/k of what is left
+            const double f = 1.0 / double(k);
+            const HPoint a = glm::mix(q[0], q[1], f), b = glm::mix(q[1], q[2], f), d = glm::mix(q[2], q[3], f);
+            const HPoint ab = glm::mix(a, b, f), bd = glm::mix(b, d, f), m = glm::mix(ab, bd, f);
+            out.points.insert(out.points.end(), {a, ab, m});
+            q = {m, bd, d, q[3]};
+        }
+        out.points.insert(out.points.end(), {q[1], q[2], q[3]});
+    }
+    return out;
+}
+
+struct Sweep1 {
+    ConstructedNet net;
+    double deviation = 0.0;  // largest distance between the net and the exact sweep at mid-segments
+};
+
 // Sweep1: the profile carried along the rail by rotation-minimising frames (double reflection,
-// Wang et al. 2008) sampled densely along the rail; net row i is the profile in frame i placed at
-// rail control point i, so at every segment end of the rail (rows 3s) the net's row is exactly the
-// profile moved with its frame, and a straight rail gives the exact translational sweep.
-ConstructedNet sweep1Net(const Document& doc, const Construction& c) {
+// Wang et al. 2008) sampled densely along the rail. At every segment end of the rail (rows 3s) the
+// net's row is exactly the profile moved with its frame; in between each profile point follows
+// the Hermite cubic of its exact path (so a straight rail gives the exact translational sweep, and
+// the error shrinks as h^4 when segments are split). `measure` compares the net with the exact
+// sweep at every segment's middle (the iso-curve's control points against the profile there).
+Sweep1 sweep1(const Document& doc, const Construction& c, bool measure) {
     if (c.inputs.size() != 2) throw EditError("sweep1 takes a rail and a profile");
-    const CurveShape rail = inputShape(doc, c.inputs[0]), profile = inputShape(doc, c.inputs[1]);
+    const CurveShape rail = subdivided(inputShape(doc, c.inputs[0]), std::max<uint32_t>(1, c.split));
+    const CurveShape profile = inputShape(doc, c.inputs[1]);
     const size_t rows = rail.points.size(), segs = rail.segments();
     constexpr int kSub = 8;              // frame steps per third of a segment
     const auto railAt = [&](double s) {  // s in [0, segs]: position and unit tangent
@@ -32,7 +63,9 @@ ConstructedNet sweep1Net(const Document& doc, const Construction& c) {
     Vec3 r = glm::cross(t, std::abs(t.z) < 0.9 ? Vec3(0, 0, 1) : Vec3(1, 0, 0));
     r = glm::normalize(r);
     const Vec3 r0 = r, b0 = glm::cross(t0, r0), x0 = x;
-    std::vector<std::array<Vec3, 3>> frames{{t, r, glm::cross(t, r)}};  // one per rail control point
+    using Frame = std::array<Vec3, 3>;
+    std::vector<Frame> frames{{t, r, glm::cross(t, r)}};  // one per rail control point
+    std::vector<std::pair<Vec3, Frame>> mids;             // the rail point and frame at each segment's middle
     for (size_t i = 1; i < rows; ++i)
         for (int k = 1; k <= kSub; ++k) {
             const auto [x1, t1] = railAt((double(i - 1) + double(k) / kSub) / 3.0);
@@ -47,33 +80,80 @@ ConstructedNet sweep1Net(const Document& doc, const Construction& c) {
             r = glm::normalize(r - glm::dot(r, t1) * t1);
             x = x1, t = t1;
             if (k == kSub) frames.push_back({t, r, glm::cross(t, r)});
+            if (measure && (i - 1) % 3 == 1 && k == kSub / 2) mids.push_back({x, {t, r, glm::cross(t, r)}});
         }
-    if (rail.closed) {  // the frames turn by some angle around the loop: take it back evenly
-        const std::array<Vec3, 3>& e = frames.back();
+    double twist = 0.0;  // a closed rail's frames turn back by this angle per segment
+    if (rail.closed) {   // the frames turn by some angle around the loop: take it back evenly
+        const Frame& e = frames.back();
         const double phi = std::atan2(glm::dot(glm::cross(e[1], r0), t0), glm::dot(e[1], r0));
-        for (size_t i = 0; i < rows; ++i) {
-            const double a = phi * double(i) / double(rows - 1), ca = std::cos(a), sa = std::sin(a);
-            std::array<Vec3, 3>& f = frames[i];
+        twist = phi * 3.0 / double(rows - 1);
+        const auto turn = [&](Frame& f, double at) {
+            const double a = phi * at / double(rows - 1), ca = std::cos(a), sa = std::sin(a);
             const Vec3 rr = ca * f[1] + sa * f[2];
             f = {f[0], rr, glm::cross(f[0], rr)};
-        }
+        };
+        for (size_t i = 0; i < rows; ++i) turn(frames[i], double(i));
+        for (size_t s = 0; s < mids.size(); ++s) turn(mids[s].second, 3.0 * double(s) + 1.5);
     }
-    ConstructedNet net;
+    Sweep1 out;
+    ConstructedNet& net = out.net;
     net.rows = uint32_t(rows);
     net.cols = uint32_t(profile.points.size());
     net.closedU = profile.closed;
     net.closedV = rail.closed;
     net.points.resize(size_t(net.rows) * net.cols);
+    std::vector<Vec3> local(net.cols);  // the profile's points in the first frame
     for (uint32_t j = 0; j < net.cols; ++j) {
         const Vec3 d = euclidean(profile.points[j]) - x0;
-        const double a = glm::dot(d, t0), b = glm::dot(d, r0), cc = glm::dot(d, b0);
-        for (uint32_t i = 0; i < net.rows; ++i) {
-            const std::array<Vec3, 3>& f = frames[i];
-            net.points[size_t(i) * net.cols + j] =
-                homogeneous(euclidean(rail.points[i]) + a * f[0] + b * f[1] + cc * f[2], profile.points[j].w);
-        }
+        local[j] = Vec3(glm::dot(d, t0), glm::dot(d, r0), glm::dot(d, b0));
     }
-    return net;
+    // Rows 3s: the profile in the frame at segment end s, exact. Rows between: each profile point's
+    // path as the cubic Hermite of the exact sweep at the segment's ends, P ± P'/3, where P' = C' +
+    // x T' + y R' + z B' and the rotation-minimising frame turns only about the normal plane:
+    // T' = (C'' - (C''·T) T) / |C'|, R' = -(R·T') T (+ the closed rail's twist), B' = -(B·T') T.
+    const auto place = [&](const Vec3& at, const Frame& f, const Vec3& l) { return at + l.x * f[0] + l.y * f[1] + l.z * f[2]; };
+    const auto hermite = [&](size_t seg, double at, size_t row, double sign) {  // row 3s (at = 0) or 3s + 3 (at = 1)
+        std::array<Vec3, 4> cp;
+        std::array<double, 4> w;
+        for (size_t a = 0; a < 4; ++a) cp[a] = euclidean(rail.points[3 * seg + a]), w[a] = rail.points[3 * seg + a].w;
+        const CurveJet jet = evaluateRationalCurve(cp, w, at);  // derivatives in this segment's parameter
+        const Frame& f = frames[row];
+        const double speed = glm::length(jet.d1);
+        const Vec3 dT = speed > 0.0 ? (jet.d2 - glm::dot(jet.d2, f[0]) * f[0]) / speed : Vec3(0.0);
+        const Vec3 dR = -glm::dot(f[1], dT) * f[0] + twist * f[2], dB = -glm::dot(f[2], dT) * f[0] - twist * f[1];
+        for (uint32_t j = 0; j < net.cols; ++j) {
+            const Vec3 p = place(jet.p, f, local[j]);
+            const Vec3 dp = jet.d1 + local[j].x * dT + local[j].y * dR + local[j].z * dB;
+            const double wj = profile.points[j].w;
+            net.points[row * net.cols + j] = homogeneous(p, wj);
+            net.points[size_t(int64_t(row) + int64_t(sign)) * net.cols + j] = homogeneous(p + sign * dp / 3.0, wj);
+        }
+    };
+    for (size_t seg = 0; seg < segs; ++seg) {
+        hermite(seg, 0.0, 3 * seg, 1.0);
+        hermite(seg, 1.0, 3 * seg + 3, -1.0);
+    }
+    for (size_t s = 0; s < mids.size(); ++s)
+        for (uint32_t j = 0; j < net.cols; ++j) {
+            std::array<HPoint, 4> q;
+            for (size_t a = 0; a < 4; ++a) q[a] = net.points[(3 * s + a) * net.cols + j];
+            const HPoint half = (q[0] + 3.0 * q[1] + 3.0 * q[2] + q[3]) / 8.0;  // the column at v = 1/2
+            const auto& [at, f] = mids[s];
+            const Vec3 exact = at + local[j].x * f[0] + local[j].y * f[1] + local[j].z * f[2];
+            out.deviation = std::max(out.deviation, glm::length(euclidean(half) - exact));
+        }
+    return out;
+}
+
+}  // namespace
+
+ConstructedNet sweep1Net(const Document& doc, const Construction& c) { return sweep1(doc, c, false).net; }
+
+uint32_t sweep1Pieces(const Document& doc, Construction c, double tolerance) {
+    for (uint32_t pieces = 1;; pieces *= 2) {
+        c.split = pieces;
+        if (pieces >= kMaxSweepPieces || sweep1(doc, c, true).deviation <= tolerance) return pieces;
+    }
 }
 
 // Sweep2: the profile between two rails. At rail control point i the profile is placed by the

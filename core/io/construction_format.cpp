@@ -24,6 +24,7 @@ json constructionsJson(const Document& doc) {
             o["end_alpha"] = c.endAlpha;
         }
         if (c.kind == ConstructionKind::Network) o["u_curves"] = c.split;
+        if (c.kind == ConstructionKind::Sweep1 && c.split > 1) o["rail_pieces"] = c.split;
         o["rows"] = c.rows;
         o["cols"] = c.cols;
         o["grid"] = c.grid;
@@ -71,6 +72,10 @@ void readConstructions(const json_reader::Reader& r, const json& v, Document& do
         r.optional(o, path, "end_alpha", [&](const json& x, const std::string& p) {
             const json& a = r.fixedArray(x, p, 2);
             for (size_t i = 0; i < 2; ++i) c.endAlpha[i] = r.numberInRange(a[i], at(p, i), 1e-6, 1e6, false);
+        });
+        r.optional(o, path, "rail_pieces", [&](const json& x, const std::string& p) {
+            c.split = uint32_t(r.index(x, p, kMaxSweepPieces + 1, "pieces a rail segment"));
+            if (c.split < 1) r.fail(p, "a rail segment is at least 1 piece");
         });
         r.optional(o, path, "u_curves", [&](const json& x, const std::string& p) {
             c.split = uint32_t(r.index(x, p, c.inputs.size() - 1, "count of U curves"));

@@ -153,6 +153,7 @@ struct Join {
 
 // A surface built from curves (issue 39) that stays live: its patches are re-made from its inputs
 // whenever they change (core/construct/constructions.hpp), until `bake` detaches them.
+inline constexpr uint32_t kMaxSweepPieces = 16;
 enum class ConstructionKind : uint8_t { Revolve, Extrude, Loft, EdgeSurface, Sweep1, Sweep2, Network };
 // "revolve", "extrude", "loft", "edge-surface", "sweep1", "sweep2", "network"
 std::string_view constructionKindName(ConstructionKind k);
@@ -177,7 +178,9 @@ struct Construction {
     // or G1: the surface leaves the edge along the patch's tangent, scaled by endAlpha).
     std::array<Continuity, 2> ends{Continuity::C0, Continuity::C0};
     std::array<double, 2> endAlpha{1.0, 1.0};
-    uint32_t split = 0;  // network: the first `split` inputs run along u, the rest along v
+    // network: the first `split` inputs run along u, the rest along v; sweep1: the pieces each rail
+    // segment is split into (1 .. kMaxSweepPieces; 0 = 1) so the sweep stays within its tolerance.
+    uint32_t split = 0;
     // The made control net: rows x cols pool indices (row-major, Bézier, 3n + 1 each way; a closed
     // direction repeats its first row or column), and the patches that are its 4x4 windows.
     uint32_t rows = 0, cols = 0;
