@@ -23,14 +23,33 @@ public:
     void write(const pw::Document&, const std::string&) override {}
 };
 
-// A vase: a 25-segment profile through 26 points revolved 360° (25 × 4 = 100 patches), or a loft
-// through 26 circles (25 spans × 4 quarters = 100 patches).
-pw::Document build(bool loft) {
+enum class Kind { Revolve, Loft, Network };
+
+// A vase: a 25-segment profile through 26 points revolved 360° (25 × 4 = 100 patches), a loft
+// through 26 circles (25 spans × 4 quarters = 100 patches), or a shell through an 11 × 11 curve
+// network (10 × 10 cells = 100 patches).
+pw::Document build(Kind kind) {
     pw::EditSession s;
     NoHost host;
     const pw::CommandTable table = pw::makeCommandTable();
     std::string script;
-    if (loft) {
+    const auto height = [](int x, int y) { return std::to_string(0.5 * std::sin(0.6 * x) * std::cos(0.4 * y)); };
+    if (kind == Kind::Network) {
+        for (int y = 0; y <= 10; ++y) {
+            script += "curve-through";
+            for (int x = 0; x <= 10; ++x) script += " " + std::to_string(x) + "," + std::to_string(y) + "," + height(x, y);
+            script += "; ";
+        }
+        for (int x = 0; x <= 10; ++x) {
+            script += "curve-through";
+            for (int y = 0; y <= 10; ++y) script += " " + std::to_string(x) + "," + std::to_string(y) + "," + height(x, y);
+            script += "; ";
+        }
+        script += "network";
+        for (int c = 0; c <= 10; ++c) script += " c" + std::to_string(c);
+        script += " /";
+        for (int c = 11; c <= 21; ++c) script += " c" + std::to_string(c);
+    } else if (kind == Kind::Loft) {
         std::string sections;
         for (int i = 0; i <= 25; ++i) {
             script += "cursor 0 0 " + std::to_string(0.2 * i) + "; add-circle " + std::to_string(1.0 + 0.3 * std::sin(0.5 * i)) + "; ";
@@ -46,10 +65,12 @@ pw::Document build(bool loft) {
     return s.doc;
 }
 
-void runDrag(benchmark::State& state, bool loft, bool baked) {
-    pw::Document doc = build(loft);
+void runDrag(benchmark::State& state, Kind kind, bool baked) {
+    pw::Document doc = build(kind);
     if (doc.patches.size() != 100) return state.SkipWithError("expected 100 patches");
-    const uint32_t dragged = loft ? doc.curves[12].idx[0] : doc.curves[0].idx[37];  // mid-height
+    const bool loft = kind == Kind::Loft;
+    // Mid-height: a profile point, a whole section, or the network's middle crossing (both curves' point).
+    const uint32_t dragged = loft ? doc.curves[12].idx[0] : kind == Kind::Network ? doc.curves[5].idx[15] : doc.curves[0].idx[37];
     if (baked) doc.constructions.clear();
     pw::DragView view;
     view.width = 1280;
@@ -75,25 +96,31 @@ void runDrag(benchmark::State& state, bool loft, bool baked) {
     state.counters["uploaded/move"] = double(totalChanged) / double(std::max<int64_t>(state.iterations(), 1));
 }
 
-void BM_DragProfile_Revolve100(benchmark::State& state) { runDrag(state, false, false); }
+void BM_DragProfile_Revolve100(benchmark::State& state) { runDrag(state, Kind::Revolve, false); }
 BENCHMARK(BM_DragProfile_Revolve100)->Unit(benchmark::kMicrosecond);
-void BM_DragProfile_Revolve100_BakedFloor(benchmark::State& state) { runDrag(state, false, true); }
+void BM_DragProfile_Revolve100_BakedFloor(benchmark::State& state) { runDrag(state, Kind::Revolve, true); }
 BENCHMARK(BM_DragProfile_Revolve100_BakedFloor)->Unit(benchmark::kMicrosecond);
-void BM_DragSection_Loft100(benchmark::State& state) { runDrag(state, true, false); }
+void BM_DragSection_Loft100(benchmark::State& state) { runDrag(state, Kind::Loft, false); }
 BENCHMARK(BM_DragSection_Loft100)->Unit(benchmark::kMicrosecond);
-void BM_DragSection_Loft100_BakedFloor(benchmark::State& state) { runDrag(state, true, true); }
+void BM_DragSection_Loft100_BakedFloor(benchmark::State& state) { runDrag(state, Kind::Loft, true); }
 BENCHMARK(BM_DragSection_Loft100_BakedFloor)->Unit(benchmark::kMicrosecond);
+void BM_DragCrossing_Network100(benchmark::State& state) { runDrag(state, Kind::Network, false); }
+BENCHMARK(BM_DragCrossing_Network100)->Unit(benchmark::kMicrosecond);
+void BM_DragCrossing_Network100_BakedFloor(benchmark::State& state) { runDrag(state, Kind::Network, true); }
+BENCHMARK(BM_DragCrossing_Network100_BakedFloor)->Unit(benchmark::kMicrosecond);
 
-void runRerun(benchmark::State& state, bool loft) {
-    pw::Document doc = build(loft);
+void runRerun(benchmark::State& state, Kind kind) {
+    pw::Document doc = build(kind);
     for (auto _ : state) {
         const pw::RerunReport r = pw::rerunConstructions(doc);
         benchmark::DoNotOptimize(r.moved.data());
     }
 }
-void BM_Rerun_Revolve100(benchmark::State& state) { runRerun(state, false); }
+void BM_Rerun_Revolve100(benchmark::State& state) { runRerun(state, Kind::Revolve); }
 BENCHMARK(BM_Rerun_Revolve100)->Unit(benchmark::kMicrosecond);
-void BM_Rerun_Loft100(benchmark::State& state) { runRerun(state, true); }
+void BM_Rerun_Loft100(benchmark::State& state) { runRerun(state, Kind::Loft); }
 BENCHMARK(BM_Rerun_Loft100)->Unit(benchmark::kMicrosecond);
+void BM_Rerun_Network100(benchmark::State& state) { runRerun(state, Kind::Network); }
+BENCHMARK(BM_Rerun_Network100)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

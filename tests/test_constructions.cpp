@@ -287,6 +287,16 @@ TEST(Constructions, BadInputsAreRefusedAndChangeNothing) {
         {"loft c0 c0", "coincide"},
         {"bake k3", "does not exist"},
         {"bake", "select a patch"},
+        {"edge-surface c0", "2 to 4 arguments"},
+        {"edge-surface c0 c1 c0", "closed"},
+        {"sweep1 c0", "RAIL PROFILE"},
+        {"sweep1 c0 c1 -1", "TOL"},
+        {"sweep2 c0 c1 c0", "differ"},
+        {"network c0 c1", "/"},
+        {"loft c0 c1 start=G5", "G0, G1 or G2"},
+        {"curve-insert c0 0", "inside a segment"},
+        {"curve-remove c1 9", "on-curve points"},
+        {"draw-curve", "window"},
     };
     for (const auto& [line, why] : cases) {
         EditSession s;
