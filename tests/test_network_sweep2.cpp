@@ -3,6 +3,8 @@
 // reproduced, liveness through the commands, the file round trip and refused bad inputs.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/construct/constructions.hpp"
 #include "core/edit/edit_session.hpp"
 #include "core/eval/bezier_curve.hpp"
@@ -219,4 +221,23 @@ TEST(CurvePoints, AnAnchorCarriesItsHandles) {
     ASSERT_EQ(s.doc.curves.size(), 3u);
     const uint32_t corner = s.doc.curves[2].idx[0];
     EXPECT_EQ(withCurveHandles(s.doc, {corner}), (std::vector<uint32_t>{corner}));
+}
+
+TEST(CurvePoints, InsertingIntoACurveOnAPatchEdgeLeavesThePatch) {
+    EditSession s;
+    test::runEditScript(s, "add-patch; select patch 0; curve-from-edge");
+    const Net16 before = gatherNet(s.doc, s.doc.patches[0].idx);
+    test::runEditScript(s, "curve-insert c0 0.5");
+    EXPECT_EQ(curveSegmentCount(s.doc.curves[0]), 2u);
+    EXPECT_EQ(gatherNet(s.doc, s.doc.patches[0].idx), before);
+    // A merge of a point whose handles are retracted: a finite cubic, not a refusal.
+    EditSession r;
+    test::runEditScript(r, "curve-control 0,0,0 1,0,0 2,1,0 3,0,0 4,0,0");
+    const uint32_t joint = r.doc.curves[0].idx[3];
+    const Vec3 at = r.doc.points[joint];
+    r.doc.points[r.doc.curves[0].idx[2]] = at;  // both legs of the joint retracted onto it
+    r.doc.points[r.doc.curves[0].idx[4]] = at;
+    test::runEditScript(r, "curve-remove c0 1");
+    for (const uint32_t i : r.doc.curves[0].idx)
+        for (int a = 0; a < 3; ++a) EXPECT_TRUE(std::isfinite(r.doc.points[i][a]));
 }

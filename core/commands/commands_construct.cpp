@@ -114,7 +114,11 @@ void addConstructCommands(CommandTable& t) {
                expectArgs(ctx, 2, 2);
                const uint32_t c = curveWord(ctx);
                const double tt = commandNumber(ctx.args[1], "T");
-               ctx.session.apply("Insert curve point", [&](Document& d) { insertCurvePoint(d, c, tt); });
+               ctx.session.apply("Insert curve point", [&](Document& d) {
+                   insertCurvePoint(d, c, tt);
+                   compactPool(d);
+               });
+               ctx.session.sel.points.clear();  // the pool was renumbered
            }});
     t.add({.name = "curve-remove",
            .label = "Remove Curve Point",
@@ -251,8 +255,9 @@ void addConstructCommands(CommandTable& t) {
            .usage = "RAIL PROFILE [TOL]",
            .help = "Carry the profile (a curve or patch edge) along the rail, turning with it (rotation-minimising frames; a closed "
                    "rail's twist taken back evenly): exactly the moved profile at every segment end of the rail, the exact "
-                   "translational sweep on a straight rail, and within TOL of the exact sweep in between (default 1e-4 of the "
-                   "profile's size; the rail's segments are split as often as that takes, up to 16 pieces). Live while either is edited",
+                   "translational sweep on a straight rail, and within TOL of the exact sweep in between when made (default 1e-4 of "
+                   "the profile's size; the rail's segments are split as often as that takes, up to 16 pieces, and keep that "
+                   "count while the rail is edited). Live while either is edited",
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 2, 3);
                Construction c;

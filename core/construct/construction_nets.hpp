@@ -25,7 +25,9 @@ ConstructedNet sweep2Net(const Document& doc, const Construction& c);
 ConstructedNet networkNet(const Document& doc, const Construction& c);
 
 // A network's curves meet at their segment ends; makeNetworkCorners() lets each meeting be one pool
-// point (the U curve's), so that dragging it moves both curves and the network stays compatible.
+// point, so that dragging it moves both curves and the network stays compatible: the V curve takes
+// the U curve's point, or, where the V input is a patch edge, the U curve takes the edge's. Where
+// both are patch edges their points stay their patches' (the surface shares the U edge's).
 void makeNetworkCorners(Document& doc, const Construction& c);
 
 // "1 segment", "3 segments"

@@ -125,6 +125,9 @@ size_t addConstruction(Document& doc, Construction c, const std::string& name) {
         net = evaluateConstruction(doc, c);
     }
     const uint32_t wr = (net.rows - 1) / 3, wc = (net.cols - 1) / 3;
+    if (net.rows > limits::kMaxNetSide || net.cols > limits::kMaxNetSide)
+        throw EditError("the surface's net would be " + std::to_string(net.rows) + " x " + std::to_string(net.cols) + " points; " +
+                        std::to_string(limits::kMaxNetSide) + " a side at most");
     if (doc.points.size() + net.points.size() > limits::kMaxPoints || doc.patches.size() + size_t(wr) * wc > limits::kMaxPatches)
         throw EditError("the document is full (the surface needs " + std::to_string(size_t(wr) * wc) + " patches)");
     c.rows = net.rows, c.cols = net.cols;

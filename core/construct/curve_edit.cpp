@@ -1,5 +1,6 @@
 #include "core/construct/curve_edit.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -13,11 +14,6 @@ namespace pw {
 namespace {
 
 HPoint at(const Document& doc, uint32_t i) { return homogeneous(doc.points[i], pointWeight(doc, i)); }
-
-void put(Document& doc, uint32_t i, const HPoint& h) {
-    doc.points[i] = euclidean(h);
-    setPointWeight(doc, i, h.w);
-}
 
 uint32_t add(Document& doc, const HPoint& h) {
     doc.points.push_back(euclidean(h));
@@ -40,17 +36,17 @@ void insertCurvePoint(Document& doc, uint32_t c, double t) {
     if (!(t > 0.0 && t < double(n)) || f <= 1e-9 || f >= 1.0 - 1e-9)
         throw EditError("T must be inside a segment of c" + std::to_string(c) + ": between 0 and " + std::to_string(n) +
                         ", not at a whole number (a segment end)");
-    if (doc.points.size() + 3 > limits::kMaxPoints) throw EditError("the document is full");
+    if (doc.points.size() + 5 > limits::kMaxPoints) throw EditError("the document is full");
     const size_t s = size_t(seg);
     const std::array<uint32_t, 4> i = curveSegment(cv, s);
     const HPoint p0 = at(doc, i[0]), p1 = at(doc, i[1]), p2 = at(doc, i[2]), p3 = at(doc, i[3]);
     const HPoint a = glm::mix(p0, p1, f), b = glm::mix(p1, p2, f), d = glm::mix(p2, p3, f);
     const HPoint ab = glm::mix(a, b, f), bd = glm::mix(b, d, f), m = glm::mix(ab, bd, f);
-    // p0 a ab m bd d p3: the old inner points become a and ab; m, bd, d are new.
-    put(doc, i[1], a);
-    put(doc, i[2], ab);
-    const uint32_t im = add(doc, m), ibd = add(doc, bd), id = add(doc, d);
-    cv.idx.insert(cv.idx.begin() + long(3 * s + 3), {im, ibd, id});
+    // p0 a ab m bd d p3, all but the ends new points: the old inner ones may be another item's too
+    // (a patch edge the curve was made from, a surface built on the curve), which must not move.
+    const std::array<uint32_t, 5> made{add(doc, a), add(doc, ab), add(doc, m), add(doc, bd), add(doc, d)};
+    cv.idx.erase(cv.idx.begin() + long(3 * s + 1), cv.idx.begin() + long(3 * s + 3));
+    cv.idx.insert(cv.idx.begin() + long(3 * s + 1), made.begin(), made.end());
 }
 
 void removeCurvePoint(Document& doc, uint32_t c, size_t k) {
@@ -72,15 +68,26 @@ void removeCurvePoint(Document& doc, uint32_t c, size_t k) {
     // Where the point sits in the merged segment: a split at f leaves m - ab = f (bd - ab) and
     // bd - m = (1 - f) (bd - ab) on either side of it (homogeneous), so the two tangent legs give f
     // back exactly; for other joints it is the nearest such reading.
+    // A retracted handle (a leg of length 0) says nothing: then the chords of the two segments do.
     const double la = glm::length(a3 - at(doc, l[2])), lb = glm::length(at(doc, r[1]) - a3);
-    const double f = la + lb > 0.0 ? la / (la + lb) : 0.5;
+    const double ca = glm::length(a3 - a0), cb = glm::length(b3 - a3), scale = 1e-9 * (1.0 + glm::length(a3));
+    double f = 0.5;
+    if (la > scale && lb > scale)
+        f = la / (la + lb);
+    else if (ca + cb > 0.0)
+        f = std::clamp(ca / (ca + cb), 0.05, 0.95);
     // A split at f has a1 = mix(p0, p1, f) and b2 = mix(p2, p3, f): solve for p1 and p2.
     const HPoint p1 = a0 + (a1 - a0) / f, p2 = b3 + (b2 - b3) / (1.0 - f);
     if (!(p1.w > 0.0 && p2.w > 0.0)) throw EditError("the merged segment's weights would not be positive");
-    put(doc, l[1], p1);
-    put(doc, l[2], p2);
-    // The removed point and the right segment's inner points leave the chain.
-    cv.idx.erase(cv.idx.begin() + long(3 * k), cv.idx.begin() + long(3 * k + 3));
+    for (const HPoint& h : {p1, p2})
+        for (int a = 0; a < 3; ++a)
+            if (!std::isfinite(h[a] / h.w) || std::abs(h[a] / h.w) > limits::kMaxCoordinate)
+                throw EditError("the merged segment would reach beyond the coordinate limit of 1e9");
+    // a0 P1 P2 b3: new inner points (the old ones may be another item's too); the removed point and
+    // the inner points of both segments leave the chain.
+    const uint32_t i1 = add(doc, p1), i2 = add(doc, p2);
+    cv.idx.erase(cv.idx.begin() + long(3 * k - 2), cv.idx.begin() + long(3 * k + 3));
+    cv.idx.insert(cv.idx.begin() + long(3 * k - 2), {i1, i2});
 }
 
 }  // namespace pw

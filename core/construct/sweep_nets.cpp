@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/base/errors.hpp"
+#include "core/base/limits.hpp"
 #include "core/construct/construction_nets.hpp"
 #include "core/eval/rational_eval.hpp"
 #include "core/model/construction_refs.hpp"
@@ -150,9 +151,11 @@ Sweep1 sweep1(const Document& doc, const Construction& c, bool measure) {
 ConstructedNet sweep1Net(const Document& doc, const Construction& c) { return sweep1(doc, c, false).net; }
 
 uint32_t sweep1Pieces(const Document& doc, Construction c, double tolerance) {
+    const size_t segs = c.inputs.empty() ? 1 : std::max<size_t>(1, inputShape(doc, c.inputs[0]).segments());
     for (uint32_t pieces = 1;; pieces *= 2) {
         c.split = pieces;
-        if (pieces >= kMaxSweepPieces || sweep1(doc, c, true).deviation <= tolerance) return pieces;
+        const bool room = pieces < kMaxSweepPieces && 3 * segs * 2 * pieces + 1 <= limits::kMaxNetSide;
+        if (!room || sweep1(doc, c, true).deviation <= tolerance) return pieces;
     }
 }
 
@@ -173,6 +176,10 @@ ConstructedNet sweep2Net(const Document& doc, const Construction& c) {
     if (profile.closed) throw EditError("the profile " + np + " is closed; sweep2's profile runs from one rail to the other");
     const auto at = [](const CurveShape& s, size_t i) { return euclidean(s.points[i]); };
     const size_t rows = r1.points.size();
+    if (r1.closed && glm::dot(at(r1, 1) - at(r1, 0), at(r2, 1) - at(r2, 0)) < 0.0) {  // closed rails turning opposite ways
+        std::reverse(r2.points.begin(), r2.points.end());
+        std::reverse(i2.begin(), i2.end());
+    }
     if (!r1.closed && glm::length(at(r2, 0) - at(r1, 0)) + glm::length(at(r2, rows - 1) - at(r1, rows - 1)) >
                           glm::length(at(r2, rows - 1) - at(r1, 0)) + glm::length(at(r2, 0) - at(r1, rows - 1))) {
         std::reverse(r2.points.begin(), r2.points.end());
@@ -212,7 +219,8 @@ ConstructedNet sweep2Net(const Document& doc, const Construction& c) {
     if (!(plen > 1e-12 * (1.0 + glm::length(ps)))) throw EditError("the profile " + np + " ends where it starts; it must span the rails");
     const Vec3 f1 = chord / plen, t0 = frames[0].e2;
     Vec3 f2 = t0 - glm::dot(t0, f1) * f1;
-    f2 = glm::length(f2) > 1e-9 ? glm::normalize(f2) : frames[0].e2;
+    if (!(glm::length(f2) > 1e-9)) f2 = glm::cross(f1, std::abs(f1.z) < 0.9 ? Vec3(0, 0, 1) : Vec3(1, 0, 0));  // chord along the rails
+    f2 = glm::normalize(f2);
     const Vec3 f3 = glm::cross(f1, f2);
     ConstructedNet net;
     net.rows = uint32_t(rows);

@@ -69,7 +69,8 @@ std::vector<uint32_t> curveInputPoints(const Document& doc, const CurveInput& in
 std::string constructionLabel(const Document& doc, size_t k) {
     const Construction& c = doc.constructions.at(k);
     std::string s = std::string(constructionKindName(c.kind)) + " k" + std::to_string(k) + " from";
-    for (size_t i = 0; i < c.inputs.size(); ++i) s += (c.split > 0 && i == c.split ? " / " : " ") + curveInputName(c.inputs[i]);
+    for (size_t i = 0; i < c.inputs.size(); ++i)
+        s += (c.kind == ConstructionKind::Network && i == c.split ? " / " : " ") + curveInputName(c.inputs[i]);
     return s;
 }
 
