@@ -1,6 +1,7 @@
 // The editor's own rules, tested by linking the ui library (no window, no GPU): a headless Dear
 // ImGui context draws the real panels against a PanelContext that runs the real command table, and
-// input is fed through ImGuiIO as the GLFW back end would. Covered: a level typed out of range into
+// input is fed through ImGuiIO as the GLFW back end would. Covered: the Surfaces panel's list,
+// options, preview and Loft (issue 39); a level typed out of range into
 // the Tessellation panel (Ctrl+click, type, Enter) is clamped, recorded as one undo step and the
 // saved file reopens (issue 38's live bug); a slider previews without undo steps and commits one
 // on release; the editor's keys come from the command table alone; the widgets' test hooks
@@ -44,6 +45,7 @@ public:
         ++previews;
         table_.preview(session_, host_, words);
     }
+    void previewConstruction(const std::vector<std::string>& words) override { previewed = words; }
     void documentChanged(bool) override { ++version_; }
     void settingsChanged() override { ++version_; }
     uint64_t documentVersion() const override { return version_; }
@@ -59,6 +61,7 @@ public:
 
     int commandsRun = 0, previews = 0;
     std::vector<std::string> errors;
+    std::vector<std::string> previewed;  // the last construction the panel asked to preview
 
 private:
     EditSession session_;
@@ -218,4 +221,57 @@ TEST_F(Ui, WidgetsAreTracedOnlyWhileATraceIsSet) {
         traceItem("two");
     });
     EXPECT_EQ(trace.items.count("two"), 0u);
+}
+
+// The Surfaces panel (issue 39): a patch edge and two curves listed, G1 chosen for the loft's start
+// from the combo; the mouse over Loft previews exactly the command the click then runs, and the
+// click makes the loft joined G1 to the patch.
+TEST_F(Ui, TheSurfacesPanelListsCurvesAndEdgesPreviewsAndLofts) {
+    HeadlessContext ctx;
+    ImGuiIO& io = ImGui::GetIO();
+    EditSession& s = ctx.session();
+    test::runEditScript(s,
+                        "add-patch; curve-control -0.5,1.2,0.6 -0.17,1.2,0.9 0.17,1.2,0.9 0.5,1.2,0.6; "
+                        "curve-control -0.5,1.8,1.0 -0.17,1.8,1.4 0.17,1.8,1.4 0.5,1.8,1.0");
+    SurfacesPanel panel;
+    auto draw = [&] { panel.draw(ctx); };
+    const auto click = [&](const std::string& item) {
+        frame(draw);
+        io.MousePos = centre(item);
+        frame(draw);
+        io.MouseDown[0] = true;
+        frame(draw);
+        io.MouseDown[0] = false;
+        frame(draw);
+    };
+    s.sel.clear();
+    s.sel.patch = 0;
+    s.activeEdge = Edge::V1;
+    click("surfaces.addEdge");
+    for (int c : {0, 1}) {
+        s.sel.clear();
+        s.sel.curve = c;
+        click("surfaces.addCurve");
+    }
+    // G1 from the Start combo: open it, then pick the second entry below it.
+    click("surfaces.loftStart");
+    const ImVec2 combo = centre("surfaces.loftStart");
+    io.MousePos = ImVec2(combo.x, combo.y + 41.0f);  // below the combo: G0 at +24, G1 at +41 (13 px font, 4 px spacing)
+    frame(draw);
+    io.MouseDown[0] = true;
+    frame(draw);
+    io.MouseDown[0] = false;
+    frame(draw);
+    io.MousePos = centre("op.loft");
+    frame(draw);
+    frame(draw);
+    EXPECT_EQ(ctx.previewed, splitCommandWords("loft 0:v1 c0 c1 start=G1"));
+    EXPECT_EQ(s.doc.constructions.size(), 0u);  // a preview changes nothing
+    click("op.loft");
+    EXPECT_TRUE(ctx.errors.empty()) << ::testing::PrintToString(ctx.errors);
+    ASSERT_EQ(s.doc.constructions.size(), 1u);
+    EXPECT_EQ(s.doc.constructions[0].ends[0], Continuity::G1);
+    bool joined = false;
+    for (const Join& j : s.doc.joins) joined = joined || (j.patchA == 0 && j.continuity == Continuity::G1);
+    EXPECT_TRUE(joined);
 }

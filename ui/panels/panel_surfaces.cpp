@@ -7,16 +7,19 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 #include "core/model/construction_refs.hpp"
 #include "ui/panels/side_panels.hpp"
 #include "ui/platform/imgui_tip.hpp"
+#include "ui/platform/item_trace.hpp"
 
 namespace pw::ui {
 
 namespace {
 const char* kAxes[] = {"X", "Y", "Z"};
+const char* kEnds[] = {"G0", "G1", "G2"};
 }  // namespace
 
 void SurfacesPanel::draw(PanelContext& ctx) {
@@ -54,8 +57,18 @@ void SurfacesPanel::draw(PanelContext& ctx) {
     d[axis_] = std::to_string(length_);
     button("Extrude", "extrude " + c + " " + d[0] + " " + d[1] + " " + d[2], "op.extrudeCurve");
     if (ImGui::Button("Add to list")) sections_.push_back(c);
+    traceItem("surfaces.addCurve");
     tip("Add the selected curve to the list the buttons below build from, in order: loft sections, edge-surface sides, "
         "sweep rails then the profile, network U curves then / then V curves");
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    const bool patch =
+        s.sel.patch >= 0 && size_t(s.sel.patch) < doc.patches.size() && doc.patches[size_t(s.sel.patch)].basis == Basis::Bezier;
+    ImGui::BeginDisabled(!patch);
+    if (ImGui::Button("Add edge")) sections_.push_back(std::to_string(s.sel.patch) + ":" + std::string(edgeName(s.activeEdge)));
+    traceItem("surfaces.addEdge");
+    tip("Add the selected patch's highlighted edge (the one Extrude edge uses): a loft from it can leave it G1 or G2, an edge "
+        "surface continues it G1");
     ImGui::EndDisabled();
     ImGui::SameLine();
     if (ImGui::Button("/")) sections_.push_back("/");
@@ -64,16 +77,35 @@ void SurfacesPanel::draw(PanelContext& ctx) {
     for (const std::string& w : sections_) list += " " + w;
     const size_t n = sections_.size();
     const bool slash = std::find(sections_.begin(), sections_.end(), "/") != sections_.end();
-    const auto build = [&](const char* label, const std::string& name, bool ok, const char* trace) {
+    const auto build = [&](const char* label, const std::string& name, bool ok, const char* trace, const std::string& options = "") {
         ImGui::BeginDisabled(!ok);
-        button(label, name + list, trace);
+        button(label, name + list + options, trace);
         ImGui::EndDisabled();
     };
-    build("Loft", "loft", n >= 2 && !slash, "op.loft");
+    // The loft's and the sweep's options.
+    ImGui::Checkbox("Closed", &loftClosed_);
+    tip("Loft: back to the first section");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(50 * ctx.uiScale());
+    ImGui::Combo("Start", &loftEnds_[0], kEnds, 3);
+    traceItem("surfaces.loftStart");
+    tip("Loft: how the surface leaves a first section that is a patch edge (G0: position only)");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(50 * ctx.uiScale());
+    ImGui::Combo("End", &loftEnds_[1], kEnds, 3);
+    std::string loftOptions = loftClosed_ ? " closed" : "";
+    for (int e = 0; e < 2 && !loftClosed_; ++e)
+        if (loftEnds_[e] > 0) loftOptions += std::string(e == 0 ? " start=" : " end=") + kEnds[loftEnds_[e]];
+    build("Loft", "loft", n >= 2 && !slash, "op.loft", loftOptions);
     ImGui::SameLine();
     build("Edge surface", "edge-surface", n >= 2 && n <= 4 && !slash, "op.edgeSurface");
+    ImGui::SetNextItemWidth(70 * ctx.uiScale());
+    ImGui::InputDouble("##tol", &sweepTolerance_, 0.0, 0.0, "%.2g");
+    tip("Sweep1: how far from the exact sweep it may be between the rail's segment ends (0: 1e-4 of the profile's size)");
     ImGui::SameLine();
-    build("Sweep1", "sweep1", n == 2 && !slash, "op.sweep1");
+    char tol[32];
+    std::snprintf(tol, sizeof tol, " %.17g", sweepTolerance_);
+    build("Sweep1", "sweep1", n == 2 && !slash, "op.sweep1", sweepTolerance_ > 0.0 ? tol : "");
     ImGui::SameLine();
     build("Sweep2", "sweep2", n == 3 && !slash, "op.sweep2");
     ImGui::SameLine();

@@ -44,7 +44,8 @@ private:
     int joinA_ = 0, joinB_ = 1, joinEdgeA_ = 2, joinEdgeB_ = 0, joinKind_ = 1;
 };
 
-class SurfacesPanel {  // panel_surfaces.cpp: revolve, extrude and loft the selected curves; the selected patch's construction
+class SurfacesPanel {  // panel_surfaces.cpp: surfaces from the selected curve or a list of curves and edges; the selected patch's
+                       // construction
 public:
     void draw(PanelContext& ctx);
 
@@ -52,6 +53,9 @@ private:
     int axis_ = 2;
     float degrees_ = 360.0f, length_ = 1.0f;
     std::vector<std::string> sections_;  // the curves listed so far ("c0", ..., "/" in a network)
+    bool loftClosed_ = false;
+    int loftEnds_[2] = {0, 0};     // G0, G1, G2 at the loft's first and last section
+    double sweepTolerance_ = 0.0;  // 0: sweep1's default
 };
 
 class NetPanel {  // panel_net.cpp: net surfaces (create, rows/columns, closing, basis, conversion)
