@@ -51,10 +51,11 @@ std::optional<TriangleMesh> displayedMesh(const ExportArgs& args, const Document
     const bool displaced = doc.displacement.active();
     if (displaced && args.asDisplayedGiven && !args.asDisplayed)
         throw InputError("export", "--no-as-displayed: a displaced surface is exported as displayed (only the GPU displaces it)");
-    if (displaced && args.tessGiven) {  // --tess: uniform levels for the displaced surface
+    if (displaced && args.tessGiven) {  // --tess: uniform levels for the displaced surface, and all of it
         doc.tess.outer = {float(args.tess), float(args.tess), float(args.tess), float(args.tess)};
         doc.tess.inner = {float(args.tess), float(args.tess)};
         doc.tess.adaptive = AdaptiveMode::None;
+        doc.tess.cullOffscreen = doc.tess.cullBackfaces = false;  // a fixed level is the whole model; only the view culls
     }
     const bool wanted = displaced || (args.asDisplayedGiven ? args.asDisplayed : options.asDisplayed && !args.tessGiven);
     options.asDisplayed = wanted;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/displacement_args.hpp"
 #include "core/base/errors.hpp"
 #include "core/construct/constructions.hpp"
 #include "core/io/document_io.hpp"
@@ -39,6 +40,7 @@ std::string vec(const Vec3& v) { return "(" + fmt("%.6g", v.x) + ", " + fmt("%.6
 
 int runInfo(const InfoOptions& opt) {
     const Document doc = loadDocument(opt.file);
+    (void)loadDocumentHeightMap(doc, opt.file);  // the document's height map must read too (issue 44: not only on export)
     const std::vector<PatchInstance> windows = expandPatches(doc);
     const Bounds bounds = computeBounds(doc.points);
     const double size = modelSize(doc);

@@ -107,6 +107,11 @@ render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& do
         else if (ov != "none")
             bad("--overlay", "'" + ov + "' is not one of grid, wire, normals, boundaries, isocurves, combs, none");
     }
+    // Combs are drawn on curves and on the isocurve overlay: with neither they would draw nothing.
+    if (o.display.showCombs && a.combJoin.empty() && !o.display.showIsocurves && doc.curves.empty())
+        bad("--overlay",
+            "combs are drawn on curves and on the isocurve overlay, and the document has no curves: add isocurves "
+            "(--overlay isocurves,combs)");
     const double aspect = double(width) / double(height);
     if (!a.view.empty()) {
         auto cam = applyNamedView(doc.camera, a.view);

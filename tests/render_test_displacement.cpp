@@ -180,6 +180,12 @@ TEST_F(Displacement, CommandLineRendersAndExportsDisplacedAndRefusesBadMaps) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("displaced by"), std::string::npos) << r.output;
     expectValidGltf({glb});
+    // At a fixed level it is the whole terrain whatever its camera culls (issue 42): 1 024 windows x
+    // 2 x 4^2 triangles.
+    r = runCommand(bin + " export " + terrain + " --tess 4 --size 320x180 -o '" + (dir / "t4.glb").string() + "' 2>&1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find(": 32768 triangles"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("culled"), std::string::npos) << r.output;
     // A render of the teapot with a ramp on it: exit 0, statistics written.
     std::vector<uint8_t> px(64 * 64);
     for (size_t i = 0; i < px.size(); ++i) px[i] = uint8_t(i % 64 * 4);
@@ -201,6 +207,23 @@ TEST_F(Displacement, CommandLineRendersAndExportsDisplacedAndRefusesBadMaps) {
         EXPECT_NE(r.output.find(map), std::string::npos) << r.output;
         EXPECT_FALSE(std::filesystem::exists(out));
     }
+    // A document whose height map is missing is refused by info and convert too, not only by
+    // export (issue 44), naming the map; nothing is written.
+    std::filesystem::copy_file(dataDir() / "terrain.patchwork", dir / "moved.patchwork");
+    for (const std::string& cmd : {std::string(" info "), std::string(" convert ")}) {
+        const auto out = dir / "moved.bpt";
+        r = runCommand(bin + cmd + "'" + (dir / "moved.patchwork").string() + "'" + (cmd == " convert " ? " '" + out.string() + "'" : "") +
+                       " 2>&1");
+        EXPECT_EQ(r.exitCode, 2) << cmd << r.output;
+        EXPECT_NE(r.output.find("terrain.png"), std::string::npos) << cmd << r.output;
+        EXPECT_FALSE(std::filesystem::exists(out));
+    }
+    // Combs with nothing to draw them on are refused, naming the option.
+    r = runCommand(bin + " render '" + (dataDir() / "teapot.bpt").string() + "' --overlay combs -o '" + (dir / "c.png").string() +
+                   "' 2>&1");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("--overlay"), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "c.png"));
     r = runCommand(bin + " render --displacement-scale 2 -o '" + (dir / "x.png").string() + "' 2>&1");
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_NE(r.output.find("--displacement-scale"), std::string::npos) << r.output;
