@@ -168,12 +168,8 @@ TEST(Examples, NetworkShellPassesThroughEveryCurve) {
     const Construction& k = doc.constructions[0];
     EXPECT_EQ(k.kind, ConstructionKind::Network);
     ASSERT_EQ(k.patches.size(), 9u);
-    const auto at = [&](size_t row, size_t col, double u, double v) {
-        return evaluateWindow(gatherWindow(doc, doc.patches[k.patches[row * 3 + col]].idx), Basis::Bezier, 0.5, u, v).p;
-    };
-    const auto curve = [&](size_t c, size_t seg, double t) {
-        return evaluateRationalCurve(curvePoints(doc, doc.curves[c], seg), {1, 1, 1, 1}, t).p;
-    };
+    const auto at = [&](size_t row, size_t col, double u, double v) { return test::patchPointAt(doc, k.patches[row * 3 + col], u, v); };
+    const auto curve = [&](size_t c, size_t seg, double t) { return test::curvePointAt(doc, doc.curves[c], seg, t); };
     for (size_t r = 0; r < 4; ++r)
         for (size_t seg = 0; seg < 3; ++seg)
             for (double t : {0.0, 0.35, 0.8}) {

@@ -44,9 +44,10 @@ void construct(CommandContext& ctx, Construction c, const std::string& undoLabel
     EditSession& s = ctx.session;
     size_t k = 0;
     const std::string name(constructionKindName(c.kind));
+    const ConstructionKind kind = c.kind;
     s.apply(undoLabel, [&](Document& d) {
         k = addConstruction(d, std::move(c), name);
-        compactPool(d);  // a network's meeting points were made one: the others are no one's now
+        if (kind == ConstructionKind::Network) compactPool(d);  // its meeting points were made one: the others are no one's now
     });
     s.sel.clear();
     const Construction& made = s.doc.constructions[k];
