@@ -7,8 +7,10 @@
 
 #include "core/construct/model_builders.hpp"
 #include "core/model/edit_history.hpp"
+#include "core/ops/join_ops.hpp"
 #include "core/ops/net_ops.hpp"
 #include "core/ops/patch_ops.hpp"
+#include "core/ops/split_ops.hpp"
 
 using namespace pw;
 

@@ -2,6 +2,7 @@
 // the save rule, and the command table run as scripts (core/commands/command_table.hpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -23,8 +24,10 @@ class RecordingHost final : public CommandHost {
 public:
     void write(const Document& doc, const std::string& path) override { writes.emplace_back(path, doc); }
     void saved(const std::string& path) override { savedPaths.push_back(path); }
+    void status(const std::string& message) override { statuses.push_back(message); }
     std::vector<std::pair<std::string, Document>> writes;
     std::vector<std::string> savedPaths;
+    std::vector<std::string> statuses;
 };
 
 void run(EditSession& s, const std::string& script) {
@@ -219,9 +222,12 @@ TEST(Commands, SaveGoesThroughTheHostAndSplitExtrudeWork) {
     RecordingHost host;
     const CommandTable t = makeCommandTable();
     t.runScript(s, host, "add-patch; extrude u1; select patch 0; split v 0.25; save \"my file.patchwork\"", "x");
-    EXPECT_EQ(s.doc.patches.size(), 3u);
-    // The split along v cut edge u1, whose extrusion join is dropped (split); the split's own join stays.
-    EXPECT_EQ(s.doc.joins.size(), 1u);
+    // The split along v crosses edge u1, joined to the extrusion: the cut runs on through it (the
+    // ring), the join becomes two and each patch's halves are joined.
+    EXPECT_EQ(s.doc.patches.size(), 4u);
+    EXPECT_EQ(s.doc.joins.size(), 4u);
+    EXPECT_TRUE(std::any_of(host.statuses.begin(), host.statuses.end(),
+                            [](const std::string& m) { return m.find("split 2 patches") != std::string::npos; }));
     t.runScript(s, host, "select patch 1; curve-from-edge v0", "x");
     ASSERT_EQ(s.doc.curves.size(), 1u);
     EXPECT_EQ(s.sel.curve, 0);
@@ -229,7 +235,7 @@ TEST(Commands, SaveGoesThroughTheHostAndSplitExtrudeWork) {
     ASSERT_EQ(host.writes.size(), 1u);
     EXPECT_EQ(host.writes[0].first, "my file.patchwork");
     EXPECT_EQ(host.savedPaths, std::vector<std::string>{"my file.patchwork"});  // the window updates title, recent files, autosave
-    EXPECT_EQ(host.writes[0].second.patches.size(), 3u);
+    EXPECT_EQ(host.writes[0].second.patches.size(), 4u);
     EXPECT_EQ(s.path(), "my file.patchwork");
     EXPECT_FALSE(s.isModified());
 }

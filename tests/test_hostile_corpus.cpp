@@ -22,6 +22,7 @@
 #include "core/io/document_io.hpp"
 #include "core/io/glb_container.hpp"
 #include "core/io/patchwork_format.hpp"
+#include "core/ops/join_ops.hpp"
 #include "core/ops/net_ops.hpp"
 #include "core/ops/patch_ops.hpp"
 #include "support.hpp"

@@ -9,6 +9,7 @@
 #include "core/edit/edit_session.hpp"
 #include "core/eval/patch_eval.hpp"
 #include "core/model/camera_math.hpp"
+#include "core/ops/join_ops.hpp"
 #include "core/ops/patch_ops.hpp"
 #include "core/select/edge_pick.hpp"
 #include "core/solve/constraint_solver.hpp"

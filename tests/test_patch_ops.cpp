@@ -6,7 +6,9 @@
 
 #include "core/construct/model_builders.hpp"
 #include "core/eval/patch_eval.hpp"
+#include "core/ops/join_ops.hpp"
 #include "core/ops/patch_ops.hpp"
+#include "core/ops/split_ops.hpp"
 #include "core/select/picking.hpp"
 #include "core/solve/constraint_solver.hpp"
 #include "core/solve/continuity_report.hpp"
@@ -97,7 +99,10 @@ TEST(EditorPatchOps, SplitIsExactAndJoined) {
             const Document orig = doc;
             const auto [a, b] = splitPatch(doc, 3, alongU, t);
             EXPECT_EQ(a, 3u);
-            EXPECT_EQ(doc.patches.size(), 5u);
+            // The cut crosses one joined edge of the corner patch: its neighbour is cut too (the
+            // ring), that join becomes two, and each cut patch's halves are joined: 4 + 1 + 2.
+            EXPECT_EQ(doc.patches.size(), 6u);
+            EXPECT_EQ(doc.joins.size(), 7u);
             for (double s : {0.0, 0.25, 0.8, 1.0})
                 for (double w : {0.1, 0.6}) {
                     const Vec3 pa = alongU ? eval(doc, a, s, w) : eval(doc, a, w, s);
@@ -127,7 +132,13 @@ TEST(EditorPatchOps, JoinAndUnjoin) {
             EXPECT_EQ(doc.patches[0].idx[size_t(edgeSlot(Edge::U1, k))], doc.patches[1].idx[size_t(edgeSlot(Edge::U0, k))]);
         EXPECT_EQ(doc.points.size(), 28u);  // four merged
         expectJoinsHold(doc);
-        EXPECT_THROW(joinEdges(doc, 0, Edge::U1, 1, Edge::U0, c), EditError);
+        // The same pair again changes the join's continuity in place; another edge against a
+        // joined one is refused.
+        EXPECT_EQ(joinEdges(doc, 0, Edge::U1, 1, Edge::U0, Continuity::G1), 0u);
+        EXPECT_EQ(doc.joins.size(), 1u);
+        EXPECT_EQ(doc.joins[0].continuity, Continuity::G1);
+        expectJoinsHold(doc);
+        EXPECT_THROW(joinEdges(doc, 0, Edge::U1, 1, Edge::V0, c), EditError);
 
         unjoin(doc, 0);
         EXPECT_TRUE(doc.joins.empty());

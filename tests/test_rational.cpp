@@ -18,6 +18,7 @@
 #include "core/io/patchwork_format.hpp"
 #include "core/model/join_detect.hpp"
 #include "core/ops/patch_ops.hpp"
+#include "core/ops/split_ops.hpp"
 #include "core/solve/constraint_solver.hpp"
 #include "tests/support.hpp"
 

@@ -4,9 +4,12 @@
 
 #include "core/commands/command_table.hpp"
 #include "core/model/placement.hpp"
+#include "core/ops/join_ops.hpp"
 #include "core/ops/mirror.hpp"
 #include "core/ops/net_ops.hpp"
 #include "core/ops/patch_ops.hpp"
+#include "core/ops/split_ops.hpp"
+#include "core/select/symmetry.hpp"
 
 namespace pw {
 
@@ -91,6 +94,20 @@ Command fromEdge(const char* name, const char* label, const char* help, const ch
                 s.sel.clear();
                 s.sel.*field = created;
             }};
+}
+
+// `split` and `split-ring`: patch p cut along `dir` at `tWord` (default 0.5) with its whole ring.
+void runSplit(CommandContext& ctx, uint32_t p, const std::string& dir, const std::string* tWord) {
+    if (dir != "u" && dir != "v") throw EditError("expected u or v, got '" + dir + "'");
+    const double t = tWord ? commandNumber(*tWord, "T") : 0.5;
+    if (!(t > 0.0 && t < 1.0)) throw EditError("T must lie strictly between 0 and 1");
+    size_t cut = 0, joins = 0;
+    ctx.session.apply("Split patch", [&](Document& d) {
+        cut = splitRing(d, p, dir == "u", t).size();
+        joins = d.joins.size();
+    });
+    ctx.host.status("split " + std::to_string(cut) + (cut == 1 ? " patch" : " patches (the ring through its joins)") + "; " +
+                    std::to_string(joins) + " joins");
 }
 
 }  // namespace
@@ -226,17 +243,23 @@ void addModelCommands(CommandTable& t) {
            .label = "Split",
            .menu = "Patch",
            .usage = "u|v [T]",
-           .help = "Exact de Casteljau split of the selected patch along u or v at T (default 0.5)",
+           .help = "Exact de Casteljau split of the selected patch along u or v at T (default 0.5); the cut runs on through every "
+                   "joined edge it crosses (the whole ring, as `split-ring`), so no join is dropped",
            .bindings = {{"Split at u", "u", {}}, {"Split at v", "v", {}}},
            .enabled = hasPatch,
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 1, 2);
-               const std::string& dir = ctx.args[0];
-               if (dir != "u" && dir != "v") throw EditError("expected u or v, got '" + dir + "'");
-               const double t = ctx.args.size() == 2 ? commandNumber(ctx.args[1], "T") : 0.5;
-               if (!(t > 0.0 && t < 1.0)) throw EditError("T must lie strictly between 0 and 1");
-               const uint32_t p = uint32_t(ctx.session.sel.patch);
-               ctx.session.apply("Split patch", [&](Document& d) { splitPatch(d, p, dir == "u", t); });
+               runSplit(ctx, uint32_t(ctx.session.sel.patch), ctx.args[0], ctx.args.size() == 2 ? &ctx.args[1] : nullptr);
+           }});
+    t.add({.name = "split-ring",
+           .label = "Split Ring",
+           .menu = "Patch",
+           .usage = "P u|v T",
+           .help = "Split patch P along u or v at T and every patch joined across the cut line, ring after ring (Blender's loop "
+                   "cut): each join the cut crosses becomes two, so every join is kept",
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 3, 3);
+               runSplit(ctx, commandIndex(ctx.args[0], ctx.session.doc.patches.size(), "patch"), ctx.args[1], &ctx.args[2]);
            }});
     t.add({.name = "join",
            .label = "Join",
@@ -246,14 +269,28 @@ void addModelCommands(CommandTable& t) {
                "Join an edge of patch A to an edge of patch B (edges u0 v0 u1 v1) with C0, C1, G1, C2 or G2 continuity, held while you "
                "drag; B is turned to lie beyond the seam with agreeing normals, and when the edges do not meet A stays and B's boundary, "
                "tangent (and for C2/G2 third) rows move onto it (Match). G1 and G2 keep the shape parameters measured when joining; "
-               "a join that cannot hold together with the others is refused, naming them",
+               "on two edges joined already it changes the join's continuity in place (A's side stays). A join that cannot hold "
+               "together with the others, or only by folding a patch, is refused, naming them, and the document stays as it was",
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 3, 3);
                const Document& doc = ctx.session.doc;
                const std::pair<uint32_t, Edge> a = patchEdge(ctx.args[0], doc), b = patchEdge(ctx.args[1], doc);
                const auto c = parseContinuity(ctx.args[2]);
                if (!c) throw EditError("expected C0, C1, G1, C2 or G2, got '" + ctx.args[2] + "'");
-               ctx.session.apply("Join edges", [&](Document& d) { joinEdges(d, a.first, a.second, b.first, b.second, *c); });
+               const int ja = findJoin(doc, a.first, a.second);
+               const bool change = ja >= 0 && ja == findJoin(doc, b.first, b.second);
+               // Under live symmetry the mirror images of the two edges are joined too.
+               const auto ma = mirrorEdge(doc, a.first, a.second, ctx.session.symmetry);
+               const auto mb = mirrorEdge(doc, b.first, b.second, ctx.session.symmetry);
+               const bool mirrored = ma && mb && *ma != a && *ma != b && *mb != a && *mb != b;
+               ctx.session.apply(change ? "Join continuity" : "Join edges", [&](Document& d) {
+                   joinEdges(d, a.first, a.second, b.first, b.second, *c);
+                   if (mirrored) joinEdges(d, ma->first, ma->second, mb->first, mb->second, *c);
+               });
+               if (mirrored)
+                   ctx.host.status("joined " + ctx.args[0] + " " + ctx.args[1] + " and, by symmetry, " + std::to_string(ma->first) + ":" +
+                                   std::string(edgeName(ma->second)) + " " + std::to_string(mb->first) + ":" +
+                                   std::string(edgeName(mb->second)));
            }});
     t.add({.name = "tolerances",
            .label = "Continuity Tolerances",

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/base/errors.hpp"
+#include "core/edit/edit_invariants.hpp"
 #include "core/edit/live_constructions.hpp"
 #include "core/io/document_io.hpp"
 #include "core/model/placement.hpp"
@@ -103,6 +104,7 @@ void EditSession::apply(const std::string& label, const std::function<void(Docum
     Document d = doc;
     op(d);
     std::vector<std::string> notes = refreshConstructions(d);
+    checkEditInvariants(doc, d);
     notes_.insert(notes_.end(), notes.begin(), notes.end());
     doc = std::move(d);
     commit(label);

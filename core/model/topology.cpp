@@ -32,4 +32,15 @@ std::vector<std::array<uint32_t, 3>> netC1Triples(const Document& doc) {
     return out;
 }
 
+int edgeLoopSign(Edge e) { return e == Edge::V0 || e == Edge::U1 ? 1 : -1; }
+
+bool edgesPairReversed(const Document& doc, uint32_t a, Edge ea, uint32_t b, Edge eb) {
+    const Patch &A = doc.patches[a], &B = doc.patches[b];
+    auto pa = [&](int k) { return doc.points[A.idx[size_t(edgeSlot(ea, k, 0))]]; };
+    auto pb = [&](int k) { return doc.points[B.idx[size_t(edgeSlot(eb, k, 0))]]; };
+    const double straight = glm::length(pa(0) - pb(0)) + glm::length(pa(3) - pb(3));
+    const double crossed = glm::length(pa(0) - pb(3)) + glm::length(pa(3) - pb(0));
+    return crossed < straight;
+}
+
 }  // namespace pw

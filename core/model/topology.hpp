@@ -1,5 +1,6 @@
 // How the document's pieces connect, as queries the layers above share (the solver, picking and the
-// operations): the join on a patch edge, and the C1 seams that a Bézier net keeps by itself.
+// operations): the join on a patch edge, the C1 seams that a Bézier net keeps by itself, and how two
+// patch edges pair up and face.
 #pragma once
 
 #include <array>
@@ -16,5 +17,13 @@ int findJoin(const Document& doc, uint32_t p, Edge e);
 // The C1 conditions of Bézier nets that keep C1, as triples (before, seam, after) of pool indices
 // with seam = (before + after) / 2 (rows of the constraint solver).
 std::vector<std::array<uint32_t, 3>> netC1Triples(const Document& doc);
+
+// +1 when walking edge e with k increasing runs counter-clockwise around the (u, v) square (the
+// boundary loop of the normal du × dv), -1 when it runs clockwise. Two patches' normals agree
+// across a seam when their loops walk it in opposite directions.
+int edgeLoopSign(Edge e);
+
+// The nearer way to pair the end points of a's edge ea with b's edge eb (true: k with 3 - k).
+bool edgesPairReversed(const Document& doc, uint32_t a, Edge ea, uint32_t b, Edge eb);
 
 }  // namespace pw

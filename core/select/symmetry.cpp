@@ -1,6 +1,7 @@
 #include "core/select/symmetry.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "core/select/picking.hpp"
@@ -55,6 +56,31 @@ SymmetryPairs symmetryPairs(const Document& doc, const std::vector<uint32_t>& mo
         if (best >= 0 && !isMoved[size_t(best)]) out.partners.emplace_back(p, uint32_t(best));
     }
     return out;
+}
+
+std::optional<std::pair<uint32_t, Edge>> mirrorEdge(const Document& doc, uint32_t p, Edge e, const Symmetry& s) {
+    if (!s.on() || p >= doc.patches.size()) return std::nullopt;
+    std::array<uint32_t, 4> edge{}, image{};
+    for (int k = 0; k < 4; ++k) edge[size_t(k)] = doc.patches[p].idx[size_t(edgeSlot(e, k))];
+    const SymmetryPairs pairs = symmetryPairs(doc, {edge.begin(), edge.end()}, s);
+    for (size_t k = 0; k < 4; ++k) {
+        const uint32_t i = edge[k];
+        const auto partner = std::find_if(pairs.partners.begin(), pairs.partners.end(), [&](const auto& pq) { return pq.first == i; });
+        if (partner != pairs.partners.end())
+            image[k] = partner->second;
+        else if (std::find(pairs.onPlane.begin(), pairs.onPlane.end(), i) != pairs.onPlane.end())
+            image[k] = i;
+        else
+            return std::nullopt;
+    }
+    if (image == edge || image == reversedEdgePool(edge)) return std::nullopt;
+    for (uint32_t q = 0; q < doc.patches.size(); ++q)
+        for (Edge f : {Edge::U0, Edge::U1, Edge::V0, Edge::V1}) {
+            std::array<uint32_t, 4> other{};
+            for (int k = 0; k < 4; ++k) other[size_t(k)] = doc.patches[q].idx[size_t(edgeSlot(f, k))];
+            if (other == image || other == reversedEdgePool(image)) return std::pair{q, f};
+        }
+    return std::nullopt;
 }
 
 void applySymmetry(std::vector<Vec3>& points, const SymmetryPairs& pairs, const Symmetry& s) {

@@ -34,6 +34,11 @@ struct SymmetryPairs {
 };
 SymmetryPairs symmetryPairs(const Document& doc, const std::vector<uint32_t>& moved, const Symmetry& s);
 
+// The patch edge whose points are the mirror images of edge e of patch p under s (a point on the
+// plane is its own image), for joins made under live symmetry; none when no patch has such an edge
+// or the edge is its own image.
+std::optional<std::pair<uint32_t, Edge>> mirrorEdge(const Document& doc, uint32_t p, Edge e, const Symmetry& s);
+
 // After the moved points took their new positions: the ones on the plane back onto it, each
 // partner at its point's mirror image.
 void applySymmetry(std::vector<Vec3>& points, const SymmetryPairs& pairs, const Symmetry& s);

@@ -456,13 +456,22 @@ std::string conflictMessage(const Projection& p) {
 }
 
 double maxConstraintResidual(const Document& doc) {
-    double worst = 0;
+    const JoinResiduals r = joinResiduals(doc);
+    double worst = r.netSeams;
+    for (double v : r.perJoin) worst = std::max(worst, v);
+    return worst;
+}
+
+JoinResiduals joinResiduals(const Document& doc) {
+    JoinResiduals out;
+    out.perJoin.assign(doc.joins.size(), 0.0);
     for (const ConstraintRow& row : solver_detail::buildConstraintRows(doc)) {
         Vec3 s(0.0);
         for (const auto& [idx, c] : row.terms) s += c * doc.points[idx];
-        worst = std::max(worst, glm::length(s));
+        double& worst = row.join < out.perJoin.size() ? out.perJoin[row.join] : out.netSeams;
+        worst = std::max(worst, double(glm::length(s)));
     }
-    return worst;
+    return out;
 }
 
 }  // namespace pw

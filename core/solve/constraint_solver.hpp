@@ -78,5 +78,11 @@ std::string conflictMessage(const Projection& p);
 // Largest residual of any join row (C1/G1 tangent rows, C2/G2 curvature rows), and the largest distance between
 // points that a join says coincide (0 when the pool shares them). Compare with 1e-6 × modelSize.
 double maxConstraintResidual(const Document& doc);
+// The same measure for each join (index = join), and for the C1 seams of Bézier nets together.
+struct JoinResiduals {
+    std::vector<double> perJoin;
+    double netSeams = 0;
+};
+JoinResiduals joinResiduals(const Document& doc);
 
 }  // namespace pw

@@ -1,0 +1,23 @@
+// What every accepted edit keeps (issue 40, item 7; DESIGN §1): every join within its tolerance.
+// EditSession::apply checks each edit's result against the document before it and refuses
+// (EditError, the document untouched) an edit that breaks it, naming the joins. (That no join is
+// held by folding a patch is checked where the solver reshapes patches for a join: core/ops/join_ops.)
+#pragma once
+
+#include <string>
+
+#include "core/model/document.hpp"
+
+namespace pw {
+
+// The residual every join must stay within after an edit: 1e-6 × model size.
+double joinTolerance(const Document& doc);
+
+// "join 2 (patch 0 u0 – patch 2 v0, G1)"
+std::string describeJoin(const Document& doc, size_t j);
+
+// Throws EditError when `after` leaves a join outside joinTolerance, unless the document before
+// was already that far off and the edit made it no worse.
+void checkEditInvariants(const Document& before, const Document& after);
+
+}  // namespace pw

@@ -1,0 +1,75 @@
+#include "core/eval/fold_check.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include "core/eval/rational_eval.hpp"
+
+namespace pw {
+
+PatchShape patchShape(const Document& doc, uint32_t p, int level) {
+    const Patch& patch = doc.patches[p];
+    const WindowNet net = gatherWindow(doc, patch.idx);
+    const int n = std::max(level, 1);
+    std::vector<SurfacePoint> grid(size_t(n + 1) * size_t(n + 1));
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i)
+            grid[size_t(j * (n + 1) + i)] = evaluateWindow(net, patch.basis, patch.tension, double(i) / n, double(j) / n);
+    // The patch's own scale: a corner's tangent plane counts as vanished when |du × dv| is below
+    // 1e-9 of the squared size of its control net.
+    Vec3 lo = net.points[0], hi = net.points[0];
+    for (const Vec3& q : net.points) lo = glm::min(lo, q), hi = glm::max(hi, q);
+    const double size2 = glm::dot(hi - lo, hi - lo);
+    PatchShape shape;
+    auto at = [&](int i, int j) -> const SurfacePoint& { return grid[size_t(j * (n + 1) + i)]; };
+    const auto turned = [](const SurfacePoint& a, const SurfacePoint& b, const SurfacePoint& c) {
+        const Vec3 g = glm::cross(b.p - a.p, c.p - a.p);
+        return glm::dot(g, a.n + b.n + c.n) < 0.0;
+    };
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const SurfacePoint &a = at(i, j), &b = at(i + 1, j), &c = at(i, j + 1), &d = at(i + 1, j + 1);
+            shape.invertedTriangles += int(turned(a, b, d)) + int(turned(a, d, c));
+        }
+    for (const SurfacePoint* c : {&at(0, 0), &at(n, 0), &at(0, n), &at(n, n)})
+        if (size2 > 0.0 && glm::length(glm::cross(c->du, c->dv)) <= 1e-9 * size2) ++shape.collapsedCorners;
+    return shape;
+}
+
+namespace {
+
+// A patch's shape as a number: its points, weights, basis and tension (an FNV-1a hash), so that a
+// patch whose pool entries an edit only renumbered counts as unchanged.
+uint64_t shapeKey(const Document& d, const Patch& p) {
+    uint64_t h = 1469598103934665603ull;
+    auto mix = [&](const void* data, size_t n) {
+        const auto* b = static_cast<const unsigned char*>(data);
+        for (size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
+    };
+    for (uint32_t i : p.idx) {
+        const Vec3 q = i < d.points.size() ? d.points[i] : Vec3(0.0);
+        const double w = pointWeight(d, i);
+        mix(&q, sizeof q);
+        mix(&w, sizeof w);
+    }
+    mix(&p.basis, sizeof p.basis);
+    mix(&p.tension, sizeof p.tension);
+    return h;
+}
+
+}  // namespace
+
+std::string foldMadeBy(const Document& before, const Document& after) {
+    for (size_t p = 0; p < before.patches.size() && p < after.patches.size(); ++p) {
+        if (shapeKey(before, before.patches[p]) == shapeKey(after, after.patches[p])) continue;
+        const PatchShape is = patchShape(after, uint32_t(p)), was = patchShape(before, uint32_t(p));
+        if (!foldedFurther(was, is)) continue;
+        return "patch " + std::to_string(p) + " (" +
+               (is.invertedTriangles > was.invertedTriangles ? std::to_string(is.invertedTriangles) + " of its triangles turned over"
+                                                             : std::string("a corner's tangent plane collapsed")) +
+               ")";
+    }
+    return "";
+}
+
+}  // namespace pw

@@ -1,0 +1,36 @@
+// Whether a patch is folded or collapsed (issue 40's invariant: a surface never satisfies a
+// constraint by folding or collapsing). A patch is tessellated on a regular grid, as a level-N
+// export would be, and each triangle whose geometric normal faces against the surface normals at
+// its corners counts as turned over; a corner where the surface's tangent plane vanishes (du × dv
+// = 0: a tangent row collapsed onto its edge) counts as collapsed. Edits compare these counts
+// before and after: an edit may keep a degenerate corner the model already had (a sphere's pole),
+// never make a new one.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "core/model/document.hpp"
+
+namespace pw {
+
+struct PatchShape {
+    int invertedTriangles = 0;  // of the 2·level² grid triangles
+    int collapsedCorners = 0;   // of the four corners
+    bool operator==(const PatchShape&) const = default;
+};
+
+// Patch p of `doc` on a level × level grid (default: a level-16 export's triangles).
+PatchShape patchShape(const Document& doc, uint32_t p, int level = 16);
+
+// True when `after` is worse than `before`: more triangles turned over or more corners collapsed.
+inline bool foldedFurther(const PatchShape& before, const PatchShape& after) {
+    return after.invertedTriangles > before.invertedTriangles || after.collapsedCorners > before.collapsedCorners;
+}
+
+// The first patch an edit folded: patch p of `before` and of `after` are the same patch (the
+// operations that join keep the patches' order); of those whose shape changed, the first that
+// foldedFurther. "" when none, else "patch 3 (5 of its triangles turned over)".
+std::string foldMadeBy(const Document& before, const Document& after);
+
+}  // namespace pw
