@@ -250,6 +250,30 @@ void addConstructCommands(CommandTable& t) {
                c.inputs = inputs(ctx, 0, ctx.args.size());
                construct(ctx, std::move(c), "Edge surface");
            }});
+    t.add({.name = "blend",
+           .label = "Blend Edges",
+           .menu = "Surface",
+           .usage = "A:EDGE B:EDGE G1|G2",
+           .help = "Bridge two open patch edges (Rhino's BlendSrf): G1 at both ends with one patch, or G2 with three spans joined "
+                   "C2; the blend shares the edges' points, is joined to both patches and is made again whenever either changes, "
+                   "so it stays G1 or G2 while you drag them. Bake it to edit its own points",
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 3, 3);
+               Construction c;
+               c.kind = ConstructionKind::Blend;
+               c.inputs = inputs(ctx, 0, 2);
+               for (const CurveInput& in : c.inputs)
+                   if (in.curve >= 0) throw EditError("a blend bridges patch edges (P:u0, P:v1 …), not curves");
+               const auto cont = parseContinuity(ctx.args[2]);
+               if (!cont || (*cont != Continuity::G1 && *cont != Continuity::G2))
+                   throw EditError("expected G1 or G2, got '" + ctx.args[2] + "'");
+               c.ends = {*cont, *cont};
+               for (const CurveInput& in : c.inputs)
+                   if (findJoin(ctx.session.doc, in.patch, in.edge) >= 0)
+                       throw EditError("edge " + curveInputName(in) + " is joined already; a blend bridges two open edges");
+               chooseBlendAlphas(ctx.session.doc, c);
+               construct(ctx, std::move(c), "Blend");
+           }});
     t.add({.name = "sweep1",
            .label = "Sweep Along One Rail",
            .menu = "Surface",

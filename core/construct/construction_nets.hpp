@@ -3,6 +3,7 @@
 //   construction_nets.cpp: revolve, extrude, loft, edge surface
 //   sweep_nets.cpp:        sweep1 (one rail), sweep2 (two rails)
 //   network_net.cpp:       network (Gordon surface of a curve network)
+//   blend_net.cpp:         blend (bridging two patch edges, G1 or G2 at both)
 #pragma once
 
 #include <string>
@@ -23,6 +24,16 @@ ConstructedNet sweep1Net(const Document& doc, const Construction& c);
 uint32_t sweep1Pieces(const Document& doc, Construction c, double tolerance);
 ConstructedNet sweep2Net(const Document& doc, const Construction& c);
 ConstructedNet networkNet(const Document& doc, const Construction& c);
+// A blend between two open patch edges (Rhino's BlendSrf, issue 40): G1, one bicubic span whose
+// first two rows continue the first patch's tangent rows (B1 = B0 + α (A0 − A1)) and last two the
+// second's; G2, three spans of one cubic B-spline across (C2 inside), the first three rows from the
+// first patch's curvature condition (β2 = 0), the last three from the second's. The rows share the
+// edges' points; the end points pair the nearer way and the blend's normal agrees with the first
+// patch's (kept from the made net on later runs). EditError when the second patch faces the other
+// way across it, the edges meet, or a tangent row has collapsed.
+ConstructedNet blendNet(const Document& doc, const Construction& c);
+// Each end's α for a new blend: its tangent rows a third of a span of the mean gap between the edges.
+void chooseBlendAlphas(const Document& doc, Construction& c);
 
 // A network's curves meet at their segment ends; makeNetworkCorners() lets each meeting be one pool
 // point, so that dragging it moves both curves and the network stays compatible: the V curve takes

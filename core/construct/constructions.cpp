@@ -113,6 +113,9 @@ ConstructedNet evaluateConstruction(const Document& doc, const Construction& c) 
         case ConstructionKind::Network:
             net = networkNet(doc, c);
             break;
+        case ConstructionKind::Blend:
+            net = blendNet(doc, c);
+            break;
     }
     checkNet(net);
     return net;
@@ -158,8 +161,8 @@ size_t addConstruction(Document& doc, Construction c, const std::string& name) {
             c.patches.push_back(uint32_t(doc.patches.size()));
             doc.patches.push_back(std::move(p));
         }
-    // Joins along every seam between the windows: G1 (α = 1) where the construction makes it so,
-    // C0 elsewhere (the surface there is as smooth as its inputs; the readout measures it).
+    // Joins along every seam between the windows: G1 (α = 1) or C2 where the construction makes it
+    // so, C0 elsewhere (the surface there is as smooth as its inputs; the readout measures it).
     const auto at = [&](uint32_t pr, uint32_t pc) { return first + pr * wc + pc; };
     for (uint32_t pr = 0; pr < wr; ++pr)
         for (uint32_t pc = 0; pc < wc; ++pc) {
@@ -167,7 +170,7 @@ size_t addConstruction(Document& doc, Construction c, const std::string& name) {
                 doc.joins.push_back(
                     Join{at(pr, pc), Edge::U1, at(pr, (pc + 1) % wc), Edge::U0, false, net.smoothU ? Continuity::G1 : Continuity::C0, 1.0});
             if (pr + 1 < wr || (net.closedV && wr > 1))
-                doc.joins.push_back(Join{at(pr, pc), Edge::V1, at((pr + 1) % wr, pc), Edge::V0, false, Continuity::C0, 1.0});
+                doc.joins.push_back(Join{at(pr, pc), Edge::V1, at((pr + 1) % wr, pc), Edge::V0, false, net.seamV, 1.0});
         }
     // Patch edges used as inputs whose points the surface shares: their patches are joined to the
     // new ones, G1 where the surface leaves the edge along the patch's tangent (a loft's G1 ends; an
@@ -184,7 +187,8 @@ size_t addConstruction(Document& doc, Construction c, const std::string& name) {
                 const bool same = m == e, reversed = m == reversedEdgePool(e);
                 if (!(same || reversed) || e.front() == e.back()) continue;
                 Join j{in.patch, in.edge, c.patches[n], mine, reversed, Continuity::C0, 1.0};
-                if (c.kind == ConstructionKind::Loft && (k == 0 || k + 1 == c.inputs.size()) && !c.closed) {
+                const bool end = (c.kind == ConstructionKind::Loft && !c.closed) || c.kind == ConstructionKind::Blend;
+                if (end && (k == 0 || k + 1 == c.inputs.size())) {
                     const size_t end = k == 0 ? 0 : 1;
                     j.continuity = c.ends[end];
                     j.alpha = c.endAlpha[end];

@@ -39,6 +39,8 @@ struct ConstructedNet {
     // Seams between neighbouring windows across u that hold G1 by construction (revolve: the
     // rotation's arcs meet with equal tangents, α = 1); every other seam is C0.
     bool smoothU = false;
+    // The joins between neighbouring windows across v (a blend's spans: C2); else C0.
+    Continuity seamV = Continuity::C0;
     // Per net point: the pool point it is (an input's own point on a boundary the net shares with
     // it: an edge surface's sides), or -1 for a point of its own.
     std::vector<int64_t> shared;

@@ -18,8 +18,8 @@ json constructionsJson(const Document& doc) {
         json o{{"kind", constructionKindName(c.kind)}, {"inputs", std::move(inputs)}};
         if (c.kind == ConstructionKind::Revolve) o["origin"] = c.origin, o["degrees"] = c.degrees;
         if (c.kind == ConstructionKind::Revolve || c.kind == ConstructionKind::Extrude) o["vector"] = c.vector;
-        if (c.kind == ConstructionKind::Loft) {
-            o["closed"] = c.closed;
+        if (c.kind == ConstructionKind::Loft) o["closed"] = c.closed;
+        if (c.kind == ConstructionKind::Loft || c.kind == ConstructionKind::Blend) {
             o["ends"] = {continuityName(c.ends[0]), continuityName(c.ends[1])};
             o["end_alpha"] = c.endAlpha;
         }
@@ -66,7 +66,7 @@ void readConstructions(const json_reader::Reader& r, const json& v, Document& do
             const json& a = r.fixedArray(x, p, 2);
             for (size_t i = 0; i < 2; ++i) {
                 c.ends[i] = r.named<Continuity>(a[i], at(p, i), parseContinuity, "C0, G1, G2");
-                if (c.ends[i] == Continuity::C1 || c.ends[i] == Continuity::C2) r.fail(at(p, i), "a loft's end is C0 (G0), G1 or G2");
+                if (c.ends[i] == Continuity::C1 || c.ends[i] == Continuity::C2) r.fail(at(p, i), "an end is C0 (G0), G1 or G2");
             }
         });
         r.optional(o, path, "end_alpha", [&](const json& x, const std::string& p) {

@@ -9,7 +9,7 @@
 namespace pw {
 
 namespace {
-constexpr std::array<std::string_view, 7> kKindNames{"revolve", "extrude", "loft", "edge-surface", "sweep1", "sweep2", "network"};
+constexpr std::array<std::string_view, 8> kKindNames{"revolve", "extrude", "loft", "edge-surface", "sweep1", "sweep2", "network", "blend"};
 
 bool parseUint(std::string_view s, uint32_t& out) {
     const auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), out);

@@ -154,8 +154,8 @@ struct Join {
 // A surface built from curves (issue 39) that stays live: its patches are re-made from its inputs
 // whenever they change (core/construct/constructions.hpp), until `bake` detaches them.
 inline constexpr uint32_t kMaxSweepPieces = 16;
-enum class ConstructionKind : uint8_t { Revolve, Extrude, Loft, EdgeSurface, Sweep1, Sweep2, Network };
-// "revolve", "extrude", "loft", "edge-surface", "sweep1", "sweep2", "network"
+enum class ConstructionKind : uint8_t { Revolve, Extrude, Loft, EdgeSurface, Sweep1, Sweep2, Network, Blend };
+// "revolve", "extrude", "loft", "edge-surface", "sweep1", "sweep2", "network", "blend"
 std::string_view constructionKindName(ConstructionKind k);
 std::optional<ConstructionKind> parseConstructionKind(std::string_view name);
 
@@ -175,7 +175,8 @@ struct Construction {
     double degrees = 360.0;                 // revolve
     bool closed = false;                    // loft: back to the first section
     // loft: continuity at the first and last section against the patch whose edge it is (C0 = G0,
-    // or G1: the surface leaves the edge along the patch's tangent, scaled by endAlpha).
+    // or G1: the surface leaves the edge along the patch's tangent, scaled by endAlpha); blend: G1
+    // or G2 at both edges, endAlpha chosen when it is made.
     std::array<Continuity, 2> ends{Continuity::C0, Continuity::C0};
     std::array<double, 2> endAlpha{1.0, 1.0};
     // network: the first `split` inputs run along u, the rest along v; sweep1: the pieces each rail
