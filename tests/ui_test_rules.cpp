@@ -15,6 +15,7 @@
 #include "core/commands/command_table.hpp"
 #include "core/io/document_io.hpp"
 #include "support.hpp"
+#include "ui/panels/command_panels.hpp"
 #include "ui/panels/side_panels.hpp"
 #include "ui/platform/item_trace.hpp"
 #include "ui/platform/shortcuts.hpp"
@@ -205,6 +206,23 @@ TEST(UiKeys, TheEditorsKeysComeFromTheCommandTableAlone) {
         EXPECT_NE(table.find(splitCommandWords(k.line).front()), nullptr) << k.line;
     }
     EXPECT_FALSE(parseShortcut("Ctrl+Hyper+Q").has_value());
+}
+
+TEST(UiKeys, F1ListsEveryKeyTheTableBindsAndTheModalKeys) {
+    // The F1 window's rows: every command entry's keys, then the modal keys.
+    const CommandTable table = makeCommandTable();
+    std::set<std::string> listed;
+    for (const Command& c : table.commands())
+        for (const CommandEntry& e : entriesOf(c)) {
+            std::string keys = e.shortcut;
+            for (size_t at = 0; (at = keys.find(" / ")) != std::string::npos;) listed.insert(keys.substr(0, at)), keys.erase(0, at + 3);
+            if (!keys.empty()) listed.insert(keys);
+        }
+    for (const KeyHelp& k : modalKeys()) listed.insert(k.keys);
+    for (const Command& c : table.commands())
+        for (const CommandBinding& b : c.bindings)
+            for (const std::string& key : b.shortcuts) EXPECT_TRUE(listed.count(key)) << key << " (" << c.name << ") is not in F1";
+    for (const char* key : {"G", "R", "S", "Shift+D"}) EXPECT_TRUE(listed.count(key)) << key << " is not in F1";
 }
 
 TEST_F(Ui, WidgetsAreTracedOnlyWhileATraceIsSet) {

@@ -21,6 +21,8 @@ cp "$MODEL" "$WORK/original.patchwork"
 say "open $MODEL"
 start_editor "$MODEL"
 check_validation
+say "the 3D cursor starts at the origin (issue 40), not where the framed view looks"
+wait_for "t['cursor'] == [0.0, 0.0, 0.0]"
 
 # A control point on a joined boundary, isolated on screen (no other point within 14 px), in the
 # middle of the viewport.

@@ -91,8 +91,9 @@ void Editor::documentReplaced() {
     if (fixed && *fixed)
         if (auto c = applyNamedView(cam_, fixed)) cam_ = *c;
     if (cam_ == Camera{} || (fixed && *fixed)) frameBox(computeBounds(doc_.points));
-    // New geometry goes where the view looks until the user places the 3D cursor.
-    session_.cursor = Vec3(cam_.target[0], cam_.target[1], cam_.target[2]);
+    // The 3D cursor starts at the origin (Blender's): mirror and add-about-cursor act about it
+    // until the user places it.
+    session_.cursor = Vec3(0.0);
     documentChanged(true);
     if (!session_.path().empty()) addRecent(session_.path());
     window_.setTitle("Patchwork — " + session_.title());

@@ -37,6 +37,14 @@ inline std::vector<CommandEntry> entriesOf(const Command& c) {
     return out;
 }
 
+// Mouse and modal keys (G, R, S and what works while moving): not commands; the F1 window lists
+// them after the command table's keys.
+struct KeyHelp {
+    const char* keys;
+    const char* what;
+};
+const std::vector<KeyHelp>& modalKeys();
+
 class CommandPalette {
 public:
     bool open = false;

@@ -70,7 +70,7 @@ void ContinuityPanel::draw(PanelContext& ctx) {
     traceItem("continuity.only");
     if (ImGui::BeginTable("cont", 5, ImGuiTableFlags_Borders | ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg, ImVec2(0, 220))) {
         ImGui::TableSetupColumn("join", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("00.u0-00.u0").x);
-        ImGui::TableSetupColumn("kind", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("kind").x);
+        ImGui::TableSetupColumn("kind", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("kind").x + ImGui::GetFrameHeight());
         ImGui::TableSetupColumn("gap");
         ImGui::TableSetupColumn("angle");
         ImGui::TableSetupColumn("curv");
@@ -84,7 +84,18 @@ void ContinuityPanel::draw(PanelContext& ctx) {
             ImGui::TableNextColumn();
             ImGui::Text("%u.%s-%u.%s", jn.patchA, kEdgeNames[int(jn.edgeA)], jn.patchB, kEdgeNames[int(jn.edgeB)]);
             ImGui::TableNextColumn();
-            ImGui::TextUnformatted(continuityName(jn.continuity).data());
+            // The join's continuity, changed in place (`join A:e B:f C` on the joined pair; a refused
+            // change leaves the join as it was and says why in the status line).
+            ImGui::PushID(int(c.join));
+            ImGui::SetNextItemWidth(-FLT_MIN);
+            if (ImGui::BeginCombo("##kind", continuityName(jn.continuity).data())) {
+                for (Continuity k : {Continuity::C0, Continuity::C1, Continuity::G1, Continuity::C2, Continuity::G2})
+                    if (ImGui::Selectable(continuityName(k).data(), k == jn.continuity) && k != jn.continuity)
+                        ctx.runLine("join " + std::to_string(jn.patchA) + ":" + kEdgeNames[int(jn.edgeA)] + " " +
+                                    std::to_string(jn.patchB) + ":" + kEdgeNames[int(jn.edgeB)] + " " + std::string(continuityName(k)));
+                ImGui::EndCombo();
+            }
+            ImGui::PopID();
             ImGui::TableNextColumn();
             cell("%.2g", c.c0Gap, f & kPositionOut);
             ImGui::TableNextColumn();

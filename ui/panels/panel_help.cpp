@@ -8,30 +8,28 @@
 
 namespace pw::ui {
 
-namespace {
-
-// Mouse and modal keys: not commands, listed in the F1 help after them.
-struct KeyHelp {
-    const char* keys;
-    const char* what;
-};
-const KeyHelp kMouseAndModal[] = {
-    {"Middle drag", "Orbit the view"},
-    {"Shift + middle drag", "Pan the view"},
-    {"Wheel", "Zoom"},
-    {"Alt + left drag", "Orbit (laptops)"},
-    {"Left click", "Select a control point; on the surface: select the patch (nearest edge highlighted)"},
-    {"Shift + left click", "Add / remove a point from the selection"},
-    {"Left drag on empty space", "Box select (Shift adds)"},
-    {"Left drag on a point", "Move the selected points in the view plane; joins are held"},
-    {"G", "Grab the selected points (move the mouse, click or Enter confirms)"},
-    {"X / Y / Z (while moving)", "Constrain to that axis (again: free)"},
-    {"Ctrl (while moving)", "Snap to the grid"},
-    {"Esc / right click (while moving)", "Cancel the move and restore"},
-    {"Esc", "Clear the selection"},
-};
-
-}  // namespace
+const std::vector<KeyHelp>& modalKeys() {
+    static const std::vector<KeyHelp> keys{
+        {"Middle drag", "Orbit the view"},
+        {"Shift + middle drag", "Pan the view"},
+        {"Wheel", "Zoom"},
+        {"Alt + left drag", "Orbit (laptops)"},
+        {"Left click", "Select a control point; on the surface: select the patch (nearest edge highlighted)"},
+        {"Shift + left click", "Add / remove a point from the selection"},
+        {"Left drag on empty space", "Box select (Shift adds)"},
+        {"Left drag on a point", "Move the selected points in the view plane; joins are held"},
+        {"G", "Grab the selected points (move the mouse, click or Enter confirms)"},
+        {"R", "Rotate the selected points about the pivot (move the mouse, click or Enter confirms); joins are held"},
+        {"S", "Scale the selected points about the pivot (move the mouse, click or Enter confirms); joins are held"},
+        {"X / Y / Z (while moving)", "Constrain to that axis (again: free)"},
+        {"Shift + X / Y / Z (while moving)", "Move in the plane across that axis"},
+        {"0-9 . - Backspace (while grabbing)", "Type the distance (\"G X 2 Enter\")"},
+        {"Ctrl (while moving)", "Snap to the grid"},
+        {"Esc / right click (while moving)", "Cancel the move and restore"},
+        {"Esc", "Clear the selection"},
+    };
+    return keys;
+}
 
 void drawHelp(PanelContext& ctx, bool& open) {
     const ImGuiIO& io = ImGui::GetIO();
@@ -58,7 +56,7 @@ void drawHelp(PanelContext& ctx, bool& open) {
                     ImGui::TableNextColumn();
                     ImGui::TextWrapped("%s: %s", e.label.c_str(), c.help.c_str());
                 }
-            for (const KeyHelp& k : kMouseAndModal) {
+            for (const KeyHelp& k : modalKeys()) {
                 ImGui::TableNextRow();
                 ImGui::TableNextColumn();
                 ImGui::TextUnformatted(k.keys);

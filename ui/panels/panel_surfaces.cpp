@@ -110,6 +110,13 @@ void SurfacesPanel::draw(PanelContext& ctx) {
     build("Sweep2", "sweep2", n == 3 && !slash, "op.sweep2");
     ImGui::SameLine();
     build("Network", "network", n >= 5 && slash, "op.network");
+    // Blends take two patch edges from the list (Add edge).
+    const bool twoEdges = n == 2 && !slash && list.find(':') != std::string::npos && list.find(" c") == std::string::npos;
+    build("Blend G1", "blend", twoEdges, "op.blendG1", " G1");
+    tip("Bridge the two listed patch edges, G1 at both ends; it follows both patches while they are edited");
+    ImGui::SameLine();
+    build("Blend G2", "blend", twoEdges, "op.blendG2", " G2");
+    tip("Bridge the two listed patch edges, G2 at both ends (three spans joined C2)");
     if (!sections_.empty()) {
         if (ImGui::SmallButton("Clear")) sections_.clear();
         ImGui::SameLine();
