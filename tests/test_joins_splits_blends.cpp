@@ -203,6 +203,9 @@ TEST(Blends, G1AndG2BlendsHoldWhileEitherSideMoves) {
             hold("while dragging");
         }
         drag.finish(s);
+        // Its joins' continuity is the blend's: changing one by hand is refused, the blend kept.
+        EXPECT_TRUE(refused(s, "join 0:u1 " + std::to_string(s.doc.constructions[0].patches[0]) + ":v0 C1", "bake it first"));
+        ASSERT_EQ(s.doc.constructions.size(), 1u);
         // The file keeps the blend live.
         const Document back = parseDocument(serializeDocument(s.doc), "blend.patchwork");
         EXPECT_EQ(back.constructions, s.doc.constructions);

@@ -8,6 +8,7 @@
 
 #include "core/base/errors.hpp"
 #include "core/eval/fold_check.hpp"
+#include "core/model/construction_refs.hpp"
 #include "core/model/topology.hpp"
 #include "core/ops/patch_ops.hpp"
 #include "core/solve/constraint_solver.hpp"
@@ -203,6 +204,10 @@ size_t joinEdges(Document& doc, uint32_t a, Edge ea, uint32_t b, Edge ebPicked, 
 
 void setJoinContinuity(Document& doc, size_t j, Continuity continuity) {
     if (j >= doc.joins.size()) throw EditError("no join " + std::to_string(j));
+    for (const uint32_t p : {doc.joins[j].patchA, doc.joins[j].patchB})
+        if (const int k = constructionOfPatch(doc, p); k >= 0)
+            throw EditError("join " + std::to_string(j) + " is made by " + constructionLabel(doc, size_t(k)) +
+                            ", which sets its continuity; bake it first to change the join by hand");
     const Document before = doc;
     Join& jn = doc.joins[j];
     const Patch& A = doc.patches[jn.patchA];
