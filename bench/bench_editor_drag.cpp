@@ -17,7 +17,7 @@ constexpr int kGrid = 32;
 uint32_t lat(int r, int c) { return static_cast<uint32_t>(r * (3 * kGrid + 1) + c); }
 
 void runDrag(benchmark::State& state, const std::vector<uint32_t>& dragged, pw::TransformKind kind = pw::TransformKind::Move,
-             pw::Continuity joins = pw::Continuity::C1) {
+             pw::Continuity joins = pw::Continuity::C1, pw::SoftSelection soft = {}) {
     pw::Document doc = pw::makePatchGrid(kGrid, kGrid, joins);
     pw::DragView view;
     view.width = 1280;
@@ -28,8 +28,9 @@ void runDrag(benchmark::State& state, const std::vector<uint32_t>& dragged, pw::
     pw::DragController drag;
     const double x0 = 640, y0 = 360;
     const pw::Vec3 pivot = pw::transformPivot(doc, sel, dragged, pw::PivotMode::Median, pw::Vec3(0.0));
-    if (!drag.begin(doc, pw::TransformStart{dragged, pivot, kind, true}, view, x0 + 40.0, y0))
-        return state.SkipWithError("the drag did not start");
+    pw::TransformStart start{dragged, pivot, kind, true};
+    start.soft = soft;
+    if (!drag.begin(doc, start, view, x0 + 40.0, y0)) return state.SkipWithError("the drag did not start");
     std::vector<float> gpuPool(4 * doc.points.size());  // stands in for the mapped vertex buffer
     size_t totalChanged = 0;
     int step = 0;
@@ -43,6 +44,7 @@ void runDrag(benchmark::State& state, const std::vector<uint32_t>& dragged, pw::
     if (pw::maxConstraintResidual(doc) > 1e-6 * pw::modelSize(doc)) state.SkipWithError("constraint residual too large");
     if (!drag.projection().ok()) state.SkipWithError("the joins conflicted");
     state.counters["points"] = double(doc.points.size());
+    state.counters["soft points"] = double(drag.softCount());
     state.counters["uploaded/move"] = double(totalChanged) / double(std::max<int64_t>(state.iterations(), 1));
 }
 
@@ -87,5 +89,17 @@ void BM_EditorDragMove_Grid32C2_Tangent(benchmark::State& state) {
 BENCHMARK(BM_EditorDragMove_Grid32C2_Tangent)->Unit(benchmark::kMicrosecond);
 void BM_EditorDragMove_Grid32C2_Row(benchmark::State& state) { runDrag(state, wholeRow(48), pw::TransformKind::Move, pw::Continuity::C2); }
 BENCHMARK(BM_EditorDragMove_Grid32C2_Row)->Unit(benchmark::kMicrosecond);
+
+// Soft selection (issue 40): the four-patch corner with the points around it within 1 and 3 model
+// units along the nets (a patch is 1 unit), smooth falloff, the joins around them held too.
+// Budget: <= 1 ms per mouse event.
+void BM_EditorDragMove_Grid32_SoftCorner_R1(benchmark::State& state) {
+    runDrag(state, {lat(48, 48)}, pw::TransformKind::Move, pw::Continuity::C1, pw::SoftSelection{true, 1.0, pw::Falloff::Smooth});
+}
+BENCHMARK(BM_EditorDragMove_Grid32_SoftCorner_R1)->Unit(benchmark::kMicrosecond);
+void BM_EditorDragMove_Grid32_SoftCorner_R3(benchmark::State& state) {
+    runDrag(state, {lat(48, 48)}, pw::TransformKind::Move, pw::Continuity::C1, pw::SoftSelection{true, 3.0, pw::Falloff::Smooth});
+}
+BENCHMARK(BM_EditorDragMove_Grid32_SoftCorner_R3)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

@@ -13,6 +13,7 @@
 
 #include "core/select/picking.hpp"
 #include "core/select/selection_ops.hpp"
+#include "core/select/soft_selection.hpp"
 #include "core/select/symmetry.hpp"
 
 namespace pw {
@@ -92,17 +93,33 @@ void transformSelection(CommandContext& ctx, const std::string& label, const std
     if (moved.empty()) throw EditError("nothing is selected (select points, a patch, a net, a triangle or a curve first)");
     if (const std::string why = constructedPointsRefusal(ctx.session.doc, moved); !why.empty()) throw EditError(why);
     const Symmetry sym = ctx.session.symmetry;
+    size_t around = 0;
     ctx.session.apply(
         label,
         [&](Document& d) {
             const SymmetryPairs pairs = symmetryPairs(d, moved, sym);
-            const DragSolver solver(d, withConstructionPoints(d, pairs.driven(moved)));
+            const std::vector<uint32_t> driven = pairs.driven(moved);
+            // Soft selection: the points around take their share (the solver may still move them,
+            // and holds the joins around them too).
+            const SoftWeights soft = softWeights(d, moved, ctx.session.soft);
+            SolverOptions options;
+            options.regionPoints = soft.points;
+            const DragSolver solver(d, withConstructionPoints(d, driven), options);
+            around = soft.points.size();
+            for (size_t k = 0; k < soft.points.size(); ++k) {
+                const uint32_t p = soft.points[k];
+                if (!std::binary_search(driven.begin(), driven.end(), p))
+                    d.points[p] = glm::mix(d.points[p], f(d.points[p]), soft.weights[k]);
+            }
             for (uint32_t p : moved) d.points[p] = f(d.points[p]);
             applySymmetry(d.points, pairs, sym);
             if (!d.constructions.empty()) rerunConstructions(d);  // surfaces made from moved curves follow
             if (const Projection p = solver.project(d.points); !p.ok()) throw EditError("the joins cannot follow: " + conflictMessage(p));
         },
         false);
+    if (around > 0)
+        ctx.host.status(label + ": " + std::to_string(moved.size()) + " points and " + std::to_string(around) + " around them (" +
+                        softDescription(ctx.session.soft) + ")");
 }
 
 }  // namespace
@@ -212,6 +229,36 @@ void addSelectCommands(CommandTable& t) {
                const int a = axisIndex(ctx.args[0]);
                ctx.session.symmetry = Symmetry{a, ctx.session.cursor[a]};
            }});
+    t.add({.name = "soft",
+           .label = "Soft Selection",
+           .menu = "Select",
+           .usage = "on|off|toggle|RADIUS [smooth|linear|sharp|constant]",
+           .help = "Soft selection (Blender's proportional editing): transforms also carry the points within RADIUS of the moved ones, "
+                   "measured along the control nets and across joins, by the falloff; the joins are held as always. The wheel "
+                   "changes the radius while moving",
+           .bindings = {{"Soft Selection", "toggle", {"O"}}},
+           .checked = [](const EditSession& s, const CommandHost&) { return s.soft.on; },
+           .run =
+               [](CommandContext& ctx) {
+                   expectArgs(ctx, 1, 2);
+                   SoftSelection& soft = ctx.session.soft;
+                   const std::string& w = ctx.args[0];
+                   SoftSelection next = soft;
+                   if (w == "on" || w == "off" || w == "toggle") {
+                       next.on = w == "on" || (w == "toggle" && !soft.on);
+                   } else {
+                       next.radius = commandNumber(w, "RADIUS");
+                       if (!(next.radius > 0.0) || next.radius > 1e9) throw EditError("the radius must be a positive number, got " + w);
+                       next.on = true;
+                   }
+                   if (ctx.args.size() == 2) {
+                       const auto f = parseFalloff(ctx.args[1]);
+                       if (!f) throw EditError("expected smooth, linear, sharp or constant, got '" + ctx.args[1] + "'");
+                       next.falloff = *f;
+                   }
+                   soft = next;
+                   ctx.host.status(softDescription(soft));
+               }});
     t.add({.name = "snap",
            .label = "Snap To",
            .menu = "Select",

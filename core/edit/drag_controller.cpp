@@ -65,13 +65,17 @@ bool DragController::begin(const Document& doc, const TransformStart& start, con
     moved_ = start.points;
     symmetry_ = start.symmetry;
     pairs_ = symmetryPairs(doc, moved_, symmetry_);
+    soft_ = start.soft;
+    softPoints_ = softWeights(doc, moved_, soft_);
     const std::vector<uint32_t> driven = pairs_.driven(moved_);
     movedMask_.assign(doc.points.size(), false);
     for (uint32_t p : driven)
         if (p < movedMask_.size()) movedMask_[p] = true;
     // Live constructions: their surfaces and inputs stay where the constructions put them and
     // their neighbours follow.
-    solver_ = std::make_unique<DragSolver>(doc, withConstructionPoints(doc, driven));  // factorised once per transform
+    SolverOptions options;
+    options.regionPoints = softPoints_.points;  // the joins around the soft points are held too
+    solver_ = std::make_unique<DragSolver>(doc, withConstructionPoints(doc, driven), options);  // factorised once per transform
     anchor_ = start.pivot;
     Vec3 r, u, f;
     cameraAxes(view.camera, r, u, f);
@@ -221,11 +225,30 @@ bool DragController::update(Document& doc, const DragView& view, double x, doubl
         }
     }
     for (uint32_t p : moved_) doc.points[p] = f(start_[p]);
+    // Soft selection: the points around take their share of the transform (not fixed: the solver
+    // may still move them to hold a join).
+    for (size_t k = 0; k < softPoints_.points.size(); ++k) {
+        const uint32_t p = softPoints_.points[k];
+        if (!movedMask_[p]) doc.points[p] = glm::mix(start_[p], f(start_[p]), softPoints_.weights[k]);
+    }
     applySymmetry(doc.points, pairs_, symmetry_);
     if (!doc.constructions.empty()) rerunConstructions(doc);  // the surfaces follow their inputs
     projection_ = solver_->project(doc.points);
     takeChangedPoints(uploaded_, doc.points, changed_);
+    lastMoved_ = 0;
+    for (size_t i = 0; i < doc.points.size(); ++i) lastMoved_ += doc.points[i] != start_[i] ? 1 : 0;
     return true;
+}
+
+void DragController::setSoftRadius(const Document& doc, double radius) {
+    if (!active() || !soft_.on || !(radius > 0.0) || !std::isfinite(radius)) return;
+    soft_.radius = radius;
+    Document at = doc;
+    at.points = start_;  // distances along the nets as they were at the start
+    softPoints_ = softWeights(at, moved_, soft_);
+    SolverOptions options;
+    options.regionPoints = softPoints_.points;
+    solver_ = std::make_unique<DragSolver>(at, withConstructionPoints(at, pairs_.driven(moved_)), options);
 }
 
 std::string DragController::status() const {
@@ -253,6 +276,13 @@ std::string DragController::status() const {
                   value.c_str());
     std::string out = buf;
     if (!typed_.empty()) out += "  [typed " + typed_ + "]";
+    if (soft_.on) {
+        std::snprintf(buf, sizeof buf, "  soft %.3g %s (%zu around, wheel: radius)", soft_.radius,
+                      std::string(falloffName(soft_.falloff)).c_str(), softPoints_.points.size());
+        out += buf;
+    }
+    // How far the edit reached: the moved points, their soft share and what the joins forced.
+    out += "  " + std::to_string(lastMoved_) + (lastMoved_ == 1 ? " point moved" : " points moved");
     if (!projection_.ok()) out += "\n" + conflictMessage(projection_);
     return out;
 }

@@ -19,6 +19,7 @@
 #include "core/model/document.hpp"
 #include "core/select/selection.hpp"
 #include "core/select/snapping.hpp"
+#include "core/select/soft_selection.hpp"
 #include "core/select/symmetry.hpp"
 #include "core/solve/constraint_solver.hpp"
 
@@ -39,6 +40,7 @@ struct TransformStart {
     bool grab = false;                   // started by a key (G/R/S, no button held): click or Enter confirms
     SnapTarget snap = SnapTarget::Grid;  // what Ctrl snaps a move to
     Symmetry symmetry;                   // on: each point's mirror partner follows (core/select/symmetry.hpp)
+    SoftSelection soft;                  // on: the points around follow partly (core/select/soft_selection.hpp)
 };
 
 class DragController {
@@ -86,6 +88,12 @@ public:
 
     const Vec3& anchor() const { return anchor_; }  // the pivot (moves: the moved points' centroid)
     size_t movedCount() const { return moved_.size(); }
+    // Soft selection: the radius changed during the transform (the wheel), the shares measured
+    // again; the points the last update moved, the moved points, soft points and solver together.
+    void setSoftRadius(const Document& doc, double radius);
+    const SoftSelection& soft() const { return soft_; }
+    size_t softCount() const { return softPoints_.points.size(); }
+    size_t lastMovedCount() const { return lastMoved_; }
     // One line for the editor's mode line: "Move 16 points along X: 2.5 (typed)".
     std::string status() const;
     // What the solver reached on the last update: conflicting joins are named in status() too.
@@ -101,6 +109,9 @@ private:
     std::vector<bool> movedMask_;  // what the transform drives: the moved points and their mirror partners
     Symmetry symmetry_;
     SymmetryPairs pairs_;
+    SoftSelection soft_;
+    SoftWeights softPoints_;
+    size_t lastMoved_ = 0;
     std::unique_ptr<DragSolver> solver_;
     Projection projection_;
     TransformKind kind_ = TransformKind::Move;

@@ -16,6 +16,7 @@
 #include "core/model/edit_history.hpp"
 #include "core/select/selection.hpp"
 #include "core/select/snapping.hpp"
+#include "core/select/soft_selection.hpp"
 #include "core/select/symmetry.hpp"
 
 namespace pw {
@@ -33,6 +34,7 @@ public:
     PivotMode pivot = PivotMode::Median;  // what rotate and scale turn about
     SnapTarget snap = SnapTarget::Grid;   // what moves snap to while Ctrl is held
     Symmetry symmetry;                    // live symmetry: transforms mirror each point's partner
+    SoftSelection soft;                   // soft selection: transforms carry the points around partly
     Edge activeEdge = Edge::U1;           // the selected patch's edge nearest the last surface click (extrude, unjoin)
     ExportOptions exportOptions;
 

@@ -150,7 +150,7 @@ struct UnionFind {
 // Local support (SolverOptions::localRings): every patch point farther than `rings` patches (through
 // shared points and joins) from a patch holding a fixed point is frozen too. Points of no patch (nets, curves)
 // stay free. With no fixed point on any patch nothing is frozen.
-void freezeOutside(const Document& doc, std::vector<char>& fixed, int rings) {
+void freezeOutside(const Document& doc, std::vector<char>& fixed, int rings, const std::vector<uint32_t>& seeds) {
     const size_t n = fixed.size();
     std::vector<std::vector<uint32_t>> patchesOf(n);
     for (uint32_t p = 0; p < doc.patches.size(); ++p)
@@ -158,10 +158,14 @@ void freezeOutside(const Document& doc, std::vector<char>& fixed, int rings) {
             if (i < n && (patchesOf[i].empty() || patchesOf[i].back() != p)) patchesOf[i].push_back(p);
     std::vector<char> inRegion(doc.patches.size(), 0);
     std::vector<uint32_t> frontier;
+    const auto seed = [&](size_t i) {
+        for (uint32_t p : patchesOf[i])
+            if (!inRegion[p]) inRegion[p] = 1, frontier.push_back(p);
+    };
     for (size_t i = 0; i < n; ++i)
-        if (fixed[i])
-            for (uint32_t p : patchesOf[i])
-                if (!inRegion[p]) inRegion[p] = 1, frontier.push_back(p);
+        if (fixed[i]) seed(i);
+    for (uint32_t i : seeds)
+        if (i < n) seed(i);
     if (frontier.empty()) return;                                   // nothing fixed on a patch: the whole model takes part
     std::vector<std::vector<uint32_t>> joined(doc.patches.size());  // joins whose edges are stored twice share no point
     for (const Join& j : doc.joins)
@@ -370,7 +374,7 @@ DragSolver::DragSolver(const Document& doc, std::vector<uint32_t> fixedPoints, S
         return;
     }
     std::vector<char> frozen = setup->fixed;
-    freezeOutside(doc, frozen, options.localRings);
+    freezeOutside(doc, frozen, options.localRings, options.regionPoints);
     build(*impl_, *setup, frozen);
     setup_ = std::move(setup);
 }

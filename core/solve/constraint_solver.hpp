@@ -30,6 +30,9 @@ struct SolverOptions {
     // regular grid (a cubic B-spline's support is four patches). When the region cannot hold the
     // joins, project() widens it to the whole model before it reports a conflict. 0: global.
     int localRings = 3;
+    // Points that seed the local region like fixed ones without being fixed: what a soft selection
+    // moves partly (the joins around them must be held too).
+    std::vector<uint32_t> regionPoints;
 };
 
 // What one projection reached: the largest remaining constraint residual and, when the constraints

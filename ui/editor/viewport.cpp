@@ -103,7 +103,15 @@ void Editor::viewportInput() {
     }
 
     // Step 3: navigation — wheel zoom, middle orbit / Shift+middle pan, Alt+left orbit.
-    if (!overUi && mouseValid && io.MouseWheel != 0.0f) zoomCamera(cam_, io.MouseWheel);
+    // While a transform runs with soft selection, the wheel sets its radius (Blender's); else it zooms.
+    const bool transforming = mode_ == Interaction::Grab || mode_ == Interaction::DragPoints;
+    if (!overUi && mouseValid && io.MouseWheel != 0.0f && transforming && drag_.soft().on) {
+        drag_.setSoftRadius(doc_, drag_.soft().radius * std::pow(1.15, -double(io.MouseWheel)));
+        session_.soft.radius = drag_.soft().radius;  // the next transform starts with it
+        updateDrag(mx, my);
+    } else if (!overUi && mouseValid && io.MouseWheel != 0.0f) {
+        zoomCamera(cam_, io.MouseWheel);
+    }
     if (mode_ == Interaction::None && !overUi && mouseValid) {
         if (ImGui::IsMouseClicked(ImGuiMouseButton_Middle))
             mode_ = io.KeyShift ? Interaction::Pan : Interaction::Orbit;
@@ -216,8 +224,13 @@ void Editor::viewportInput() {
 
 void Editor::beginDrag(bool grab, TransformKind kind, int axis) {
     // An on-curve point carries its tangent handles (core/model/document.hpp: withCurveHandles).
-    TransformStart start{
-        withCurveHandles(doc_, session_.selectedPoints()), session_.transformPivot(), kind, grab, session_.snap, session_.symmetry};
+    TransformStart start{withCurveHandles(doc_, session_.selectedPoints()),
+                         session_.transformPivot(),
+                         kind,
+                         grab,
+                         session_.snap,
+                         session_.symmetry,
+                         session_.soft};
     // A move started on a point carries that point (it is what snaps); G moves the pivot.
     if (kind == TransformKind::Move && !grab && hovered_ >= 0 && size_t(hovered_) < doc_.points.size())
         start.pivot = doc_.points[size_t(hovered_)];

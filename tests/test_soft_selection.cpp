@@ -1,0 +1,124 @@
+// Soft selection (issue 40, item 6; core/select/soft_selection, DragController and the transform
+// commands): the points around the moved ones follow by the falloff of their distance along the
+// control nets and across joins, never through space to an unconnected part, and the joins hold.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "core/construct/model_builders.hpp"
+#include "core/edit/drag_controller.hpp"
+#include "core/edit/edit_session.hpp"
+#include "core/model/camera_math.hpp"
+#include "core/select/soft_selection.hpp"
+#include "core/solve/constraint_solver.hpp"
+#include "support.hpp"
+
+using namespace pw;
+
+namespace {
+
+// Point (r, c) of makePatchGrid's (3 rows + 1) x (3 cols + 1) lattice.
+uint32_t lat(int cols, int r, int c) { return uint32_t(r * (3 * cols + 1) + c); }
+
+}  // namespace
+
+TEST(SoftSelection, FalloffsRunFromOneToZeroAtTheRadius) {
+    for (Falloff f : {Falloff::Smooth, Falloff::Linear, Falloff::Sharp, Falloff::Constant}) {
+        const SoftSelection s{true, 2.0, f};
+        EXPECT_DOUBLE_EQ(falloffWeight(s, 0.0), 1.0) << falloffName(f);
+        EXPECT_EQ(falloffWeight(s, 2.0), 0.0) << falloffName(f);
+        EXPECT_EQ(falloffWeight(s, 3.0), 0.0) << falloffName(f);
+        double last = 1.0;
+        for (double d = 0.1; d < 2.0; d += 0.1) {
+            const double w = falloffWeight(s, d);
+            EXPECT_LE(w, last + 1e-15) << falloffName(f);  // never rises with distance
+            EXPECT_GT(w, 0.0) << falloffName(f);
+            last = w;
+        }
+        EXPECT_EQ(parseFalloff(falloffName(f)), f);
+    }
+    EXPECT_NEAR(falloffWeight({true, 2.0, Falloff::Linear}, 0.5), 0.75, 1e-15);
+    EXPECT_NEAR(falloffWeight({true, 2.0, Falloff::Sharp}, 1.0), 0.25, 1e-15);
+    EXPECT_NEAR(falloffWeight({true, 2.0, Falloff::Smooth}, 1.0), 0.5, 1e-15);
+}
+
+TEST(SoftSelection, AMoveCarriesThePointsAroundAcrossJoinsAndHoldsThem) {
+    EditSession s;
+    s.doc = makePatchGrid(6, 6, Continuity::C1);
+    const Document before = s.doc;
+    const uint32_t corner = lat(6, 9, 9);  // a point where four patches meet
+    test::runEditScript(s, "soft 2 smooth; select point " + std::to_string(corner) + "; move 0 0 1");
+    EXPECT_NEAR(s.doc.points[corner].z - before.points[corner].z, 1.0, 1e-9);
+    size_t partly = 0, far = 0;
+    for (int r = 0; r <= 18; ++r)
+        for (int c = 0; c <= 18; ++c) {
+            const uint32_t i = lat(6, r, c);
+            const double dz = s.doc.points[i].z - before.points[i].z;
+            const double away = std::hypot(r - 9, c - 9) / 3.0;  // model units from the moved point
+            if (i != corner && away < 1.5 && dz > 1e-3 && dz < 1.0) ++partly;
+            if (away > 3.5 && std::abs(dz) > 1e-12) ++far;
+        }
+    EXPECT_GT(partly, 20u);  // the neighbourhood rose with it, in four patches and across their joins
+    EXPECT_EQ(far, 0u);      // nothing beyond the radius (and the solver's reach) moved
+    EXPECT_LE(maxConstraintResidual(s.doc), 1e-9 * modelSize(s.doc));
+    // Off again: the same move carries the point alone (and what the joins force).
+    EditSession plain;
+    plain.doc = before;
+    test::runEditScript(plain, "soft 2; soft off; select point " + std::to_string(corner) + "; move 0 0 1");
+    EXPECT_LT(std::abs(plain.doc.points[lat(6, 9, 12)].z - before.points[lat(6, 9, 12)].z), 1e-9);
+}
+
+TEST(SoftSelection, DistanceRunsAlongTheNetsNotThroughSpace) {
+    EditSession s;
+    // Two patches 0.2 apart, neither joined nor sharing a point.
+    test::runEditScript(s, "cursor 0 0 0; add-patch; cursor 1.2 0 0; add-patch");
+    ASSERT_EQ(s.doc.patches.size(), 2u);
+    const Document before = s.doc;
+    const uint32_t edgePoint = s.doc.patches[0].idx[size_t(edgeSlot(Edge::U1, 1))];
+    test::runEditScript(s, "soft 5 linear; select point " + std::to_string(edgePoint) + "; move 0 0 0.5");
+    for (uint32_t i : s.doc.patches[1].idx) EXPECT_EQ(s.doc.points[i], before.points[i]);
+    size_t moved = 0;
+    for (uint32_t i : s.doc.patches[0].idx) moved += s.doc.points[i] != before.points[i] ? 1 : 0;
+    EXPECT_EQ(moved, 16u);
+}
+
+TEST(SoftSelection, ADragFollowsTheRadiusAndSaysHowFarItReached) {
+    Document doc = makePatchGrid(8, 8, Continuity::C1);
+    DragView view;
+    view.width = 800, view.height = 600;
+    view.camera = frameBounds(view.camera, computeBounds(doc.points), 800.0 / 600.0);
+    const uint32_t corner = lat(8, 12, 12);
+    DragController drag;
+    TransformStart start{{corner}, doc.points[corner], TransformKind::Move, true};
+    start.soft = SoftSelection{true, 1.0, Falloff::Smooth};
+    ASSERT_TRUE(drag.begin(doc, start, view, 400, 300));
+    const size_t small = drag.softCount();
+    EXPECT_GT(small, 8u);
+    drag.setAxis(2);
+    ASSERT_TRUE(drag.update(doc, view, 400, 280, false));
+    EXPECT_TRUE(drag.projection().ok());
+    EXPECT_LE(maxConstraintResidual(doc), 1e-6 * modelSize(doc));
+    EXPECT_GT(drag.lastMovedCount(), small / 2);
+    EXPECT_NE(drag.status().find("points moved"), std::string::npos) << drag.status();
+    EXPECT_NE(drag.status().find("soft 1 smooth"), std::string::npos) << drag.status();
+    // The wheel: a larger radius takes more points, and the joins still hold.
+    drag.setSoftRadius(doc, 2.5);
+    EXPECT_GT(drag.softCount(), 3 * small);
+    ASSERT_TRUE(drag.update(doc, view, 400, 270, false));
+    EXPECT_TRUE(drag.projection().ok());
+    EXPECT_LE(maxConstraintResidual(doc), 1e-6 * modelSize(doc));
+    drag.cancel(doc);
+}
+
+TEST(SoftSelection, BadSettingsAreRefused) {
+    EditSession s;
+    for (const char* bad : {"soft", "soft -1", "soft 0", "soft 1 wobbly", "soft nan", "soft 1 smooth extra"}) {
+        EXPECT_THROW(test::runEditScript(s, bad), std::exception) << bad;
+        EXPECT_FALSE(s.soft.on) << bad;
+    }
+    test::runEditScript(s, "soft 0.5 sharp");
+    EXPECT_EQ(s.soft, (SoftSelection{true, 0.5, Falloff::Sharp}));
+    test::runEditScript(s, "soft toggle");
+    EXPECT_FALSE(s.soft.on);
+}
