@@ -239,3 +239,15 @@ TEST(Commands, SaveGoesThroughTheHostAndSplitExtrudeWork) {
     EXPECT_EQ(s.path(), "my file.patchwork");
     EXPECT_FALSE(s.isModified());
 }
+
+TEST(Commands, ATransformSaysHowFarItReached) {
+    EditSession s;
+    RecordingHost host;
+    const CommandTable t = makeCommandTable();
+    // Patch 0 raised, its C1 neighbour's tangent row follows: more points move than were selected.
+    t.runScript(s, host, "add-patch; extrude u1; select patch 0; move 0 0 1", "x");
+    ASSERT_FALSE(host.statuses.empty());
+    EXPECT_NE(host.statuses.back().find("20 points moved (16 selected)"), std::string::npos) << host.statuses.back();
+    t.runScript(s, host, "soft 0.5; select patch 0; move 0 0 1", "x");
+    EXPECT_NE(host.statuses.back().find("within the soft 0.5 smooth"), std::string::npos) << host.statuses.back();
+}

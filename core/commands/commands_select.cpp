@@ -93,7 +93,7 @@ void transformSelection(CommandContext& ctx, const std::string& label, const std
     if (moved.empty()) throw EditError("nothing is selected (select points, a patch, a net, a triangle or a curve first)");
     if (const std::string why = constructedPointsRefusal(ctx.session.doc, moved); !why.empty()) throw EditError(why);
     const Symmetry sym = ctx.session.symmetry;
-    size_t around = 0;
+    size_t around = 0, reached = 0;
     ctx.session.apply(
         label,
         [&](Document& d) {
@@ -115,11 +115,15 @@ void transformSelection(CommandContext& ctx, const std::string& label, const std
             applySymmetry(d.points, pairs, sym);
             if (!d.constructions.empty()) rerunConstructions(d);  // surfaces made from moved curves follow
             if (const Projection p = solver.project(d.points); !p.ok()) throw EditError("the joins cannot follow: " + conflictMessage(p));
+            const Document& was = ctx.session.doc;
+            for (size_t i = 0; i < d.points.size() && i < was.points.size(); ++i) reached += d.points[i] != was.points[i] ? 1 : 0;
         },
         false);
-    if (around > 0)
-        ctx.host.status(label + ": " + std::to_string(moved.size()) + " points and " + std::to_string(around) + " around them (" +
-                        softDescription(ctx.session.soft) + ")");
+    // How far the edit reached: the selection, its soft share and what the joins forced.
+    std::string what = label + ": " + std::to_string(reached) + (reached == 1 ? " point moved" : " points moved") + " (" +
+                       std::to_string(moved.size()) + " selected";
+    if (around > 0) what += ", " + std::to_string(around) + " within the " + softDescription(ctx.session.soft);
+    ctx.host.status(what + ")");
 }
 
 }  // namespace
