@@ -242,3 +242,37 @@ TEST(Joins, LiveSymmetryJoinsTheMirrorImagesToo) {
         EXPECT_TRUE(found) << i;
     }
 }
+
+TEST(Blends, FarSidesStayWithinTheFileAndWeightedSidesAreRefused) {
+    EditSession s;
+    test::runEditScript(s, "add-patch; cursor 5000 0 0; add-patch; blend 0:u1 1:u0 G1");
+    for (double a : s.doc.constructions.at(0).endAlpha) EXPECT_LE(a, 1e3);
+    EXPECT_NO_THROW(parseDocument(serializeDocument(s.doc), "far.patchwork"));  // the file reopens
+    EditSession w;
+    test::runEditScript(w, "add-patch; cursor 3 0 0; add-patch; select point 5; weight 2");
+    const Document before = w.doc;
+    EXPECT_TRUE(refused(w, "blend 0:u0 1:u0 G1", "rational"));
+    EXPECT_EQ(w.doc, before);
+}
+
+TEST(EditInvariants, ImportKeepsTheJoinsItsFileHasAsDetected) {
+    // The teaspoon's seams are joined by detection within 1e-4 of its size, not 1e-6: importing it
+    // is taken like opening it.
+    EditSession s;
+    test::runEditScript(s, "add-patch");
+    ASSERT_NO_THROW(s.import((test::dataDir() / "teaspoon.bpt").string()));
+    EXPECT_GT(s.doc.joins.size(), 0u);
+}
+
+TEST(Splits, ASplitThroughALiveSurfacesInputIsRefusedAndItsFarEdgeFollows) {
+    EditSession s;
+    test::runEditScript(s, "add-patch; curve-through 2,-0.5,0 2,0.5,0.5; edge-surface 0:u1 c0");
+    const Document before = s.doc;
+    EXPECT_TRUE(refused(s, "split-ring 0 v 0.5", "bake that surface first"));  // the cut crosses edge u1
+    EXPECT_EQ(s.doc, before);
+    test::runEditScript(s, "split-ring 0 u 0.4");  // u1 goes to the second half, whole
+    const Construction& k = s.doc.constructions.at(0);
+    EXPECT_NE(k.inputs[0].patch, 0u);
+    EXPECT_TRUE(k.error.empty()) << k.error;
+    EXPECT_LE(maxConstraintResidual(s.doc), 1e-9 * modelSize(s.doc));
+}

@@ -122,3 +122,20 @@ TEST(SoftSelection, BadSettingsAreRefused) {
     test::runEditScript(s, "soft toggle");
     EXPECT_FALSE(s.soft.on);
 }
+
+TEST(SoftSelection, LiveSymmetryMirrorsTheSoftShareToo) {
+    EditSession s;
+    s.doc = makePatchGrid(2, 6, Continuity::C1);  // x over [0, 6]: the plane x = 3 halves it
+    for (Vec3& p : s.doc.points) p.z = 0.0;       // flat, so each point has its mirror image
+    const Document before = s.doc;
+    const uint32_t left = lat(6, 3, 6);  // x = 2, y = 1
+    test::runEditScript(s, "cursor 3 0 0; symmetry X; soft 1.5 linear; select point " + std::to_string(left) + "; move 0 0 0.6");
+    // Every point and its mirror image across x = 3 rose alike.
+    for (int r = 0; r <= 6; ++r)
+        for (int c = 0; c <= 18; ++c) {
+            const uint32_t i = lat(6, r, c), m = lat(6, r, 18 - c);
+            EXPECT_NEAR(s.doc.points[i].z - before.points[i].z, s.doc.points[m].z - before.points[m].z, 1e-9) << r << " " << c;
+        }
+    EXPECT_GT(s.doc.points[lat(6, 3, 5)].z - before.points[lat(6, 3, 5)].z, 0.1);  // a soft neighbour rose
+    EXPECT_LE(maxConstraintResidual(s.doc), 1e-9 * modelSize(s.doc));
+}

@@ -210,8 +210,9 @@ void addModelCommands(CommandTable& t) {
                EditSession& s = ctx.session;
                const std::vector<uint32_t> selected = s.selectedPoints();
                MirrorResult made;
-               s.apply("Mirror " + std::string(1, char('X' + axis)),
-                       [&](Document& d) { made = mirrorItems(d, selected, axis, s.cursor[axis]); });
+               s.apply(
+                   "Mirror " + std::string(1, char('X' + axis)),
+                   [&](Document& d) { made = mirrorItems(d, selected, axis, s.cursor[axis]); }, true, true);
                s.sel.clear();
                s.sel.points = made.points;
                if (made.patches.size() == 1) s.sel.patch = int(made.patches[0]);
@@ -269,7 +270,8 @@ void addModelCommands(CommandTable& t) {
                "Join an edge of patch A to an edge of patch B (edges u0 v0 u1 v1) with C0, C1, G1, C2 or G2 continuity, held while you "
                "drag; B is turned to lie beyond the seam with agreeing normals, and when the edges do not meet A stays and B's boundary, "
                "tangent (and for C2/G2 third) rows move onto it (Match). G1 and G2 keep the shape parameters measured when joining; "
-               "on two edges joined already it changes the join's continuity in place (A's side stays). A join that cannot hold "
+               "on two edges joined already it changes the join's continuity in place (the side that joined first stays). A join that "
+               "cannot hold "
                "together with the others, or only by folding a patch, is refused, naming them, and the document stays as it was",
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 3, 3);

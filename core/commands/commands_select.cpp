@@ -97,11 +97,13 @@ void transformSelection(CommandContext& ctx, const std::string& label, const std
     ctx.session.apply(
         label,
         [&](Document& d) {
-            const SymmetryPairs pairs = symmetryPairs(d, moved, sym);
-            const std::vector<uint32_t> driven = pairs.driven(moved);
             // Soft selection: the points around take their share (the solver may still move them,
-            // and holds the joins around them too).
-            const SoftWeights soft = softWeights(d, moved, ctx.session.soft);
+            // and holds the joins around them too); under symmetry their partners follow as well.
+            const SoftWeights soft = softWeights(d, moved, ctx.session.soft, sym);
+            std::vector<uint32_t> mirrored = moved;
+            mirrored.insert(mirrored.end(), soft.points.begin(), soft.points.end());
+            const SymmetryPairs pairs = symmetryPairs(d, mirrored, sym);
+            const std::vector<uint32_t> driven = pairs.driven(moved);
             SolverOptions options;
             options.regionPoints = soft.points;
             const DragSolver solver(d, withConstructionPoints(d, driven), options);

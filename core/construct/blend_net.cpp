@@ -36,7 +36,12 @@ BlendSides blendSides(const Document& doc, const Construction& c) {
     if (c.inputs.size() != 2) throw EditError("a blend bridges two patch edges");
     for (const CurveInput& in : c.inputs) {
         if (in.curve >= 0) throw EditError("a blend bridges patch edges; " + curveInputName(in) + " is a curve");
-        inputShape(doc, in);  // the patch exists and is Bézier
+        // The patch exists and is Bézier; a weighted (rational) side is refused: with weights the
+        // rows' Cartesian conditions are not the surface's G1/G2.
+        for (int d = 0; d < 3; ++d)
+            for (const HPoint& h : d == 0 ? inputShape(doc, in).points : inputTangentRow(doc, in, d))
+                if (h.w != 1.0)
+                    throw EditError("edge " + curveInputName(in) + " is rational (weighted points); a blend needs polynomial sides");
     }
     if (c.ends[0] != c.ends[1] || (c.ends[0] != Continuity::G1 && c.ends[0] != Continuity::G2))
         throw EditError("a blend is G1 or G2 at both ends");
@@ -79,8 +84,9 @@ int spansOf(const Construction& c) { return c.ends[0] == Continuity::G2 ? 3 : 1;
 
 void chooseBlendAlphas(const Document& doc, Construction& c) {
     const BlendSides s = blendSides(doc, c);
+    // Kept within the range the file reader takes (a gap far smaller or larger than the tangent rows).
     const double third = s.gap / (3.0 * spansOf(c));
-    c.endAlpha = {third / s.ta, third / s.tb};
+    c.endAlpha = {std::clamp(third / s.ta, 1e-3, 1e3), std::clamp(third / s.tb, 1e-3, 1e3)};
 }
 
 ConstructedNet blendNet(const Document& doc, const Construction& c) {

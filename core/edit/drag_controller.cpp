@@ -64,9 +64,12 @@ bool DragController::begin(const Document& doc, const TransformStart& start, con
     uploaded_ = doc.points;
     moved_ = start.points;
     symmetry_ = start.symmetry;
-    pairs_ = symmetryPairs(doc, moved_, symmetry_);
     soft_ = start.soft;
-    softPoints_ = softWeights(doc, moved_, soft_);
+    softPoints_ = softWeights(doc, moved_, soft_, symmetry_);
+    // Under symmetry the soft points' mirror partners follow too.
+    std::vector<uint32_t> mirrored = moved_;
+    mirrored.insert(mirrored.end(), softPoints_.points.begin(), softPoints_.points.end());
+    pairs_ = symmetryPairs(doc, mirrored, symmetry_);
     const std::vector<uint32_t> driven = pairs_.driven(moved_);
     movedMask_.assign(doc.points.size(), false);
     for (uint32_t p : driven)
@@ -245,10 +248,17 @@ void DragController::setSoftRadius(const Document& doc, double radius) {
     soft_.radius = radius;
     Document at = doc;
     at.points = start_;  // distances along the nets as they were at the start
-    softPoints_ = softWeights(at, moved_, soft_);
+    softPoints_ = softWeights(at, moved_, soft_, symmetry_);
+    std::vector<uint32_t> mirrored = moved_;
+    mirrored.insert(mirrored.end(), softPoints_.points.begin(), softPoints_.points.end());
+    pairs_ = symmetryPairs(at, mirrored, symmetry_);
+    const std::vector<uint32_t> driven = pairs_.driven(moved_);
+    movedMask_.assign(at.points.size(), false);
+    for (uint32_t p : driven)
+        if (p < movedMask_.size()) movedMask_[p] = true;
     SolverOptions options;
     options.regionPoints = softPoints_.points;
-    solver_ = std::make_unique<DragSolver>(at, withConstructionPoints(at, pairs_.driven(moved_)), options);
+    solver_ = std::make_unique<DragSolver>(at, withConstructionPoints(at, driven), options);
 }
 
 std::string DragController::status() const {

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "core/base/errors.hpp"
+#include "core/model/join_detect.hpp"
 #include "core/solve/constraint_solver.hpp"
 
 namespace pw {
@@ -16,8 +17,9 @@ std::string number(double v) {
     return buf;
 }
 
-void checkJoins(const Document& before, const Document& after) {
-    const double tol = joinTolerance(after);
+void checkJoins(const Document& before, const Document& after, bool detected) {
+    const double tol =
+        detected ? std::max(joinTolerance(after), JoinDetectOptions{}.relativeTolerance * modelSize(after)) : joinTolerance(after);
     const JoinResiduals r = joinResiduals(after);
     double worst = r.netSeams;
     for (double v : r.perJoin) worst = std::max(worst, v);
@@ -46,6 +48,6 @@ std::string describeJoin(const Document& doc, size_t j) {
            std::to_string(jn.patchB) + " " + std::string(edgeName(jn.edgeB)) + ", " + std::string(continuityName(jn.continuity)) + ")";
 }
 
-void checkEditInvariants(const Document& before, const Document& after) { checkJoins(before, after); }
+void checkEditInvariants(const Document& before, const Document& after, bool detected) { checkJoins(before, after, detected); }
 
 }  // namespace pw

@@ -17,7 +17,8 @@ double joinTolerance(const Document& doc);
 std::string describeJoin(const Document& doc, size_t j);
 
 // Throws EditError when `after` leaves a join outside joinTolerance, unless the document before
-// was already that far off and the edit made it no worse.
-void checkEditInvariants(const Document& before, const Document& after);
+// was already that far off and the edit made it no worse. `detected`: the edit brought in joins
+// found by join detection (import, mirror), held to detection's own tolerance (1e-4 × model size).
+void checkEditInvariants(const Document& before, const Document& after, bool detected = false);
 
 }  // namespace pw

@@ -69,10 +69,13 @@ MergedRange EditSession::import(const std::string& path) {
     const Document from = loadDocument(path);
     MergedRange r;
     // Beside what is there, never inside it (the file's own coordinates where they are clear).
-    apply("Import " + std::filesystem::path(path).filename().string(), [&](Document& d) {
-        r = mergeDocument(d, from);
-        moveClearOfExisting(d, r.firstPoint);
-    });
+    apply(
+        "Import " + std::filesystem::path(path).filename().string(),
+        [&](Document& d) {
+            r = mergeDocument(d, from);
+            moveClearOfExisting(d, r.firstPoint);
+        },
+        true, true);
     // The imported content arrives selected: its points, and the patch when it is the only thing.
     sel.clear();
     for (uint32_t i = 0; i < r.pointCount; ++i) sel.points.push_back(r.firstPoint + i);
@@ -100,11 +103,11 @@ bool EditSession::step(bool forward) {
     return true;
 }
 
-void EditSession::apply(const std::string& label, const std::function<void(Document&)>& op, bool topology) {
+void EditSession::apply(const std::string& label, const std::function<void(Document&)>& op, bool topology, bool detected) {
     Document d = doc;
     op(d);
     std::vector<std::string> notes = refreshConstructions(d);
-    checkEditInvariants(doc, d);
+    checkEditInvariants(doc, d, detected);
     notes_.insert(notes_.end(), notes.begin(), notes.end());
     doc = std::move(d);
     commit(label);

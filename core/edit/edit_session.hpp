@@ -67,7 +67,9 @@ public:
     // from their inputs with the joins held (core/edit/live_constructions.hpp), the copy becomes the
     // document and one undo step. When either throws, the document is unchanged and the exception
     // goes on.
-    void apply(const std::string& label, const std::function<void(Document&)>& op, bool topology = true);
+    // `detected`: the edit brings in joins found by join detection (import, mirror), which may be
+    // off by detection's own tolerance (1e-4 × model size) like a file that is opened.
+    void apply(const std::string& label, const std::function<void(Document&)>& op, bool topology = true, bool detected = false);
 
     // The document as it is saved: doc with the session's camera.
     Document documentToSave() const;

@@ -41,7 +41,7 @@ void readConstructions(const json_reader::Reader& r, const json& v, Document& do
         const json& o = r.object(list[k], path);
         Construction c;
         c.kind = r.named<ConstructionKind>(*r.member(o, path, "kind", true), at(path, "kind"), parseConstructionKind,
-                                           "revolve, extrude, loft, edge-surface, sweep1, sweep2, network");
+                                           "revolve, extrude, loft, edge-surface, sweep1, sweep2, network, blend");
         const std::string ip = at(path, "inputs");
         const json& inputs = r.array(*r.member(o, path, "inputs", true), ip, limits::kMaxPatches, "inputs");
         if (inputs.empty()) r.fail(ip, "a construction needs at least one input");

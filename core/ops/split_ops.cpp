@@ -8,6 +8,7 @@
 
 #include "core/base/errors.hpp"
 #include "core/eval/rational_eval.hpp"
+#include "core/model/construction_refs.hpp"
 #include "core/model/topology.hpp"
 #include "core/ops/join_ops.hpp"
 #include "core/ops/patch_ops.hpp"
@@ -73,13 +74,18 @@ std::vector<RingCut> splitRingOf(const Document& doc, uint32_t p, bool alongU, d
     if (!(t > 1e-6 && t < 1.0 - 1e-6)) throw EditError("split parameter must lie strictly between 0 and 1");
     std::vector<RingCut> ring{{p, alongU, t}};
     std::unordered_map<uint32_t, size_t> seen{{p, 0}};
+    std::unordered_map<uint64_t, size_t> joinOn;  // patch·4 + edge → its join, built once (findJoin scans)
+    for (size_t j = 0; j < doc.joins.size(); ++j) {
+        joinOn.emplace(uint64_t(doc.joins[j].patchA) * 4 + uint64_t(doc.joins[j].edgeA), j);
+        joinOn.emplace(uint64_t(doc.joins[j].patchB) * 4 + uint64_t(doc.joins[j].edgeB), j);
+    }
     for (size_t i = 0; i < ring.size(); ++i) {
         const RingCut cut = ring[i];
         for (Edge e : {Edge::U0, Edge::U1, Edge::V0, Edge::V1}) {
             if (!crossedBy(cut.alongU, e)) continue;
-            const int j = findJoin(doc, cut.patch, e);
-            if (j < 0) continue;
-            const Join& jn = doc.joins[size_t(j)];
+            const auto found = joinOn.find(uint64_t(cut.patch) * 4 + uint64_t(e));
+            if (found == joinOn.end()) continue;
+            const Join& jn = doc.joins[found->second];
             const bool isA = jn.patchA == cut.patch && jn.edgeA == e;
             const uint32_t q = isA ? jn.patchB : jn.patchA;
             const Edge eq = isA ? jn.edgeB : jn.edgeA;
@@ -107,11 +113,26 @@ std::vector<RingCut> splitRingOf(const Document& doc, uint32_t p, bool alongU, d
 std::vector<std::pair<RingCut, uint32_t>> splitRing(Document& doc, uint32_t p, bool alongU, double t) {
     const std::vector<RingCut> ring = splitRingOf(doc, p, alongU, t);
     std::unordered_map<uint32_t, std::pair<RingCut, uint32_t>> cutOf;  // patch → its cut and second half
+    // A live construction whose input is an edge of a cut patch: the far edge moves to the second
+    // half with it; an edge the cut crosses would become two, so the split is refused.
+    for (Construction& k : doc.constructions)
+        for (CurveInput& in : k.inputs) {
+            if (in.curve >= 0) continue;
+            const auto c = std::find_if(ring.begin(), ring.end(), [&](const RingCut& r) { return r.patch == in.patch; });
+            if (c == ring.end() || !crossedBy(c->alongU, in.edge)) continue;
+            throw EditError("the split would cut edge " + curveInputName(in) +
+                            ", an input of a live surface; bake that surface first (bake), or split elsewhere");
+        }
     std::vector<std::pair<RingCut, uint32_t>> made;
     for (const RingCut& c : ring) {
         made.emplace_back(c, splitGeometry(doc, c.patch, c.alongU, c.t));
         cutOf.emplace(c.patch, made.back());
     }
+    for (Construction& k : doc.constructions)
+        for (CurveInput& in : k.inputs)
+            if (const auto c = cutOf.find(in.patch);
+                in.curve < 0 && c != cutOf.end() && in.edge == (c->second.first.alongU ? Edge::U1 : Edge::V1))
+                in.patch = c->second.second;
     std::vector<Join> joins;
     std::vector<Join> across;
     std::vector<size_t> rescaled;  // joins whose rows a cut shortened
@@ -119,7 +140,10 @@ std::vector<std::pair<RingCut, uint32_t>> splitRing(Document& doc, uint32_t p, b
         const auto ca = cutOf.find(j.patchA), cb = cutOf.find(j.patchB);
         const bool crossA = ca != cutOf.end() && crossedBy(ca->second.first.alongU, j.edgeA);
         const bool crossB = cb != cutOf.end() && crossedBy(cb->second.first.alongU, j.edgeB);
-        if (crossA != crossB) throw std::logic_error("splitRing: a join crossed on one side only");
+        if (crossA != crossB)
+            throw EditError("the split meets an edge joined twice (patch " + std::to_string(j.patchA) + " " +
+                            std::string(edgeName(j.edgeA)) + ", patch " + std::to_string(j.patchB) + " " + std::string(edgeName(j.edgeB)) +
+                            "); unjoin one of them first");
         if (crossA) {
             // A's first half (parameters 0..t along the edge) meets B's first half, or its second
             // when the join pairs the points reversed; the cross-boundary rows split alike, so α and

@@ -79,7 +79,7 @@ double falloffWeight(const SoftSelection& s, double d) {
     return 0.0;
 }
 
-SoftWeights softWeights(const Document& doc, const std::vector<uint32_t>& moved, const SoftSelection& s) {
+SoftWeights softWeights(const Document& doc, const std::vector<uint32_t>& moved, const SoftSelection& s, const Symmetry& sym) {
     SoftWeights out;
     if (!s.on || !(s.radius > 0.0) || moved.empty()) return out;
     const std::vector<std::vector<uint32_t>> adj = netNeighbours(doc);
@@ -101,8 +101,22 @@ SoftWeights softWeights(const Document& doc, const std::vector<uint32_t>& moved,
             if (nd < dist[q] && nd < s.radius) dist[q] = nd, queue.push({nd, q});
         }
     }
+    // The side of the symmetry plane the moved points are on (0: both, or no symmetry).
+    const double tol = 1e-6 * std::max(modelSize(doc), 1e-9);
+    int side = 0;
+    if (sym.on())
+        for (uint32_t p : moved) {
+            const double d = p < doc.points.size() ? doc.points[p][sym.axis] - sym.offset : 0.0;
+            const int sd = d > tol ? 1 : d < -tol ? -1 : 0;
+            if (sd == 0) continue;
+            if (side != 0 && sd != side) {
+                side = 0;
+                break;
+            }
+            side = sd;
+        }
     for (uint32_t i = 0; i < dist.size(); ++i)
-        if (!isMoved[i] && dist[i] < s.radius) {
+        if (!isMoved[i] && dist[i] < s.radius && (side == 0 || (doc.points[i][sym.axis] - sym.offset) * side >= -tol)) {
             const double w = falloffWeight(s, dist[i]);
             if (w > 0.0) out.points.push_back(i), out.weights.push_back(w);
         }

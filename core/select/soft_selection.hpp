@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/model/document.hpp"
+#include "core/select/symmetry.hpp"
 
 namespace pw {
 
@@ -35,7 +36,9 @@ struct SoftWeights {
     std::vector<uint32_t> points;
     std::vector<double> weights;
 };
-SoftWeights softWeights(const Document& doc, const std::vector<uint32_t>& moved, const SoftSelection& s);
+// Under live symmetry (`sym` on) with the moved points on one side of the plane, only that side's
+// points (and those on the plane) are soft: the other side's follow as their mirror images.
+SoftWeights softWeights(const Document& doc, const std::vector<uint32_t>& moved, const SoftSelection& s, const Symmetry& sym = {});
 
 // "soft 0.5 smooth"
 std::string softDescription(const SoftSelection& s);

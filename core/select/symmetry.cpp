@@ -18,8 +18,12 @@ Vec3 reflect(Vec3 p, const Symmetry& s) {
 }  // namespace
 
 std::vector<uint32_t> SymmetryPairs::driven(const std::vector<uint32_t>& moved) const {
-    std::vector<uint32_t> out = moved;
-    for (const auto& pr : partners) out.push_back(pr.second);
+    std::vector<uint32_t> sorted = moved;
+    std::sort(sorted.begin(), sorted.end());
+    std::vector<uint32_t> out = sorted;
+    // Partners of the moved points only (pairs made for soft points too leave theirs free).
+    for (const auto& pr : partners)
+        if (std::binary_search(sorted.begin(), sorted.end(), pr.first)) out.push_back(pr.second);
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;

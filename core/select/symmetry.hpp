@@ -29,7 +29,7 @@ std::string symmetryName(const Symmetry& s);  // "off", "X", "Y", "Z"
 struct SymmetryPairs {
     std::vector<std::pair<uint32_t, uint32_t>> partners;  // (moved point, its mirror)
     std::vector<uint32_t> onPlane;
-    // The moved points and their partners, sorted: what the solver must hold fixed.
+    // The moved points and their own partners, sorted: what the solver must hold fixed.
     std::vector<uint32_t> driven(const std::vector<uint32_t>& moved) const;
 };
 SymmetryPairs symmetryPairs(const Document& doc, const std::vector<uint32_t>& moved, const Symmetry& s);

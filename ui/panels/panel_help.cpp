@@ -12,7 +12,7 @@ const std::vector<KeyHelp>& modalKeys() {
     static const std::vector<KeyHelp> keys{
         {"Middle drag", "Orbit the view"},
         {"Shift + middle drag", "Pan the view"},
-        {"Wheel", "Zoom"},
+        {"Wheel", "Zoom; while moving with soft selection on (O): the soft radius"},
         {"Alt + left drag", "Orbit (laptops)"},
         {"Left click", "Select a control point; on the surface: select the patch (nearest edge highlighted)"},
         {"Shift + left click", "Add / remove a point from the selection"},
