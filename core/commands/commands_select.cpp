@@ -8,6 +8,7 @@
 #include "core/base/errors.hpp"
 #include "core/commands/command_table.hpp"
 #include "core/construct/constructions.hpp"
+#include "core/edit/drag_controller.hpp"
 #include "core/edit/live_constructions.hpp"
 #include "core/solve/constraint_solver.hpp"
 
@@ -99,14 +100,9 @@ void transformSelection(CommandContext& ctx, const std::string& label, const std
         [&](Document& d) {
             // Soft selection: the points around take their share (the solver may still move them,
             // and holds the joins around them too); under symmetry their partners follow as well.
-            const SoftWeights soft = softWeights(d, moved, ctx.session.soft, sym);
-            std::vector<uint32_t> mirrored = moved;
-            mirrored.insert(mirrored.end(), soft.points.begin(), soft.points.end());
-            const SymmetryPairs pairs = symmetryPairs(d, mirrored, sym);
-            const std::vector<uint32_t> driven = pairs.driven(moved);
-            SolverOptions options;
-            options.regionPoints = soft.points;
-            const DragSolver solver(d, withConstructionPoints(d, driven), options);
+            const TransformSetup t = setUpTransform(d, moved, ctx.session.soft, sym);
+            const SoftWeights& soft = t.soft;
+            const std::vector<uint32_t>& driven = t.driven;
             around = soft.points.size();
             for (size_t k = 0; k < soft.points.size(); ++k) {
                 const uint32_t p = soft.points[k];
@@ -114,9 +110,10 @@ void transformSelection(CommandContext& ctx, const std::string& label, const std
                     d.points[p] = glm::mix(d.points[p], f(d.points[p]), soft.weights[k]);
             }
             for (uint32_t p : moved) d.points[p] = f(d.points[p]);
-            applySymmetry(d.points, pairs, sym);
+            applySymmetry(d.points, t.pairs, sym);
             if (!d.constructions.empty()) rerunConstructions(d);  // surfaces made from moved curves follow
-            if (const Projection p = solver.project(d.points); !p.ok()) throw EditError("the joins cannot follow: " + conflictMessage(p));
+            if (const Projection p = t.solver->project(d.points); !p.ok())
+                throw EditError("the joins cannot follow: " + conflictMessage(p));
             const Document& was = ctx.session.doc;
             for (size_t i = 0; i < d.points.size() && i < was.points.size(); ++i) reached += d.points[i] != was.points[i] ? 1 : 0;
         },

@@ -65,20 +65,7 @@ bool DragController::begin(const Document& doc, const TransformStart& start, con
     moved_ = start.points;
     symmetry_ = start.symmetry;
     soft_ = start.soft;
-    softPoints_ = softWeights(doc, moved_, soft_, symmetry_);
-    // Under symmetry the soft points' mirror partners follow too.
-    std::vector<uint32_t> mirrored = moved_;
-    mirrored.insert(mirrored.end(), softPoints_.points.begin(), softPoints_.points.end());
-    pairs_ = symmetryPairs(doc, mirrored, symmetry_);
-    const std::vector<uint32_t> driven = pairs_.driven(moved_);
-    movedMask_.assign(doc.points.size(), false);
-    for (uint32_t p : driven)
-        if (p < movedMask_.size()) movedMask_[p] = true;
-    // Live constructions: their surfaces and inputs stay where the constructions put them and
-    // their neighbours follow.
-    SolverOptions options;
-    options.regionPoints = softPoints_.points;  // the joins around the soft points are held too
-    solver_ = std::make_unique<DragSolver>(doc, withConstructionPoints(doc, driven), options);  // factorised once per transform
+    setUp(doc);
     anchor_ = start.pivot;
     Vec3 r, u, f;
     cameraAxes(view.camera, r, u, f);
@@ -248,17 +235,33 @@ void DragController::setSoftRadius(const Document& doc, double radius) {
     soft_.radius = radius;
     Document at = doc;
     at.points = start_;  // distances along the nets as they were at the start
-    softPoints_ = softWeights(at, moved_, soft_, symmetry_);
-    std::vector<uint32_t> mirrored = moved_;
-    mirrored.insert(mirrored.end(), softPoints_.points.begin(), softPoints_.points.end());
-    pairs_ = symmetryPairs(at, mirrored, symmetry_);
-    const std::vector<uint32_t> driven = pairs_.driven(moved_);
-    movedMask_.assign(at.points.size(), false);
-    for (uint32_t p : driven)
+    setUp(at);
+}
+
+void DragController::setUp(const Document& doc) {
+    TransformSetup t = setUpTransform(doc, moved_, soft_, symmetry_);
+    softPoints_ = std::move(t.soft);
+    pairs_ = std::move(t.pairs);
+    movedMask_.assign(doc.points.size(), false);
+    for (uint32_t p : t.driven)
         if (p < movedMask_.size()) movedMask_[p] = true;
+    solver_ = std::move(t.solver);
+}
+
+TransformSetup setUpTransform(const Document& doc, const std::vector<uint32_t>& moved, const SoftSelection& soft, const Symmetry& sym) {
+    TransformSetup t;
+    t.soft = softWeights(doc, moved, soft, sym);
+    // Under symmetry the soft points' mirror partners follow too; only the moved points' own are held.
+    std::vector<uint32_t> mirrored = moved;
+    mirrored.insert(mirrored.end(), t.soft.points.begin(), t.soft.points.end());
+    t.pairs = symmetryPairs(doc, mirrored, sym);
+    t.driven = t.pairs.driven(moved);
+    // Live constructions: their surfaces and inputs stay where the constructions put them and
+    // their neighbours follow; the joins around the soft points are held too.
     SolverOptions options;
-    options.regionPoints = softPoints_.points;
-    solver_ = std::make_unique<DragSolver>(at, withConstructionPoints(at, driven), options);
+    options.regionPoints = t.soft.points;
+    t.solver = std::make_unique<DragSolver>(doc, withConstructionPoints(doc, t.driven), options);
+    return t;
 }
 
 std::string DragController::status() const {

@@ -43,6 +43,18 @@ struct TransformStart {
     SoftSelection soft;                  // on: the points around follow partly (core/select/soft_selection.hpp)
 };
 
+// What a transform of `moved` drives, for drags and the transform commands alike: the soft points
+// around it and their shares, the mirror pairs of both under symmetry, the points the solver holds
+// (the moved ones and their own partners, sorted) and the solver, factorised once, whose local
+// region the soft points seed.
+struct TransformSetup {
+    SoftWeights soft;
+    SymmetryPairs pairs;
+    std::vector<uint32_t> driven;
+    std::unique_ptr<DragSolver> solver;
+};
+TransformSetup setUpTransform(const Document& doc, const std::vector<uint32_t>& moved, const SoftSelection& soft, const Symmetry& sym);
+
 class DragController {
 public:
     // Starts the transform with the mouse at (x, y). Returns false, starting nothing, when no point
@@ -109,6 +121,7 @@ private:
     std::vector<bool> movedMask_;  // what the transform drives: the moved points and their mirror partners
     Symmetry symmetry_;
     SymmetryPairs pairs_;
+    void setUp(const Document& doc);  // soft points, pairs, moved mask and solver from setUpTransform
     SoftSelection soft_;
     SoftWeights softPoints_;
     size_t lastMoved_ = 0;
