@@ -117,6 +117,8 @@ int runInfo(const InfoOptions& opt) {
                              {"continuity", continuityName(jn.continuity)},
                              {"alpha", jn.alpha},
                              {"beta2", jn.beta2},
+                             {"shear", jn.shear},
+                             {"alphaEnd", jn.alphaEnd},
                              {"c0Gap", c.c0Gap},
                              {"c1Residual", c.c1Residual},
                              {"c2Residual", c.c2Residual},

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <glm/vec2.hpp>
 
+#include <nlohmann/json.hpp>
 #include "core/eval/bezier_curve.hpp"
 #include "core/eval/patch_eval.hpp"
 #include "core/eval/rational_eval.hpp"
@@ -176,4 +177,53 @@ TEST(Examples, NetworkShellPassesThroughEveryCurve) {
                 EXPECT_LT(glm::length(at(std::min<size_t>(r, 2), seg, t, r < 3 ? 0.0 : 1.0) - curve(r, seg, t)), 1e-12);
                 EXPECT_LT(glm::length(at(seg, std::min<size_t>(r, 2), r < 3 ? 0.0 : 1.0, t) - curve(4 + r, seg, t)), 1e-12);
             }
+}
+
+namespace {
+
+// The largest normal angle over the seams, and the seam count, that `patchwork info --json` reports.
+std::pair<double, size_t> infoWorstAngle(const std::filesystem::path& file) {
+    const RunResult r = runCommand(patchworkBinary().string() + " info --json '" + file.string() + "' 2>&1");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    const nlohmann::json j = nlohmann::json::parse(r.output, nullptr, false);
+    double worst = 0.0;
+    size_t seams = 0;
+    if (!j.is_object() || !j.contains("joinReport")) {
+        ADD_FAILURE() << r.output;
+        return {0.0, 0};
+    }
+    for (const auto& join : j["joinReport"]) {
+        worst = std::max(worst, join["normalAngleDeg"].get<double>());
+        ++seams;
+    }
+    return {worst, seams};
+}
+
+}  // namespace
+
+TEST(Examples, RoundedBoxIsG1OnEverySeamBeforeAndAfterScriptedDrags) {
+    const Document doc = made("rounded_box");
+    ASSERT_EQ(doc.patches.size(), 54u);  // 6 faces, 12 blends split along their length, 8 corners of 3
+    ASSERT_EQ(doc.joins.size(), 108u);
+    for (const Join& j : doc.joins) EXPECT_TRUE(holdsTangent(j.continuity));
+    const auto [worst, seams] = infoWorstAngle(dataDir() / "rounded_box.patchwork");
+    EXPECT_EQ(seams, 108u);
+    EXPECT_LE(worst, 0.1);
+    // Drag points of every kind (a corner's centre, a point beside it, a blend's, a face's corner)
+    // through `patchwork edit`; info --json must still find every seam within 0.1°.
+    const std::filesystem::path dir = freshTempDir("rounded_box_drag");
+    const uint32_t centre = doc.patches[30].idx[15], beside = doc.patches[31].idx[5], blend = doc.patches[8].idx[6];
+    const uint32_t face = doc.patches[0].idx[0];
+    int n = 0;
+    for (const auto& [pt, move] :
+         {std::pair{centre, "0.05 -0.03 0.04"}, {beside, "0.02 0.05 -0.03"}, {blend, "-0.06 0.02 0.03"}, {face, "0 0 0.15"}}) {
+        const std::filesystem::path out = dir / ("drag" + std::to_string(n++) + ".patchwork");
+        const RunResult r = runCommand(patchworkBinary().string() + " edit -q '" + (dataDir() / "rounded_box.patchwork").string() +
+                                       "' -o '" + out.string() + "' -c 'select point " + std::to_string(pt) + "; move " + move + "' 2>&1");
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        const auto [after, count] = infoWorstAngle(out);
+        EXPECT_EQ(count, 108u);
+        EXPECT_LE(after, 0.1) << "after moving point " << pt;
+        EXPECT_NE(readBytes(out), readBytes(dataDir() / "rounded_box.patchwork"));  // the drag moved something
+    }
 }

@@ -79,12 +79,13 @@ TEST(EditInvariants, BoxCornerOfFlatFacesIsRefusedRatherThanFolded) {
     EditSession s;
     s.doc = boxCorner();
     ASSERT_EQ(s.doc.joins.size(), 3u);
-    // Two G1 seams bend the faces into rounded seams; the third closes the corner, where three
-    // faces whose edges do not lie in one plane cannot all be G1: it could only hold by folding a
-    // face. Refused, nothing changed.
+    // Two G1 seams bend the faces into rounded seams, each one lining up the edges beside it; the
+    // third closes the corner, where the corner construction finds those edges on one line: no
+    // tangent plane to turn round. Refused, nothing changed (before the corner construction the
+    // solver held it by folding a face).
     test::runEditScript(s, "unjoin 0:u0; unjoin 0:v0; unjoin 1:u0; join 0:v0 1:v0 G1; join 1:u0 2:u0 G1");
     const Document before = s.doc;
-    EXPECT_TRUE(refused(s, "join 0:u0 2:v0 G1", "folding patch"));
+    EXPECT_TRUE(refused(s, "join 0:u0 2:v0 G1", "lie on one line"));
     EXPECT_EQ(s.doc, before);
     for (uint32_t p = 0; p < s.doc.patches.size(); ++p) EXPECT_EQ(patchShape(s.doc, p).invertedTriangles, 0);
 }
@@ -116,12 +117,13 @@ TEST(Joins, ContinuityChangesInPlaceAndARefusedChangeKeepsTheJoin) {
     test::runEditScript(s, "undo");
     EXPECT_EQ(s.doc.joins[0].continuity, Continuity::C1);
 
-    // At the box corner, turning one of the reader's C0 seams G1 would fold a face: refused, the
-    // join stays C0 and nothing moves.
+    // At the box corner (its faces' normals do not all face out), turning one of the reader's C0
+    // seams G1 closes a corner whose sides would lie over each other: refused, the join stays C0
+    // and nothing moves.
     EditSession c;
     c.doc = boxCorner();
     const Document before = c.doc;
-    EXPECT_TRUE(refused(c, "join 0:v0 1:v0 G1", "folding patch"));
+    EXPECT_TRUE(refused(c, "join 0:v0 1:v0 G1", "does not turn one way around the corner"));
     EXPECT_EQ(c.doc, before);
     // An edge joined to another patch is not re-joined silently.
     EXPECT_TRUE(refused(c, "join 0:v0 2:v0 G1", "already joined"));

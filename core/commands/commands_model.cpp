@@ -4,6 +4,7 @@
 
 #include "core/commands/command_table.hpp"
 #include "core/model/placement.hpp"
+#include "core/ops/fill_hole.hpp"
 #include "core/ops/join_ops.hpp"
 #include "core/ops/mirror.hpp"
 #include "core/ops/net_ops.hpp"
@@ -285,14 +286,41 @@ void addModelCommands(CommandTable& t) {
                const auto ma = mirrorEdge(doc, a.first, a.second, ctx.session.symmetry);
                const auto mb = mirrorEdge(doc, b.first, b.second, ctx.session.symmetry);
                const bool mirrored = ma && mb && *ma != a && *ma != b && *mb != a && *mb != b;
+               std::string corner, mirrorCorner;
                ctx.session.apply(change ? "Join continuity" : "Join edges", [&](Document& d) {
-                   joinEdges(d, a.first, a.second, b.first, b.second, *c);
-                   if (mirrored) joinEdges(d, ma->first, ma->second, mb->first, mb->second, *c);
+                   joinEdges(d, a.first, a.second, b.first, b.second, *c, &corner);
+                   if (mirrored) joinEdges(d, ma->first, ma->second, mb->first, mb->second, *c, &mirrorCorner);
                });
-               if (mirrored)
+               if (!corner.empty()) ctx.host.status(corner + (mirrorCorner.empty() ? "" : "; and by symmetry " + mirrorCorner));
+               if (mirrored && corner.empty())
                    ctx.host.status("joined " + ctx.args[0] + " " + ctx.args[1] + " and, by symmetry, " + std::to_string(ma->first) + ":" +
                                    std::string(edgeName(ma->second)) + " " + std::to_string(mb->first) + ":" +
                                    std::string(edgeName(mb->second)));
+           }});
+    t.add({.name = "fill-hole",
+           .label = "Fill Hole",
+           .menu = "Surface",
+           .usage = "SIDE SIDE SIDE [SIDE …]",
+           .help = "Fill a hole bounded by 3 to 6 sides, each an open patch edge (P:u0 …) or two edges end to end (P:u0+Q:v1), in "
+                   "order round the hole: one patch per hole corner, meeting at a centre, G1 to every surrounding patch and to each "
+                   "other, held live like any join. A side of one edge is split at its middle first (through its ring; no join is "
+                   "dropped); a 5- or 6-sided fill is split 2×2 at its centre",
+           .run = [](CommandContext& ctx) {
+               if (ctx.args.size() < 3 || ctx.args.size() > 6) expectArgs(ctx, 3, 6);
+               std::vector<HoleSide> sides;
+               for (const std::string& arg : ctx.args) {
+                   if (!arg.empty() && (arg[0] == 'c' || arg[0] == 'C'))
+                       throw EditError("fill-hole takes patch edges (P:u0, or P:u0+Q:v1), not curves such as '" + arg +
+                                       "': make a surface from the curve first (extrude, loft)");
+                   HoleSide side;
+                   const size_t plus = arg.find('+');
+                   side.edges.push_back(patchEdge(arg.substr(0, plus), ctx.session.doc));
+                   if (plus != std::string::npos) side.edges.push_back(patchEdge(arg.substr(plus + 1), ctx.session.doc));
+                   sides.push_back(std::move(side));
+               }
+               std::string note;
+               ctx.session.apply("Fill hole", [&](Document& d) { note = fillHole(d, sides); });
+               ctx.host.status(note);
            }});
     t.add({.name = "tolerances",
            .label = "Continuity Tolerances",

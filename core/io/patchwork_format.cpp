@@ -269,6 +269,8 @@ json documentToJson(const Document& doc) {
                              {"continuity", continuityName(jn.continuity)},
                              {"alpha", jn.alpha}});
         if (jn.beta2 != 0.0) joins.back()["beta2"] = jn.beta2;
+        if (jn.shear != std::array<double, 3>{}) joins.back()["shear"] = jn.shear;
+        if (jn.alphaEnd != 0.0) joins.back()["alpha_end"] = jn.alphaEnd;
     }
     j["joins"] = std::move(joins);
 
@@ -426,6 +428,17 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
             });
             r.optional(o, path, "alpha", [&](const json& x, const std::string& p) { jn.alpha = r.numberInRange(x, p, 0, 1e6, true); });
             r.optional(o, path, "beta2", [&](const json& x, const std::string& p) { jn.beta2 = r.numberInRange(x, p, -1e6, 1e6, false); });
+            r.optional(o, path, "shear", [&](const json& x, const std::string& p) {
+                const json& a = r.array(x, p, 3, "shear coefficients");
+                if (a.size() != 3) r.fail(p, "expected 3 shear coefficients, got " + std::to_string(a.size()));
+                for (size_t k = 0; k < 3; ++k) jn.shear[k] = r.numberInRange(a[k], at(p, k), -1e6, 1e6, false);
+            });
+            r.optional(o, path, "alpha_end",
+                       [&](const json& x, const std::string& p) { jn.alphaEnd = r.numberInRange(x, p, 0, 1e6, true); });
+            if (jn.shear != std::array<double, 3>{} && jn.continuity != Continuity::G1)
+                r.fail(at(path, "shear"), "only a G1 join leans along its seam");
+            if (jn.alphaEnd != 0.0 && jn.continuity != Continuity::G1)
+                r.fail(at(path, "alpha_end"), "only a G1 join's ratio varies along its seam");
             if (jn.patchA == jn.patchB && jn.edgeA == jn.edgeB) r.fail(path, "a join cannot connect an edge to itself");
         }
     }

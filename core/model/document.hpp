@@ -139,6 +139,13 @@ struct Surface {
 //   B2k - 2 B1k + B0k = alpha² (A2k - 2 A1k + A0k) + (beta2 / 2) (A0k - A1k)
 // which, with alpha and beta2 fixed when the join is made, is linear in the points and gives
 // equal tangent planes and equal normal curvature in every direction across the seam.
+// At a corner where 3, 5 or 6 patches meet, no such rows can hold G1 (core/ops/corner_ops): there
+// a G1 join also leans along the seam, B's cross derivative = α·A's + β(t)·the edge's tangent, with
+//   β(t) = shear[0] (1−t)² + 2 shear[1] t(1−t) + shear[2] t²   (t = 0 at A's edge point 0)
+// and the rows are the five Bernstein coefficients of that degree-4 identity (core/solve/
+// sheared_joins.hpp); still linear in the points. Such a join may also let α run linearly from
+// `alpha` at A's point 0 to `alphaEnd` at point 3 (each end then matches the seam that continues
+// it). Both zero for every other join.
 struct Join {
     uint32_t patchA = 0;
     Edge edgeA = Edge::U0;
@@ -146,8 +153,10 @@ struct Join {
     Edge edgeB = Edge::U0;
     bool reversed = false;
     Continuity continuity = Continuity::C0;
-    double alpha = 1.0;  // β1
-    double beta2 = 0.0;  // β2 (G2 only)
+    double alpha = 1.0;             // β1
+    double beta2 = 0.0;             // β2 (G2 only)
+    std::array<double, 3> shear{};  // β(t) in Bernstein form (G1 only; non-zero at 3-, 5- and 6-patch corners)
+    double alphaEnd = 0.0;          // α at A's point 3 when it differs from `alpha` there (G1 only; 0: constant α)
     bool operator==(const Join&) const = default;
 };
 

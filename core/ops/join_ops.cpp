@@ -10,8 +10,10 @@
 #include "core/eval/fold_check.hpp"
 #include "core/model/construction_refs.hpp"
 #include "core/model/topology.hpp"
+#include "core/ops/corner_ops.hpp"
 #include "core/ops/patch_ops.hpp"
 #include "core/solve/constraint_solver.hpp"
+#include "core/solve/sheared_joins.hpp"
 
 namespace pw {
 
@@ -88,6 +90,19 @@ void refuseFolds(const Document& before, const Document& after) {
                     "cannot be G1 there: join that seam C0, or split the corner patches first");
 }
 
+// A G1 join that continues C1/G1 seams through regular corners takes their ratios there exactly
+// (α running linearly between two different ones).
+void takeContinuedAlpha(Document& doc, size_t j) {
+    const auto ends = alphaAtEnds(doc, j);
+    Join& jn = doc.joins[j];
+    if (ends[0] && ends[1] && std::abs(*ends[0] - *ends[1]) > 1e-12 * *ends[0]) {
+        jn.alpha = *ends[0];
+        jn.alphaEnd = *ends[1];
+    } else if (ends[0] || ends[1]) {
+        jn.alpha = ends[0] ? *ends[0] : *ends[1];
+    }
+}
+
 }  // namespace
 
 JoinPlan planJoin(const Document& doc, uint32_t a, Edge ea, uint32_t b, Edge eb) {
@@ -132,14 +147,15 @@ JoinPlan planJoin(const Document& doc, uint32_t a, Edge ea, uint32_t b, Edge eb)
     return plan;
 }
 
-size_t joinEdges(Document& doc, uint32_t a, Edge ea, uint32_t b, Edge ebPicked, Continuity continuity) {
+size_t joinEdges(Document& doc, uint32_t a, Edge ea, uint32_t b, Edge ebPicked, Continuity continuity, std::string* note) {
     checkBezier(doc, a, "join");
     checkBezier(doc, b, "join");
     if (a == b) throw EditError("join needs two different patches");
     const int ja = findJoin(doc, a, ea), jb = findJoin(doc, b, ebPicked);
     if (ja >= 0 && ja == jb) {  // the pair is joined already: a new continuity for it
-        setJoinContinuity(doc, size_t(ja), continuity);
-        return size_t(ja);
+        setJoinContinuity(doc, size_t(ja), continuity, note);
+        const int now = findJoin(doc, a, ea);
+        return now >= 0 ? size_t(now) : size_t(ja);
     }
     if (ja >= 0 || jb >= 0)
         throw EditError(describeEdgeJoin(doc, ja >= 0 ? size_t(ja) : size_t(jb), ja >= 0 ? a : b, ja >= 0 ? ea : ebPicked) +
@@ -196,13 +212,19 @@ size_t joinEdges(Document& doc, uint32_t a, Edge ea, uint32_t b, Edge ebPicked, 
             if (i == from) i = to;
         });
     doc.joins.push_back(Join{a, ea, b, eb, reversed, continuity, alpha, beta2});
-    if (const Projection p = projectConstraints(doc, fixed); !p.ok()) throw EditError("the join conflicts: " + conflictMessage(p));
+    if (continuity == Continuity::G1 && !plan.match) takeContinuedAlpha(doc, doc.joins.size() - 1);
+    // A join that closes a corner of 3, 5 or 6 patches with every seam C1/G1 makes it a G1 corner.
+    const std::string corner = closeCornersOf(doc, doc.joins.size() - 1);
+    if (corner.empty())
+        if (const Projection p = projectConstraints(doc, fixed); !p.ok()) throw EditError("the join conflicts: " + conflictMessage(p));
+    if (note) *note = corner;
     refuseFolds(before, doc);
     compactPool(doc);
-    return doc.joins.size() - 1;
+    const int made = findJoin(doc, a, ea);
+    return made >= 0 ? size_t(made) : doc.joins.size() - 1;
 }
 
-void setJoinContinuity(Document& doc, size_t j, Continuity continuity) {
+void setJoinContinuity(Document& doc, size_t j, Continuity continuity, std::string* note) {
     if (j >= doc.joins.size()) throw EditError("no join " + std::to_string(j));
     for (const uint32_t p : {doc.joins[j].patchA, doc.joins[j].patchB})
         if (const int k = constructionOfPatch(doc, p); k >= 0)
@@ -217,6 +239,15 @@ void setJoinContinuity(Document& doc, size_t j, Continuity continuity) {
     jn.continuity = continuity;
     jn.alpha = measuredAlpha(continuity, pa, pb);
     jn.beta2 = measuredBeta2(continuity, jn.alpha, pa, pb);
+    jn.shear = {};
+    jn.alphaEnd = 0.0;
+    if (continuity == Continuity::G1) takeContinuedAlpha(doc, j);
+    // A change that closes a corner of 3, 5 or 6 C1/G1 seams makes it a G1 corner.
+    if (const std::string corner = closeCornersOf(doc, j); !corner.empty()) {
+        if (note) *note = corner;
+        refuseFolds(before, doc);
+        return;
+    }
     // A's rows at the seam stay; B's move onto the new conditions (like Match).
     std::vector<uint32_t> fixed;
     for (int k = 0; k < 4; ++k)
@@ -237,6 +268,10 @@ void remeasureJoin(Document& doc, size_t j) {
     const Patch& B = doc.patches[jn.patchB];
     auto pa = [&](int k, int d) { return doc.points[A.idx[size_t(edgeSlot(jn.edgeA, k, d))]]; };
     auto pb = [&](int k, int d) { return doc.points[B.idx[size_t(edgeSlot(jn.edgeB, jn.reversed ? 3 - k : k, d))]]; };
+    if (hasShear(jn)) {  // a corner's leaning seam: α and β(t) fitted again (exact after a split)
+        if (const auto fit = fitShear(doc, jn)) jn.alpha = fit->alpha, jn.alphaEnd = fit->alphaEnd, jn.shear = fit->shear;
+        return;
+    }
     const Continuity geometric = holdsCurvature(jn.continuity) ? Continuity::G2 : Continuity::G1;
     jn.alpha = measuredAlpha(geometric, pa, pb);
     jn.beta2 = holdsCurvature(jn.continuity) ? measuredBeta2(geometric, jn.alpha, pa, pb) : 0.0;

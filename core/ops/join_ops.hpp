@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 #include "core/model/document.hpp"
 #include "core/model/topology.hpp"
@@ -34,14 +35,17 @@ JoinPlan planJoin(const Document& doc, uint32_t a, Edge ea, uint32_t b, Edge eb)
 // Joins edge ea of patch a to edge eb of patch b as planJoin says, records the join with
 // `continuity` (G1: alpha from the current tangent lengths) and projects the constraints (a's
 // rows at the seam fixed when matching). When the two edges are already joined to each other, the
-// join's continuity is changed instead (setJoinContinuity). Returns the join's index.
-size_t joinEdges(Document& doc, uint32_t a, Edge ea, uint32_t b, Edge eb, Continuity continuity);
+// join's continuity is changed instead (setJoinContinuity). A C1/G1 join that closes a corner of 3,
+// 5 or 6 patches whose seams are all C1/G1 makes it a G1 corner (core/ops/corner_ops; five and six
+// split their patches 2×2 first), and `note` then says so. Returns the join's index.
+size_t joinEdges(Document& doc, uint32_t a, Edge ea, uint32_t b, Edge eb, Continuity continuity, std::string* note = nullptr);
 
 // Join j held with `continuity` from now on: the shape parameters are measured again from the
 // current shape (α from the tangent rows' lengths for G1/G2, β2 by least squares for G2; 1 and 0
 // for C1/C2) and the points projected onto the new constraints, A's side of the seam kept where it
-// is. EditError when the joins cannot all hold then, naming them.
-void setJoinContinuity(Document& doc, size_t j, Continuity continuity);
+// is. EditError when the joins cannot all hold then, naming them. A change to C1/G1 that closes a
+// corner of 3, 5 or 6 such seams makes it a G1 corner, as joinEdges does (`note` says so).
+void setJoinContinuity(Document& doc, size_t j, Continuity continuity, std::string* note = nullptr);
 
 // The shape parameters of join j measured again from its rows, its continuity kept (C1 becomes G1
 // and C2 becomes G2 when α is no longer 1): for a join whose rows an exact operation rescaled (a

@@ -12,6 +12,7 @@
 #include "core/model/topology.hpp"
 #include "core/ops/join_ops.hpp"
 #include "core/ops/patch_ops.hpp"
+#include "core/solve/sheared_joins.hpp"
 
 namespace pw {
 
@@ -170,6 +171,7 @@ std::vector<std::pair<RingCut, uint32_t>> splitRing(Document& doc, uint32_t p, b
     std::vector<uint32_t> parent(doc.points.size());
     std::iota(parent.begin(), parent.end(), 0u);
     for (const Join& j : across) {
+        if (hasShear(j)) rescaled.push_back(joins.size());  // β(t) restricted to a half: fitted again
         const Patch &A = doc.patches[j.patchA], &B = doc.patches[j.patchB];
         for (int k = 0; k < 4; ++k) {
             const uint32_t ia = rootOf(parent, A.idx[size_t(edgeSlot(j.edgeA, k, 0))]);

@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "core/model/topology.hpp"
+#include "core/solve/sheared_joins.hpp"
 #include "core/solve/solver_constraints.hpp"
 
 namespace pw {
@@ -61,6 +62,37 @@ bool collapsed(const uint32_t (&e)[4]) { return e[0] == e[1] && e[1] == e[2] && 
 
 }  // namespace
 
+void appendTangentRows(const Join& join, const JoinPoints& jp, uint32_t ji, std::vector<ConstraintRow>& rows) {
+    const double alpha = join.alpha;
+    if (!hasShear(join)) {
+        for (int k = 0; k < 4; ++k) {
+            const bool aFlat = jp.a1[k] == jp.a0[k], bFlat = jp.b1[k] == jp.b0[k];
+            if (aFlat != bFlat) continue;  // one side's tangent collapsed onto the boundary point
+            ConstraintRow row = makeRow({{jp.b1[k], 1.0}, {jp.a0[k], -(1.0 + alpha)}, {jp.a1[k], alpha}}, ji);
+            if (!row.terms.empty()) rows.push_back(std::move(row));
+        }
+        return;
+    }
+    // A sheared G1 join (core/solve/sheared_joins.hpp): the degree-4 identity's five coefficients.
+    for (int l = 0; l <= 4; ++l) {
+        std::vector<std::pair<uint32_t, double>> terms;
+        for (int k = 0; k < 4; ++k) {
+            const double w = elevationWeight(l, k);
+            const double a = alpha * alphaWeight(l, k, 0) + endAlpha(join) * alphaWeight(l, k, 1);  // α(t)·(A0 − A1)
+            if (w == 0.0 && a == 0.0) continue;
+            terms.insert(terms.end(), {{jp.b1[k], w}, {jp.a0[k], -w - a}, {jp.a1[k], a}});
+        }
+        for (int i = 0; i < 3; ++i) {
+            const int j = l - i;
+            if (j < 0 || j > 2 || join.shear[size_t(i)] == 0.0) continue;
+            const double w = join.shear[size_t(i)] * shearWeight(i, j);
+            terms.insert(terms.end(), {{jp.a0[j + 1], -w}, {jp.a0[j], w}});
+        }
+        ConstraintRow row = makeRow(std::move(terms), ji);
+        if (!row.terms.empty()) rows.push_back(std::move(row));
+    }
+}
+
 std::vector<ConstraintRow> buildConstraintRows(const Document& doc) {
     std::vector<ConstraintRow> rows;
     rows.reserve(doc.joins.size() * 4);
@@ -75,16 +107,10 @@ std::vector<ConstraintRow> buildConstraintRows(const Document& doc) {
             if (jp.a0[k] != jp.b0[k]) rows.push_back(makeRow({{jp.a0[k], 1.0}, {jp.b0[k], -1.0}}, ji));
         if (!holdsTangent(join.continuity)) continue;
         if (collapsed(jp.a0) || collapsed(jp.b0)) continue;  // a pole: no cross-boundary tangent
-        const double alpha = join.alpha;
-        for (int k = 0; k < 4; ++k) {
-            const bool aFlat = jp.a1[k] == jp.a0[k], bFlat = jp.b1[k] == jp.b0[k];
-            if (aFlat != bFlat) continue;  // one side's tangent collapsed onto the boundary point
-            ConstraintRow row = makeRow({{jp.b1[k], 1.0}, {jp.a0[k], -(1.0 + alpha)}, {jp.a1[k], alpha}}, ji);
-            if (!row.terms.empty()) rows.push_back(std::move(row));
-        }
+        appendTangentRows(join, jp, ji, rows);
         if (!holdsCurvature(join.continuity)) continue;
         // β-constraint on the second cross-boundary difference; B's edge point is A's (C0 row).
-        const double a2 = alpha * alpha, h = 0.5 * join.beta2;
+        const double a2 = join.alpha * join.alpha, h = 0.5 * join.beta2;
         for (int k = 0; k < 4; ++k) {
             const bool aFlat = jp.a1[k] == jp.a0[k] || jp.a2[k] == jp.a1[k];
             const bool bFlat = jp.b1[k] == jp.b0[k] || jp.b2[k] == jp.b1[k];
@@ -215,7 +241,9 @@ struct DragSolver::Impl {
         return s;
     }
 
-    // Projects one component: solve, then refine against the true residual (at most 4 solves).
+    // Projects one component: solve, then refine against the true residual (at most 16 solves: the
+    // rows round a regular corner where a fill meets its surroundings are nearly dependent, and the
+    // regularised solve converges slowly there; a well-conditioned component stops after one).
     // Rows still violated after that cannot hold together: their joins go into `out`.
     void solveComponent(const Component& comp, std::vector<Vec3>& p, Eigen::MatrixXd& r, double worst2, Projection& out) const {
         const auto m = static_cast<Eigen::Index>(comp.rows.size());
@@ -229,7 +257,7 @@ struct DragSolver::Impl {
                     worst2 = std::max(worst2, glm::dot(s, s));
                 }
             }
-            if (worst2 <= tol2 || round == 4) break;
+            if (worst2 <= tol2 || round == 16) break;
             const Eigen::MatrixXd y =
                 comp.sparse ? Eigen::MatrixXd(comp.sparse->solve(r.topRows(m))) : Eigen::MatrixXd(comp.dense.solve(r.topRows(m)));
             const Eigen::MatrixXd d = comp.C.transpose() * y;

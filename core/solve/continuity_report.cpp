@@ -8,6 +8,7 @@
 
 #include "core/eval/rational_eval.hpp"
 #include "core/gpu/curvature_math.h"
+#include "core/solve/sheared_joins.hpp"
 #include "core/solve/solver_constraints.hpp"
 
 namespace pw {
@@ -132,10 +133,18 @@ std::vector<JoinContinuity> continuityReport(const Document& doc, int samples, c
         }
         // Control-point residuals: |B1k − B0k − α·(A0k − A1k)| and the β-constraint's.
         const double a2 = join.alpha * join.alpha, h = 0.5 * join.beta2;
+        if (hasShear(join)) {  // a leaning seam: the residuals of its own (degree-4) rows
+            std::vector<solver_detail::ConstraintRow> tangentRows;
+            solver_detail::appendTangentRows(join, jp, 0, tangentRows);
+            for (const auto& row : tangentRows) {
+                Vec3 r(0.0);
+                for (const auto& [idx, coef] : row.terms) r += coef * P[idx];
+                jc.c1Residual = std::max(jc.c1Residual, glm::length(r));
+            }
+        }
         for (int k = 0; k < 4; ++k) {
             const Vec3 t = P[jp.a0[k]] - P[jp.a1[k]];
-            const Vec3 r = (P[jp.b1[k]] - P[jp.b0[k]]) - join.alpha * t;
-            jc.c1Residual = std::max(jc.c1Residual, glm::length(r));
+            if (!hasShear(join)) jc.c1Residual = std::max(jc.c1Residual, glm::length((P[jp.b1[k]] - P[jp.b0[k]]) - join.alpha * t));
             if (!holdsCurvature(join.continuity)) continue;
             const Vec3 r2 = (P[jp.b2[k]] - 2.0 * P[jp.b1[k]] + P[jp.b0[k]]) - a2 * (P[jp.a2[k]] - 2.0 * P[jp.a1[k]] + P[jp.a0[k]]) - h * t;
             jc.c2Residual = std::max(jc.c2Residual, glm::length(r2));

@@ -13,7 +13,7 @@ namespace pw {
 struct JoinContinuity {
     size_t join = 0;
     double c0Gap = 0;           // largest distance between the two sides' surface points on the seam
-    double c1Residual = 0;      // largest |B1k - B0k - alpha·(A0k - A1k)| over the edge's points
+    double c1Residual = 0;      // largest tangent-row residual (|B1k - B0k - alpha·(A0k - A1k)|, or a leaning seam's rows)
     double c2Residual = 0;      // C2/G2: largest residual of the β-constraint rows (else 0)
     double normalAngleDeg = 0;  // largest angle between the two sides' normals along the seam
     // Largest |κA − κB| / max(|κA|, |κB|, κ0) · 100 along the seam, κ the normal curvature in the

@@ -27,6 +27,10 @@ bool joinPoints(const Document& doc, const Join& join, JoinPoints& out);
 // True when every index of `jp` lies inside a pool of n points.
 bool joinPointsInPool(const JoinPoints& jp, size_t n);
 
+// The tangent rows of one C1/G1/C2/G2 join: b1k − (1+α)·a0k + α·a1k = 0 for each edge point k, or
+// for a join that leans along its seam the five rows of core/solve/sheared_joins.hpp.
+void appendTangentRows(const Join& join, const JoinPoints& jp, uint32_t ji, std::vector<ConstraintRow>& rows);
+
 // Every constraint the joins impose: for each edge point k, a0k − b0k = 0 when the two sides do
 // not share the pool entry, for C1/G1/C2/G2 b1k − (1+α)·a0k + α·a1k = 0, and for C2/G2
 // b2k − 2·b1k + b0k − α²·(a2k − 2·a1k + a0k) − (β2/2)·(a0k − a1k) = 0. Constraints of a collapsed

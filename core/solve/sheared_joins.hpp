@@ -1,0 +1,46 @@
+// G1 joins that lean along their seam (Join::shear): the rows that hold them and the fit that
+// measures them (issue 40). Where 3, 5 or 6 patches meet at a corner, the cross tangents of the
+// patches around it cannot all be collinear pairs (the rows b1k − (1+α)a0k + α a1k = 0 would make
+// the corner's edges point in opposite directions in pairs, which an odd count cannot do); G1
+// only asks that B's cross derivative be α·A's plus some multiple β(t) of the edge's tangent:
+//   D_B(t) − α·D_A(t) = β(t)·c'(t),   β(t) = s0 (1−t)² + 2 s1 t(1−t) + s2 t²,
+// with D and c' the cubic cross derivative and the quadratic edge tangent. Both sides are degree 4;
+// their five Bernstein coefficients are five linear rows in the points (α and β fixed).
+#pragma once
+
+#include <array>
+#include <optional>
+
+#include "core/model/document.hpp"
+
+namespace pw {
+
+// True when the join leans along its seam (any shear coefficient non-zero) or its α varies
+// (Join::alphaEnd): its rows are then the degree-4 identity's
+//   D_B(t) − α(t)·D_A(t) = β(t)·c'(t),   α(t) = α0 (1−t) + α1 t.
+inline bool hasShear(const Join& j) { return j.shear[0] != 0.0 || j.shear[1] != 0.0 || j.shear[2] != 0.0 || j.alphaEnd != 0.0; }
+// α at A's point 3.
+inline double endAlpha(const Join& j) { return j.alphaEnd != 0.0 ? j.alphaEnd : j.alpha; }
+
+// Weight of shear coefficient i (0..2) times the edge difference Δ_j = A0(j+1) − A0(j) (j = 0..2)
+// in degree-4 row i + j: C(2,i)·C(2,j) / C(4,i+j).
+double shearWeight(int i, int j);
+
+// Weight of d_k = B1k − (1+α)·A0k + α·A1k (k = 0..3) in degree-4 row l (0..4): degree elevation.
+double elevationWeight(int l, int k);
+
+// Weight of α0 (end 0) or α1 (end 1) times A's cross difference A0k − A1k in degree-4 row l.
+double alphaWeight(int l, int k, int end);
+
+// The join's α and shear measured from its rows by least squares (the five rows of the identity
+// above, x, y and z: fifteen equations, four unknowns). Exact after any operation that keeps the
+// surface (a split, a move of both sides): β restricted to part of the edge is still quadratic.
+// nullopt when the join's patches do not exist or the fit is singular (a collapsed edge).
+struct ShearFit {
+    double alpha = 1.0;
+    double alphaEnd = 0.0;  // fitted only for a join whose α varies
+    std::array<double, 3> shear{};
+};
+std::optional<ShearFit> fitShear(const Document& doc, const Join& join);
+
+}  // namespace pw

@@ -1,0 +1,245 @@
+// Issue 40's corners and fills (core/solve/sheared_joins, core/ops/corner_ops, core/ops/fill_hole):
+// three patches at a corner end G1 on every seam (the seams lean along their edges near it), a
+// 3-, 5- or 6-sided hole fills G1 to its surroundings, and both stay within 0.1° (and the solver's
+// residual) while their points and neighbours are dragged.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <numbers>
+#include <string>
+
+#include "core/commands/command_table.hpp"
+#include "core/edit/edit_session.hpp"
+#include "core/eval/fold_check.hpp"
+#include "core/io/bpt_format.hpp"
+#include "core/io/patchwork_format.hpp"
+#include "core/ops/fill_hole.hpp"
+#include "core/solve/constraint_solver.hpp"
+#include "core/solve/continuity_report.hpp"
+#include "core/solve/sheared_joins.hpp"
+#include "support.hpp"
+
+using namespace pw;
+
+namespace {
+
+// One bicubic patch of a .bpt whose control points are at(i/3, j/3), turned (u and v swapped) so
+// that its normal points along `out`.
+std::string bptPatch(const std::function<Vec3(double, double)>& at, const Vec3& out) {
+    const Vec3 n = glm::cross(at(1, 0) - at(0, 0), at(0, 1) - at(0, 0));
+    const bool swap = glm::dot(n, out) < 0.0;
+    std::string text = "3 3\n";
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 4; ++i) {
+            const Vec3 p = swap ? at(j / 3.0, i / 3.0) : at(i / 3.0, j / 3.0);
+            char buf[128];
+            std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g\n", p.x, p.y, p.z);
+            text += buf;
+        }
+    return text;
+}
+
+Vec3 bilinear(const Vec3 (&q)[4], double u, double v) {
+    return (1 - u) * (1 - v) * q[0] + u * (1 - v) * q[1] + u * v * q[2] + (1 - u) * v * q[3];
+}
+
+Vec3 onSphere(double polar, double azimuth) {
+    return Vec3(std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth), std::cos(polar));
+}
+
+// n patches around the pole of the unit sphere, each a quad (pole, middle, corner, middle) pushed
+// onto the sphere: the corner a modeller meets at the top of a dome. n = 3 with these angles is the
+// newcomer's rounded box corner (a third of a sphere octant). The .bpt reader joins the seams C0.
+Document fanDome(int n) {
+    std::string text = std::to_string(n) + "\n";
+    const double a = 2 * std::numbers::pi / n;
+    for (int k = 0; k < n; ++k) {
+        const Vec3 q[4] = {Vec3(0, 0, 1), onSphere(0.6, k * a), onSphere(0.9, (k + 0.5) * a), onSphere(0.6, ((k + 1) % n) * a)};
+        text += bptPatch([&](double u, double v) { return glm::normalize(bilinear(q, u, v)); }, bilinear(q, 0.5, 0.5));
+    }
+    return parseBpt(text, "dome.bpt");
+}
+
+// A flat ring of quads round an n-gon hole of radius 1 in z = 0: per side a side patch and per
+// hole corner a corner patch whose edges continue the hole's edges, so four patches (with the
+// fill) meet at each hole corner along two straight lines, as at a rounded box's face corner. The
+// ring is half a side wide, so that once the sides are split at their middle every tangent ratio
+// round a hole corner is 1 (fill-hole refuses surroundings whose ratios disagree there).
+Document planarRing(int n) {
+    std::string text = std::to_string(2 * n) + "\n";
+    const double a = 2 * std::numbers::pi / n, d = std::sin(std::numbers::pi / n);
+    auto V = [&](int k) { return Vec3(std::cos(((k + n) % n) * a), std::sin(((k + n) % n) * a), 0); };
+    auto away = [&](int k, int from) { return d * glm::normalize(V(k) - V(from)); };  // continuing edge from→k past k
+    const Vec3 up(0, 0, 1);
+    // Straight edges, and each inner point the parallelogram of its corner's two edge legs (so the
+    // twists agree round each hole corner, as on any surface that was smooth there).
+    auto quad = [&](const Vec3(&q)[4]) {
+        return [q](double u, double v) {
+            const int i = int(std::lround(3 * u)), j = int(std::lround(3 * v));
+            const int ci = i < 2 ? 0 : 3, cj = j < 2 ? 0 : 3;
+            auto edge = [&](int ii, int jj) { return bilinear(q, ii / 3.0, jj / 3.0); };
+            if (i == 0 || i == 3 || j == 0 || j == 3) return edge(i, j);
+            return edge(i, cj) + edge(ci, j) - edge(ci, cj);
+        };
+    };
+    for (int k = 0; k < n; ++k) {
+        const Vec3 side[4] = {V(k), V(k + 1), V(k + 1) + away(k + 1, k + 2), V(k) + away(k, k - 1)};
+        text += bptPatch(quad(side), up);
+        const Vec3 corner[4] = {V(k), V(k) + away(k, k - 1), V(k) + away(k, k - 1) + away(k, k + 1), V(k) + away(k, k + 1)};
+        text += bptPatch(quad(corner), up);
+    }
+    return parseBpt(text, "ring.bpt");
+}
+
+struct Recorder final : CommandHost {
+    std::string last;
+    void status(const std::string& s) override { last = s; }
+    void write(const Document&, const std::string&) override {}
+};
+
+void runCommandLine(EditSession& s, Recorder& host, const std::string& line) { makeCommandTable().run(s, host, line); }
+
+// Every C0 seam made G1 with `join`, one after another as a modeller would; the statuses said.
+std::string joinAllG1(EditSession& s) {
+    Recorder host;
+    std::string said;
+    for (int guard = 0; guard < 100; ++guard) {
+        const auto c0 = std::find_if(s.doc.joins.begin(), s.doc.joins.end(), [](const Join& j) { return j.continuity == Continuity::C0; });
+        if (c0 == s.doc.joins.end()) break;
+        host.last.clear();
+        runCommandLine(s, host,
+                       "join " + std::to_string(c0->patchA) + ":" + std::string(edgeName(c0->edgeA)) + " " + std::to_string(c0->patchB) +
+                           ":" + std::string(edgeName(c0->edgeB)) + " G1");
+        said += host.last + "\n";
+    }
+    return said;
+}
+
+// Worst normal angle over the seams that hold tangents, and the worst solver residual.
+void expectG1(const Document& d, const std::string& when) {
+    double worst = 0.0;
+    size_t tangent = 0;
+    const auto report = continuityReport(d, 32);
+    for (const JoinContinuity& c : report)
+        if (holdsTangent(d.joins[c.join].continuity)) worst = std::max(worst, c.normalAngleDeg), ++tangent;
+    EXPECT_GT(tangent, 0u) << when;
+    EXPECT_LE(worst, 0.1) << when;
+    EXPECT_LE(maxConstraintResidual(d), 1e-6 * modelSize(d)) << when;
+    for (uint32_t p = 0; p < d.patches.size(); ++p) EXPECT_EQ(patchShape(d, p).invertedTriangles, 0) << when << " patch " << p;
+}
+
+}  // namespace
+
+TEST(ShearedJoins, FitRecoversTheShearOfAnExactlyLeaningSeam) {
+    // Two flat patches whose cross tangents lean along the seam by β(t) = 0.3 (1−t)²: the plain
+    // rows fail, the fit finds α = 1 and the shear, and the rows then hold to rounding.
+    Document d = parseBpt("2\n" + bptPatch([](double u, double v) { return Vec3(-1 + u, v, 0); }, Vec3(0, 0, 1)) +
+                              bptPatch([](double u, double v) { return Vec3(u, v, 0); }, Vec3(0, 0, 1)),
+                          "two.bpt");
+    ASSERT_EQ(d.joins.size(), 1u);
+    Join& j = d.joins[0];
+    // Lean the seam by β(t) = 0.3 (1−t)²: the solver moves the points onto the sheared rows.
+    j.continuity = Continuity::G1;
+    j.shear = {0.3, 0.0, 0.0};
+    ASSERT_TRUE(projectConstraints(d, {}).ok());
+    EXPECT_LE(maxConstraintResidual(d), 1e-9);
+    const auto fit = fitShear(d, j);
+    ASSERT_TRUE(fit.has_value());
+    EXPECT_NEAR(fit->alpha, j.alpha, 1e-9);
+    EXPECT_NEAR(fit->shear[0], 0.3, 1e-9);
+    EXPECT_NEAR(fit->shear[1], 0.0, 1e-9);
+    EXPECT_NEAR(fit->shear[2], 0.0, 1e-9);
+    // Saved and read back with the join.
+    const Document back = parseDocument(serializeDocument(d), "back.patchwork");
+    EXPECT_EQ(back.joins[0].shear, j.shear);
+}
+
+TEST(Corners, TheNewcomersThreePatchCornerEndsG1OnAllThreeSeams) {
+    EditSession s;
+    s.doc = fanDome(3);
+    ASSERT_EQ(s.doc.joins.size(), 3u);
+    const std::string said = joinAllG1(s);
+    EXPECT_NE(said.find("corner of 3 patches"), std::string::npos) << said;
+    EXPECT_NE(said.find("held G1, its 3 seams"), std::string::npos) << said;
+    ASSERT_EQ(s.doc.joins.size(), 3u);  // three patches need no split
+    for (const Join& j : s.doc.joins) {
+        EXPECT_EQ(j.continuity, Continuity::G1);
+        EXPECT_TRUE(hasShear(j));
+    }
+    expectG1(s.doc, "after joining");
+    // Drag the corner point, a point next to it and a far corner: every seam holds.
+    const uint32_t centre = s.doc.patches[0].idx[0], near = s.doc.patches[1].idx[5], far = s.doc.patches[2].idx[15];
+    for (const auto& [pt, move] : {std::pair{centre, "0.05 0.02 -0.03"}, {near, "0.02 -0.04 0.03"}, {far, "-0.1 0.05 0.02"}}) {
+        test::runEditScript(s, "select point " + std::to_string(pt) + "; move " + move);
+        expectG1(s.doc, "after moving point " + std::to_string(pt));
+    }
+    // Saved and reopened, the corner is the same joins.
+    const Document back = parseDocument(serializeDocument(s.doc), "corner.patchwork");
+    EXPECT_EQ(back.joins, s.doc.joins);
+}
+
+TEST(Corners, FiveAndSixPatchCornersAreSplitAndHeldG1) {
+    for (int n : {5, 6}) {
+        SCOPED_TRACE("n = " + std::to_string(n));
+        EditSession s;
+        s.doc = fanDome(n);
+        const std::string said = joinAllG1(s);
+        EXPECT_NE(said.find("corner of " + std::to_string(n) + " patches"), std::string::npos) << said;
+        EXPECT_NE(said.find("split its " + std::to_string(n) + " patches 2×2"), std::string::npos) << said;
+        EXPECT_EQ(s.doc.patches.size(), size_t(4 * n));
+        expectG1(s.doc, "after joining");
+        const uint32_t pole = s.doc.patches[0].idx[0], rim = s.doc.patches[1].idx[15];
+        test::runEditScript(s, "select point " + std::to_string(pole) + "; move 0.03 -0.02 0.05");
+        expectG1(s.doc, "after moving the corner");
+        test::runEditScript(s, "select point " + std::to_string(rim) + "; move 0 0 -0.1");
+        expectG1(s.doc, "after moving a rim point");
+    }
+}
+
+// data/rounded_box.pwscript up to (not including) its last `fill-hole`, and that command.
+std::pair<std::string, std::string> roundedBoxScript() {
+    const std::string text = test::readBytes(test::dataDir() / "rounded_box.pwscript");
+    const size_t last = text.rfind("fill-hole");
+    const size_t end = text.find('\n', last);
+    return {text.substr(0, last), text.substr(last, end - last)};
+}
+
+TEST(FillHole, ABoxCornerFillsG1AndHoldsWhileItsPointsAndNeighboursMove) {
+    EditSession s;
+    const auto [before, fill] = roundedBoxScript();
+    test::runEditScript(s, before);
+    const Document open = s.doc;
+    Recorder host;
+    runCommandLine(s, host, fill);
+    EXPECT_NE(host.last.find("filled a 3-sided hole with 3 patches"), std::string::npos) << host.last;
+    EXPECT_NE(host.last.find("corner of 3 patches"), std::string::npos) << host.last;
+    ASSERT_EQ(s.doc.patches.size(), open.patches.size() + 3);
+    expectG1(s.doc, "after filling");
+    // The fill's centre, a point beside it, a point of the blend it meets and a face corner.
+    const uint32_t fillFirst = uint32_t(open.patches.size());
+    const uint32_t centre = s.doc.patches[fillFirst].idx[15], inner = s.doc.patches[fillFirst + 1].idx[10];
+    const uint32_t blend = s.doc.patches[6].idx[5], face = s.doc.patches[0].idx[0];
+    for (const auto& [pt, move] :
+         {std::pair{centre, "0.04 0.03 -0.05"}, {inner, "-0.03 0.02 0.04"}, {blend, "0.05 0 0.05"}, {face, "0 0 0.1"}}) {
+        test::runEditScript(s, "select point " + std::to_string(pt) + "; move " + move);
+        expectG1(s.doc, "after moving point " + std::to_string(pt));
+    }
+    // Undo takes the moves and the fill back: the hole is open again, exactly as it was.
+    test::runEditScript(s, "undo; undo; undo; undo; undo");
+    EXPECT_EQ(s.doc, open);
+}
+
+TEST(FillHole, BadHolesAreRefusedAndChangeNothing) {
+    EditSession s;
+    s.doc = planarRing(3);
+    const Document before = s.doc;
+    for (const char* bad : {"fill-hole 0:v0 2:v0", "fill-hole 0:v0 2:v0 0:v1", "fill-hole 0:v0 2:v0 1:u0", "fill-hole 0:v0 2:v0 c0",
+                            "fill-hole 0:v0 2:v0 9:v0"}) {
+        SCOPED_TRACE(bad);
+        EXPECT_THROW(test::runEditScript(s, bad), std::exception);
+        EXPECT_EQ(s.doc, before);
+    }
+}
