@@ -139,3 +139,39 @@ TEST(SoftSelection, LiveSymmetryMirrorsTheSoftShareToo) {
     EXPECT_GT(s.doc.points[lat(6, 3, 5)].z - before.points[lat(6, 3, 5)].z, 0.1);  // a soft neighbour rose
     EXPECT_LE(maxConstraintResidual(s.doc), 1e-9 * modelSize(s.doc));
 }
+
+TEST(Slide, PointsSlideAlongTheirOwnPolygonOrNormalAndJoinsHold) {
+    EditSession s;
+    test::runEditScript(s, "add-patch");
+    const Vec3 p5 = s.doc.points[5], p10 = s.doc.points[10];
+    // Each point along its own u polygon (+x on a flat patch), v polygon (+y) and normal (+z).
+    test::runEditScript(s, "select point 5,10; slide u 0.1");
+    EXPECT_NEAR(glm::length(s.doc.points[5] - (p5 + Vec3(0.1, 0, 0))), 0.0, 1e-12);
+    EXPECT_NEAR(glm::length(s.doc.points[10] - (p10 + Vec3(0.1, 0, 0))), 0.0, 1e-12);
+    test::runEditScript(s, "slide n 0.2; slide v -0.05");
+    EXPECT_NEAR(glm::length(s.doc.points[5] - (p5 + Vec3(0.1, -0.05, 0.2))), 0.0, 1e-9);
+    // On a bent patch the directions differ point by point: a slide is not one translation.
+    EditSession bent;
+    test::runEditScript(bent, "add-patch; select point 5; move 0 0 0.3");
+    const Vec3 b6 = bent.doc.points[6], b9 = bent.doc.points[9];
+    test::runEditScript(bent, "select point 6,9; slide n 0.1");
+    const Vec3 d6 = bent.doc.points[6] - b6, d9 = bent.doc.points[9] - b9;
+    EXPECT_NEAR(glm::length(d6), 0.1, 1e-12);
+    EXPECT_NEAR(glm::length(d9), 0.1, 1e-12);
+    EXPECT_GT(glm::length(d6 - d9), 1e-3);
+    // Across a C1 join the partner follows: the join holds.
+    EditSession joined;
+    test::runEditScript(joined, "add-patch; extrude u1");
+    ASSERT_EQ(joined.doc.joins.size(), 1u);
+    const uint32_t tangent = joined.doc.patches[0].idx[size_t(edgeSlot(Edge::U1, 1, 1))];
+    const Vec3 before = joined.doc.points[tangent];
+    test::runEditScript(joined, "select point " + std::to_string(tangent) + "; slide n 0.25");
+    EXPECT_NEAR(joined.doc.points[tangent].z - before.z, 0.25, 1e-9);
+    EXPECT_LE(maxConstraintResidual(joined.doc), 1e-9 * modelSize(joined.doc));
+    // A curve's point has no polygon in u and v to slide along; bad axes are refused.
+    EditSession curve;
+    test::runEditScript(curve, "add-curve");
+    EXPECT_THROW(test::runEditScript(curve, "select point 1; slide u 0.1"), std::exception);
+    EXPECT_THROW(test::runEditScript(s, "select point 5; slide w 0.1"), std::exception);
+    EXPECT_THROW(test::runEditScript(s, "select none; slide u 0.1"), std::exception);
+}

@@ -14,6 +14,7 @@
 
 #include "core/select/picking.hpp"
 #include "core/select/selection_ops.hpp"
+#include "core/select/slide.hpp"
 #include "core/select/soft_selection.hpp"
 #include "core/select/symmetry.hpp"
 
@@ -89,7 +90,8 @@ void select(CommandContext& ctx) {
 
 // Moves the selection's points by `f`; the joins are held by the solver with the moved points fixed
 // (a whole joined group moved rigidly needs no correction and gets none).
-void transformSelection(CommandContext& ctx, const std::string& label, const std::function<Vec3(const Vec3&)>& f) {
+// Moves the selection point by point: f(index, position) is where each point goes.
+void transformSelection(CommandContext& ctx, const std::string& label, const std::function<Vec3(uint32_t, const Vec3&)>& f) {
     const std::vector<uint32_t> moved = ctx.session.selectedPoints();
     if (moved.empty()) throw EditError("nothing is selected (select points, a patch, a net, a triangle or a curve first)");
     if (const std::string why = constructedPointsRefusal(ctx.session.doc, moved); !why.empty()) throw EditError(why);
@@ -107,9 +109,9 @@ void transformSelection(CommandContext& ctx, const std::string& label, const std
             for (size_t k = 0; k < soft.points.size(); ++k) {
                 const uint32_t p = soft.points[k];
                 if (!std::binary_search(driven.begin(), driven.end(), p))
-                    d.points[p] = glm::mix(d.points[p], f(d.points[p]), soft.weights[k]);
+                    d.points[p] = glm::mix(d.points[p], f(p, d.points[p]), soft.weights[k]);
             }
-            for (uint32_t p : moved) d.points[p] = f(d.points[p]);
+            for (uint32_t p : moved) d.points[p] = f(p, d.points[p]);
             applySymmetry(d.points, t.pairs, sym);
             if (!d.constructions.empty()) rerunConstructions(d);  // surfaces made from moved curves follow
             if (const Projection p = t.solver->project(d.points); !p.ok())
@@ -123,6 +125,11 @@ void transformSelection(CommandContext& ctx, const std::string& label, const std
                        std::to_string(moved.size()) + " selected";
     if (around > 0) what += ", " + std::to_string(around) + " within the " + softDescription(ctx.session.soft);
     ctx.host.status(what + ")");
+}
+
+// The same transform for every point (move, rotate, scale).
+void transformSelection(CommandContext& ctx, const std::string& label, const std::function<Vec3(const Vec3&)>& f) {
+    transformSelection(ctx, label, [&f](uint32_t, const Vec3& p) { return f(p); });
 }
 
 }  // namespace
@@ -147,6 +154,31 @@ void addSelectCommands(CommandTable& t) {
                expectArgs(ctx, 3, 3);
                const Vec3 d(commandNumber(ctx.args[0], "DX"), commandNumber(ctx.args[1], "DY"), commandNumber(ctx.args[2], "DZ"));
                transformSelection(ctx, "Move", [d](const Vec3& p) { return p + d; });
+           }});
+    t.add({.name = "slide",
+           .label = "Slide",
+           .usage = "u|v|n DIST",
+           .help = "Slide each selected point along its own control polygon in u or v, or along the surface normal there (n), by "
+                   "DIST (Rhino's UVN move); soft selection slides the points around it along theirs, and joins are held",
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 2, 2);
+               const auto axis = parseSlideAxis(ctx.args[0]);
+               if (!axis) throw EditError("expected u, v or n, got '" + ctx.args[0] + "'");
+               const double dist = commandNumber(ctx.args[1], "DIST");
+               // Directions from the shape before the slide, so that every point moves by DIST.
+               const Document& doc = ctx.session.doc;
+               for (uint32_t p : ctx.session.selectedPoints()) {
+                   const auto d = slideDirection(doc, p, *axis);
+                   if (!d)
+                       throw EditError("point " + std::to_string(p) +
+                                       " has no control polygon to slide along (a point of a patch or net slides)");
+               }
+               auto dirOf = [&doc, axis = *axis](uint32_t p) { return slideDirection(doc, p, axis).value_or(Vec3(0.0)); };
+               std::vector<Vec3> cache(doc.points.size(), Vec3(std::nan("")));
+               transformSelection(ctx, "Slide", [&](uint32_t p, const Vec3& at) {
+                   if (std::isnan(cache[p].x)) cache[p] = dirOf(p);
+                   return at + dist * cache[p];
+               });
            }});
     t.add({.name = "rotate",
            .label = "Rotate",
