@@ -1,4 +1,5 @@
-// One mouse move of an editor drag (or R rotation) on makePatchGrid(32, 32) (1 024 patches, 9 409 points), through
+// One mouse move of an editor drag (or R rotation) on makePatchGrid(32, 32) (1 024 patches, 9 409 points), or on
+// data/rounded_box.patchwork (corners held by leaning seams), through
 // the editor's own DragController (core/edit/drag_controller.hpp): the dragged points follow the mouse
 // on the view plane, the solver (factorised at drag start) holds the joins, and only the points that
 // changed since the last move are written into the mapped float3 pool buffer. Budget: <= 1 ms CPU.
@@ -9,6 +10,7 @@
 #include "core/base/point_upload.hpp"
 #include "core/construct/model_builders.hpp"
 #include "core/edit/drag_controller.hpp"
+#include "core/io/document_io.hpp"
 #include "core/model/camera_math.hpp"
 
 namespace {
@@ -16,9 +18,8 @@ namespace {
 constexpr int kGrid = 32;
 uint32_t lat(int r, int c) { return static_cast<uint32_t>(r * (3 * kGrid + 1) + c); }
 
-void runDrag(benchmark::State& state, const std::vector<uint32_t>& dragged, pw::TransformKind kind = pw::TransformKind::Move,
-             pw::Continuity joins = pw::Continuity::C1, pw::SoftSelection soft = {}) {
-    pw::Document doc = pw::makePatchGrid(kGrid, kGrid, joins);
+void runDragOn(benchmark::State& state, pw::Document doc, const std::vector<uint32_t>& dragged, pw::TransformKind kind,
+               pw::SoftSelection soft) {
     pw::DragView view;
     view.width = 1280;
     view.height = 720;
@@ -46,6 +47,11 @@ void runDrag(benchmark::State& state, const std::vector<uint32_t>& dragged, pw::
     state.counters["points"] = double(doc.points.size());
     state.counters["soft points"] = double(drag.softCount());
     state.counters["uploaded/move"] = double(totalChanged) / double(std::max<int64_t>(state.iterations(), 1));
+}
+
+void runDrag(benchmark::State& state, const std::vector<uint32_t>& dragged, pw::TransformKind kind = pw::TransformKind::Move,
+             pw::Continuity joins = pw::Continuity::C1, pw::SoftSelection soft = {}) {
+    runDragOn(state, pw::makePatchGrid(kGrid, kGrid, joins), dragged, kind, soft);
 }
 
 // A four-patch corner (boundary point: carries its tangent neighbours).
@@ -103,3 +109,25 @@ void BM_EditorDragMove_Grid32_SoftCorner_R3(benchmark::State& state) {
 BENCHMARK(BM_EditorDragMove_Grid32_SoftCorner_R3)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
+
+// Corners of three patches held G1 by leaning seams (issue 40): data/rounded_box.patchwork, 54
+// patches, 108 G1/C1 joins (24 leaning). The centre of a filled corner, a face corner (three
+// corners' seams in the solver's region), and the centre with soft selection reaching the corner's
+// neighbours.
+pw::Document roundedBox() { return pw::loadDocument(PATCHWORK_DATA_DIR "/rounded_box.patchwork"); }
+uint32_t cornerCentre(const pw::Document& d) { return d.patches[30].idx[15]; }
+void BM_EditorDragMove_RoundedBox_CornerCentre(benchmark::State& state) {
+    const pw::Document doc = roundedBox();
+    runDragOn(state, doc, {cornerCentre(doc)}, pw::TransformKind::Move, {});
+}
+BENCHMARK(BM_EditorDragMove_RoundedBox_CornerCentre)->Unit(benchmark::kMicrosecond);
+void BM_EditorDragMove_RoundedBox_FaceCorner(benchmark::State& state) {
+    const pw::Document doc = roundedBox();
+    runDragOn(state, doc, {doc.patches[0].idx[0]}, pw::TransformKind::Move, {});
+}
+BENCHMARK(BM_EditorDragMove_RoundedBox_FaceCorner)->Unit(benchmark::kMicrosecond);
+void BM_EditorDragMove_RoundedBox_SoftCentre(benchmark::State& state) {
+    const pw::Document doc = roundedBox();
+    runDragOn(state, doc, {cornerCentre(doc)}, pw::TransformKind::Move, pw::SoftSelection{true, 0.4, pw::Falloff::Smooth});
+}
+BENCHMARK(BM_EditorDragMove_RoundedBox_SoftCentre)->Unit(benchmark::kMicrosecond);
