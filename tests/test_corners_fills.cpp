@@ -232,6 +232,33 @@ TEST(FillHole, ABoxCornerFillsG1AndHoldsWhileItsPointsAndNeighboursMove) {
     EXPECT_EQ(s.doc, open);
 }
 
+// A 5-sided hole in a flat ring whose seams' tangent ratios differ along each side (0.800 and 0.807
+// after the joins were measured one by one): the fill can only be held by folding a ring patch, so
+// it is refused with the reason, and nothing changes (DESIGN §14: what a fill needs).
+TEST(FillHole, AHoleWhoseSidesRatiosDisagreeIsRefusedSayingWhatToMatch) {
+    EditSession s;
+    s.doc = planarRing(5);
+    joinAllG1(s);
+    std::string cmd = "fill-hole";
+    for (int k = 0; k < 5; ++k) {
+        // Side k: the side patch's edge whose two ends are hole corners (on the unit circle).
+        const Patch& P = s.doc.patches[size_t(2 * k)];
+        for (Edge e : {Edge::U0, Edge::V0, Edge::U1, Edge::V1}) {
+            const Vec3 a = s.doc.points[P.idx[size_t(edgeSlot(e, 0))]], b = s.doc.points[P.idx[size_t(edgeSlot(e, 3))]];
+            if (std::abs(glm::length(a) - 1.0) < 1e-9 && std::abs(glm::length(b) - 1.0) < 1e-9)
+                cmd += " " + std::to_string(2 * k) + ":" + std::string(edgeName(e));
+        }
+    }
+    const Document before = s.doc;
+    try {
+        test::runEditScript(s, cmd);
+        FAIL() << "a fill that needs a fold was accepted";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("same tangent ratio"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(s.doc, before);
+}
+
 TEST(FillHole, BadHolesAreRefusedAndChangeNothing) {
     EditSession s;
     s.doc = planarRing(3);

@@ -117,6 +117,21 @@ void SurfacesPanel::draw(PanelContext& ctx) {
     ImGui::SameLine();
     build("Blend G2", "blend", twoEdges, "op.blendG2", " G2");
     tip("Bridge the two listed patch edges, G2 at both ends (three spans joined C2)");
+    // A hole's sides: 3 to 6 listed edges, a side of two edges end to end made with "+".
+    const auto isEdge = [](const std::string& w) { return w.find(':') != std::string::npos && w[0] != 'c'; };
+    const bool allEdges = std::all_of(sections_.begin(), sections_.end(), isEdge);
+    build("Fill hole", "fill-hole", n >= 3 && n <= 6 && allEdges, "op.fillHole");
+    tip("Fill the hole the listed edges go round, in order (3 to 6 sides): one patch per hole corner, G1 to every patch around "
+        "and at its centre, held while you drag");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(n < 2 || !isEdge(n >= 2 ? sections_[n - 2] : "") || !isEdge(n >= 1 ? sections_[n - 1] : ""));
+    if (ImGui::SmallButton("Join last two")) {
+        sections_[n - 2] += "+" + sections_[n - 1];
+        sections_.pop_back();
+    }
+    traceItem("surfaces.pairEdges");
+    tip("Make the last two listed edges one side of a hole (they meet end to end)");
+    ImGui::EndDisabled();
     if (!sections_.empty()) {
         if (ImGui::SmallButton("Clear")) sections_.clear();
         ImGui::SameLine();
