@@ -1,7 +1,7 @@
 // The editor's own rules, tested by linking the ui library (no window, no GPU): a headless Dear
 // ImGui context draws the real panels against a PanelContext that runs the real command table, and
 // input is fed through ImGuiIO as the GLFW back end would. Covered: the Surfaces panel's list,
-// options, preview and Loft (issue 39); a level typed out of range into
+// options, preview and Loft (issue 39), its Fill hole (issue 40); a level typed out of range into
 // the Tessellation panel (Ctrl+click, type, Enter) is clamped, recorded as one undo step and the
 // saved file reopens (issue 38's live bug); a slider previews without undo steps and commits one
 // on release; the editor's keys come from the command table alone; the widgets' test hooks
@@ -14,6 +14,7 @@
 
 #include "core/commands/command_table.hpp"
 #include "core/io/document_io.hpp"
+#include "core/solve/constraint_solver.hpp"
 #include "support.hpp"
 #include "ui/panels/command_panels.hpp"
 #include "ui/panels/side_panels.hpp"
@@ -292,4 +293,47 @@ TEST_F(Ui, TheSurfacesPanelListsCurvesAndEdgesPreviewsAndLofts) {
     bool joined = false;
     for (const Join& j : s.doc.joins) joined = joined || (j.patchA == 0 && j.continuity == Continuity::G1);
     EXPECT_TRUE(joined);
+}
+
+// The Surfaces panel's Fill hole (issue 40): six listed patch edges paired into three sides with
+// Join last two; the mouse over Fill hole previews the command the click then runs, and the click
+// fills the rounded box's last open corner.
+TEST_F(Ui, TheSurfacesPanelPairsEdgesIntoSidesAndFillsAHole) {
+    HeadlessContext ctx;
+    ImGuiIO& io = ImGui::GetIO();
+    EditSession& s = ctx.session();
+    const std::string script = test::readBytes(test::dataDir() / "rounded_box.pwscript");
+    test::runEditScript(s, script.substr(0, script.rfind("fill-hole")));
+    const size_t patches = s.doc.patches.size();
+    SurfacesPanel panel;
+    auto draw = [&] { panel.draw(ctx); };
+    const auto click = [&](const std::string& item) {
+        frame(draw);
+        io.MousePos = centre(item);
+        frame(draw);
+        io.MouseDown[0] = true;
+        frame(draw);
+        io.MouseDown[0] = false;
+        frame(draw);
+    };
+    // The script's last line: fill-hole 11:u1+23:u1 13:u0+25:u0 17:u1+29:u1.
+    const std::pair<int, Edge> edges[6] = {{11, Edge::U1}, {23, Edge::U1}, {13, Edge::U0}, {25, Edge::U0}, {17, Edge::U1}, {29, Edge::U1}};
+    for (int side = 0; side < 3; ++side) {
+        for (int k = 0; k < 2; ++k) {
+            s.sel.clear();
+            s.sel.patch = edges[2 * side + k].first;
+            s.activeEdge = edges[2 * side + k].second;
+            click("surfaces.addEdge");
+        }
+        click("surfaces.pairEdges");
+    }
+    io.MousePos = centre("op.fillHole");
+    frame(draw);
+    frame(draw);
+    EXPECT_EQ(ctx.previewed, splitCommandWords("fill-hole 11:u1+23:u1 13:u0+25:u0 17:u1+29:u1"));
+    EXPECT_EQ(s.doc.patches.size(), patches);  // a preview changes nothing
+    click("op.fillHole");
+    EXPECT_TRUE(ctx.errors.empty()) << ::testing::PrintToString(ctx.errors);
+    EXPECT_EQ(s.doc.patches.size(), patches + 3);
+    EXPECT_LE(maxConstraintResidual(s.doc), 1e-6 * modelSize(s.doc));
 }
