@@ -106,6 +106,18 @@ protected:
         ImGui::End();
         ImGui::Render();
     }
+    // Move the mouse onto `item`, press and release it: one frame each, as a user's click.
+    template <class F>
+    void click(F&& draw, const std::string& item) {
+        ImGuiIO& io = ImGui::GetIO();
+        frame(draw);
+        io.MousePos = centre(item);
+        frame(draw);
+        io.MouseDown[0] = true;
+        frame(draw);
+        io.MouseDown[0] = false;
+        frame(draw);
+    }
     ImVec2 centre(const std::string& item) const {
         const auto it = trace.items.find(item);
         EXPECT_NE(it, trace.items.end()) << item << " was not drawn";
@@ -254,26 +266,17 @@ TEST_F(Ui, TheSurfacesPanelListsCurvesAndEdgesPreviewsAndLofts) {
                         "curve-control -0.5,1.8,1.0 -0.17,1.8,1.4 0.17,1.8,1.4 0.5,1.8,1.0");
     SurfacesPanel panel;
     auto draw = [&] { panel.draw(ctx); };
-    const auto click = [&](const std::string& item) {
-        frame(draw);
-        io.MousePos = centre(item);
-        frame(draw);
-        io.MouseDown[0] = true;
-        frame(draw);
-        io.MouseDown[0] = false;
-        frame(draw);
-    };
     s.sel.clear();
     s.sel.patch = 0;
     s.activeEdge = Edge::V1;
-    click("surfaces.addEdge");
+    click(draw, "surfaces.addEdge");
     for (int c : {0, 1}) {
         s.sel.clear();
         s.sel.curve = c;
-        click("surfaces.addCurve");
+        click(draw, "surfaces.addCurve");
     }
     // G1 from the Start combo: open it, then pick the second entry below it.
-    click("surfaces.loftStart");
+    click(draw, "surfaces.loftStart");
     const ImVec2 combo = centre("surfaces.loftStart");
     io.MousePos = ImVec2(combo.x, combo.y + 41.0f);  // below the combo: G0 at +24, G1 at +41 (13 px font, 4 px spacing)
     frame(draw);
@@ -286,7 +289,7 @@ TEST_F(Ui, TheSurfacesPanelListsCurvesAndEdgesPreviewsAndLofts) {
     frame(draw);
     EXPECT_EQ(ctx.previewed, splitCommandWords("loft 0:v1 c0 c1 start=G1"));
     EXPECT_EQ(s.doc.constructions.size(), 0u);  // a preview changes nothing
-    click("op.loft");
+    click(draw, "op.loft");
     EXPECT_TRUE(ctx.errors.empty()) << ::testing::PrintToString(ctx.errors);
     ASSERT_EQ(s.doc.constructions.size(), 1u);
     EXPECT_EQ(s.doc.constructions[0].ends[0], Continuity::G1);
@@ -307,15 +310,6 @@ TEST_F(Ui, TheSurfacesPanelPairsEdgesIntoSidesAndFillsAHole) {
     const size_t patches = s.doc.patches.size();
     SurfacesPanel panel;
     auto draw = [&] { panel.draw(ctx); };
-    const auto click = [&](const std::string& item) {
-        frame(draw);
-        io.MousePos = centre(item);
-        frame(draw);
-        io.MouseDown[0] = true;
-        frame(draw);
-        io.MouseDown[0] = false;
-        frame(draw);
-    };
     // The script's last line: fill-hole 11:u1+23:u1 13:u0+25:u0 17:u1+29:u1.
     const std::pair<int, Edge> edges[6] = {{11, Edge::U1}, {23, Edge::U1}, {13, Edge::U0}, {25, Edge::U0}, {17, Edge::U1}, {29, Edge::U1}};
     for (int side = 0; side < 3; ++side) {
@@ -323,16 +317,16 @@ TEST_F(Ui, TheSurfacesPanelPairsEdgesIntoSidesAndFillsAHole) {
             s.sel.clear();
             s.sel.patch = edges[2 * side + k].first;
             s.activeEdge = edges[2 * side + k].second;
-            click("surfaces.addEdge");
+            click(draw, "surfaces.addEdge");
         }
-        click("surfaces.pairEdges");
+        click(draw, "surfaces.pairEdges");
     }
     io.MousePos = centre("op.fillHole");
     frame(draw);
     frame(draw);
     EXPECT_EQ(ctx.previewed, splitCommandWords("fill-hole 11:u1+23:u1 13:u0+25:u0 17:u1+29:u1"));
     EXPECT_EQ(s.doc.patches.size(), patches);  // a preview changes nothing
-    click("op.fillHole");
+    click(draw, "op.fillHole");
     EXPECT_TRUE(ctx.errors.empty()) << ::testing::PrintToString(ctx.errors);
     EXPECT_EQ(s.doc.patches.size(), patches + 3);
     EXPECT_LE(maxConstraintResidual(s.doc), 1e-6 * modelSize(s.doc));

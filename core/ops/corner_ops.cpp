@@ -41,6 +41,13 @@ std::string fmt(const Vec3& v) {
     return buf;
 }
 
+// The corner (c = cu + 2·cv) of patch q at position `at`, or -1.
+int cornerAt(const Document& doc, uint32_t q, const Vec3& at, double tol) {
+    for (int c = 0; c < 4; ++c)
+        if (glm::length(doc.points[doc.patches[q].idx[size_t(cornerSlot(c % 2, c / 2))]] - at) <= tol) return c;
+    return -1;
+}
+
 // A patch corner at position `at` whose fan closes, if any.
 std::optional<std::pair<CornerCycle, std::pair<uint32_t, int>>> fanAt(const Document& doc, const Vec3& at, double tol) {
     for (uint32_t q = 0; q < doc.patches.size(); ++q)
@@ -54,9 +61,7 @@ std::optional<std::pair<CornerCycle, std::pair<uint32_t, int>>> fanAt(const Docu
 void checkCornerPatches(const Document& doc, const CornerCycle& c) {
     for (uint32_t q : c.patches) {
         checkBezier(doc, q, "corner");
-        for (uint32_t i : doc.patches[q].idx)
-            if (pointWeight(doc, i) != 1.0)
-                throw EditError("patch " + std::to_string(q) + " is rational; a G1 corner needs polynomial patches around it");
+        checkPolynomial(doc, q, "a G1 corner needs polynomial patches around it");
         if (const int k = constructionOfPatch(doc, q); k >= 0)
             throw EditError("patch " + std::to_string(q) + " is made by " + constructionLabel(doc, size_t(k)) +
                             ", which sets its joins; bake it first to make the corner G1");
@@ -67,12 +72,18 @@ void checkCornerPatches(const Document& doc, const CornerCycle& c) {
                             std::to_string(c.patches.size()) + " patches can be held G1, not G2: change that join to G1 first");
 }
 
+// The end of join jn's edge (A's point 0 or 3) at `at`, or -1 when neither end is there.
+int joinEndAt(const Document& doc, const Join& jn, const Vec3& at, double tol) {
+    const Patch& A = doc.patches[jn.patchA];
+    if (glm::length(doc.points[A.idx[size_t(edgeSlot(jn.edgeA, 0, 0))]] - at) <= tol) return 0;
+    if (glm::length(doc.points[A.idx[size_t(edgeSlot(jn.edgeA, 3, 0))]] - at) <= tol) return 3;
+    return -1;
+}
+
 // The shear coefficient of join jn at its end at `at` (0 when neither end is there).
 double shearAt(const Document& doc, const Join& jn, const Vec3& at, double tol) {
-    const Patch& A = doc.patches[jn.patchA];
-    if (glm::length(doc.points[A.idx[size_t(edgeSlot(jn.edgeA, 0, 0))]] - at) <= tol) return jn.shear[0];
-    if (glm::length(doc.points[A.idx[size_t(edgeSlot(jn.edgeA, 3, 0))]] - at) <= tol) return jn.shear[2];
-    return 0.0;
+    const int k = joinEndAt(doc, jn, at, tol);
+    return k == 0 ? jn.shear[0] : k == 3 ? jn.shear[2] : 0.0;
 }
 
 bool tangentOnly(Continuity c) { return holdsTangent(c) && !holdsCurvature(c); }
@@ -151,14 +162,9 @@ std::string makeG1Corner(Document& doc, uint32_t p, int cu, int cv, bool allSeam
     const Document base = doc;
     // The tangent plane: the patches' corner normals together.
     Vec3 normal(0.0);
-    for (uint32_t q : cyc->patches) {
-        const Patch& P = doc.patches[q];
-        for (int c = 0; c < 4; ++c)
-            if (glm::length(doc.points[P.idx[size_t(cornerSlot(c % 2, c / 2))]] - at) <= tol) {
-                normal += evaluateNet(gatherNet(doc, P.idx), Basis::Bezier, 0.5, c % 2, c / 2).n;
-                break;
-            }
-    }
+    for (uint32_t q : cyc->patches)
+        if (const int c = cornerAt(doc, q, at, tol); c >= 0)
+            normal += evaluateNet(gatherNet(doc, doc.patches[q].idx), Basis::Bezier, 0.5, c % 2, c / 2).n;
     if (glm::length(normal) < 1e-6) throw EditError("the patches around the corner at " + fmt(at) + " do not face one way");
     normal = glm::normalize(normal);
     auto flat = [&](const Vec3& x) { return x - glm::dot(x, normal) * normal; };
@@ -169,8 +175,7 @@ std::string makeG1Corner(Document& doc, uint32_t p, int cu, int cv, bool allSeam
         ++held;
         const Patch& A = doc.patches[jn.patchA];
         const Patch& B = doc.patches[jn.patchB];
-        const Vec3 a0end = doc.points[A.idx[size_t(edgeSlot(jn.edgeA, 0, 0))]];
-        const int k = glm::length(a0end - at) <= tol ? 0 : 3;
+        const int k = joinEndAt(doc, jn, at, tol) == 0 ? 0 : 3;
         const int kb = jn.reversed ? 3 - k : k;
         const Vec3 a0 = doc.points[A.idx[size_t(edgeSlot(jn.edgeA, k, 0))]];
         const Vec3 aLeg = flat(doc.points[A.idx[size_t(edgeSlot(jn.edgeA, k, 1))]] - a0);
@@ -218,13 +223,12 @@ std::array<std::optional<double>, 2> alphaAtEnds(const Document& doc, size_t j) 
     if (j >= doc.joins.size()) return out;
     const Join& jn = doc.joins[j];
     const Patch& A = doc.patches[jn.patchA];
-    const double tol = 1e-9 * std::max(modelSize(doc), 1e-300);
+    const double size = std::max(modelSize(doc), 1e-300);  // computed once: it reads every point
+    const double tol = 1e-9 * size, near = 1e-6 * size;
     // The edge of patch q other than e through its corner at `at`, and the join on it.
     auto next = [&](uint32_t q, Edge e, const Vec3& at) -> int {
-        for (int c = 0; c < 4; ++c)
-            if (glm::length(doc.points[doc.patches[q].idx[size_t(cornerSlot(c % 2, c / 2))]] - at) <= tol)
-                return findJoin(doc, q, isUEdge(e) ? vEdge(c / 2) : uEdge(c % 2));
-        return -1;
+        const int c = cornerAt(doc, q, at, tol);
+        return c < 0 ? -1 : findJoin(doc, q, isUEdge(e) ? vEdge(c / 2) : uEdge(c % 2));
     };
     auto across = [&](size_t k, uint32_t q) {
         return doc.joins[k].patchA == q ? std::pair(doc.joins[k].patchB, doc.joins[k].edgeB)
@@ -248,11 +252,9 @@ std::array<std::optional<double>, 2> alphaAtEnds(const Document& doc, size_t j) 
             const Join& o = doc.joins[size_t(j3)];
             if (shearAt(doc, o, at, tol) != 0.0) continue;
             const Vec3 la = doc.points[A.idx[size_t(edgeSlot(jn.edgeA, k, 1))]];
-            const Patch& OA = doc.patches[o.patchA];
-            const int ko = glm::length(doc.points[OA.idx[size_t(edgeSlot(o.edgeA, 0, 0))]] - at) <= tol ? 0 : 3;
-            const Vec3 oa = doc.points[OA.idx[size_t(edgeSlot(o.edgeA, ko, 1))]];
+            const int ko = joinEndAt(doc, o, at, tol) == 0 ? 0 : 3;
+            const Vec3 oa = doc.points[doc.patches[o.patchA].idx[size_t(edgeSlot(o.edgeA, ko, 1))]];
             const Vec3 ob = doc.points[doc.patches[o.patchB].idx[size_t(edgeSlot(o.edgeB, o.reversed ? 3 - ko : ko, 1))]];
-            const double near = 1e-6 * std::max(modelSize(doc), 1e-300);
             const double alphaThere = ko == 0 ? o.alpha : endAlpha(o);
             if (glm::length(la - oa) <= near)
                 result = alphaThere;

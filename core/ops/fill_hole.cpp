@@ -68,9 +68,7 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
             checkBezier(doc, p, "fill-hole");
             if (findJoin(doc, p, e) >= 0)
                 throw EditError("edge " + edgeLabel(p, e) + " is joined already, so it is not the edge of a hole");
-            for (uint32_t q : doc.patches[p].idx)
-                if (pointWeight(doc, q) != 1.0)
-                    throw EditError("patch " + std::to_string(p) + " is rational; fill-hole needs polynomial patches");
+            checkPolynomial(doc, p, "fill-hole needs polynomial patches");
             seg[i] = Seg{p, e, false};
         }
         SideGeo& g = geo[k];

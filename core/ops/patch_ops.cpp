@@ -38,6 +38,11 @@ void checkBezier(const Document& doc, uint32_t p, const char* what) {
         throw EditError(std::string(what) + " needs a Bézier patch; patch " + std::to_string(p) + " uses another basis");
 }
 
+void checkPolynomial(const Document& doc, uint32_t p, const std::string& needs) {
+    for (uint32_t i : doc.patches[p].idx)
+        if (pointWeight(doc, i) != 1.0) throw EditError("patch " + std::to_string(p) + " is rational; " + needs);
+}
+
 uint32_t addPoint(Document& doc, const Vec3& v, double weight) {
     doc.points.push_back(v);
     const uint32_t i = uint32_t(doc.points.size() - 1);

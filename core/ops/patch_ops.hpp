@@ -57,9 +57,11 @@ void deleteTriangle(Document& doc, uint32_t t);
 Edge nearestEdge(double u, double v);
 
 // Helpers of the operations in core/ops: EditError unless patch p exists and is Bézier (`what`
-// names the operation); a new pool point; the edge across the patch from e; slot s of a patch
+// names the operation); EditError "patch p is rational; <needs>" when any of its points has a
+// weight other than 1; a new pool point; the edge across the patch from e; slot s of a patch
 // with its u direction reversed.
 void checkBezier(const Document& doc, uint32_t p, const char* what);
+void checkPolynomial(const Document& doc, uint32_t p, const std::string& needs);
 uint32_t addPoint(Document& doc, const Vec3& v, double weight = 1.0);
 Edge oppositeEdge(Edge e);
 int flippedSlot(int s);
