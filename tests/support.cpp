@@ -12,12 +12,31 @@
 
 #include <array>
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <stdexcept>
 
 namespace pw::test {
+
+Document poleRing() {
+    Document d;
+    auto pool = [](int i, int g) { return uint32_t(i * 9 + g % 9); };
+    for (int i = 0; i < 4; ++i)
+        for (int g = 0; g < 9; ++g) {
+            const double polar = 0.35 + 0.55 * i / 3.0, azimuth = g * 2.0 * std::acos(-1.0) / 9.0;
+            d.points.emplace_back(std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth), std::cos(polar));
+        }
+    for (int k = 0; k < 3; ++k) {
+        Patch p;
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) p.idx[size_t(i * 4 + j)] = pool(i, 3 * k + j);
+        d.patches.push_back(p);
+    }
+    for (uint32_t k = 0; k < 3; ++k) d.joins.push_back(Join{k, Edge::U1, (k + 1) % 3, Edge::U0, false, Continuity::C0, 1.0});
+    return d;
+}
 
 Vec3 patchPointAt(const Document& doc, uint32_t p, double u, double v) {
     return evaluateWindow(gatherWindow(doc, doc.patches.at(p).idx), Basis::Bezier, 0.5, u, v).p;

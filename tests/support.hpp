@@ -45,6 +45,11 @@ void runEditScript(EditSession& session, const std::string& script);
 Vec3 patchPointAt(const Document& doc, uint32_t p, double u, double v);
 Vec3 curvePointAt(const Document& doc, const BezierCurve& c, size_t seg, double t);
 
+// Three patches round the pole of the unit sphere (polar angle 0.35 to 0.9, a third of the way round
+// each), neighbours sharing their radial edges and joined C0: a triangular hole at the top, edges
+// 0:v0, 1:v0 and 2:v0, which one Bézier triangle fills G1 (issue 40).
+Document poleRing();
+
 // Runs the Khronos glTF validator (PATCHWORK_GLTF_VALIDATOR, one node process) on the files and
 // expects 0 errors and 0 warnings each; a missing validator or node is a failure, never a skip.
 void expectValidGltf(const std::vector<std::filesystem::path>& files);

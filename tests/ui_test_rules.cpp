@@ -331,3 +331,30 @@ TEST_F(Ui, TheSurfacesPanelPairsEdgesIntoSidesAndFillsAHole) {
     EXPECT_EQ(s.doc.patches.size(), patches + 3);
     EXPECT_LE(maxConstraintResidual(s.doc), 1e-6 * modelSize(s.doc));
 }
+
+// The Surfaces panel's Triangle (issue 40): three listed single edges round a hole; the mouse over
+// Triangle previews `fill-hole … triangle` and the click fills the hole with one Bézier triangle.
+TEST_F(Ui, TheSurfacesPanelFillsAThreeSidedHoleWithATriangle) {
+    HeadlessContext ctx;
+    ImGuiIO& io = ImGui::GetIO();
+    EditSession& s = ctx.session();
+    s.doc = test::poleRing();
+    SurfacesPanel panel;
+    auto draw = [&] { panel.draw(ctx); };
+    for (int p = 0; p < 3; ++p) {
+        s.sel.clear();
+        s.sel.patch = p;
+        s.activeEdge = Edge::V0;
+        click(draw, "surfaces.addEdge");
+    }
+    io.MousePos = centre("op.fillTriangle");
+    frame(draw);
+    frame(draw);
+    EXPECT_EQ(ctx.previewed, splitCommandWords("fill-hole 0:v0 1:v0 2:v0 triangle"));
+    EXPECT_TRUE(s.doc.triangles.empty());  // a preview changes nothing
+    click(draw, "op.fillTriangle");
+    EXPECT_TRUE(ctx.errors.empty()) << ::testing::PrintToString(ctx.errors);
+    EXPECT_EQ(s.doc.triangles.size(), 1u);
+    EXPECT_EQ(s.doc.joins.size(), 6u);
+    EXPECT_LE(maxConstraintResidual(s.doc), 1e-6 * modelSize(s.doc));
+}

@@ -30,6 +30,17 @@ std::pair<uint32_t, Edge> patchEdge(const std::string& word, const Document& doc
     return {p, *e};
 }
 
+// "2:u1" → patch 2, edge u1; "t1:e2" → triangle 1, edge e2 (a join's side).
+std::pair<uint32_t, Edge> joinSide(const std::string& word, const Document& doc) {
+    if (word.empty() || word[0] != 't') return patchEdge(word, doc);
+    const size_t colon = word.find(':');
+    if (colon == std::string::npos) throw EditError("expected TRIANGLE:EDGE such as t0:e1, got '" + word + "'");
+    const uint32_t t = commandIndex(word.substr(1, colon - 1), doc.triangles.size(), "triangle");
+    const auto e = parseJoinEdge(word.substr(colon + 1));
+    if (!e || !isTriangleEdge(*e)) throw EditError("expected a triangle edge e0, e1 or e2 in '" + word + "'");
+    return {t, *e};
+}
+
 Edge edgeArg(const CommandContext& ctx, size_t i) {
     if (ctx.args.size() <= i) return ctx.session.activeEdge;
     const auto e = parseEdge(ctx.args[i]);
@@ -273,18 +284,20 @@ void addModelCommands(CommandTable& t) {
                "tangent (and for C2/G2 third) rows move onto it (Match). G1 and G2 keep the shape parameters measured when joining; "
                "on two edges joined already it changes the join's continuity in place (the side that joined first stays). A join that "
                "cannot hold "
-               "together with the others, or only by folding a patch, is refused, naming them, and the document stays as it was",
+               "together with the others, or only by folding a patch, is refused, naming them, and the document stays as it was. A "
+               "side tN:e0|e1|e2 is an edge of Bézier triangle N, joined C0 or G1 to a patch's edge or another triangle's",
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 3, 3);
                const Document& doc = ctx.session.doc;
-               const std::pair<uint32_t, Edge> a = patchEdge(ctx.args[0], doc), b = patchEdge(ctx.args[1], doc);
+               const std::pair<uint32_t, Edge> a = joinSide(ctx.args[0], doc), b = joinSide(ctx.args[1], doc);
                const auto c = parseContinuity(ctx.args[2]);
                if (!c) throw EditError("expected C0, C1, G1, C2 or G2, got '" + ctx.args[2] + "'");
                const int ja = findJoin(doc, a.first, a.second);
                const bool change = ja >= 0 && ja == findJoin(doc, b.first, b.second);
                // Under live symmetry the mirror images of the two edges are joined too.
-               const auto ma = mirrorEdge(doc, a.first, a.second, ctx.session.symmetry);
-               const auto mb = mirrorEdge(doc, b.first, b.second, ctx.session.symmetry);
+               const bool quads = !isTriangleEdge(a.second) && !isTriangleEdge(b.second);
+               const auto ma = quads ? mirrorEdge(doc, a.first, a.second, ctx.session.symmetry) : std::nullopt;
+               const auto mb = quads ? mirrorEdge(doc, b.first, b.second, ctx.session.symmetry) : std::nullopt;
                const bool mirrored = ma && mb && *ma != a && *ma != b && *mb != a && *mb != b;
                std::string corner, mirrorCorner;
                ctx.session.apply(change ? "Join continuity" : "Join edges", [&](Document& d) {
@@ -300,15 +313,19 @@ void addModelCommands(CommandTable& t) {
     t.add({.name = "fill-hole",
            .label = "Fill Hole",
            .menu = "Surface",
-           .usage = "SIDE SIDE SIDE [SIDE …]",
+           .usage = "SIDE SIDE SIDE [SIDE …] [triangle]",
            .help = "Fill a hole bounded by 3 to 6 sides, each an open patch edge (P:u0 …) or two edges end to end (P:u0+Q:v1), in "
                    "order round the hole: one patch per hole corner, meeting at a centre, G1 to every surrounding patch and to each "
                    "other, held live like any join. A side of one edge is split at its middle first (through its ring; no join is "
-                   "dropped); a 5- or 6-sided fill is split 2×2 at its centre",
+                   "dropped); a 5- or 6-sided fill is split 2×2 at its centre. With `triangle`, three sides of one edge each are "
+                   "filled by one Bézier triangle instead, G1 to all three",
            .run = [](CommandContext& ctx) {
-               if (ctx.args.size() < 3 || ctx.args.size() > 6) expectArgs(ctx, 3, 6);
+               std::vector<std::string> args = ctx.args;
+               const bool triangle = !args.empty() && args.back() == "triangle";
+               if (triangle) args.pop_back();
+               if (args.size() < 3 || args.size() > 6) throw EditError("fill-hole needs 3 to 6 sides, got " + std::to_string(args.size()));
                std::vector<HoleSide> sides;
-               for (const std::string& arg : ctx.args) {
+               for (const std::string& arg : args) {
                    if (!arg.empty() && (arg[0] == 'c' || arg[0] == 'C'))
                        throw EditError("fill-hole takes patch edges (P:u0, or P:u0+Q:v1), not curves such as '" + arg +
                                        "': make a surface from the curve first (extrude, loft)");
@@ -319,7 +336,7 @@ void addModelCommands(CommandTable& t) {
                    sides.push_back(std::move(side));
                }
                std::string note;
-               ctx.session.apply("Fill hole", [&](Document& d) { note = fillHole(d, sides); });
+               ctx.session.apply("Fill hole", [&](Document& d) { note = triangle ? fillHoleWithTriangle(d, sides) : fillHole(d, sides); });
                ctx.host.status(note);
            }});
     t.add({.name = "tolerances",
@@ -353,14 +370,17 @@ void addModelCommands(CommandTable& t) {
            .label = "Unjoin Edge",
            .menu = "Patch",
            .usage = "[A:EDGE]",
-           .help = "Remove the join on an edge (default: the selected patch's highlighted edge); the patches can then move apart",
+           .help = "Remove the join on an edge (default: the selected patch's highlighted edge; tN:e1 for a triangle's edge); the "
+                   "patches can then move apart",
            .run = [](CommandContext& ctx) {
                expectArgs(ctx, 0, 1);
                EditSession& s = ctx.session;
                if (ctx.args.empty() && !hasPatch(s)) throw EditError("select a patch or name its edge (A:EDGE)");
-               const auto [p, e] = ctx.args.empty() ? std::pair{uint32_t(s.sel.patch), s.activeEdge} : patchEdge(ctx.args[0], s.doc);
+               const auto [p, e] = ctx.args.empty() ? std::pair{uint32_t(s.sel.patch), s.activeEdge} : joinSide(ctx.args[0], s.doc);
                const int j = findJoin(s.doc, p, e);
-               if (j < 0) throw EditError("edge " + std::string(edgeName(e)) + " of patch " + std::to_string(p) + " is not joined");
+               if (j < 0)
+                   throw EditError("edge " + std::string(edgeName(e)) + " of " + (isTriangleEdge(e) ? "triangle " : "patch ") +
+                                   std::to_string(p) + " is not joined");
                s.apply("Unjoin", [j](Document& d) { unjoin(d, size_t(j)); });
            }});
     t.add(fromEdge("curve-from-edge", "Curve from Edge",

@@ -5,6 +5,7 @@
 
 #include "core/base/errors.hpp"
 #include "core/model/join_detect.hpp"
+#include "core/model/topology.hpp"
 #include "core/solve/constraint_solver.hpp"
 
 namespace pw {
@@ -44,8 +45,8 @@ double joinTolerance(const Document& doc) { return 1e-6 * modelSize(doc) + 1e-12
 
 std::string describeJoin(const Document& doc, size_t j) {
     const Join& jn = doc.joins[j];
-    return "join " + std::to_string(j) + " (patch " + std::to_string(jn.patchA) + " " + std::string(edgeName(jn.edgeA)) + " – patch " +
-           std::to_string(jn.patchB) + " " + std::string(edgeName(jn.edgeB)) + ", " + std::string(continuityName(jn.continuity)) + ")";
+    return "join " + std::to_string(j) + " (" + joinSideName(jn, false) + " – " + joinSideName(jn, true) + ", " +
+           std::string(continuityName(jn.continuity)) + ")";
 }
 
 void checkEditInvariants(const Document& before, const Document& after, bool detected) { checkJoins(before, after, detected); }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "core/eval/bezier_triangle.hpp"
 #include "core/eval/rational_eval.hpp"
 
 namespace pw {
@@ -36,11 +37,32 @@ PatchShape patchShape(const Document& doc, uint32_t p, int level) {
     return shape;
 }
 
+PatchShape triangleShape(const Document& doc, uint32_t t, int level) {
+    const TrianglePatch& tri = doc.triangles[t];
+    const int n = std::max(level, 1);
+    std::vector<TriPoint> grid;
+    evaluateTriangleGrid(gatherTriangleNet(doc, tri.idx), tri.idx, n, grid);
+    PatchShape shape;
+    const auto turned = [&](size_t a, size_t b, size_t c) {
+        const Vec3 g = glm::cross(grid[b].p - grid[a].p, grid[c].p - grid[a].p);
+        return glm::dot(g, grid[a].n + grid[b].n + grid[c].n) < 0.0;
+    };
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i + j < n; ++i) {
+            // (i, j) → (i+1, j) → (i, j+1) turns like (u, v): du × dv
+            shape.invertedTriangles += int(turned(triGridIndex(i, j, n), triGridIndex(i + 1, j, n), triGridIndex(i, j + 1, n)));
+            if (i + j + 1 < n)
+                shape.invertedTriangles += int(turned(triGridIndex(i + 1, j, n), triGridIndex(i + 1, j + 1, n), triGridIndex(i, j + 1, n)));
+        }
+    return shape;
+}
+
 namespace {
 
-// A patch's shape as a number: its points, weights, basis and tension (an FNV-1a hash), so that a
-// patch whose pool entries an edit only renumbered counts as unchanged.
-uint64_t shapeKey(const Document& d, const Patch& p) {
+// A patch's (or triangle's) shape as a number: its points, weights, basis and tension (an FNV-1a
+// hash), so that a patch whose pool entries an edit only renumbered counts as unchanged.
+template <class Item>
+uint64_t shapeKey(const Document& d, const Item& p) {
     uint64_t h = 1469598103934665603ull;
     auto mix = [&](const void* data, size_t n) {
         const auto* b = static_cast<const unsigned char*>(data);
@@ -52,8 +74,10 @@ uint64_t shapeKey(const Document& d, const Patch& p) {
         mix(&q, sizeof q);
         mix(&w, sizeof w);
     }
-    mix(&p.basis, sizeof p.basis);
-    mix(&p.tension, sizeof p.tension);
+    if constexpr (requires { p.basis; }) {
+        mix(&p.basis, sizeof p.basis);
+        mix(&p.tension, sizeof p.tension);
+    }
     return h;
 }
 
@@ -68,6 +92,12 @@ std::string foldMadeBy(const Document& before, const Document& after) {
                (is.invertedTriangles > was.invertedTriangles ? std::to_string(is.invertedTriangles) + " of its triangles turned over"
                                                              : std::string("a corner's tangent plane collapsed")) +
                ")";
+    }
+    for (size_t t = 0; t < before.triangles.size() && t < after.triangles.size(); ++t) {
+        if (shapeKey(before, before.triangles[t]) == shapeKey(after, after.triangles[t])) continue;
+        const PatchShape is = triangleShape(after, uint32_t(t)), was = triangleShape(before, uint32_t(t));
+        if (foldedFurther(was, is))
+            return "triangle " + std::to_string(t) + " (" + std::to_string(is.invertedTriangles) + " of its triangles turned over)";
     }
     return "";
 }

@@ -23,14 +23,18 @@ struct PatchShape {
 // Patch p of `doc` on a level × level grid (default: a level-16 export's triangles).
 PatchShape patchShape(const Document& doc, uint32_t p, int level = 16);
 
+// Bézier triangle t of `doc` on its level-n grid (n² triangles): those turned over against the
+// normals at their corners (collapsedCorners stays 0).
+PatchShape triangleShape(const Document& doc, uint32_t t, int level = 16);
+
 // True when `after` is worse than `before`: more triangles turned over or more corners collapsed.
 inline bool foldedFurther(const PatchShape& before, const PatchShape& after) {
     return after.invertedTriangles > before.invertedTriangles || after.collapsedCorners > before.collapsedCorners;
 }
 
-// The first patch an edit folded: patch p of `before` and of `after` are the same patch (the
-// operations that join keep the patches' order); of those whose shape changed, the first that
-// foldedFurther. "" when none, else "patch 3 (5 of its triangles turned over)".
+// The first patch (then Bézier triangle) an edit folded: patch p of `before` and of `after` are the
+// same patch (the operations that join keep the patches' order); of those whose shape changed, the
+// first that foldedFurther. "" when none, else "patch 3 (5 of its triangles turned over)".
 std::string foldMadeBy(const Document& before, const Document& after);
 
 }  // namespace pw

@@ -417,11 +417,20 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
             const std::string path = at("joins", i);
             const json& o = r.object(joins[i], path);
             Join& jn = doc.joins[i];
-            constexpr const char* kEdges = "u0, v0, u1, v1";
-            jn.patchA = static_cast<uint32_t>(r.index(*r.member(o, path, "a", true), at(path, "a"), doc.patches.size(), "patch index"));
-            jn.edgeA = r.named<Edge>(*r.member(o, path, "edgeA", true), at(path, "edgeA"), parseEdge, kEdges);
-            jn.patchB = static_cast<uint32_t>(r.index(*r.member(o, path, "b", true), at(path, "b"), doc.patches.size(), "patch index"));
-            jn.edgeB = r.named<Edge>(*r.member(o, path, "edgeB", true), at(path, "edgeB"), parseEdge, kEdges);
+            // A side whose edge is a triangle's (e0, e1, e2) indexes the triangles (read below; their
+            // array's length bounds the index here, its contents are checked there).
+            constexpr const char* kEdges = "u0, v0, u1, v1 (a patch's) or e0, e1, e2 (a triangle's)";
+            const json* tv = j.contains("triangles") ? &j["triangles"] : nullptr;
+            const size_t triangleCount = tv && tv->is_array() ? tv->size() : 0;
+            jn.edgeA = r.named<Edge>(*r.member(o, path, "edgeA", true), at(path, "edgeA"), parseJoinEdge, kEdges);
+            jn.edgeB = r.named<Edge>(*r.member(o, path, "edgeB", true), at(path, "edgeB"), parseJoinEdge, kEdges);
+            const auto side = [&](const char* key, Edge e) {
+                return static_cast<uint32_t>(r.index(*r.member(o, path, key, true), at(path, key),
+                                                     isTriangleEdge(e) ? triangleCount : doc.patches.size(),
+                                                     isTriangleEdge(e) ? "triangle index" : "patch index"));
+            };
+            jn.patchA = side("a", jn.edgeA);
+            jn.patchB = side("b", jn.edgeB);
             r.optional(o, path, "reversed", [&](const json& x, const std::string& p) { jn.reversed = r.boolean(x, p); });
             r.optional(o, path, "continuity", [&](const json& x, const std::string& p) {
                 jn.continuity = r.named<Continuity>(x, p, parseContinuity, "C0, C1, G1, C2, G2");
@@ -435,6 +444,8 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
             });
             r.optional(o, path, "alpha_end",
                        [&](const json& x, const std::string& p) { jn.alphaEnd = r.numberInRange(x, p, 0, 1e6, true); });
+            if (joinHasTriangle(jn) && jn.continuity != Continuity::C0 && jn.continuity != Continuity::G1)
+                r.fail(at(path, "continuity"), "a join with a triangle's edge is C0 or G1");
             if (jn.shear != std::array<double, 3>{} && jn.continuity != Continuity::G1)
                 r.fail(at(path, "shear"), "only a G1 join leans along its seam");
             if (jn.alphaEnd != 0.0 && jn.continuity != Continuity::G1)

@@ -132,7 +132,7 @@ void tessellateWindows(const Document& doc, const std::vector<PatchInstance>& wi
         }
     }
     for (const Join& j : welds) {
-        if (j.continuity == Continuity::C0) continue;
+        if (j.continuity == Continuity::C0 || joinHasTriangle(j)) continue;
         if (j.patchA >= W || j.patchB >= W) continue;
         const PatchInstance& a = windows[j.patchA];
         const PatchInstance& b = windows[j.patchB];

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 namespace pw {
@@ -26,7 +27,7 @@ static_assert(uint32_t(Basis::Bezier) == gpu::kBasisBezier && uint32_t(Basis::BS
 
 namespace {
 
-constexpr std::array<std::string_view, 4> kEdgeNames{"u0", "v0", "u1", "v1"};
+constexpr std::array<std::string_view, 7> kEdgeNames{"u0", "v0", "u1", "v1", "e0", "e1", "e2"};
 constexpr std::array<std::string_view, 5> kContinuityNames{"C0", "C1", "G1", "C2", "G2"};
 constexpr std::array<std::string_view, 4> kSpacingNames{"equal", "fractional_odd", "fractional_even", "pow2"};
 constexpr std::array<std::string_view, 4> kAdaptiveNames{"none", "distance", "screen", "orientation"};
@@ -36,7 +37,11 @@ constexpr std::array<std::string_view, 2> kMappingNames{"patch", "planar"};
 }  // namespace
 
 std::string_view edgeName(Edge e) { return enumName(e, kEdgeNames); }
-std::optional<Edge> parseEdge(std::string_view n) { return parseEnum<Edge>(n, kEdgeNames); }
+std::optional<Edge> parseEdge(std::string_view n) {
+    const auto e = parseEnum<Edge>(n, kEdgeNames);
+    return e && !isTriangleEdge(*e) ? e : std::nullopt;
+}
+std::optional<Edge> parseJoinEdge(std::string_view n) { return parseEnum<Edge>(n, kEdgeNames); }
 std::string_view continuityName(Continuity c) { return enumName(c, kContinuityNames); }
 std::optional<Continuity> parseContinuity(std::string_view n) { return parseEnum<Continuity>(n, kContinuityNames); }
 std::string_view spacingName(Spacing s) { return enumName(s, kSpacingNames); }
@@ -49,7 +54,10 @@ std::optional<ShadingMode> parseShading(std::string_view n) { return parseEnum<S
 std::string_view displacementMappingName(DisplacementMapping m) { return enumName(m, kMappingNames); }
 std::optional<DisplacementMapping> parseDisplacementMapping(std::string_view n) { return parseEnum<DisplacementMapping>(n, kMappingNames); }
 
-int edgeSlot(Edge e, int k, int depth) { return gpu::quadEdgeSlot(static_cast<int>(e), k, depth); }
+int edgeSlot(Edge e, int k, int depth) {
+    if (isTriangleEdge(e)) throw std::logic_error("edgeSlot: " + std::string(edgeName(e)) + " is a triangle's edge");
+    return gpu::quadEdgeSlot(static_cast<int>(e), k, depth);
+}
 
 bool edgeReversed(const std::array<uint32_t, 4>& pool) { return gpu::edgeReversed(pool[0], pool[1], pool[2], pool[3]); }
 

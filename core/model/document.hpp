@@ -16,9 +16,18 @@ namespace pw {
 
 // Edges of a 4x4 window, numbered like the quad domain's outer levels (DESIGN §3):
 // U0 = column j=0 (u=0), V0 = row i=0 (v=0), U1 = column j=3 (u=1), V1 = row i=3 (v=1).
-enum class Edge : uint8_t { U0 = 0, V0 = 1, U1 = 2, V1 = 3 };
-std::string_view edgeName(Edge e);  // "u0", "v0", "u1", "v1"
+// A join's side may also be an edge of a Bézier triangle (issue 40): T0, T1 and T2 are its edges 0,
+// 1 and 2 ("e0", "e1", "e2"; see TrianglePatch), and the join's patch index is then a triangle's.
+enum class Edge : uint8_t { U0 = 0, V0 = 1, U1 = 2, V1 = 3, T0 = 4, T1 = 5, T2 = 6 };
+std::string_view edgeName(Edge e);  // "u0", "v0", "u1", "v1", "e0", "e1", "e2"
+// A patch edge: "u0", "v0", "u1" or "v1" (triangle edges are refused; parseJoinEdge takes them).
 std::optional<Edge> parseEdge(std::string_view name);
+// A patch or triangle edge.
+std::optional<Edge> parseJoinEdge(std::string_view name);
+inline bool isTriangleEdge(Edge e) { return e >= Edge::T0; }
+// 0, 1 or 2 for T0, T1, T2 (the triangle's own edge numbering).
+inline int triangleEdgeNumber(Edge e) { return static_cast<int>(e) - static_cast<int>(Edge::T0); }
+inline Edge triangleEdge(int number) { return static_cast<Edge>(static_cast<int>(Edge::T0) + number); }
 
 // Net slot (0..15) of the k-th point along edge e (k in increasing parameter), and of the point
 // `depth` rows inward from it (depth 0 = on the edge, 1 = the tangent row).
@@ -146,6 +155,9 @@ struct Surface {
 // sheared_joins.hpp); still linear in the points. Such a join may also let α run linearly from
 // `alpha` at A's point 0 to `alphaEnd` at point 3 (each end then matches the seam that continues
 // it). Both zero for every other join.
+// A side whose edge is a triangle's (Edge::T0..T2) indexes Document::triangles; such a join is C0
+// or G1, its rows the same identity with the triangle's quadratic cross derivative in place of the
+// cubic one (core/solve/triangle_seams.hpp).
 struct Join {
     uint32_t patchA = 0;
     Edge edgeA = Edge::U0;
@@ -159,6 +171,10 @@ struct Join {
     double alphaEnd = 0.0;          // α at A's point 3 when it differs from `alpha` there (G1 only; 0: constant α)
     bool operator==(const Join&) const = default;
 };
+// True when a side of the join is a Bézier triangle's edge (C0 or G1 only; core/solve/triangle_seams.hpp).
+inline bool joinHasTriangle(const Join& j) { return isTriangleEdge(j.edgeA) || isTriangleEdge(j.edgeB); }
+// Joins between patch edges only: what the quad-only operations (corners, splits, mirror) act on.
+inline bool quadJoin(const Join& j) { return !joinHasTriangle(j); }
 
 // A surface built from curves (issue 39) that stays live: its patches are re-made from its inputs
 // whenever they change (core/construct/constructions.hpp), until `bake` detaches them.

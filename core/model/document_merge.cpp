@@ -37,8 +37,8 @@ MergedRange mergeDocument(Document& into, const Document& from) {
     r.firstJoin = uint32_t(into.joins.size());
     r.joinCount = uint32_t(from.joins.size());
     for (Join j : from.joins) {
-        j.patchA += r.firstPatch;
-        j.patchB += r.firstPatch;
+        j.patchA += isTriangleEdge(j.edgeA) ? r.firstTriangle : r.firstPatch;
+        j.patchB += isTriangleEdge(j.edgeB) ? r.firstTriangle : r.firstPatch;
         into.joins.push_back(j);
     }
     for (Construction c : from.constructions) {  // live in the new document too

@@ -1,5 +1,7 @@
 #include "core/model/topology.hpp"
 
+#include "core/gpu/patch_math.h"
+
 namespace pw {
 
 int findJoin(const Document& doc, uint32_t p, Edge e) {
@@ -8,6 +10,26 @@ int findJoin(const Document& doc, uint32_t p, Edge e) {
         if ((j.patchA == p && j.edgeA == e) || (j.patchB == p && j.edgeB == e)) return int(i);
     }
     return -1;
+}
+
+std::string joinSideRef(uint32_t item, Edge e) {
+    return (isTriangleEdge(e) ? "t" : "") + std::to_string(item) + ":" + std::string(edgeName(e));
+}
+std::string joinSideRef(const Join& j, bool sideB) { return sideB ? joinSideRef(j.patchB, j.edgeB) : joinSideRef(j.patchA, j.edgeA); }
+std::string joinSideName(const Join& j, bool sideB) {
+    const Edge e = sideB ? j.edgeB : j.edgeA;
+    return (isTriangleEdge(e) ? "triangle " : "patch ") + std::to_string(sideB ? j.patchB : j.patchA) + " " + std::string(edgeName(e));
+}
+
+std::vector<uint32_t> edgePoolOf(const Document& doc, uint32_t p, Edge e) {
+    std::vector<uint32_t> out;
+    if (isTriangleEdge(e)) {
+        if (p < doc.triangles.size())
+            for (int k = 0; k < 4; ++k) out.push_back(doc.triangles[p].idx[size_t(gpu::triEdgeSlot(triangleEdgeNumber(e), k))]);
+    } else if (p < doc.patches.size()) {
+        for (int k = 0; k < 4; ++k) out.push_back(doc.patches[p].idx[size_t(edgeSlot(e, k))]);
+    }
+    return out;
 }
 
 std::vector<std::array<uint32_t, 3>> netC1Triples(const Document& doc) {

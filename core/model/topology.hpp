@@ -5,14 +5,25 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/model/document.hpp"
 
 namespace pw {
 
-// Index of a join that uses edge e of patch p, or -1.
+// Index of a join that uses edge e of patch p (of triangle p for a triangle edge), or -1.
 int findJoin(const Document& doc, uint32_t p, Edge e);
+
+// A join's side A (or B) in messages, "patch 3 u0" or "triangle 2 e1", and as a command argument,
+// "3:u0" or "t2:e1".
+std::string joinSideName(const Join& j, bool sideB);
+std::string joinSideRef(const Join& j, bool sideB);
+std::string joinSideRef(uint32_t item, Edge e);
+
+// The four pool indices along edge e of patch p, or of triangle p for a triangle edge, in that
+// item's own order; empty when the item does not exist.
+std::vector<uint32_t> edgePoolOf(const Document& doc, uint32_t p, Edge e);
 
 // The C1 conditions of Bézier nets that keep C1, as triples (before, seam, after) of pool indices
 // with seam = (before + after) / 2 (rows of the constraint solver).

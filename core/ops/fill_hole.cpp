@@ -7,12 +7,14 @@
 
 #include "core/base/errors.hpp"
 #include "core/eval/bezier_curve.hpp"
+#include "core/eval/bezier_triangle.hpp"
 #include "core/eval/patch_eval.hpp"
 #include "core/model/topology.hpp"
 #include "core/ops/corner_ops.hpp"
 #include "core/ops/join_ops.hpp"
 #include "core/ops/patch_ops.hpp"
 #include "core/ops/split_ops.hpp"
+#include "core/ops/triangle_joins.hpp"
 
 namespace pw {
 
@@ -213,6 +215,63 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
            std::to_string(first + n - 1) + "), G1 to its " + std::to_string(2 * n) + " edges";
     if (splitCount > 0) note += "; split " + std::to_string(splitCount) + " patches at the middle of its sides";
     return note + corners;
+}
+
+std::string fillHoleWithTriangle(Document& doc, const std::vector<HoleSide>& sides) {
+    if (sides.size() != 3) throw EditError("one triangle fills a hole of 3 sides, got " + std::to_string(sides.size()));
+    const double tol = 1e-6 * std::max(modelSize(doc), 1e-300);
+    auto near = [&](const Vec3& a, const Vec3& b) { return glm::length(a - b) <= tol; };
+    std::array<Seg, 3> seg;
+    for (size_t k = 0; k < 3; ++k) {
+        if (sides[k].edges.size() != 1)
+            throw EditError("side " + std::to_string(k + 1) +
+                            ": a triangle's side is one patch edge (each of its edges is one cubic); fill without `triangle` for "
+                            "sides of two edges");
+        const auto [p, e] = sides[k].edges[0];
+        checkBezier(doc, p, "fill-hole");
+        if (findJoin(doc, p, e) >= 0) throw EditError("edge " + edgeLabel(p, e) + " is joined already, so it is not the edge of a hole");
+        checkPolynomial(doc, p, "fill-hole needs polynomial patches");
+        seg[k] = Seg{p, e, false};
+    }
+    // The sides in a loop, each walked towards the next.
+    if (!near(seg[0].at(doc, 3), seg[1].at(doc, 0)) && !near(seg[0].at(doc, 3), seg[1].at(doc, 3))) seg[0] = seg[0].flipped();
+    for (size_t k = 1; k < 3; ++k) {
+        if (near(seg[k].at(doc, 3), seg[k - 1].at(doc, 3))) seg[k] = seg[k].flipped();
+        if (!near(seg[k].at(doc, 0), seg[k - 1].at(doc, 3)))
+            throw EditError("sides " + std::to_string(k) + " and " + std::to_string(k + 1) +
+                            " do not meet: the hole's sides must go round it in order");
+    }
+    if (!near(seg[2].at(doc, 3), seg[0].at(doc, 0)))
+        throw EditError("the sides do not close a loop: side 3 does not end where side 1 starts");
+    // The triangle's boundary loop (corner u → v → w, its edges 2, 0, 1) turns counter-clockwise
+    // about its normal; a neighbour's normal agrees when its own loop walks the seam the other way.
+    if (edgeLoopSign(seg[0].edge) * (seg[0].reversed ? -1 : 1) > 0) seg = {seg[2].flipped(), seg[1].flipped(), seg[0].flipped()};
+    TrianglePatch t;
+    t.name = "corner fill";
+    constexpr int kTriangleEdge[3] = {2, 0, 1};
+    for (size_t k = 0; k < 3; ++k)
+        for (int i = 0; i < 4; ++i) t.idx[size_t(triEdgeSlot(kTriangleEdge[k], i))] = seg[k].idx(doc, i);
+    // The middle point from the boundary (the cubic precision rule: the edges' inner points' mean
+    // E, pushed away from the corners' mean V by half of E − V); the joins then move it.
+    Vec3 E(0.0), V(0.0);
+    for (size_t k = 0; k < 3; ++k) {
+        V += seg[k].at(doc, 0) / 3.0;
+        E += (seg[k].at(doc, 1) + seg[k].at(doc, 2)) / 6.0;
+    }
+    t.idx[size_t(triSlot(1, 1, 1))] = addPoint(doc, E + 0.5 * (E - V));
+    const uint32_t tri = uint32_t(doc.triangles.size());
+    doc.triangles.push_back(t);
+    try {
+        for (size_t k = 0; k < 3; ++k)
+            joinTriangleEdges(doc, seg[k].patch, seg[k].edge, tri, triangleEdge(kTriangleEdge[k]), Continuity::G1);
+    } catch (const EditError& e) {
+        // One cubic triangle has a single point of its own (b111): it is G1 to three edges only where
+        // the surroundings can give (DESIGN §14); blends pinned by their faces cannot.
+        throw EditError(std::string(e.what()) +
+                        "; one cubic triangle is G1 to three edges only where the patches round it can bend to meet it: fill "
+                        "without `triangle` (three patches meeting G1 at a centre) where they cannot");
+    }
+    return "filled a 3-sided hole with triangle " + std::to_string(tri) + ", G1 to its 3 edges";
 }
 
 }  // namespace pw

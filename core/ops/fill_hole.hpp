@@ -26,4 +26,11 @@ struct HoleSide {
 // edge of a Bézier patch, the sides do not close a loop, or the fill cannot hold.
 std::string fillHole(Document& doc, const std::vector<HoleSide>& sides);
 
+// Fills a 3-sided hole of single edges with one cubic Bézier triangle sharing their points (the
+// corner patch Rhino's and Alias's fillets leave as a degenerate quad), G1 to all three through
+// the triangle joins of core/ops/triangle_joins.hpp; its middle point b111, the surroundings' free
+// points beside the edges and each join's α and lean β(t) are what the seams are held with. Returns
+// the status line. EditError as fillHole, and when a side has two edges.
+std::string fillHoleWithTriangle(Document& doc, const std::vector<HoleSide>& sides);
+
 }  // namespace pw

@@ -7,11 +7,13 @@
 #include <vector>
 
 #include "core/base/errors.hpp"
+#include "core/eval/bezier_triangle.hpp"
 #include "core/eval/fold_check.hpp"
 #include "core/model/construction_refs.hpp"
 #include "core/model/topology.hpp"
 #include "core/ops/corner_ops.hpp"
 #include "core/ops/patch_ops.hpp"
+#include "core/ops/triangle_joins.hpp"
 #include "core/solve/constraint_solver.hpp"
 #include "core/solve/sheared_joins.hpp"
 
@@ -148,6 +150,7 @@ JoinPlan planJoin(const Document& doc, uint32_t a, Edge ea, uint32_t b, Edge eb)
 }
 
 size_t joinEdges(Document& doc, uint32_t a, Edge ea, uint32_t b, Edge ebPicked, Continuity continuity, std::string* note) {
+    if (isTriangleEdge(ea) || isTriangleEdge(ebPicked)) return joinTriangleEdges(doc, a, ea, b, ebPicked, continuity);
     checkBezier(doc, a, "join");
     checkBezier(doc, b, "join");
     if (a == b) throw EditError("join needs two different patches");
@@ -226,6 +229,7 @@ size_t joinEdges(Document& doc, uint32_t a, Edge ea, uint32_t b, Edge ebPicked, 
 
 void setJoinContinuity(Document& doc, size_t j, Continuity continuity, std::string* note) {
     if (j >= doc.joins.size()) throw EditError("no join " + std::to_string(j));
+    if (joinHasTriangle(doc.joins[j])) return setTriangleJoinContinuity(doc, j, continuity);
     for (const uint32_t p : {doc.joins[j].patchA, doc.joins[j].patchB})
         if (const int k = constructionOfPatch(doc, p); k >= 0)
             throw EditError("join " + std::to_string(j) + " is made by " + constructionLabel(doc, size_t(k)) +
@@ -262,6 +266,7 @@ void setJoinContinuity(Document& doc, size_t j, Continuity continuity, std::stri
 }
 
 void remeasureJoin(Document& doc, size_t j) {
+    if (joinHasTriangle(doc.joins[j])) return remeasureTriangleJoin(doc, j);
     Join& jn = doc.joins[j];
     if (!holdsTangent(jn.continuity)) return;
     const Patch& A = doc.patches[jn.patchA];
@@ -282,6 +287,14 @@ void unjoin(Document& doc, size_t j) {
     if (j >= doc.joins.size()) throw EditError("no join " + std::to_string(j));
     const Join jn = doc.joins[j];
     doc.joins.erase(doc.joins.begin() + long(j));
+    if (isTriangleEdge(jn.edgeB)) {  // the triangle on side B gets its own copies
+        TrianglePatch& T = doc.triangles[jn.patchB];
+        for (int k = 0; k < 4; ++k) {
+            const size_t s = size_t(triEdgeSlot(triangleEdgeNumber(jn.edgeB), k));
+            T.idx[s] = addPoint(doc, doc.points[T.idx[s]]);
+        }
+        return;
+    }
     Patch& B = doc.patches[jn.patchB];
     for (int k = 0; k < 4; ++k) {
         const size_t s = size_t(edgeSlot(jn.edgeB, k, 0));

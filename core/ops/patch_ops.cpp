@@ -65,12 +65,14 @@ Edge oppositeEdge(Edge e) {
 
 namespace {
 
-// Joins touching patch p removed; indices above p shifted down.
-void dropPatchFromJoins(Document& doc, uint32_t p) {
-    std::erase_if(doc.joins, [&](const Join& j) { return j.patchA == p || j.patchB == p; });
+// Joins with a side on item p (a patch, or a Bézier triangle when `triangle`) removed; that kind's
+// indices above p shifted down.
+void dropItemFromJoins(Document& doc, uint32_t p, bool triangle) {
+    const auto on = [&](uint32_t i, Edge e) { return i == p && isTriangleEdge(e) == triangle; };
+    std::erase_if(doc.joins, [&](const Join& j) { return on(j.patchA, j.edgeA) || on(j.patchB, j.edgeB); });
     for (Join& j : doc.joins) {
-        if (j.patchA > p) --j.patchA;
-        if (j.patchB > p) --j.patchB;
+        if (j.patchA > p && isTriangleEdge(j.edgeA) == triangle) --j.patchA;
+        if (j.patchB > p && isTriangleEdge(j.edgeB) == triangle) --j.patchB;
     }
 }
 
@@ -113,7 +115,7 @@ uint32_t duplicatePatch(Document& doc, uint32_t p, const Vec3& offset) {
 
 void deletePatch(Document& doc, uint32_t p) {
     checkPatch(doc, p);
-    dropPatchFromJoins(doc, p);
+    dropItemFromJoins(doc, p, false);
     dropPatchFromConstructions(doc, p);
     eraseItem(doc, doc.patches, p);
 }
@@ -134,8 +136,8 @@ void flipPatch(Document& doc, uint32_t p) {
     for (Join& j : doc.joins) {
         for (int side = 0; side < 2; ++side) {
             const bool isA = side == 0;
-            if ((isA ? j.patchA : j.patchB) != p) continue;
             Edge& e = isA ? j.edgeA : j.edgeB;
+            if ((isA ? j.patchA : j.patchB) != p || isTriangleEdge(e)) continue;
             if (e == Edge::U0 || e == Edge::U1)
                 e = oppositeEdge(e);
             else
@@ -222,6 +224,7 @@ uint32_t duplicateTriangle(Document& doc, uint32_t t, const Vec3& offset) {
 
 void deleteTriangle(Document& doc, uint32_t t) {
     checkItem(doc.triangles, t, "triangle");
+    dropItemFromJoins(doc, t, true);
     eraseItem(doc, doc.triangles, t);
 }
 

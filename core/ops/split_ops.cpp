@@ -77,8 +77,9 @@ std::vector<RingCut> splitRingOf(const Document& doc, uint32_t p, bool alongU, d
     std::unordered_map<uint32_t, size_t> seen{{p, 0}};
     std::unordered_map<uint64_t, size_t> joinOn;  // patch·4 + edge → its join, built once (findJoin scans)
     for (size_t j = 0; j < doc.joins.size(); ++j) {
-        joinOn.emplace(uint64_t(doc.joins[j].patchA) * 4 + uint64_t(doc.joins[j].edgeA), j);
-        joinOn.emplace(uint64_t(doc.joins[j].patchB) * 4 + uint64_t(doc.joins[j].edgeB), j);
+        const Join& jn = doc.joins[j];
+        if (!isTriangleEdge(jn.edgeA)) joinOn.emplace(uint64_t(jn.patchA) * 4 + uint64_t(jn.edgeA), j);
+        if (!isTriangleEdge(jn.edgeB)) joinOn.emplace(uint64_t(jn.patchB) * 4 + uint64_t(jn.edgeB), j);
     }
     for (size_t i = 0; i < ring.size(); ++i) {
         const RingCut cut = ring[i];
@@ -90,6 +91,10 @@ std::vector<RingCut> splitRingOf(const Document& doc, uint32_t p, bool alongU, d
             const bool isA = jn.patchA == cut.patch && jn.edgeA == e;
             const uint32_t q = isA ? jn.patchB : jn.patchA;
             const Edge eq = isA ? jn.edgeB : jn.edgeA;
+            if (isTriangleEdge(eq))  // a Bézier triangle is not split: its join would be lost
+                throw EditError("the split would cut edge " + std::string(edgeName(e)) + " of patch " + std::to_string(cut.patch) +
+                                ", which is joined to triangle " + std::to_string(q) + " " + std::string(edgeName(eq)) +
+                                "; unjoin it first, or split the other way");
             // Along q's edge the parameter runs the same way unless the join pairs its points reversed.
             const RingCut next{q, eq == Edge::V0 || eq == Edge::V1, jn.reversed ? 1.0 - cut.t : cut.t};
             const auto it = seen.find(q);
@@ -138,7 +143,8 @@ std::vector<std::pair<RingCut, uint32_t>> splitRing(Document& doc, uint32_t p, b
     std::vector<Join> across;
     std::vector<size_t> rescaled;  // joins whose rows a cut shortened
     for (Join j : doc.joins) {
-        const auto ca = cutOf.find(j.patchA), cb = cutOf.find(j.patchB);
+        const auto ca = isTriangleEdge(j.edgeA) ? cutOf.end() : cutOf.find(j.patchA);
+        const auto cb = isTriangleEdge(j.edgeB) ? cutOf.end() : cutOf.find(j.patchB);
         const bool crossA = ca != cutOf.end() && crossedBy(ca->second.first.alongU, j.edgeA);
         const bool crossB = cb != cutOf.end() && crossedBy(cb->second.first.alongU, j.edgeB);
         if (crossA != crossB)
@@ -160,6 +166,7 @@ std::vector<std::pair<RingCut, uint32_t>> splitRing(Document& doc, uint32_t p, b
         // the second; both are measured again below (the halves' tangent rows are shorter).
         for (int side = 0; side < 2; ++side) {
             uint32_t& pt = side == 0 ? j.patchA : j.patchB;
+            if (isTriangleEdge(side == 0 ? j.edgeA : j.edgeB)) continue;
             const auto c = cutOf.find(pt);
             if (c == cutOf.end()) continue;
             if ((side == 0 ? j.edgeA : j.edgeB) == (c->second.first.alongU ? Edge::U1 : Edge::V1)) pt = c->second.second;

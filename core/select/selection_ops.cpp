@@ -39,18 +39,21 @@ bool anyHidden(const Document& doc) {
 
 Document visibleDocument(const Document& doc) {
     Document out = doc;
-    std::vector<int> newIndex(doc.patches.size(), -1);
+    std::vector<int> newIndex(doc.patches.size(), -1), newTriangle(doc.triangles.size(), -1);
     out.patches.clear();
     for (size_t i = 0; i < doc.patches.size(); ++i)
         if (!doc.patches[i].hidden) newIndex[i] = int(out.patches.size()), out.patches.push_back(doc.patches[i]);
+    out.triangles.clear();
+    for (size_t i = 0; i < doc.triangles.size(); ++i)
+        if (!doc.triangles[i].hidden) newTriangle[i] = int(out.triangles.size()), out.triangles.push_back(doc.triangles[i]);
+    const auto renumbered = [&](uint32_t i, Edge e) { return isTriangleEdge(e) ? newTriangle[i] : newIndex[i]; };
     out.joins.clear();
     for (Join j : doc.joins)
-        if (newIndex[j.patchA] >= 0 && newIndex[j.patchB] >= 0) {
-            j.patchA = uint32_t(newIndex[j.patchA]), j.patchB = uint32_t(newIndex[j.patchB]);
+        if (renumbered(j.patchA, j.edgeA) >= 0 && renumbered(j.patchB, j.edgeB) >= 0) {
+            j.patchA = uint32_t(renumbered(j.patchA, j.edgeA)), j.patchB = uint32_t(renumbered(j.patchB, j.edgeB));
             out.joins.push_back(j);
         }
     std::erase_if(out.surfaces, [](const Surface& s) { return s.hidden; });
-    std::erase_if(out.triangles, [](const TrianglePatch& t) { return t.hidden; });
     std::erase_if(out.curves, [](const BezierCurve& c) { return c.hidden; });
     // What is shown is drawn or exported, never edited: its surfaces from curves are plain patches
     // (their patch and curve numbers would no longer fit the renumbered lists).

@@ -14,12 +14,14 @@
 #include "core/model/topology.hpp"
 #include "core/solve/sheared_joins.hpp"
 #include "core/solve/solver_constraints.hpp"
+#include "core/solve/triangle_seams.hpp"
 
 namespace pw {
 
 namespace solver_detail {
 
 bool joinPoints(const Document& doc, const Join& join, JoinPoints& out) {
+    if (joinHasTriangle(join)) return false;  // core/solve/triangle_seams.hpp
     if (join.patchA >= doc.patches.size() || join.patchB >= doc.patches.size()) return false;
     const Patch& A = doc.patches[join.patchA];
     const Patch& B = doc.patches[join.patchB];
@@ -99,9 +101,13 @@ std::vector<ConstraintRow> buildConstraintRows(const Document& doc) {
     const uint32_t n = static_cast<uint32_t>(doc.points.size());
     for (size_t j = 0; j < doc.joins.size(); ++j) {
         const Join& join = doc.joins[j];
+        const uint32_t ji = static_cast<uint32_t>(j);
+        if (joinHasTriangle(join)) {
+            appendTriangleJoinRows(doc, join, ji, rows);
+            continue;
+        }
         JoinPoints jp;
         if (!joinPoints(doc, join, jp) || !joinPointsInPool(jp, n)) continue;
-        const uint32_t ji = static_cast<uint32_t>(j);
         // C0: the two sides' edge points coincide (nothing to do when they share the pool entry).
         for (int k = 0; k < 4; ++k)
             if (jp.a0[k] != jp.b0[k]) rows.push_back(makeRow({{jp.a0[k], 1.0}, {jp.b0[k], -1.0}}, ji));
@@ -132,6 +138,12 @@ std::vector<ConstraintRow> buildConstraintRows(const Document& doc) {
 std::vector<char> joinedBoundaryPoints(const Document& doc) {
     std::vector<char> flag(doc.points.size(), 0);
     for (const Join& join : doc.joins) {
+        if (joinHasTriangle(join)) {
+            for (const bool sideB : {false, true})
+                if (const auto side = seamSide(doc, join, sideB))
+                    for (uint32_t i : side->edge) flag[i] = 1;
+            continue;
+        }
         JoinPoints jp;
         if (!joinPoints(doc, join, jp)) continue;
         for (int k = 0; k < 4; ++k) {
@@ -195,7 +207,7 @@ void freezeOutside(const Document& doc, std::vector<char>& fixed, int rings, con
     if (frontier.empty()) return;                                   // nothing fixed on a patch: the whole model takes part
     std::vector<std::vector<uint32_t>> joined(doc.patches.size());  // joins whose edges are stored twice share no point
     for (const Join& j : doc.joins)
-        if (j.patchA < joined.size() && j.patchB < joined.size())
+        if (quadJoin(j) && j.patchA < joined.size() && j.patchB < joined.size())
             joined[j.patchA].push_back(j.patchB), joined[j.patchB].push_back(j.patchA);
     for (int r = 0; r < rings && !frontier.empty(); ++r) {
         std::vector<uint32_t> next;

@@ -10,6 +10,7 @@
 #include "core/gpu/curvature_math.h"
 #include "core/solve/sheared_joins.hpp"
 #include "core/solve/solver_constraints.hpp"
+#include "core/solve/triangle_seams.hpp"
 
 namespace pw {
 
@@ -29,6 +30,11 @@ void edgeParam(Edge e, double t, double& u, double& v) {
             return;
         case Edge::V1:
             u = t, v = 1;
+            return;
+        case Edge::T0:
+        case Edge::T1:
+        case Edge::T2:  // triangle seams are measured by measureTriangleSeam
+            u = v = 0;
             return;
     }
 }
@@ -107,6 +113,31 @@ bool validJoin(const Document& doc, const Join& join, solver_detail::JoinPoints&
     return valid;
 }
 
+double angleDeg(const Vec3& a, const Vec3& b) {
+    // acos is ill-conditioned near 1: atan2 of |cross| and dot.
+    return std::atan2(glm::length(glm::cross(a, b)), std::clamp(glm::dot(a, b), -1.0, 1.0)) * 180.0 / std::numbers::pi;
+}
+
+// A join with a triangle side (C0 or G1): its rows' residuals and the seam's gap and tangent
+// planes (core/solve/triangle_seams.hpp); no curvature is held across it.
+JoinContinuity triangleSeamContinuity(const Document& doc, const Join& join, size_t j, int samples) {
+    JoinContinuity jc;
+    jc.join = j;
+    std::vector<solver_detail::ConstraintRow> rows;
+    appendTriangleJoinRows(doc, join, 0, rows);
+    for (const auto& row : rows) {
+        Vec3 r(0.0);
+        for (const auto& [idx, coef] : row.terms) r += coef * doc.points[idx];
+        jc.c1Residual = std::max(jc.c1Residual, glm::length(r));
+    }
+    for (int s = 0; s <= samples; ++s) {
+        const SeamPoint q = measureTriangleSeam(doc, join, double(s) / samples);
+        jc.c0Gap = std::max(jc.c0Gap, glm::length(q.a - q.b));
+        if (q.planes) jc.normalAngleDeg = std::max(jc.normalAngleDeg, angleDeg(q.na, q.nb));
+    }
+    return jc;
+}
+
 }  // namespace
 
 uint8_t toleranceFailures(const JoinContinuity& c, Continuity continuity, const ContinuityTolerances& tol) {
@@ -126,6 +157,10 @@ std::vector<JoinContinuity> continuityReport(const Document& doc, int samples, c
         const Join& join = doc.joins[j];
         JoinContinuity jc;
         jc.join = j;
+        if (joinHasTriangle(join)) {
+            out.push_back(triangleSeamContinuity(doc, join, j, samples));
+            return;
+        }
         solver_detail::JoinPoints jp;
         if (!validJoin(doc, join, jp)) {
             out.push_back(jc);

@@ -6,6 +6,7 @@
 
 #include <cstdio>
 
+#include "core/model/topology.hpp"
 #include "core/solve/constraint_solver.hpp"
 #include "ui/panels/side_panels.hpp"
 #include "ui/platform/imgui_tip.hpp"
@@ -15,7 +16,6 @@ namespace pw::ui {
 
 namespace {
 
-const char* kEdgeNames[] = {"u0", "v0", "u1", "v1"};
 const ImVec4 kOut(1.0f, 0.45f, 0.3f, 1.0f);
 
 // A value, red when out of tolerance.
@@ -82,7 +82,7 @@ void ContinuityPanel::draw(PanelContext& ctx) {
             const Join& jn = doc.joins[c.join];
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
-            ImGui::Text("%u.%s-%u.%s", jn.patchA, kEdgeNames[int(jn.edgeA)], jn.patchB, kEdgeNames[int(jn.edgeB)]);
+            ImGui::Text("%s %s", joinSideRef(jn, false).c_str(), joinSideRef(jn, true).c_str());
             ImGui::TableNextColumn();
             // The join's continuity, changed in place (`join A:e B:f C` on the joined pair; a refused
             // change leaves the join as it was and says why in the status line).
@@ -90,9 +90,9 @@ void ContinuityPanel::draw(PanelContext& ctx) {
             ImGui::SetNextItemWidth(-FLT_MIN);
             if (ImGui::BeginCombo("##kind", continuityName(jn.continuity).data())) {
                 for (Continuity k : {Continuity::C0, Continuity::C1, Continuity::G1, Continuity::C2, Continuity::G2})
-                    if (ImGui::Selectable(continuityName(k).data(), k == jn.continuity) && k != jn.continuity)
-                        ctx.runLine("join " + std::to_string(jn.patchA) + ":" + kEdgeNames[int(jn.edgeA)] + " " +
-                                    std::to_string(jn.patchB) + ":" + kEdgeNames[int(jn.edgeB)] + " " + std::string(continuityName(k)));
+                    if ((!joinHasTriangle(jn) || k == Continuity::C0 || k == Continuity::G1) &&  // a triangle's seam: C0 or G1
+                        ImGui::Selectable(continuityName(k).data(), k == jn.continuity) && k != jn.continuity)
+                        ctx.runLine("join " + joinSideRef(jn, false) + " " + joinSideRef(jn, true) + " " + std::string(continuityName(k)));
                 ImGui::EndCombo();
             }
             ImGui::PopID();

@@ -35,6 +35,7 @@ std::vector<uint32_t> joinedComponent(const Document& doc, uint32_t p) {
         const uint32_t q = todo.back();
         todo.pop_back();
         for (const Join& j : doc.joins) {
+            if (!quadJoin(j)) continue;
             const uint32_t other = j.patchA == q ? j.patchB : j.patchB == q ? j.patchA : q;
             if (other != q && other < doc.patches.size() && seen.insert(other).second) todo.push_back(other);
         }

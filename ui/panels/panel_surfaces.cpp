@@ -124,6 +124,12 @@ void SurfacesPanel::draw(PanelContext& ctx) {
     tip("Fill the hole the listed edges go round, in order (3 to 6 sides): one patch per hole corner, G1 to every patch around "
         "and at its centre, held while you drag");
     ImGui::SameLine();
+    const bool threeSingle = n == 3 && allEdges && std::none_of(sections_.begin(), sections_.end(), [](const std::string& w) {
+                                 return w.find('+') != std::string::npos;
+                             });
+    build("Triangle", "fill-hole", threeSingle, "op.fillTriangle", " triangle");
+    tip("Fill a hole of three listed edges with one Bézier triangle, G1 to all three, held while you drag");
+    ImGui::SameLine();
     ImGui::BeginDisabled(n < 2 || !isEdge(n >= 2 ? sections_[n - 2] : "") || !isEdge(n >= 1 ? sections_[n - 1] : ""));
     if (ImGui::SmallButton("Join last two")) {
         sections_[n - 2] += "+" + sections_[n - 1];
