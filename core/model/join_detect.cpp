@@ -43,10 +43,9 @@ bool degenerateEdge(const Document& doc, const std::array<uint32_t, 4>& e) {
     return true;
 }
 
-// Classifies the continuity across an already index-matched edge pair.
-void classify(const Document& doc, const Patch& A, const Patch& B, Join& j, const JoinDetectOptions& opt) {
-    const double size = modelSize(doc);
-    const double tol = opt.relativeTolerance * size;
+// Classifies the continuity across an already index-matched edge pair; tol = relativeTolerance ×
+// the model's size (computed once by the caller: it reads every point).
+void classify(const Document& doc, const Patch& A, const Patch& B, Join& j, double tol, const JoinDetectOptions& opt) {
     std::array<Vec3, 4> a, b;
     std::array<bool, 4> use{};
     double num = 0, den = 0;
@@ -99,6 +98,7 @@ std::vector<Join> detectJoins(const Document& doc, JoinDetectOptions options) {
     }
 
     std::vector<Join> joins;
+    const double tol = options.relativeTolerance * modelSize(doc);
     for (const auto& [key, refs] : groups) {
         for (size_t x = 0; x < refs.size(); ++x) {
             for (size_t y = x + 1; y < refs.size(); ++y) {
@@ -113,7 +113,7 @@ std::vector<Join> detectJoins(const Document& doc, JoinDetectOptions options) {
                 j.edgeB = rb->edge;
                 j.reversed = ra->idx != rb->idx;
                 // Check every pool-index-matched tangent row for C1/G1.
-                classify(doc, doc.patches[j.patchA], doc.patches[j.patchB], j, options);
+                classify(doc, doc.patches[j.patchA], doc.patches[j.patchB], j, tol, options);
                 joins.push_back(j);
             }
         }

@@ -12,6 +12,31 @@ int findJoin(const Document& doc, uint32_t p, Edge e) {
     return -1;
 }
 
+EdgeJoinIndex::EdgeJoinIndex(const Document& doc) {
+    quads_.assign(doc.patches.size(), {-1, -1, -1, -1});
+    triangles_.assign(doc.triangles.size(), {-1, -1, -1});
+    // Backwards, so that an edge named by two joins answers the first, as findJoin does.
+    for (size_t j = doc.joins.size(); j-- > 0;) add(doc.joins[j], j);
+}
+
+void EdgeJoinIndex::set(uint32_t item, Edge e, int32_t index) {
+    if (isTriangleEdge(e)) {
+        if (item < triangles_.size()) triangles_[item][size_t(triangleEdgeNumber(e))] = index;
+    } else if (item < quads_.size()) {
+        quads_[item][size_t(e)] = index;
+    }
+}
+
+void EdgeJoinIndex::add(const Join& j, size_t index) {
+    set(j.patchA, j.edgeA, int32_t(index));
+    set(j.patchB, j.edgeB, int32_t(index));
+}
+
+int EdgeJoinIndex::at(uint32_t item, Edge e) const {
+    if (isTriangleEdge(e)) return item < triangles_.size() ? triangles_[item][size_t(triangleEdgeNumber(e))] : -1;
+    return item < quads_.size() ? quads_[item][size_t(e)] : -1;
+}
+
 std::string joinSideRef(uint32_t item, Edge e) {
     return (isTriangleEdge(e) ? "t" : "") + std::to_string(item) + ":" + std::string(edgeName(e));
 }

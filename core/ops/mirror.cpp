@@ -77,10 +77,12 @@ MirrorResult mirrorItems(Document& doc, const std::vector<uint32_t>& selected, i
     }
     // Joins: every boundary the new patches share with an item (each other, the originals on the
     // plane), with the continuity the geometry has; edges already joined keep their joins.
+    EdgeJoinIndex joined(doc);
     for (const Join& j : detectJoins(doc)) {
         if (j.patchA < firstPatch && j.patchB < firstPatch) continue;
-        if (findJoin(doc, j.patchA, j.edgeA) >= 0 || findJoin(doc, j.patchB, j.edgeB) >= 0) continue;
+        if (joined.at(j.patchA, j.edgeA) >= 0 || joined.at(j.patchB, j.edgeB) >= 0) continue;
         const bool seam = (j.patchA < firstPatch) != (j.patchB < firstPatch);
+        joined.add(j, doc.joins.size());
         doc.joins.push_back(j);
         if (seam) ++r.seamJoins;
     }

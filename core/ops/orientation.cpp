@@ -1,6 +1,7 @@
 #include "core/ops/orientation.hpp"
 
 #include "core/eval/rational_eval.hpp"
+#include "core/model/topology.hpp"
 #include "core/ops/patch_ops.hpp"
 
 namespace pw {
@@ -24,6 +25,7 @@ double positionFlux(const Document& doc, int n) {
 
 double openBoundaryShare(const Document& doc) {
     size_t curves = 0, open = 0;
+    const EdgeJoinIndex joined(doc);
     for (uint32_t p = 0; p < doc.patches.size(); ++p) {
         const Patch& pt = doc.patches[p];
         for (Edge e : {Edge::U0, Edge::V0, Edge::U1, Edge::V1}) {
@@ -31,7 +33,7 @@ double openBoundaryShare(const Document& doc) {
             for (int k = 1; k < 4; ++k) collapsed = collapsed && doc.points[pt.idx[edgeSlot(e, k)]] == doc.points[pt.idx[edgeSlot(e, 0)]];
             if (collapsed) continue;
             ++curves;
-            if (findJoin(doc, p, e) < 0) ++open;
+            if (joined.at(p, e) < 0) ++open;
         }
     }
     return curves ? double(open) / double(curves) : 1.0;

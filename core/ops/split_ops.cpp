@@ -75,19 +75,14 @@ std::vector<RingCut> splitRingOf(const Document& doc, uint32_t p, bool alongU, d
     if (!(t > 1e-6 && t < 1.0 - 1e-6)) throw EditError("split parameter must lie strictly between 0 and 1");
     std::vector<RingCut> ring{{p, alongU, t}};
     std::unordered_map<uint32_t, size_t> seen{{p, 0}};
-    std::unordered_map<uint64_t, size_t> joinOn;  // patch·4 + edge → its join, built once (findJoin scans)
-    for (size_t j = 0; j < doc.joins.size(); ++j) {
-        const Join& jn = doc.joins[j];
-        if (!isTriangleEdge(jn.edgeA)) joinOn.emplace(uint64_t(jn.patchA) * 4 + uint64_t(jn.edgeA), j);
-        if (!isTriangleEdge(jn.edgeB)) joinOn.emplace(uint64_t(jn.patchB) * 4 + uint64_t(jn.edgeB), j);
-    }
+    const EdgeJoinIndex joinOn(doc);
     for (size_t i = 0; i < ring.size(); ++i) {
         const RingCut cut = ring[i];
         for (Edge e : {Edge::U0, Edge::U1, Edge::V0, Edge::V1}) {
             if (!crossedBy(cut.alongU, e)) continue;
-            const auto found = joinOn.find(uint64_t(cut.patch) * 4 + uint64_t(e));
-            if (found == joinOn.end()) continue;
-            const Join& jn = doc.joins[found->second];
+            const int found = joinOn.at(cut.patch, e);
+            if (found < 0) continue;
+            const Join& jn = doc.joins[size_t(found)];
             const bool isA = jn.patchA == cut.patch && jn.edgeA == e;
             const uint32_t q = isA ? jn.patchB : jn.patchA;
             const Edge eq = isA ? jn.edgeB : jn.edgeA;

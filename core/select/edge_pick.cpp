@@ -32,11 +32,12 @@ std::optional<PatchEdge> pickBoundaryEdge(const Document& doc, const Camera& cam
         double distance;
     };
     std::vector<Candidate> near;
+    const EdgeJoinIndex joined(doc);
     for (uint32_t p = 0; p < doc.patches.size(); ++p) {
         const Patch& pt = doc.patches[p];
         if (int(p) == skipPatch || pt.hidden || pt.basis != Basis::Bezier) continue;
         for (int e = 0; e < 4; ++e) {
-            if (findJoin(doc, p, Edge(e)) >= 0) continue;
+            if (joined.at(p, Edge(e)) >= 0) continue;
             const std::vector<Vec3> curve = boundaryCurve(doc, p, Edge(e));
             double best = radiusPx;
             std::optional<glm::dvec2> prev;
