@@ -487,3 +487,71 @@ TEST(StepImport, DamagedFilesAreRefusedNamingTheFile) {
     }
     fs::remove_all(dir);
 }
+
+TEST(StepImport, HostileValuesAreRefusedBeforeOpenCascadeAndNoImportOutlivesItsBudget) {
+    // Issue 44: OpenCASCADE ran past 60 s on each of these values. Each is refused naming the
+    // entity and line, in well under a second.
+    const fs::path dir = pw::test::freshTempDir("step-hostile");
+    pw::exportStep(teapot(), dir / "pot.step");
+    const std::string whole = pw::test::readBytes(dir / "pot.step");
+    const std::string point = "CARTESIAN_POINT('',(0.,0.,0.));";
+    ASSERT_NE(whole.find(point), std::string::npos);
+    std::string many = "CARTESIAN_POINT('',(";
+    for (int i = 0; i < 200'001; ++i) many += "0.,";
+    many += "0.));";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"CARTESIAN_POINT('',(inf,0.,0.));", "'inf' is not a STEP value"},
+        {"CARTESIAN_POINT('',(nan,0.,0.));", "'nan' is not a STEP value"},
+        {"CARTESIAN_POINT('',(1.E309,0.,0.));", "is not finite"},
+        {"CARTESIAN_POINT('',(-1.E999,0.,0.));", "is not finite"},
+        {"CARTESIAN_POINT('',(1.E308,0.,0.));", "larger than"},
+        {"CARTESIAN_POINT('',(0." + std::string(10'000, '3') + ",0.,0.));", "characters long"},
+        {many, "values in one entity"},
+    };
+    for (const auto& [value, why] : cases) {
+        SCOPED_TRACE(why);
+        std::string text = whole;
+        text.replace(text.find(point), point.size(), value);
+        std::ofstream(dir / "bad.step", std::ios::binary) << text;
+        try {
+            pw::importCadSurfaces(dir / "bad.step");
+            ADD_FAILURE() << "read";
+        } catch (const pw::InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(why), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("entity #"), std::string::npos) << e.what();
+            EXPECT_GT(e.line(), 0) << e.what();
+        }
+    }
+    // IGES: a pole of 1e999 (written with IGES's D exponent) in the parameter section.
+    const ReadBack r = readWithOcct(dir / "pot.step");
+    IGESControl_Controller::Init();
+    IGESControl_Writer w("MM", 1);
+    w.AddShape(r.shape);
+    w.ComputeModel();
+    ASSERT_TRUE(w.Write((dir / "pot.igs").string().c_str()));
+    std::string iges = pw::test::readBytes(dir / "pot.igs");
+    size_t p = 0;
+    while (p < iges.size() && !(iges.size() > p + 72 && iges[p + 72] == 'P')) p = iges.find('\n', p) + 1;
+    ASSERT_LT(p, iges.size());
+    const std::string params = "128,1.0D999;";
+    iges.replace(p, 64, params + std::string(64 - params.size(), ' '));
+    std::ofstream(dir / "bad.igs", std::ios::binary) << iges;
+    try {
+        pw::importCadSurfaces(dir / "bad.igs");
+        ADD_FAILURE() << "read";
+    } catch (const pw::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("1.0E999 is not finite"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("directory entry"), std::string::npos) << e.what();
+    }
+    // Whatever OpenCASCADE does past its budget (here made tiny), the import ends with an error.
+    ::setenv("PATCHWORK_CAD_SECONDS", "0.001", 1);
+    try {
+        pw::importCadSurfaces(dir / "pot.step");
+        ADD_FAILURE() << "read within 1 ms";
+    } catch (const pw::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("did not finish reading it within"), std::string::npos) << e.what();
+    }
+    ::unsetenv("PATCHWORK_CAD_SECONDS");
+    EXPECT_EQ(pw::importCadSurfaces(dir / "pot.step").patches.size(), 32u);  // and within the budget it reads
+    fs::remove_all(dir);
+}

@@ -13,6 +13,16 @@ inline constexpr std::size_t kMaxPatches = 1'000'000;               // patches +
 inline constexpr std::size_t kMaxJoins = 4'000'000;
 inline constexpr uint32_t kMaxNetSide = 4096;  // rows or columns of one net
 inline constexpr double kMaxCoordinate = 1e9;  // |x|, |y|, |z|
+// STEP/IGES import through OpenCASCADE runs in a child process with these budgets (wall time; address
+// space beyond the parent's), so that no file can hang or exhaust the program (issue 44).
+// PATCHWORK_CAD_SECONDS overrides the time (tests).
+inline constexpr double kMaxCadImportSeconds = 8.0;
+inline constexpr std::size_t kMaxCadImportBytes = std::size_t{1} << 30;
+// STEP/IGES values checked before OpenCASCADE sees them: |number| (knots and coordinates alike),
+// digits in one number, and values in one entity (a B-spline's poles, knots and weights).
+inline constexpr double kMaxCadNumber = 1e12;
+inline constexpr std::size_t kMaxCadNumberDigits = 40;
+inline constexpr std::size_t kMaxCadEntityValues = 200'000;
 inline constexpr float kMinTessLevel = 1.0f;
 inline constexpr float kMaxTessLevel = 64.0f;  // Vulkan's guaranteed maxTessellationGenerationLevel
 inline constexpr int kMaxExportLevel = 256;    // CPU tessellation for export

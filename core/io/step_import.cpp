@@ -22,6 +22,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iterator>
 #include <sstream>
 #include <variant>
 #include <vector>
@@ -29,7 +32,10 @@
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
 #include "core/base/limits.hpp"
+#include "core/io/bounded_child.hpp"
+#include "core/io/cad_values.hpp"
 #include "core/io/occt_support.hpp"
+#include "core/io/patchwork_format.hpp"
 #include "core/model/camera_math.hpp"
 #include "core/model/join_detect.hpp"
 
@@ -126,14 +132,8 @@ std::variant<Handle(Geom_BSplineSurface), std::string> faceSurface(const TopoDS_
     return bs;
 }
 
-}  // namespace
-
-Document importCadSurfaces(const std::filesystem::path& path, CadImportReport* report) {
-    const std::string ext = lowerExtension(path);
-    const bool step = ext == ".step" || ext == ".stp";
-    if (!step && ext != ".iges" && ext != ".igs") throw InputError(path.string(), "not a STEP (.step, .stp) or IGES (.iges, .igs) file");
-    const std::string bytes = readFileLimited(path);  // size limit and a clear error for a missing file
-    const auto held = occt::lock();
+// The import itself, in whatever process runs it (the caller holds OCCT's lock).
+Document importInProcess(const std::filesystem::path& path, bool step, const std::string& bytes, CadImportReport* report) {
     CadImportReport rep;
     Document doc;
     try {
@@ -199,6 +199,65 @@ Document importCadSurfaces(const std::filesystem::path& path, CadImportReport* r
     doc.camera.zUp = true;  // CAD systems are Z-up
     doc.camera = frameBounds(doc.camera, box, 1.0);
     if (report) *report = rep;
+    return doc;
+}
+
+// What the child sends back: "E" and the reason, or "D", the report's counts and notes (one a line,
+// then an empty line) and the document as a .patchwork text.
+std::string encodeResult(const std::filesystem::path& path, bool step, const std::string& bytes) {
+    try {
+        CadImportReport rep;
+        const Document doc = importInProcess(path, step, bytes, &rep);
+        std::string out = "D" + std::to_string(rep.faces) + " " + std::to_string(rep.importedFaces) + "\n";
+        for (std::string note : rep.notes) {
+            std::replace(note.begin(), note.end(), '\n', ' ');
+            out += note + "\n";
+        }
+        return out + "\n" + serializeDocument(doc);
+    } catch (const InputError& e) {
+        return "E" + e.reason();
+    }
+}
+
+}  // namespace
+
+Document importCadSurfaces(const std::filesystem::path& path, CadImportReport* report) {
+    const std::string ext = lowerExtension(path);
+    const bool step = ext == ".step" || ext == ".stp";
+    if (!step && ext != ".iges" && ext != ".igs") throw InputError(path.string(), "not a STEP (.step, .stp) or IGES (.iges, .igs) file");
+    const std::string bytes = readFileLimited(path);  // size limit and a clear error for a missing file
+    checkCadValues(path.string(), bytes, step);       // non-finite, huge and overlong values, before OpenCASCADE
+    double seconds = limits::kMaxCadImportSeconds;
+    if (const char* s = std::getenv("PATCHWORK_CAD_SECONDS")) seconds = std::max(0.001, std::atof(s));
+    const auto held = occt::lock();
+    const BoundedResult r = runBounded([&] { return encodeResult(path, step, bytes); }, seconds, limits::kMaxCadImportBytes);
+    char budget[64];
+    std::snprintf(budget, sizeof budget, "%g s", seconds);
+    switch (r.kind) {
+        case BoundedResult::Kind::TimedOut:
+            throw InputError(path.string(), std::string("OpenCASCADE did not finish reading it within ") + budget +
+                                                " (the limit for a STEP or IGES import; a damaged file can make it loop)");
+        case BoundedResult::Kind::OutOfMemory:
+            throw InputError(path.string(), "reading it needs more than " + std::to_string(limits::kMaxCadImportBytes >> 20) +
+                                                " MiB (the limit for a STEP or IGES import)");
+        case BoundedResult::Kind::Crashed:
+            throw InputError(path.string(),
+                             "OpenCASCADE failed while reading it" +
+                                 (r.signal ? " (signal " + std::to_string(r.signal) + ", likely its memory limit)" : std::string()));
+        case BoundedResult::Kind::Done:
+            break;
+    }
+    const std::string& out = r.output;
+    if (!out.empty() && out[0] == 'E') throw InputError(path.string(), out.substr(1));
+    std::istringstream in(out.substr(1));
+    CadImportReport rep;
+    std::string line;
+    std::getline(in, line);
+    std::sscanf(line.c_str(), "%zu %zu", &rep.faces, &rep.importedFaces);
+    while (std::getline(in, line) && !line.empty()) rep.notes.push_back(line);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    Document doc = parseDocument(text, path.string());
+    if (report) *report = std::move(rep);
     return doc;
 }
 
