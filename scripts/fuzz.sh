@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs the libFuzzer targets (.bpt, .patchwork and glTF loaders, with round-trip checks) of the
+# Runs the libFuzzer targets (.bpt, .patchwork and glTF loaders, with round-trip checks, and the STEP/IGES value check) of the
 # clang sanitizer build (scripts/sanitize.sh builds it if needed) for a bounded time each on their
 # seed corpora (tests/corpus and data/), with the dictionaries fuzz/*.dict. Usage: scripts/fuzz.sh [SECONDS_PER_TARGET]
 # Crashes are written to build-asan/crashes/; a crash makes the script exit non-zero. Every crash
@@ -20,10 +20,11 @@ seed() {  # target, file globs...
 }
 seed bpt "$root"/data/*.bpt "$root"/tests/corpus/bad/*.bpt
 seed patchwork "$root"/tests/corpus/bad/*.patchwork "$root"/tests/corpus/good/*.patchwork
+seed cad_values "$root"/tests/corpus/good/*.step "$root"/tests/corpus/good/*.igs
 seed gltf "$root"/tests/corpus/good/*.gltf "$root"/tests/corpus/good/*.glb "$root"/tests/corpus/bad/*.gltf "$root"/tests/corpus/bad/*.glb
 
 status=0
-for t in bpt patchwork gltf; do
+for t in bpt patchwork gltf cad_values; do
   echo "fuzz: $t for ${seconds}s"
   if ! "$build/fuzz/fuzz_$t" -dict="$root/fuzz/$t.dict" -max_total_time="$seconds" -max_len=65536 -rss_limit_mb=4096 -timeout=20 \
         -artifact_prefix="$build/crashes/$t-" -print_final_stats=1 "$build/corpus-$t" >"$build/fuzz_$t.log" 2>&1; then

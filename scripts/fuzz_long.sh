@@ -10,7 +10,7 @@ build=${PATCHWORK_ASAN_BUILD_DIR:-$root/build-asan}
 "$root/scripts/fuzz.sh" "$seconds"
 status=$?
 printf '%-10s %12s %9s %7s %7s %8s %8s\n' target execs exec/s cov ft corpus crashes
-for t in bpt patchwork gltf; do
+for t in bpt patchwork gltf cad_values; do
   log="$build/fuzz_$t.log"
   execs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | awk '{print $2}')
   last=$(grep -E '#[0-9]+.*cov: ' "$log" | tail -n 1)
