@@ -81,10 +81,18 @@ void refuseFolding(const Document& before, const Document& after) {
                         "; move the sides nearer to one tangent plane first, or join C0");
 }
 
-std::vector<uint32_t> crossPoints(const SeamSide& s) {
+// The points of side A the join's rows involve (its edge, and for G1 its cross derivative's),
+// sorted: what stays put when B is matched to A.
+std::vector<uint32_t> sideAPoints(const Document& doc, const Join& jn) {
     std::vector<uint32_t> out;
-    for (const auto& c : s.cross)
-        for (const auto& term : c) out.push_back(term.first);
+    if (const auto side = seamSide(doc, jn, false)) {
+        out.assign(side->edge.begin(), side->edge.end());
+        if (jn.continuity == Continuity::G1)
+            for (const auto& c : side->cross)
+                for (const auto& term : c) out.push_back(term.first);
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
 }
 
@@ -131,15 +139,7 @@ size_t joinTriangleEdges(Document& doc, uint32_t a, Edge ea, uint32_t b, Edge eb
     doc.joins.push_back(Join{a, ea, b, eb, reversed, continuity, 1.0});
     Join& jn = doc.joins.back();
     measure(doc, jn);
-    std::vector<uint32_t> fixed;
-    if (match)
-        if (const auto side = seamSide(doc, jn, false)) {
-            fixed.assign(side->edge.begin(), side->edge.end());
-            if (continuity == Continuity::G1)
-                for (uint32_t i : crossPoints(*side)) fixed.push_back(i);
-        }
-    std::sort(fixed.begin(), fixed.end());
-    fixed.erase(std::unique(fixed.begin(), fixed.end()), fixed.end());
+    const std::vector<uint32_t> fixed = match ? sideAPoints(doc, jn) : std::vector<uint32_t>{};
     if (const Projection p = projectConstraints(doc, fixed); !p.ok()) throw EditError("the join conflicts: " + conflictMessage(p));
     refuseFolding(before, doc);
     compactPool(doc);
@@ -155,15 +155,7 @@ void setTriangleJoinContinuity(Document& doc, size_t j, Continuity continuity) {
     jn.continuity = continuity;
     measure(doc, jn);
     // A's side of the seam stays; B's moves onto the new rows.
-    std::vector<uint32_t> fixed;
-    if (const auto side = seamSide(doc, jn, false)) {
-        fixed.assign(side->edge.begin(), side->edge.end());
-        if (continuity == Continuity::G1)
-            for (uint32_t i : crossPoints(*side)) fixed.push_back(i);
-    }
-    std::sort(fixed.begin(), fixed.end());
-    fixed.erase(std::unique(fixed.begin(), fixed.end()), fixed.end());
-    if (const Projection p = projectConstraints(doc, fixed); !p.ok())
+    if (const Projection p = projectConstraints(doc, sideAPoints(doc, jn)); !p.ok())
         throw EditError("join " + std::to_string(j) + " cannot be " + std::string(continuityName(continuity)) + ": " + conflictMessage(p) +
                         "; it stays as it was");
     refuseFolding(before, doc);

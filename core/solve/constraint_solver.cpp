@@ -43,9 +43,6 @@ bool joinPointsInPool(const JoinPoints& jp, size_t n) {
     return true;
 }
 
-namespace {
-
-// Merges repeated indices, drops zero coefficients and sorts by index.
 ConstraintRow makeRow(std::vector<std::pair<uint32_t, double>> terms, uint32_t join) {
     std::sort(terms.begin(), terms.end());
     ConstraintRow row;
@@ -59,6 +56,8 @@ ConstraintRow makeRow(std::vector<std::pair<uint32_t, double>> terms, uint32_t j
     std::erase_if(row.terms, [](const auto& t) { return t.second == 0.0; });
     return row;
 }
+
+namespace {
 
 bool collapsed(const uint32_t (&e)[4]) { return e[0] == e[1] && e[1] == e[2] && e[2] == e[3]; }
 

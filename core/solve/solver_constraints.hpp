@@ -17,6 +17,9 @@ struct ConstraintRow {
     uint32_t join = 0;                               // the join it comes from (kNetSeamJoin: a net seam)
 };
 
+// A row from terms: repeated indices merged, zero coefficients dropped, sorted by index.
+ConstraintRow makeRow(std::vector<std::pair<uint32_t, double>> terms, uint32_t join);
+
 // The pool indices along one join, point k of A's edge against the matching point of B's edge.
 struct JoinPoints {
     uint32_t a0[4], a1[4], a2[4], b0[4], b1[4], b2[4];  // rows 0 (edge), 1 and 2 inward

@@ -144,16 +144,7 @@ void appendTriangleJoinRows(const Document& doc, const Join& join, uint32_t ji, 
     const auto a = seamSide(doc, join, false), b = seamSide(doc, join, true);
     if (!a || !b) return;
     auto push = [&](PointCombination terms) {
-        std::sort(terms.begin(), terms.end());
-        solver_detail::ConstraintRow row;
-        row.join = ji;
-        for (const auto& [idx, c] : terms) {
-            if (!row.terms.empty() && row.terms.back().first == idx)
-                row.terms.back().second += c;
-            else
-                row.terms.emplace_back(idx, c);
-        }
-        std::erase_if(row.terms, [](const auto& t) { return std::abs(t.second) < 1e-15; });
+        solver_detail::ConstraintRow row = solver_detail::makeRow(std::move(terms), ji);
         if (!row.terms.empty()) rows.push_back(std::move(row));
     };
     for (int k = 0; k < 4; ++k)
