@@ -308,3 +308,44 @@ TEST(TriangleJoins, FillHoleWithATriangleIsG1ToItsThreeSidesAndHeldLive) {
     // Its sides must be single edges: two end to end cannot be one cubic.
     EXPECT_NE(refusal(s, "fill-hole 0:v1 1:v1+2:v1 0:u0 triangle").find("one patch edge"), std::string::npos);
 }
+
+TEST(TriangleJoins, ATriangleFillsThroughCurvesToo) {
+    // Three curves of one segment round a loop: one triangle through them, its edges their points.
+    EditSession s;
+    Document& d = s.doc;
+    const Vec3 corner[3] = {Vec3(0, 0, 0), Vec3(2, 0, 0.3), Vec3(0.8, 1.6, 0.1)};
+    for (int k = 0; k < 3; ++k) d.points.push_back(corner[k]);
+    for (uint32_t k = 0; k < 3; ++k) {
+        const Vec3 a = corner[k], b = corner[(k + 1) % 3], bulge(0, 0, 0.25);
+        const uint32_t first = uint32_t(d.points.size());
+        d.points.push_back(a + (b - a) / 3.0 + bulge);
+        d.points.push_back(a + 2.0 * (b - a) / 3.0 + bulge);
+        d.curves.push_back(BezierCurve{{k, first, first + 1, (k + 1) % 3}, "", false});
+    }
+    Recorder host;
+    makeCommandTable().run(s, host, "fill-hole c0 c1 c2 triangle");
+    ASSERT_EQ(d.triangles.size(), 1u);
+    EXPECT_TRUE(d.joins.empty());
+    EXPECT_NE(host.last.find("3 curves"), std::string::npos) << host.last;
+    for (int e = 0; e < 3; ++e) {  // each triangle edge is one of the curves, point for point
+        const std::vector<uint32_t> edge = edgePoolOf(d, 0, triangleEdge(e));
+        const bool found = std::any_of(d.curves.begin(), d.curves.end(), [&](const BezierCurve& c) {
+            return std::equal(edge.begin(), edge.end(), c.idx.begin()) || std::equal(edge.rbegin(), edge.rend(), c.idx.begin());
+        });
+        EXPECT_TRUE(found) << "edge " << e;
+    }
+    EXPECT_NE(refusal(s, "fill-hole c0 c1 c2").find("with `triangle`"), std::string::npos);
+
+    // Two patch edges and a curve (made on the third patch's edge, sharing its points): G1 to the
+    // two patches only.
+    EditSession r;
+    r.doc = test::poleRing();
+    run(r, "select patch 2");
+    run(r, "curve-from-edge v0");
+    Recorder said;
+    makeCommandTable().run(r, said, "fill-hole 0:v0 1:v0 c0 triangle");
+    ASSERT_EQ(r.doc.triangles.size(), 1u);
+    EXPECT_EQ(r.doc.joins.size(), 5u);
+    EXPECT_NE(said.last.find("G1 to its 2 patch edges, through the points of its 1 curve"), std::string::npos) << said.last;
+    expectHeld(r.doc, "filled with a curve side");
+}

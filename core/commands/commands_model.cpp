@@ -317,8 +317,9 @@ void addModelCommands(CommandTable& t) {
            .help = "Fill a hole bounded by 3 to 6 sides, each an open patch edge (P:u0 …) or two edges end to end (P:u0+Q:v1), in "
                    "order round the hole: one patch per hole corner, meeting at a centre, G1 to every surrounding patch and to each "
                    "other, held live like any join. A side of one edge is split at its middle first (through its ring; no join is "
-                   "dropped); a 5- or 6-sided fill is split 2×2 at its centre. With `triangle`, three sides of one edge each are "
-                   "filled by one Bézier triangle instead, G1 to all three",
+                   "dropped); a 5- or 6-sided fill is split 2×2 at its centre. With `triangle`, three sides of one cubic each are "
+                   "filled by one Bézier triangle instead, G1 to every side that is a patch edge; a side may then be a curve of "
+                   "one segment (cN), whose points the triangle shares",
            .run = [](CommandContext& ctx) {
                std::vector<std::string> args = ctx.args;
                const bool triangle = !args.empty() && args.back() == "triangle";
@@ -326,9 +327,14 @@ void addModelCommands(CommandTable& t) {
                if (args.size() < 3 || args.size() > 6) throw EditError("fill-hole needs 3 to 6 sides, got " + std::to_string(args.size()));
                std::vector<HoleSide> sides;
                for (const std::string& arg : args) {
-                   if (!arg.empty() && (arg[0] == 'c' || arg[0] == 'C'))
-                       throw EditError("fill-hole takes patch edges (P:u0, or P:u0+Q:v1), not curves such as '" + arg +
-                                       "': make a surface from the curve first (extrude, loft)");
+                   if (!arg.empty() && (arg[0] == 'c' || arg[0] == 'C')) {
+                       if (!triangle)
+                           throw EditError("fill-hole of patches takes patch edges (P:u0, or P:u0+Q:v1), not curves such as '" + arg +
+                                           "': give three sides of one cubic each with `triangle`, or make a surface from the curve "
+                                           "first (extrude, loft)");
+                       sides.push_back(HoleSide{{}, int32_t(commandIndex(arg.substr(1), ctx.session.doc.curves.size(), "curve"))});
+                       continue;
+                   }
                    HoleSide side;
                    const size_t plus = arg.find('+');
                    side.edges.push_back(patchEdge(arg.substr(0, plus), ctx.session.doc));

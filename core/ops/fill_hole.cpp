@@ -21,12 +21,15 @@ namespace pw {
 namespace {
 
 // A patch edge walked from its point 0 (or from point 3 when `reversed`).
+// A triangle fill's side may instead be a curve of one segment (`curve` >= 0; depth 0 only).
 struct Seg {
     uint32_t patch = 0;
     Edge edge = Edge::U0;
     bool reversed = false;
-    Seg flipped() const { return {patch, edge, !reversed}; }
+    int32_t curve = -1;
+    Seg flipped() const { return {patch, edge, !reversed, curve}; }
     uint32_t idx(const Document& d, int k, int depth = 0) const {
+        if (curve >= 0) return d.curves[size_t(curve)].idx[size_t(reversed ? 3 - k : k)];
         return d.patches[patch].idx[size_t(edgeSlot(edge, reversed ? 3 - k : k, depth))];
     }
     Vec3 at(const Document& d, int k, int depth = 0) const { return d.points[idx(d, k, depth)]; }
@@ -63,6 +66,10 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
     std::vector<SideGeo> geo(n);
     for (size_t k = 0; k < n; ++k) {
         const auto& edges = sides[k].edges;
+        if (sides[k].curve >= 0)
+            throw EditError("side " + std::to_string(k + 1) + " is curve c" + std::to_string(sides[k].curve) +
+                            ": a fill of patches needs patch edges (P:u0, or P:u0+Q:v1); with `triangle` three sides of one cubic "
+                            "each, edges or curves, make one Bézier triangle");
         if (edges.empty() || edges.size() > 2) throw EditError("side " + std::to_string(k + 1) + " needs one edge or two (P:e+Q:f)");
         std::array<Seg, 2> seg;
         for (size_t i = 0; i < edges.size(); ++i) {
@@ -223,6 +230,18 @@ std::string fillHoleWithTriangle(Document& doc, const std::vector<HoleSide>& sid
     auto near = [&](const Vec3& a, const Vec3& b) { return glm::length(a - b) <= tol; };
     std::array<Seg, 3> seg;
     for (size_t k = 0; k < 3; ++k) {
+        if (const int32_t c = sides[k].curve; c >= 0) {
+            const std::string name = "curve c" + std::to_string(c);
+            if (size_t(c) >= doc.curves.size()) throw EditError("no " + name);
+            const BezierCurve& curve = doc.curves[size_t(c)];
+            if (curveSegmentCount(curve) != 1 || curveClosed(curve))
+                throw EditError(name + " has " + std::to_string(curveSegmentCount(curve)) +
+                                " segments; a triangle's side is one cubic (split the hole's side so each is one segment)");
+            for (uint32_t i : curve.idx)
+                if (pointWeight(doc, i) != 1.0) throw EditError(name + " is rational; Bézier triangles take no weights");
+            seg[k] = Seg{0, Edge::U0, false, c};
+            continue;
+        }
         if (sides[k].edges.size() != 1)
             throw EditError("side " + std::to_string(k + 1) +
                             ": a triangle's side is one patch edge (each of its edges is one cubic); fill without `triangle` for "
@@ -245,7 +264,12 @@ std::string fillHoleWithTriangle(Document& doc, const std::vector<HoleSide>& sid
         throw EditError("the sides do not close a loop: side 3 does not end where side 1 starts");
     // The triangle's boundary loop (corner u → v → w, its edges 2, 0, 1) turns counter-clockwise
     // about its normal; a neighbour's normal agrees when its own loop walks the seam the other way.
-    if (edgeLoopSign(seg[0].edge) * (seg[0].reversed ? -1 : 1) > 0) seg = {seg[2].flipped(), seg[1].flipped(), seg[0].flipped()};
+    // (Judged by the first side that is a patch edge; three curves keep the order they were given in.)
+    for (size_t k = 0; k < 3; ++k) {
+        if (seg[k].curve >= 0) continue;
+        if (edgeLoopSign(seg[k].edge) * (seg[k].reversed ? -1 : 1) > 0) seg = {seg[2].flipped(), seg[1].flipped(), seg[0].flipped()};
+        break;
+    }
     TrianglePatch t;
     t.name = "corner fill";
     constexpr int kTriangleEdge[3] = {2, 0, 1};
@@ -261,9 +285,11 @@ std::string fillHoleWithTriangle(Document& doc, const std::vector<HoleSide>& sid
     t.idx[size_t(triSlot(1, 1, 1))] = addPoint(doc, E + 0.5 * (E - V));
     const uint32_t tri = uint32_t(doc.triangles.size());
     doc.triangles.push_back(t);
+    size_t joined = 0;
     try {
         for (size_t k = 0; k < 3; ++k)
-            joinTriangleEdges(doc, seg[k].patch, seg[k].edge, tri, triangleEdge(kTriangleEdge[k]), Continuity::G1);
+            if (seg[k].curve < 0)
+                joinTriangleEdges(doc, seg[k].patch, seg[k].edge, tri, triangleEdge(kTriangleEdge[k]), Continuity::G1), ++joined;
     } catch (const EditError& e) {
         // One cubic triangle has a single point of its own (b111): it is G1 to three edges only where
         // the surroundings can give (DESIGN §14); blends pinned by their faces cannot.
@@ -271,7 +297,9 @@ std::string fillHoleWithTriangle(Document& doc, const std::vector<HoleSide>& sid
                         "; one cubic triangle is G1 to three edges only where the patches round it can bend to meet it: fill "
                         "without `triangle` (three patches meeting G1 at a centre) where they cannot");
     }
-    return "filled a 3-sided hole with triangle " + std::to_string(tri) + ", G1 to its 3 edges";
+    if (joined == 3) return "filled a 3-sided hole with triangle " + std::to_string(tri) + ", G1 to its 3 edges";
+    return "filled a 3-sided hole with triangle " + std::to_string(tri) + ", G1 to its " + std::to_string(joined) + " patch edge" +
+           (joined == 1 ? "" : "s") + ", through the points of its " + std::to_string(3 - joined) + " curve" + (joined == 2 ? "" : "s");
 }
 
 }  // namespace pw

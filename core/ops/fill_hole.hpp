@@ -19,6 +19,7 @@ namespace pw {
 
 struct HoleSide {
     std::vector<std::pair<uint32_t, Edge>> edges;  // one edge, or two that meet end to end
+    int32_t curve = -1;                            // else a document curve of one segment (triangle fills only)
 };
 
 // Fills the hole; returns the status line ("filled a 3-sided hole with 3 patches (18..20) …").
@@ -29,8 +30,11 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides);
 // Fills a 3-sided hole of single edges with one cubic Bézier triangle sharing their points (the
 // corner patch Rhino's and Alias's fillets leave as a degenerate quad), G1 to all three through
 // the triangle joins of core/ops/triangle_joins.hpp; its middle point b111, the surroundings' free
-// points beside the edges and each join's α and lean β(t) are what the seams are held with. Returns
-// the status line. EditError as fillHole, and when a side has two edges.
+// points beside the edges and each join's α and lean β(t) are what the seams are held with. A side
+// may be a curve of one cubic segment instead (polynomial, not closed): the triangle's edge is then
+// the curve's own points, with nothing to join (three curves make a triangle through them, as
+// Rhino's EdgeSrf does with three curves). Returns the status line. EditError as fillHole, and when
+// a side has two edges.
 std::string fillHoleWithTriangle(Document& doc, const std::vector<HoleSide>& sides);
 
 }  // namespace pw
