@@ -8,6 +8,17 @@
 
 namespace pw {
 
+namespace {
+
+// A grid triangle turned over: its geometric normal against the surface normals at its corners
+// (SurfacePoint or TriPoint: both have p and n).
+template <class Point>
+bool turnedOver(const Point& a, const Point& b, const Point& c) {
+    return glm::dot(glm::cross(b.p - a.p, c.p - a.p), a.n + b.n + c.n) < 0.0;
+}
+
+}  // namespace
+
 PatchShape patchShape(const Document& doc, uint32_t p, int level) {
     const Patch& patch = doc.patches[p];
     const WindowNet net = gatherWindow(doc, patch.idx);
@@ -23,14 +34,10 @@ PatchShape patchShape(const Document& doc, uint32_t p, int level) {
     const double size2 = glm::dot(hi - lo, hi - lo);
     PatchShape shape;
     auto at = [&](int i, int j) -> const SurfacePoint& { return grid[size_t(j * (n + 1) + i)]; };
-    const auto turned = [](const SurfacePoint& a, const SurfacePoint& b, const SurfacePoint& c) {
-        const Vec3 g = glm::cross(b.p - a.p, c.p - a.p);
-        return glm::dot(g, a.n + b.n + c.n) < 0.0;
-    };
     for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
             const SurfacePoint &a = at(i, j), &b = at(i + 1, j), &c = at(i, j + 1), &d = at(i + 1, j + 1);
-            shape.invertedTriangles += int(turned(a, b, d)) + int(turned(a, d, c));
+            shape.invertedTriangles += int(turnedOver(a, b, d)) + int(turnedOver(a, d, c));
         }
     for (const SurfacePoint* c : {&at(0, 0), &at(n, 0), &at(0, n), &at(n, n)})
         if (size2 > 0.0 && glm::length(glm::cross(c->du, c->dv)) <= 1e-9 * size2) ++shape.collapsedCorners;
@@ -43,10 +50,7 @@ PatchShape triangleShape(const Document& doc, uint32_t t, int level) {
     std::vector<TriPoint> grid;
     evaluateTriangleGrid(gatherTriangleNet(doc, tri.idx), tri.idx, n, grid);
     PatchShape shape;
-    const auto turned = [&](size_t a, size_t b, size_t c) {
-        const Vec3 g = glm::cross(grid[b].p - grid[a].p, grid[c].p - grid[a].p);
-        return glm::dot(g, grid[a].n + grid[b].n + grid[c].n) < 0.0;
-    };
+    const auto turned = [&](size_t a, size_t b, size_t c) { return turnedOver(grid[a], grid[b], grid[c]); };
     for (int j = 0; j < n; ++j)
         for (int i = 0; i + j < n; ++i) {
             // (i, j) → (i+1, j) → (i, j+1) turns like (u, v): du × dv

@@ -41,10 +41,10 @@ std::string joinSideRef(uint32_t item, Edge e) {
     return (isTriangleEdge(e) ? "t" : "") + std::to_string(item) + ":" + std::string(edgeName(e));
 }
 std::string joinSideRef(const Join& j, bool sideB) { return sideB ? joinSideRef(j.patchB, j.edgeB) : joinSideRef(j.patchA, j.edgeA); }
-std::string joinSideName(const Join& j, bool sideB) {
-    const Edge e = sideB ? j.edgeB : j.edgeA;
-    return (isTriangleEdge(e) ? "triangle " : "patch ") + std::to_string(sideB ? j.patchB : j.patchA) + " " + std::string(edgeName(e));
+std::string joinSideName(uint32_t item, Edge e) {
+    return (isTriangleEdge(e) ? "triangle " : "patch ") + std::to_string(item) + " " + std::string(edgeName(e));
 }
+std::string joinSideName(const Join& j, bool sideB) { return sideB ? joinSideName(j.patchB, j.edgeB) : joinSideName(j.patchA, j.edgeA); }
 
 std::vector<uint32_t> edgePoolOf(const Document& doc, uint32_t p, Edge e) {
     std::vector<uint32_t> out;

@@ -33,6 +33,7 @@ private:
 // A join's side A (or B) in messages, "patch 3 u0" or "triangle 2 e1", and as a command argument,
 // "3:u0" or "t2:e1".
 std::string joinSideName(const Join& j, bool sideB);
+std::string joinSideName(uint32_t item, Edge e);
 std::string joinSideRef(const Join& j, bool sideB);
 std::string joinSideRef(uint32_t item, Edge e);
 

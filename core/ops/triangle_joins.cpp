@@ -18,10 +18,6 @@ namespace pw {
 
 namespace {
 
-std::string sideName(uint32_t item, Edge e) {
-    return (isTriangleEdge(e) ? "triangle " : "patch ") + std::to_string(item) + " " + std::string(edgeName(e));
-}
-
 void checkSide(const Document& doc, uint32_t item, Edge e) {
     if (isTriangleEdge(e)) {
         if (item >= doc.triangles.size()) throw EditError("no triangle " + std::to_string(item));
@@ -44,11 +40,7 @@ void checkContinuity(Continuity c) {
 // |D| summed at the Bernstein coefficients: a side's cross derivative size.
 double crossLength(const Document& doc, const SeamSide& s) {
     double sum = 0.0;
-    for (const PointCombination& c : s.cross) {
-        Vec3 v(0.0);
-        for (const auto& [idx, coef] : c) v += coef * doc.points[idx];
-        sum += glm::length(v);
-    }
+    for (const PointCombination& c : s.cross) sum += glm::length(valueOf(doc, c));
     return sum / double(s.cross.size());
 }
 
@@ -111,7 +103,7 @@ size_t joinTriangleEdges(Document& doc, uint32_t a, Edge ea, uint32_t b, Edge eb
     }
     if (ja >= 0 || jb >= 0) {
         const Join& other = doc.joins[size_t(ja >= 0 ? ja : jb)];
-        throw EditError(sideName(ja >= 0 ? a : b, ja >= 0 ? ea : eb) + " is already joined (join " + std::to_string(ja >= 0 ? ja : jb) +
+        throw EditError(joinSideName(ja >= 0 ? a : b, ja >= 0 ? ea : eb) + " is already joined (join " + std::to_string(ja >= 0 ? ja : jb) +
                         ", " + joinSideName(other, false) + " – " + joinSideName(other, true) + ", " +
                         std::string(continuityName(other.continuity)) + "); unjoin it first");
     }

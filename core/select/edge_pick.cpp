@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/eval/bezier_curve.hpp"
 #include "core/eval/rational_eval.hpp"
 #include "core/model/topology.hpp"
 #include "core/select/picking.hpp"
@@ -11,9 +12,17 @@
 namespace pw {
 
 std::vector<Vec3> boundaryCurve(const Document& doc, uint32_t p, Edge e, int n) {
+    std::vector<Vec3> out;
+    if (isTriangleEdge(e)) {  // Bézier triangles take no weights: the edge is the cubic of its points
+        const std::vector<uint32_t> pool = edgePoolOf(doc, p, e);
+        if (pool.size() != 4) return out;
+        const std::array<Vec3, 4> q{doc.points[pool[0]], doc.points[pool[1]], doc.points[pool[2]], doc.points[pool[3]]};
+        for (int s = 0; s <= n; ++s) out.push_back(evaluateCurve(q, double(s) / n));
+        return out;
+    }
+    if (p >= doc.patches.size()) return out;
     const Patch& pt = doc.patches[p];
     const WindowNet net = gatherWindow(doc, pt.idx);
-    std::vector<Vec3> out;
     out.reserve(size_t(n + 1));
     for (int s = 0; s <= n; ++s) {
         const double t = double(s) / n;

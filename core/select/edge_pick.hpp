@@ -19,7 +19,9 @@ struct PatchEdge {
     bool operator==(const PatchEdge&) const = default;
 };
 
-// Points along boundary curve e of patch p (any basis), n segments, from k = 0 to k = 3.
+// Points along boundary curve e of patch p (any basis, rational where weighted), n segments, from
+// k = 0 to k = 3; for a triangle's edge (Edge::T0..T2) the cubic of triangle p's edge points.
+// Empty when the patch or triangle does not exist.
 std::vector<Vec3> boundaryCurve(const Document& doc, uint32_t p, Edge e, int n = 24);
 
 // The open (not joined) boundary edge of a shown Bézier patch whose curve passes nearest pixel

@@ -189,10 +189,7 @@ std::vector<JoinContinuity> continuityReport(const Document& doc, int samples, c
             const Seam::Sample q = seam.at(s, samples);
             jc.c0Gap = std::max(jc.c0Gap, glm::length(q.a.p - q.b.p));
             if (!q.normals) continue;  // no meaningful normal here
-            const double c = std::clamp(glm::dot(q.a.n, q.b.n), -1.0, 1.0);
-            // acos is ill-conditioned near 1: use atan2 of |cross| and dot for small angles.
-            const double angle = std::atan2(glm::length(glm::cross(q.a.n, q.b.n)), c);
-            jc.normalAngleDeg = std::max(jc.normalAngleDeg, angle * 180.0 / std::numbers::pi);
+            jc.normalAngleDeg = std::max(jc.normalAngleDeg, angleDeg(q.a.n, q.b.n));
             const double big = std::max(std::abs(q.kappaA), std::abs(q.kappaB));
             jc.maxCurvature = std::max(jc.maxCurvature, big);
             jc.curvatureDeviationPct =

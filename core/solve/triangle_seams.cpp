@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/eval/bezier_curve.hpp"
 #include "core/eval/bezier_triangle.hpp"
 
 namespace pw {
@@ -61,12 +62,6 @@ std::vector<PointCombination> shearTerm(const SeamSide& a, int i) {
     return out;
 }
 
-Vec3 valueOf(const Document& doc, const PointCombination& c) {
-    Vec3 s(0.0);
-    for (const auto& [idx, coef] : c) s += coef * doc.points[idx];
-    return s;
-}
-
 Vec3 evaluate(const Document& doc, const std::vector<PointCombination>& c, double t) {
     Vec3 s(0.0);
     const int n = int(c.size()) - 1;
@@ -75,9 +70,7 @@ Vec3 evaluate(const Document& doc, const std::vector<PointCombination>& c, doubl
 }
 
 Vec3 evaluateEdge(const Document& doc, const std::array<uint32_t, 4>& e, double t) {
-    Vec3 s(0.0);
-    for (int k = 0; k < 4; ++k) s += bernstein(3, k, t) * doc.points[e[size_t(k)]];
-    return s;
+    return evaluateCurve({doc.points[e[0]], doc.points[e[1]], doc.points[e[2]], doc.points[e[3]]}, t);
 }
 
 // α(t)·D_A(t) at degree N: α constant, or running linearly from α at t = 0 to endAlpha at t = 1
@@ -105,6 +98,12 @@ int identityDegree(const Join& join, const SeamSide& a, const SeamSide& b) {
 }
 
 }  // namespace
+
+Vec3 valueOf(const Document& doc, const PointCombination& c) {
+    Vec3 s(0.0);
+    for (const auto& [idx, coef] : c) s += coef * doc.points[idx];
+    return s;
+}
 
 std::optional<SeamSide> seamSide(const Document& doc, const Join& join, bool sideB) {
     const uint32_t item = sideB ? join.patchB : join.patchA;

@@ -25,6 +25,9 @@ namespace pw {
 // A combination Σ coef·p[idx] of pool points.
 using PointCombination = std::vector<std::pair<uint32_t, double>>;
 
+// The point Σ coef·p[idx].
+Vec3 valueOf(const Document& doc, const PointCombination& c);
+
 // One side of a join as polynomials along the seam, t running from A's edge point 0 to point 3.
 struct SeamSide {
     std::array<uint32_t, 4> edge{};       // pool indices along the seam

@@ -13,7 +13,6 @@
 #include "core/eval/bezier_triangle.hpp"
 #include "core/eval/patch_eval.hpp"
 #include "core/model/camera_math.hpp"
-#include "core/model/topology.hpp"
 #include "core/select/picking.hpp"
 #include "ui/editor/editor.hpp"
 
@@ -112,13 +111,7 @@ void Editor::drawPaneOverlays(const std::array<float, 4>& pane, bool active) {
         for (const JoinContinuity& c : continuity_.report()) {
             if (!continuity_.failures(c.join) || c.join >= doc_.joins.size() || ++drawn > 512) continue;
             const Join& j = doc_.joins[c.join];
-            std::vector<Vec3> curve;
-            if (const std::vector<uint32_t> e = edgePoolOf(doc_, j.patchA, j.edgeA); e.size() == 4)
-                for (int s = 0; s <= 24; ++s) {  // the seam's cubic, from its four points
-                    const double t = s / 24.0, r = 1.0 - t;
-                    curve.push_back(r * r * r * doc_.points[e[0]] + 3.0 * r * r * t * doc_.points[e[1]] +
-                                    3.0 * r * t * t * doc_.points[e[2]] + t * t * t * doc_.points[e[3]]);
-                }
+            const std::vector<Vec3> curve = boundaryCurve(doc_, j.patchA, j.edgeA);  // a patch's or a triangle's edge
             for (size_t k = 0; k + 1 < curve.size(); ++k) line(curve[k], curve[k + 1], IM_COL32(255, 140, 40, 255), 4.5f);
         }
     }
