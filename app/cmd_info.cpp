@@ -39,7 +39,9 @@ std::string fmt(const char* format, double v) {
 std::string vec(const Vec3& v) { return "(" + fmt("%.6g", v.x) + ", " + fmt("%.6g", v.y) + ", " + fmt("%.6g", v.z) + ")"; }
 
 int runInfo(const InfoOptions& opt) {
-    const Document doc = loadDocument(opt.file);
+    LoadReport loadReport;
+    const Document doc = loadDocument(opt.file, &loadReport);
+    for (const std::string& note : loadReport.notes) std::cerr << "patchwork info: " << opt.file << ": " << note << "\n";
     (void)loadDocumentHeightMap(doc, opt.file);  // the document's height map must read too (issue 44: not only on export)
     const std::vector<PatchInstance> windows = expandPatches(doc);
     const Bounds bounds = computeBounds(doc.points);

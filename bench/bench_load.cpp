@@ -5,9 +5,13 @@
 // edge and the model's size per join candidate).
 #include <benchmark/benchmark.h>
 
+#include <unistd.h>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
+#include "core/base/errors.hpp"
 #include "core/io/bpt_format.hpp"
 
 namespace {
@@ -44,5 +48,45 @@ void BM_LoadBptGrid(benchmark::State& state) {
     state.counters["patches_per_s"] = benchmark::Counter(double(n) * n, benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_LoadBptGrid)->Arg(32)->Arg(64)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond)->Complexity(benchmark::oNLogN);
+
+// Refusing a file of a million patches (issue 44: it took 30 s and 2.4 GB, then failed with
+// bad_alloc when the patches were identical): the count on its first line already lists more points
+// than the limit, so loadBpt refuses after reading the file's first 4 KiB. Arg 1: identical patches,
+// 0: distinct ones on a grid — the same cost, whatever follows the header.
+void BM_RefuseMillionPatchBpt(benchmark::State& state) {
+    const bool identical = state.range(0) == 1;
+    const std::filesystem::path path =
+        std::filesystem::temp_directory_path() / ("patchwork_bench_" + std::to_string(getpid()) + (identical ? "_same" : "_grid") + ".bpt");
+    {
+        std::ofstream out(path, std::ios::binary);
+        constexpr int kPatches = 1'000'000;
+        out << kPatches << "\n";
+        std::string patch;
+        char buf[96];
+        for (int k = 0; k < kPatches; ++k) {
+            const int ox = identical ? 0 : 3 * (k % 1000), oy = identical ? 0 : 3 * (k / 1000);
+            patch = "3 3\n";
+            for (int j = 0; j < 4; ++j)
+                for (int i = 0; i < 4; ++i) {
+                    std::snprintf(buf, sizeof buf, "%d %d 0\n", ox + i, oy + j);
+                    patch += buf;
+                }
+            out << patch;
+        }
+    }
+    const double megabytes = double(std::filesystem::file_size(path)) / 1e6;
+    bool refused = false;
+    for (auto _ : state) {
+        try {
+            (void)pw::loadBpt(path);
+        } catch (const pw::InputError&) {
+            refused = true;
+        }
+    }
+    std::filesystem::remove(path);
+    if (!refused) state.SkipWithError("a million-patch .bpt was not refused");
+    state.counters["file_MB"] = megabytes;
+}
+BENCHMARK(BM_RefuseMillionPatchBpt)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -14,7 +14,9 @@
 #include <random>
 #include <string>
 
+#include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
+#include "core/io/document_io.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;
@@ -80,5 +82,35 @@ TEST(AtomicSave, KilledInTheMiddleOfASaveLeavesTheOldFileIntact) {
     EXPECT_GT(intact, 0);
     std::printf("atomic save: %.0f ms per save; 16 kills: %d left the old file, %d the new one, %d interrupted a save\n", saveUs / 1000.0,
                 intact, replaced, interrupted);
+    fs::remove_all(dir);
+}
+
+// A document the program writes is read back through its reader before it replaces anything
+// (issue 44): a write that does not read back is refused naming the reason, the old file stays and
+// no temporary file is left. Saving a document through the formats' table reads it back for real.
+TEST(AtomicSave, AWriteThatDoesNotReadBackReplacesNothing) {
+    const fs::path dir = pw::test::freshTempDir("read-back");
+    const fs::path target = dir / "doc.patchwork";
+    pw::writeFileAtomic(target, "old");
+    fs::path seen;
+    try {
+        pw::writeFileAtomic(target, "new", [&](const fs::path& staged) {
+            seen = staged;
+            EXPECT_EQ(pw::test::readBytes(staged), "new");  // the staged file, complete, not yet in place
+            throw pw::InputError(target.string(), "no patches", 3);
+        });
+        FAIL() << "a write that does not read back was accepted";
+    } catch (const pw::OutputError& e) {
+        EXPECT_NE(std::string(e.what()).find("does not read back (no patches at line 3)"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(seen.empty());
+    EXPECT_EQ(pw::test::readBytes(target), "old");
+    EXPECT_EQ(temporaries(dir), 0);
+
+    const pw::Document teapot = pw::builtinTeapot();
+    for (const char* name : {"t.patchwork", "t.bpt", "t.glb", "t.gltf"}) {
+        pw::saveDocument(teapot, dir / name);
+        EXPECT_EQ(pw::loadDocument(dir / name).patches.size(), teapot.patches.size()) << name;
+    }
     fs::remove_all(dir);
 }

@@ -257,7 +257,7 @@ TEST(BadInput, DirectoryMissingFileAndUnknownExtension) {
 TEST(BadInput, HugeClaimedCountOnAShortFileIsCheap) {
     // A count within the limit but far beyond the data must fail at the end of the file, not
     // allocate for the claim.
-    std::string text = "999999\n3 3\n";
+    std::string text = "200000\n3 3\n";
     for (int k = 0; k < 16; ++k) text += "0 0 0\n";
     try {
         parseBpt(text, "claim.bpt");
@@ -265,6 +265,40 @@ TEST(BadInput, HugeClaimedCountOnAShortFileIsCheap) {
     } catch (const InputError& e) {
         EXPECT_EQ(e.line(), 19);
     }
+}
+
+// A count whose points exceed the limit (each .bpt patch lists its own 16) is refused at line 1,
+// from the file's first bytes, whatever follows (issue 44: a million identical patches ran 30 s
+// into bad_alloc).
+TEST(BadInput, BptCountBeyondThePointLimitIsRefusedAtLineOne) {
+    const auto dir = test::freshTempDir("bpt-count");
+    std::string text = "300000\n3 3\n";
+    for (int k = 0; k < 16; ++k) text += "0 0 0\n";
+    std::ofstream(dir / "many.bpt", std::ios::binary) << text;
+    try {
+        loadBpt(dir / "many.bpt");
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.line(), 1);
+        EXPECT_NE(e.reason().find("4800000 control points; the limit is 4000000"), std::string::npos) << e.reason();
+    }
+    std::filesystem::remove_all(dir);
+}
+
+// Stacked copies of one patch share every edge: no pair is joined (n copies would give n² joins)
+// and the reader says so.
+TEST(BadInput, EdgesSharedByMoreThanTwoPatchesAreLeftUnjoinedWithANote) {
+    std::string text = "300\n";
+    for (int p = 0; p < 300; ++p) {
+        text += "3 3\n";
+        for (int k = 0; k < 16; ++k) text += std::to_string(k % 4) + " " + std::to_string(k / 4) + " 0\n";
+    }
+    std::vector<std::string> notes;
+    const Document doc = parseBpt(text, "stack.bpt", &notes);
+    EXPECT_EQ(doc.patches.size(), 300u);
+    EXPECT_TRUE(doc.joins.empty());
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_NE(notes[0].find("4 edges are shared by more than two patches"), std::string::npos) << notes[0];
 }
 
 // ---------------------------------------------------------------------------------------------

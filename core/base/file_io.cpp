@@ -148,9 +148,19 @@ void OutputBatch::commit() {
     staged_.clear();
 }
 
-void writeFileAtomic(const std::filesystem::path& path, std::string_view data) {
+void writeFileAtomic(const std::filesystem::path& path, std::string_view data,
+                     const std::function<void(const std::filesystem::path& staged)>& readBack) {
     OutputBatch batch;
     batch.stage(path, data);
+    if (readBack) {
+        try {
+            readBack(batch.lastStaged());
+        } catch (const InputError& e) {
+            throw OutputError(path.string(), "written, but it does not read back (" + e.reason() +
+                                                 (e.line() > 0 ? " at line " + std::to_string(e.line()) : "") +
+                                                 (e.field().empty() ? "" : " in " + e.field()) + "); nothing was replaced");
+        }
+    }
     batch.commit();
 }
 

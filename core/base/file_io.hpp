@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -38,6 +39,8 @@ public:
     OutputBatch& operator=(const OutputBatch&) = delete;
     ~OutputBatch();
     void stage(const std::filesystem::path& path, std::string_view data);
+    // The temporary file the last stage() wrote (to read it back before commit()).
+    const std::filesystem::path& lastStaged() const { return staged_.back().temp; }
     void commit();
 
 private:
@@ -49,7 +52,12 @@ private:
 };
 
 // One output through an OutputBatch: whatever was at `path` stays untouched on failure.
-void writeFileAtomic(const std::filesystem::path& path, std::string_view data);
+// `readBack`, when given, reads the staged file (complete, synced, not yet in place) back through
+// the format's own reader before it replaces anything: an InputError from it becomes an OutputError
+// ("written, but it does not read back: …") and nothing is replaced, so a document the program
+// writes always reopens (issue 44).
+void writeFileAtomic(const std::filesystem::path& path, std::string_view data,
+                     const std::function<void(const std::filesystem::path& staged)>& readBack = {});
 
 // Lower-case extension with the dot, e.g. ".glb".
 std::string lowerExtension(const std::filesystem::path& path);

@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -80,11 +81,12 @@ bool parseCount(std::string_view token, uint64_t& value) {
 
 class BptParser {
 public:
-    BptParser(std::string_view text, const std::string& source) : reader_(text), source_(source) {}
+    BptParser(std::string_view text, const std::string& source, std::vector<std::string>* notes)
+        : reader_(text), source_(source), notes_(notes) {}
 
-    Document parse() {
+    // Line 1: the patch count, checked against the limits.
+    uint64_t header() {
         std::string_view line;
-        // Line 1: the patch count.
         if (!nextContentLine(line)) fail(1, "empty file; expected the number of patches on the first line");
         const auto countTok = tokens(line);
         uint64_t count = 0;
@@ -96,6 +98,18 @@ public:
         }
         if (count > limits::kMaxPatches)
             fail(reader_.lineNo(), std::to_string(count) + " patches; the limit is " + std::to_string(limits::kMaxPatches));
+        // Every patch lists its own 16 points: the count alone says what the file will cost, so a
+        // file beyond the point limit is refused here, before the rest is read (issue 44).
+        if (count * 16 > limits::kMaxPoints)
+            fail(reader_.lineNo(), std::to_string(count) + " patches list " + std::to_string(count * 16) +
+                                       " control points; the limit is " + std::to_string(limits::kMaxPoints) + " (" +
+                                       std::to_string(limits::kMaxPoints / 16) + " patches in a .bpt)");
+        return count;
+    }
+
+    Document parse() {
+        std::string_view line;
+        const uint64_t count = header();
 
         Document doc;
         doc.name = std::filesystem::path(source_).stem().string();
@@ -130,14 +144,18 @@ public:
         mergeCoincidentPoints(doc);
         if (doc.points.size() > limits::kMaxPoints)
             fail(0, std::to_string(doc.points.size()) + " distinct points; the limit is " + std::to_string(limits::kMaxPoints));
-        doc.joins = detectJoins(doc);
+        size_t nonManifold = 0;
+        doc.joins = detectJoins(doc, {}, &nonManifold);
         // The format has no orientation convention: the teacup comes inside out. After a flip the
         // pool is renumbered by first use and the joins detected afresh, so that writing and
         // reading the file back gives the same document.
         if (orientOutward(doc)) {
             renumberPoolByFirstUse(doc);
-            doc.joins = detectJoins(doc);
+            doc.joins = detectJoins(doc, {}, &nonManifold);
         }
+        if (nonManifold > 0 && notes_)
+            notes_->push_back(std::to_string(nonManifold) + (nonManifold == 1 ? " edge is" : " edges are") +
+                              " shared by more than two patches (stacked copies or a fin) and left unjoined");
         frameCamera(doc);
         return doc;
     }
@@ -205,6 +223,7 @@ private:
 
     LineReader reader_;
     std::string source_;
+    std::vector<std::string>* notes_;
 };
 
 void appendNumber(std::string& out, double v) {
@@ -215,9 +234,24 @@ void appendNumber(std::string& out, double v) {
 
 }  // namespace
 
-Document parseBpt(std::string_view text, const std::string& sourceName) { return BptParser(text, sourceName).parse(); }
+Document parseBpt(std::string_view text, const std::string& sourceName, std::vector<std::string>* notes) {
+    return BptParser(text, sourceName, notes).parse();
+}
 
-Document loadBpt(const std::filesystem::path& path) { return parseBpt(readFileLimited(path), path.string()); }
+Document loadBpt(const std::filesystem::path& path, std::vector<std::string>* notes) {
+    // The header first, from the file's first lines: a count beyond the limits is refused before
+    // the whole file (up to limits::kMaxFileBytes) is read.
+    if (std::ifstream in{path, std::ios::binary}) {
+        std::string head(4096, '\0');
+        in.read(head.data(), std::streamsize(head.size()));
+        head.resize(size_t(in.gcount()));
+        if (const size_t lastLine = head.rfind('\n'); lastLine != std::string::npos) {
+            head.resize(lastLine + 1);
+            if (head.find_first_not_of(" \t\r\n") != std::string::npos) (void)BptParser(head, path.string(), nullptr).header();
+        }
+    }
+    return parseBpt(readFileLimited(path), path.string(), notes);
+}
 
 std::string formatBpt(const Document& doc) {
     if (!doc.triangles.empty())

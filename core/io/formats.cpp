@@ -37,12 +37,19 @@ std::vector<FileFormat> makeFormats() {
                  .document = true,
                  .keepsEverything = true,
                  .load = [](const std::filesystem::path& p, LoadReport*) { return parseDocument(readFileLimited(p), p.string()); },
-                 .save = [](const Document& d, const std::filesystem::path& p, const ExportOptions&,
-                            TriangleMesh*) { writeFileAtomic(p, serializeDocument(d)); }});
+                 .save =
+                     [](const Document& d, const std::filesystem::path& p, const ExportOptions&, TriangleMesh*) {
+                         const std::string text = serializeDocument(d);
+                         // Read back, it must be the same document: written again, the same bytes.
+                         writeFileAtomic(p, text, [&](const std::filesystem::path& staged) {
+                             if (serializeDocument(parseDocument(readFileLimited(staged), p.string())) != text)
+                                 throw InputError(p.string(), "it reads back as a different document");
+                         });
+                     }});
     f.push_back({.name = "Newell tea-set patches",
                  .extensions = {".bpt"},
                  .document = true,
-                 .load = [](const std::filesystem::path& p, LoadReport*) { return loadBpt(p); },
+                 .load = [](const std::filesystem::path& p, LoadReport* r) { return loadBpt(p, r ? &r->notes : nullptr); },
                  .save =
                      [](const Document& d, const std::filesystem::path& p, const ExportOptions&, TriangleMesh*) {
                          std::string text;
@@ -52,7 +59,11 @@ std::vector<FileFormat> makeFormats() {
                              // Not representable in the format: a problem with the output the user asked for.
                              throw OutputError(p.string(), (e.field().empty() ? "" : e.field() + ": ") + e.reason());
                          }
-                         writeFileAtomic(p, text);
+                         // Read back: the same patches (the reader orients them and detects the joins).
+                         writeFileAtomic(p, text, [&](const std::filesystem::path& staged) {
+                             if (parseBpt(readFileLimited(staged), p.string()).patches.size() != std::stoull(text))
+                                 throw InputError(p.string(), "it reads back with a different number of patches");
+                         });
                      }});
     f.push_back({.name = "glTF 2.0",
                  .extensions = {".gltf"},

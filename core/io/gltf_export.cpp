@@ -4,6 +4,8 @@
 // unlit); the editable document in asset.extras.patchwork and the options in patchworkExport.
 #include "core/io/gltf_export.hpp"
 
+#include "core/io/gltf_import.hpp"
+
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -20,6 +22,7 @@
 #include "core/base/limits.hpp"
 #include "core/eval/bezier_curve.hpp"
 #include "core/io/glb_container.hpp"
+#include "core/io/gltf_import.hpp"
 #include "core/io/patchwork_format.hpp"
 #include "core/mesh/mesh_split.hpp"
 #include "core/mesh/mesh_tessellate.hpp"
@@ -389,7 +392,19 @@ GltfExportStats exportGltfWithStats(const Document& doc, const std::filesystem::
         throw OutputError(path.string(), "not enough memory for the mesh at level " +
                                              std::to_string(resolveExportLevel(doc, options.level)) + "; use a lower level");
     }
-    writeFileAtomic(path, bytes);
+    // Read back through the glTF reader: the same patches, surfaces, triangles, curves and joins (a
+    // file beyond the read limit is an export for other programs only: not read back).
+    auto readBack = [&](const std::filesystem::path& staged) {
+        const Document back = parsePatchworkGltf(readFileLimited(staged), path.string());
+        if (back.patches.size() != doc.patches.size() || back.surfaces.size() != doc.surfaces.size() ||
+            back.triangles.size() != doc.triangles.size() || back.curves.size() != doc.curves.size() ||
+            back.joins.size() != doc.joins.size())
+            throw InputError(path.string(), "it reads back with different patches or joins");
+    };
+    if (bytes.size() <= limits::kMaxFileBytes)
+        writeFileAtomic(path, bytes, readBack);
+    else
+        writeFileAtomic(path, bytes);
     return stats;
 }
 

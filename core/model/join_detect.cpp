@@ -79,7 +79,7 @@ void classify(const Document& doc, const Patch& A, const Patch& B, Join& j, doub
 
 }  // namespace
 
-std::vector<Join> detectJoins(const Document& doc, JoinDetectOptions options) {
+std::vector<Join> detectJoins(const Document& doc, JoinDetectOptions options, size_t* nonManifoldEdges) {
     // Group non-degenerate edges by their index sequence, canonically oriented (the lexicographically
     // smaller of forward and reversed).
     std::map<std::array<uint32_t, 4>, std::vector<EdgeRef>> groups;
@@ -99,24 +99,26 @@ std::vector<Join> detectJoins(const Document& doc, JoinDetectOptions options) {
 
     std::vector<Join> joins;
     const double tol = options.relativeTolerance * modelSize(doc);
+    if (nonManifoldEdges) *nonManifoldEdges = 0;
     for (const auto& [key, refs] : groups) {
-        for (size_t x = 0; x < refs.size(); ++x) {
-            for (size_t y = x + 1; y < refs.size(); ++y) {
-                const EdgeRef* ra = &refs[x];
-                const EdgeRef* rb = &refs[y];
-                if (ra->patch == rb->patch) continue;  // a patch closed onto itself
-                if (ra->patch > rb->patch) std::swap(ra, rb);
-                Join j;
-                j.patchA = ra->patch;
-                j.edgeA = ra->edge;
-                j.patchB = rb->patch;
-                j.edgeB = rb->edge;
-                j.reversed = ra->idx != rb->idx;
-                // Check every pool-index-matched tangent row for C1/G1.
-                classify(doc, doc.patches[j.patchA], doc.patches[j.patchB], j, tol, options);
-                joins.push_back(j);
-            }
+        if (refs.size() > 2) {
+            if (nonManifoldEdges) ++*nonManifoldEdges;
+            continue;
         }
+        if (refs.size() != 2) continue;
+        const EdgeRef* ra = &refs[0];
+        const EdgeRef* rb = &refs[1];
+        if (ra->patch == rb->patch) continue;  // a patch closed onto itself
+        if (ra->patch > rb->patch) std::swap(ra, rb);
+        Join j;
+        j.patchA = ra->patch;
+        j.edgeA = ra->edge;
+        j.patchB = rb->patch;
+        j.edgeB = rb->edge;
+        j.reversed = ra->idx != rb->idx;
+        // Check every pool-index-matched tangent row for C1/G1.
+        classify(doc, doc.patches[j.patchA], doc.patches[j.patchB], j, tol, options);
+        joins.push_back(j);
     }
     std::sort(joins.begin(), joins.end(), [](const Join& l, const Join& r) {
         if (l.patchA != r.patchA) return l.patchA < r.patchA;

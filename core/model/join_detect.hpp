@@ -15,7 +15,10 @@ struct JoinDetectOptions {
     double c1RatioTolerance = 1e-4;   // |alpha - 1| at most this (and |b_k - a_k| within tolerance) is C1
 };
 
-std::vector<Join> detectJoins(const Document& doc, JoinDetectOptions options = {});
+// An edge whose pool indices more than two patch sides share (a fin, or stacked copies of one
+// patch) is non-manifold: no pair of them is joined (any two could be, so none is; and n stacked
+// copies would otherwise give n² joins). `nonManifoldEdges`, when given, receives their number.
+std::vector<Join> detectJoins(const Document& doc, JoinDetectOptions options = {}, size_t* nonManifoldEdges = nullptr);
 
 // Pool entries with bit-identical coordinates (-0.0 counting as +0.0) merged into one, keeping the
 // first; patch and surface indices rewritten. With a tolerance > 0, a point within that distance of
