@@ -105,6 +105,37 @@ TEST(EditInvariants, AnEditThatLeavesAJoinOffIsRefusedNamingIt) {
     EXPECT_NE(s.history().undoLabel(), "Nudge");
 }
 
+// The one place every edit passes (edit_invariants): an edit that brings in or changes a join and
+// folds a patch is refused, whatever operation made it, naming the folded patch; the same fold
+// without a join change is the user's own shaping and is kept.
+TEST(EditInvariants, AnEditThatHoldsAJoinByFoldingIsRefusedWhateverMadeIt) {
+    EditSession s;
+    test::runEditScript(s, "add-patch; add-patch");
+    ASSERT_TRUE(s.doc.joins.empty());
+    // Patch 1 moved so that its u0 edge lies on patch 0's u1 edge.
+    const Vec3 shift = s.doc.points[s.doc.patches[0].idx[size_t(edgeSlot(Edge::U1, 0))]] -
+                       s.doc.points[s.doc.patches[1].idx[size_t(edgeSlot(Edge::U0, 0))]];
+    s.apply("Place", [&](Document& d) {
+        for (uint32_t i : d.patches[1].idx) d.points[i] += shift;
+    });
+    const Document before = s.doc;
+    // Patch 1's tangent at its far corner collapsed (point 14 onto corner 15): no tangent plane there.
+    auto fold = [](Document& d) { d.points[d.patches[1].idx[14]] = d.points[d.patches[1].idx[15]]; };
+    try {
+        s.apply("Raw join", [&](Document& d) {
+            fold(d);
+            d.joins.push_back(Join{0, Edge::U1, 1, Edge::U0, false, Continuity::C0});
+        });
+        FAIL() << "a join held by folding was accepted";
+    } catch (const EditError& e) {
+        EXPECT_NE(std::string(e.what()).find("only by folding patch 1"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(s.doc, before);
+    s.apply("Shape", fold);  // no join changed: the user's own shaping, accepted
+    EXPECT_EQ(s.history().undoLabel(), "Shape");
+    EXPECT_GT(patchShape(s.doc, 1).collapsedCorners, 0);
+}
+
 TEST(Joins, ContinuityChangesInPlaceAndARefusedChangeKeepsTheJoin) {
     EditSession s;
     test::runEditScript(s, "add-patch; extrude u1; select patch 1; move 0 0 0.2");

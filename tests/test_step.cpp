@@ -543,6 +543,18 @@ TEST(StepImport, HostileValuesAreRefusedBeforeOpenCascadeAndNoImportOutlivesItsB
         EXPECT_NE(std::string(e.what()).find("1.0E999 is not finite"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("directory entry"), std::string::npos) << e.what();
     }
+    // A bare word outside a Hollerith string is no IGES value (OpenCASCADE read such a file as if
+    // the entity were not there; found by the hostile suite).
+    std::string word = pw::test::readBytes(dir / "pot.igs");
+    const std::string inf = std::string("128,inf;") + std::string(64 - 8, ' ');
+    word.replace(p, 64, inf);
+    std::ofstream(dir / "word.igs", std::ios::binary) << word;
+    try {
+        pw::importCadSurfaces(dir / "word.igs");
+        ADD_FAILURE() << "read";
+    } catch (const pw::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("'inf' is not an IGES value"), std::string::npos) << e.what();
+    }
     // Whatever OpenCASCADE does past its budget (here made tiny), the import ends with an error.
     ::setenv("PATCHWORK_CAD_SECONDS", "0.001", 1);
     try {

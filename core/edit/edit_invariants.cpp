@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <tuple>
+#include <vector>
 
 #include "core/base/errors.hpp"
+#include "core/eval/fold_check.hpp"
 #include "core/model/join_detect.hpp"
 #include "core/model/topology.hpp"
 #include "core/solve/constraint_solver.hpp"
@@ -39,6 +42,33 @@ void checkJoins(const Document& before, const Document& after, bool detected) {
                     "); change or unjoin the conflicting join first");
 }
 
+// Whether `after` holds a join `before` did not (a new one, or one whose continuity changed). Most
+// edits leave the joins as they were (one comparison); otherwise n log n.
+bool joinsAddedOrChanged(const Document& before, const Document& after) {
+    if (before.joins == after.joins) return false;
+    using Key = std::tuple<uint32_t, Edge, uint32_t, Edge, Continuity>;
+    auto key = [](const Join& j) { return Key{j.patchA, j.edgeA, j.patchB, j.edgeB, j.continuity}; };
+    std::vector<Key> had;
+    had.reserve(before.joins.size());
+    for (const Join& j : before.joins) had.push_back(key(j));
+    std::sort(had.begin(), had.end());
+    return std::any_of(after.joins.begin(), after.joins.end(),
+                       [&](const Join& j) { return !std::binary_search(had.begin(), had.end(), key(j)); });
+}
+
+// A join is never "held" by folding: an edit that brings in or changes joins may not turn part of a
+// patch over or collapse a tangent plane that was not so before. Checked where every patch keeps
+// its place (joining, changing continuity, corners, any edit that reshapes without adding or
+// removing patches): a split or a fill makes new patches whose shapes have no "before" (a half of a
+// cap's patch at its pole samples differently from the whole), and they check their own. The
+// operations that join name the cause more precisely first (join_ops, corner_ops, triangle_joins).
+void checkFolds(const Document& before, const Document& after) {
+    if (after.patches.size() != before.patches.size() || after.triangles.size() != before.triangles.size()) return;
+    if (!joinsAddedOrChanged(before, after)) return;
+    if (const std::string fold = foldMadeBy(before, after); !fold.empty())
+        throw EditError("refused: its joins would hold only by folding " + fold + "; join C0 or reshape the patches first");
+}
+
 }  // namespace
 
 double joinTolerance(const Document& doc) { return 1e-6 * modelSize(doc) + 1e-12; }
@@ -49,6 +79,9 @@ std::string describeJoin(const Document& doc, size_t j) {
            std::string(continuityName(jn.continuity)) + ")";
 }
 
-void checkEditInvariants(const Document& before, const Document& after, bool detected) { checkJoins(before, after, detected); }
+void checkEditInvariants(const Document& before, const Document& after, bool detected) {
+    checkJoins(before, after, detected);
+    checkFolds(before, after);
+}
 
 }  // namespace pw

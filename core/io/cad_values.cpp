@@ -138,6 +138,10 @@ void checkIges(const std::string& file, std::string_view t) {
                 checkNumber(file, p.substr(i, k - i), entity, line);
                 countValue(file, values, entity, line);
                 i = k;
+            } else if (std::isalpha(static_cast<unsigned char>(c))) {  // outside a Hollerith string: no IGES value
+                size_t k = i + 1;
+                while (k < p.size() && (std::isalnum(static_cast<unsigned char>(p[k])) || p[k] == '_')) ++k;
+                throw InputError(file, entity + ": '" + printable(std::string(p.substr(i, k - i))) + "' is not an IGES value", line);
             } else {
                 ++i;
             }
