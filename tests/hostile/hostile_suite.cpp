@@ -52,6 +52,22 @@ struct Run {
     std::string output;  // stdout and stderr
 };
 
+// The resident memory of a running process (VmRSS, kB; 0 once it has exited, or before it runs
+// `bin`), sampled while it runs (the largest sample is reported): wait4's ru_maxrss and VmHWM would
+// also count this process's memory, which the fork copies until the exec.
+long peakKb(pid_t pid, const fs::path& bin) {
+    std::error_code ec;
+    if (fs::read_symlink("/proc/" + std::to_string(pid) + "/exe", ec) != fs::canonical(bin, ec)) return 0;
+    std::FILE* f = std::fopen(("/proc/" + std::to_string(pid) + "/status").c_str(), "r");
+    if (!f) return 0;
+    long kb = 0;
+    char line[256];
+    while (std::fgets(line, sizeof line, f))
+        if (std::sscanf(line, "VmRSS: %ld kB", &kb) == 1) break;
+    std::fclose(f);
+    return kb;
+}
+
 // Runs argv with stdout and stderr into `log`, under the limits; waits at most `seconds`.
 Run runLimited(const std::vector<std::string>& argv, const fs::path& log, const Options& opt) {
     Run r;
@@ -70,10 +86,14 @@ Run runLimited(const std::vector<std::string>& argv, const fs::path& log, const 
         ::_exit(127);
     }
     int status = 0;
-    rusage usage{};
     for (;;) {
-        const pid_t done = ::wait4(pid, &status, WNOHANG, &usage);
-        if (done == pid) break;
+        // Before reaping, while /proc still shows the process (a zombie shows no memory).
+        r.maxRssKb = std::max(r.maxRssKb, peakKb(pid, argv[0]));
+        siginfo_t info{};
+        if (::waitid(P_PID, id_t(pid), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == pid) {
+            ::waitpid(pid, &status, 0);
+            break;
+        }
         if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > opt.seconds && !r.timedOut) {
             r.timedOut = true;
             ::kill(pid, SIGKILL);
@@ -81,7 +101,6 @@ Run runLimited(const std::vector<std::string>& argv, const fs::path& log, const 
         std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    r.maxRssKb = usage.ru_maxrss;
     if (WIFEXITED(status)) r.exitCode = WEXITSTATUS(status);
     if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
     try {
