@@ -3,8 +3,10 @@
 // drawn as a plain mesh. Reports medians of wall, submit+wait and GPU times, triangles per frame,
 // million triangles per second and the tessellated/plain throughput ratio.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iostream>
@@ -15,6 +17,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/displacement_args.hpp"
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
 #include "core/construct/model_builders.hpp"
@@ -41,7 +44,7 @@ struct BenchArgs {
     bool validation = false;
     bool msaa = false;
     bool editor = false;            // the editor's frame while dragging, against a bare render
-    std::string file;               // editor: the document (default: the built-in teapot)
+    std::string file;               // the document: offscreen with its own settings, or the editor's (default: the teapot)
     float level = 16.0f;            // editor: uniform level
     std::string size = "1280x720";  // editor: window size
 };
@@ -55,6 +58,7 @@ struct Scene {
     bool bigOnly = false;    // only on real GPUs unless named
     std::string comparedTo;  // adaptive: the uniform scene with the same view
     bool terrain = false;    // the terrain's own table (runTerrain), only when named
+    std::string path;        // --file: a document measured with its own settings (levels, adaptivity, camera, display)
 };
 
 std::vector<Scene> allScenes() {
@@ -184,6 +188,17 @@ int runBench(const BenchArgs& a) {
     if (a.frames < 1 || a.frames > 100000) throw InputError("bench", "--frames: must be from 1 to 100000");
     if (a.editor) return runEditorBench(a);
     std::vector<Scene> scenes = allScenes();
+    if (!a.file.empty()) {  // the document alone, as it opens (read before the device starts: bad files fail fast)
+        if (!a.scenes.empty()) throw InputError("bench", "--file and --scene: give one or the other");
+        const Document doc = loadDocument(a.file);
+        (void)loadDocumentHeightMap(doc, a.file);
+        Scene sc;
+        sc.name = std::filesystem::path(a.file).filename().string();
+        sc.make = [doc] { return doc; };
+        sc.path = a.file;
+        sc.adaptive = doc.tess.adaptive != AdaptiveMode::None;
+        scenes = {sc};
+    }
     for (const std::string& n : a.scenes)
         if (std::none_of(scenes.begin(), scenes.end(), [&](const Scene& s) { return s.name == n; })) {
             std::string names;
@@ -219,12 +234,52 @@ int runBench(const BenchArgs& a) {
             continue;
         }
         const Document doc = sc.make();
-        renderer.setDocument(doc);
+        if (!sc.path.empty())
+            renderer.setDocument(doc, loadDocumentHeightMap(doc, sc.path));
+        else
+            renderer.setDocument(doc);
         if (!warmed) {  // every pipeline variant once, so no measured frame pays for shader JIT
             renderer.warmUp();
             warmed = true;
         }
         render::RenderOptions o = render::optionsFromDocument(doc);
+        // A document of the user's: its own levels, adaptivity, culling, display and camera; against
+        // a plain mesh of the same triangles where its levels are uniform.
+        const float uniform = doc.tess.outer[0];
+        const bool uniformLevels = std::all_of(doc.tess.outer.begin(), doc.tess.outer.end(), [&](float l) { return l == uniform; }) &&
+                                   std::all_of(doc.tess.inner.begin(), doc.tess.inner.end(), [&](float l) { return l == uniform; }) &&
+                                   doc.tess.spacing == Spacing::Equal && uniform == std::floor(uniform) && !doc.displacement.active();
+        if (!sc.path.empty()) {
+            std::vector<render::RenderOptions> variants{o};
+            if (!sc.adaptive && uniformLevels) {
+                renderer.setPlainMesh(tessellateDocument(doc, int(uniform)));
+                variants.push_back(o);
+                variants.back().plainMesh = true;
+            }
+            const std::vector<Measure> m = measureInterleaved(renderer, variants, a.frames);
+            const Measure& t = m[0];
+            const double mtri = t.gpu > 0 ? double(t.triangles) / (t.gpu * 1000.0) : 0.0;
+            nlohmann::json j{{"scene", sc.name},        {"file", sc.path},          {"patches", expandPatches(doc).size()},
+                             {"adaptive", sc.adaptive}, {"wall_ms", t.wall},        {"submit_wait_ms", t.submit},
+                             {"gpu_ms", t.gpu},         {"triangles", t.triangles}, {"mtri_per_s", mtri},
+                             {"draws", t.draws}};
+            if (m.size() > 1) {
+                const double plainMtri = m[1].gpu > 0 ? double(m[1].triangles) / (m[1].gpu * 1000.0) : 0.0;
+                j["plain"] = {{"gpu_ms", m[1].gpu}, {"triangles", m[1].triangles}, {"mtri_per_s", plainMtri}};
+                j["throughput_ratio_tess_over_plain"] = plainMtri > 0 ? mtri / plainMtri : 0.0;
+                std::printf("%-20s %9.2f %9.2f %9.2f %11llu %8.2f %7u | %9.2f %8.2f %7.2f\n", sc.name.c_str(), t.wall, t.submit, t.gpu,
+                            (unsigned long long)t.triangles, mtri, t.draws, m[1].gpu, plainMtri, plainMtri > 0 ? mtri / plainMtri : 0.0);
+                renderer.setPlainMesh(TriangleMesh{});
+            } else {
+                std::printf(
+                    "%-20s %9.2f %9.2f %9.2f %11llu %8.2f %7u | %9s %8s %7s  (its own %s levels: no plain mesh of the same triangles)\n",
+                    sc.name.c_str(), t.wall, t.submit, t.gpu, (unsigned long long)t.triangles, mtri, t.draws, "-", "-", "-",
+                    sc.adaptive ? "adaptive" : "non-uniform");
+            }
+            out.push_back(j);
+            std::fflush(stdout);
+            continue;
+        }
         o.display.showGrid = sc.grid;
         o.display.showWireframe = o.display.showNormals = o.display.showBoundaries = false;
         o.display.shading = ShadingMode::Lit;
@@ -306,7 +361,9 @@ void registerBenchCommand(CLI::App& app, Action& run) {
     cmd->add_flag("--editor", a->editor,
                   "Instead: the editor's frame time while a control point is dragged (G grab, the mouse moving every "
                   "frame) against a bare offscreen render of the same view; needs a display (Xvfb will do)");
-    cmd->add_option("--file", a->file, "With --editor: the document (default: the built-in teapot)");
+    cmd->add_option("--file", a->file,
+                    "A document measured offscreen with its own settings (levels, adaptivity, culling, display, camera), against a "
+                    "plain mesh where its levels are uniform; with --editor: the document the editor opens (default: the teapot)");
     cmd->add_option("--level", a->level, "With --editor: the uniform tessellation level (default 16)")->check(CLI::Range(1.0f, 64.0f));
     cmd->add_option("--size", a->size, "With --editor: the window size, WIDTHxHEIGHT (default 1280x720)");
 }

@@ -92,5 +92,42 @@ TEST(RenderCli, MissingInputFileIsAnInputError) {
     EXPECT_EQ(r.exitCode, 2) << r.output;
 }
 
+// `bench --file`: a user's own document measured with its own settings (issue 43, item 7): its
+// levels, not the bench's; against a plain mesh of the same triangles where they are uniform, and
+// alone where they are adaptive.
+TEST(RenderCli, BenchMeasuresADocumentAtItsOwnSettings) {
+    const auto dir = freshTempDir("bench-file");
+    ASSERT_EQ(runCommand(bin() + " convert " + (dataDir() / "teapot.bpt").string() + " " + (dir / "pot.patchwork").string()).exitCode, 0);
+    nlohmann::json doc = nlohmann::json::parse(readBytes(dir / "pot.patchwork"));
+    doc["tess"]["outer"] = {5.0, 5.0, 5.0, 5.0};
+    doc["tess"]["inner"] = {5.0, 5.0};
+    std::ofstream(dir / "five.patchwork") << doc.dump();
+    doc["tess"]["adaptive"] = "screen";
+    std::ofstream(dir / "adaptive.patchwork") << doc.dump();
+    for (const char* name : {"five.patchwork", "adaptive.patchwork"}) {
+        const auto json = dir / (std::string(name) + ".json");
+        const RunResult r = runCommand("PATCHWORK_VALIDATION=1 " + bin() + " bench --frames 2 --validation --file " +
+                                       (dir / name).string() + " --json " + json.string());
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        EXPECT_NE(r.output.find(name), std::string::npos) << r.output;
+        const nlohmann::json j = nlohmann::json::parse(readBytes(json));
+        ASSERT_EQ(j["scenes"].size(), 1u) << j.dump();
+        const nlohmann::json& sc = j["scenes"][0];
+        EXPECT_EQ(sc["patches"].get<int>(), 32);
+        if (std::string(name) == "five.patchwork") {
+            EXPECT_EQ(sc["triangles"].get<uint64_t>(), 32u * 2 * 5 * 5);  // its own level 5, not the bench's 16
+            // The plain mesh leaves out the lid's zero-area triangles at the poles (1 560 of 1 600).
+            EXPECT_LE(sc["plain"]["triangles"].get<uint64_t>(), sc["triangles"].get<uint64_t>());
+            EXPECT_GE(sc["plain"]["triangles"].get<uint64_t>(), 32u * 2 * 5 * 5 * 95 / 100);
+        } else {
+            EXPECT_TRUE(sc["adaptive"].get<bool>());
+            EXPECT_FALSE(sc.contains("plain"));
+            EXPECT_GT(sc["triangles"].get<uint64_t>(), 0u);
+        }
+    }
+    EXPECT_EQ(runCommand(bin() + " bench --file " + (dir / "missing.patchwork").string()).exitCode, 2);
+    std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace pw::test
