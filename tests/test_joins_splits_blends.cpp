@@ -197,6 +197,17 @@ TEST(Splits, BadRingRequestsAreRefusedAndChangeNothing) {
     }
 }
 
+// Each construction's patches carry its own name (issue 40: baked blends were all "blend 0").
+TEST(Blends, TwoBlendsAreToldApartByName) {
+    EditSession s;
+    test::runEditScript(s, "add-patch; cursor 3 0 1; add-patch; cursor 0 3 1; add-patch; blend 0:u1 1:u0 G1; blend 0:v1 2:v0 G1");
+    ASSERT_EQ(s.doc.constructions.size(), 2u);
+    const std::string first = s.doc.patches[s.doc.constructions[0].patches[0]].name;
+    const std::string second = s.doc.patches[s.doc.constructions[1].patches[0]].name;
+    EXPECT_EQ(first, "blend 0");
+    EXPECT_EQ(second, "blend 2 0");
+}
+
 TEST(Blends, G1AndG2BlendsHoldWhileEitherSideMoves) {
     for (const char* cont : {"G1", "G2"}) {
         EditSession s;

@@ -153,11 +153,17 @@ size_t addConstruction(Document& doc, Construction c, const std::string& name) {
     std::vector<uint32_t> moved;
     writeNet(doc, c, net, moved);
     const uint32_t first = uint32_t(doc.patches.size());
+    // The patches carry the construction's own name: the second blend's are "blend 2 0" …, so that
+    // constructions of one kind (and their patches once baked) stay told apart.
+    std::string base = name;
+    for (int n = 2; std::any_of(doc.patches.begin(), doc.patches.end(), [&](const Patch& q) { return q.name.rfind(base + " ", 0) == 0; });
+         ++n)
+        base = name + " " + std::to_string(n);
     for (uint32_t pr = 0; pr < wr; ++pr)
         for (uint32_t pc = 0; pc < wc; ++pc) {
             Patch p;
             p.idx = window(c.grid, net.cols, pr, pc);
-            p.name = name + " " + std::to_string(pr * wc + pc);
+            p.name = base + " " + std::to_string(pr * wc + pc);
             c.patches.push_back(uint32_t(doc.patches.size()));
             doc.patches.push_back(std::move(p));
         }
