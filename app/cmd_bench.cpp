@@ -243,58 +243,33 @@ int runBench(const BenchArgs& a) {
             warmed = true;
         }
         render::RenderOptions o = render::optionsFromDocument(doc);
-        // A document of the user's: its own levels, adaptivity, culling, display and camera; against
-        // a plain mesh of the same triangles where its levels are uniform.
-        const float uniform = doc.tess.outer[0];
-        const bool uniformLevels = std::all_of(doc.tess.outer.begin(), doc.tess.outer.end(), [&](float l) { return l == uniform; }) &&
-                                   std::all_of(doc.tess.inner.begin(), doc.tess.inner.end(), [&](float l) { return l == uniform; }) &&
-                                   doc.tess.spacing == Spacing::Equal && uniform == std::floor(uniform) && !doc.displacement.active();
-        if (!sc.path.empty()) {
-            std::vector<render::RenderOptions> variants{o};
-            if (!sc.adaptive && uniformLevels) {
-                renderer.setPlainMesh(tessellateDocument(doc, int(uniform)));
-                variants.push_back(o);
-                variants.back().plainMesh = true;
-            }
-            const std::vector<Measure> m = measureInterleaved(renderer, variants, a.frames);
-            const Measure& t = m[0];
-            const double mtri = t.gpu > 0 ? double(t.triangles) / (t.gpu * 1000.0) : 0.0;
-            nlohmann::json j{{"scene", sc.name},        {"file", sc.path},          {"patches", expandPatches(doc).size()},
-                             {"adaptive", sc.adaptive}, {"wall_ms", t.wall},        {"submit_wait_ms", t.submit},
-                             {"gpu_ms", t.gpu},         {"triangles", t.triangles}, {"mtri_per_s", mtri},
-                             {"draws", t.draws}};
-            if (m.size() > 1) {
-                const double plainMtri = m[1].gpu > 0 ? double(m[1].triangles) / (m[1].gpu * 1000.0) : 0.0;
-                j["plain"] = {{"gpu_ms", m[1].gpu}, {"triangles", m[1].triangles}, {"mtri_per_s", plainMtri}};
-                j["throughput_ratio_tess_over_plain"] = plainMtri > 0 ? mtri / plainMtri : 0.0;
-                std::printf("%-20s %9.2f %9.2f %9.2f %11llu %8.2f %7u | %9.2f %8.2f %7.2f\n", sc.name.c_str(), t.wall, t.submit, t.gpu,
-                            (unsigned long long)t.triangles, mtri, t.draws, m[1].gpu, plainMtri, plainMtri > 0 ? mtri / plainMtri : 0.0);
-                renderer.setPlainMesh(TriangleMesh{});
-            } else {
-                std::printf(
-                    "%-20s %9.2f %9.2f %9.2f %11llu %8.2f %7u | %9s %8s %7s  (its own %s levels: no plain mesh of the same triangles)\n",
-                    sc.name.c_str(), t.wall, t.submit, t.gpu, (unsigned long long)t.triangles, mtri, t.draws, "-", "-", "-",
-                    sc.adaptive ? "adaptive" : "non-uniform");
-            }
-            out.push_back(j);
-            std::fflush(stdout);
-            continue;
+        const bool own = !sc.path.empty();  // --file: the document's own levels, adaptivity, culling, display and camera
+        // The same triangles as a plain pre-tessellated mesh, measured frame by frame alongside: at
+        // the scene's level, or at a document's own where its levels are one uniform integer.
+        bool plain = !sc.adaptive;
+        int plainLevel = int(sc.level);
+        if (own) {
+            const float l = doc.tess.outer[0];
+            const auto isL = [&](float x) { return x == l; };
+            plain = plain && std::all_of(doc.tess.outer.begin(), doc.tess.outer.end(), isL) &&
+                    std::all_of(doc.tess.inner.begin(), doc.tess.inner.end(), isL) && doc.tess.spacing == Spacing::Equal &&
+                    l == std::floor(l) && !doc.displacement.active();
+            plainLevel = int(l);
+        } else {
+            o.display.showGrid = sc.grid;
+            o.display.showWireframe = o.display.showNormals = o.display.showBoundaries = false;
+            o.display.shading = ShadingMode::Lit;
+            o.tess.outer = {sc.level, sc.level, sc.level, sc.level};
+            o.tess.inner = {sc.level, sc.level};
+            o.tess.spacing = Spacing::Equal;
+            o.tess.adaptive = sc.adaptive ? AdaptiveMode::ScreenSpace : AdaptiveMode::None;
+            o.tess.targetPixels = 8.0f;
+            o.tess.cullBackfaces = false;
+            o.camera = frameBounds(doc.camera, computeBounds(doc.points), double(W) / H);
         }
-        o.display.showGrid = sc.grid;
-        o.display.showWireframe = o.display.showNormals = o.display.showBoundaries = false;
-        o.display.shading = ShadingMode::Lit;
-        o.tess.outer = {sc.level, sc.level, sc.level, sc.level};
-        o.tess.inner = {sc.level, sc.level};
-        o.tess.spacing = Spacing::Equal;
-        o.tess.adaptive = sc.adaptive ? AdaptiveMode::ScreenSpace : AdaptiveMode::None;
-        o.tess.targetPixels = 8.0f;
-        o.tess.cullBackfaces = false;
-        o.camera = frameBounds(doc.camera, computeBounds(doc.points), double(W) / H);
-
-        // The same triangles as a plain pre-tessellated mesh, measured frame by frame alongside.
         std::vector<render::RenderOptions> variants{o};
-        if (!sc.adaptive) {
-            renderer.setPlainMesh(tessellateDocument(doc, int(sc.level)));
+        if (plain) {
+            renderer.setPlainMesh(tessellateDocument(doc, plainLevel));
             variants.push_back(o);
             variants.back().plainMesh = true;
         }
@@ -306,8 +281,12 @@ int runBench(const BenchArgs& a) {
                          {"wall_ms", t.wall},  {"submit_wait_ms", t.submit},
                          {"gpu_ms", t.gpu},    {"triangles", t.triangles},
                          {"mtri_per_s", mtri}, {"draws", t.draws}};
+        if (own) {
+            j["file"] = sc.path;
+            j["adaptive"] = sc.adaptive;
+        }
         double plainMs = 0, plainMtri = 0, ratio = 0;
-        if (!sc.adaptive) {
+        if (plain) {
             const Measure& pm = measured[1];
             plainMs = pm.gpu;
             plainMtri = pm.gpu > 0 ? double(pm.triangles) / (pm.gpu * 1000.0) : 0.0;
@@ -323,7 +302,12 @@ int runBench(const BenchArgs& a) {
             j["fewer_triangles_than_" + sc.comparedTo] = double(trianglesByScene[sc.comparedTo]) / double(t.triangles);
         }
         out.push_back(j);
-        if (sc.adaptive)
+        if (!plain && own)
+            std::printf(
+                "%-20s %9.2f %9.2f %9.2f %11llu %8.2f %7u | %9s %8s %7s  (its own %s levels: no plain mesh of the same triangles)\n",
+                sc.name.c_str(), t.wall, t.submit, t.gpu, (unsigned long long)t.triangles, mtri, t.draws, "-", "-", "-",
+                sc.adaptive ? "adaptive" : "non-uniform");
+        else if (!plain)
             std::printf("%-20s %9.2f %9.2f %9.2f %11llu %8.2f %7u | %9s %8s %7s  (%.1fx fewer triangles than %s)\n", sc.name.c_str(),
                         t.wall, t.submit, t.gpu, (unsigned long long)t.triangles, mtri, t.draws, "-", "-", "-",
                         trianglesByScene.count(sc.comparedTo) && t.triangles ? double(trianglesByScene[sc.comparedTo]) / t.triangles : 0.0,
