@@ -55,9 +55,9 @@ struct Run {
 // The resident memory of a running process (VmRSS, kB; 0 once it has exited, or before it runs
 // `bin`), sampled while it runs (the largest sample is reported): wait4's ru_maxrss and VmHWM would
 // also count this process's memory, which the fork copies until the exec.
-long peakKb(pid_t pid, const fs::path& bin) {
+long peakKb(pid_t pid, const fs::path& canonicalBin) {
     std::error_code ec;
-    if (fs::read_symlink("/proc/" + std::to_string(pid) + "/exe", ec) != fs::canonical(bin, ec)) return 0;
+    if (fs::read_symlink("/proc/" + std::to_string(pid) + "/exe", ec) != canonicalBin) return 0;
     std::FILE* f = std::fopen(("/proc/" + std::to_string(pid) + "/status").c_str(), "r");
     if (!f) return 0;
     long kb = 0;
@@ -88,7 +88,7 @@ Run runLimited(const std::vector<std::string>& argv, const fs::path& log, const 
     int status = 0;
     for (;;) {
         // Before reaping, while /proc still shows the process (a zombie shows no memory).
-        r.maxRssKb = std::max(r.maxRssKb, peakKb(pid, argv[0]));
+        r.maxRssKb = std::max(r.maxRssKb, peakKb(pid, opt.bin));
         siginfo_t info{};
         if (::waitid(P_PID, id_t(pid), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == pid) {
             ::waitpid(pid, &status, 0);
@@ -157,6 +157,9 @@ int main(int argc, char** argv) {
             return usage(("unknown argument " + a).c_str());
     }
     if (opt.bin.empty() || opt.repo.empty()) return usage("--bin and --repo are required");
+    std::error_code binError;
+    opt.bin = fs::canonical(opt.bin, binError);  // once: the runs' memory is sampled by comparing /proc/PID/exe with it
+    if (binError) return usage(("--bin: " + binError.message()).c_str());
     if (!(opt.seconds > 0) || opt.megabytes == 0 || opt.mutations < 0) return usage("limits must be positive");
 
     const fs::path root = opt.keep.empty() ? fs::temp_directory_path() / ("patchwork-hostile-" + std::to_string(::getpid())) : opt.keep;
