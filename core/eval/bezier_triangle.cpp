@@ -11,17 +11,17 @@ namespace pw {
 
 namespace {
 
-struct Derivs {
+struct TriDerivs {
     Vec3 p{0.0}, du{0.0}, dv{0.0};
 };
 
 // Cubic Bernstein sum for p, quadratic sums of the differences for the two derivatives.
-Derivs triEval(const Net10& net, double u, double v, double w) {
+TriDerivs triEval(const Net10& net, double u, double v, double w) {
     const double U[4] = {1.0, u, u * u, u * u * u};
     const double V[4] = {1.0, v, v * v, v * v * v};
     const double Wp[4] = {1.0, w, w * w, w * w * w};
     static const double fact[4] = {1, 1, 2, 6};
-    Derivs d;
+    TriDerivs d;
     for (int i = 0; i <= 3; ++i)
         for (int j = 0; j <= 3 - i; ++j) {
             const int k = 3 - i - j;
@@ -50,7 +50,7 @@ int triEdgeSlot(int edge, int k) { return gpu::triEdgeSlot(edge, k); }
 TriPoint evaluateTriangle(const Net10& net, double u, double v) { return evaluateTriangle(net, u, v, 1.0 - u - v); }
 
 TriPoint evaluateTriangle(const Net10& net, double u, double v, double w) {
-    const Derivs d = triEval(net, u, v, w);
+    const TriDerivs d = triEval(net, u, v, w);
     TriPoint tp;
     tp.p = d.p;
     tp.du = d.du;
@@ -67,7 +67,7 @@ Vec3 triangleNormalAt(const Net10& net, double u, double v, double w, const Vec3
     // orientation of the interior.
     const double third = 1.0 / 3.0;
     for (double s : {1e-7, 1e-5, 1e-3, 1e-2, 1e-1, 1.0}) {
-        const Derivs e = triEval(net, u + (third - u) * s, v + (third - v) * s, w + (third - w) * s);
+        const TriDerivs e = triEval(net, u + (third - u) * s, v + (third - v) * s, w + (third - w) * s);
         n = glm::cross(e.du, e.dv);
         if (!degenerateCross(n, scale2)) return n / glm::length(n);
     }

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "core/base/errors.hpp"
+#include "core/base/json_reader.hpp"
 
 namespace pw {
 
@@ -13,8 +14,7 @@ namespace {
 
 using nlohmann::json;
 
-std::string at(const std::string& path, size_t i) { return path + "[" + std::to_string(i) + "]"; }
-std::string member(const std::string& path, const char* key) { return path.empty() ? key : path + "." + key; }
+using json_reader::at;  // "path[3]" and "path.key"
 
 std::string found(const json& v) {
     std::string text = v.dump();
@@ -54,7 +54,7 @@ public:
     // obj[key] as an integer in [lo, hi]; nullptr when absent and optional.
     const json* integer(const json& obj, const char* key, const std::string& path, int64_t lo, int64_t hi, bool required = false) const {
         const auto it = obj.find(key);
-        const std::string field = member(path, key);
+        const std::string field = at(path, key);
         if (it == obj.end()) {
             if (required) fail(field, "required (glTF 2.0) but missing");
             return nullptr;
@@ -78,20 +78,20 @@ public:
     void index(const json& obj, const char* key, const std::string& path, const char* into, bool required = false) const {
         const size_t n = sizeOf(into);
         const auto it = obj.find(key);
-        if (it != obj.end() && n == 0) fail(member(path, key), std::string("refers to ") + into + ", but the file has none");
+        if (it != obj.end() && n == 0) fail(at(path, key), std::string("refers to ") + into + ", but the file has none");
         integer(obj, key, path, 0, static_cast<int64_t>(n) - 1, required);
     }
 
     void enumOf(const json& obj, const char* key, const std::string& path, std::initializer_list<int64_t> allowed, bool required) const {
         const json* v = integer(obj, key, path, INT64_MIN, INT64_MAX, required);
         if (v && std::find(allowed.begin(), allowed.end(), v->get<int64_t>()) == allowed.end())
-            fail(member(path, key), "not one of glTF 2.0's values for it, found " + found(*v));
+            fail(at(path, key), "not one of glTF 2.0's values for it, found " + found(*v));
     }
 
     void numbers(const json& obj, const char* key, const std::string& path, size_t count) const {
         const auto it = obj.find(key);
         if (it == obj.end()) return;
-        const std::string field = member(path, key);
+        const std::string field = at(path, key);
         if (!it->is_array() || (count != 0 && it->size() != count))
             fail(field, count ? "expected an array of " + std::to_string(count) + " numbers, found " + found(*it)
                               : "expected an array of numbers, found " + found(*it));
@@ -102,7 +102,7 @@ public:
     void indices(const json& obj, const char* key, const std::string& path, const char* into) const {
         const auto it = obj.find(key);
         if (it == obj.end()) return;
-        const std::string field = member(path, key);
+        const std::string field = at(path, key);
         if (!it->is_array()) fail(field, "expected an array of indices into " + std::string(into) + ", found " + found(*it));
         const int64_t n = static_cast<int64_t>(sizeOf(into));
         for (size_t i = 0; i < it->size(); ++i) checkInteger((*it)[i], at(field, i), 0, n - 1);
@@ -112,10 +112,10 @@ public:
         static const json none;
         const auto it = obj.find(key);
         if (it == obj.end()) {
-            if (required) fail(member(path, key), "required (glTF 2.0) but missing");
+            if (required) fail(at(path, key), "required (glTF 2.0) but missing");
             return none;
         }
-        if (!it->is_string()) fail(member(path, key), "expected a string, found " + found(*it));
+        if (!it->is_string()) fail(at(path, key), "expected a string, found " + found(*it));
         return *it;
     }
 

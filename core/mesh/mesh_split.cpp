@@ -12,8 +12,6 @@ namespace pw {
 
 namespace {
 
-constexpr uint32_t kNone = 0xFFFFFFFFu;
-
 uint32_t findRoot(std::vector<uint32_t>& parent, uint32_t x) {
     while (parent[x] != x) {
         parent[x] = parent[parent[x]];
@@ -55,10 +53,10 @@ std::vector<uint32_t> groupTriangles(const TriangleMesh& mesh, MeshGrouping grou
             const uint32_t a = findRoot(parent, pid[I[3 * t]]), b = findRoot(parent, pid[I[3 * t + k]]);
             if (a != b) parent[std::max(a, b)] = std::min(a, b);
         }
-    std::vector<uint32_t> number(mesh.positions.size(), kNone);
+    std::vector<uint32_t> number(mesh.positions.size(), kNoVertex);
     for (size_t t = 0; t < T; ++t) {
         uint32_t& n = number[findRoot(parent, pid[I[3 * t]])];
-        if (n == kNone) {
+        if (n == kNoVertex) {
             n = uint32_t(items.size());
             items.push_back(-1);
         }
@@ -146,7 +144,7 @@ SplitMesh splitMesh(TriangleMesh&& mesh, MeshGrouping grouping) {
     out.positions.reserve(mesh.positions.size());
     out.normals.reserve(mesh.positions.size());
     out.uvs.reserve(mesh.positions.size());
-    std::vector<uint32_t> local(mesh.positions.size(), kNone), owner(mesh.positions.size(), kNone);
+    std::vector<uint32_t> local(mesh.positions.size(), kNoVertex), owner(mesh.positions.size(), kNoVertex);
     for (size_t g = 0; g < G; ++g) {
         MeshGroup mg;
         mg.firstIndex = uint32_t(out.indices.size());

@@ -25,8 +25,6 @@ namespace pw {
 
 namespace {
 
-constexpr uint32_t kNone = 0xFFFFFFFFu;
-
 // Disjoint sets over incidences (window*4 + corner or edge); the smaller id becomes the root so
 // that the result does not depend on the order of the joins.
 struct UnionFind {
@@ -171,12 +169,12 @@ void tessellateWindows(const Document& doc, const std::vector<PatchInstance>& wi
             surfIdsTotal += static_cast<size_t>(g.gridRows) * g.gridCols;
         }
     }
-    std::vector<uint32_t> surfIds(surfIdsTotal, kNone);
+    std::vector<uint32_t> surfIds(surfIdsTotal, kNoVertex);
 
     // Boundary vertices of Bézier windows: a small table of "ordinals" keyed by the union-find root
     // (corners) or by root and canonical k (edge interiors). Normals are summed in double.
-    std::vector<uint32_t> cornerOrd(W * 4, kNone);
-    std::vector<uint32_t> edgeBase(W * 4, kNone);
+    std::vector<uint32_t> cornerOrd(W * 4, kNoVertex);
+    std::vector<uint32_t> edgeBase(W * 4, kNoVertex);
     std::vector<uint32_t> edgeOrd;
     edgeOrd.reserve(W * 2 * static_cast<size_t>(L > 1 ? L - 1 : 0));
     std::vector<uint32_t> bVid;
@@ -201,7 +199,7 @@ void tessellateWindows(const Document& doc, const std::vector<PatchInstance>& wi
     };
     // A shared boundary vertex through its ordinal slot: created on first use, normal summed after.
     auto sharedVertex = [&](uint32_t& ord, const SurfacePoint& sp, int r, int c) {
-        if (ord == kNone) {
+        if (ord == kNoVertex) {
             ord = static_cast<uint32_t>(bVid.size());
             bVid.push_back(newVertex(sp, r, c));
             bSum.push_back(sp.n);
@@ -249,7 +247,7 @@ void tessellateWindows(const Document& doc, const std::vector<PatchInstance>& wi
                 const uint32_t gr = (inst.windowRow * L + r) % g.gridRows;  // spline windows step by 1
                 const uint32_t gc = (inst.windowCol * L + c) % g.gridCols;
                 uint32_t& slot = surfIds[g.base + static_cast<size_t>(gr) * g.gridCols + gc];
-                if (slot == kNone) slot = newVertex(sp, r, c);
+                if (slot == kNoVertex) slot = newVertex(sp, r, c);
                 return slot;
             }
             const bool rEnd = r == 0 || r == L, cEnd = c == 0 || c == L;
@@ -265,9 +263,9 @@ void tessellateWindows(const Document& doc, const std::vector<PatchInstance>& wi
                 return sharedVertex(cornerOrd[root], sp, r, c);
             }
             const uint32_t root = edgeSets.find(static_cast<uint32_t>(ke));
-            if (edgeBase[root] == kNone) {
+            if (edgeBase[root] == kNoVertex) {
                 edgeBase[root] = static_cast<uint32_t>(edgeOrd.size());
-                edgeOrd.resize(edgeOrd.size() + (L - 1), kNone);
+                edgeOrd.resize(edgeOrd.size() + (L - 1), kNoVertex);
             }
             const int kc = flip[ke] ? L - k : k;
             return sharedVertex(edgeOrd[edgeBase[root] + kc - 1], sp, r, c);
@@ -299,10 +297,10 @@ void tessellateWindows(const Document& doc, const std::vector<PatchInstance>& wi
                 boundaryByPool.corners.try_emplace(pool[3], onEdge(L));
                 const size_t ke = w * 4 + static_cast<size_t>(e);
                 if (collapsed[ke] || reversedEdgePool(pool) == pool || L < 2) continue;
-                auto [it, inserted] = boundaryByPool.edges.try_emplace(flip[ke] ? reversedEdgePool(pool) : pool, size_t(L - 1), kNone);
+                auto [it, inserted] = boundaryByPool.edges.try_emplace(flip[ke] ? reversedEdgePool(pool) : pool, size_t(L - 1), kNoVertex);
                 for (int k = 1; k < L; ++k) {
                     uint32_t& slot = it->second[size_t((flip[ke] ? L - k : k) - 1)];
-                    if (slot == kNone) slot = onEdge(k);
+                    if (slot == kNoVertex) slot = onEdge(k);
                 }
             }
 
@@ -338,7 +336,7 @@ void removeUnusedVertices(TriangleMesh& mesh) {
     std::vector<uint8_t> used(mesh.positions.size(), 0);
     for (uint32_t i : mesh.indices) used[i] = 1;
     if (std::find(used.begin(), used.end(), uint8_t{0}) != used.end()) {
-        std::vector<uint32_t> remap(mesh.positions.size(), kNone);
+        std::vector<uint32_t> remap(mesh.positions.size(), kNoVertex);
         uint32_t next = 0;
         for (size_t v = 0; v < used.size(); ++v) {
             if (!used[v]) continue;
@@ -425,13 +423,13 @@ CageLines controlCage(const Document& doc) {
     segments.erase(std::unique(segments.begin(), segments.end()), segments.end());
 
     // Pool points used by a segment, in pool order.
-    std::vector<uint32_t> remap(doc.points.size(), kNone);
+    std::vector<uint32_t> remap(doc.points.size(), kNoVertex);
     for (uint64_t s : segments) {
         remap[static_cast<uint32_t>(s >> 32)] = 0;
         remap[static_cast<uint32_t>(s & 0xFFFFFFFFu)] = 0;
     }
     for (size_t p = 0; p < doc.points.size(); ++p) {
-        if (remap[p] == kNone) continue;
+        if (remap[p] == kNoVertex) continue;
         remap[p] = static_cast<uint32_t>(cage.positions.size());
         const Vec3& q = doc.points[p];
         cage.positions.push_back({static_cast<float>(q.x), static_cast<float>(q.y), static_cast<float>(q.z)});

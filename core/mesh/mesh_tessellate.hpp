@@ -12,6 +12,9 @@
 
 namespace pw {
 
+// An index slot not yet given a vertex (the mesh builders' grids and maps).
+inline constexpr uint32_t kNoVertex = 0xFFFFFFFFu;
+
 struct MeshRange {
     uint32_t firstIndex = 0, indexCount = 0;  // triangles of one window in `indices`
 };

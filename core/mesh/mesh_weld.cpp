@@ -11,7 +11,7 @@ namespace pw {
 namespace {
 
 // cos(2°): normals closer than this at one position are one smooth vertex.
-constexpr double kSmoothCos = 0.99939082701909573;
+constexpr double kWeldSmoothCos = 0.99939082701909573;
 
 struct CellHash {
     size_t operator()(const std::array<int64_t, 3>& c) const {
@@ -98,7 +98,7 @@ TriangleMesh weldTriangleSoup(const std::vector<SoupVertex>& soup, size_t window
         const uint32_t pc = clusters.find(v.position);
         if (pc >= atPosition.size()) atPosition.resize(pc + 1);
         for (auto& [id, n0] : atPosition[pc])
-            if (double(n0[0]) * v.normal[0] + double(n0[1]) * v.normal[1] + double(n0[2]) * v.normal[2] > kSmoothCos) {
+            if (double(n0[0]) * v.normal[0] + double(n0[1]) * v.normal[1] + double(n0[2]) * v.normal[2] > kWeldSmoothCos) {
                 for (int i = 0; i < 3; ++i) sums[id][i] += v.normal[i];
                 return id;
             }

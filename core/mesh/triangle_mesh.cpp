@@ -8,11 +8,9 @@ namespace pw {
 
 namespace {
 
-constexpr uint32_t kNone = 0xFFFFFFFFu;
-
 // Normals of two sides meeting at a welded vertex are averaged when they agree within ~10°;
 // otherwise (a crease) the later side gets its own vertex at the same position.
-constexpr double kSmoothCos = 0.985;
+constexpr double kTriangleSmoothCos = 0.985;
 
 // Corner slots at the grid corners: (0,0) is w = 1, (n,0) is u = 1, (0,n) is v = 1.
 constexpr int kCornerW = 9, kCornerU = 0, kCornerV = 6;
@@ -33,7 +31,7 @@ void appendBezierTriangles(const Document& doc, int level, TriangleMesh& mesh, c
         for (const auto& [key, ids] : quads->edges)
             if (ids.size() == size_t(n > 1 ? n - 1 : 0)) edgeVertices.emplace(key, ids);
         auto seed = [&](uint32_t v) {
-            if (v == kNone || v >= mesh.normals.size()) return;
+            if (v == kNoVertex || v >= mesh.normals.size()) return;
             const auto& q = mesh.normals[v];
             normalSum.try_emplace(v, Vec3(q[0], q[1], q[2]), 1u);
         };
@@ -58,11 +56,11 @@ void appendBezierTriangles(const Document& doc, int level, TriangleMesh& mesh, c
         };
         // A welded vertex: reuse `slot` when its first normal agrees with this side's.
         auto shared = [&](uint32_t& slot, const TriPoint& tp, int i, int j) {
-            if (slot != kNone) {
+            if (slot != kNoVertex) {
                 auto& [sum, count] = normalSum[slot];
                 const auto& first = mesh.normals[slot];
                 const Vec3 f(first[0], first[1], first[2]);
-                if (glm::dot(f, tp.n) >= kSmoothCos) {
+                if (glm::dot(f, tp.n) >= kTriangleSmoothCos) {
                     sum += tp.n;
                     ++count;
                     return slot;
@@ -94,7 +92,7 @@ void appendBezierTriangles(const Document& doc, int level, TriangleMesh& mesh, c
                 const bool onE0 = i == 0, onE1 = j == 0, onE2 = i + j == n;
                 const int cornerSlot = onE0 && onE1 ? kCornerW : onE1 && onE2 ? kCornerU : onE0 && onE2 ? kCornerV : -1;
                 if (cornerSlot >= 0) {
-                    auto [it, inserted] = cornerVertex.try_emplace(tri.idx[cornerSlot], kNone);
+                    auto [it, inserted] = cornerVertex.try_emplace(tri.idx[cornerSlot], kNoVertex);
                     id = shared(it->second, tp, i, j);
                     continue;
                 }
@@ -104,7 +102,7 @@ void appendBezierTriangles(const Document& doc, int level, TriangleMesh& mesh, c
                     continue;
                 }
                 if (collapsed[e]) {
-                    auto [it, inserted] = cornerVertex.try_emplace(tri.idx[triEdgeSlot(e, 0)], kNone);
+                    auto [it, inserted] = cornerVertex.try_emplace(tri.idx[triEdgeSlot(e, 0)], kNoVertex);
                     id = shared(it->second, tp, i, j);
                     continue;
                 }
@@ -115,7 +113,7 @@ void appendBezierTriangles(const Document& doc, int level, TriangleMesh& mesh, c
                 const int k = e == 0 ? n - j : e == 1 ? i : j;
                 const int kc = flip[e] ? n - k : k;
                 auto [it, inserted] = edgeVertices.try_emplace(key[e]);
-                if (inserted) it->second.assign(size_t(n - 1), kNone);
+                if (inserted) it->second.assign(size_t(n - 1), kNoVertex);
                 id = shared(it->second[size_t(kc - 1)], tp, i, j);
             }
 
