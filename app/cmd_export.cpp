@@ -89,7 +89,7 @@ Document loadForExport(const ExportArgs& args, LoadReport& report) {
     return doc;
 }
 
-int runStepExport(const ExportArgs& args) {
+int runCadExport(const ExportArgs& args) {
     if (args.schema != "ap214" && args.schema != "ap242") {
         std::cerr << "patchwork export: --schema must be ap214 or ap242 (got " << args.schema << ")\n";
         return 2;
@@ -103,9 +103,14 @@ int runStepExport(const ExportArgs& args) {
     options.schema = args.schema == "ap242" ? StepSchema::AP242 : StepSchema::AP214;
     const StepExportStats stats = exportStep(doc, args.output, options);
     std::cout << "wrote " << args.output << ": " << stats.faces << " exact faces in " << stats.shells
-              << (stats.shells == 1 ? " shell, " : " shells, ") << stats.sharedEdges << " shared edges, " << stats.freeEdges << " free, "
-              << stats.degenerateEdges << " collapsed, " << stats.bytes << " bytes (" << (args.schema == "ap242" ? "AP242" : "AP214")
-              << ")\n";
+              << (stats.shells == 1 ? " shell" : " shells")
+              << (stats.solids ? " (" + std::to_string(stats.solids) + (stats.solids == 1 ? " closed: a solid)" : " closed: solids)") : "")
+              << ", " << stats.sharedEdges << " shared edges, " << stats.freeEdges << " free, " << stats.degenerateEdges << " collapsed, "
+              << stats.bytes << " bytes ("
+              << (formatOf(args.output)->name == std::string_view("IGES") ? "IGES"
+                  : args.schema == "ap242"                                ? "AP242"
+                                                                          : "AP214")
+              << ", " << lengthUnitName(doc.unit) << ", +Z up)\n";
     return 0;
 }
 
@@ -162,7 +167,7 @@ int runExport(const ExportArgs& args) {
                       << format->name << " is exact\n";
             return 2;
         }
-        return runStepExport(args);  // exact: no level
+        return runCadExport(args);  // exact: no level
     }
     if (args.tessGiven && args.asDisplayedGiven && args.asDisplayed) {
         std::cerr << "patchwork export: --tess and --as-displayed exclude each other (the displayed levels are the document's)\n";
@@ -183,13 +188,14 @@ int runExport(const ExportArgs& args) {
 }  // namespace
 
 void registerExportCommand(CLI::App& app, Action& run) {
-    const auto [cmd, args] = addSubcommand<ExportArgs>(
-        app, run, "export", "Write a document as glTF 2.0 (.gltf, .glb) or OBJ (.obj), tessellated, or STEP (.step, .stp), exact",
-        runExport);
+    const auto [cmd, args] = addSubcommand<ExportArgs>(app, run, "export",
+                                                       "Write a document tessellated (" + formatList(FormatUse::Mesh, ", ") +
+                                                           ") or as exact surfaces (" + formatList(FormatUse::Exact, ", ") + ")",
+                                                       runExport);
     cmd->add_option("file", args->input, "Document to export (" + formatList(FormatUse::Load, ", ") + ")")->required();
     cmd->add_option("-o,--output", args->output,
-                    "Output file: .glb (binary glTF), .gltf (JSON glTF, embedded buffer), .obj (+ .mtl beside it), .step or "
-                    ".stp (exact surfaces)")
+                    "Output file, by its extension: tessellated " + formatList(FormatUse::Mesh, ", ") +
+                        " (.gltf with its buffer embedded, .obj with its .mtl beside it); exact " + formatList(FormatUse::Exact, ", "))
         ->required();
     cmd->add_option(
         "--tess", args->tess,

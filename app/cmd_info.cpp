@@ -94,6 +94,8 @@ int runInfo(const InfoOptions& opt) {
             {"joins",
              {{"total", doc.joins.size()}, {"C0", byKind[0]}, {"C1", byKind[1]}, {"G1", byKind[2]}, {"C2", byKind[3]}, {"G2", byKind[4]}}},
             {"modelSize", bounds.empty ? 0.0 : bounds.diagonal()},
+            {"unit", lengthUnitName(doc.unit)},
+            {"up", doc.camera.zUp ? "z" : "y"},
             {"maxConstraintResidual", residual},
             {"tolerances",
              {{"position", doc.tolerances.position}, {"angleDeg", doc.tolerances.angleDeg}, {"curvaturePct", doc.tolerances.curvaturePct}}},
@@ -172,6 +174,7 @@ int runInfo(const InfoOptions& opt) {
     else
         std::cout << "  bounds      min " << vec(bounds.min) << "  max " << vec(bounds.max) << "\n";
     std::cout << "  model size  " << fmt("%.6g", bounds.empty ? 0.0 : bounds.diagonal()) << "  (bounding-box diagonal)\n";
+    std::cout << "  unit        " << lengthUnitName(doc.unit) << ", " << (doc.camera.zUp ? "+Z" : "+Y") << " up\n";
     std::cout << "  largest C0 gap            " << fmt("%.3g", worst.c0Gap) << "\n";
     std::cout << "  largest C1 residual       " << fmt("%.3g", worst.c1Residual) << "  (C1/G1/C2/G2 joins)\n";
     std::cout << "  largest C2 residual       " << fmt("%.3g", worst.c2Residual) << "  (C2/G2 joins)\n";

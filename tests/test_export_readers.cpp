@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/base/errors.hpp"
+#include "core/construct/primitives.hpp"
 #include "core/eval/bezier_curve.hpp"
 #include "core/io/bpt_format.hpp"
 #include "core/io/gltf_export.hpp"
@@ -216,4 +217,58 @@ TEST(ExportReaders, ObjCurvesAreLinesAndFailuresLeaveNothing) {
     EXPECT_THROW(pw::exportObj(doc, dir / "missing" / "x.obj", 2), pw::OutputError);
     EXPECT_FALSE(fs::exists(dir / "missing"));
     fs::remove_all(dir);
+}
+
+// A C0 crease (a cylinder's rims) keeps its sharp normals with two glTF vertices at one position,
+// one per normal: closed by position (what Blender's Merge by Distance and every other reader that
+// welds by position see), open by vertex index only there, and never two vertices with one position
+// and one normal (that would be a missed weld). docs/FILE_FORMAT.md, "Creases".
+TEST(ExportReaders, CreasesShareTheirPositionsAndSplitOnlyTheirNormals) {
+    pw::Document doc;
+    pw::addCylinder(doc, {0, 0, 0}, 1.0, 2.0, true);
+    const std::string bytes = pw::exportGltfBytes(doc, true, {8, pw::MeshGrouping::Single, false});
+    tinygltf::TinyGLTF loader;
+    tinygltf::Model model;
+    std::string err, warn;
+    ASSERT_TRUE(
+        loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()), unsigned(bytes.size())))
+        << err;
+    auto floats = [&](int accessor) {
+        const tinygltf::Accessor& acc = model.accessors[size_t(accessor)];
+        const tinygltf::BufferView& view = model.bufferViews[size_t(acc.bufferView)];
+        std::vector<std::array<float, 3>> v(acc.count);
+        std::memcpy(v.data(), model.buffers[0].data.data() + view.byteOffset + acc.byteOffset, acc.count * 12);
+        return v;
+    };
+    ASSERT_EQ(model.meshes.at(0).primitives.size(), 1u);
+    const tinygltf::Primitive& prim = model.meshes[0].primitives[0];
+    const auto positions = floats(prim.attributes.at("POSITION"));
+    const auto normals = floats(prim.attributes.at("NORMAL"));
+    const tinygltf::Accessor& acc = model.accessors[size_t(prim.indices)];
+    const unsigned char* base = model.buffers[0].data.data() + model.bufferViews[size_t(acc.bufferView)].byteOffset + acc.byteOffset;
+    std::vector<std::array<uint32_t, 3>> byIndex(acc.count / 3), byPosition(acc.count / 3);
+    std::map<std::array<float, 3>, uint32_t> positionId;
+    std::map<std::array<float, 3>, std::vector<uint32_t>> atPosition;
+    for (uint32_t v = 0; v < positions.size(); ++v) {
+        positionId.emplace(positions[v], uint32_t(positionId.size()));
+        atPosition[positions[v]].push_back(v);
+    }
+    for (size_t i = 0; i < acc.count; ++i) {
+        uint16_t v;
+        ASSERT_EQ(acc.componentType, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+        std::memcpy(&v, base + 2 * i, 2);
+        byIndex[i / 3][i % 3] = v;
+        byPosition[i / 3][i % 3] = positionId.at(positions[v]);
+    }
+    EXPECT_EQ(openAndOverused(byPosition), std::make_pair(size_t(0), size_t(0)));  // closed
+    EXPECT_GT(openAndOverused(byIndex).first, 0u);                                 // the two rims, by index
+    size_t split = 0;
+    for (const auto& [p, vs] : atPosition)
+        for (size_t a = 0; a < vs.size(); ++a)
+            for (size_t b = a + 1; b < vs.size(); ++b) {
+                const auto &n = normals[vs[a]], &m = normals[vs[b]];
+                EXPECT_LT(n[0] * m[0] + n[1] * m[1] + n[2] * m[2], 0.99f) << "two vertices with one position and one normal";
+                ++split;
+            }
+    EXPECT_GE(split, 2u * 8u * 4u);  // both rims, 8 segments a quarter
 }

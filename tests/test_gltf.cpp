@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/base/errors.hpp"
+#include "core/base/up_axis.hpp"
 #include "core/construct/model_builders.hpp"
 #include "core/eval/bezier_curve.hpp"
 #include "core/io/bpt_format.hpp"
@@ -268,9 +269,14 @@ TEST(Gltf, BezierCurvesExportAsLinesAndRoundTrip) {
             for (size_t c = 0; c < doc.curves.size(); ++c) {
                 const auto want = pw::sampleCurve(pw::curvePoints(doc, doc.curves[c]), level);
                 for (size_t k = 0; k + 1 < want.size(); ++k)  // segment k of curve c joins its samples k and k + 1
-                    for (size_t e = 0; e < 2; ++e)
+                    for (size_t e = 0; e < 2; ++e) {
+                        // glTF is +Y up: a Z-up document's points are turned, (x, y, z) -> (x, z, -y).
+                        const pw::Vec3& w = want[k + e];
+                        const std::array<float, 3> shown = pw::zUpToYUp({float(w.x), float(w.y), float(w.z)});
                         for (int a = 0; a < 3; ++a)
-                            EXPECT_FLOAT_EQ(positions[idx[2 * (c * size_t(level) + k) + e]][size_t(a)], float(want[k + e][a]));
+                            EXPECT_FLOAT_EQ(positions[idx[2 * (c * size_t(level) + k) + e]][size_t(a)],
+                                            doc.camera.zUp ? shown[size_t(a)] : float(w[a]));
+                    }
             }
             EXPECT_TRUE(pw::importPatchworkGltf(out) == doc) << out;
             files.push_back(out);

@@ -19,6 +19,7 @@
 #include <Interface_Static.hxx>
 #include <STEPControl_Reader.hxx>
 #include <STEPControl_Writer.hxx>
+#include <StepData_StepModel.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColStd_Array2OfReal.hxx>
@@ -28,6 +29,7 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
+#include <UnitsMethods.hxx>
 #include <gp_Pln.hxx>
 
 #include <filesystem>
@@ -64,7 +66,10 @@ struct ReadBack {
 ReadBack readWithOcct(const fs::path& path) {
     ReadBack r;
     STEPControl_Reader reader;
+    Interface_Static::SetCVal("xstep.cascade.unit", "M");  // the documents' unit: no conversion
     EXPECT_EQ(reader.ReadFile(path.string().c_str()), IFSelect_RetDone) << path;
+    UnitsMethods::SetCasCadeLengthUnit(1000.0);  // metres, in millimetres
+    reader.StepModel()->SetLocalLengthUnit(1000.0);
     reader.TransferRoots();
     r.shape = reader.OneShape();
     TopTools_IndexedMapOfShape faces, shells, edges;
@@ -102,7 +107,12 @@ std::string fileText(const fs::path& p) { return pw::test::readBytes(p); }
 
 // Writes `shape` as STEP with OCCT (for import tests of surfaces Patchwork never writes).
 void writeStep(const TopoDS_Shape& shape, const fs::path& path) {
-    STEPControl_Writer w;
+    STEPControl_Writer w;  // in millimetres, the numbers as they are
+    Interface_Static::SetCVal("write.step.unit", "MM");
+    Interface_Static::SetCVal("xstep.cascade.unit", "MM");
+    UnitsMethods::SetCasCadeLengthUnit(1.0);  // OpenCASCADE's unit cache, which a read may have changed
+    w.Model()->SetLocalLengthUnit(1.0);
+    w.Model()->SetWriteLengthUnit(1.0);
     ASSERT_EQ(w.Transfer(shape, STEPControl_AsIs), IFSelect_RetDone);
     ASSERT_EQ(w.Write(path.string().c_str()), IFSelect_RetDone);
 }
@@ -358,7 +368,8 @@ TEST(StepImport, FacesPatchworkCannotEditAreSkippedWithANote) {
     BRep_Builder b;
     TopoDS_Compound c;
     b.MakeCompound(c);
-    // 1: a plane; 2: a rational B-spline (imported with its weights); 3: degree 5; 4: degree 2 (raised to 3: imported);
+    // 1: a plane (converted to a B-spline: imported); 2: a rational B-spline (imported with its weights); 3: degree 5;
+    // 4: degree 2 (raised to 3: imported);
     // 5: a bicubic B-spline trimmed to a parameter rectangle (cut out exactly: imported);
     // 6: a bicubic face with a circular hole.
     b.Add(c, BRepBuilderAPI_MakeFace(gp_Pln(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 0, 1, 0, 1).Face());
@@ -383,14 +394,28 @@ TEST(StepImport, FacesPatchworkCannotEditAreSkippedWithANote) {
     pw::CadImportReport report;
     pw::Document doc = pw::importCadSurfaces(dir / "mixed.step", &report);
     EXPECT_EQ(report.faces, 6u);
-    EXPECT_EQ(report.importedFaces, 3u);
-    ASSERT_EQ(report.notes.size(), 3u);
-    EXPECT_NE(report.notes[0].find("Plane"), std::string::npos) << report.notes[0];
-    EXPECT_NE(report.notes[1].find("degree 5"), std::string::npos) << report.notes[1];
-    EXPECT_NE(report.notes[2].find("hole"), std::string::npos) << report.notes[2];
+    EXPECT_EQ(report.importedFaces, 4u);
+    ASSERT_EQ(report.notes.size(), 2u);
+    EXPECT_NE(report.notes[0].find("degree 5"), std::string::npos) << report.notes[0];
+    EXPECT_NE(report.notes[1].find("hole"), std::string::npos) << report.notes[1];
+    EXPECT_GT(report.skippedArea, 0.0);
+    EXPECT_LT(report.skippedArea, report.area);
+    EXPECT_NE(report.skippedSummary().find("skipped 2 of 6 faces"), std::string::npos) << report.skippedSummary();
     // The rational face is one rational patch, the quadratic one Bézier patch (raised), the trimmed
     // cubic 2 x 1 windows of its 3 x 3 spans (u 0.5..2.5 crosses knots 1 and 2: three pieces; v 0.25..1: one).
-    ASSERT_EQ(doc.patches.size(), 1u + 1u + 3u);
+    ASSERT_EQ(doc.patches.size(), 1u + 1u + 1u + 3u);
+    {
+        // The unit square of the plane z = 0, as one flat patch.
+        pw::Vec3 lo(1e300), hi(-1e300);
+        for (int i = 0; i <= 4; ++i)
+            for (int j = 0; j <= 4; ++j) {
+                const pw::Vec3 p = pw::test::patchPointAt(doc, 0, j / 4.0, i / 4.0);
+                lo = glm::min(lo, p), hi = glm::max(hi, p);
+            }
+        EXPECT_LT(glm::length(lo - pw::Vec3(0, 0, 0)), 1e-12);
+        EXPECT_LT(glm::length(hi - pw::Vec3(1, 1, 0)), 1e-12);
+        doc.patches.erase(doc.patches.begin());
+    }
     {
         const Handle(Geom_BSplineSurface) weighted = gridSurface(3, 4, true);
         const pw::WindowNet net = pw::gatherWindow(doc, doc.patches[0].idx);
@@ -422,16 +447,16 @@ TEST(StepImport, FacesPatchworkCannotEditAreSkippedWithANote) {
     EXPECT_LT(on(cubic, 2.0, 2.5, 0.25, 1.0, doc.patches[3], 0, 0), 1e-9);
     // A file with only such faces is refused, naming the file and the first reason.
     BRep_Builder b2;
-    TopoDS_Compound planes;
-    b2.MakeCompound(planes);
-    b2.Add(planes, BRepBuilderAPI_MakeFace(gp_Pln(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 0, 1, 0, 1).Face());
-    writeStep(planes, dir / "plane.step");
+    TopoDS_Compound quintic;
+    b2.MakeCompound(quintic);
+    b2.Add(quintic, BRepBuilderAPI_MakeFace(gridSurface(5, 6, false), 1e-7).Face());
+    writeStep(quintic, dir / "quintic.step");
     try {
-        pw::importCadSurfaces(dir / "plane.step");
-        ADD_FAILURE() << "a plane-only file was accepted";
+        pw::importCadSurfaces(dir / "quintic.step");
+        ADD_FAILURE() << "a file of degree-5 faces only was accepted";
     } catch (const pw::InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("plane.step"), std::string::npos) << e.what();
-        EXPECT_NE(std::string(e.what()).find("Plane"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("quintic.step"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("degree 5"), std::string::npos) << e.what();
     }
     fs::remove_all(dir);
 }

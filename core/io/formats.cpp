@@ -18,7 +18,10 @@ namespace {
 Document loadCad(const std::filesystem::path& path, LoadReport* report) {
     CadImportReport cad;
     Document doc = importCadSurfaces(path, &cad);
-    if (report) report->notes = std::move(cad.notes);
+    if (report) {
+        report->notes = std::move(cad.notes);
+        if (const std::string summary = cad.skippedSummary(); !summary.empty()) report->notes.push_back(summary);
+    }
     return doc;
 }
 
@@ -89,7 +92,10 @@ std::vector<FileFormat> makeFormats() {
                  .extensions = {".step", ".stp"},
                  .load = loadCad,
                  .save = [](const Document& d, const std::filesystem::path& p, const ExportOptions&, TriangleMesh*) { exportStep(d, p); }});
-    f.push_back({.name = "IGES", .extensions = {".iges", ".igs"}, .load = loadCad});
+    f.push_back({.name = "IGES",
+                 .extensions = {".iges", ".igs"},
+                 .load = loadCad,
+                 .save = [](const Document& d, const std::filesystem::path& p, const ExportOptions&, TriangleMesh*) { exportStep(d, p); }});
     return f;
 }
 
@@ -120,6 +126,8 @@ bool formatDoes(const FileFormat& f, FormatUse use) {
             return f.mesh;
         case FormatUse::Export:
             return f.save && (f.mesh || !f.document);
+        case FormatUse::Exact:
+            return f.save && !f.mesh && !f.document;
     }
     return false;
 }

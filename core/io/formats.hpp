@@ -40,7 +40,8 @@ const FileFormat* formatOf(const std::filesystem::path& path);
 
 // Lists for help texts and messages: ".patchwork, .bpt, .gltf, .glb, .step, .stp, .iges or .igs".
 // Export: what File > Export writes (meshes and exact surfaces, not the plain document formats).
-enum class FormatUse { Load, Save, Document, Mesh, Export };
+// Exact: the exact-surface exports (STEP, IGES).
+enum class FormatUse { Load, Save, Document, Mesh, Export, Exact };
 std::string formatList(FormatUse use, std::string_view lastJoin = " or ");
 bool formatDoes(const FileFormat& f, FormatUse use);
 

@@ -20,6 +20,7 @@
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
 #include "core/base/limits.hpp"
+#include "core/base/up_axis.hpp"
 #include "core/eval/bezier_curve.hpp"
 #include "core/io/glb_container.hpp"
 #include "core/io/gltf_import.hpp"
@@ -262,10 +263,20 @@ std::string exportGltfBytes(const Document& doc, bool binary, const ExportOption
 
     tinygltf::Node root;
     root.name = documentName(doc);
-    // glTF is +Y up: a Z-up document turns -90° about X (+Z to +Y, -Y, its front, to +Z) in the
-    // root node, so three.js, Blender and assimp show it upright while the vertices stay exactly the
-    // document's surface (and the import, which reads the document from the extras, stays exact).
-    if (doc.camera.zUp) root.rotation = {-0.70710678118654752, 0.0, 0.0, 0.70710678118654752};
+    // glTF is +Y up: a Z-up document's vertices, normals and lines are turned -90° about X (+Z to
+    // +Y, -Y, its front, to +Z; exact, zUpToYUp), not a rotated root node, so that three.js, Blender
+    // and assimp show it upright and a reader that drops the nodes' transforms keeps it upright too.
+    // glTF lengths are metres: a document in another unit is scaled (lengths only, not normals).
+    // The import reads the document from the extras, untouched.
+    const bool turn = doc.camera.zUp;
+    const auto toMetres = float(metresPer(doc.unit));
+    auto turnAll = [&](std::vector<std::array<float, 3>>& v, bool lengths = true) {
+        for (auto& p : v) {
+            if (turn) p = zUpToYUp(p);
+            if (lengths && toMetres != 1.0f)
+                for (float& c : p) c *= toMetres;
+        }
+    };
     model.nodes.push_back(root);
     auto addMeshNode = [&](tinygltf::Mesh&& mesh, const std::string& what) {
         mesh.name = documentName(doc) + " " + what;
@@ -276,12 +287,15 @@ std::string exportGltfBytes(const Document& doc, bool binary, const ExportOption
         model.nodes.push_back(std::move(node));
         model.nodes[0].children.push_back(static_cast<int>(model.nodes.size()) - 1);
     };
-    const CageLines cage = options.cage ? controlCage(doc) : CageLines{};
+    CageLines cage = options.cage ? controlCage(doc) : CageLines{};
+    turnAll(cage.positions);
 
     // The surface: one primitive per group (connected surface, patch, or all), each with its own
     // vertices; open surfaces (a boundary edge anywhere) are double-sided.
     {
         SplitMesh mesh = splitMesh(displayed ? std::move(*displayed) : tessellateDocument(doc, level), options.primitives);
+        turnAll(mesh.positions);
+        turnAll(mesh.normals, false);
         st.triangles = mesh.indices.size() / 3;
         st.vertices = mesh.positions.size();
         st.primitives = mesh.groups.size();
@@ -339,6 +353,7 @@ std::string exportGltfBytes(const Document& doc, bool binary, const ExportOption
             for (const Vec3& q : sampleCurve(doc, c, level)) positions.push_back({float(q.x), float(q.y), float(q.z)});
             for (uint32_t i = first + 1; i < positions.size(); ++i) indices.insert(indices.end(), {i - 1, i});
         }
+        turnAll(positions);
         st.curveSegments = indices.size() / 2;
         addMeshNode(linesMesh(model, positions, indices, addLineMaterial(model, "Patchwork curves", {0.85, 0.45, 0.1, 1.0})), "curves");
     }

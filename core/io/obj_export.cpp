@@ -8,6 +8,7 @@
 
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
+#include "core/base/up_axis.hpp"
 #include "core/eval/bezier_curve.hpp"
 #include "core/io/gltf_export.hpp"
 #include "core/mesh/mesh_tessellate.hpp"
@@ -55,7 +56,7 @@ ObjFiles exportObjText(const Document& doc, int requestedLevel, const std::strin
     st.level = level;
     st.asDisplayed = displayed != nullptr;
     const bool turn = doc.camera.zUp;
-    auto up = [&](std::array<float, 3> p) { return turn ? std::array<float, 3>{p[0], p[2], -p[1]} : p; };
+    auto up = [&](const std::array<float, 3>& p) { return turn ? zUpToYUp(p) : p; };
 
     TriangleMesh mesh = displayed ? std::move(*displayed) : tessellateDocument(doc, level);
     for (auto& p : mesh.positions) p = up(p);
@@ -71,6 +72,7 @@ ObjFiles exportObjText(const Document& doc, int requestedLevel, const std::strin
     o.reserve(positions.size() * 40 + normals.size() * 40 + uvs.size() * 28 + mesh.indices.size() * 12 + 1024);
     o += "# Patchwork " + std::string(doc.name.empty() ? "document" : doc.name) +
          (displayed ? std::string(", as displayed (the GPU's tessellation)") : ", level " + std::to_string(level)) + "\n";
+    o += "# lengths in " + std::string(lengthUnitName(doc.unit)) + " (the document's unit; OBJ has none)\n";
     if (turn) o += "# Z-up document written +Y up: (x, y, z) -> (x, z, -y)\n";
     o += "mtllib " + mtlName + "\n";
     for (const auto& p : positions) put(o, "v %.9g %.9g %.9g\n", p[0], p[1], p[2]);

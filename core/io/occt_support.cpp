@@ -43,4 +43,18 @@ Handle(Geom_BSplineSurface) bezierSurface(const std::array<Vec3, 16>& net, const
     return new Geom_BSplineSurface(poles, knots, knots, mults, mults, 3, 3);
 }
 
+const char* unitName(LengthUnit u) {
+    switch (u) {
+        case LengthUnit::Millimetre:
+            return "MM";
+        case LengthUnit::Centimetre:
+            return "CM";
+        case LengthUnit::Inch:
+            return "INCH";
+        case LengthUnit::Metre:
+            break;
+    }
+    return "M";
+}
+
 }  // namespace pw::occt

@@ -10,6 +10,7 @@
 #include <mutex>
 
 #include "core/base/math_types.hpp"
+#include "core/model/document.hpp"
 
 namespace pw::occt {
 
@@ -21,5 +22,8 @@ std::unique_lock<std::mutex> lock();
 // surface: poles(j + 1, i + 1), knots {0, 1} of multiplicity 4 both ways; rational (the same
 // weights at the same places) when `weights` is given.
 Handle(Geom_BSplineSurface) bezierSurface(const std::array<Vec3, 16>& net, const Weights16* weights = nullptr);
+
+// OpenCASCADE's name of a length unit (write.step.unit, xstep.cascade.unit): "MM", "CM", "M", "INCH".
+const char* unitName(LengthUnit u);
 
 }  // namespace pw::occt

@@ -223,6 +223,7 @@ json documentToJson(const Document& doc) {
     j["format"] = "patchwork";
     j["version"] = Document::kFormatVersion;
     j["name"] = doc.name;
+    if (doc.unit != LengthUnit::Metre) j["unit"] = lengthUnitName(doc.unit);  // metres unless it says otherwise
 
     json points = json::array();
     for (const Vec3& p : doc.points) points.push_back(json::array({p.x, p.y, p.z}));
@@ -329,6 +330,11 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
 
     Document doc;
     r.optional(j, "", "name", [&](const json& x, const std::string& p) { doc.name = r.string(x, p); });
+    r.optional(j, "", "unit", [&](const json& x, const std::string& p) {
+        const auto unit = parseLengthUnit(r.string(x, p));
+        if (!unit) r.fail(p, "unknown length unit " + x.dump() + " (mm, cm, m or in)");
+        doc.unit = *unit;
+    });
 
     // Pool.
     const json& points = r.array(*r.member(j, "", "points", true), "points", limits::kMaxPoints, "points");
@@ -523,7 +529,7 @@ std::string serializeDocument(const Document& doc) {
     auto dump = [](const json& v) { return v.dump(-1, ' ', false, json::error_handler_t::replace); };
     std::string out = "{\n";
     bool first = true;
-    for (const char* key : {"format", "version", "name", "points", "weights", "patches", "surfaces", "joins", "triangles", "curves",
+    for (const char* key : {"format", "version", "name", "unit", "points", "weights", "patches", "surfaces", "joins", "triangles", "curves",
                             "constructions", "tess", "display", "camera", "displacement", "tolerances"}) {
         auto it = j.find(key);
         if (it == j.end()) continue;

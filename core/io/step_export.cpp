@@ -4,16 +4,25 @@
 
 #include <APIHeaderSection_MakeHeader.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepBuilderAPI_Sewing.hxx>
+#include <BRepLib.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
+#include <IGESControl_Controller.hxx>
+#include <IGESControl_Writer.hxx>
+#include <IGESData_GlobalSection.hxx>
+#include <IGESData_IGESModel.hxx>
 #include <Interface_Static.hxx>
 #include <Precision.hxx>
+#include <STEPConstruct.hxx>
 #include <STEPControl_Writer.hxx>
 #include <Standard_Failure.hxx>
+#include <StepBasic_Product.hxx>
 #include <StepData_Protocol.hxx>
 #include <StepData_StepModel.hxx>
 #include <StepData_StepWriter.hxx>
+#include <StepRepr_RepresentationItem.hxx>
 #include <TColStd_Array1OfInteger.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
@@ -24,6 +33,10 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Shell.hxx>
+#include <TopoDS_Solid.hxx>
+#include <Transfer_FinderProcess.hxx>
+#include <UnitsMethods.hxx>
+#include <XSControl_TransferWriter.hxx>
 #include <XSControl_WorkSession.hxx>
 
 #include <algorithm>
@@ -32,6 +45,7 @@
 
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
+#include "core/base/up_axis.hpp"
 #include "core/eval/bezier_triangle.hpp"
 #include "core/io/occt_support.hpp"
 #include "core/ops/net_ops.hpp"
@@ -79,86 +93,178 @@ Net16 patchNet(const Document& doc, const std::array<uint32_t, 16>& idx) {
     return net;
 }
 
-// A shell stays a shell; anything else becomes a compound of shells (a lone face gets its own).
-TopoDS_Shape shellsOf(const TopoDS_Shape& sewed) {
-    if (sewed.ShapeType() == TopAbs_SHELL) return sewed;
+// A closed shell (every edge between two faces, or a seam or a pole) as a solid, its faces turned
+// outwards: what CAD systems expect of a closed model (a MANIFOLD_SOLID_BREP of a CLOSED_SHELL in
+// STEP, so that volumes and booleans work). An open shell stays a shell; null when it is open.
+TopoDS_Solid solidOf(TopoDS_Shell shell) {
+    if (!BRep_Tool::IsClosed(shell)) return {};
+    shell.Closed(true);
+    BRepBuilderAPI_MakeSolid make(shell);
+    if (!make.IsDone()) return {};
+    TopoDS_Solid solid = make.Solid();
+    if (!BRepLib::OrientClosedSolid(solid)) return {};
+    return solid;
+}
+
+// The sewn faces as one shape: each closed shell a solid, each open shell a shell, a lone face a
+// shell of its own; one of them alone, several in a compound.
+TopoDS_Shape piecesOf(const TopoDS_Shape& sewed, size_t& solids) {
+    std::vector<TopoDS_Shape> pieces;
     BRep_Builder b;
-    TopoDS_Compound compound;
-    b.MakeCompound(compound);
-    for (TopExp_Explorer e(sewed, TopAbs_SHELL); e.More(); e.Next()) b.Add(compound, e.Current());
+    for (TopExp_Explorer e(sewed, TopAbs_SHELL); e.More(); e.Next()) {
+        const TopoDS_Solid solid = solidOf(TopoDS::Shell(e.Current()));
+        pieces.push_back(solid.IsNull() ? e.Current() : TopoDS_Shape(solid));
+        solids += solid.IsNull() ? 0 : 1;
+    }
     for (TopExp_Explorer e(sewed, TopAbs_FACE, TopAbs_SHELL); e.More(); e.Next()) {
         TopoDS_Shell shell;
         b.MakeShell(shell);
         b.Add(shell, e.Current());
-        b.Add(compound, shell);
+        pieces.push_back(shell);
     }
+    if (pieces.size() == 1) return pieces.front();
+    TopoDS_Compound compound;
+    b.MakeCompound(compound);
+    for (const TopoDS_Shape& piece : pieces) b.Add(compound, piece);
     return compound;
 }
 
-}  // namespace
+// The document as OpenCASCADE shapes, for any CAD writer: exact faces, sewn, closed shells as
+// solids, +Z up (a Y-up document turned), the named faces with their names, and the counts.
+struct CadShape {
+    TopoDS_Shape shape;
+    std::vector<std::pair<TopoDS_Shape, std::string>> namedFaces;  // the sewn faces
+    StepExportStats stats;
+};
 
-std::string exportStepText(const Document& doc, const StepExportOptions& options, StepExportStats* stats) {
+CadShape cadShape(const Document& doc, const char* format) {
     if (doc.patches.empty() && doc.surfaces.empty() && doc.triangles.empty())
-        throw std::runtime_error("the document has no surfaces to write as STEP");
+        throw std::runtime_error(std::string("the document has no surfaces to write as ") + format);
     for (size_t s = 0; s < doc.surfaces.size(); ++s)
         if (auto why = netLayoutProblem(doc.surfaces[s])) throw std::runtime_error("surface " + std::to_string(s) + ": " + *why);
     for (size_t s = 0; s < doc.surfaces.size(); ++s)
         for (uint32_t i : doc.surfaces[s].idx)
             if (pointWeight(doc, i) != 1.0)
-                throw std::runtime_error("surface " + std::to_string(s) +
-                                         ": a net with weights is not written to STEP yet (convert it to patches first)");
+                throw std::runtime_error("surface " + std::to_string(s) + ": a net with weights is not written to " + format +
+                                         " yet (convert it to patches first)");
+    // STEP and IGES are +Z up: a Y-up document is turned a quarter about X (exact) so that it stands upright.
+    Document turned;
+    if (!doc.camera.zUp) {
+        turned = doc;
+        for (Vec3& p : turned.points) p = yUpToZUp(p);
+    }
+    const Document& src = doc.camera.zUp ? doc : turned;
+    const double size = std::max(1.0, modelSize(doc));
+    const double tol = std::max(Precision::Confusion(), 1e-9 * size);
+    BRepBuilderAPI_Sewing sewing(std::max(Precision::Confusion(), 1e-7 * size));
+    // The faces of named patches, nets and triangles, with their names.
+    std::vector<std::pair<TopoDS_Face, std::string>> named;
+    auto addFace = [&](const Handle(Geom_Surface) & surface, const std::string& what, const std::string& name) {
+        BRepBuilderAPI_MakeFace face(surface, Precision::Confusion());
+        if (!face.IsDone())
+            throw std::runtime_error(what + ": OpenCASCADE could not make a face of it (error " + std::to_string(int(face.Error())) + ")");
+        sewing.Add(face.Face());
+        if (!name.empty()) named.emplace_back(face.Face(), name);
+    };
+    for (size_t p = 0; p < src.patches.size(); ++p) {
+        const std::optional<Weights16> w = gatherWeights(src, src.patches[p].idx);  // rational: exact, weights and all
+        addFace(occt::bezierSurface(patchNet(src, src.patches[p].idx), w ? &*w : nullptr), "patch " + std::to_string(p),
+                src.patches[p].name);
+    }
+    for (size_t s = 0; s < src.surfaces.size(); ++s)
+        addFace(netSurface(src, src.surfaces[s], tol), "surface " + std::to_string(s), src.surfaces[s].name);
+    for (size_t t = 0; t < src.triangles.size(); ++t)
+        addFace(occt::bezierSurface(triangleAsCollapsedQuad(gatherTriangleNet(src, src.triangles[t].idx))), "triangle " + std::to_string(t),
+                src.triangles[t].name);
+    sewing.Perform();
+    CadShape out;
+    out.shape = piecesOf(sewing.SewedShape(), out.stats.solids);
+    // The sewn face is the one its original became (sewing may replace a face when it merges its edges).
+    for (const auto& [face, name] : named) out.namedFaces.emplace_back(sewing.IsModified(face) ? sewing.Modified(face) : face, name);
+    TopTools_IndexedMapOfShape faces, shells, edges;
+    TopExp::MapShapes(out.shape, TopAbs_FACE, faces);
+    TopExp::MapShapes(out.shape, TopAbs_SHELL, shells);
+    TopExp::MapShapes(out.shape, TopAbs_EDGE, edges);
+    out.stats.faces = size_t(faces.Extent());
+    out.stats.shells = size_t(shells.Extent());
+    out.stats.sharedEdges = size_t(sewing.NbContigousEdges());
+    out.stats.freeEdges = size_t(sewing.NbFreeEdges());
+    for (int i = 1; i <= edges.Extent(); ++i) out.stats.degenerateEdges += BRep_Tool::Degenerated(TopoDS::Edge(edges(i))) ? 1 : 0;
+    return out;
+}
+
+// The document's unit in millimetres, set everywhere OpenCASCADE keeps one: its process-wide
+// setting and unit cache (an earlier read in this process leaves its file's unit there).
+double setCadUnit(const Document& doc) {
+    Interface_Static::SetCVal("xstep.cascade.unit", occt::unitName(doc.unit));
+    const double unitInMm = metresPer(doc.unit) * 1000.0;
+    UnitsMethods::SetCasCadeLengthUnit(unitInMm);
+    return unitInMm;
+}
+
+}  // namespace
+
+std::string exportStepText(const Document& doc, const StepExportOptions& options, StepExportStats* stats) {
     const auto held = occt::lock();
     try {
-        const double size = std::max(1.0, modelSize(doc));
-        const double tol = std::max(Precision::Confusion(), 1e-9 * size);
-        BRepBuilderAPI_Sewing sewing(std::max(Precision::Confusion(), 1e-7 * size));
-        auto addFace = [&](const Handle(Geom_Surface) & surface, const std::string& what) {
-            BRepBuilderAPI_MakeFace face(surface, Precision::Confusion());
-            if (!face.IsDone())
-                throw std::runtime_error(what + ": OpenCASCADE could not make a face of it (error " + std::to_string(int(face.Error())) +
-                                         ")");
-            sewing.Add(face.Face());
-        };
-        for (size_t p = 0; p < doc.patches.size(); ++p) {
-            const std::optional<Weights16> w = gatherWeights(doc, doc.patches[p].idx);  // rational: exact, weights and all
-            addFace(occt::bezierSurface(patchNet(doc, doc.patches[p].idx), w ? &*w : nullptr), "patch " + std::to_string(p));
-        }
-        for (size_t s = 0; s < doc.surfaces.size(); ++s) addFace(netSurface(doc, doc.surfaces[s], tol), "surface " + std::to_string(s));
-        for (size_t t = 0; t < doc.triangles.size(); ++t)
-            addFace(occt::bezierSurface(triangleAsCollapsedQuad(gatherTriangleNet(doc, doc.triangles[t].idx))),
-                    "triangle " + std::to_string(t));
-        sewing.Perform();
-        const TopoDS_Shape shape = shellsOf(sewing.SewedShape());
-
-        // The schema is read when the writer's model is made: set it first.
+        CadShape cad = cadShape(doc, "STEP");
+        // The schema is read when the writer's model is made: set it first. Lengths are in the
+        // document's unit, with no conversion; one product (not an assembly of one product per
+        // piece), named after the document.
+        const std::string product = doc.name.empty() ? "Patchwork" : doc.name;
         Interface_Static::SetCVal("write.step.schema", options.schema == StepSchema::AP242 ? "AP242DIS" : "AP214IS");
-        Interface_Static::SetCVal("write.step.unit", "MM");
+        Interface_Static::SetCVal("write.step.unit", occt::unitName(doc.unit));
+        Interface_Static::SetIVal("write.step.assembly", 0);
+        const double unitInMm = setCadUnit(doc);
         STEPControl_Writer writer;
-        if (writer.Transfer(shape, STEPControl_AsIs) != IFSelect_RetDone)
+        writer.Model()->SetLocalLengthUnit(unitInMm);
+        writer.Model()->SetWriteLengthUnit(unitInMm);
+        if (writer.Transfer(cad.shape, STEPControl_AsIs) != IFSelect_RetDone)
             throw std::runtime_error("OpenCASCADE could not transfer the shape to STEP");
+        for (int i = 1; i <= writer.Model()->NbEntities(); ++i)
+            if (const auto p = Handle(StepBasic_Product)::DownCast(writer.Model()->Value(i)); !p.IsNull()) {
+                p->SetId(new TCollection_HAsciiString(product.c_str()));
+                p->SetName(new TCollection_HAsciiString(product.c_str()));
+            }
+        // Names on the faces: ADVANCED_FACE('name', ...).
+        const Handle(Transfer_FinderProcess) finder = writer.WS()->TransferWriter()->FinderProcess();
+        for (const auto& [face, name] : cad.namedFaces)
+            if (Handle(StepRepr_RepresentationItem) item = STEPConstruct::FindEntity(finder, face); !item.IsNull())
+                item->SetName(new TCollection_HAsciiString(name.c_str()));
         {
             APIHeaderSection_MakeHeader header(writer.Model());
-            header.SetName(new TCollection_HAsciiString(doc.name.empty() ? "Patchwork" : doc.name.c_str()));
+            header.SetName(new TCollection_HAsciiString(product.c_str()));
             header.SetOriginatingSystem(new TCollection_HAsciiString("Patchwork"));
         }
         StepData_StepWriter out(writer.Model());
         out.SendModel(Handle(StepData_Protocol)::DownCast(writer.WS()->Protocol()));
         std::ostringstream text;
         if (!out.Print(text)) throw std::runtime_error("OpenCASCADE could not print the STEP model");
+        cad.stats.bytes = text.str().size();
+        if (stats) *stats = cad.stats;
+        return std::move(text).str();
+    } catch (const Standard_Failure& e) {
+        throw std::runtime_error(std::string("OpenCASCADE failed: ") + e.GetMessageString());
+    }
+}
 
-        if (stats) {
-            TopTools_IndexedMapOfShape faces, shells, edges;
-            TopExp::MapShapes(shape, TopAbs_FACE, faces);
-            TopExp::MapShapes(shape, TopAbs_SHELL, shells);
-            TopExp::MapShapes(shape, TopAbs_EDGE, edges);
-            stats->faces = size_t(faces.Extent());
-            stats->shells = size_t(shells.Extent());
-            stats->sharedEdges = size_t(sewing.NbContigousEdges());
-            stats->freeEdges = size_t(sewing.NbFreeEdges());
-            stats->degenerateEdges = 0;
-            for (int i = 1; i <= edges.Extent(); ++i) stats->degenerateEdges += BRep_Tool::Degenerated(TopoDS::Edge(edges(i))) ? 1 : 0;
-            stats->bytes = text.str().size();
-        }
+std::string exportIgesText(const Document& doc, StepExportStats* stats) {
+    const auto held = occt::lock();
+    try {
+        CadShape cad = cadShape(doc, "IGES");
+        // Faces as B-spline surfaces in a manifold solid B-rep (IGES 5.3 BRep mode), in the
+        // document's unit with no conversion.
+        IGESControl_Controller::Init();
+        Interface_Static::SetIVal("write.iges.brep.mode", 1);
+        setCadUnit(doc);
+        IGESControl_Writer writer(occt::unitName(doc.unit), 1);
+        writer.Model()->ChangeGlobalSection().SetSendName(new TCollection_HAsciiString(doc.name.empty() ? "Patchwork" : doc.name.c_str()));
+        if (!writer.AddShape(cad.shape)) throw std::runtime_error("OpenCASCADE could not transfer the shape to IGES");
+        writer.ComputeModel();
+        std::ostringstream text;
+        if (!writer.Write(text)) throw std::runtime_error("OpenCASCADE could not print the IGES model");
+        cad.stats.bytes = text.str().size();
+        if (stats) *stats = cad.stats;
         return std::move(text).str();
     } catch (const Standard_Failure& e) {
         throw std::runtime_error(std::string("OpenCASCADE failed: ") + e.GetMessageString());
@@ -167,11 +273,13 @@ std::string exportStepText(const Document& doc, const StepExportOptions& options
 
 StepExportStats exportStep(const Document& doc, const std::filesystem::path& path, const StepExportOptions& options) {
     const std::string ext = lowerExtension(path);
-    if (ext != ".step" && ext != ".stp") throw OutputError(path.string(), "unknown STEP extension '" + ext + "' (use .step or .stp)");
+    const bool iges = ext == ".iges" || ext == ".igs";
+    if (!iges && ext != ".step" && ext != ".stp")
+        throw OutputError(path.string(), "unknown CAD extension '" + ext + "' (use .step, .stp, .iges or .igs)");
     StepExportStats stats;
     std::string text;
     try {
-        text = exportStepText(doc, options, &stats);
+        text = iges ? exportIgesText(doc, &stats) : exportStepText(doc, options, &stats);
     } catch (const std::runtime_error& e) {
         throw OutputError(path.string(), e.what());
     }

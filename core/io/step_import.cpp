@@ -1,8 +1,11 @@
 // STEP/IGES surfaces to Bézier patches (step_import.hpp).
 #include "core/io/step_import.hpp"
 
+#include <BRepBuilderAPI_NurbsConvert.hxx>
+#include <BRepGProp.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
+#include <GProp_GProps.hxx>
 #include <Geom2d_BSplineCurve.hxx>
 #include <Geom2d_Line.hxx>
 #include <Geom2d_TrimmedCurve.hxx>
@@ -11,14 +14,28 @@
 #include <Geom_BezierSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
 #include <IGESControl_Reader.hxx>
+#include <IGESData_GlobalSection.hxx>
+#include <IGESData_IGESModel.hxx>
+#include <Interface_Static.hxx>
+#include <NCollection_DataMap.hxx>
 #include <STEPControl_Reader.hxx>
 #include <Standard_Failure.hxx>
+#include <StepData_StepModel.hxx>
+#include <StepRepr_RepresentationItem.hxx>
+#include <StepShape_AdvancedFace.hxx>
+#include <TColStd_SequenceOfAsciiString.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
+#include <TopTools_ShapeMapHasher.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Wire.hxx>
+#include <TransferBRep.hxx>
+#include <Transfer_TransientProcess.hxx>
+#include <UnitsMethods.hxx>
+#include <XSControl_TransferReader.hxx>
+#include <XSControl_WorkSession.hxx>
 
 #include <algorithm>
 #include <cmath>
@@ -33,6 +50,7 @@
 #include "core/base/file_io.hpp"
 #include "core/base/limits.hpp"
 #include "core/io/bounded_child.hpp"
+#include "core/io/cad_plane_fan.hpp"
 #include "core/io/cad_values.hpp"
 #include "core/io/occt_support.hpp"
 #include "core/io/patchwork_format.hpp"
@@ -81,9 +99,12 @@ std::string typeName(const Handle(Geom_Surface) & s) {
     return n;
 }
 
-// The face's surface as a polynomial bicubic B-spline over exactly the face's parameter rectangle,
-// oriented like the face; or the reason it cannot be.
-std::variant<Handle(Geom_BSplineSurface), std::string> faceSurface(const TopoDS_Face& face) {
+// The face's surface as a (possibly rational) B-spline of degree <= 3 over exactly the face's parameter
+// rectangle, oriented like the face; or the reason it cannot be. Planes, cylinders, cones, spheres,
+// tori, surfaces of revolution and extrusion and offsets are first converted by OpenCASCADE, face
+// and boundary curves together, to B-splines (exact for the analytic and swept surfaces: conics are
+// rational quadratics); `converted` names the surface the face had.
+std::variant<Handle(Geom_BSplineSurface), std::string> faceSurface(const TopoDS_Face& face, const std::string& converted = {}) {
     Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
     if (surface.IsNull()) return std::string("it has no surface");
     if (auto t = Handle(Geom_RectangularTrimmedSurface)::DownCast(surface)) surface = t->BasisSurface();
@@ -92,11 +113,20 @@ std::variant<Handle(Geom_BSplineSurface), std::string> faceSurface(const TopoDS_
         bs = Handle(Geom_BSplineSurface)::DownCast(b->Copy());
     } else if (auto z = Handle(Geom_BezierSurface)::DownCast(surface)) {
         bs = GeomConvert::SurfaceToBSplineSurface(z);
+    } else if (converted.empty()) {
+        BRepBuilderAPI_NurbsConvert convert(face, true);
+        if (!convert.IsDone() || convert.Shape().ShapeType() != TopAbs_FACE)
+            return "a " + typeName(surface) + " surface OpenCASCADE could not convert to a B-spline";
+        return faceSurface(TopoDS::Face(convert.Shape()), typeName(surface));
     } else {
-        return "a " + typeName(surface) + " surface (only B-spline and Bézier surfaces become patches)";
+        return "a " + converted + " surface OpenCASCADE converted to a " + typeName(surface) + " (not a B-spline)";
     }
+    const std::string what = converted.empty() ? std::string() : "a " + converted + " surface as a B-spline of ";
     if (bs->UDegree() > 3 || bs->VDegree() > 3)
-        return "degree " + std::to_string(bs->UDegree()) + " x " + std::to_string(bs->VDegree()) + " (3 at most)";
+        return what + "degree " + std::to_string(bs->UDegree()) + " x " + std::to_string(bs->VDegree()) + " (3 at most)";
+    // A periodic surface (a whole cylinder or sphere) is the same surface with clamped knots.
+    if (bs->IsUPeriodic()) bs->SetUNotPeriodic();
+    if (bs->IsVPeriodic()) bs->SetVNotPeriodic();
 
     int wires = 0;
     for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next()) ++wires;
@@ -128,8 +158,38 @@ std::variant<Handle(Geom_BSplineSurface), std::string> faceSurface(const TopoDS_
     if (u0 < su0 - eu || u1 > su1 + eu || v0 < sv0 - ev || v1 > sv1 + ev) return std::string("its boundary leaves the surface");
     if (u0 > su0 + eu || u1 < su1 - eu || v0 > sv0 + ev || v1 < sv1 - ev) bs->Segment(u0, u1, v0, v1);  // exact
     if (face.Orientation() == TopAbs_REVERSED) bs->UReverse();
-    bs->IncreaseDegree(3, 3);
     return bs;
+}
+
+// The file's length unit where it is one of a document's (millimetre, centimetre, metre, inch);
+// metres otherwise (OpenCASCADE converts the coordinates).
+LengthUnit fileUnit(STEPControl_Reader& reader) {
+    TColStd_SequenceOfAsciiString lengths, angles, solidAngles;
+    reader.FileUnits(lengths, angles, solidAngles);
+    if (lengths.Length() != 1) return LengthUnit::Metre;  // none, or different units in different parts
+    TCollection_AsciiString name = lengths.First();
+    name.LowerCase();
+    if (name == "millimetre" || name == "millimeter") return LengthUnit::Millimetre;
+    if (name == "centimetre" || name == "centimeter") return LengthUnit::Centimetre;
+    if (name.Search("inch") == 1) return LengthUnit::Inch;
+    return LengthUnit::Metre;
+}
+
+// The names of the file's faces (ADVANCED_FACE('lid', ...)), by the shape each became; unnamed
+// faces are left out.
+using FaceNames = NCollection_DataMap<TopoDS_Shape, std::string, TopTools_ShapeMapHasher>;
+
+FaceNames stepFaceNames(STEPControl_Reader& reader) {
+    FaceNames names;
+    const Handle(Interface_InterfaceModel) model = reader.Model();
+    const Handle(Transfer_TransientProcess) process = reader.WS()->TransferReader()->TransientProcess();
+    for (int i = 1; i <= model->NbEntities(); ++i) {
+        const auto face = Handle(StepShape_AdvancedFace)::DownCast(model->Value(i));
+        if (face.IsNull() || face->Name().IsNull() || face->Name()->Length() == 0) continue;
+        const TopoDS_Shape shape = TransferBRep::ShapeResult(process, face);
+        if (!shape.IsNull()) names.Bind(shape, face->Name()->ToCString());
+    }
+    return names;
 }
 
 // The import itself, in whatever process runs it (the caller holds OCCT's lock).
@@ -138,17 +198,40 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
     Document doc;
     try {
         TopoDS_Shape shape;
+        FaceNames faceNames;
         if (step) {
             STEPControl_Reader reader;
             std::istringstream in(bytes);
             if (reader.ReadStream(path.filename().string().c_str(), in) != IFSelect_RetDone)
                 throw InputError(path.string(), "not a readable STEP file (OpenCASCADE could not parse it)");
+            // Coordinates come in the file's own length unit, which becomes the document's.
+            doc.unit = fileUnit(reader);
+            Interface_Static::SetCVal("xstep.cascade.unit", occt::unitName(doc.unit));
+            UnitsMethods::SetCasCadeLengthUnit(metresPer(doc.unit) * 1000.0);  // in millimetres
+            reader.StepModel()->SetLocalLengthUnit(metresPer(doc.unit) * 1000.0);
             if (reader.TransferRoots() == 0) throw InputError(path.string(), "the STEP file holds no shape");
             shape = reader.OneShape();
+            faceNames = stepFaceNames(reader);
         } else {
             IGESControl_Reader reader;  // IGES reads only from a path in OCCT 7.6
             if (reader.ReadFile(path.string().c_str()) != IFSelect_RetDone)
                 throw InputError(path.string(), "not a readable IGES file (OpenCASCADE could not parse it)");
+            // The global section's unit flag: 1 inch, 2 mm, 6 m, 10 cm (others come in metres).
+            switch (reader.IGESModel()->GlobalSection().UnitFlag()) {
+                case 1:
+                    doc.unit = LengthUnit::Inch;
+                    break;
+                case 2:
+                    doc.unit = LengthUnit::Millimetre;
+                    break;
+                case 10:
+                    doc.unit = LengthUnit::Centimetre;
+                    break;
+                default:
+                    doc.unit = LengthUnit::Metre;
+                    break;
+            }
+            Interface_Static::SetCVal("xstep.cascade.unit", occt::unitName(doc.unit));
             if (reader.TransferRoots() == 0) throw InputError(path.string(), "the IGES file holds no shape");
             shape = reader.OneShape();
         }
@@ -156,29 +239,49 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
         TopExp::MapShapes(shape, TopAbs_FACE, faces);
         rep.faces = size_t(faces.Extent());
         for (int f = 1; f <= faces.Extent(); ++f) {
+            GProp_GProps props;
+            BRepGProp::SurfaceProperties(faces(f), props);
+            rep.area += std::abs(props.Mass());
+            // The face's Bézier patches: its B-spline cut at its knots, or a planar face trimmed
+            // by curves as a fan from its centre; or the reason it has none.
+            std::vector<Handle(Geom_BezierSurface)> patches;
             auto result = faceSurface(TopoDS::Face(faces(f)));
-            if (auto* why = std::get_if<std::string>(&result)) {
-                rep.notes.push_back("face " + std::to_string(f) + " skipped: " + *why);
+            if (auto* bs = std::get_if<Handle(Geom_BSplineSurface)>(&result)) {
+                GeomConvert_BSplineSurfaceToBezierSurface split(*bs);
+                for (int i = 1; i <= split.NbUPatches(); ++i)
+                    for (int j = 1; j <= split.NbVPatches(); ++j) patches.push_back(split.Patch(i, j));
+            } else if (auto fan = occt::planarFan(TopoDS::Face(faces(f)));
+                       std::holds_alternative<std::vector<Handle(Geom_BezierSurface)>>(fan)) {
+                patches = std::get<std::vector<Handle(Geom_BezierSurface)>>(fan);
+            } else {
+                const std::string& why =
+                    std::get<std::string>(fan) == "not a plane" ? std::get<std::string>(result) : std::get<std::string>(fan);
+                rep.notes.push_back("face " + std::to_string(f) + " skipped: " + why);
+                rep.skippedArea += std::abs(props.Mass());
                 continue;
             }
-            const Handle(Geom_BSplineSurface)& bs = std::get<Handle(Geom_BSplineSurface)>(result);
-            GeomConvert_BSplineSurfaceToBezierSurface split(bs);
-            for (int i = 1; i <= split.NbUPatches(); ++i)
-                for (int j = 1; j <= split.NbVPatches(); ++j) {
-                    const Handle(Geom_BezierSurface) z = split.Patch(i, j);
-                    Patch patch;
-                    for (int r = 0; r < 4; ++r)
-                        for (int c = 0; c < 4; ++c) {
-                            const gp_Pnt p = z->Pole(c + 1, r + 1);
-                            patch.idx[size_t(r * 4 + c)] = uint32_t(doc.points.size());
-                            doc.points.push_back(Vec3(p.X(), p.Y(), p.Z()));
-                            if (z->IsURational() || z->IsVRational())
-                                setPointWeight(doc, uint32_t(doc.points.size() - 1), z->Weight(c + 1, r + 1));
-                        }
-                    doc.patches.push_back(patch);
-                    if (doc.patches.size() > limits::kMaxPatches)
-                        throw InputError(path.string(), "more than " + std::to_string(limits::kMaxPatches) + " patches");
-                }
+            // The face's name on its patches: "lid" for one patch, "lid 3" (in order) for several.
+            const std::string* found = faceNames.Seek(faces(f));
+            const std::string name = found ? *found : std::string();
+            for (size_t k = 0; k < patches.size(); ++k) {
+                // Raised to bicubic per Bézier patch: BSplSLib's degree elevation of a whole
+                // rational B-spline fails in OCCT 7.6 (an out-of-range index on a converted sphere).
+                const Handle(Geom_BezierSurface)& z = patches[k];
+                z->Increase(3, 3);
+                Patch patch;
+                if (!name.empty()) patch.name = patches.size() > 1 ? name + " " + std::to_string(k) : name;
+                for (int r = 0; r < 4; ++r)
+                    for (int c = 0; c < 4; ++c) {
+                        const gp_Pnt p = z->Pole(c + 1, r + 1);
+                        patch.idx[size_t(r * 4 + c)] = uint32_t(doc.points.size());
+                        doc.points.push_back(Vec3(p.X(), p.Y(), p.Z()));
+                        if (z->IsURational() || z->IsVRational())
+                            setPointWeight(doc, uint32_t(doc.points.size() - 1), z->Weight(c + 1, r + 1));
+                    }
+                doc.patches.push_back(patch);
+                if (doc.patches.size() > limits::kMaxPatches)
+                    throw InputError(path.string(), "more than " + std::to_string(limits::kMaxPatches) + " patches");
+            }
             ++rep.importedFaces;
         }
     } catch (const Standard_Failure& e) {
@@ -208,7 +311,9 @@ std::string encodeResult(const std::filesystem::path& path, bool step, const std
     try {
         CadImportReport rep;
         const Document doc = importInProcess(path, step, bytes, &rep);
-        std::string out = "D" + std::to_string(rep.faces) + " " + std::to_string(rep.importedFaces) + "\n";
+        char counts[96];
+        std::snprintf(counts, sizeof counts, "D%zu %zu %.17g %.17g\n", rep.faces, rep.importedFaces, rep.area, rep.skippedArea);
+        std::string out = counts;
         for (std::string note : rep.notes) {
             std::replace(note.begin(), note.end(), '\n', ' ');
             out += note + "\n";
@@ -220,6 +325,13 @@ std::string encodeResult(const std::filesystem::path& path, bool step, const std
 }
 
 }  // namespace
+
+std::string CadImportReport::skippedSummary() const {
+    if (importedFaces >= faces) return {};
+    char share[64] = "";
+    if (area > 0) std::snprintf(share, sizeof share, ", %.3g %% of the area", 100.0 * skippedArea / area);
+    return "skipped " + std::to_string(faces - importedFaces) + " of " + std::to_string(faces) + " faces" + share;
+}
 
 Document importCadSurfaces(const std::filesystem::path& path, CadImportReport* report) {
     const std::string ext = lowerExtension(path);
@@ -253,7 +365,7 @@ Document importCadSurfaces(const std::filesystem::path& path, CadImportReport* r
     CadImportReport rep;
     std::string line;
     std::getline(in, line);
-    std::sscanf(line.c_str(), "%zu %zu", &rep.faces, &rep.importedFaces);
+    std::sscanf(line.c_str(), "%zu %zu %lg %lg", &rep.faces, &rep.importedFaces, &rep.area, &rep.skippedArea);
     while (std::getline(in, line) && !line.empty()) rep.notes.push_back(line);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     Document doc = parseDocument(text, path.string());

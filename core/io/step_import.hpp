@@ -1,7 +1,9 @@
 // Import of CAD surfaces from STEP (.step, .stp) and IGES (.iges, .igs) through OpenCASCADE: every
-// face whose surface is a polynomial B-spline or Bézier surface of degree <= 3 in both directions,
-// untrimmed (or trimmed only to an iso-parametric rectangle), becomes Bézier patches by knot
-// insertion (exact; degree raised to 3 where lower). Boundaries that meet (within 1e-9 of the
+// face whose surface is a B-spline or Bézier surface (rational or not) of degree <= 3 in both
+// directions, or one OpenCASCADE converts to such a B-spline (planes, cylinders, cones, spheres,
+// tori, surfaces of revolution and extrusion, offsets), untrimmed or trimmed only to an
+// iso-parametric rectangle, becomes Bézier patches by knot insertion (exact; degree raised to 3
+// where lower). Boundaries that meet (within 1e-9 of the
 // model's size) share pool points and get joins detected as for .bpt. Every other face is skipped
 // with a note naming it and why; a file with no usable face is refused (InputError).
 #pragma once
@@ -15,9 +17,13 @@
 namespace pw {
 
 struct CadImportReport {
-    size_t faces = 0;                // faces in the file
-    size_t importedFaces = 0;        // of them, turned into patches
-    std::vector<std::string> notes;  // one per skipped face: "face 3: trimmed by a curve (...)"
+    size_t faces = 0;                  // faces in the file
+    size_t importedFaces = 0;          // of them, turned into patches
+    std::vector<std::string> notes;    // one per skipped face: "face 3: trimmed by a curve (...)"
+    double area = 0, skippedArea = 0;  // of all faces and of the skipped ones, in the file's units
+
+    // "skipped 2 of 26 faces, 3.1 % of the area" (empty when every face came in).
+    std::string skippedSummary() const;
 };
 
 Document importCadSurfaces(const std::filesystem::path& path, CadImportReport* report = nullptr);

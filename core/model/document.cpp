@@ -33,6 +33,8 @@ constexpr std::array<std::string_view, 4> kSpacingNames{"equal", "fractional_odd
 constexpr std::array<std::string_view, 4> kAdaptiveNames{"none", "distance", "screen", "orientation"};
 constexpr std::array<std::string_view, 7> kShadingNames{"lit", "normal", "patch", "uv", "zebra", "gauss", "mean"};
 constexpr std::array<std::string_view, 2> kMappingNames{"patch", "planar"};
+constexpr std::array<std::string_view, 4> kLengthUnitNames{"mm", "cm", "m", "in"};
+constexpr std::array<double, 4> kMetresPer{0.001, 0.01, 1.0, 0.0254};
 
 }  // namespace
 
@@ -42,6 +44,9 @@ std::optional<Edge> parseEdge(std::string_view n) {
     return e && !isTriangleEdge(*e) ? e : std::nullopt;
 }
 std::optional<Edge> parseJoinEdge(std::string_view n) { return parseEnum<Edge>(n, kEdgeNames); }
+std::string_view lengthUnitName(LengthUnit u) { return enumName(u, kLengthUnitNames); }
+std::optional<LengthUnit> parseLengthUnit(std::string_view n) { return parseEnum<LengthUnit>(n, kLengthUnitNames); }
+double metresPer(LengthUnit u) { return kMetresPer[size_t(u) < kMetresPer.size() ? size_t(u) : 2]; }
 std::string_view continuityName(Continuity c) { return enumName(c, kContinuityNames); }
 std::optional<Continuity> parseContinuity(std::string_view n) { return parseEnum<Continuity>(n, kContinuityNames); }
 std::string_view spacingName(Spacing s) { return enumName(s, kSpacingNames); }

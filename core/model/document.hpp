@@ -294,6 +294,13 @@ struct ContinuityTolerances {
     bool operator==(const ContinuityTolerances&) const = default;
 };
 
+// The length unit of a document's coordinates (issue 42): written into every file format that
+// carries one (STEP's length unit, glTF's metres, an OBJ comment) and taken from a STEP file on import.
+enum class LengthUnit : uint8_t { Millimetre, Centimetre, Metre, Inch };
+std::string_view lengthUnitName(LengthUnit u);  // "mm", "cm", "m", "in"
+std::optional<LengthUnit> parseLengthUnit(std::string_view name);
+double metresPer(LengthUnit u);  // 0.001, 0.01, 1, 0.0254
+
 struct Document {
     static constexpr int kFormatVersion = 1;
 
@@ -317,6 +324,7 @@ struct Document {
     // and two documents with the same weights compare equal.
     std::vector<double> weights;
     std::vector<Construction> constructions;  // live surfaces from curves (issue 39)
+    LengthUnit unit = LengthUnit::Metre;
 
     bool operator==(const Document&) const = default;
 };

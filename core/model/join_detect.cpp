@@ -161,19 +161,25 @@ void mergeCoincidentPoints(Document& doc, double tolerance) {
         };
         for (size_t i = 0; i < doc.points.size(); ++i) {
             const Vec3& p = doc.points[i];
-            uint32_t found = UINT32_MAX;
+            uint32_t found = UINT32_MAX, near = UINT32_MAX;  // same weight; any weight
             for (int dx = -1; dx <= 1 && found == UINT32_MAX; ++dx)
                 for (int dy = -1; dy <= 1 && found == UINT32_MAX; ++dy)
                     for (int dz = -1; dz <= 1 && found == UINT32_MAX; ++dz)
                         if (const auto it = cells.find(cell(p, dx, dy, dz)); it != cells.end())
                             for (uint32_t q : it->second)
-                                if (glm::length(pool[q] - p) <= tolerance && poolWeights[q] == pointWeight(doc, uint32_t(i))) {
-                                    found = q;
-                                    break;
+                                if (glm::length(pool[q] - p) <= tolerance) {
+                                    if (near == UINT32_MAX) near = q;
+                                    if (poolWeights[q] == pointWeight(doc, uint32_t(i))) {
+                                        found = q;
+                                        break;
+                                    }
                                 }
             if (found == UINT32_MAX) {
+                // A point of another weight stays its own pool point, at the same position: the
+                // pole row of a rational sphere (weights 1, w, w, 1) is then collapsed exactly, so
+                // the mesher folds it instead of making sliver triangles 1e-17 wide.
                 found = static_cast<uint32_t>(pool.size());
-                pool.push_back(p);
+                pool.push_back(near == UINT32_MAX ? p : pool[near]);
                 poolWeights.push_back(pointWeight(doc, uint32_t(i)));
                 cells[cell(p, 0, 0, 0)].push_back(found);
             }

@@ -22,7 +22,8 @@ std::vector<Join> detectJoins(const Document& doc, JoinDetectOptions options = {
 
 // Pool entries with bit-identical coordinates (-0.0 counting as +0.0) merged into one, keeping the
 // first; patch and surface indices rewritten. With a tolerance > 0, a point within that distance of
-// an earlier kept one merges into it (files whose shared corners differ in the last digits: STEP).
+// an earlier kept one merges into it (files whose shared corners differ in the last digits: STEP);
+// a point of another weight within it keeps its own entry but moves onto the kept one's position.
 void mergeCoincidentPoints(Document& doc, double tolerance = 0.0);
 
 }  // namespace pw

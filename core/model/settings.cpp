@@ -187,6 +187,12 @@ std::vector<Setting> makeSettings() {
         "Planar: the map lies over the ground plane (the model's bounds), crack-free across every seam.\n"
         "Patch parameters: each patch gets the whole map; a net's patches tile it",
         {"patch", "planar"}, {"patch parameters", "planar"}, [](Document& d) -> DisplacementMapping& { return d.displacement.mapping; }));
+    // The document's length unit (File ▸ Unit, shown after the title in the menu bar; `unit` in
+    // files; issue 42): what the numbers mean in STEP, glTF (metres) and OBJ. Changing it relabels
+    // the numbers, it does not scale them.
+    t.push_back(choiceRow<LengthUnit>("unit", "Unit", "The length unit of the document's coordinates, written into STEP, glTF and OBJ",
+                                      {"mm", "cm", "m", "in"}, {"millimetres", "centimetres", "metres", "inches"},
+                                      [](Document& d) -> LengthUnit& { return d.unit; }));
     return t;
 }
 

@@ -1,6 +1,9 @@
 // The main menu bar (ui/panels/command_panels.hpp): generated from the command table, with each command's
-// first key, check marks, Undo/Redo labels, the recent files after Open, and the document's title.
+// first key, check marks, Undo/Redo labels, the recent files after Open, and the document's title
+// and length unit.
 #include <imgui.h>
+
+#include <string>
 
 #include "ui/panels/command_panels.hpp"
 #include "ui/platform/imgui_tip.hpp"
@@ -42,7 +45,8 @@ void drawMenuBar(PanelContext& ctx, CommandPalette& palette, const std::vector<s
         }
         ImGui::EndMenu();
     }
-    ImGui::TextDisabled("%s%s", ctx.session().title().c_str(), ctx.session().isModified() ? "  (modified)" : "");
+    ImGui::TextDisabled("%s%s  [%s]", ctx.session().title().c_str(), ctx.session().isModified() ? "  (modified)" : "",
+                        std::string(lengthUnitName(ctx.session().doc.unit)).c_str());
     ImGui::EndMainMenuBar();
 }
 
