@@ -70,6 +70,17 @@ std::pair<size_t, size_t> openAndOverused(const std::vector<std::array<uint32_t,
     return {open, over};
 }
 
+// A GLB's model as tinygltf reads it (a failure to read is a test failure, and an empty model).
+tinygltf::Model glbModel(const std::string& bytes) {
+    tinygltf::TinyGLTF loader;
+    tinygltf::Model model;
+    std::string err, warn;
+    EXPECT_TRUE(
+        loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()), unsigned(bytes.size())))
+        << err;
+    return model;
+}
+
 struct ObjText {
     size_t v = 0, vt = 0, vn = 0, groups = 0;
     std::vector<std::array<uint32_t, 3>> faces;  // position ids
@@ -151,13 +162,7 @@ TEST(ExportReaders, TheSurfacesAreWeldedInGltfAndObj) {
     const pw::Document doc = pw::loadBpt(pw::test::dataDir() / "teapot.bpt");
     // glTF: within each primitive (connected surface), by vertex index.
     {
-        const std::string bytes = pw::exportGltfBytes(doc, true, {16, pw::MeshGrouping::Surfaces, false});
-        tinygltf::TinyGLTF loader;
-        tinygltf::Model model;
-        std::string err, warn;
-        ASSERT_TRUE(
-            loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()), unsigned(bytes.size())))
-            << err;
+        const tinygltf::Model model = glbModel(pw::exportGltfBytes(doc, true, {16, pw::MeshGrouping::Surfaces, false}));
         size_t open = 0, over = 0;
         for (const auto& mesh : model.meshes)
             for (const auto& prim : mesh.primitives) {
@@ -226,13 +231,7 @@ TEST(ExportReaders, ObjCurvesAreLinesAndFailuresLeaveNothing) {
 TEST(ExportReaders, CreasesShareTheirPositionsAndSplitOnlyTheirNormals) {
     pw::Document doc;
     pw::addCylinder(doc, {0, 0, 0}, 1.0, 2.0, true);
-    const std::string bytes = pw::exportGltfBytes(doc, true, {8, pw::MeshGrouping::Single, false});
-    tinygltf::TinyGLTF loader;
-    tinygltf::Model model;
-    std::string err, warn;
-    ASSERT_TRUE(
-        loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()), unsigned(bytes.size())))
-        << err;
+    const tinygltf::Model model = glbModel(pw::exportGltfBytes(doc, true, {8, pw::MeshGrouping::Single, false}));
     auto floats = [&](int accessor) {
         const tinygltf::Accessor& acc = model.accessors[size_t(accessor)];
         const tinygltf::BufferView& view = model.bufferViews[size_t(acc.bufferView)];
@@ -240,7 +239,8 @@ TEST(ExportReaders, CreasesShareTheirPositionsAndSplitOnlyTheirNormals) {
         std::memcpy(v.data(), model.buffers[0].data.data() + view.byteOffset + acc.byteOffset, acc.count * 12);
         return v;
     };
-    ASSERT_EQ(model.meshes.at(0).primitives.size(), 1u);
+    ASSERT_EQ(model.meshes.size(), 1u);
+    ASSERT_EQ(model.meshes[0].primitives.size(), 1u);
     const tinygltf::Primitive& prim = model.meshes[0].primitives[0];
     const auto positions = floats(prim.attributes.at("POSITION"));
     const auto normals = floats(prim.attributes.at("NORMAL"));
