@@ -48,6 +48,7 @@
 #include "core/base/errors.hpp"
 #include "core/base/up_axis.hpp"
 #include "core/construct/primitives.hpp"
+#include "core/edit/edit_session.hpp"
 #include "core/io/bpt_format.hpp"
 #include "core/io/patchwork_format.hpp"
 #include "core/io/step_export.hpp"
@@ -239,6 +240,22 @@ TEST(StepUnits, TheDocumentsUnitIsTheFilesUnit) {
         EXPECT_NE(std::string(e.what()).find("furlong"), std::string::npos) << e.what();
     }
     fs::remove_all(dir);
+}
+
+// File ▸ Unit (`unit in`) relabels the document in one undo step; an unknown unit is refused.
+TEST(StepUnits, TheUnitCommandIsOneUndoStep) {
+    pw::EditSession session;
+    session.reset(pw::loadBpt(pw::test::dataDir() / "teapot.bpt"), "");
+    const pw::Document before = session.doc;
+    pw::test::runEditScript(session, "unit in");
+    EXPECT_EQ(session.doc.unit, pw::LengthUnit::Inch);
+    EXPECT_EQ(session.doc.points, before.points);  // relabelled, not scaled
+    EXPECT_TRUE(session.isModified());
+    EXPECT_EQ(session.history().undoLabel(), "Unit in");
+    ASSERT_TRUE(session.undo());
+    EXPECT_TRUE(session.doc == before);
+    EXPECT_THROW(pw::test::runEditScript(session, "unit furlong"), pw::InputError);
+    EXPECT_TRUE(session.doc == before);
 }
 
 // Patch names are face names (ADVANCED_FACE('rim', ...)), the document's name the product's, and

@@ -1,4 +1,4 @@
-// File and history commands: new, open, import, save, save-as, export-gltf, screenshot, quit,
+// File and history commands: new, open, import, save, save-as, export-gltf, screenshot, unit, quit,
 // undo, redo.
 #include <filesystem>
 #include <initializer_list>
@@ -166,6 +166,23 @@ void addFileCommands(CommandTable& t) {
            .run = [](CommandContext& ctx) {
                if (const auto path = outputArgument(ctx, FileDialogKind::SweepAnimation, {".gif", ".mp4", ".webm"}))
                    ctx.host.sweepAnimation(*path);
+           }});
+    // The document's length unit from the File menu (also `set unit`, the settings table's row).
+    t.add({.name = "unit",
+           .label = "Document Unit",
+           .menu = "File",
+           .usage = "mm|cm|m|in",
+           .help = "The length unit of the document's coordinates, which STEP, glTF (in metres) and OBJ files state; the numbers "
+                   "are relabelled, not scaled",
+           .bindings =
+               {{"Unit: Millimetres", "mm", {}}, {"Unit: Centimetres", "cm", {}}, {"Unit: Metres", "m", {}}, {"Unit: Inches", "in", {}}},
+           .run = [](CommandContext& ctx) {
+               const std::optional<LengthUnit> unit = ctx.args.size() == 1 ? parseLengthUnit(ctx.args[0]) : std::nullopt;
+               if (!unit)
+                   throw EditError("expected one unit, mm, cm, m or in" +
+                                   (ctx.args.empty() ? std::string() : ", got '" + printable(ctx.args[0]) + "'"));
+               ctx.session.apply(
+                   "Unit " + ctx.args[0], [&](Document& d) { d.unit = *unit; }, false);
            }});
     t.add({.name = "quit",
            .label = "Quit",

@@ -38,21 +38,6 @@ void addSettingCommands(CommandTable& t) {
                ctx.session.apply(
                    std::string(s->label), [&](Document& d) { s->set(d, values); }, false);
            }});
-    // The document's length unit from the File menu (the same row of the settings table as `set unit`).
-    t.add({.name = "unit",
-           .label = "Document Unit",
-           .menu = "File",
-           .usage = "mm|cm|m|in",
-           .help = "The length unit of the document's coordinates, which STEP, glTF (in metres) and OBJ files state; the numbers "
-                   "are relabelled, not scaled",
-           .bindings =
-               {{"Unit: Millimetres", "mm", {}}, {"Unit: Centimetres", "cm", {}}, {"Unit: Metres", "m", {}}, {"Unit: Inches", "in", {}}},
-           .run = [](CommandContext& ctx) {
-               if (ctx.args.size() != 1) throw EditError("expected one unit: mm, cm, m or in");
-               const std::vector<double> value = parseSettingValues(setting("unit"), ctx.args);
-               ctx.session.apply(
-                   "Unit " + ctx.args[0], [&](Document& d) { setting("unit").set(d, value); }, false);
-           }});
 }
 
 }  // namespace pw

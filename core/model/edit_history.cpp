@@ -11,7 +11,7 @@ bool onlyPointsDiffer(const Document& a, const Document& b) {
     return a.points.size() == b.points.size() && a.patches == b.patches && a.surfaces == b.surfaces && a.triangles == b.triangles &&
            a.curves == b.curves && a.joins == b.joins && a.tess == b.tess && a.display == b.display && a.camera == b.camera &&
            a.displacement == b.displacement && a.tolerances == b.tolerances && a.weights == b.weights && a.name == b.name &&
-           a.constructions == b.constructions;
+           a.constructions == b.constructions && a.unit == b.unit;
 }
 
 const std::string kEmpty;
