@@ -1,5 +1,6 @@
-// `patchwork info FILE`: counts, bounds, joins by continuity, and the measured continuity of every
-// join (C0 gap, seam normal angle, curvature deviation across the seam, control-point residuals),
+// `patchwork info FILE`: counts, bounds (of the control points and of the surface), joins by
+// continuity, and the measured continuity of every join (C0 gap, seam normal angle, curvature
+// deviation across the seam, control-point residuals),
 // checked against the document's tolerances, with the largest constraint residual.
 #include <algorithm>
 #include <cstdio>
@@ -15,6 +16,7 @@
 #include "core/construct/constructions.hpp"
 #include "core/io/document_io.hpp"
 #include "core/io/formats.hpp"
+#include "core/mesh/mesh_tessellate.hpp"
 #include "core/model/construction_refs.hpp"
 #include "core/solve/constraint_solver.hpp"
 #include "core/solve/continuity_report.hpp"
@@ -45,6 +47,19 @@ int runInfo(const InfoOptions& opt) {
     (void)loadDocumentHeightMap(doc, opt.file);  // the document's height map must read too (issue 44: not only on export)
     const std::vector<PatchInstance> windows = expandPatches(doc);
     const Bounds bounds = computeBounds(doc.points);
+    // The surface's own box (the control box holds it but can be larger: the teapot's spout
+    // reaches x = 3.43, its control points 3.525), from the surface at level 8; skipped for very
+    // large documents, where the tessellation would cost more than the rest of `info`.
+    constexpr size_t kSurfaceBoundsMaxWindows = 20000;
+    constexpr int kSurfaceBoundsLevel = 8;
+    Bounds surface;
+    if (windows.size() + doc.triangles.size() <= kSurfaceBoundsMaxWindows) {
+        const TriangleMesh mesh = tessellateDocument(doc, kSurfaceBoundsLevel);
+        std::vector<Vec3> corners;
+        corners.reserve(mesh.positions.size());
+        for (const auto& p : mesh.positions) corners.emplace_back(p[0], p[1], p[2]);
+        surface = computeBounds(corners);
+    }
     const double size = modelSize(doc);
     constexpr size_t kKinds = 5;
     size_t byKind[kKinds] = {};
@@ -110,6 +125,11 @@ int runInfo(const InfoOptions& opt) {
             j["bounds"] = {{"min", {bounds.min.x, bounds.min.y, bounds.min.z}}, {"max", {bounds.max.x, bounds.max.y, bounds.max.z}}};
         else
             j["bounds"] = nullptr;
+        if (!surface.empty)
+            j["surfaceBounds"] = {{"min", {surface.min.x, surface.min.y, surface.min.z}},
+                                  {"max", {surface.max.x, surface.max.y, surface.max.z}}};
+        else
+            j["surfaceBounds"] = nullptr;
         json joins = json::array();
         for (const JoinContinuity& c : report) {
             const Join& jn = doc.joins[c.join];
@@ -172,7 +192,10 @@ int runInfo(const InfoOptions& opt) {
     if (bounds.empty)
         std::cout << "  bounds      (empty)\n";
     else
-        std::cout << "  bounds      min " << vec(bounds.min) << "  max " << vec(bounds.max) << "\n";
+        std::cout << "  bounds      min " << vec(bounds.min) << "  max " << vec(bounds.max) << "  (control points)\n";
+    if (!surface.empty)
+        std::cout << "  surface     min " << vec(surface.min) << "  max " << vec(surface.max) << "  (the surface at level "
+                  << kSurfaceBoundsLevel << ")\n";
     std::cout << "  model size  " << fmt("%.6g", bounds.empty ? 0.0 : bounds.diagonal()) << "  (bounding-box diagonal)\n";
     std::cout << "  unit        " << lengthUnitName(doc.unit) << ", " << (doc.camera.zUp ? "+Z" : "+Y") << " up\n";
     std::cout << "  largest C0 gap            " << fmt("%.3g", worst.c0Gap) << "\n";

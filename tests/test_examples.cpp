@@ -227,3 +227,20 @@ TEST(Examples, RoundedBoxIsG1OnEverySeamBeforeAndAfterScriptedDrags) {
         EXPECT_NE(readBytes(out), readBytes(dataDir() / "rounded_box.patchwork"));  // the drag moved something
     }
 }
+
+// `info` gives the surface's box beside the control points' (issue 42): the teapot's spout tip is
+// at x = 3.43 while its control points reach 3.525; both stand on z = 0 and reach z = 3.15.
+TEST(InfoCli, SurfaceBoundsAreTheSurfacesNotTheControlBox) {
+    const RunResult r = runCommand(patchworkBinary().string() + " info --json '" + (dataDir() / "teapot.bpt").string() + "' 2>&1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const nlohmann::json j = nlohmann::json::parse(r.output, nullptr, false);
+    ASSERT_TRUE(j.is_object() && j["surfaceBounds"].is_object()) << r.output;
+    const double controlX = j["bounds"]["max"][0].get<double>(), surfaceX = j["surfaceBounds"]["max"][0].get<double>();
+    EXPECT_NEAR(controlX, 3.525, 1e-9);
+    EXPECT_GT(surfaceX, 3.4);
+    EXPECT_LT(surfaceX, controlX - 0.05);
+    EXPECT_NEAR(j["surfaceBounds"]["min"][2].get<double>(), 0.0, 1e-6);
+    EXPECT_NEAR(j["surfaceBounds"]["max"][2].get<double>(), j["bounds"]["max"][2].get<double>(), 1e-6);
+    const RunResult text = runCommand(patchworkBinary().string() + " info '" + (dataDir() / "teapot.bpt").string() + "' 2>&1");
+    EXPECT_NE(text.output.find("(the surface at level 8)"), std::string::npos) << text.output;
+}
