@@ -54,11 +54,12 @@ int runInfo(const InfoOptions& opt) {
     constexpr int kSurfaceBoundsLevel = 8;
     Bounds surface;
     if (windows.size() + doc.triangles.size() <= kSurfaceBoundsMaxWindows) {
-        const TriangleMesh mesh = tessellateDocument(doc, kSurfaceBoundsLevel);
-        std::vector<Vec3> corners;
-        corners.reserve(mesh.positions.size());
-        for (const auto& p : mesh.positions) corners.emplace_back(p[0], p[1], p[2]);
-        surface = computeBounds(corners);
+        for (const auto& p : tessellateDocument(doc, kSurfaceBoundsLevel).positions) {
+            const Vec3 q(p[0], p[1], p[2]);
+            surface.min = surface.empty ? q : glm::min(surface.min, q);
+            surface.max = surface.empty ? q : glm::max(surface.max, q);
+            surface.empty = false;
+        }
     }
     const double size = modelSize(doc);
     constexpr size_t kKinds = 5;

@@ -29,7 +29,6 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
-#include <UnitsMethods.hxx>
 #include <gp_Pln.hxx>
 
 #include <filesystem>
@@ -46,6 +45,7 @@
 #include "core/eval/rational_eval.hpp"
 #include "core/io/bpt_format.hpp"
 #include "core/io/document_io.hpp"
+#include "core/io/occt_support.hpp"
 #include "core/io/step_export.hpp"
 #include "core/io/step_import.hpp"
 #include "core/ops/net_ops.hpp"
@@ -66,10 +66,9 @@ struct ReadBack {
 ReadBack readWithOcct(const fs::path& path) {
     ReadBack r;
     STEPControl_Reader reader;
-    Interface_Static::SetCVal("xstep.cascade.unit", "M");  // the documents' unit: no conversion
+    const double metres = pw::occt::useLengthUnit(pw::LengthUnit::Metre);  // the documents' unit: no conversion
     EXPECT_EQ(reader.ReadFile(path.string().c_str()), IFSelect_RetDone) << path;
-    UnitsMethods::SetCasCadeLengthUnit(1000.0);  // metres, in millimetres
-    reader.StepModel()->SetLocalLengthUnit(1000.0);
+    reader.StepModel()->SetLocalLengthUnit(metres);
     reader.TransferRoots();
     r.shape = reader.OneShape();
     TopTools_IndexedMapOfShape faces, shells, edges;
@@ -109,10 +108,9 @@ std::string fileText(const fs::path& p) { return pw::test::readBytes(p); }
 void writeStep(const TopoDS_Shape& shape, const fs::path& path) {
     STEPControl_Writer w;  // in millimetres, the numbers as they are
     Interface_Static::SetCVal("write.step.unit", "MM");
-    Interface_Static::SetCVal("xstep.cascade.unit", "MM");
-    UnitsMethods::SetCasCadeLengthUnit(1.0);  // OpenCASCADE's unit cache, which a read may have changed
-    w.Model()->SetLocalLengthUnit(1.0);
-    w.Model()->SetWriteLengthUnit(1.0);
+    const double mm = pw::occt::useLengthUnit(pw::LengthUnit::Millimetre);
+    w.Model()->SetLocalLengthUnit(mm);
+    w.Model()->SetWriteLengthUnit(mm);
     ASSERT_EQ(w.Transfer(shape, STEPControl_AsIs), IFSelect_RetDone);
     ASSERT_EQ(w.Write(path.string().c_str()), IFSelect_RetDone);
 }

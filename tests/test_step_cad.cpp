@@ -35,11 +35,11 @@
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
-#include <UnitsMethods.hxx>
 #include <gp_Ax2.hxx>
 #include <gp_Circ.hxx>
 
 #include <cmath>
+#include <deque>
 #include <filesystem>
 #include <numbers>
 #include <string>
@@ -50,6 +50,7 @@
 #include "core/construct/primitives.hpp"
 #include "core/edit/edit_session.hpp"
 #include "core/io/bpt_format.hpp"
+#include "core/io/occt_support.hpp"
 #include "core/io/patchwork_format.hpp"
 #include "core/io/step_export.hpp"
 #include "core/io/step_import.hpp"
@@ -62,14 +63,12 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// The shape OpenCASCADE reads from `text`, in metres (its default is millimetres).
-TopoDS_Shape readStepText(const std::string& text, const char* unit = "M") {
+// The shape OpenCASCADE reads from `text`, in `unit` (its default is millimetres).
+TopoDS_Shape readStepText(const std::string& text, pw::LengthUnit unit = pw::LengthUnit::Metre) {
     STEPControl_Reader reader;
-    Interface_Static::SetCVal("xstep.cascade.unit", unit);
     std::istringstream in(text);
     EXPECT_EQ(reader.ReadStream("doc.step", in), IFSelect_RetDone);
-    UnitsMethods::SetCasCadeLengthUnit(std::string(unit) == "M" ? 1000.0 : 1.0);  // in millimetres
-    reader.StepModel()->SetLocalLengthUnit(std::string(unit) == "M" ? 1000.0 : 1.0);
+    reader.StepModel()->SetLocalLengthUnit(pw::occt::useLengthUnit(unit));
     reader.TransferRoots();
     return reader.OneShape();
 }
@@ -92,12 +91,10 @@ double area(const TopoDS_Shape& s) {  // adaptive integration to a relative erro
     return props.Mass();
 }
 
-void writeStep(const TopoDS_Shape& shape, const fs::path& path, const char* unit = "MM") {
+void writeStep(const TopoDS_Shape& shape, const fs::path& path, pw::LengthUnit unit = pw::LengthUnit::Millimetre) {
     STEPControl_Writer w;  // in `unit`, the numbers as they are
-    Interface_Static::SetCVal("write.step.unit", unit);
-    Interface_Static::SetCVal("xstep.cascade.unit", unit);
-    const double mm = std::string(unit) == "INCH" ? 25.4 : std::string(unit) == "M" ? 1000.0 : 1.0;
-    UnitsMethods::SetCasCadeLengthUnit(mm);  // OpenCASCADE's unit cache, which a read may have changed
+    Interface_Static::SetCVal("write.step.unit", pw::occt::unitName(unit));
+    const double mm = pw::occt::useLengthUnit(unit);
     w.Model()->SetLocalLengthUnit(mm);
     w.Model()->SetWriteLengthUnit(mm);
     ASSERT_EQ(w.Transfer(shape, STEPControl_AsIs), IFSelect_RetDone);
@@ -107,16 +104,23 @@ void writeStep(const TopoDS_Shape& shape, const fs::path& path, const char* unit
 // Largest distance from 5 x 5 points of every imported patch to the nearest face of `shape`
 // (OpenCASCADE's projection onto each face's own surface), relative to nothing: in file units.
 double worstDistanceToShape(const pw::Document& doc, const TopoDS_Shape& shape) {
-    std::vector<Handle(Geom_Surface)> surfaces;
-    for (TopExp_Explorer e(shape, TopAbs_FACE); e.More(); e.Next()) surfaces.push_back(BRep_Tool::Surface(TopoDS::Face(e.Current())));
+    // One projector per face, over the surface's whole range: its search grid is built once, not
+    // once per point (which made this a 20-second test on a rational sphere).
+    std::deque<GeomAPI_ProjectPointOnSurf> projectors;  // not movable: a deque constructs them in place
+    for (TopExp_Explorer e(shape, TopAbs_FACE); e.More(); e.Next()) {
+        const Handle(Geom_Surface) s = BRep_Tool::Surface(TopoDS::Face(e.Current()));
+        double u0, u1, v0, v1;
+        s->Bounds(u0, u1, v0, v1);
+        projectors.emplace_back().Init(s, u0, u1, v0, v1);
+    }
     double worst = 0.0;
     for (uint32_t p = 0; p < doc.patches.size(); ++p)
         for (int i = 0; i <= 4; ++i)
             for (int j = 0; j <= 4; ++j) {
                 const pw::Vec3 q = pw::test::patchPointAt(doc, p, j / 4.0, i / 4.0);
                 double best = 1e300;
-                for (const auto& s : surfaces) {
-                    GeomAPI_ProjectPointOnSurf proj(gp_Pnt(q.x, q.y, q.z), s);
+                for (auto& proj : projectors) {
+                    proj.Perform(gp_Pnt(q.x, q.y, q.z));
                     if (proj.NbPoints() > 0) best = std::min(best, proj.LowerDistance());
                 }
                 worst = std::max(worst, best);
@@ -225,7 +229,7 @@ TEST(StepUnits, TheDocumentsUnitIsTheFilesUnit) {
         EXPECT_EQ(pw::parseDocument(pw::serializeDocument(back), "x.patchwork").unit, unit);
     }
     // OpenCASCADE's own file of a 10 x 20 x 30 box in inches: 10, 20, 30 inches.
-    writeStep(BRepPrimAPI_MakeBox(10, 20, 30).Shape(), dir / "box.step", "INCH");
+    writeStep(BRepPrimAPI_MakeBox(10, 20, 30).Shape(), dir / "box.step", pw::LengthUnit::Inch);
     const pw::Document box = pw::importCadSurfaces(dir / "box.step");
     EXPECT_EQ(box.unit, pw::LengthUnit::Inch);
     double top = 0.0;
@@ -321,11 +325,11 @@ TEST(CadImport, AnalyticAndSweptSurfacesComeInExact) {
             slivers += glm::length(glm::cross(e1, e2)) <= 1e-9 * glm::length(e1) * glm::length(e2) ? 1 : 0;
         }
         EXPECT_EQ(slivers, 0u);
-        EXPECT_LT(worstDistanceToShape(doc, readStepText(pw::test::readBytes(dir / "part.step"), "MM")), 1e-7);
+        EXPECT_LT(worstDistanceToShape(doc, readStepText(pw::test::readBytes(dir / "part.step"), pw::LengthUnit::Millimetre)), 1e-7);
         // The same area (no face lost, none overlapping), and the closed parts come back closed:
         // written again, a solid of the part's volume.
         pw::StepExportStats stats;
-        const TopoDS_Shape again = readStepText(pw::exportStepText(doc, {}, &stats), "MM");
+        const TopoDS_Shape again = readStepText(pw::exportStepText(doc, {}, &stats), pw::LengthUnit::Millimetre);
         EXPECT_NEAR(area(again), area(c.shape), 1e-7 * area(c.shape));
         const bool closed = std::string(c.what) != "revolution" && std::string(c.what) != "extrusion";
         EXPECT_EQ(stats.solids, closed ? 1u : 0u);
@@ -350,7 +354,7 @@ TEST(CadImport, AFilletedBoxImportsItsPlanesAndFillets) {
     const pw::Document doc = pw::importCadSurfaces(dir / "rounded.step", &report);
     EXPECT_EQ(report.faces, 26u);  // 6 planes, 12 fillets, 8 corners
     EXPECT_GE(report.importedFaces, 18u);
-    EXPECT_LT(worstDistanceToShape(doc, readStepText(pw::test::readBytes(dir / "rounded.step"), "MM")), 1e-7);
+    EXPECT_LT(worstDistanceToShape(doc, readStepText(pw::test::readBytes(dir / "rounded.step"), pw::LengthUnit::Millimetre)), 1e-7);
     if (report.importedFaces < report.faces) {
         const std::string summary = report.skippedSummary();
         EXPECT_NE(summary.find("of 26 faces"), std::string::npos) << summary;
@@ -385,8 +389,7 @@ TEST(IgesExport, TheSameSolidsInTheDocumentsUnit) {
         IGESControl_Reader reader;
         ASSERT_EQ(reader.ReadFile((dir / "ball.igs").string().c_str()), IFSelect_RetDone);
         EXPECT_EQ(reader.IGESModel()->GlobalSection().UnitFlag(), 2);  // millimetres
-        Interface_Static::SetCVal("xstep.cascade.unit", "MM");
-        UnitsMethods::SetCasCadeLengthUnit(1.0);
+        pw::occt::useLengthUnit(pw::LengthUnit::Millimetre);
         reader.TransferRoots();
         const TopoDS_Shape shape = reader.OneShape();
         EXPECT_EQ(count(shape, TopAbs_FACE), 8);
@@ -397,7 +400,7 @@ TEST(IgesExport, TheSameSolidsInTheDocumentsUnit) {
     EXPECT_EQ(back.unit, pw::LengthUnit::Millimetre);
     EXPECT_EQ(report.importedFaces, 8u);
     EXPECT_EQ(back.patches.size(), 8u);
-    EXPECT_LT(worstDistanceToShape(back, readStepText(pw::exportStepText(doc, {}), "MM")), 1e-9);
+    EXPECT_LT(worstDistanceToShape(back, readStepText(pw::exportStepText(doc, {}), pw::LengthUnit::Millimetre)), 1e-9);
     // The command line writes it by its extension and says what it wrote.
     const auto r =
         pw::test::runCommand(pw::test::patchworkBinary().string() + " export " + (pw::test::dataDir() / "exact_sphere.patchwork").string() +

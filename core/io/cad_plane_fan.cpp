@@ -25,11 +25,11 @@
 
 namespace pw::occt {
 
-std::variant<std::vector<Handle(Geom_BezierSurface)>, std::string> planarFan(const TopoDS_Face& face) {
+std::variant<std::monostate, BezierPatches, std::string> planarFan(const TopoDS_Face& face) {
     Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
     if (auto t = Handle(Geom_RectangularTrimmedSurface)::DownCast(surface)) surface = t->BasisSurface();
     const auto plane = Handle(Geom_Plane)::DownCast(surface);
-    if (plane.IsNull()) return std::string("not a plane");
+    if (plane.IsNull()) return std::monostate{};
     int wires = 0;
     for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next()) ++wires;
     if (wires != 1) return "trimmed: " + std::to_string(wires) + " boundary loops (holes)";
@@ -87,7 +87,7 @@ std::variant<std::vector<Handle(Geom_BezierSurface)>, std::string> planarFan(con
 
     // Each segment ruled to the centre: S(u, v) = (1 - v) C(u) + v O, exactly, with C's weights
     // down every column.
-    std::vector<Handle(Geom_BezierSurface)> patches;
+    BezierPatches patches;
     for (const auto& z : segments) {
         TColgp_Array2OfPnt poles(1, 4, 1, 4);
         TColStd_Array2OfReal weights(1, 4, 1, 4);

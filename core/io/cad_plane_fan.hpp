@@ -3,8 +3,8 @@
 // the face's centroid to each boundary segment, the outer edge on the boundary (rational where the
 // boundary is) and the opposite edge collapsed at the centre, as add-cylinder builds its caps. Only
 // for faces that are star-shaped about their centroid (the boundary turns one way round it
-// everywhere), so that no patch folds; otherwise the reason. Only the STEP/IGES import includes this
-// (it pulls in OCCT headers).
+// everywhere), so that no patch folds; otherwise the reason; nothing (monostate) for a face that is
+// not planar. Only the STEP/IGES import includes this (it pulls in OCCT headers).
 #pragma once
 
 #include <Geom_BezierSurface.hxx>
@@ -17,6 +17,7 @@
 
 namespace pw::occt {
 
-std::variant<std::vector<Handle(Geom_BezierSurface)>, std::string> planarFan(const TopoDS_Face& face);
+using BezierPatches = std::vector<Handle(Geom_BezierSurface)>;
+std::variant<std::monostate, BezierPatches, std::string> planarFan(const TopoDS_Face& face);
 
 }  // namespace pw::occt

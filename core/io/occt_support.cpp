@@ -1,6 +1,7 @@
 // OpenCASCADE support shared by the STEP export and the STEP/IGES import (occt_support.hpp).
 #include "core/io/occt_support.hpp"
 
+#include <Interface_Static.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_PrinterOStream.hxx>
@@ -9,6 +10,7 @@
 #include <TColStd_Array1OfReal.hxx>
 #include <TColStd_Array2OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
+#include <UnitsMethods.hxx>
 
 namespace pw::occt {
 
@@ -41,6 +43,13 @@ Handle(Geom_BSplineSurface) bezierSurface(const std::array<Vec3, 16>& net, const
     mults(2) = 4;
     if (weights) return new Geom_BSplineSurface(poles, w, knots, knots, mults, mults, 3, 3);
     return new Geom_BSplineSurface(poles, knots, knots, mults, mults, 3, 3);
+}
+
+double useLengthUnit(LengthUnit u) {
+    Interface_Static::SetCVal("xstep.cascade.unit", unitName(u));
+    const double inMm = metresPer(u) * 1000.0;
+    UnitsMethods::SetCasCadeLengthUnit(inMm);
+    return inMm;
 }
 
 const char* unitName(LengthUnit u) {

@@ -1,6 +1,8 @@
 // What the STEP export and the STEP/IGES import share around OpenCASCADE: one lock (its data-exchange
-// settings are process-wide), silenced console output, and the Bézier <-> B-spline pole layout.
-// Only step_export.cpp and step_import.cpp include this (it pulls in OCCT headers).
+// settings are process-wide), silenced console output, the length unit, and the Bézier <-> B-spline
+// pole layout.
+// Only the STEP/IGES export and import, and the tests that read and write CAD files with
+// OpenCASCADE, include this (it pulls in OCCT headers).
 #pragma once
 
 #include <Geom_BSplineSurface.hxx>
@@ -25,5 +27,11 @@ Handle(Geom_BSplineSurface) bezierSurface(const std::array<Vec3, 16>& net, const
 
 // OpenCASCADE's name of a length unit (write.step.unit, xstep.cascade.unit): "MM", "CM", "M", "INCH".
 const char* unitName(LengthUnit u);
+
+// Makes `u` OpenCASCADE's own length unit for the next transfer, so that shapes are read and
+// written in it with no conversion: its setting (xstep.cascade.unit) and its process-wide unit
+// cache, which an earlier read or write leaves behind. Returns the unit in millimetres, for the
+// STEP model's own units (StepData_StepModel::SetLocalLengthUnit, SetWriteLengthUnit).
+double useLengthUnit(LengthUnit u);
 
 }  // namespace pw::occt

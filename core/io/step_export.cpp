@@ -35,7 +35,6 @@
 #include <TopoDS_Shell.hxx>
 #include <TopoDS_Solid.hxx>
 #include <Transfer_FinderProcess.hxx>
-#include <UnitsMethods.hxx>
 #include <XSControl_TransferWriter.hxx>
 #include <XSControl_WorkSession.hxx>
 
@@ -193,15 +192,6 @@ CadShape cadShape(const Document& doc, const char* format) {
     return out;
 }
 
-// The document's unit in millimetres, set everywhere OpenCASCADE keeps one: its process-wide
-// setting and unit cache (an earlier read in this process leaves its file's unit there).
-double setCadUnit(const Document& doc) {
-    Interface_Static::SetCVal("xstep.cascade.unit", occt::unitName(doc.unit));
-    const double unitInMm = metresPer(doc.unit) * 1000.0;
-    UnitsMethods::SetCasCadeLengthUnit(unitInMm);
-    return unitInMm;
-}
-
 }  // namespace
 
 std::string exportStepText(const Document& doc, const StepExportOptions& options, StepExportStats* stats) {
@@ -215,7 +205,7 @@ std::string exportStepText(const Document& doc, const StepExportOptions& options
         Interface_Static::SetCVal("write.step.schema", options.schema == StepSchema::AP242 ? "AP242DIS" : "AP214IS");
         Interface_Static::SetCVal("write.step.unit", occt::unitName(doc.unit));
         Interface_Static::SetIVal("write.step.assembly", 0);
-        const double unitInMm = setCadUnit(doc);
+        const double unitInMm = occt::useLengthUnit(doc.unit);
         STEPControl_Writer writer;
         writer.Model()->SetLocalLengthUnit(unitInMm);
         writer.Model()->SetWriteLengthUnit(unitInMm);
@@ -256,7 +246,7 @@ std::string exportIgesText(const Document& doc, StepExportStats* stats) {
         // document's unit with no conversion.
         IGESControl_Controller::Init();
         Interface_Static::SetIVal("write.iges.brep.mode", 1);
-        setCadUnit(doc);
+        occt::useLengthUnit(doc.unit);
         IGESControl_Writer writer(occt::unitName(doc.unit), 1);
         writer.Model()->ChangeGlobalSection().SetSendName(new TCollection_HAsciiString(doc.name.empty() ? "Patchwork" : doc.name.c_str()));
         if (!writer.AddShape(cad.shape)) throw std::runtime_error("OpenCASCADE could not transfer the shape to IGES");

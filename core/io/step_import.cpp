@@ -16,7 +16,6 @@
 #include <IGESControl_Reader.hxx>
 #include <IGESData_GlobalSection.hxx>
 #include <IGESData_IGESModel.hxx>
-#include <Interface_Static.hxx>
 #include <NCollection_DataMap.hxx>
 #include <STEPControl_Reader.hxx>
 #include <Standard_Failure.hxx>
@@ -33,7 +32,6 @@
 #include <TopoDS_Wire.hxx>
 #include <TransferBRep.hxx>
 #include <Transfer_TransientProcess.hxx>
-#include <UnitsMethods.hxx>
 #include <XSControl_TransferReader.hxx>
 #include <XSControl_WorkSession.hxx>
 
@@ -206,9 +204,7 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
                 throw InputError(path.string(), "not a readable STEP file (OpenCASCADE could not parse it)");
             // Coordinates come in the file's own length unit, which becomes the document's.
             doc.unit = fileUnit(reader);
-            Interface_Static::SetCVal("xstep.cascade.unit", occt::unitName(doc.unit));
-            UnitsMethods::SetCasCadeLengthUnit(metresPer(doc.unit) * 1000.0);  // in millimetres
-            reader.StepModel()->SetLocalLengthUnit(metresPer(doc.unit) * 1000.0);
+            reader.StepModel()->SetLocalLengthUnit(occt::useLengthUnit(doc.unit));
             if (reader.TransferRoots() == 0) throw InputError(path.string(), "the STEP file holds no shape");
             shape = reader.OneShape();
             faceNames = stepFaceNames(reader);
@@ -231,33 +227,30 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
                     doc.unit = LengthUnit::Metre;
                     break;
             }
-            Interface_Static::SetCVal("xstep.cascade.unit", occt::unitName(doc.unit));
+            occt::useLengthUnit(doc.unit);
             if (reader.TransferRoots() == 0) throw InputError(path.string(), "the IGES file holds no shape");
             shape = reader.OneShape();
         }
         TopTools_IndexedMapOfShape faces;
         TopExp::MapShapes(shape, TopAbs_FACE, faces);
         rep.faces = size_t(faces.Extent());
+        std::vector<int> skipped;
         for (int f = 1; f <= faces.Extent(); ++f) {
-            GProp_GProps props;
-            BRepGProp::SurfaceProperties(faces(f), props);
-            rep.area += std::abs(props.Mass());
             // The face's Bézier patches: its B-spline cut at its knots, or a planar face trimmed
             // by curves as a fan from its centre; or the reason it has none.
-            std::vector<Handle(Geom_BezierSurface)> patches;
+            occt::BezierPatches patches;
             auto result = faceSurface(TopoDS::Face(faces(f)));
             if (auto* bs = std::get_if<Handle(Geom_BSplineSurface)>(&result)) {
                 GeomConvert_BSplineSurfaceToBezierSurface split(*bs);
                 for (int i = 1; i <= split.NbUPatches(); ++i)
                     for (int j = 1; j <= split.NbVPatches(); ++j) patches.push_back(split.Patch(i, j));
-            } else if (auto fan = occt::planarFan(TopoDS::Face(faces(f)));
-                       std::holds_alternative<std::vector<Handle(Geom_BezierSurface)>>(fan)) {
-                patches = std::get<std::vector<Handle(Geom_BezierSurface)>>(fan);
+            } else if (auto fan = occt::planarFan(TopoDS::Face(faces(f))); auto* fanned = std::get_if<occt::BezierPatches>(&fan)) {
+                patches = std::move(*fanned);
             } else {
-                const std::string& why =
-                    std::get<std::string>(fan) == "not a plane" ? std::get<std::string>(result) : std::get<std::string>(fan);
-                rep.notes.push_back("face " + std::to_string(f) + " skipped: " + why);
-                rep.skippedArea += std::abs(props.Mass());
+                // A plane's own reason, else why the surface itself could not be used.
+                const std::string* why = std::get_if<std::string>(&fan);
+                rep.notes.push_back("face " + std::to_string(f) + " skipped: " + (why ? *why : std::get<std::string>(result)));
+                skipped.push_back(f);
                 continue;
             }
             // The face's name on its patches: "lid" for one patch, "lid 3" (in order) for several.
@@ -284,6 +277,14 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
             }
             ++rep.importedFaces;
         }
+        // The share of the area skipped: measured only when a face was (an integral per face).
+        if (!skipped.empty())
+            for (int f = 1; f <= faces.Extent(); ++f) {
+                GProp_GProps props;
+                BRepGProp::SurfaceProperties(faces(f), props);
+                rep.area += std::abs(props.Mass());
+                if (std::binary_search(skipped.begin(), skipped.end(), f)) rep.skippedArea += std::abs(props.Mass());
+            }
     } catch (const Standard_Failure& e) {
         throw InputError(path.string(), std::string("OpenCASCADE stopped reading it: ") + e.GetMessageString());
     }
