@@ -180,8 +180,10 @@ int runRender(const RenderArgs& a) {
     const DomainArgs dargs = domainArgs(a);
     if (wantsDomain(dargs)) {
         if (!a.input.empty()) bad("--domain", "a domain figure draws no document; leave out the file");
+        if (!a.compareDevice.empty()) return runDeviceComparison(a, domainPanes("render", dargs), w, h);
         return runDomainRender(a, domainPanes("render", dargs), w, h);
     }
+    if (!a.compareDevice.empty()) bad("--compare-device", "compares domain patterns: give --preset or --domain");
     if (render::vectorFormatFor(a.output))
         bad("-o", "'" + a.output + "': SVG and PDF figures are of the tessellated domain (--domain, --preset); write the model as .png");
     Document doc = a.input.empty() ? builtinTeapot() : loadDocument(a.input);
@@ -263,7 +265,7 @@ void addRenderOptions(CLI::App* cmd, RenderArgs& a) {
     cmd->add_option("--outer", a.outer,
                     "Four outer levels a,b,c,d (edges u0, v0, u1, v1), 1..64; with --domain tri three, isoline two (lines, segments)");
     cmd->add_option("--inner", a.inner, "Two inner levels a,b (along u, along v), 1..64; with --domain tri one");
-    cmd->add_option("--spacing", a.spacing, "equal | fractional_odd | fractional_even | pow2");
+    cmd->add_option("--spacing", a.spacing, "equal (or integer, as the notes say) | fractional_odd | fractional_even | pow2");
     cmd->add_option("--adaptive", a.adaptive, "none | distance | screen | orientation");
     cmd->add_option("--target-px", a.targetPx, "Screen-space adaptive: pixels per segment (default 8)");
     cmd->add_option("--max-level", a.maxLevel, "Adaptive: largest level, 1..64");
@@ -295,6 +297,9 @@ void registerRenderCommand(CLI::App& app, Action& run) {
         app, run, "render", "Render a document offscreen on the GPU tessellation pipeline to a PNG (domain figures also SVG, PDF)",
         runRender);
     addRenderOptions(cmd, *a);
+    cmd->add_option("--compare-device", a->compareDevice,
+                    "Domain figure: this device's pattern beside the one in this capture file (patchwork capture; data/captures), "
+                    "differences highlighted");
     cmd->add_option("-o,--output", a->output, "Output PNG; a domain figure also .svg or .pdf (vector paths, one per triangle)")->required();
 }
 

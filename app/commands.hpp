@@ -36,6 +36,7 @@ void registerPresetsCommand(CLI::App& app, Action& run);
 void registerSweepCommand(CLI::App& app, Action& run);
 void registerShadersCommand(CLI::App& app, Action& run);
 void registerEditCommand(CLI::App& app, Action& run);
+void registerCaptureCommand(CLI::App& app, Action& run);
 
 // The default job when no sub-command is given (until the editor window exists: summary + export).
 int runDefault(const std::string& file);

@@ -71,7 +71,7 @@ std::array<unsigned, 2> parseImageSize(const std::string& command, const std::st
 
 Spacing parseSpacingOption(const std::string& command, const std::string& option, const std::string& text) {
     auto s = parseSpacing(text);
-    if (!s) badOption(command, option, "'" + text + "' is not one of equal, fractional_odd, fractional_even, pow2");
+    if (!s) badOption(command, option, "'" + text + "' is not one of equal (or integer), fractional_odd, fractional_even, pow2");
     return *s;
 }
 

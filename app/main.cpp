@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
     pw::app::registerSweepCommand(app, run);
     pw::app::registerShadersCommand(app, run);
     pw::app::registerEditCommand(app, run);
+    pw::app::registerCaptureCommand(app, run);
 
     pw::app::requirePlainDecimals(app);
     try {

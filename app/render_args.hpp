@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <string>
+#include <vector>
 
 #include "app/displacement_args.hpp"
 #include "app/domain_args.hpp"
@@ -14,7 +15,7 @@ namespace pw::app {
 
 struct RenderArgs {
     std::string input, output = "", size = "1280x720", tess, outer, inner, spacing, adaptive, shading, overlay, view, stats, device,
-                       targetPx, maxLevel, domain, preset, compare, isolines, combJoin;
+                       targetPx, maxLevel, domain, preset, compare, isolines, combJoin, compareDevice;
     bool cull = false, validation = false, noMsaa = false;
     DisplacementArgs displacement;
 };
@@ -24,6 +25,9 @@ void addRenderOptions(CLI::App* cmd, RenderArgs& a);
 // The document's settings with the command-line ones on top, all validated (InputError on bad ones).
 render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& doc, uint32_t width, uint32_t height);
 DomainArgs domainArgs(const RenderArgs& a);
+// `render --compare-device FILE` (app/cmd_capture.cpp): this device's pattern of the one pane beside
+// the capture file's, written to a.output.
+int runDeviceComparison(const RenderArgs& a, const std::vector<render::DomainPane>& panes, unsigned width, unsigned height);
 // 1 (after saying so on stderr) when the validation layer reported anything, else 0.
 int validationExitCode(const render::Device& dev, const std::string& command);
 

@@ -12,7 +12,7 @@ layout(DOMAIN, SPACING, point_mode) in;  // the vertex dots: each domain point o
 layout(DOMAIN, SPACING, ccw) in;
 #endif
 layout(location = 0) out vec4 outColor;
-#ifdef CAPTURE  // vector figures: each primitive's domain points (x right, y up), 8 bytes a vertex
+#ifdef CAPTURE  // figures and captures: each primitive's gl_TessCoord.xy, 8 bytes a vertex
 layout(location = 1, xfb_buffer = 0, xfb_offset = 0, xfb_stride = 8) out vec2 outDomain;
 #endif
 
@@ -29,7 +29,7 @@ void main() {
     gl_Position = vec4(p * dp.transform.xy + dp.transform.zw, 0.0, 1.0);
     outColor = dp.color;
 #ifdef CAPTURE
-    outDomain = p;
+    outDomain = gl_TessCoord.xy;  // as the tessellator made it (core/tess/tess_pattern.hpp)
 #endif
 #ifdef POINT_SIZE
     gl_PointSize = dp.point.x;

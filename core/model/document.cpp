@@ -50,7 +50,8 @@ double metresPer(LengthUnit u) { return kMetresPer[size_t(u) < kMetresPer.size()
 std::string_view continuityName(Continuity c) { return enumName(c, kContinuityNames); }
 std::optional<Continuity> parseContinuity(std::string_view n) { return parseEnum<Continuity>(n, kContinuityNames); }
 std::string_view spacingName(Spacing s) { return enumName(s, kSpacingNames); }
-std::optional<Spacing> parseSpacing(std::string_view n) { return parseEnum<Spacing>(n, kSpacingNames); }
+// "integer" is the D3D partitioning of the lecture notes, the same as Vulkan's equal spacing.
+std::optional<Spacing> parseSpacing(std::string_view n) { return n == "integer" ? Spacing::Equal : parseEnum<Spacing>(n, kSpacingNames); }
 std::string_view adaptiveName(AdaptiveMode m) { return enumName(m, kAdaptiveNames); }
 std::optional<AdaptiveMode> parseAdaptive(std::string_view n) { return parseEnum<AdaptiveMode>(n, kAdaptiveNames); }
 std::string_view shadingName(ShadingMode m) { return enumName(m, kShadingNames); }

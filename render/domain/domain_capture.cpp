@@ -1,6 +1,7 @@
 // DomainView::capture: the domain pattern the fixed tessellator made, read back as primitives
 // through VK_EXT_transform_feedback (the CAPTURE variants of domain.tese, rasterisation discarded),
-// for vector figures (render/figures/figure_vector.hpp): every triangle the GPU made becomes one path.
+// for vector figures (render/figures/figure_vector.hpp: every triangle the GPU made becomes one
+// path) and for capture files (core/io/tess_capture_file.hpp).
 #include <algorithm>
 #include <cstring>
 #include <string>
@@ -43,14 +44,16 @@ VkPipeline DomainView::capturePipeline(DomainKind kind, Spacing spacing) {
     return capturePipes_[d][s].get();
 }
 
-DomainPattern DomainView::capture(const DomainPane& pane) {
+TessPattern DomainView::capture(const DomainPane& pane) {
     if (!dev_.caps().transformFeedback)
         throw InputError("vulkan", "device '" + dev_.name() +
                                        "' has no transform feedback (VK_EXT_transform_feedback), which vector figures read "
                                        "the tessellator's primitives through");
-    DomainPattern out;
+    TessPattern out;
     out.kind = pane.kind;
-    out.vertsPerPrimitive = pane.kind == DomainKind::Isoline ? 2 : 3;
+    out.spacing = pane.spacing;
+    out.levels = pane.levels;
+    const VkDeviceSize vertsPerPrimitive = VkDeviceSize(out.vertsPerPrimitive());
     const VkPipeline pipe = capturePipeline(pane.kind, pane.spacing);
     gpu::DomainPush push{};
     setDomainLevels(push, pane);
@@ -62,7 +65,7 @@ DomainPattern DomainView::capture(const DomainPane& pane) {
     const Device::TransformFeedbackFns& xfb = dev_.transformFeedback();
     // Room for the rules' count (and then some); when the query says more were made, once more at
     // the exact size.
-    VkDeviceSize capacity = std::max<VkDeviceSize>(VkDeviceSize(want.primitives) * 2 + 64, 64) * out.vertsPerPrimitive * kStride;
+    VkDeviceSize capacity = std::max<VkDeviceSize>(VkDeviceSize(want.primitives) * 2 + 64, 64) * vertsPerPrimitive * kStride;
     for (int attempt = 0;; ++attempt) {
         Buffer buf = createBuffer(dev_, capacity, VK_BUFFER_USAGE_TRANSFORM_FEEDBACK_BUFFER_BIT_EXT, MemoryUse::Readback);
         dev_.submitAndWait([&](VkCommandBuffer cmd) {
@@ -95,20 +98,13 @@ DomainPattern DomainView::capture(const DomainPane& pane) {
             if (attempt > 0)
                 throw OutputError("(capture)",
                                   "the GPU made " + std::to_string(prims[1]) + " primitives but wrote only " + std::to_string(prims[0]));
-            capacity = VkDeviceSize(prims[1]) * out.vertsPerPrimitive * kStride;
+            capacity = VkDeviceSize(prims[1]) * vertsPerPrimitive * kStride;
             continue;
         }
-        out.points.resize(size_t(prims[0]) * out.vertsPerPrimitive);
-        std::memcpy(out.points.data(), buf.mapped, out.points.size() * kStride);
+        out.uv.resize(size_t(prims[0]) * vertsPerPrimitive);
+        std::memcpy(out.uv.data(), buf.mapped, out.uv.size() * kStride);
         return out;
     }
-}
-
-std::vector<std::array<float, 2>> DomainPattern::distinctPoints() const {
-    std::vector<std::array<float, 2>> v = points;
-    std::sort(v.begin(), v.end());
-    v.erase(std::unique(v.begin(), v.end()), v.end());
-    return v;
 }
 
 }  // namespace pw::render

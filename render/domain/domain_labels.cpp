@@ -28,6 +28,18 @@ std::string edgeText(float level, Spacing spacing, bool integerSpacing, float ma
     return t;
 }
 
+// "quad domain · llvmpipe (LLVM 15.0.6, 256 bits)" where it fits the pane; else without the
+// parenthesis, else the device alone (titles are drawn 10 % larger than `widthOf` measures).
+std::string titleWithDevice(const std::string& title, const std::string& device, float room,
+                            const std::function<float(const std::string&)>& widthOf) {
+    const auto fits = [&](const std::string& t) { return !widthOf || widthOf(t) * 1.1f <= room; };
+    const size_t paren = device.find(" (");
+    const std::string shortName = paren == std::string::npos ? device : device.substr(0, paren);
+    for (const std::string& t : {title + " \u00b7 " + device, title + " \u00b7 " + shortName})
+        if (fits(t)) return t;
+    return shortName;
+}
+
 }  // namespace
 
 std::vector<DomainLabel> domainLabels(const DomainViewOptions& o, uint64_t vertices, uint64_t primitives, float textPixels,
@@ -83,7 +95,8 @@ std::vector<DomainLabel> domainLabels(const DomainViewOptions& o, uint64_t verti
     cap.y = bottom[1] + gap + textPixels * 1.25f;
     cap.ax = 0.5f;
     const std::string settings = (inner.empty() ? "" : inner + "  \u00b7  ") + std::string(spacingName(o.spacing));
-    const std::string counts = std::to_string(vertices) + " vertices, " + std::to_string(primitives) + " " + primitiveWord;
+    const std::string counts = std::to_string(vertices) + " vertices, " + std::to_string(primitives) + " " + primitiveWord +
+                               (o.countsNote.empty() ? "" : ", " + o.countsNote);
     cap.text = settings + "  \u00b7  " + counts;
     if (widthOf && widthOf(cap.text) > o.rect[2] - textPixels) {  // two lines where one does not fit the pane
         cap.text = settings;
@@ -101,6 +114,7 @@ std::vector<DomainLabel> domainLabels(const DomainViewOptions& o, uint64_t verti
     title.ax = 0.5f;
     title.ay = 1.0f;
     title.text = std::string(domainName(o.kind) == "tri" ? "triangle" : domainName(o.kind)) + " domain";
+    if (!o.device.empty()) title.text = titleWithDevice(title.text, o.device, o.rect[2] - textPixels, widthOf);
     out.push_back(title);
     return out;
 }

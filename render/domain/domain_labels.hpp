@@ -1,6 +1,7 @@
 // Where the domain view's words go: each outer edge labelled with its level (and the segment count
 // the partitioning rounds it to, where that differs), and a caption with the inner levels, the
-// partitioning and the vertex and primitive counts. Used by the headless figures (drawn with
+// partitioning and the vertex and primitive counts, and a title naming the domain (and, in figures,
+// the device that drew it). Used by the headless figures (drawn with
 // LabelRaster) and by the editor's domain panel (drawn by ImGui), so both say the same.
 #pragma once
 

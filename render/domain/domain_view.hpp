@@ -7,9 +7,11 @@
 #include <vulkan/vulkan.h>
 
 #include <array>
+#include <string>
 #include <vector>
 
 #include "core/tess/tess_domain.hpp"
+#include "core/tess/tess_pattern.hpp"
 #include "render/targets/render_target.hpp"
 #include "render/vk/device.hpp"
 #include "render/vk/vk_owned.hpp"
@@ -42,17 +44,8 @@ struct DomainViewOptions : DomainPane {
     std::array<float, 4> lineColor{0.10f, 0.14f, 0.22f, 1.0f};
     std::array<float, 4> pointColor{0.85f, 0.20f, 0.12f, 1.0f};
     float pointSize = 5.0f;  // pixels, where the device can size points from the evaluation stage
-};
-
-// The primitives the tessellator made for one pane, in domain coordinates (x right, y up; the
-// triangle domain is the equilateral triangle of the pictures): 3 points a triangle, or 2 a line
-// segment of the isoline domain, in the order the GPU emitted them.
-struct DomainPattern {
-    DomainKind kind = DomainKind::Quad;
-    int vertsPerPrimitive = 3;
-    std::vector<std::array<float, 2>> points;
-    size_t primitives() const { return points.size() / size_t(vertsPerPrimitive); }
-    std::vector<std::array<float, 2>> distinctPoints() const;  // each domain point once (sorted)
+    std::string device;      // figures: the device that drew the pattern, named in the title
+    std::string countsNote;  // figures: words after the counts ("12 differ")
 };
 
 struct DomainStats {
@@ -87,10 +80,12 @@ public:
     std::vector<DomainStats> draw(RenderTarget& target, const std::vector<DomainViewOptions>& panes, bool clearTarget);
 
     bool pointsSupported() const { return pointsSupported_; }
+    std::string deviceName() const { return dev_.name(); }
 
     // The pane's pattern read back through transform feedback (render/domain/domain_capture.cpp): what
-    // vector figures draw. Throws InputError on a device without VK_EXT_transform_feedback.
-    DomainPattern capture(const DomainPane& pane);
+    // vector figures draw and `patchwork capture` stores. Throws InputError on a device without
+    // VK_EXT_transform_feedback.
+    TessPattern capture(const DomainPane& pane);
 
 private:
     VkPipeline pipeline(DomainKind kind, Spacing spacing, int pass) const;  // pass 0 fill, 1 lines, 2 points

@@ -19,13 +19,15 @@ TextStyle domainLabelStyle(DomainLabel::Role role, float textPixels) {
     return st;
 }
 
-DomainFigureLayout layoutDomainFigure(const std::vector<DomainPane>& panes, uint32_t width, uint32_t height, float textPixels) {
+DomainFigureLayout layoutDomainFigure(const std::vector<DomainPane>& panes, uint32_t width, uint32_t height, float textPixels,
+                                      const std::string& device) {
     DomainFigureLayout l;
     l.rects = splitPanes(int(panes.size()), {0.0f, 0.0f, float(width), float(height)});
     for (size_t i = 0; i < l.rects.size(); ++i) {
         DomainViewOptions o;
         static_cast<DomainPane&>(o) = panes[i];
         o.rect = l.rects[i];
+        o.device = device;
         const float px = textPixels > 0.0f ? textPixels : std::clamp(std::min(o.rect[2], o.rect[3]) / 26.0f, 11.0f, 40.0f);
         o.margin = domainLabelMargin(px);
         l.textPixels.push_back(px);
@@ -38,7 +40,7 @@ DomainFigureLayout layoutDomainFigure(const std::vector<DomainPane>& panes, uint
 std::vector<DomainStats> renderDomainFigure(DomainView& view, OffscreenTarget& target, const LabelRaster& labels,
                                             const std::vector<DomainPane>& panes, float textPixels, std::vector<uint8_t>& rgba) {
     const VkExtent2D ext = target.extent();
-    const DomainFigureLayout layout = layoutDomainFigure(panes, ext.width, ext.height, textPixels);
+    const DomainFigureLayout layout = layoutDomainFigure(panes, ext.width, ext.height, textPixels, view.deviceName());
     const auto& opts = layout.panes;
     const std::vector<DomainStats> stats = view.draw(target, opts, true);
     rgba = target.pixels();

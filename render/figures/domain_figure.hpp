@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "render/domain/domain_labels.hpp"
@@ -22,19 +23,21 @@ namespace pw::render {
 std::array<uint64_t, 2> shownCounts(const DomainStats& gpu, const DomainPane& pane);
 
 // Where each pane of a `width` x `height` figure goes, with its text size (`textPixels`, 0: from the
-// pane size), label margin and dot size: shared by the PNG and the vector figures.
+// pane size), label margin and dot size: shared by the PNG and the vector figures. Each pane's title
+// names `device`, the device that drew it (none: no name).
 struct DomainFigureLayout {
     std::vector<std::array<float, 4>> rects;
     std::vector<DomainViewOptions> panes;
     std::vector<float> textPixels;
 };
-DomainFigureLayout layoutDomainFigure(const std::vector<DomainPane>& panes, uint32_t width, uint32_t height, float textPixels);
+DomainFigureLayout layoutDomainFigure(const std::vector<DomainPane>& panes, uint32_t width, uint32_t height, float textPixels,
+                                      const std::string& device = {});
 
 // How a label of this role is drawn at `textPixels` (titles larger, edge levels red).
 TextStyle domainLabelStyle(DomainLabel::Role role, float textPixels);
 
 // Draws the panes into `target` (which must read back), labels them with `labels` at `textPixels`
-// line height (0: from the pane size), and returns the statistics per pane; the labelled image is
+// line height (0: from the pane size), titled with the view's device, and returns the statistics per pane; the labelled image is
 // in `rgba` (target-sized).
 std::vector<DomainStats> renderDomainFigure(DomainView& view, OffscreenTarget& target, const LabelRaster& labels,
                                             const std::vector<DomainPane>& panes, float textPixels, std::vector<uint8_t>& rgba);

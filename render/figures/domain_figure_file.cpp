@@ -23,17 +23,31 @@ DomainFigureFile encodeDomainFigure(Device& dev, const std::filesystem::path& ou
     }
     // SVG or PDF: the panes drawn once for their statistics (no pixels read back, no labels
     // rasterised), and the primitives the tessellator made read back, one path each.
-    const DomainFigureLayout layout = layoutDomainFigure(panes, w, h, 0.0f);
+    const DomainFigureLayout layout = layoutDomainFigure(panes, w, h, 0.0f, dev.name());
     target.setReadback(false);
     f.stats = view.draw(target, layout.panes, true);
-    std::vector<DomainPattern> patterns;
-    std::vector<std::array<uint64_t, 2>> counts;
-    for (size_t i = 0; i < panes.size(); ++i) {
-        patterns.push_back(view.capture(panes[i]));
-        counts.push_back(shownCounts(f.stats[i], panes[i]));
-    }
-    f.bytes = domainFigureVector(*vector, w, h, layout, patterns, counts);
+    std::vector<PatternPane> shown;
+    for (size_t i = 0; i < panes.size(); ++i) shown.push_back({view.capture(panes[i]), shownCounts(f.stats[i], panes[i]), {}});
+    f.bytes = patternFigure(*vector, output, w, h, layout, shown);
     return f;
+}
+
+DeviceComparison encodeDeviceComparison(Device& dev, const std::filesystem::path& output, uint32_t w, uint32_t h, const DomainPane& pane,
+                                        const TessPattern& other, const std::string& otherDevice) {
+    DomainView view(dev, VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_UNDEFINED, VK_SAMPLE_COUNT_1_BIT);
+    DeviceComparison c;
+    c.mine = view.capture(pane);
+    c.diff = comparePatterns(c.mine, other);
+    DomainFigureLayout layout = layoutDomainFigure({pane, pane}, w, h, 0.0f);
+    const auto counts = [](const TessPattern& p) { return std::array<uint64_t, 2>{p.distinctPoints().size(), p.primitives()}; };
+    const auto note = [&](size_t differ) { return differ == 0 ? std::string("none differ") : std::to_string(differ) + " differ"; };
+    layout.panes[0].device = dev.name();
+    layout.panes[0].countsNote = note(c.diff.primitivesOnlyA);
+    layout.panes[1].device = otherDevice;
+    layout.panes[1].countsNote = note(c.diff.primitivesOnlyB);
+    c.bytes = patternFigure(vectorFormatFor(output.string()), output, w, h, layout,
+                            {{c.mine, counts(c.mine), c.diff.onlyInA, true}, {other, counts(other), c.diff.onlyInB, true}});
+    return c;
 }
 
 }  // namespace pw::render

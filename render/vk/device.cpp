@@ -374,4 +374,20 @@ void Device::endOneTimeAndWait(VkCommandBuffer cmd) {
     vkFreeCommandBuffers(device_, pool_, 1, &cmd);
 }
 
+std::string Device::driverDescription() const {
+    VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+    VkPhysicalDeviceProperties2 p2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+    p2.pNext = &driver;
+    vkGetPhysicalDeviceProperties2(physical_, &p2);
+    std::string s = driver.driverName;
+    if (driver.driverInfo[0] != 0) s += std::string(s.empty() ? "" : " ") + driver.driverInfo;
+    return s;
+}
+
+std::string Device::apiVersionText() const {
+    const uint32_t v = props_.apiVersion;
+    return std::to_string(VK_API_VERSION_MAJOR(v)) + "." + std::to_string(VK_API_VERSION_MINOR(v)) + "." +
+           std::to_string(VK_API_VERSION_PATCH(v));
+}
+
 }  // namespace pw::render

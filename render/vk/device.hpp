@@ -68,6 +68,10 @@ public:
     const TransformFeedbackFns& transformFeedback() const { return xfb_; }
     const VkPhysicalDeviceProperties& properties() const { return props_; }
     std::string name() const { return props_.deviceName; }
+    // "llvmpipe Mesa 22.3.6": the driver's name and version as it reports them (Vulkan 1.2
+    // driver properties), for stamping captures.
+    std::string driverDescription() const;
+    std::string apiVersionText() const;  // "1.3.255", the device's Vulkan version
     // Evaluation vertices per draw: kCpuDrawVertexBudget on CPU implementations (lavapipe), 0 =
     // unlimited on GPUs, where one draw per basis is fastest.
     uint32_t drawVertexBudget() const;
