@@ -147,7 +147,8 @@ int runDomainRender(const RenderArgs& a, const std::vector<render::DomainPane>& 
             const DomainCounts want = expectedDomainCounts(p.kind, p.levels, p.spacing, float(dev.caps().maxTessLevel));
             const auto shown = render::shownCounts(stats[i], p);
             said << "wrote " << a.output << " pane " << i + 1 << ": " << domainName(p.kind) << " " << spacingName(p.spacing) << ", "
-                 << shown[0] << " vertices, " << shown[1] << " primitives";
+                 << (want.culled ? "culled (an outer level is 0: the tessellator discards the patch, nothing is drawn), " : "") << shown[0]
+                 << " vertices, " << shown[1] << " primitives";
             if (stats[i].valid)
                 said << " (GPU: " << stats[i].primitives << " primitives, " << stats[i].vertices << " evaluations)";
             else
@@ -157,6 +158,7 @@ int runDomainRender(const RenderArgs& a, const std::vector<render::DomainPane>& 
                                   {"spacing", spacingName(p.spacing)},
                                   {"outer", p.levels.outer},
                                   {"inner", p.levels.inner},
+                                  {"culled", want.culled},
                                   {"statisticsValid", stats[i].valid},
                                   {"evaluations", stats[i].vertices},  // evaluation shader invocations
                                   {"primitives", stats[i].primitives},
@@ -262,8 +264,10 @@ void addRenderOptions(CLI::App* cmd, RenderArgs& a) {
     cmd->add_option("file", a.input, "Document (" + formatList(FormatUse::Load, ", ") + "); default: the built-in teapot");
     cmd->add_option("--size", a.size, "Image size WIDTHxHEIGHT (default 1280x720)");
     cmd->add_option("--tess", a.tess, "Uniform tessellation level 1..64 (all outer and inner levels)");
-    cmd->add_option("--outer", a.outer,
-                    "Four outer levels a,b,c,d (edges u0, v0, u1, v1), 1..64; with --domain tri three, isoline two (lines, segments)");
+    cmd->add_option(
+        "--outer", a.outer,
+        "Four outer levels a,b,c,d (edges u0, v0, u1, v1), 1..64; with --domain tri three, isoline two (lines, segments); 0 in a "
+        "domain figure culls the patch");
     cmd->add_option("--inner", a.inner, "Two inner levels a,b (along u, along v), 1..64; with --domain tri one");
     cmd->add_option("--spacing", a.spacing, "equal (or integer, as the notes say) | fractional_odd | fractional_even | pow2");
     cmd->add_option("--adaptive", a.adaptive, "none | distance | screen | orientation");

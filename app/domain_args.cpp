@@ -19,7 +19,7 @@ DomainLevels domainLevelsFromArgs(const std::string& command, DomainKind kind, c
         l.inner = {v, v};
     }
     if (!a.outer.empty()) {
-        const auto v = parseLevels(command, "--outer", a.outer, nOuter);
+        const auto v = parseLevels(command, "--outer", a.outer, nOuter, true);  // 0: the patch is culled
         for (size_t i = 0; i < nOuter; ++i) l.outer[i] = v[i];
     }
     if (!a.inner.empty()) {

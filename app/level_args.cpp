@@ -41,11 +41,14 @@ float parseLevel(const std::string& command, const std::string& option, const st
     return v;
 }
 
-std::vector<float> parseLevels(const std::string& command, const std::string& option, const std::string& text, size_t count) {
+std::vector<float> parseLevels(const std::string& command, const std::string& option, const std::string& text, size_t count,
+                               bool zeroCulls) {
     std::vector<float> out;
     std::stringstream ss(text);
     std::string item;
-    while (std::getline(ss, item, ',')) out.push_back(parseLevel(command, option, item));
+    while (std::getline(ss, item, ','))
+        out.push_back(zeroCulls && isPlainDecimal(item) && std::strtof(item.c_str(), nullptr) == 0.0f ? 0.0f
+                                                                                                      : parseLevel(command, option, item));
     if (out.size() != count)
         badOption(command, option, "expected " + std::to_string(count) + " comma-separated levels, got '" + text + "'");
     return out;

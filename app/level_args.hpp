@@ -17,8 +17,10 @@ bool isPlainDecimal(const std::string& text);
 // A plain decimal number from lo to hi, or badOption naming the option and the range.
 double parseNumber(const std::string& command, const std::string& option, const std::string& text, double lo, double hi);
 float parseLevel(const std::string& command, const std::string& option, const std::string& text);
-// Exactly `count` comma-separated levels.
-std::vector<float> parseLevels(const std::string& command, const std::string& option, const std::string& text, size_t count);
+// Exactly `count` comma-separated levels; with `zeroCulls`, 0 is accepted too (an outer level of 0
+// culls the patch, as the notes' hull shaders use it).
+std::vector<float> parseLevels(const std::string& command, const std::string& option, const std::string& text, size_t count,
+                               bool zeroCulls = false);
 // Non-empty comma-separated items.
 std::vector<std::string> splitList(const std::string& text);
 // "WIDTHxHEIGHT", sides 1..8192 (--size).

@@ -221,3 +221,42 @@ TEST(TeachingLabels, EdgesLabelledWithLevelAndRounding) {
 }
 
 }  // namespace pw::test
+
+namespace pw::test {
+
+// The notes' "a factor of 0 culls the patch": `--outer 0,4,4,4` draws nothing and says so, on the
+// figure, on stdout and in the statistics (GPU counts 0); `--tess 0` is still refused (no inner 0).
+TEST(TeachingCli, OuterLevelZeroCullsThePatchAndSaysSo) {
+    const auto dir = freshTempDir("teach-cull");
+    const auto png = dir / "c.png", stats = dir / "c.json";
+    RunResult r = runCommand(bin() + " render --domain quad --outer 0,4,4,4 --inner 4,4 --size 800x500 -o " + png.string() + " --stats " +
+                             stats.string() + " 2>&1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("culled (an outer level is 0"), std::string::npos) << r.output;
+    const nlohmann::json j = readJson(stats);
+    EXPECT_TRUE(j["panes"][0]["culled"].get<bool>());
+    EXPECT_EQ(j["panes"][0]["primitives"].get<uint64_t>(), 0u);
+    EXPECT_EQ(j["panes"][0]["expectedVertices"].get<uint64_t>(), 0u);
+    const Png img = loadPng(png);
+    ASSERT_EQ(img.w, 800);
+    size_t filled = 0;  // the domain's fill colour (0.80, 0.87, 0.97)
+    for (int y = 0; y < img.h; ++y)
+        for (int x = 0; x < img.w; ++x) filled += std::abs(img.at(x, y)[0] - 204) < 4 && std::abs(img.at(x, y)[2] - 247) < 4;
+    EXPECT_EQ(filled, 0u);
+    // The caption says it: dark text along the bottom where counts would be.
+    size_t text = 0;
+    for (int y = img.h - 70; y < img.h; ++y)
+        for (int x = 0; x < img.w; ++x) text += img.at(x, y)[0] < 80;
+    EXPECT_GT(text, 200u);
+    // The vector figure has no triangle; a triangle domain with an edge of 0 is culled too.
+    r = runCommand(bin() + " render --domain tri --outer 4,0,4 --inner 4 -o " + (dir / "c.svg").string() + " 2>&1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("culled"), std::string::npos) << r.output;
+    const std::string svg = readBytes(dir / "c.svg");
+    ASSERT_FALSE(svg.empty());
+    EXPECT_EQ(svg.find("fill:rgb(80."), std::string::npos);  // no triangle in the domain's fill colour
+    r = runCommand(bin() + " render --domain quad --tess 0 -o " + (dir / "t.png").string() + " 2>&1");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+}
+
+}  // namespace pw::test

@@ -95,8 +95,10 @@ std::vector<DomainLabel> domainLabels(const DomainViewOptions& o, uint64_t verti
     cap.y = bottom[1] + gap + textPixels * 1.25f;
     cap.ax = 0.5f;
     const std::string settings = (inner.empty() ? "" : inner + "  \u00b7  ") + std::string(spacingName(o.spacing));
-    const std::string counts = std::to_string(vertices) + " vertices, " + std::to_string(primitives) + " " + primitiveWord +
-                               (o.countsNote.empty() ? "" : ", " + o.countsNote);
+    const bool culled = expectedDomainCounts(o.kind, o.levels, o.spacing).culled;
+    const std::string counts = culled ? "culled: an outer level of 0 discards the patch"
+                                      : std::to_string(vertices) + " vertices, " + std::to_string(primitives) + " " + primitiveWord +
+                                            (o.countsNote.empty() ? "" : ", " + o.countsNote);
     cap.text = settings + "  \u00b7  " + counts;
     if (widthOf && widthOf(cap.text) > o.rect[2] - textPixels) {  // two lines where one does not fit the pane
         cap.text = settings;
