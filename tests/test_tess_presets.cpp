@@ -11,7 +11,7 @@ using namespace pw;
 
 TEST(TessPresets, EveryFactorSetOfTheNotesWithAUniqueId) {
     const auto& ps = tessPresets();
-    EXPECT_EQ(ps.size(), 13u);  // 5 quad, 6 triangle, the fractional example twice
+    EXPECT_EQ(ps.size(), 19u);  // 5 quad, 9 triangle, the AMD tutorial's 3, the fractional example twice
     std::set<std::string> ids;
     for (const TessPreset& p : ps) {
         EXPECT_TRUE(ids.insert(p.name).second) << p.name;

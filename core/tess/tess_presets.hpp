@@ -21,8 +21,8 @@ struct TessPreset {
     std::string note;  // one line for the tooltip / figure caption
 };
 
-// Every factor-set preset, quad first, then triangle, then the fractional example (twice: integer
-// and fractional_odd).
+// Every factor-set preset, quad first, then triangle (the AMD tutorial's levels 1.0, 1.5 and 3.0
+// under fractional_odd among them), then the fractional example (twice: integer and fractional_odd).
 const std::vector<TessPreset>& tessPresets();
 const TessPreset* findTessPreset(std::string_view name);
 
