@@ -113,7 +113,19 @@ render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& do
             "combs are drawn on curves and on the isocurve overlay, and the document has no curves: add isocurves "
             "(--overlay isocurves,combs)");
     const double aspect = double(width) / double(height);
-    if (!a.view.empty()) {
+    if (!a.eye.empty() || !a.target.empty()) {
+        if (!a.view.empty()) bad(a.eye.empty() ? "--target" : "--eye", "use either --view or --eye/--target");
+        const Bounds box = computeBounds(doc.points);
+        const glm::dvec3 centre = 0.5 * (glm::dvec3(box.min.x, box.min.y, box.min.z) + glm::dvec3(box.max.x, box.max.y, box.max.z));
+        const glm::dvec3 target = a.target.empty() ? centre : parsePoint("render", "--target", a.target);
+        if (a.eye.empty()) {  // the document's view direction and distance, aimed at the target
+            o.camera.target = {target.x, target.y, target.z};
+        } else {
+            const auto cam = lookFrom(o.camera, parsePoint("render", "--eye", a.eye), target);
+            if (!cam) bad("--eye", "the eye is at the target; give two different points");
+            o.camera = *cam;
+        }
+    } else if (!a.view.empty()) {
         auto cam = applyNamedView(doc.camera, a.view);
         if (!cam) bad("--view", "'" + a.view + "' is not one of front, back, left, right, top, bottom, iso");
         o.camera = frameBounds(*cam, computeBounds(doc.points), aspect);
@@ -282,6 +294,8 @@ void addRenderOptions(CLI::App* cmd, RenderArgs& a) {
     cmd->add_option("--isolines", a.isolines,
                     "Isoline levels LINES,SEGMENTS for curves and the isocurve overlay (default: the document's, 2,16)");
     cmd->add_option("--view", a.view, "front | back | left | right | top | bottom | iso (framed to the model)");
+    cmd->add_option("--eye", a.eye, "Camera position X,Y,Z in model units, looking at --target (instead of --view)");
+    cmd->add_option("--target", a.target, "Point X,Y,Z the camera looks at (default: the centre of the model's bounds)");
     cmd->add_option("--stats", a.stats, "Write frame statistics (triangles, GPU time, ...) as JSON to this file");
     cmd->add_option("--domain", a.domain, "Draw the parametric domain instead: quad | tri | isoline (levels from --tess/--outer/--inner)");
     cmd->add_option("--preset", a.preset,

@@ -72,6 +72,15 @@ std::array<unsigned, 2> parseImageSize(const std::string& command, const std::st
     return {w, h};
 }
 
+glm::dvec3 parsePoint(const std::string& command, const std::string& option, const std::string& text) {
+    std::vector<double> v;
+    std::stringstream ss(text);
+    std::string item;
+    while (std::getline(ss, item, ',')) v.push_back(parseNumber(command, option, item, -limits::kMaxCoordinate, limits::kMaxCoordinate));
+    if (v.size() != 3 || text.back() == ',') badOption(command, option, "expected a point X,Y,Z, got '" + text + "'");
+    return {v[0], v[1], v[2]};
+}
+
 Spacing parseSpacingOption(const std::string& command, const std::string& option, const std::string& text) {
     auto s = parseSpacing(text);
     if (!s) badOption(command, option, "'" + text + "' is not one of equal (or integer), fractional_odd, fractional_even, pow2");

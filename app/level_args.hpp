@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <glm/vec3.hpp>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,8 @@ std::vector<float> parseLevels(const std::string& command, const std::string& op
 std::vector<std::string> splitList(const std::string& text);
 // "WIDTHxHEIGHT", sides 1..8192 (--size).
 std::array<unsigned, 2> parseImageSize(const std::string& command, const std::string& text);
+// "X,Y,Z": three plain decimals within ±1e9 (--eye, --target).
+glm::dvec3 parsePoint(const std::string& command, const std::string& option, const std::string& text);
 Spacing parseSpacingOption(const std::string& command, const std::string& option, const std::string& text);
 
 // `--compare`: 1 to 4 comma-separated panes, each a partitioning with an optional uniform level

@@ -260,3 +260,39 @@ TEST(TeachingCli, OuterLevelZeroCullsThePatchAndSaysSo) {
 }
 
 }  // namespace pw::test
+
+namespace pw::test {
+
+// `--eye X,Y,Z --target X,Y,Z` place the camera for near/far figures (render and sweep): the same
+// view from twice as far covers about a quarter of the pixels; bad points are exit 2.
+TEST(TeachingCli, EyeAndTargetPlaceTheCamera) {
+    const auto dir = freshTempDir("teach-eye");
+    const auto coverage = [&](const std::string& eye) {
+        const auto png = dir / "e.png";
+        const RunResult r = runCommand(bin() + " render " + (dataDir() / "teapot.bpt").string() + " --tess 4 --size 320x180 --eye " + eye +
+                                       " --target 0,0,1.5 -o " + png.string() + " 2>&1");
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        const Png img = loadPng(png);
+        size_t n = 0;  // pixels not of the background (its top-left pixel)
+        for (int y = 0; y < img.h; ++y)
+            for (int x = 0; x < img.w; ++x)
+                n += std::abs(img.at(x, y)[0] - img.at(0, 0)[0]) + std::abs(img.at(x, y)[2] - img.at(0, 0)[2]) > 30;
+        return double(n);
+    };
+    const double near = coverage("0,-12,6"), far = coverage("0,-24,12");
+    EXPECT_GT(near, 2000.0);
+    EXPECT_NEAR(far / near, 0.25, 0.08);
+    const RunResult sweep =
+        runCommand(bin() + " sweep --eye 0,-12,6 --from 2 --to 3 --fps 2 --seconds 1 --size 160x90 -o " + (dir / "s").string() + "/ 2>&1");
+    EXPECT_EQ(sweep.exitCode, 0) << sweep.output;
+    for (const char* bad : {"1,2", "1,2,x", "1,2,3,4", "0,0,1e10"}) {
+        const RunResult r = runCommand(bin() + " render --eye " + bad + " -o " + (dir / "x.png").string() + " 2>&1");
+        EXPECT_EQ(r.exitCode, 2) << bad << ": " << r.output;
+        EXPECT_NE(r.output.find("--eye"), std::string::npos) << r.output;
+    }
+    const RunResult both = runCommand(bin() + " render --eye 0,-9,3 --view top -o " + (dir / "x.png").string() + " 2>&1");
+    EXPECT_EQ(both.exitCode, 2) << both.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+}
+
+}  // namespace pw::test

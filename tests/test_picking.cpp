@@ -143,3 +143,25 @@ TEST(EditorPicking, DragHelpers) {
     EXPECT_DOUBLE_EQ(niceGridStep(7.0), 0.5);
     EXPECT_NEAR(niceGridStep(0.03), 0.002, 1e-15);
 }
+
+// `render --eye/--target` (issue 41): the orbit camera built from an eye and a target puts its eye
+// there and projects the target to the image centre, for z-up and y-up documents alike.
+TEST(CameraLookFrom, EyeAndTargetAreWhereTheyWereAsked) {
+    for (bool zUp : {true, false})
+        for (const glm::dvec3 eye : {glm::dvec3(0, -110, 45), glm::dvec3(3, 4, -5), glm::dvec3(-7, 0.5, 2), glm::dvec3(0.001, 0, 9)}) {
+            Camera base = testCamera(false);
+            base.zUp = zUp;
+            const glm::dvec3 target(1, 2, 0.5);
+            const auto cam = lookFrom(base, eye, target);
+            ASSERT_TRUE(cam.has_value());
+            const glm::dvec3 got = cameraEye(*cam);
+            EXPECT_NEAR(glm::length(got - eye), 0.0, 1e-9 * glm::length(eye - target))
+                << zUp << " " << eye.x << "," << eye.y << "," << eye.z;
+            const auto px = projectToPixel(viewMatrices(*cam, 16.0 / 9.0), target, 1600, 900);
+            ASSERT_TRUE(px.has_value());
+            EXPECT_NEAR(px->x, 800.0, 1e-3);  // float matrices
+            EXPECT_NEAR(px->y, 450.0, 1e-3);
+            EXPECT_EQ(cam->fovYDeg, base.fovYDeg);
+        }
+    EXPECT_FALSE(lookFrom(testCamera(false), glm::dvec3(1, 1, 1), glm::dvec3(1, 1, 1)).has_value());
+}

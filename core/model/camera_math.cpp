@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/ext/matrix_clip_space.hpp>
 #include <glm/ext/matrix_transform.hpp>
+#include <glm/geometric.hpp>
 
 namespace pw {
 namespace {
@@ -28,6 +29,19 @@ glm::dvec3 cameraEye(const Camera& cam) {
     orbitFrame(cam, dir, up);
     const glm::dvec3 target{cam.target[0], cam.target[1], cam.target[2]};
     return target + dir * cam.distance;
+}
+
+std::optional<Camera> lookFrom(Camera cam, const glm::dvec3& eye, const glm::dvec3& target) {
+    glm::dvec3 d = eye - target;
+    const double dist = glm::length(d);
+    if (!(dist > 1e-12) || !std::isfinite(dist)) return std::nullopt;
+    d /= dist;
+    if (!cam.zUp) d = {d.x, -d.z, d.y};  // y-up world -> the z-up frame the angles are in
+    cam.target = {target.x, target.y, target.z};
+    cam.distance = dist;
+    cam.pitchDeg = std::asin(std::clamp(d.z, -1.0, 1.0)) * 180.0 / kPi;
+    cam.yawDeg = std::abs(d.z) > 1.0 - 1e-12 ? cam.yawDeg : std::atan2(d.x, -d.y) * 180.0 / kPi;
+    return cam;
 }
 
 ViewMatrices viewMatrices(const Camera& cam, double aspect, double nearPlane, double farPlane) {

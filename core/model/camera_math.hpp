@@ -32,6 +32,10 @@ ViewMatrices viewMatrices(const Camera& cam, double aspect, double nearPlane = 0
 // Named views: front, back, left, right, top, bottom, iso. Sets yaw and pitch only.
 std::optional<Camera> applyNamedView(Camera cam, std::string_view name);
 
+// The orbit camera whose eye is at `eye` looking at `target` (yaw, pitch and distance set; the up
+// axis, field of view and projection kept); nullopt when the two coincide.
+std::optional<Camera> lookFrom(Camera cam, const glm::dvec3& eye, const glm::dvec3& target);
+
 // Moves target and distance so that the box fills the view (margin > 1 leaves room around it).
 Camera frameBounds(Camera cam, const Bounds& box, double aspect, double margin = 1.15);
 
