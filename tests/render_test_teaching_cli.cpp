@@ -204,11 +204,30 @@ TEST(TeachingLabels, EdgesLabelledWithLevelAndRounding) {
         if (l.role == render::DomainLabel::Role::Edge) edges.push_back(l.text);
         if (l.role == render::DomainLabel::Role::Caption) caption = l.text;
     }
-    ASSERT_EQ(edges.size(), 3u);
-    EXPECT_EQ(edges[0], "4.5 \u2192 5");  // fractional_odd: next odd
-    EXPECT_EQ(edges[1], "4 \u2192 5");
-    EXPECT_EQ(edges[2], "1");
-    EXPECT_NE(caption.find("inner 3"), std::string::npos);
+    // fractional_odd: the next odd count, and how far the two short segments have grown, the notes'
+    // (f - 3) / (5 - 3), on a line below on the side edges.
+    ASSERT_EQ(edges.size(), 5u);
+    EXPECT_EQ(edges[0], "4.5 \u2192 5");
+    EXPECT_EQ(edges[1], "75 % slid");
+    EXPECT_EQ(edges[2], "4 \u2192 5");
+    EXPECT_EQ(edges[3], "50 % slid");
+    EXPECT_EQ(edges[4], "1");
+    EXPECT_NE(caption.find("inner 3  "), std::string::npos) << caption;  // odd already: no rounding
+    // The inner levels' rounding (an inner 1 with a finer edge counts as 1 + epsilon) and slide; the
+    // bottom edge's slide beside it.
+    o.kind = DomainKind::Quad;
+    o.levels = {{4, 4.4f, 4, 4}, {4.4f, 1.0f}};
+    std::vector<std::string> quadEdges;
+    for (const auto& l : render::domainLabels(o, 10, 12, 16)) {
+        if (l.role == render::DomainLabel::Role::Edge) quadEdges.push_back(l.text);
+        if (l.role == render::DomainLabel::Role::Caption && l.text.find("inner") != std::string::npos) caption = l.text;
+    }
+    EXPECT_NE(caption.find("inner 4.4 \u2192 5 (70 % slid), 1 \u2192 3"), std::string::npos) << caption;
+    EXPECT_EQ(quadEdges[2], "4.4 \u2192 5 (70 % slid)");
+    o.spacing = Spacing::FractionalEven;
+    for (const auto& l : render::domainLabels(o, 10, 12, 16))
+        if (l.role == render::DomainLabel::Role::Caption && l.text.find("inner") != std::string::npos) caption = l.text;
+    EXPECT_NE(caption.find("inner 4.4 \u2192 6 (20 % slid), 1 \u2192 2"), std::string::npos) << caption;
     EXPECT_NE(caption.find("10 vertices, 12 triangles"), std::string::npos);
     EXPECT_EQ(render::formatLevel(4.25f), "4.25");
     EXPECT_EQ(render::formatLevel(16.0f), "16");

@@ -1,7 +1,9 @@
 #include "render/domain/domain_labels.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 namespace pw::render {
 
@@ -19,13 +21,28 @@ float domainLabelMargin(float textPixels) { return std::ceil(textPixels * 4.5f);
 
 namespace {
 
-// "4.5 → 5" where the partitioning rounds the level, else "4.5".
-std::string edgeText(float level, Spacing spacing, bool integerSpacing, float maxLevel) {
-    const float l = controlShaderLevel(level, spacing);
-    const int seg = segmentCount(l, integerSpacing ? Spacing::Equal : tessellatorSpacing(spacing), maxLevel);
+// "4.5 → 5" where the partitioning rounds the level to `seg` segments, else "4.5".
+std::string roundedText(float level, int seg) {
     std::string t = formatLevel(level);
     if (float(seg) != level) t += " \u2192 " + std::to_string(seg);
     return t;
+}
+
+std::string edgeText(float level, Spacing spacing, bool integerSpacing, float maxLevel) {
+    const float l = controlShaderLevel(level, spacing);
+    return roundedText(level, segmentCount(l, integerSpacing ? Spacing::Equal : tessellatorSpacing(spacing), maxLevel));
+}
+
+// "75 % slid": how far the two short segments of a fractional partitioning have grown (the notes'
+// (f − 3) / (5 − 3) for a level between 3 and 5 under fractional_odd); empty where they are full
+// length or there are none (equal, pow2, whole levels of the partitioning's parity).
+std::string slideText(float level, Spacing spacing, int seg) {
+    const Spacing ts = tessellatorSpacing(spacing);
+    if (spacing == Spacing::Pow2 || ts == Spacing::Equal || seg < 2) return {};
+    const float f = std::max(level, ts == Spacing::FractionalEven ? 2.0f : 1.0f);
+    const float pct = std::clamp((f - float(seg - 2)) * 50.0f, 0.0f, 100.0f);
+    if (pct >= 99.5f || pct < 0.5f) return {};
+    return std::to_string(int(std::lround(pct))) + " % slid";
 }
 
 // "quad domain · llvmpipe (LLVM 15.0.6, 256 bits)" where it fits the pane; else without the
@@ -49,6 +66,14 @@ std::vector<DomainLabel> domainLabels(const DomainViewOptions& o, uint64_t verti
     const float gap = std::ceil(textPixels * 0.45f);
     const float maxLevel = 64.0f;
     const auto& L = o.levels;
+    const DomainCounts rules = expectedDomainCounts(o.kind, L, o.spacing, maxLevel);
+    // An edge's level (and rounding); its slide percentage beside it on the top and bottom edges,
+    // on a line below it on the side edges (where the margin is narrow).
+    const auto edgeLabel = [&](float level) {
+        const float l = controlShaderLevel(level, o.spacing);
+        const int seg = segmentCount(l, tessellatorSpacing(o.spacing), maxLevel);
+        return std::pair{roundedText(level, seg), slideText(l, o.spacing, seg)};
+    };
     const auto edge = [&](float dx, float dy, float ax, float ay, std::string text) {
         const auto p = at.toPixels(dx, dy);
         DomainLabel l;
@@ -59,25 +84,44 @@ std::vector<DomainLabel> domainLabels(const DomainViewOptions& o, uint64_t verti
         l.text = std::move(text);
         out.push_back(std::move(l));
     };
+    const auto slidEdge = [&](float dx, float dy, float ax, float ay, float level) {
+        const auto [text, slide] = edgeLabel(level);
+        const bool side = ay == 0.5f;
+        edge(dx, dy, ax, ay, slide.empty() || side ? text : text + " (" + slide + ")");
+        if (side && !slide.empty()) {
+            DomainLabel under = out.back();
+            under.text = slide;
+            under.y += textPixels * 1.1f;
+            out.push_back(std::move(under));
+        }
+    };
+    // "inner 4.4 → 5 (70 % slid)": each inner level as the tessellator rounds it (an inner 1 with a
+    // finer edge counts as 1 + ε: 2 segments, or 3 under fractional_odd).
+    const auto innerText = [&](int i) {
+        const float l = controlShaderLevel(L.inner[size_t(i)], o.spacing);
+        const int seg = rules.innerSegments[size_t(i)];
+        const std::string slide = slideText(l, o.spacing, seg);
+        return roundedText(L.inner[size_t(i)], seg) + (slide.empty() ? "" : " (" + slide + ")");
+    };
     std::string inner;
     const char* primitiveWord = "triangles";
     switch (o.kind) {
         case DomainKind::Quad:
             // outer[0] u = 0 (left), [1] v = 0 (bottom), [2] u = 1 (right), [3] v = 1 (top).
-            edge(0.0f, 0.5f, 1.0f, 0.5f, edgeText(L.outer[0], o.spacing, false, maxLevel));
-            edge(0.5f, 0.0f, 0.5f, 0.0f, edgeText(L.outer[1], o.spacing, false, maxLevel));
-            edge(1.0f, 0.5f, 0.0f, 0.5f, edgeText(L.outer[2], o.spacing, false, maxLevel));
-            edge(0.5f, 1.0f, 0.5f, 1.0f, edgeText(L.outer[3], o.spacing, false, maxLevel));
-            inner = "inner " + formatLevel(L.inner[0]) + ", " + formatLevel(L.inner[1]);
+            slidEdge(0.0f, 0.5f, 1.0f, 0.5f, L.outer[0]);
+            slidEdge(0.5f, 0.0f, 0.5f, 0.0f, L.outer[1]);
+            slidEdge(1.0f, 0.5f, 0.0f, 0.5f, L.outer[2]);
+            slidEdge(0.5f, 1.0f, 0.5f, 1.0f, L.outer[3]);
+            inner = "inner " + innerText(0) + ", " + innerText(1);
             break;
         case DomainKind::Triangle: {
             // Corners (shaders/domain.tese): u = 1 bottom left, v = 1 bottom right, w = 1 top. Edge
             // u = 0 is the right side, v = 0 the left side, w = 0 the bottom.
             const float h = 0.8660254f;
-            edge(0.75f, 0.5f * h, 0.0f, 0.5f, edgeText(L.outer[0], o.spacing, false, maxLevel));
-            edge(0.25f, 0.5f * h, 1.0f, 0.5f, edgeText(L.outer[1], o.spacing, false, maxLevel));
-            edge(0.5f, 0.0f, 0.5f, 0.0f, edgeText(L.outer[2], o.spacing, false, maxLevel));
-            inner = "inner " + formatLevel(L.inner[0]);
+            slidEdge(0.75f, 0.5f * h, 0.0f, 0.5f, L.outer[0]);
+            slidEdge(0.25f, 0.5f * h, 1.0f, 0.5f, L.outer[1]);
+            slidEdge(0.5f, 0.0f, 0.5f, 0.0f, L.outer[2]);
+            inner = "inner " + innerText(0);
             break;
         }
         case DomainKind::Isoline:
@@ -95,7 +139,7 @@ std::vector<DomainLabel> domainLabels(const DomainViewOptions& o, uint64_t verti
     cap.y = bottom[1] + gap + textPixels * 1.25f;
     cap.ax = 0.5f;
     const std::string settings = (inner.empty() ? "" : inner + "  \u00b7  ") + std::string(spacingName(o.spacing));
-    const bool culled = expectedDomainCounts(o.kind, o.levels, o.spacing).culled;
+    const bool culled = rules.culled;
     const std::string counts = culled ? "culled: an outer level of 0 discards the patch"
                                       : std::to_string(vertices) + " vertices, " + std::to_string(primitives) + " " + primitiveWord +
                                             (o.countsNote.empty() ? "" : ", " + o.countsNote);
