@@ -34,7 +34,8 @@ std::vector<render::DomainPane> captureSets(const CaptureArgs& a) {
         if (!a.preset.empty()) badOption("capture", "--preset", "give either --preset or --domain");
         const auto kind = parseDomain(a.domain);
         if (!kind) badOption("capture", "--domain", "'" + a.domain + "' is not one of quad, tri, isoline");
-        base.push_back({*kind, domainLevelsFromArgs("capture", *kind, {a.domain, "", "", a.tess, a.outer, a.inner, ""}), Spacing::Equal});
+        base.push_back(
+            {*kind, domainLevelsFromArgs("capture", *kind, {a.domain, "", "", a.tess, a.outer, a.inner, "", ""}), Spacing::Equal});
     } else {
         if (!a.tess.empty() || !a.outer.empty() || !a.inner.empty()) badOption("capture", "--outer", "levels go with --domain");
         for (const TessPreset& p : tessPresets())

@@ -270,7 +270,7 @@ int validationExitCode(const render::Device& dev, const std::string& command) {
     return 1;
 }
 
-DomainArgs domainArgs(const RenderArgs& a) { return {a.domain, a.preset, a.compare, a.tess, a.outer, a.inner, a.spacing}; }
+DomainArgs domainArgs(const RenderArgs& a) { return {a.domain, a.preset, a.compare, a.tess, a.outer, a.inner, a.spacing, a.origin}; }
 
 void addRenderOptions(CLI::App* cmd, RenderArgs& a) {
     cmd->add_option("file", a.input, "Document (" + formatList(FormatUse::Load, ", ") + "); default: the built-in teapot");
@@ -298,6 +298,9 @@ void addRenderOptions(CLI::App* cmd, RenderArgs& a) {
     cmd->add_option("--target", a.target, "Point X,Y,Z the camera looks at (default: the centre of the model's bounds)");
     cmd->add_option("--stats", a.stats, "Write frame statistics (triangles, GPU time, ...) as JSON to this file");
     cmd->add_option("--domain", a.domain, "Draw the parametric domain instead: quad | tri | isoline (levels from --tess/--outer/--inner)");
+    cmd->add_option("--origin", a.origin,
+                    "Domain figure: upper-left (the D3D notes' and Vulkan's default: v = 0 on top, edges tagged [i] = "
+                    "SV_TessFactor[i] = gl_TessLevelOuter[i]) or lower-left (GL, the default)");
     cmd->add_option("--preset", a.preset,
                     "Domain figure of the notes' factor sets: preset id(s), comma-separated (see `patchwork presets`)");
     cmd->add_option(

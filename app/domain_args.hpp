@@ -14,6 +14,7 @@ struct DomainArgs {
     std::string preset;   // comma-separated preset ids (one pane each)
     std::string compare;  // comma-separated partitionings (one pane each, same levels)
     std::string tess, outer, inner, spacing;
+    std::string origin;  // upper-left | lower-left (default)
 };
 
 bool wantsDomain(const DomainArgs& a);

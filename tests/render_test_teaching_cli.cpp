@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "core/tess/tess_presets.hpp"
@@ -312,6 +313,54 @@ TEST(TeachingCli, EyeAndTargetPlaceTheCamera) {
     const RunResult both = runCommand(bin() + " render --eye 0,-9,3 --view top -o " + (dir / "x.png").string() + " 2>&1");
     EXPECT_EQ(both.exitCode, 2) << both.output;
     EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+}
+
+}  // namespace pw::test
+
+namespace pw::test {
+
+// `--origin upper-left`: the D3D notes' and Vulkan's default picture, v = 0 on top, each edge tagged
+// with its index (SV_TessFactor[i] = gl_TessLevelOuter[i]): the notes' {1,2,3,4 | 4,4} has its
+// 2-segment edge [1] on top. The domain is the lower-left picture mirrored, pixel for pixel.
+TEST(TeachingCli, UpperLeftOriginPutsEdgeOneOnTopTagged) {
+    render::DomainViewOptions o;
+    o.kind = DomainKind::Quad;
+    o.levels = {{1, 2, 3, 4}, {4, 4}};
+    o.rect = {0, 0, 400, 400};
+    o.upperLeft = true;
+    std::map<std::string, float> y;
+    for (const auto& l : render::domainLabels(o, 19, 26, 16))
+        if (l.role == render::DomainLabel::Role::Edge) y[l.text] = l.y;
+    ASSERT_EQ(y.size(), 4u);
+    EXPECT_LT(y.at("[1] 2"), y.at("[0] 1"));  // on top
+    EXPECT_GT(y.at("[3] 4"), y.at("[2] 3"));  // at the bottom
+    const render::DomainPlacement at = render::placeDomain(o);
+    EXPECT_LT(at.toPixels(0.5f, 0.0f)[1], at.toPixels(0.5f, 1.0f)[1]);
+
+    const auto dir = freshTempDir("teach-origin");
+    const auto ul = dir / "ul.png", ll = dir / "ll.png";
+    for (const auto& [file, origin] : {std::pair{ul, "upper-left"}, std::pair{ll, "lower-left"}}) {
+        const RunResult r = runCommand(bin() + " render --preset quad-1_2_3_4-4_4 --origin " + std::string(origin) + " --size 600x600 -o " +
+                                       file.string() + " 2>&1");
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+    }
+    const Png a = loadPng(ul), b = loadPng(ll);
+    ASSERT_EQ(a.w, 600);
+    ASSERT_EQ(b.w, 600);
+    const render::DomainFigureLayout layout = render::layoutDomainFigure({{DomainKind::Quad, o.levels, Spacing::Equal}}, 600, 600, 0.0f);
+    const render::DomainPlacement p = render::placeDomain(layout.panes[0]);
+    const int x0 = int(std::ceil(p.originX)) + 2, x1 = int(p.originX + p.size) - 2;
+    const int top = int(std::ceil(p.originY - p.size)) + 2, bottom = int(p.originY) - 2;
+    double diff = 0.0;
+    size_t n = 0;
+    for (int yy = top; yy <= bottom; ++yy)
+        for (int x = x0; x <= x1; ++x, ++n) {
+            const int mirrored = int(std::lround(2.0 * p.originY - p.size)) - yy - 1;
+            for (int c = 0; c < 3; ++c) diff += std::abs(int(a.at(x, yy)[c]) - int(b.at(x, mirrored)[c]));
+        }
+    EXPECT_LT(diff / double(3 * n), 6.0) << "mean difference per channel";
+    const RunResult bad = runCommand(bin() + " render --preset quad-1_2_3_4-4_4 --origin top -o " + (dir / "x.png").string() + " 2>&1");
+    EXPECT_EQ(bad.exitCode, 2) << bad.output;
 }
 
 }  // namespace pw::test

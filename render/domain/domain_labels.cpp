@@ -75,6 +75,7 @@ std::vector<DomainLabel> domainLabels(const DomainViewOptions& o, uint64_t verti
         return std::pair{roundedText(level, seg), slideText(l, o.spacing, seg)};
     };
     const auto edge = [&](float dx, float dy, float ax, float ay, std::string text) {
+        if (at.flipY && ay != 0.5f) ay = 1.0f - ay;  // the upper-left origin: v = 0 on top
         const auto p = at.toPixels(dx, dy);
         DomainLabel l;
         l.x = p[0] + (ax == 1.0f ? -gap : ax == 0.0f ? gap : 0.0f);
@@ -84,8 +85,11 @@ std::vector<DomainLabel> domainLabels(const DomainViewOptions& o, uint64_t verti
         l.text = std::move(text);
         out.push_back(std::move(l));
     };
+    int edgeIndex = 0;  // the upper-left pictures tag each edge: [i] is SV_TessFactor[i] and gl_TessLevelOuter[i]
+    const auto tag = [&](std::string text) { return o.upperLeft ? "[" + std::to_string(edgeIndex++) + "] " + text : text; };
     const auto slidEdge = [&](float dx, float dy, float ax, float ay, float level) {
-        const auto [text, slide] = edgeLabel(level);
+        auto [text, slide] = edgeLabel(level);
+        text = tag(text);
         const bool side = ay == 0.5f;
         edge(dx, dy, ax, ay, slide.empty() || side ? text : text + " (" + slide + ")");
         if (side && !slide.empty()) {
@@ -126,13 +130,13 @@ std::vector<DomainLabel> domainLabels(const DomainViewOptions& o, uint64_t verti
         }
         case DomainKind::Isoline:
             // outer[0]: how many lines (always integer spacing); outer[1]: segments per line.
-            edge(0.0f, 0.5f, 1.0f, 0.5f, edgeText(L.outer[0], o.spacing, true, maxLevel) + " lines");
-            edge(0.5f, 0.0f, 0.5f, 0.0f, edgeText(L.outer[1], o.spacing, false, maxLevel) + " segments");
+            edge(0.0f, 0.5f, 1.0f, 0.5f, tag(edgeText(L.outer[0], o.spacing, true, maxLevel) + " lines"));
+            edge(0.5f, 0.0f, 0.5f, 0.0f, tag(edgeText(L.outer[1], o.spacing, false, maxLevel) + " segments"));
             primitiveWord = "segments";
             break;
     }
     // Caption under the domain (below the bottom edge label), title above it.
-    const auto bottom = at.toPixels(0.5f, 0.0f);
+    const auto bottom = at.toPixels(0.5f, at.flipY ? 1.0f : 0.0f);
     DomainLabel cap;
     cap.role = DomainLabel::Role::Caption;
     cap.x = bottom[0];
@@ -152,7 +156,7 @@ std::vector<DomainLabel> domainLabels(const DomainViewOptions& o, uint64_t verti
     }
     out.push_back(cap);
     const float domainHeight = o.kind == DomainKind::Triangle ? 0.8660254f : 1.0f;
-    const auto top = at.toPixels(0.5f, domainHeight);
+    const auto top = at.toPixels(0.5f, at.flipY ? 0.0f : domainHeight);
     DomainLabel title;
     title.role = DomainLabel::Role::Title;
     title.x = top[0];

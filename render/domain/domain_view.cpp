@@ -55,6 +55,7 @@ DomainPlacement placeDomain(const DomainViewOptions& o) {
     p.size = std::max(1.0f, std::min(w, h / domainH));
     p.originX = o.rect[0] + 0.5f * (o.rect[2] - p.size);
     p.originY = o.rect[1] + 0.5f * (o.rect[3] + domainH * p.size);
+    p.flipY = o.upperLeft && o.kind != DomainKind::Triangle;
     return p;
 }
 
@@ -111,7 +112,9 @@ void DomainView::recordPass(VkCommandBuffer cmd, const DomainViewOptions& o, int
     const float sx = 2.0f / float(extent.width), sy = 2.0f / float(extent.height);
     gpu::DomainPush push{};
     setDomainLevels(push, o);
-    push.transform = {at.size * sx, -at.size * sy, at.originX * sx - 1.0f, at.originY * sy - 1.0f};
+    // The upper-left origin draws v downwards: pixels (originX + x size, originY - size + y size).
+    push.transform = at.flipY ? glm::vec4(at.size * sx, at.size * sy, at.originX * sx - 1.0f, (at.originY - at.size) * sy - 1.0f)
+                              : glm::vec4(at.size * sx, -at.size * sy, at.originX * sx - 1.0f, at.originY * sy - 1.0f);
     push.color = {color[0], color[1], color[2], color[3]};
     push.point = {o.pointSize, 0, 0, 0};
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p);

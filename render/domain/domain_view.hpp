@@ -27,6 +27,11 @@ struct DomainPane {
     DomainKind kind = DomainKind::Quad;
     DomainLevels levels;
     Spacing spacing = Spacing::Equal;
+    // The D3D notes' and Vulkan's default (VK_TESSELLATION_DOMAIN_ORIGIN_UPPER_LEFT) picture: v
+    // grows downwards, so the edge v = 0 (outer[1], SV_TessFactor[1]) is on top, and every edge is
+    // tagged with its index. Off: GL's lower-left origin, v up. Triangles are drawn the same way
+    // either way (tagged when on).
+    bool upperLeft = false;
 };
 
 // The pane's levels in the push constants the domain shaders read: outer, inner and the pow2 flag
@@ -58,9 +63,10 @@ struct DomainStats {
 // the options' rectangle. Domain coordinates (x right, y up, [0,1]^2) map to target pixels as
 // px = origin + (x * size, -y * size).
 struct DomainPlacement {
-    float originX = 0, originY = 0;  // pixel position of domain (0, 0)
+    float originX = 0, originY = 0;  // pixel position of domain (0, 0) as drawn with y up
     float size = 0;                  // pixels per domain unit
-    std::array<float, 2> toPixels(float x, float y) const { return {originX + x * size, originY - y * size}; }
+    bool flipY = false;              // the upper-left origin: y = 0 on top
+    std::array<float, 2> toPixels(float x, float y) const { return {originX + x * size, originY - (flipY ? 1.0f - y : y) * size}; }
 };
 DomainPlacement placeDomain(const DomainViewOptions& o);
 
