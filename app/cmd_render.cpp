@@ -22,6 +22,7 @@
 #include "render/figures/domain_figure.hpp"
 #include "render/figures/domain_figure_file.hpp"
 #include "render/figures/figure_vector.hpp"
+#include "render/figures/level_legend.hpp"
 #include "render/figures/model_figure.hpp"
 #include "render/scene/renderer.hpp"
 #include "render/targets/offscreen_target.hpp"
@@ -88,7 +89,7 @@ render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& do
     if (a.cull) o.tess.cullBackfaces = true;
     if (!a.shading.empty()) {
         std::optional<ShadingMode> s = a.shading == "curvature" ? std::optional(ShadingMode::GaussCurvature) : parseShading(a.shading);
-        if (!s) bad("--shading", "'" + a.shading + "' is not one of lit, normal, patch, uv, zebra, curvature, gauss, mean");
+        if (!s) bad("--shading", "'" + a.shading + "' is not one of lit, normal, patch, uv, zebra, curvature, gauss, mean, level");
         o.display.shading = *s;
     }
     for (const std::string& ov : splitList(a.overlay)) {
@@ -231,7 +232,10 @@ int runRender(const RenderArgs& a) {
         std::ostringstream said;
         if (panes.empty()) {
             const render::FrameStats st = renderer.render(opt);
-            out.stage(a.output, render::encodePng(a.output, w, h, target.pixels()));
+            std::vector<uint8_t> rgba = target.pixels();
+            if (opt.display.shading == ShadingMode::Level)
+                render::drawLevelLegend(rgba, w, h, {0, 0, int(w), int(h)}, render::LabelRaster());
+            out.stage(a.output, render::encodePng(a.output, w, h, rgba));
             said << "wrote " << a.output << " (" << w << "x" << h << ", " << dev.name() << "): " << st.triangles() << " triangles, "
                  << st.patches << " patches (" << st.patchesCulled << " culled), " << st.draws << " draws, GPU " << st.gpuMs << " ms\n";
             if (!a.stats.empty()) out.stage(a.stats, render::statsToJson(st) + "\n");
@@ -239,6 +243,8 @@ int runRender(const RenderArgs& a) {
             const render::LabelRaster labels;
             std::vector<uint8_t> rgba;
             const auto results = render::renderModelFigure(renderer, target, labels, opt, panes, 0.0f, rgba);
+            if (opt.display.shading == ShadingMode::Level)
+                for (const render::PaneResult& r : results) render::drawLevelLegend(rgba, w, h, r.rect, labels);
             out.stage(a.output, render::encodePng(a.output, w, h, rgba));
             nlohmann::json j;
             j["device"] = dev.name();
@@ -285,7 +291,8 @@ void addRenderOptions(CLI::App* cmd, RenderArgs& a) {
     cmd->add_option("--adaptive", a.adaptive, "none | distance | screen | orientation");
     cmd->add_option("--target-px", a.targetPx, "Screen-space adaptive: pixels per segment (default 8)");
     cmd->add_option("--max-level", a.maxLevel, "Adaptive: largest level, 1..64");
-    cmd->add_option("--shading", a.shading, "lit | normal | patch | uv | zebra | curvature | gauss | mean");
+    cmd->add_option("--shading", a.shading,
+                    "lit | normal | patch | uv | zebra | curvature | gauss | mean | level (by tessellation level, with a legend)");
     cmd->add_option(
         "--overlay", a.overlay,
         "Comma-separated overlays: grid, wire, normals, boundaries, isocurves, combs (curvature combs on curves and isocurves)");

@@ -1,9 +1,10 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Shading modes: lit (two-sided, back faces tinted), normal as colour, patch id, UV checker, zebra
-// stripes, Gaussian and mean curvature maps. drawMode 1 draws a flat colour (wireframe pass).
+// stripes, Gaussian and mean curvature maps, the tessellation level (core/gpu/level_colour.h). drawMode 1 draws a flat colour (wireframe pass).
 // Without -DFULL_VARYINGS only position and normal come in (lit, normal, zebra, flat colour).
 #include "common.glsl"
+#include "core/gpu/level_colour.h"
 layout(location = 1) in vec3 inNormal;
 #ifdef FULL_VARYINGS
 layout(location = 2) in vec2 inUV;
@@ -55,6 +56,7 @@ void main() {
 #ifdef FULL_VARYINGS
     else if (mode == kShadingGaussCurvature) base = diverging(inCurv.x * frame.dist.z * frame.dist.z);
     else if (mode == kShadingMeanCurvature) base = diverging(inCurv.y * frame.dist.z);
+    else if (mode == kShadingLevel) base = levelColour(inCurv.x);
 #endif
     else base = vec3(0.72, 0.74, 0.78);
     if (back) base *= vec3(1.0, 0.55, 0.5);  // back faces tinted

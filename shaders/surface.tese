@@ -158,6 +158,8 @@ void main() {
     vec2 curv = vec2(0.0);
     if (curvature) {
         curv = gaussMeanCurvature(d.du, d.dv, d.duu, d.duv, d.dvv, n);
+    } else if (frame.modes.w == kShadingLevel) {  // the level the control shader chose for this patch
+        curv = vec2(max(gl_TessLevelInner[0], gl_TessLevelInner[1]), 0.0);
     }
     outUV = vec2(u, v);
     outPatch = draw.patchBase + uint(gl_PrimitiveID);

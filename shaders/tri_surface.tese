@@ -115,6 +115,8 @@ void main() {
         vec3 duu, duv, dvv;
         secondDerivs(u, v, w, duu, duv, dvv);
         curv = gaussMeanCurvature(du, dv, duu, duv, dvv, n);
+    } else if (frame.modes.w == kShadingLevel) {  // the level the control shader chose for this triangle
+        curv = vec2(gl_TessLevelInner[0], 0.0);
     }
     outCurv = curv;
 #endif

@@ -5,6 +5,7 @@
 
 #include <cstring>
 
+#include "core/gpu/level_colour.h"
 #include "core/io/document_io.hpp"
 #include "core/select/picking.hpp"
 #include "render_support.hpp"
@@ -155,11 +156,30 @@ TEST_F(RenderImage, EveryShadingModeRenders) {
     const render::RenderOptions base = plainOptions(doc, 8, double(W) / H);
     const Rendered lit = off.render(base);
     for (ShadingMode m : {ShadingMode::Normal, ShadingMode::PatchId, ShadingMode::UvChecker, ShadingMode::Zebra,
-                          ShadingMode::GaussCurvature, ShadingMode::MeanCurvature}) {
+                          ShadingMode::GaussCurvature, ShadingMode::MeanCurvature, ShadingMode::Level}) {
         render::RenderOptions o = base;
         o.display.shading = m;
         const Rendered r = off.render(o);
         EXPECT_GT(countDifferent(lit.image, r.image, 8), 2000u) << shadingName(m);
+    }
+}
+
+// `--shading level` (issue 41): a patch takes the colour of its level (core/gpu/level_colour.h, the
+// ramp the legend draws) times the light, so its hue at level 2 and at 32 is the ramp's.
+TEST_F(RenderImage, LevelShadingIsTheRampsColourOfThePatchsLevel) {
+    const Document doc = flatPatch();
+    Offscreen off(W, H);
+    off.setDocument(doc);
+    const auto hue = [](const glm::vec3& c) { return c / std::max({c.r, c.g, c.b}); };
+    for (float level : {2.0f, 32.0f}) {
+        render::RenderOptions o = plainOptions(doc, level, double(W) / H, "top");
+        o.display.shading = ShadingMode::Level;
+        const Rendered r = off.render(o);
+        const uint8_t* px = r.image.at(int(W) / 2, int(H) / 2);
+        const glm::vec3 got = hue(glm::vec3(px[0], px[1], px[2]) / 255.0f), want = hue(gpu::levelColour(level));
+        EXPECT_NEAR(got.r, want.r, 0.06) << level;
+        EXPECT_NEAR(got.g, want.g, 0.06) << level;
+        EXPECT_NEAR(got.b, want.b, 0.06) << level;
     }
 }
 

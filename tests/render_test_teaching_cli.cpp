@@ -364,3 +364,27 @@ TEST(TeachingCli, UpperLeftOriginPutsEdgeOneOnTopTagged) {
 }
 
 }  // namespace pw::test
+
+namespace pw::test {
+
+// `render --shading level` draws the legend: the ramp's yellow (level 64) and violet (level 1) in
+// the bottom-right corner, nowhere else (the teapot at level 6 is neither).
+TEST(TeachingCli, LevelShadingHasALegend) {
+    const auto dir = freshTempDir("teach-level");
+    const auto png = dir / "l.png";
+    const RunResult r = runCommand(bin() + " render --shading level --tess 6 --size 640x360 -o " + png.string() + " 2>&1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const Png img = loadPng(png);
+    ASSERT_EQ(img.w, 640);
+    size_t yellowCorner = 0, yellowElsewhere = 0;
+    for (int y = 0; y < img.h; ++y)
+        for (int x = 0; x < img.w; ++x) {
+            const uint8_t* p = img.at(x, y);
+            const bool yellow = p[0] > 230 && p[1] > 210 && p[2] < 70;
+            (x > img.w / 2 && y > img.h * 2 / 3 ? yellowCorner : yellowElsewhere) += yellow;
+        }
+    EXPECT_GT(yellowCorner, 20u);
+    EXPECT_EQ(yellowElsewhere, 0u);
+}
+
+}  // namespace pw::test

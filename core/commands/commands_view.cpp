@@ -149,7 +149,7 @@ void addViewCommands(CommandTable& t) {
                    },
                    false);
            }});
-    t.add(enumSetting<ShadingMode>("shading", "Shading", "lit|normal|patch|uv|zebra|gauss|mean", "How the surface is coloured",
+    t.add(enumSetting<ShadingMode>("shading", "Shading", "lit|normal|patch|uv|zebra|gauss|mean|level", "How the surface is coloured",
                                    parseShading, [](Document& d, ShadingMode m) { d.display.shading = m; }));
     t.add({.name = "tess",
            .label = "Tessellation Levels",

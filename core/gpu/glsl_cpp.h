@@ -51,6 +51,7 @@ using glm::log2;
 using glm::mat4;
 using glm::max;
 using glm::min;
+using glm::mix;
 using glm::normalize;
 using glm::uvec4;
 using glm::vec2;

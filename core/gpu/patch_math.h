@@ -35,6 +35,7 @@ PW_CONST uint kShadingUvChecker = 3u;
 PW_CONST uint kShadingZebra = 4u;
 PW_CONST uint kShadingGaussCurvature = 5u;
 PW_CONST uint kShadingMeanCurvature = 6u;
+PW_CONST uint kShadingLevel = 7u;  // the tessellation level (core/gpu/level_colour.h)
 
 // Basis of a 4x4 window (core's Basis).
 PW_CONST uint kBasisBezier = 0u;

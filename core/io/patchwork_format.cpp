@@ -150,7 +150,7 @@ DisplaySettings readDisplay(const Reader& r, const json& v, const std::string& p
     r.object(v, path);
     DisplaySettings d;
     r.optional(v, path, "shading", [&](const json& x, const std::string& p) {
-        d.shading = r.named<ShadingMode>(x, p, parseShading, "lit, normal, patch, uv, zebra, gauss, mean");
+        d.shading = r.named<ShadingMode>(x, p, parseShading, "lit, normal, patch, uv, zebra, gauss, mean, level");
     });
     r.optional(v, path, "showGrid", [&](const json& x, const std::string& p) { d.showGrid = r.boolean(x, p); });
     r.optional(v, path, "showWireframe", [&](const json& x, const std::string& p) { d.showWireframe = r.boolean(x, p); });

@@ -21,7 +21,7 @@ static_assert(uint32_t(AdaptiveMode::None) == gpu::kAdaptiveNone && uint32_t(Ada
 static_assert(uint32_t(ShadingMode::Lit) == gpu::kShadingLit && uint32_t(ShadingMode::Normal) == gpu::kShadingNormal &&
               uint32_t(ShadingMode::PatchId) == gpu::kShadingPatchId && uint32_t(ShadingMode::UvChecker) == gpu::kShadingUvChecker &&
               uint32_t(ShadingMode::Zebra) == gpu::kShadingZebra && uint32_t(ShadingMode::GaussCurvature) == gpu::kShadingGaussCurvature &&
-              uint32_t(ShadingMode::MeanCurvature) == gpu::kShadingMeanCurvature);
+              uint32_t(ShadingMode::MeanCurvature) == gpu::kShadingMeanCurvature && uint32_t(ShadingMode::Level) == gpu::kShadingLevel);
 static_assert(uint32_t(Basis::Bezier) == gpu::kBasisBezier && uint32_t(Basis::BSpline) == gpu::kBasisBSpline &&
               uint32_t(Basis::CatmullRom) == gpu::kBasisCatmullRom);
 
@@ -31,7 +31,7 @@ constexpr std::array<std::string_view, 7> kEdgeNames{"u0", "v0", "u1", "v1", "e0
 constexpr std::array<std::string_view, 5> kContinuityNames{"C0", "C1", "G1", "C2", "G2"};
 constexpr std::array<std::string_view, 4> kSpacingNames{"equal", "fractional_odd", "fractional_even", "pow2"};
 constexpr std::array<std::string_view, 4> kAdaptiveNames{"none", "distance", "screen", "orientation"};
-constexpr std::array<std::string_view, 7> kShadingNames{"lit", "normal", "patch", "uv", "zebra", "gauss", "mean"};
+constexpr std::array<std::string_view, 8> kShadingNames{"lit", "normal", "patch", "uv", "zebra", "gauss", "mean", "level"};
 constexpr std::array<std::string_view, 2> kMappingNames{"patch", "planar"};
 constexpr std::array<std::string_view, 4> kLengthUnitNames{"mm", "cm", "m", "in"};
 constexpr std::array<double, 4> kMetresPer{0.001, 0.01, 1.0, 0.0254};

@@ -244,8 +244,8 @@ struct TessSettings {
     bool operator==(const TessSettings&) const = default;
 };
 
-enum class ShadingMode : uint8_t { Lit, Normal, PatchId, UvChecker, Zebra, GaussCurvature, MeanCurvature };
-std::string_view shadingName(ShadingMode m);  // "lit", "normal", "patch", "uv", "zebra", "gauss", "mean"
+enum class ShadingMode : uint8_t { Lit, Normal, PatchId, UvChecker, Zebra, GaussCurvature, MeanCurvature, Level };
+std::string_view shadingName(ShadingMode m);  // "lit", "normal", "patch", "uv", "zebra", "gauss", "mean", "level"
 std::optional<ShadingMode> parseShading(std::string_view name);
 
 struct DisplaySettings {

@@ -126,10 +126,10 @@ std::vector<Setting> makeSettings() {
     t.push_back(switchRow("tess.cullOffscreen", "Cull off-screen", "Skip patches outside the view frustum",
                           [](Document& d) -> bool& { return d.tess.cullOffscreen; }));
     // Display (the Display panel, `display` in files).
-    t.push_back(choiceRow<ShadingMode>("display.shading", "Shading", "How the surface is coloured",
-                                       {"lit", "normal", "patch", "uv", "zebra", "gauss", "mean"},
-                                       {"lit", "normal", "patch id", "uv checker", "zebra", "gaussian curvature", "mean curvature"},
-                                       [](Document& d) -> ShadingMode& { return d.display.shading; }));
+    t.push_back(choiceRow<ShadingMode>(
+        "display.shading", "Shading", "How the surface is coloured", {"lit", "normal", "patch", "uv", "zebra", "gauss", "mean", "level"},
+        {"lit", "normal", "patch id", "uv checker", "zebra", "gaussian curvature", "mean curvature", "tessellation level"},
+        [](Document& d) -> ShadingMode& { return d.display.shading; }));
     t.push_back(switchRow("display.showGrid", "Control net", "Show the control points and net lines",
                           [](Document& d) -> bool& { return d.display.showGrid; }));
     t.push_back(switchRow("display.showWireframe", "Wireframe", "Show the tessellated triangles",

@@ -32,6 +32,7 @@ inline VaryingsVariant varyingsVariant(ShadingMode m) {
         case ShadingMode::UvChecker:
         case ShadingMode::GaussCurvature:
         case ShadingMode::MeanCurvature:
+        case ShadingMode::Level:
             return VaryingsVariant::Full;
         default:
             return VaryingsVariant::Lean;
