@@ -18,6 +18,7 @@
 #include "core/base/limits.hpp"
 #include "core/io/document_io.hpp"
 #include "core/io/formats.hpp"
+#include "core/mesh/mesh_tessellate.hpp"
 #include "core/model/camera_math.hpp"
 #include "render/figures/domain_figure.hpp"
 #include "render/figures/domain_figure_file.hpp"
@@ -114,6 +115,14 @@ render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& do
             "combs are drawn on curves and on the isocurve overlay, and the document has no curves: add isocurves "
             "(--overlay isocurves,combs)");
     const double aspect = double(width) / double(height);
+    // Slides: a light background, a grey wire and the model framed tightly (with a named view).
+    const bool light = a.theme == "light";
+    if (!a.theme.empty() && !light && a.theme != "dark") bad("--theme", "'" + a.theme + "' is not one of dark, light");
+    if (light) {
+        o.display.background = {0.97f, 0.97f, 0.95f};
+        o.wireColor = {0.42f, 0.45f, 0.52f, 1.0f};
+    }
+    const double margin = 1.15;
     if (!a.eye.empty() || !a.target.empty()) {
         if (!a.view.empty()) bad(a.eye.empty() ? "--target" : "--eye", "use either --view or --eye/--target");
         const Bounds box = computeBounds(doc.points);
@@ -129,9 +138,14 @@ render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& do
     } else if (!a.view.empty()) {
         auto cam = applyNamedView(doc.camera, a.view);
         if (!cam) bad("--view", "'" + a.view + "' is not one of front, back, left, right, top, bottom, iso");
-        o.camera = frameBounds(*cam, computeBounds(doc.points), aspect);
+        o.camera = frameBounds(*cam, computeBounds(doc.points), aspect, margin);
     } else if (doc.camera == Camera{}) {
-        o.camera = frameBounds(doc.camera, computeBounds(doc.points), aspect);
+        o.camera = frameBounds(doc.camera, computeBounds(doc.points), aspect, margin);
+    }
+    if (light && a.eye.empty()) {  // the surface itself (not its control net) fills the frame
+        std::vector<glm::dvec3> surface;
+        for (const auto& p : tessellateDocument(doc, 6).positions) surface.emplace_back(p[0], p[1], p[2]);
+        o.camera = frameTightly(o.camera, surface, aspect);
     }
     o.display.normalLength = float(0.03 * modelSize(doc));
     return o;
@@ -301,6 +315,7 @@ void addRenderOptions(CLI::App* cmd, RenderArgs& a) {
     cmd->add_option("--isolines", a.isolines,
                     "Isoline levels LINES,SEGMENTS for curves and the isocurve overlay (default: the document's, 2,16)");
     cmd->add_option("--view", a.view, "front | back | left | right | top | bottom | iso (framed to the model)");
+    cmd->add_option("--theme", a.theme, "dark (default) | light: a light background, a grey wire, the model framed tightly (slides)");
     cmd->add_option("--eye", a.eye, "Camera position X,Y,Z in model units, looking at --target (instead of --view)");
     cmd->add_option("--target", a.target, "Point X,Y,Z the camera looks at (default: the centre of the model's bounds)");
     cmd->add_option("--stats", a.stats, "Write frame statistics (triangles, GPU time, ...) as JSON to this file");

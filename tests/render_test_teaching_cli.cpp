@@ -388,3 +388,41 @@ TEST(TeachingCli, LevelShadingHasALegend) {
 }
 
 }  // namespace pw::test
+
+namespace pw::test {
+
+// `--theme light` for slides: a light background, the surface framed to fill the frame (not its
+// control net's bounding sphere), a grey wire instead of a black one; unknown themes are exit 2.
+TEST(TeachingCli, LightThemeFramesTheSurfaceTightly) {
+    const auto dir = freshTempDir("teach-theme");
+    const auto extent = [](const Png& img) {
+        int x0 = img.w, x1 = -1, y0 = img.h, y1 = -1;
+        for (int y = 0; y < img.h; ++y)
+            for (int x = 0; x < img.w; ++x) {
+                const uint8_t* p = img.at(x, y);
+                if (std::abs(p[0] - img.at(0, 0)[0]) + std::abs(p[1] - img.at(0, 0)[1]) + std::abs(p[2] - img.at(0, 0)[2]) < 24) continue;
+                x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+            }
+        return std::max(double(x1 - x0 + 1) / img.w, double(y1 - y0 + 1) / img.h);
+    };
+    for (const char* theme : {"light", "dark"}) {
+        const RunResult r =
+            runCommand(bin() + " render " + (dataDir() / "teacup.bpt").string() + " --view iso --tess 8 --overlay wire --theme " + theme +
+                       " --size 480x270 -o " + (dir / (std::string(theme) + ".png")).string() + " 2>&1");
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+    }
+    const Png light = loadPng(dir / "light.png"), dark = loadPng(dir / "dark.png");
+    ASSERT_EQ(light.w, 480);
+    EXPECT_GT(light.at(0, 0)[0], 235);
+    EXPECT_LT(dark.at(0, 0)[0], 60);
+    EXPECT_GT(extent(light), 0.93);
+    EXPECT_LT(extent(dark), extent(light) - 0.1);
+    size_t black = 0;  // the dark theme's wire colour (0.08, 0.09, 0.12) is not on the light figure
+    for (int y = 0; y < light.h; ++y)
+        for (int x = 0; x < light.w; ++x) black += light.at(x, y)[0] < 40 && light.at(x, y)[2] < 50;
+    EXPECT_EQ(black, 0u);
+    const RunResult bad = runCommand(bin() + " render --theme blue -o " + (dir / "x.png").string() + " 2>&1");
+    EXPECT_EQ(bad.exitCode, 2) << bad.output;
+}
+
+}  // namespace pw::test

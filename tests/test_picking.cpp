@@ -165,3 +165,31 @@ TEST(CameraLookFrom, EyeAndTargetAreWhereTheyWereAsked) {
         }
     EXPECT_FALSE(lookFrom(testCamera(false), glm::dvec3(1, 1, 1), glm::dvec3(1, 1, 1)).has_value());
 }
+
+// `render --theme light` frames the surface tightly: every point inside the image, and the points
+// span nearly all of its width or height (perspective and orthographic, any direction).
+TEST(CameraFrameTightly, PointsFillTheFrame) {
+    std::vector<glm::dvec3> pts;
+    for (int i = 0; i < 200; ++i) {
+        const double t = i * 0.37;
+        pts.emplace_back(3.0 * std::cos(t) + 1.0, 1.2 * std::sin(1.7 * t) - 2.0, 0.8 * std::sin(t) + 0.5 * std::cos(3.1 * t) + 4.0);
+    }
+    for (bool ortho : {false, true})
+        for (double yaw : {0.0, 40.0, 200.0}) {
+            Camera cam = testCamera(ortho);
+            cam.yawDeg = yaw;
+            const Camera tight = frameTightly(cam, pts, 16.0 / 9.0, 1.0);
+            const ViewMatrices vm = viewMatrices(tight, 16.0 / 9.0);
+            double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
+            for (const auto& p : pts) {
+                const auto px = projectToPixel(vm, p, 1600, 900);
+                ASSERT_TRUE(px.has_value());
+                x0 = std::min(x0, px->x), x1 = std::max(x1, px->x), y0 = std::min(y0, px->y), y1 = std::max(y1, px->y);
+            }
+            EXPECT_GE(x0, -1.0) << ortho << " " << yaw;
+            EXPECT_LE(x1, 1601.0) << ortho << " " << yaw;
+            EXPECT_GE(y0, -1.0) << ortho << " " << yaw;
+            EXPECT_LE(y1, 901.0) << ortho << " " << yaw;
+            EXPECT_GT(std::max((x1 - x0) / 1600.0, (y1 - y0) / 900.0), 0.97) << ortho << " " << yaw;
+        }
+}

@@ -111,6 +111,45 @@ Camera frameBounds(Camera cam, const Bounds& box, double aspect, double margin) 
     return cam;
 }
 
+Camera frameTightly(Camera cam, const std::vector<glm::dvec3>& points, double aspect, double margin) {
+    if (points.empty()) return cam;
+    glm::dvec3 dir, up;
+    orbitFrame(cam, dir, up);  // dir: target -> eye
+    const glm::dvec3 fwd = -dir, right = glm::normalize(glm::cross(fwd, up));
+    const double tanY = std::tan(cam.fovYDeg * kPi / 360.0) / margin, tanX = tanY * std::max(aspect, 1e-6);
+    glm::dvec3 centroid(0.0);
+    for (const glm::dvec3& p : points) centroid += p / double(points.size());
+    if (cam.orthographic) {  // the extent across the view, centred; the distance sets the size
+        double aMin = 1e300, aMax = -1e300, bMin = 1e300, bMax = -1e300;
+        for (const glm::dvec3& p : points) {
+            aMin = std::min(aMin, glm::dot(p - centroid, right)), aMax = std::max(aMax, glm::dot(p - centroid, right));
+            bMin = std::min(bMin, glm::dot(p - centroid, up)), bMax = std::max(bMax, glm::dot(p - centroid, up));
+        }
+        const glm::dvec3 t = centroid + right * (0.5 * (aMin + aMax)) + up * (0.5 * (bMin + bMax));
+        cam.target = {t.x, t.y, t.z};
+        cam.distance = std::max({0.5 * (bMax - bMin) / tanY, 0.5 * (aMax - aMin) / tanX, 1e-9});
+        return cam;
+    }
+    // Perspective: each side of the frustum touches the point furthest out on that side. With the
+    // eye at e (coordinates er, eu, ef along right, up, forward), a point p is inside the right
+    // side when p·r − tanX p·f <= er − tanX ef; the tight eye solves the two sides of each axis
+    // and takes the axis that needs it further back (the other is then centred).
+    double R = -1e300, L = -1e300, U = -1e300, D = -1e300;
+    for (const glm::dvec3& p : points) {
+        const double pr = glm::dot(p, right), pu = glm::dot(p, up), pf = glm::dot(p, fwd);
+        R = std::max(R, pr - tanX * pf), L = std::max(L, -pr - tanX * pf);
+        U = std::max(U, pu - tanY * pf), D = std::max(D, -pu - tanY * pf);
+    }
+    const double er = 0.5 * (R - L), eu = 0.5 * (U - D);
+    const double ef = std::min(-(R + L) / (2.0 * tanX), -(U + D) / (2.0 * tanY));
+    const glm::dvec3 eye = right * er + up * eu + fwd * ef;
+    const double depth = std::max(glm::dot(centroid - eye, fwd), 1e-9);
+    const glm::dvec3 t = eye + fwd * depth;
+    cam.target = {t.x, t.y, t.z};
+    cam.distance = depth;
+    return cam;
+}
+
 std::optional<glm::dvec2> projectToPixel(const ViewMatrices& vm, const glm::dvec3& p, int width, int height) {
     const glm::dvec4 c = glm::dmat4(vm.viewProj) * glm::dvec4(p, 1.0);
     if (c.w <= 1e-12) return std::nullopt;

@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 #include <optional>
 #include <string_view>
+#include <vector>
 
 #include "core/model/document.hpp"
 
@@ -38,6 +39,11 @@ std::optional<Camera> lookFrom(Camera cam, const glm::dvec3& eye, const glm::dve
 
 // Moves target and distance so that the box fills the view (margin > 1 leaves room around it).
 Camera frameBounds(Camera cam, const Bounds& box, double aspect, double margin = 1.15);
+
+// Aims the camera (same direction) at the middle of `points` as seen from it and moves it so that
+// they just fit the view, `margin` (>= 1) times their extent: tighter than frameBounds' bounding
+// sphere, for slides.
+Camera frameTightly(Camera cam, const std::vector<glm::dvec3>& points, double aspect, double margin = 1.04);
 
 // World point -> pixel coordinates (x right, y down, origin top-left) of a width x height image;
 // nullopt when the point is behind the camera.

@@ -63,7 +63,7 @@ bool wireframeWanted(const Frame& f) { return f.opt.display.showWireframe && !f.
 void wireframePass(Frame& f) {
     gpu::DrawPush wp;
     wp.drawMode = gpu::kDrawFlatColour;
-    wp.color = {0.08f, 0.09f, 0.12f, 1.0f};
+    wp.color = {f.opt.wireColor[0], f.opt.wireColor[1], f.opt.wireColor[2], f.opt.wireColor[3]};
     recordPatches(f, f.fam.wire, f.fam.triWire, wp);
 }
 

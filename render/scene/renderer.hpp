@@ -41,6 +41,9 @@ struct RenderOptions {
     // With display.showCombs: the join whose curvature graph is drawn (combs on the isocurves that
     // cross it, both sides), -1 none.
     int combJoin = -1;
+    // The wireframe overlay's colour: near-black on the dark theme; `--theme light` (slides) uses
+    // a mid grey, so a dense wire shades the surface instead of blacking it out.
+    std::array<float, 4> wireColor{0.08f, 0.09f, 0.12f, 1.0f};
 };
 
 // The pane rectangle `opt` draws into, clamped to a target of `extent` (the whole target when
