@@ -33,7 +33,7 @@ std::string edgeText(float level, Spacing spacing, bool integerSpacing, float ma
     return roundedText(level, segmentCount(l, integerSpacing ? Spacing::Equal : tessellatorSpacing(spacing), maxLevel));
 }
 
-// "75 % slid": how far the two short segments of a fractional partitioning have grown (the notes'
+// "75 %": how far the two short segments of a fractional partitioning have grown (the notes'
 // (f − 3) / (5 − 3) for a level between 3 and 5 under fractional_odd); empty where they are full
 // length or there are none (equal, pow2, whole levels of the partitioning's parity).
 std::string slideText(float level, Spacing spacing, int seg) {
@@ -42,7 +42,7 @@ std::string slideText(float level, Spacing spacing, int seg) {
     const float f = std::max(level, ts == Spacing::FractionalEven ? 2.0f : 1.0f);
     const float pct = std::clamp((f - float(seg - 2)) * 50.0f, 0.0f, 100.0f);
     if (pct >= 99.5f || pct < 0.5f) return {};
-    return std::to_string(int(std::lround(pct))) + " % slid";
+    return std::to_string(int(std::lround(pct))) + " %";
 }
 
 // "quad domain · llvmpipe (LLVM 15.0.6, 256 bits)" where it fits the pane; else without the
@@ -67,8 +67,8 @@ std::vector<DomainLabel> domainLabels(const DomainViewOptions& o, uint64_t verti
     const float maxLevel = 64.0f;
     const auto& L = o.levels;
     const DomainCounts rules = expectedDomainCounts(o.kind, L, o.spacing, maxLevel);
-    // An edge's level (and rounding); its slide percentage beside it on the top and bottom edges,
-    // on a line below it on the side edges (where the margin is narrow).
+    // An edge's level (and rounding); its slide percentage beside it on the top and bottom edges
+    // ("4 → 5 (50 %)"), on a line below it on the side edges (where the margin is narrow).
     const auto edgeLabel = [&](float level) {
         const float l = controlShaderLevel(level, o.spacing);
         const int seg = segmentCount(l, tessellatorSpacing(o.spacing), maxLevel);
@@ -105,7 +105,7 @@ std::vector<DomainLabel> domainLabels(const DomainViewOptions& o, uint64_t verti
         const float l = controlShaderLevel(L.inner[size_t(i)], o.spacing);
         const int seg = rules.innerSegments[size_t(i)];
         const std::string slide = slideText(l, o.spacing, seg);
-        return roundedText(L.inner[size_t(i)], seg) + (slide.empty() ? "" : " (" + slide + ")");
+        return roundedText(L.inner[size_t(i)], seg) + (slide.empty() ? "" : " (" + slide + " slid)");
     };
     std::string inner;
     const char* primitiveWord = "triangles";
