@@ -20,6 +20,7 @@
 #include "core/io/formats.hpp"
 #include "core/mesh/mesh_tessellate.hpp"
 #include "core/model/camera_math.hpp"
+#include "core/tess/tess_presets.hpp"
 #include "render/figures/domain_figure.hpp"
 #include "render/figures/domain_figure_file.hpp"
 #include "render/figures/figure_vector.hpp"
@@ -67,11 +68,21 @@ render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& do
     if (!a.spacing.empty()) {
         o.tess.spacing = parseSpacingOption("render", "--spacing", a.spacing);
     }
-    if (!a.adaptive.empty()) {
+    if (a.adaptive == "notes") {  // the lecture notes' formula: 64 saturate((100 - d) / (100 - 20)), level 0 culls
+        applyNotesDistanceFormula(o.tess);
+    } else if (!a.adaptive.empty()) {
         auto m = parseAdaptive(a.adaptive);
-        if (!m) bad("--adaptive", "'" + a.adaptive + "' is not one of none, distance, screen, orientation");
+        if (!m) bad("--adaptive", "'" + a.adaptive + "' is not one of none, distance, screen, orientation, notes");
         o.tess.adaptive = *m;
     }
+    if (!a.distance.empty()) {
+        const auto v = splitList(a.distance);
+        if (v.size() != 2) bad("--distance", "expected NEAR,FAR, got '" + a.distance + "'");
+        o.tess.distanceNear = float(parseNumber("render", "--distance", v[0], 0.0, limits::kMaxCoordinate));
+        o.tess.distanceFar = float(parseNumber("render", "--distance", v[1], 0.0, limits::kMaxCoordinate));
+        if (o.tess.distanceFar <= o.tess.distanceNear) bad("--distance", "FAR must be beyond NEAR");
+    }
+    if (a.cullFar) o.tess.cullFar = true;
     if (!a.targetPx.empty()) {
         o.tess.targetPixels = float(parseNumber("render", "--target-px", a.targetPx, 0.5, 1000.0));
     }
@@ -302,7 +313,10 @@ void addRenderOptions(CLI::App* cmd, RenderArgs& a) {
         "domain figure culls the patch");
     cmd->add_option("--inner", a.inner, "Two inner levels a,b (along u, along v), 1..64; with --domain tri one");
     cmd->add_option("--spacing", a.spacing, "equal (or integer, as the notes say) | fractional_odd | fractional_even | pow2");
-    cmd->add_option("--adaptive", a.adaptive, "none | distance | screen | orientation");
+    cmd->add_option("--adaptive", a.adaptive,
+                    "none | distance | screen | orientation | notes (the lecture notes' distance formula: 64 at 20, 0 (culled) from 100)");
+    cmd->add_option("--distance", a.distance, "Distance mode: NEAR,FAR (full level at NEAR or closer, level 1 at FAR or beyond)");
+    cmd->add_flag("--cull-far", a.cullFar, "Distance mode: cull patches centred at or beyond FAR (the notes' level 0) instead of level 1");
     cmd->add_option("--target-px", a.targetPx, "Screen-space adaptive: pixels per segment (default 8)");
     cmd->add_option("--max-level", a.maxLevel, "Adaptive: largest level, 1..64");
     cmd->add_option("--shading", a.shading,

@@ -15,8 +15,8 @@ namespace pw::app {
 
 struct RenderArgs {
     std::string input, output = "", size = "1280x720", tess, outer, inner, spacing, adaptive, shading, overlay, view, stats, device,
-                       targetPx, maxLevel, domain, preset, compare, isolines, combJoin, compareDevice, eye, target, origin, theme;
-    bool cull = false, validation = false, noMsaa = false;
+                       targetPx, maxLevel, domain, preset, compare, isolines, combJoin, compareDevice, eye, target, origin, theme, distance;
+    bool cull = false, validation = false, noMsaa = false, cullFar = false;
     DisplacementArgs displacement;
 };
 

@@ -122,8 +122,10 @@ void main() {
 
 #ifdef ADAPTIVE_AND_CULLING
     float margin = displacementMargin(pd);
+    vec3 centre = vec3(0.0);
+    for (int i = 0; i < 16; ++i) centre += cp(i) / 16.0;
     bool cull = ((frame.modes.z & kCullOffscreen) != 0u && offscreen(margin)) ||
-                ((frame.modes.z & kCullBackFaces) != 0u && backfacing(margin));
+                ((frame.modes.z & kCullBackFaces) != 0u && backfacing(margin)) || beyondFar(centre);
     if (cull) {
         for (int e = 0; e < 4; ++e) gl_TessLevelOuter[e] = 0.0;
         gl_TessLevelInner[0] = 0.0;

@@ -103,8 +103,10 @@ void main() {
 
 #ifdef ADAPTIVE_AND_CULLING
     float margin = displacementMargin(pd);
+    vec3 centre = vec3(0.0);
+    for (int i = 0; i < 10; ++i) centre += cp(i) / 10.0;
     bool cull = ((frame.modes.z & kCullOffscreen) != 0u && offscreen(margin)) ||
-                ((frame.modes.z & kCullBackFaces) != 0u && backfacing(margin));
+                ((frame.modes.z & kCullBackFaces) != 0u && backfacing(margin)) || beyondFar(centre);
     if (cull) {
         for (int e = 0; e < 3; ++e) gl_TessLevelOuter[e] = 0.0;
         gl_TessLevelInner[0] = 0.0;

@@ -426,3 +426,32 @@ TEST(TeachingCli, LightThemeFramesTheSurfaceTightly) {
 }
 
 }  // namespace pw::test
+
+namespace pw::test {
+
+// The notes' distance formula culls at level 0: `--adaptive distance --distance 20,100` keeps far
+// patches at level 1, `--cull-far` (and `--adaptive notes`, the notes' 64 saturate((100 - d) / 80))
+// culls those centred beyond 100, so fewer triangles and patches reported culled.
+TEST(TeachingCli, DistanceFormulaCullsBeyondFar) {
+    const auto dir = freshTempDir("teach-cullfar");
+    const auto run = [&](const std::string& opts) {
+        const auto stats = dir / "s.json";
+        const RunResult r =
+            runCommand(bin() + " render " + (dataDir() / "terrain.patchwork").string() + " --eye 0,-110,45 --target 0,0,0 --size 320x180 " +
+                       opts + " -o " + (dir / "t.png").string() + " --stats " + stats.string() + " 2>&1");
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        return readJson(stats);
+    };
+    const nlohmann::json keep = run("--adaptive distance --distance 20,100");
+    const nlohmann::json cull = run("--adaptive distance --distance 20,100 --cull-far");
+    const nlohmann::json notes = run("--adaptive notes");
+    EXPECT_EQ(keep["patches_culled"].get<uint64_t>(), 0u);
+    EXPECT_GT(cull["patches_culled"].get<uint64_t>(), 100u);
+    EXPECT_LT(cull["patches_culled"].get<uint64_t>(), 1024u);
+    EXPECT_LT(cull["triangles"].get<uint64_t>(), keep["triangles"].get<uint64_t>());
+    EXPECT_EQ(notes["patches_culled"], cull["patches_culled"]);  // the same far distance
+    const RunResult bad = runCommand(bin() + " render --adaptive distance --distance 50,10 -o " + (dir / "x.png").string() + " 2>&1");
+    EXPECT_EQ(bad.exitCode, 2) << bad.output;
+}
+
+}  // namespace pw::test

@@ -524,3 +524,14 @@ TEST(DocumentIo, GltfRoundTripRestoresTheDocument) {
         }
     }
 }
+
+// tess.cullFar (issue 41: the notes' level 0 beyond the far distance) round-trips, and is written
+// only when on, so files saved before it stay byte for byte as they were.
+TEST(PatchworkFormat, CullFarRoundTripsAndIsWrittenOnlyWhenOn) {
+    Document doc = builtinTeapot();
+    EXPECT_EQ(serializeDocument(doc).find("cullFar"), std::string::npos);
+    doc.tess.cullFar = true;
+    const std::string text = serializeDocument(doc);
+    EXPECT_NE(text.find("\"cullFar\""), std::string::npos);
+    EXPECT_TRUE(parseDocument(text, "t.patchwork").tess.cullFar);
+}

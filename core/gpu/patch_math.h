@@ -26,6 +26,7 @@ PW_CONST uint kAdaptiveOrientation = 3u;
 // Culling bits.
 PW_CONST uint kCullBackFaces = 1u;
 PW_CONST uint kCullOffscreen = 2u;
+PW_CONST uint kCullFar = 4u;  // distance mode: a patch centred at or beyond the far distance (the notes' factor 0)
 
 // Shading (core's ShadingMode).
 PW_CONST uint kShadingLit = 0u;

@@ -236,6 +236,9 @@ struct TessSettings {
     float maxLevel = 64.0f;
     bool cullBackfaces = false;
     bool cullOffscreen = true;
+    // Distance mode: cull a patch whose control points' centre is at or beyond distanceFar, where
+    // the lecture notes' formula gives level 0 (otherwise such patches keep level 1).
+    bool cullFar = false;
     // The isoline domain's two levels, for curves and the isocurve overlay: lines (outer 0, always
     // rounded to an integer) and segments per line (outer 1, under `spacing`). Curves draw one line;
     // the isocurve overlay draws `lines` isoparametric curves per direction of every window, the

@@ -125,6 +125,10 @@ std::vector<Setting> makeSettings() {
                           [](Document& d) -> bool& { return d.tess.cullBackfaces; }));
     t.push_back(switchRow("tess.cullOffscreen", "Cull off-screen", "Skip patches outside the view frustum",
                           [](Document& d) -> bool& { return d.tess.cullOffscreen; }));
+    t.push_back(
+        switchRow("tess.cullFar", "Cull beyond far",
+                  "Distance mode: cull patches centred at or beyond the far distance (the notes' level 0) instead of keeping level 1",
+                  [](Document& d) -> bool& { return d.tess.cullFar; }));
     // Display (the Display panel, `display` in files).
     t.push_back(choiceRow<ShadingMode>(
         "display.shading", "Shading", "How the surface is coloured", {"lit", "normal", "patch", "uv", "zebra", "gauss", "mean", "level"},

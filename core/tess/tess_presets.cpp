@@ -111,6 +111,7 @@ void applyNotesDistanceFormula(TessSettings& t) {
     t.distanceNear = 20.0f;
     t.distanceFar = 100.0f;
     t.maxLevel = 64.0f;
+    t.cullFar = true;  // level 0 beyond d1: the patch is culled
 }
 
 }  // namespace pw

@@ -22,6 +22,7 @@ std::string describe(const TessSettings& t) {
         if (t.adaptive != AdaptiveMode::None) on.push_back("adaptive " + std::string(adaptiveName(t.adaptive)));
         if (t.cullBackfaces) on.push_back("back-face culling");
         if (t.cullOffscreen) on.push_back("off-screen culling");
+        if (t.cullFar && t.adaptive == AdaptiveMode::Distance) on.push_back("culling beyond the far distance");
         for (size_t i = 0; i < on.size(); ++i) why += (i ? ", " : "") + on[i];
         why += ")";
     } else {

@@ -23,6 +23,7 @@ void drawTessellationPanel(PanelContext& ctx) {
     if (ts.adaptive == AdaptiveMode::Distance) {
         settingRow(ctx, "tess.distanceNear");
         settingRow(ctx, "tess.distanceFar");
+        settingRow(ctx, "tess.cullFar");  // only where it applies
     }
     if (ts.adaptive == AdaptiveMode::ScreenSpace) settingRow(ctx, "tess.targetPixels");
     settingRow(ctx, "tess.maxLevel");
