@@ -36,8 +36,8 @@ namespace pw::app {
 namespace {
 
 [[noreturn]] void bad(const std::string& option, const std::string& what) { badOption("render", option, what); }
-float parseLevel(const std::string& option, const std::string& text) { return app::parseLevel("render", option, text); }
-std::vector<float> parseLevels(const std::string& option, const std::string& text, size_t count) {
+float renderLevel(const std::string& option, const std::string& text) { return app::parseLevel("render", option, text); }
+std::vector<float> renderLevels(const std::string& option, const std::string& text, size_t count) {
     return app::parseLevels("render", option, text, count);
 }
 
@@ -49,19 +49,19 @@ render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& do
     o.display.showGrid = o.display.showWireframe = o.display.showNormals = o.display.showBoundaries = false;
     if (!a.tess.empty()) {
         if (!a.outer.empty() || !a.inner.empty()) bad("--tess", "use either --tess or --outer/--inner");
-        const float l = parseLevel("--tess", a.tess);
+        const float l = renderLevel("--tess", a.tess);
         o.tess.outer = {l, l, l, l};
         o.tess.inner = {l, l};
         o.tess.adaptive = AdaptiveMode::None;
     }
     if (!a.outer.empty()) {
-        auto v = parseLevels("--outer", a.outer, 4);
+        auto v = renderLevels("--outer", a.outer, 4);
         o.tess.outer = {v[0], v[1], v[2], v[3]};
         if (a.inner.empty()) o.tess.inner = {std::max(v[1], v[3]), std::max(v[0], v[2])};
         o.tess.adaptive = AdaptiveMode::None;
     }
     if (!a.inner.empty()) {
-        auto v = parseLevels("--inner", a.inner, 2);
+        auto v = renderLevels("--inner", a.inner, 2);
         o.tess.inner = {v[0], v[1]};
         o.tess.adaptive = AdaptiveMode::None;
     }
@@ -86,9 +86,9 @@ render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& do
     if (!a.targetPx.empty()) {
         o.tess.targetPixels = float(parseNumber("render", "--target-px", a.targetPx, 0.5, 1000.0));
     }
-    if (!a.maxLevel.empty()) o.tess.maxLevel = parseLevel("--max-level", a.maxLevel);
+    if (!a.maxLevel.empty()) o.tess.maxLevel = renderLevel("--max-level", a.maxLevel);
     if (!a.isolines.empty()) {
-        const auto v = parseLevels("--isolines", a.isolines, 2);
+        const auto v = renderLevels("--isolines", a.isolines, 2);
         o.tess.isolineLevels = {v[0], v[1]};
     }
     if (!a.combJoin.empty()) {
