@@ -5,6 +5,7 @@
 #include <set>
 
 #include "core/eval/patch_eval.hpp"
+#include "core/model/camera_math.hpp"
 #include "core/tess/tess_presets.hpp"
 
 using namespace pw;
@@ -52,4 +53,34 @@ TEST(TessPresets, NotesBezierPatchAndDistanceFormula) {
     EXPECT_EQ(t.adaptive, AdaptiveMode::Distance);
     EXPECT_EQ(t.distanceNear, 20.0f);
     EXPECT_EQ(t.distanceFar, 100.0f);
+    EXPECT_TRUE(t.cullFar);  // level 0 beyond d1 culls, as the notes say
+}
+
+// The notes' patch is y-up data: it is shown upright (issue 41), +y up on screen, the whole net in
+// the frame and the surface's front (du x dv) towards the camera.
+TEST(TessPresets, NotesBezierPatchStandsUpright) {
+    const Document d = notesBezierPatch();
+    EXPECT_FALSE(d.camera.zUp);
+    const ViewMatrices vm = viewMatrices(d.camera, 16.0 / 9.0);
+    std::vector<glm::dvec2> px;
+    for (const Vec3& p : d.points) {
+        const auto q = projectToPixel(vm, glm::dvec3(p.x, p.y, p.z), 1600, 900);
+        ASSERT_TRUE(q.has_value());
+        EXPECT_GE(q->x, 0.0);
+        EXPECT_LE(q->x, 1600.0);
+        EXPECT_GE(q->y, 0.0);
+        EXPECT_LE(q->y, 900.0);
+        px.push_back(*q);
+    }
+    // The data's up (+y) is up on screen, straight above the patch's middle.
+    const auto mid = projectToPixel(vm, glm::dvec3(0, 0, 0), 1600, 900), above = projectToPixel(vm, glm::dvec3(0, 10, 0), 1600, 900);
+    ASSERT_TRUE(mid && above);
+    EXPECT_LT(above->y, mid->y - 100.0);
+    EXPECT_NEAR(above->x, mid->x, 10.0);  // upright: vertical up to perspective
+    EXPECT_LT(px[6].y, px[5].y);  // the raised point above its row neighbours
+    EXPECT_LT(px[6].y, px[7].y);
+    const Net16 net = gatherNet(d, d.patches[0].idx);
+    const auto c = evaluateNet(net, Basis::Bezier, 0.5, 0.5, 0.5);
+    const Vec3 eye = Vec3(vm.eye.x, vm.eye.y, vm.eye.z);
+    EXPECT_GT(glm::dot(c.n, eye - c.p), 0.0);
 }

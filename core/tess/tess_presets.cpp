@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "core/model/camera_math.hpp"
+
 namespace pw {
 
 namespace {
@@ -101,6 +103,9 @@ Document notesBezierPatch() {
     d.tess.inner = {25, 25};
     d.display.showGrid = true;
     d.display.showWireframe = true;
+    d.camera.zUp = false;  // the notes' data is y-up: shown upright, the raised point on top
+    d.camera.pitchDeg = 35.0;
+    d.camera = frameBounds(d.camera, computeBounds(d.points), 16.0 / 9.0);
     return d;
 }
 
