@@ -77,7 +77,7 @@ TEST(TessPresets, NotesBezierPatchStandsUpright) {
     ASSERT_TRUE(mid && above);
     EXPECT_LT(above->y, mid->y - 100.0);
     EXPECT_NEAR(above->x, mid->x, 10.0);  // upright: vertical up to perspective
-    EXPECT_LT(px[6].y, px[5].y);  // the raised point above its row neighbours
+    EXPECT_LT(px[6].y, px[5].y);          // the raised point above its row neighbours
     EXPECT_LT(px[6].y, px[7].y);
     const Net16 net = gatherNet(d, d.patches[0].idx);
     const auto c = evaluateNet(net, Basis::Bezier, 0.5, 0.5, 0.5);
