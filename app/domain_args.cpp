@@ -8,8 +8,7 @@ namespace pw::app {
 bool wantsDomain(const DomainArgs& a) { return !a.domain.empty() || !a.preset.empty(); }
 
 DomainLevels domainLevelsFromArgs(const std::string& command, DomainKind kind, const DomainArgs& a) {
-    const size_t nOuter = kind == DomainKind::Quad ? 4 : kind == DomainKind::Triangle ? 3 : 2;
-    const size_t nInner = kind == DomainKind::Quad ? 2 : kind == DomainKind::Triangle ? 1 : 0;
+    const size_t nOuter = size_t(outerLevelCount(kind)), nInner = size_t(innerLevelCount(kind));
     const std::string name(domainName(kind));
     DomainLevels l;
     if (!a.tess.empty()) {

@@ -20,9 +20,6 @@ constexpr int kVersion = 1;
 constexpr size_t kMaxPatterns = 4096;
 constexpr size_t kMaxNumbers = size_t{1} << 22;  // 64 x 64 quads at every set of a file, many times over
 
-size_t outerCount(DomainKind k) { return k == DomainKind::Quad ? 4 : k == DomainKind::Triangle ? 3 : 2; }
-size_t innerCount(DomainKind k) { return k == DomainKind::Quad ? 2 : k == DomainKind::Triangle ? 1 : 0; }
-
 // The float as the double with the fewest decimals that reads back to it: the file says 0.6
 // where the float is 0.60000002384185791.
 double shortest(float f) {
@@ -31,22 +28,7 @@ double shortest(float f) {
     return std::strtod(std::string(buf, r.ptr).c_str(), nullptr);
 }
 
-std::string levelText(const float* v, size_t n) {
-    std::string s;
-    for (size_t i = 0; i < n; ++i) {
-        char buf[32];
-        const auto r = std::to_chars(buf, buf + sizeof buf, v[i]);
-        s += (i ? "," : "") + std::string(buf, r.ptr);
-    }
-    return s;
-}
-
 }  // namespace
-
-std::string describeSet(DomainKind kind, Spacing spacing, const DomainLevels& l) {
-    return std::string(domainName(kind)) + " {" + levelText(l.outer.data(), outerCount(kind)) + " | " +
-           levelText(l.inner.data(), innerCount(kind)) + "} " + std::string(spacingName(spacing));
-}
 
 const TessPattern* TessCaptureFile::find(DomainKind kind, Spacing spacing, const DomainLevels& levels) const {
     for (const TessPattern& p : patterns)
@@ -66,8 +48,8 @@ std::string writeTessCaptureFile(const TessCaptureFile& f) {
         c["spacing"] = spacingName(p.spacing);
         c["outer"] = nlohmann::ordered_json::array();
         c["inner"] = nlohmann::ordered_json::array();
-        for (size_t k = 0; k < outerCount(p.kind); ++k) c["outer"].push_back(shortest(p.levels.outer[k]));
-        for (size_t k = 0; k < innerCount(p.kind); ++k) c["inner"].push_back(shortest(p.levels.inner[k]));
+        for (int k = 0; k < outerLevelCount(p.kind); ++k) c["outer"].push_back(shortest(p.levels.outer[size_t(k)]));
+        for (int k = 0; k < innerLevelCount(p.kind); ++k) c["inner"].push_back(shortest(p.levels.inner[size_t(k)]));
         // Each distinct point once, the primitives as indices into them (in the order emitted).
         std::map<std::array<float, 2>, size_t> index;
         c["points"] = nlohmann::ordered_json::array();
@@ -112,8 +94,8 @@ TessCaptureFile readTessCaptureFile(const std::string& text, const std::string& 
         };
         p.levels.outer = {0, 0, 0, 0};
         p.levels.inner = {0, 0};
-        levels("outer", p.levels.outer.data(), outerCount(p.kind));
-        levels("inner", p.levels.inner.data(), innerCount(p.kind));
+        levels("outer", p.levels.outer.data(), size_t(outerLevelCount(p.kind)));
+        levels("inner", p.levels.inner.data(), size_t(innerLevelCount(p.kind)));
         const std::string pp = at(path, "points"), pr = at(path, "primitives");
         const json& pts = r.array(*r.member(c, path, "points", true), pp, kMaxNumbers, "numbers");
         const json& prims = r.array(*r.member(c, path, "primitives", true), pr, kMaxNumbers, "indices");

@@ -31,7 +31,4 @@ std::string writeTessCaptureFile(const TessCaptureFile& f);
 TessCaptureFile readTessCaptureFile(const std::string& text, const std::string& source);
 TessCaptureFile loadTessCaptureFile(const std::filesystem::path& path);
 
-// "quad {4.9,4.5,4.1,4 | 4.4,4} fractional_odd": a set as the notes write it, for messages.
-std::string describeSet(DomainKind kind, Spacing spacing, const DomainLevels& levels);
-
 }  // namespace pw

@@ -1,6 +1,7 @@
 #include "core/tess/tess_domain.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 
 #include "core/base/enum_names.hpp"
@@ -14,6 +15,28 @@ constexpr std::array<std::string_view, 3> kDomainPlurals{"quads", "triangles", "
 }  // namespace
 
 std::string_view domainName(DomainKind k) { return enumName(k, kDomainNames); }
+
+int outerLevelCount(DomainKind k) { return k == DomainKind::Quad ? 4 : k == DomainKind::Triangle ? 3 : 2; }
+int innerLevelCount(DomainKind k) { return k == DomainKind::Quad ? 2 : k == DomainKind::Triangle ? 1 : 0; }
+
+std::string joinLevels(const float* levels, int count, std::string_view sep) {
+    std::string s;
+    for (int i = 0; i < count; ++i) {
+        char buf[32];
+        const auto r = std::to_chars(buf, buf + sizeof buf, levels[i]);
+        s += (i ? std::string(sep) : std::string()) + std::string(buf, r.ptr);
+    }
+    return s;
+}
+
+std::string describeLevels(DomainKind kind, const DomainLevels& l) {
+    return std::string(domainName(kind)) + " {" + joinLevels(l.outer.data(), outerLevelCount(kind), ",") + " | " +
+           joinLevels(l.inner.data(), innerLevelCount(kind), ",") + "}";
+}
+
+std::string describeSet(DomainKind kind, Spacing spacing, const DomainLevels& l) {
+    return describeLevels(kind, l) + " " + std::string(spacingName(spacing));
+}
 
 std::optional<DomainKind> parseDomain(std::string_view name) {
     if (name == "triangle") return DomainKind::Triangle;
@@ -77,8 +100,7 @@ int segmentCount(float level, Spacing s, float maxLevel) {
 DomainCounts expectedDomainCounts(DomainKind kind, const DomainLevels& levels, Spacing spacing, float maxLevel) {
     DomainCounts out;
     const Spacing ts = tessellatorSpacing(spacing);
-    const int nOuter = kind == DomainKind::Quad ? 4 : kind == DomainKind::Triangle ? 3 : 2;
-    const int nInner = kind == DomainKind::Quad ? 2 : kind == DomainKind::Triangle ? 1 : 0;
+    const int nOuter = outerLevelCount(kind), nInner = innerLevelCount(kind);
     std::array<float, 4> outer{};
     std::array<float, 2> inner{};
     for (int e = 0; e < nOuter; ++e) {

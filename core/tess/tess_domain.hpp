@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "core/model/document.hpp"
@@ -25,6 +26,18 @@ struct DomainLevels {
     std::array<float, 2> inner{4, 4};
     bool operator==(const DomainLevels&) const = default;
 };
+
+// How many outer and inner levels a domain uses (quad 4 and 2, triangle 3 and 1, isoline 2 and 0).
+int outerLevelCount(DomainKind k);
+int innerLevelCount(DomainKind k);
+
+// Levels as the notes write them, each in the fewest decimals that read back to the same float,
+// joined by `sep`: "4.9,4.5,4.1".
+std::string joinLevels(const float* levels, int count, std::string_view sep);
+// "quad {1,2,3,4 | 4,4}": a domain's used levels; describeSet adds the partitioning
+// ("tri {4.9,4.5,4.1 | 4.4} fractional_odd"), for messages and captures.
+std::string describeLevels(DomainKind kind, const DomainLevels& levels);
+std::string describeSet(DomainKind kind, Spacing spacing, const DomainLevels& levels);
 
 // `used` with every level its domain uses (the non-zero ones) set to `level`; unused stay 0.
 DomainLevels withUniformLevel(const DomainLevels& used, float level);

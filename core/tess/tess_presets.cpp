@@ -1,7 +1,6 @@
 #include "core/tess/tess_presets.hpp"
 
 #include <algorithm>
-#include <cstdio>
 
 #include "core/model/camera_math.hpp"
 
@@ -9,20 +8,11 @@ namespace pw {
 
 namespace {
 
-std::string levelList(const float* v, int n, const char* sep) {
-    std::string s;
-    for (int i = 0; i < n; ++i) {
-        char buf[16];
-        std::snprintf(buf, sizeof buf, "%g", double(v[i]));
-        s += (i ? sep : "") + std::string(buf);
-    }
-    return s;
-}
-
-void nameIt(TessPreset& p, const float* outer, int nOuter, const float* inner, int nInner) {
-    const std::string kind(domainName(p.kind));
-    p.name = kind + "-" + levelList(outer, nOuter, "_") + "-" + levelList(inner, nInner, "_");
-    p.label = kind + " {" + levelList(outer, nOuter, ",") + " | " + levelList(inner, nInner, ",") + "}";
+void nameIt(TessPreset& p) {
+    const int nOuter = outerLevelCount(p.kind), nInner = innerLevelCount(p.kind);
+    p.name = std::string(domainName(p.kind)) + "-" + joinLevels(p.levels.outer.data(), nOuter, "_") + "-" +
+             joinLevels(p.levels.inner.data(), nInner, "_");
+    p.label = describeLevels(p.kind, p.levels);
     if (p.spacing != Spacing::Equal) {
         p.name += "-" + std::string(spacingName(p.spacing));
         p.label += " " + std::string(spacingName(p.spacing));
@@ -33,7 +23,7 @@ TessPreset quad(std::array<float, 4> o, std::array<float, 2> in, const char* not
     TessPreset p;
     p.kind = DomainKind::Quad;
     p.levels = {o, in};
-    nameIt(p, o.data(), 4, in.data(), 2);
+    nameIt(p);
     p.note = note;
     return p;
 }
@@ -43,7 +33,7 @@ TessPreset tri(std::array<float, 3> o, float in, Spacing s, const char* note) {
     p.kind = DomainKind::Triangle;
     p.levels = {{o[0], o[1], o[2], 0.0f}, {in, 0.0f}};
     p.spacing = s;
-    nameIt(p, o.data(), 3, &in, 1);
+    nameIt(p);
     p.note = note;
     return p;
 }
