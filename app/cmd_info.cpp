@@ -54,12 +54,7 @@ int runInfo(const InfoOptions& opt) {
     constexpr int kSurfaceBoundsLevel = 8;
     Bounds surface;
     if (windows.size() + doc.triangles.size() <= kSurfaceBoundsMaxWindows) {
-        for (const auto& p : tessellateDocument(doc, kSurfaceBoundsLevel).positions) {
-            const Vec3 q(p[0], p[1], p[2]);
-            surface.min = surface.empty ? q : glm::min(surface.min, q);
-            surface.max = surface.empty ? q : glm::max(surface.max, q);
-            surface.empty = false;
-        }
+        for (const auto& p : tessellateDocument(doc, kSurfaceBoundsLevel).positions) surface.add(Vec3(p[0], p[1], p[2]));
     }
     const double size = modelSize(doc);
     constexpr size_t kKinds = 5;

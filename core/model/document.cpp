@@ -162,15 +162,7 @@ void remapWeights(Document& doc, const std::vector<uint32_t>& remap, size_t newS
 
 Bounds computeBounds(const std::vector<Vec3>& points) {
     Bounds b;
-    for (const Vec3& p : points) {
-        if (b.empty) {
-            b.min = b.max = p;
-            b.empty = false;
-        } else {
-            b.min = glm::min(b.min, p);
-            b.max = glm::max(b.max, p);
-        }
-    }
+    for (const Vec3& p : points) b.add(p);
     return b;
 }
 

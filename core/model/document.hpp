@@ -400,6 +400,11 @@ struct Bounds {
     Vec3 min{0.0}, max{0.0};
     bool empty = true;
     double diagonal() const { return empty ? 0.0 : glm::length(max - min); }
+    void add(const Vec3& p) {
+        min = empty ? p : glm::min(min, p);
+        max = empty ? p : glm::max(max, p);
+        empty = false;
+    }
 };
 Bounds computeBounds(const std::vector<Vec3>& points);
 
