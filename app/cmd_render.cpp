@@ -76,10 +76,9 @@ render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& do
         o.tess.adaptive = *m;
     }
     if (!a.distance.empty()) {
-        const auto v = splitList(a.distance);
-        if (v.size() != 2) bad("--distance", "expected NEAR,FAR, got '" + a.distance + "'");
-        o.tess.distanceNear = float(parseNumber("render", "--distance", v[0], 0.0, limits::kMaxCoordinate));
-        o.tess.distanceFar = float(parseNumber("render", "--distance", v[1], 0.0, limits::kMaxCoordinate));
+        const auto v = parseNumbers("render", "--distance", a.distance, 2, 0.0, limits::kMaxCoordinate, "NEAR,FAR");
+        o.tess.distanceNear = float(v[0]);
+        o.tess.distanceFar = float(v[1]);
         if (o.tess.distanceFar <= o.tess.distanceNear) bad("--distance", "FAR must be beyond NEAR");
     }
     if (a.cullFar) o.tess.cullFar = true;
@@ -133,7 +132,6 @@ render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& do
         o.display.background = {0.97f, 0.97f, 0.95f};
         o.wireColor = {0.42f, 0.45f, 0.52f, 1.0f};
     }
-    const double margin = 1.15;
     if (!a.eye.empty() || !a.target.empty()) {
         if (!a.view.empty()) bad(a.eye.empty() ? "--target" : "--eye", "use either --view or --eye/--target");
         const Bounds box = computeBounds(doc.points);
@@ -149,9 +147,9 @@ render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& do
     } else if (!a.view.empty()) {
         auto cam = applyNamedView(doc.camera, a.view);
         if (!cam) bad("--view", "'" + a.view + "' is not one of front, back, left, right, top, bottom, iso");
-        o.camera = frameBounds(*cam, computeBounds(doc.points), aspect, margin);
+        o.camera = frameBounds(*cam, computeBounds(doc.points), aspect);
     } else if (doc.camera == Camera{}) {
-        o.camera = frameBounds(doc.camera, computeBounds(doc.points), aspect, margin);
+        o.camera = frameBounds(doc.camera, computeBounds(doc.points), aspect);
     }
     if (light && a.eye.empty()) {  // the surface itself (not its control net) fills the frame
         std::vector<glm::dvec3> surface;

@@ -72,12 +72,18 @@ std::array<unsigned, 2> parseImageSize(const std::string& command, const std::st
     return {w, h};
 }
 
-glm::dvec3 parsePoint(const std::string& command, const std::string& option, const std::string& text) {
+std::vector<double> parseNumbers(const std::string& command, const std::string& option, const std::string& text, size_t count, double lo,
+                                 double hi, const std::string& form) {
     std::vector<double> v;
     std::stringstream ss(text);
     std::string item;
-    while (std::getline(ss, item, ',')) v.push_back(parseNumber(command, option, item, -limits::kMaxCoordinate, limits::kMaxCoordinate));
-    if (v.size() != 3 || text.back() == ',') badOption(command, option, "expected a point X,Y,Z, got '" + text + "'");
+    while (std::getline(ss, item, ',')) v.push_back(parseNumber(command, option, item, lo, hi));
+    if (v.size() != count || text.back() == ',') badOption(command, option, "expected " + form + ", got '" + text + "'");
+    return v;
+}
+
+glm::dvec3 parsePoint(const std::string& command, const std::string& option, const std::string& text) {
+    const auto v = parseNumbers(command, option, text, 3, -limits::kMaxCoordinate, limits::kMaxCoordinate, "a point X,Y,Z");
     return {v[0], v[1], v[2]};
 }
 

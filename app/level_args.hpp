@@ -26,6 +26,10 @@ std::vector<float> parseLevels(const std::string& command, const std::string& op
 std::vector<std::string> splitList(const std::string& text);
 // "WIDTHxHEIGHT", sides 1..8192 (--size).
 std::array<unsigned, 2> parseImageSize(const std::string& command, const std::string& text);
+// Exactly `count` comma-separated plain decimals in [lo, hi]; `form` says what was expected
+// ("a point X,Y,Z") when the count is wrong.
+std::vector<double> parseNumbers(const std::string& command, const std::string& option, const std::string& text, size_t count, double lo,
+                                 double hi, const std::string& form);
 // "X,Y,Z": three plain decimals within ±1e9 (--eye, --target).
 glm::dvec3 parsePoint(const std::string& command, const std::string& option, const std::string& text);
 Spacing parseSpacingOption(const std::string& command, const std::string& option, const std::string& text);
