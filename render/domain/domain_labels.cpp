@@ -28,9 +28,14 @@ std::string roundedText(float level, int seg) {
     return t;
 }
 
+// The segments an edge of `level` gets: the control shader's level (pow2 applied) rounded by the
+// tessellator's partitioning (integer for the isolines' line count).
+int edgeSegments(float level, Spacing spacing, bool integerSpacing, float maxLevel) {
+    return segmentCount(controlShaderLevel(level, spacing), integerSpacing ? Spacing::Equal : tessellatorSpacing(spacing), maxLevel);
+}
+
 std::string edgeText(float level, Spacing spacing, bool integerSpacing, float maxLevel) {
-    const float l = controlShaderLevel(level, spacing);
-    return roundedText(level, segmentCount(l, integerSpacing ? Spacing::Equal : tessellatorSpacing(spacing), maxLevel));
+    return roundedText(level, edgeSegments(level, spacing, integerSpacing, maxLevel));
 }
 
 // "75 %": how far the two short segments of a fractional partitioning have grown (the notes'
@@ -70,9 +75,8 @@ std::vector<DomainLabel> domainLabels(const DomainViewOptions& o, uint64_t verti
     // An edge's level (and rounding); its slide percentage beside it on the top and bottom edges
     // ("4 → 5 (50 %)"), on a line below it on the side edges (where the margin is narrow).
     const auto edgeLabel = [&](float level) {
-        const float l = controlShaderLevel(level, o.spacing);
-        const int seg = segmentCount(l, tessellatorSpacing(o.spacing), maxLevel);
-        return std::pair{roundedText(level, seg), slideText(l, o.spacing, seg)};
+        const int seg = edgeSegments(level, o.spacing, false, maxLevel);
+        return std::pair{roundedText(level, seg), slideText(controlShaderLevel(level, o.spacing), o.spacing, seg)};
     };
     const auto edge = [&](float dx, float dy, float ax, float ay, std::string text) {
         if (at.flipY && ay != 0.5f) ay = 1.0f - ay;  // the upper-left origin: v = 0 on top
@@ -143,10 +147,9 @@ std::vector<DomainLabel> domainLabels(const DomainViewOptions& o, uint64_t verti
     cap.y = bottom[1] + gap + textPixels * 1.25f;
     cap.ax = 0.5f;
     const std::string settings = (inner.empty() ? "" : inner + "  \u00b7  ") + std::string(spacingName(o.spacing));
-    const bool culled = rules.culled;
-    const std::string counts = culled ? "culled: an outer level of 0 discards the patch"
-                                      : std::to_string(vertices) + " vertices, " + std::to_string(primitives) + " " + primitiveWord +
-                                            (o.countsNote.empty() ? "" : ", " + o.countsNote);
+    const std::string counts = rules.culled ? "culled: an outer level of 0 discards the patch"
+                                            : std::to_string(vertices) + " vertices, " + std::to_string(primitives) + " " + primitiveWord +
+                                                  (o.countsNote.empty() ? "" : ", " + o.countsNote);
     cap.text = settings + "  \u00b7  " + counts;
     if (widthOf && widthOf(cap.text) > o.rect[2] - textPixels) {  // two lines where one does not fit the pane
         cap.text = settings;
