@@ -31,6 +31,13 @@ void edgePoints(int e, out vec3 p[4]) {
 
 
 #ifdef ADAPTIVE_AND_CULLING
+// The centre of the control points (the patch's distance for the far cull).
+vec3 netCentre() {
+    vec3 c = vec3(0.0);
+    for (int i = 0; i < 16; ++i) c += cp(i);
+    return c / 16.0;
+}
+
 // Off screen when every control point is outside one frustum plane by more than `margin` (the
 // largest displacement: the displaced surface stays within it of the convex hull).
 bool offscreen(float margin) {
@@ -122,10 +129,8 @@ void main() {
 
 #ifdef ADAPTIVE_AND_CULLING
     float margin = displacementMargin(pd);
-    vec3 centre = vec3(0.0);
-    for (int i = 0; i < 16; ++i) centre += cp(i) / 16.0;
     bool cull = ((frame.modes.z & kCullOffscreen) != 0u && offscreen(margin)) ||
-                ((frame.modes.z & kCullBackFaces) != 0u && backfacing(margin)) || beyondFar(centre);
+                ((frame.modes.z & kCullBackFaces) != 0u && backfacing(margin)) || (farCulling() && beyondFar(netCentre()));
     if (cull) {
         for (int e = 0; e < 4; ++e) gl_TessLevelOuter[e] = 0.0;
         gl_TessLevelInner[0] = 0.0;

@@ -11,10 +11,10 @@ float adaptiveEdgeLevel(vec3 p[4]) {
 }
 
 // The notes' factor 0 (tess.cullFar): in distance mode, a patch whose control points' centre is at
-// or beyond the far distance, where their formula 64 saturate((d1 - d) / (d1 - d0)) gives 0, is culled.
-bool beyondFar(vec3 centre) {
-    return (frame.modes.z & kCullFar) != 0u && frame.modes.y == kAdaptiveDistance && distance(frame.eye.xyz, centre) >= frame.dist.y;
-}
+// or beyond the far distance, where their formula 64 saturate((d1 - d) / (d1 - d0)) gives 0, is
+// culled. farCulling() first, so the centre is computed only when it is on.
+bool farCulling() { return (frame.modes.z & kCullFar) != 0u && frame.modes.y == kAdaptiveDistance; }
+bool beyondFar(vec3 centre) { return distance(frame.eye.xyz, centre) >= frame.dist.y; }
 
 // How far the displaced surface may leave the patch: the largest |height| (0 without a map, whose
 // texture then reads 0 and whose windows carry no detail).

@@ -26,6 +26,13 @@ float adaptiveLevel(int e, PatchData pd) {
     return raiseForDisplacement(clamp(adaptiveEdgeLevel(p), 1.0, frame.inner.z), p, pd.detail[e], pd.texels[e], pd);
 }
 
+// The centre of the control points (the patch's distance for the far cull).
+vec3 netCentre() {
+    vec3 c = vec3(0.0);
+    for (int i = 0; i < 10; ++i) c += cp(i);
+    return c / 10.0;
+}
+
 bool offscreen(float margin) {
     for (int k = 0; k < 6; ++k) {
         vec4 plane = frustumPlane(k);
@@ -103,10 +110,8 @@ void main() {
 
 #ifdef ADAPTIVE_AND_CULLING
     float margin = displacementMargin(pd);
-    vec3 centre = vec3(0.0);
-    for (int i = 0; i < 10; ++i) centre += cp(i) / 10.0;
     bool cull = ((frame.modes.z & kCullOffscreen) != 0u && offscreen(margin)) ||
-                ((frame.modes.z & kCullBackFaces) != 0u && backfacing(margin)) || beyondFar(centre);
+                ((frame.modes.z & kCullBackFaces) != 0u && backfacing(margin)) || (farCulling() && beyondFar(netCentre()));
     if (cull) {
         for (int e = 0; e < 3; ++e) gl_TessLevelOuter[e] = 0.0;
         gl_TessLevelInner[0] = 0.0;
