@@ -240,10 +240,6 @@ TEST(TeachingLabels, EdgesLabelledWithLevelAndRounding) {
     EXPECT_EQ(four[3][1], 50.0f);
 }
 
-}  // namespace pw::test
-
-namespace pw::test {
-
 // The notes' "a factor of 0 culls the patch": `--outer 0,4,4,4` draws nothing and says so, on the
 // figure, on stdout and in the statistics (GPU counts 0); `--tess 0` is still refused (no inner 0).
 TEST(TeachingCli, OuterLevelZeroCullsThePatchAndSaysSo) {
@@ -279,10 +275,6 @@ TEST(TeachingCli, OuterLevelZeroCullsThePatchAndSaysSo) {
     EXPECT_EQ(r.exitCode, 2) << r.output;
 }
 
-}  // namespace pw::test
-
-namespace pw::test {
-
 // `--eye X,Y,Z --target X,Y,Z` place the camera for near/far figures (render and sweep): the same
 // view from twice as far covers about a quarter of the pixels; bad points are exit 2.
 TEST(TeachingCli, EyeAndTargetPlaceTheCamera) {
@@ -314,10 +306,6 @@ TEST(TeachingCli, EyeAndTargetPlaceTheCamera) {
     EXPECT_EQ(both.exitCode, 2) << both.output;
     EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
 }
-
-}  // namespace pw::test
-
-namespace pw::test {
 
 // `--origin upper-left`: the D3D notes' and Vulkan's default picture, v = 0 on top, each edge tagged
 // with its index (SV_TessFactor[i] = gl_TessLevelOuter[i]): the notes' {1,2,3,4 | 4,4} has its
@@ -363,10 +351,6 @@ TEST(TeachingCli, UpperLeftOriginPutsEdgeOneOnTopTagged) {
     EXPECT_EQ(bad.exitCode, 2) << bad.output;
 }
 
-}  // namespace pw::test
-
-namespace pw::test {
-
 // `render --shading level` draws the legend: the ramp's yellow (level 64) and violet (level 1) in
 // the bottom-right corner, nowhere else (the teapot at level 6 is neither).
 TEST(TeachingCli, LevelShadingHasALegend) {
@@ -386,10 +370,6 @@ TEST(TeachingCli, LevelShadingHasALegend) {
     EXPECT_GT(yellowCorner, 20u);
     EXPECT_EQ(yellowElsewhere, 0u);
 }
-
-}  // namespace pw::test
-
-namespace pw::test {
 
 // `--theme light` for slides: a light background, the surface framed to fill the frame (not its
 // control net's bounding sphere), a grey wire instead of a black one; unknown themes are exit 2.
@@ -424,10 +404,6 @@ TEST(TeachingCli, LightThemeFramesTheSurfaceTightly) {
     const RunResult bad = runCommand(bin() + " render --theme blue -o " + (dir / "x.png").string() + " 2>&1");
     EXPECT_EQ(bad.exitCode, 2) << bad.output;
 }
-
-}  // namespace pw::test
-
-namespace pw::test {
 
 // The notes' distance formula culls at level 0: `--adaptive distance --distance 20,100` keeps far
 // patches at level 1, `--cull-far` (and `--adaptive notes`, the notes' 64 saturate((100 - d) / 80))
