@@ -240,6 +240,31 @@ TEST(TeachingLabels, EdgesLabelledWithLevelAndRounding) {
     EXPECT_EQ(four[3][1], 50.0f);
 }
 
+// Panes that compare partitionings are titled by them (presentation mode and `--compare` figures);
+// panes of one partitioning, and a single pane, keep the domain's name.
+TEST(TeachingLabels, ComparedPanesAreTitledByPartitioning) {
+    const auto titleOf = [](const render::DomainViewOptions& o) {
+        for (const auto& l : render::domainLabels(o, 10, 12, 16))
+            if (l.role == render::DomainLabel::Role::Title) return l.text;
+        return std::string();
+    };
+    std::vector<render::DomainViewOptions> panes(2);
+    panes[0].rect = {0, 0, 300, 300};
+    panes[1].rect = {300, 0, 300, 300};
+    panes[1].spacing = Spacing::FractionalOdd;
+    render::titleByPartitioning(panes);
+    EXPECT_EQ(titleOf(panes[0]), "equal");
+    EXPECT_EQ(titleOf(panes[1]), "fractional_odd");
+    panes[1].spacing = Spacing::Equal;
+    panes[1].levels.outer[0] = 2.0f;  // levels compared, one partitioning
+    render::titleByPartitioning(panes);
+    EXPECT_EQ(titleOf(panes[0]), "quad domain");
+    EXPECT_EQ(titleOf(panes[1]), "quad domain");
+    const auto layout =
+        render::layoutDomainFigure({{DomainKind::Triangle, {}, Spacing::Equal}, {DomainKind::Triangle, {}, Spacing::Pow2}}, 800, 400, 0.0f);
+    EXPECT_EQ(layout.panes[1].title, "pow2");
+}
+
 // The notes' "a factor of 0 culls the patch": `--outer 0,4,4,4` draws nothing and says so, on the
 // figure, on stdout and in the statistics (GPU counts 0); `--tess 0` is still refused (no inner 0).
 TEST(TeachingCli, OuterLevelZeroCullsThePatchAndSaysSo) {

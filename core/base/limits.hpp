@@ -26,6 +26,10 @@ inline constexpr std::size_t kMaxCadEntityValues = 200'000;
 inline constexpr float kMinTessLevel = 1.0f;
 inline constexpr float kMaxTessLevel = 64.0f;  // Vulkan's guaranteed maxTessellationGenerationLevel
 inline constexpr int kMaxExportLevel = 256;    // CPU tessellation for export
+// Presentation mode's text, times the interface's size (the `presentation-text` command, the
+// Teaching panel's slider).
+inline constexpr float kMinPresentationText = 1.0f;
+inline constexpr float kMaxPresentationText = 4.0f;
 // A perspective camera's vertical field of view, degrees, in (0, kMaxFovYDeg]: at 180 the
 // projection is singular (it rendered blank).
 inline constexpr double kMaxFovYDeg = 170.0;

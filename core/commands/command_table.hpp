@@ -46,6 +46,9 @@ public:
     virtual void toggle(WindowToggle) {}
     virtual bool toggled(WindowToggle) const { return false; }
     virtual void quit() {}
+    // Presentation mode's text size, times the interface's (limits::kMin/kMaxPresentationText).
+    virtual float presentationTextScale() const { return 0.0f; }
+    virtual void setPresentationTextScale(float scale) { (void)scale; }
     virtual void screenshot(const std::string& path) { (void)path; }
     // The domain view as a figure (.svg, .pdf, .png) and the Teaching sweep as an animation (.gif,
     // .mp4, .webm), as `render` and `sweep` write them.

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/base/errors.hpp"
+#include "core/base/limits.hpp"
 #include "core/commands/command_table.hpp"
 #include "core/model/camera_math.hpp"
 #include "core/model/settings.hpp"
@@ -109,6 +110,31 @@ void addViewCommands(CommandTable& t) {
                        "The GLSL of the tessellation stages in use, with the defines of each variant"));
     t.add(windowToggle("presentation", "Presentation Mode", "View", WindowToggle::Presentation, {"F5"},
                        "Hide the editing panels; levels and counts large, high contrast (F5 toggles back)"));
+    t.add({.name = "presentation-text",
+           .label = "Presentation Text",
+           .menu = "View",
+           .usage = "bigger|smaller|SCALE",
+           .help = "Presentation mode's text size: a quarter step larger or smaller, or SCALE times the interface's (1 to 4)",
+           .bindings = {{"Larger Presentation Text", "bigger", {"Ctrl+="}}, {"Smaller Presentation Text", "smaller", {"Ctrl+-"}}},
+           .windowOnly = true,
+           .run = [](CommandContext& ctx) {
+               expectArgs(ctx, 1, 1);
+               const std::string& a = ctx.args[0];
+               const float now = ctx.host.presentationTextScale();
+               float scale = 0.0f;
+               if (a == "bigger" || a == "smaller") {
+                   // Quarter steps from the current size, landing on the quarter grid.
+                   scale = std::round(now * 4.0f + (a == "bigger" ? 1.0f : -1.0f)) / 4.0f;
+                   scale = std::clamp(scale, limits::kMinPresentationText, limits::kMaxPresentationText);
+               } else {
+                   const double v = commandNumber(a, "SCALE");
+                   if (!(v >= limits::kMinPresentationText && v <= limits::kMaxPresentationText))
+                       throw EditError("SCALE must lie within [" + std::to_string(int(limits::kMinPresentationText)) + ", " +
+                                       std::to_string(int(limits::kMaxPresentationText)) + "], got " + a);
+                   scale = float(v);
+               }
+               ctx.host.setPresentationTextScale(scale);
+           }});
 
     std::vector<CommandBinding> overlayBindings;
     for (const Overlay& o : kOverlays) overlayBindings.push_back({o.label, o.name, {}});

@@ -17,6 +17,12 @@ std::string formatLevel(float level) {
     return s;
 }
 
+void titleByPartitioning(std::vector<DomainViewOptions>& panes) {
+    const bool compared =
+        std::any_of(panes.begin(), panes.end(), [&](const DomainViewOptions& o) { return o.spacing != panes.front().spacing; });
+    for (DomainViewOptions& o : panes) o.title = compared ? std::string(spacingName(o.spacing)) : std::string();
+}
+
 float domainLabelMargin(float textPixels) { return std::ceil(textPixels * 4.5f); }
 
 namespace {
@@ -166,7 +172,7 @@ std::vector<DomainLabel> domainLabels(const DomainViewOptions& o, uint64_t verti
     title.y = top[1] - gap - textPixels * 1.25f;
     title.ax = 0.5f;
     title.ay = 1.0f;
-    title.text = std::string(domainName(o.kind) == "tri" ? "triangle" : domainName(o.kind)) + " domain";
+    title.text = !o.title.empty() ? o.title : std::string(domainName(o.kind) == "tri" ? "triangle" : domainName(o.kind)) + " domain";
     if (!o.device.empty()) title.text = titleWithDevice(title.text, o.device, o.rect[2] - textPixels, widthOf);
     out.push_back(title);
     return out;

@@ -32,6 +32,10 @@ std::string formatLevel(float level);
 std::vector<DomainLabel> domainLabels(const DomainViewOptions& o, uint64_t vertices, uint64_t primitives, float textPixels,
                                       const std::function<float(const std::string&)>& widthOf = {});
 
+// Panes that compare partitionings are titled by them ("fractional_odd"), the lecture's way; one
+// pane, or panes of one partitioning, keep the domain's name. Sets each pane's `title`.
+void titleByPartitioning(std::vector<DomainViewOptions>& panes);
+
 // The margin a domain view needs around the domain for its labels at this text size.
 float domainLabelMargin(float textPixels);
 

@@ -32,6 +32,7 @@ struct DomainPane {
     // tagged with its index. Off: GL's lower-left origin, v up. Triangles are drawn the same way
     // either way (tagged when on).
     bool upperLeft = false;
+    bool operator==(const DomainPane&) const = default;
 };
 
 // The pane's levels in the push constants the domain shaders read: outer, inner and the pow2 flag
@@ -50,6 +51,7 @@ struct DomainViewOptions : DomainPane {
     std::array<float, 4> pointColor{0.85f, 0.20f, 0.12f, 1.0f};
     float pointSize = 5.0f;  // pixels, where the device can size points from the evaluation stage
     std::string device;      // figures: the device that drew the pattern, named in the title
+    std::string title;       // the pane's title; empty: "quad domain" (panes that compare partitionings: the partitioning)
     std::string countsNote;  // figures: words after the counts ("12 differ")
 };
 

@@ -34,6 +34,7 @@ DomainFigureLayout layoutDomainFigure(const std::vector<DomainPane>& panes, uint
         o.pointSize = std::clamp(px * 0.3f, 3.0f, 9.0f);
         l.panes.push_back(o);
     }
+    titleByPartitioning(l.panes);
     return l;
 }
 

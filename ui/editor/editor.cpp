@@ -274,14 +274,13 @@ render::RenderOptions Editor::viewOptions() const {
 void Editor::drawUi() {
     trace_.beginFrame();
     continuity_.update(doc_, documentVersion(), interacting(), interacting() ? session_.selectedPoints() : std::vector<uint32_t>{});
-    if (teaching_.presentation) {
-        teaching_.drawPresentationOverlay(*this);
-    } else {
+    if (!teaching_.presentation) {
         drawMenuBar(*this, palette_, recent_);
         sidePanels_.drawLeft(*this);
         sidePanels_.drawRight(*this, teaching_);
     }
     teaching_.drawDomainWindow(*this);
+    if (teaching_.presentation) teaching_.drawPresentationOverlay(*this);  // with this frame's domain counts
     shaders_.draw(*this, window_.device().caps().geometryShader, teaching_.shownTess(doc_.tess), teaching_.domainPanes);
     dialogs_.drawFileBrowser(*this);
     dialogs_.drawModals(*this, [this] { recoverAutosave(); });

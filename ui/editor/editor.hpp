@@ -158,6 +158,8 @@ private:
     void fileDialog(FileDialogKind kind) override;
     void toggle(WindowToggle which) override;
     bool toggled(WindowToggle which) const override;
+    float presentationTextScale() const override { return teaching_.presentationScale; }
+    void setPresentationTextScale(float scale) override;
     void quit() override { quit_ = true; }
     void screenshot(const std::string& path) override;
     bool frame(const Bounds& box) override;

@@ -111,6 +111,11 @@ void Editor::toggle(WindowToggle which) {
     wake();
 }
 
+void Editor::setPresentationTextScale(float scale) {
+    teaching_.presentationScale = scale;
+    wake();
+}
+
 bool Editor::toggled(WindowToggle which) const {
     switch (which) {
         case WindowToggle::Help:

@@ -54,6 +54,9 @@ void TestTrace::write(const EditorSnapshot& e) {
     j["textInput"] = ImGui::GetIO().WantTextInput;
     j["presentation"] = teaching.presentation;
     j["presentationOverlay"] = {teaching.overlaySize[0], teaching.overlaySize[1], teaching.overlayTextRight};
+    j["presentationLines"] = teaching.overlayLines;
+    j["presentationScale"] = teaching.presentationScale;
+    j["domainTextPixels"] = teaching.domainTextPixels;
     j["tessOuter"] = doc.tess.outer;
     j["lesson"] = {{"active", teaching.lesson.active}, {"name", teaching.lesson.name}, {"outer", teaching.shownTess(doc.tess).outer}};
     j["sweep"] = {{"playing", teaching.sweep.playing}, {"level", teaching.sweep.level}, {"seconds", teaching.sweep.seconds}};
@@ -65,6 +68,9 @@ void TestTrace::write(const EditorSnapshot& e) {
                                {"kind", domainName(o.kind)},
                                {"vertices", teaching.domainStats[i].vertices},
                                {"primitives", teaching.domainStats[i].primitives},
+                               {"title", o.title},
+                               {"levels", {o.levels.outer, o.levels.inner}},
+                               {"shown", i < teaching.domainCounts.size() ? teaching.domainCounts[i] : std::array<uint64_t, 2>{}},
                                {"expectedVertices", want.vertices},
                                {"expectedPrimitives", want.primitives}});
     }

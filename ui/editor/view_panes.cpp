@@ -18,8 +18,9 @@ namespace pw::ui {
 std::vector<std::array<float, 4>> Teaching::viewPaneRects(const PanelLayout& layout) const {
     const ImGuiIO& io = ImGui::GetIO();
     if (!viewSplit()) return {{0.0f, 0.0f, io.DisplaySize.x, io.DisplaySize.y}};
-    // Between the side panels and below the menu bar (the whole window in presentation mode).
-    const float left = presentation ? 0.0f : layout.left, right = presentation ? 0.0f : layout.right;
+    // Between the side panels and below the menu bar (in presentation mode, the whole window right
+    // of the levels box, which lists every pane's counts).
+    const float left = presentation ? presentationLeft() : layout.left, right = presentation ? 0.0f : layout.right;
     const float top = presentation ? 0.0f : ImGui::GetFrameHeight();
     const float w = std::max(io.DisplaySize.x - left - right, 64.0f), h = std::max(io.DisplaySize.y - top, 64.0f);
     return render::splitPanes(paneCount, {left, top, w, h});
@@ -38,6 +39,7 @@ std::array<float, 4> Teaching::interactionPane(const PanelLayout& layout, double
 
 render::FrameStats Teaching::renderView(render::Renderer& renderer, const render::RenderOptions& o, const PanelLayout& layout) {
     viewPanes.clear();
+    viewTess = o.tess;
     if (!viewSplit()) return renderer.render(o);
     const ImGuiIO& io = ImGui::GetIO();
     const float sx = io.DisplayFramebufferScale.x, sy = io.DisplayFramebufferScale.y;
@@ -55,13 +57,13 @@ void Teaching::drawPaneCaptions(const PanelLayout& layout) {
     if (!viewSplit()) return;
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     ImFont* font = presentation && window_.imgui().presentationFont() ? window_.imgui().presentationFont() : ImGui::GetFont();
-    const float size = presentation ? ImGui::GetFontSize() * presentationScale * 0.9f : ImGui::GetFontSize();
+    const float size = presentation ? presentationTextPixels() : ImGui::GetFontSize();
     const auto rects = viewPaneRects(layout);
     for (size_t i = 0; i < rects.size() && i < viewPanes.size(); ++i) {
         const auto& r = rects[i];
         const std::string text = render::paneCaption(viewPanes[i].tess, viewPanes[i].stats.triangles(), true);
         const ImVec2 ts2 = font->CalcTextSizeA(size, FLT_MAX, 0.0f, text.c_str());
-        // Top centre; at the bottom in presentation mode, clear of the large levels at the top left.
+        // Top centre; at the bottom in presentation mode.
         const ImVec2 at(r[0] + 0.5f * (r[2] - ts2.x), presentation ? r[1] + r[3] - ts2.y - 12.0f : r[1] + 8.0f);
         dl->AddRectFilled(ImVec2(at.x - 6.0f, at.y - 3.0f), ImVec2(at.x + ts2.x + 6.0f, at.y + ts2.y + 3.0f), IM_COL32(0, 0, 0, 150), 4.0f);
         dl->AddText(font, size, at, presentation ? IM_COL32(255, 220, 40, 255) : IM_COL32(235, 235, 235, 255), text.c_str());

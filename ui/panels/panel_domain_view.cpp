@@ -4,34 +4,46 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cfloat>
+#include <cmath>
 
 #include "render/domain/domain_labels.hpp"
 #include "render/figures/domain_figure.hpp"
 #include "ui/panels/teaching.hpp"
 #include "ui/platform/app_window.hpp"
+#include "ui/platform/imgui_layer.hpp"
 #include "ui/platform/swapchain_target.hpp"
 
 namespace pw::ui {
 
 void Teaching::drawDomainWindow(PanelContext& ctx) {
     domainPanes.clear();
+    domainCounts.clear();
     windowRect = {0, 0, 0, 0};
     labelBoxes.clear();
     if (!showDomain) return;
     const ImGuiIO& io = ImGui::GetIO();
     const PanelLayout& layout = ctx.layout();
     const TessSettings ts = shownTess(ctx.session().doc.tess);
-    ImGui::SetNextWindowPos(ImVec2(layout.left + 16.0f, ImGui::GetFrameHeight() + 16.0f), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(430.0f * ctx.uiScale(), 430.0f * ctx.uiScale()), ImGuiCond_FirstUseEver);
+    // Presentation mode: the whole window right of the levels box, no title bar; else a window
+    // the user moves and sizes.
+    ImGuiWindowFlags flags = ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NoScrollbar;
+    if (presentation) {
+        const float x0 = presentationLeft();
+        ImGui::SetNextWindowPos(ImVec2(x0, 4.0f));
+        ImGui::SetNextWindowSize(ImVec2(std::max(160.0f, io.DisplaySize.x - x0 - 4.0f), std::max(160.0f, io.DisplaySize.y - 8.0f)));
+        flags |= ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse;
+    } else {
+        ImGui::SetNextWindowPos(ImVec2(layout.left + 16.0f, ImGui::GetFrameHeight() + 16.0f), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSize(ImVec2(430.0f * ctx.uiScale(), 430.0f * ctx.uiScale()), ImGuiCond_FirstUseEver);
+    }
     // No window background: the GPU draws the domain into this rectangle before ImGui draws the
     // labels over it (drawDomainPanes).
-    if (ImGui::Begin("Domain view", &showDomain, ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NoScrollbar)) {
-        // Kept between the side panels and under the menu bar at any window size (the panels
-        // would hide part of it, and the 3D view's axis gizmo moves out of its way).
-        {
-            // In presentation mode the panels are gone; the levels overlay (top left) is kept clear.
-            const float x0 = presentation ? 16.0f + overlaySize[0] + 8.0f : layout.left + 4.0f;
-            const float x1 = presentation ? io.DisplaySize.x - 4.0f : io.DisplaySize.x - layout.right - 4.0f;
+    if (ImGui::Begin("Domain view", &showDomain, flags)) {
+        if (!presentation) {
+            // Kept between the side panels and under the menu bar at any window size (the panels
+            // would hide part of it, and the 3D view's axis gizmo moves out of its way).
+            const float x0 = layout.left + 4.0f, x1 = io.DisplaySize.x - layout.right - 4.0f;
             const float y0 = ImGui::GetFrameHeight() + 4.0f, y1 = io.DisplaySize.y - 4.0f;
             const ImVec2 size(std::min(ImGui::GetWindowSize().x, std::max(160.0f, x1 - x0)),
                               std::min(ImGui::GetWindowSize().y, std::max(160.0f, y1 - y0)));
@@ -39,13 +51,16 @@ void Teaching::drawDomainWindow(PanelContext& ctx) {
             const ImVec2 pos(std::clamp(ImGui::GetWindowPos().x, x0, std::max(x0, x1 - size.x)),
                              std::clamp(ImGui::GetWindowPos().y, y0, std::max(y0, y1 - size.y)));
             if (pos.x != ImGui::GetWindowPos().x || pos.y != ImGui::GetWindowPos().y) ImGui::SetWindowPos(pos);
-            windowRect = {pos.x, pos.y, size.x, size.y};
         }
+        windowRect = {ImGui::GetWindowPos().x, ImGui::GetWindowPos().y, ImGui::GetWindowSize().x, ImGui::GetWindowSize().y};
         const ImVec2 wp = ImGui::GetWindowPos(), a = ImGui::GetWindowContentRegionMin(), b = ImGui::GetWindowContentRegionMax();
         const std::array<float, 4> area{wp.x + a.x, wp.y + a.y, b.x - a.x, b.y - a.y};
         const auto rects = render::splitPanes(paneCount, area);
-        const float px = ImGui::GetFontSize(), sx = io.DisplayFramebufferScale.x, sy = io.DisplayFramebufferScale.y;
-        ImDrawList* dl = ImGui::GetWindowDrawList();
+        // Labels, captions and vertex dots grow with presentation mode's text.
+        ImFont* font = presentation && window_.imgui().presentationFont() ? window_.imgui().presentationFont() : ImGui::GetFont();
+        const float px = presentation ? presentationTextPixels() : ImGui::GetFontSize();
+        const float sx = io.DisplayFramebufferScale.x, sy = io.DisplayFramebufferScale.y;
+        domainTextPixels = px;
         for (size_t i = 0; i < rects.size(); ++i) {
             render::DomainViewOptions o;
             o.kind = DomainKind(domainKind);
@@ -54,23 +69,39 @@ void Teaching::drawDomainWindow(PanelContext& ctx) {
             if (paneCount > 1 && paneLevel[i] > 0.0f) o.levels = withUniformLevel(o.levels, paneLevel[i]);
             o.rect = rects[i];
             o.margin = render::domainLabelMargin(px);
-            const render::DomainPane pane{o.kind, o.levels, o.spacing};
-            const auto counts = render::shownCounts(i < domainStats.size() ? domainStats[i] : render::DomainStats{}, pane);
-            const auto widthOf = [](const std::string& t) { return ImGui::CalcTextSize(t.c_str()).x; };
+            // Dots grow with the text, but stay under a third of the shortest segment's length.
+            const float finest = std::ceil(std::max(*std::max_element(o.levels.outer.begin(), o.levels.outer.end()),
+                                                    *std::max_element(o.levels.inner.begin(), o.levels.inner.end())));
+            o.pointSize =
+                sx * std::clamp(placeDomain(o).size / std::max(finest + 1.0f, 1.0f) / 3.0f, 3.0f, 4.0f * px / ImGui::GetFontSize());
+            domainPanes.push_back(o);
+        }
+        render::titleByPartitioning(domainPanes);
+        ImDrawList* dl = ImGui::GetWindowDrawList();
+        const auto measure = [&](const std::string& t, float size) { return font->CalcTextSizeA(size, FLT_MAX, 0.0f, t.c_str()); };
+        for (size_t i = 0; i < domainPanes.size(); ++i) {
+            render::DomainViewOptions& o = domainPanes[i];
+            // The GPU's counts where they are of this very pane; while its levels change (a sweep,
+            // a slider) the rules' counts for this frame's levels, which equal the GPU's (the
+            // teaching tests), until the next frame has drawn them.
+            const bool drawn = i < drawnDomain_.size() && i < domainStats.size() && drawnDomain_[i] == o;
+            if (!drawn) ctx.wake();
+            const auto counts = render::shownCounts(drawn ? domainStats[i] : render::DomainStats{}, o);
+            domainCounts.push_back(counts);
+            const auto widthOf = [&](const std::string& t) { return measure(t, px).x; };
             for (const render::DomainLabel& l : render::domainLabels(o, counts[0], counts[1], px, widthOf)) {
                 // A label still wider than its pane (a very narrow window) is drawn smaller to fit.
-                const ImVec2 full = ImGui::CalcTextSize(l.text.c_str());
+                const float size0 = l.role == render::DomainLabel::Role::Title ? px * 1.1f : px;
+                const ImVec2 full = measure(l.text, size0);
                 const float fit = std::min(1.0f, (o.rect[2] - 4.0f) / std::max(1.0f, full.x));
                 const ImVec2 size(full.x * fit, full.y * fit), at(l.x - l.ax * size.x, l.y - l.ay * size.y);
                 const ImU32 col = l.role == render::DomainLabel::Role::Edge ? IM_COL32(170, 30, 20, 255) : IM_COL32(25, 30, 40, 255);
-                dl->AddText(ImGui::GetFont(), px * fit, at, col, l.text.c_str());
+                dl->AddText(font, size0 * fit, at, col, l.text.c_str());
                 labelBoxes.push_back({at.x, at.y, size.x, size.y});
             }
             // In framebuffer pixels for the GPU pass.
             o.rect = {o.rect[0] * sx, o.rect[1] * sy, o.rect[2] * sx, o.rect[3] * sy};
             o.margin *= sx;
-            o.pointSize = 4.0f * sx;
-            domainPanes.push_back(o);
         }
     }
     ImGui::End();
@@ -82,6 +113,7 @@ void Teaching::drawDomainPanes() {
         domainView_ = std::make_unique<render::DomainView>(window_.device(), window_.target().colorFormat(), window_.target().depthFormat(),
                                                            window_.target().samples());
     domainStats = domainView_->draw(window_.target(), domainPanes, false);
+    drawnDomain_.assign(domainPanes.begin(), domainPanes.end());
 }
 
 }  // namespace pw::ui

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "core/base/limits.hpp"
 #include "core/tess/tess_presets.hpp"
 #include "ui/panels/teaching.hpp"
 #include "ui/platform/imgui_tip.hpp"
@@ -214,8 +215,9 @@ void Teaching::drawControls(PanelContext& ctx) {
     bool present = presentation;
     if (ImGui::Checkbox("Presentation (F5)", &present)) setPresentation(ctx, present);
     tip("Hide the editing panels; show levels and counts large in high contrast. F5 toggles.");
-    ImGui::SliderFloat("Text scale", &presentationScale, 1.5f, 3.0f, "%.1fx");
-    tip("Size of the presentation text relative to the interface");
+    ImGui::SliderFloat("Text scale", &presentationScale, limits::kMinPresentationText, limits::kMaxPresentationText, "%.2fx",
+                       ImGuiSliderFlags_AlwaysClamp);
+    tip("Size of the presentation text relative to the interface (Ctrl+= and Ctrl+- in presentation mode)");
 }
 
 }  // namespace pw::ui

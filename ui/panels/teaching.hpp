@@ -66,15 +66,24 @@ public:
     std::vector<render::DomainViewOptions> domainPanes;  // this frame's panes, framebuffer pixels
     std::array<float, 4> windowRect{0, 0, 0, 0};         // the domain window (x, y, w, h), 0 when hidden
     std::vector<std::array<float, 4>> labelBoxes;        // where its labels went (x, y, w, h; the test trace)
-    std::vector<render::DomainStats> domainStats;
+    std::vector<render::DomainStats> domainStats;        // the GPU's counts of the panes last drawn
+    std::vector<std::array<uint64_t, 2>> domainCounts;   // this frame's panes: vertices, primitives (their labels say these)
+    float domainTextPixels = 0.0f;                       // the size its labels were drawn at (the test trace)
     struct Sweep {
         bool playing = false, loop = true;
         float from = 1.0f, to = 16.0f, seconds = 4.0f, level = 1.0f;
         std::chrono::steady_clock::time_point start;
     } sweep;
-    float presentationScale = 2.0f;
+    float presentationScale = 2.0f;          // the text-scale setting (presentation-text, the Teaching panel)
     std::array<float, 2> overlaySize{0, 0};  // the presentation overlay's size last frame (the test trace)
     float overlayTextRight = 0.0f;           // where its widest line ends, from the overlay's left edge
+    std::vector<std::string> overlayLines;   // what it said (the test trace)
+    TessSettings viewTess;                   // the levels the 3D view was last drawn with (its stats are theirs)
+    // Presentation mode's label size: the text scale times the interface's font, grown with the
+    // window (relative to an 800-pixel-high one), so a projector's 1080 lines get larger type.
+    float presentationTextPixels() const;
+    // The left edge of what presentation mode shows beside its levels box (the panes start there).
+    float presentationLeft() const { return 16.0f + overlaySize[0] + 8.0f; }
 
     // The levels a preset or the sweep shows, apart from the document's, which stay the user's:
     // while active the 3D view, the domain view, the shader panel and presentation mode show these
@@ -96,6 +105,7 @@ private:
     AppWindow& window_;
     bool& shadersOpen_;
     std::unique_ptr<render::DomainView> domainView_;
+    std::vector<render::DomainPane> drawnDomain_;  // the panes domainStats counted
 };
 
 }  // namespace pw::ui

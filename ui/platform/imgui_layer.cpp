@@ -43,10 +43,12 @@ ImGuiLayer::ImGuiLayer(render::Device& dev, GLFWwindow* window, render::Swapchai
                                    arrow);
     // Presentation mode's large text: the embedded DejaVu Sans at 3x, drawn scaled 0.5-1x (1.5-3x
     // the UI size) so it stays sharp.
+    // Latin-1 and the labels' arrow.
+    static const ImWchar bigRanges[] = {0x0020, 0x00FF, 0x2192, 0x2192, 0};
     ImFontConfig big;
     big.FontDataOwnedByAtlas = false;
-    presentationFont_ =
-        io.Fonts->AddFontFromMemoryTTF(const_cast<char*>(embedded::uiFontTtf.data()), int(embedded::uiFontTtf.size()), 39.0f * scale, &big);
+    presentationFont_ = io.Fonts->AddFontFromMemoryTTF(const_cast<char*>(embedded::uiFontTtf.data()), int(embedded::uiFontTtf.size()),
+                                                       39.0f * scale, &big, bigRanges);
 
     // Step 2: descriptor pool for the font texture (and nothing else).
     VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 8};

@@ -32,6 +32,10 @@ std::optional<KeyChord> parseShortcut(std::string_view text) {
             k.key = GLFW_KEY_0 + (c - '0');
         else if (c == '/')
             k.key = GLFW_KEY_SLASH;
+        else if (c == '=')
+            k.key = GLFW_KEY_EQUAL;
+        else if (c == '-')
+            k.key = GLFW_KEY_MINUS;
         else
             return std::nullopt;
         return k;
