@@ -1,10 +1,12 @@
 // `patchwork render [FILE] -o out.png ...`: renders a document headlessly on the GPU tessellation
 // pipeline (offscreen Vulkan target) and writes a PNG, optionally with frame statistics as JSON.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -16,6 +18,8 @@
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
 #include "core/base/limits.hpp"
+#include "core/eval/bezier_math.hpp"
+#include "core/eval/rational_eval.hpp"
 #include "core/io/document_io.hpp"
 #include "core/io/formats.hpp"
 #include "core/mesh/mesh_tessellate.hpp"
@@ -25,6 +29,7 @@
 #include "render/figures/domain_figure_file.hpp"
 #include "render/figures/figure_vector.hpp"
 #include "render/figures/level_legend.hpp"
+#include "render/figures/math_figure.hpp"
 #include "render/figures/model_figure.hpp"
 #include "render/scene/renderer.hpp"
 #include "render/targets/offscreen_target.hpp"
@@ -224,7 +229,23 @@ int runRender(const RenderArgs& a) {
     if (!a.compareDevice.empty()) bad("--compare-device", "compares domain patterns: give --preset or --domain");
     if (render::vectorFormatFor(a.output))
         bad("-o", "'" + a.output + "': SVG and PDF figures are of the tessellated domain (--domain, --preset); write the model as .png");
-    Document doc = a.input.empty() ? builtinTeapot() : loadDocument(a.input);
+    if (a.notesPatch && !a.input.empty()) bad("--notes-patch", "draws the notes' patch: leave out the file");
+    Document doc = a.notesPatch ? notesBezierPatch() : a.input.empty() ? builtinTeapot() : loadDocument(a.input);
+    // --math U,V: one patch's evaluation drawn over the model (one pane).
+    std::optional<BezierMath> math;
+    if (!a.math.empty()) {
+        if (!a.compare.empty()) bad("--math", "draws over one view: leave out --compare");
+        const auto uv = parseNumbers("render", "--math", a.math, 2, 0.0, 1.0, "U,V within [0, 1]");
+        if (a.mathPatch < 0 || size_t(a.mathPatch) >= doc.patches.size())
+            bad("--math-patch",
+                std::to_string(a.mathPatch) + " is not a patch of this document (it has " + std::to_string(doc.patches.size()) + ")");
+        const Patch& p = doc.patches[size_t(a.mathPatch)];
+        if (p.basis != Basis::Bezier)
+            bad("--math-patch", "patch " + std::to_string(a.mathPatch) + " is a " + std::string(basisName(p.basis)) +
+                                    " window; the math figure shows Bézier patches");
+        const WindowNet net = gatherWindow(doc, p.idx);
+        math = bezierMath(net.points, net.weights, uv[0], uv[1]);
+    }
     applyDisplacementArgs("render", a.displacement, doc);
     const std::shared_ptr<const HeightMap> map = loadDocumentHeightMap(doc, a.input);
     // --compare: the model in 2 or 4 panes, each with its own partitioning (and level).
@@ -232,7 +253,12 @@ int runRender(const RenderArgs& a) {
     for (const PaneSpec& p : a.compare.empty() ? std::vector<PaneSpec>{} : parsePaneSpecs("render", "--compare", a.compare))
         panes.push_back({p.spacing, p.level});
     const auto [paneW, paneH] = render::paneSize(int(panes.size()), w, h);  // the camera is framed for a pane's aspect
-    const render::RenderOptions opt = buildRenderOptions(a, doc, paneW, paneH);
+    render::RenderOptions opt = buildRenderOptions(a, doc, paneW, paneH);
+    if (math && a.eye.empty()) {  // the control net, which the math is drawn on, fills the frame (room for the numbers)
+        std::vector<glm::dvec3> net;
+        for (const uint32_t i : doc.patches[size_t(a.mathPatch)].idx) net.push_back(doc.points[i]);
+        opt.camera = frameTightly(opt.camera, net, double(paneW) / double(std::max(paneH, 1u)), 1.25);
+    }
 
     render::DeviceOptions dopt;
     dopt.name = a.device;
@@ -255,12 +281,23 @@ int runRender(const RenderArgs& a) {
         std::ostringstream said;
         if (panes.empty()) {
             const render::FrameStats st = renderer.render(opt);
+            std::string mathSaid;
             std::vector<uint8_t> rgba = target.pixels();
             if (opt.display.shading == ShadingMode::Level)
                 render::drawLevelLegend(rgba, w, h, {0, 0, int(w), int(h)}, render::LabelRaster());
+            if (math) {
+                const Net16 net = gatherNet(doc, doc.patches[size_t(a.mathPatch)].idx);
+                Bounds box;
+                for (const Vec3& q : net) box.add(q);
+                const MathDiagram d = bezierMathDiagram(net, *math, 0.25 * std::max(box.diagonal(), 1e-9));
+                const float px = std::clamp(float(h) / 40.0f, 11.0f, 40.0f);
+                render::drawMathDiagram({w, h, rgba}, d, opt.camera, {0.0f, 0.0f, float(w), float(h)}, px, render::LabelRaster());
+                mathSaid = "Bezier math of patch " + std::to_string(a.mathPatch) + ": " + d.legend[0] + ", " + d.legend[3] + "\n";
+            }
             out.stage(a.output, render::encodePng(a.output, w, h, rgba));
             said << "wrote " << a.output << " (" << w << "x" << h << ", " << dev.name() << "): " << st.triangles() << " triangles, "
-                 << st.patches << " patches (" << st.patchesCulled << " culled), " << st.draws << " draws, GPU " << st.gpuMs << " ms\n";
+                 << st.patches << " patches (" << st.patchesCulled << " culled), " << st.draws << " draws, GPU " << st.gpuMs << " ms\n"
+                 << mathSaid;
             if (!a.stats.empty()) out.stage(a.stats, render::statsToJson(st) + "\n");
         } else {
             const render::LabelRaster labels;
@@ -355,6 +392,11 @@ void registerRenderCommand(CLI::App& app, Action& run) {
     cmd->add_option("--compare-device", a->compareDevice,
                     "Domain figure: this device's pattern beside the one in this capture file (patchwork capture; data/captures), "
                     "differences highlighted");
+    cmd->add_option("--math", a->math,
+                    "U,V: draw the Bézier math of one patch at (U, V) over the model: each control point's Bernstein weight, the "
+                    "de Casteljau rows and column, the point, its tangents and normal");
+    cmd->add_option("--math-patch", a->mathPatch, "The patch --math shows (default 0)");
+    cmd->add_flag("--notes-patch", a->notesPatch, "Render the lecture notes' 16-point Bézier patch instead of a file");
     cmd->add_option("-o,--output", a->output, "Output PNG; a domain figure also .svg or .pdf (vector paths, one per triangle)")->required();
 }
 

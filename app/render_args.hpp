@@ -16,7 +16,9 @@ namespace pw::app {
 struct RenderArgs {
     std::string input, output = "", size = "1280x720", tess, outer, inner, spacing, adaptive, shading, overlay, view, stats, device,
                        targetPx, maxLevel, domain, preset, compare, isolines, combJoin, compareDevice, eye, target, origin, theme, distance;
-    bool cull = false, validation = false, noMsaa = false, cullFar = false;
+    std::string math;  // render --math U,V: the Bézier math of patch mathPatch drawn over the model
+    int mathPatch = 0;
+    bool cull = false, validation = false, noMsaa = false, cullFar = false, notesPatch = false;
     DisplacementArgs displacement;
 };
 

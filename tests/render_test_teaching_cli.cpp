@@ -3,10 +3,12 @@
 // naming the option, and write nothing. Validation layer on (non-zero exit on any message).
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "core/eval/patch_eval.hpp"
 #include "core/tess/tess_presets.hpp"
 #include "render/domain/domain_labels.hpp"
 #include "render/figures/domain_figure.hpp"
@@ -453,6 +455,38 @@ TEST(TeachingCli, DistanceFormulaCullsBeyondFar) {
     EXPECT_EQ(notes["patches_culled"], cull["patches_culled"]);  // the same far distance
     const RunResult bad = runCommand(bin() + " render --adaptive distance --distance 50,10 -o " + (dir / "x.png").string() + " 2>&1");
     EXPECT_EQ(bad.exitCode, 2) << bad.output;
+}
+
+// `render --notes-patch --math U,V`: the notes' patch with its evaluation at (U, V) drawn on the net
+// (weights in the net's orange, the de Casteljau column in magenta, the point in white) and the
+// point printed, equal to the CPU evaluation; bad parameters, patches and combinations are exit 2
+// with nothing written.
+TEST(TeachingCli, MathFigureDrawsTheEvaluationOnTheNet) {
+    const auto dir = freshTempDir("teach-math");
+    const auto png = dir / "m.png";
+    const RunResult r = runCommand(bin() + " render --notes-patch --math 0.35,0.6 --size 640x360 -o " + png.string() + " 2>&1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const Document notes = notesBezierPatch();
+    const Vec3 s = evaluateBezierBernsteinSum(gatherNet(notes, notes.patches[0].idx), 0.35, 0.6);
+    char want[96];
+    std::snprintf(want, sizeof want, "S = (%.3f, %.3f, %.3f)", s.x, s.y, s.z);
+    EXPECT_NE(r.output.find(want), std::string::npos) << want << "\n" << r.output;
+    const Png img = loadPng(png);
+    size_t orange = 0, magenta = 0;
+    for (int y = 0; y < img.h; ++y)
+        for (int x = 0; x < img.w; ++x) {
+            const auto p = img.at(x, y);
+            orange += p[0] > 230 && p[1] > 120 && p[1] < 180 && p[2] < 80;
+            magenta += p[0] > 220 && p[1] < 130 && p[2] > 190;
+        }
+    EXPECT_GT(orange, 300u);
+    EXPECT_GT(magenta, 100u);
+    for (const std::string& bad : std::vector<std::string>{"--math 1.5,0.5", "--math 0.5", "--math 0.5,0.5 --math-patch 1",
+                                                           "--math 0.5,0.5 --compare equal,pow2", (dataDir() / "teapot.bpt").string()}) {
+        const RunResult b = runCommand(bin() + " render --notes-patch " + bad + " -o " + (dir / "x.png").string() + " 2>&1");
+        EXPECT_EQ(b.exitCode, 2) << bad << ": " << b.output;
+        EXPECT_FALSE(std::filesystem::exists(dir / "x.png")) << bad;
+    }
 }
 
 }  // namespace pw::test

@@ -4,7 +4,9 @@
 
 #include <random>
 
+#include "core/eval/bezier_math.hpp"
 #include "core/eval/patch_eval.hpp"
+#include "core/eval/rational_eval.hpp"
 #include "core/model/basis.hpp"
 #include "core/model/document.hpp"
 
@@ -184,4 +186,74 @@ TEST(Eval, GridMatchesPointEvaluationAndSharedEdgesAreBitIdentical) {
         EXPECT_EQ(ga[r * 8 + 7].p, gb[(7 - r) * 8 + 0].p) << "row " << r;
         for (int c = 0; c <= 7; ++c) EXPECT_LE(dist(ga[r * 8 + c].p, evaluateNet(a, Basis::Bezier, 0.5, c / 7.0, r / 7.0).p), 1e-12);
     }
+}
+
+// The Bézier math overlay's numbers (core/eval/bezier_math): the 16 weights are the products of the
+// 4 + 4 Bernstein factors and sum to 1, Σ weight·P is the point, the de Casteljau column ends on
+// it, its last segment is the v tangent over 3, and the rows' points are the column's control
+// polygon; a rational patch the same with w·B / Σ w·B.
+TEST(BezierMath, WeightsConstructionAndPointAgree) {
+    std::mt19937 rng(41);
+    for (int trial = 0; trial < 20; ++trial) {
+        const Net16 net = randomNet(rng);
+        const double u = std::uniform_real_distribution<double>(0, 1)(rng), v = std::uniform_real_distribution<double>(0, 1)(rng);
+        const BezierMath m = bezierMath(net, std::nullopt, u, v);
+        double sum = 0.0;
+        Vec3 weighted(0.0);
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 4; ++j) {
+                const double w = m.weights[size_t(i * 4 + j)];
+                EXPECT_NEAR(w, m.bv[size_t(i)] * m.bu[size_t(j)], 1e-15);
+                sum += w;
+                weighted += w * net[size_t(i * 4 + j)];
+            }
+        EXPECT_NEAR(sum, 1.0, 1e-14);
+        const Vec3 ref = evaluateBezierBernsteinSum(net, u, v);
+        EXPECT_LT(glm::length(weighted - ref), 1e-12);
+        EXPECT_LT(glm::length(m.column.point - ref), 1e-12);
+        EXPECT_LT(glm::length(m.point - ref), 1e-12);
+        EXPECT_LT(glm::length(3.0 * (m.column.second[1] - m.column.second[0]) - m.dv), 1e-10);
+        for (int i = 0; i < 4; ++i) {
+            Vec3 row(0.0);
+            for (int j = 0; j < 4; ++j) row += m.bu[size_t(j)] * net[size_t(i * 4 + j)];
+            EXPECT_LT(glm::length(m.rows[size_t(i)].point - row), 1e-12);
+        }
+        EXPECT_NEAR(glm::length(m.normal), 1.0, 1e-12);
+    }
+    // Rational: a patch with uneven weights.
+    const Net16 net = randomNet(rng);
+    Weights16 w;
+    for (size_t k = 0; k < 16; ++k) w[k] = 0.5 + 0.1 * double(k);
+    const BezierMath m = bezierMath(net, w, 0.3, 0.7);
+    double sum = 0.0;
+    Vec3 weighted(0.0);
+    for (size_t k = 0; k < 16; ++k) {
+        sum += m.weights[k];
+        weighted += m.weights[k] * net[k];
+    }
+    const Vec3 ref = evaluateWindow(WindowNet{net, w}, Basis::Bezier, 0.5, 0.3, 0.7).p;
+    EXPECT_NEAR(sum, 1.0, 1e-14);
+    EXPECT_LT(glm::length(weighted - ref), 1e-12);
+    EXPECT_LT(glm::length(m.column.point - ref), 1e-12);
+}
+
+// The diagram: the net (24 lines) with every point labelled by its weight, each row's pyramid (3
+// strokes), the column polygon (3) and its pyramid (3), three arrows; the side box's seven lines.
+TEST(BezierMath, DiagramLabelsEveryControlPoint) {
+    std::mt19937 rng(7);
+    const Net16 net = randomNet(rng);
+    const BezierMath m = bezierMath(net, std::nullopt, 0.25, 0.5);
+    const MathDiagram d = bezierMathDiagram(net, m, 1.0);
+    EXPECT_EQ(d.strokes.size(), 24u + 4u * 3u + 3u + 3u + 3u);
+    size_t labelled = 0;
+    for (const auto& dot : d.dots)
+        if (dot.role == MathDiagram::Role::Net) {
+            ++labelled;
+            EXPECT_FALSE(dot.label.empty());
+        }
+    EXPECT_EQ(labelled, 16u);
+    // B_1(0.25) = 3 * 0.25 * 0.75^2 = 0.421875, B_2(0.5) = 0.375: point (2, 1) weighs 0.158.
+    EXPECT_EQ(d.dots[2 * 4 + 1].label, "0.158");
+    ASSERT_EQ(d.legend.size(), 7u);
+    EXPECT_EQ(d.legend[1], "B(u) = 0.422  0.422  0.141  0.016");
 }

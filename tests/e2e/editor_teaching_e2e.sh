@@ -4,7 +4,8 @@
 # them (as a lesson: the document's levels stay; "Keep in document" is one undo step) and across
 # comparison panes; the sweep animates the lesson's level and leaves the document alone;
 # the shader panel shows the variants the settings select;
-# presentation mode (F5) hides the panels and comes back. Screenshots in WORK_DIR.
+# presentation mode (F5) hides the panels and comes back; the Bézier math labels a patch's control
+# points with their weights and follows a click on the surface. Screenshots in WORK_DIR.
 # Usage: editor_teaching_e2e.sh PATCHWORK_BINARY DATA_DIR WORK_DIR
 set -euo pipefail
 BIN=$1
@@ -203,6 +204,37 @@ xdotool key F5
 wait_for "not t['presentation'] and 'panel.teaching' in t['items']"
 check_validation
 say "presentation mode on and off"
+
+# The Bézier math: on, the 16 control points of a patch carry their Bernstein weights (17 labels
+# with the point's); a click on the surface picks the patch and its (u, v), and the numbers follow.
+xdotool mousemove --sync 1030 500
+for i in 1 2 3 4 5 6; do xdotool click 5; sleep 0.05; done
+wait_for "t['items']['teach.math'][1] < 740"
+click_item teach.domain  # the domain window out of the view
+wait_for "len(t['domain']) == 0"
+click_item teach.math
+wait_for "t['math']['on'] and t['math']['labels'] == 17 and len(t['math']['lines']) == 8 and t['math']['patch'] == -1"
+read -r MX MY < <(trace "' '.join(str(round(v)) for v in [(t['layout']['left'] + t['window'][0] - t['layout']['right']) / 2, t['window'][1] / 2 + 40])")
+xdotool mousemove --sync "$MX" "$MY"
+sleep 0.2
+xdotool click 1
+wait_for "t['math']['patch'] >= 0 and (t['math']['u'], t['math']['v']) != (0.35, 0.6) and t['math']['lines'][1].startswith('u = ')"
+python3 - "$WORK/trace.json" <<'PY' || fail "Bezier math numbers"
+import json, sys
+t = json.load(open(sys.argv[1]))
+m = t['math']
+assert m['lines'][1] == "u = %.3f   v = %.3f" % (m['u'], m['v']), m['lines']
+for line in m['lines'][2:4]:  # B(u), B(v): four Bernstein weights summing to 1
+    b = [float(x) for x in line.split('=')[1].split()]
+    assert len(b) == 4 and abs(sum(b) - 1) < 0.003, line
+PY
+import -window root "$WORK/bezier_math.png"
+click_item teach.math
+wait_for "not t['math']['on'] and t['math']['labels'] == 0"
+click_item teach.domain
+wait_for "len(t['domain']) == 1"
+check_validation
+say "Bezier math: patch $(trace "t['math']['patch']") at (u, v) = ($(trace "round(t['math']['u'], 3)"), $(trace "round(t['math']['v'], 3)")) picked on the surface"
 
 # Bézier triangles in the editor: a new document (one flat patch), seen from the top; the patch is
 # picked by its surface and deleted, a triangle added, picked by its surface, deleted with the

@@ -318,6 +318,7 @@ void Editor::drawFrame() {
     viewportInput();
     teaching_.input(*this);
     if (!teaching_.presentation) drawViewportOverlays();
+    drawMathOverlay();
     teaching_.drawPaneCaptions(layout());
     drawUi();
     window_.endUi();

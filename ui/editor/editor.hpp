@@ -204,6 +204,7 @@ private:
     void updateConstructionPreview();  // once a frame, after the panels asked
     void drawConstructionPreview(const std::function<void(const Vec3&, const Vec3&, unsigned, float)>& line) const;
     void drawPaneOverlays(const std::array<float, 4>& pane, bool active);  // selection, gizmo of one pane
+    void drawMathOverlay();                                                // math_overlay.cpp: Teaching's Bézier math over the 3D view
 
     AppWindow& window_;
     std::unique_ptr<render::Renderer> renderer_;

@@ -195,6 +195,11 @@ void Editor::viewportInput() {
                     // A click on empty space: pick a patch by its surface, else clear.
                     const auto hit = pickSurface(doc_, rayThroughPixel(cam_, mx, my, W, H));
                     if (!pressShift_) sel_.points.clear();
+                    if (hit && hit->patch >= 0 && teaching_.math.on) {  // Teaching's Bézier math: this patch at this (u, v)
+                        teaching_.math.patch = hit->patch;
+                        teaching_.math.u = float(hit->u);
+                        teaching_.math.v = float(hit->v);
+                    }
                     if (hit && hit->patch >= 0) {
                         sel_.patch = hit->patch;
                         sel_.surface = sel_.triangle = -1;

@@ -212,6 +212,22 @@ void Teaching::drawControls(PanelContext& ctx) {
     ImGui::Text("level %.2f", double(sweep.level));
     commandButton(ctx, "Save animation...", "sweep-animation", "teach.saveAnimation");
 
+    // The Bézier math of one patch at (u, v), on its control net.
+    if (ImGui::Checkbox("Bezier math", &math.on)) ctx.wake();
+    traceItem("teach.math");
+    tip("Show one patch's evaluation at (u, v): the 16 Bernstein weights on its control points, the de Casteljau rows and "
+        "column, the point, its tangents and normal. Click the surface to pick the patch and (u, v)");
+    if (math.on) {
+        const float w = ImGui::GetContentRegionAvail().x * 0.5f - 4.0f;
+        ImGui::SetNextItemWidth(w);
+        if (ImGui::SliderFloat("##mathU", &math.u, 0.0f, 1.0f, "u %.3f", ImGuiSliderFlags_AlwaysClamp)) ctx.wake();
+        traceItem("teach.mathU");
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(w);
+        if (ImGui::SliderFloat("##mathV", &math.v, 0.0f, 1.0f, "v %.3f", ImGuiSliderFlags_AlwaysClamp)) ctx.wake();
+        traceItem("teach.mathV");
+    }
+
     bool present = presentation;
     if (ImGui::Checkbox("Presentation (F5)", &present)) setPresentation(ctx, present);
     tip("Hide the editing panels; show levels and counts large in high contrast. F5 toggles.");

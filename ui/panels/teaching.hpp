@@ -85,6 +85,17 @@ public:
     // The left edge of what presentation mode shows beside its levels box (the panes start there).
     float presentationLeft() const { return 16.0f + overlaySize[0] + 8.0f; }
 
+    // The Bézier math overlay (ui/editor/math_overlay.cpp): one patch's evaluation at (u, v) drawn
+    // on its control net. `patch` -1: the selected patch, else patch 0; a click on the surface
+    // while it is on picks the patch and (u, v).
+    struct MathView {
+        bool on = false;
+        int patch = -1;
+        float u = 0.35f, v = 0.6f;
+    } math;
+    std::vector<std::string> mathLines;  // what its box said last frame (the test trace)
+    int mathLabels = 0;                  // weight labels drawn last frame
+
     // The levels a preset or the sweep shows, apart from the document's, which stay the user's:
     // while active the 3D view, the domain view, the shader panel and presentation mode show these
     // (panel_teaching.cpp); "Back to document" drops them, "Keep in document" makes them one undo

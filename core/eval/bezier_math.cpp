@@ -1,0 +1,166 @@
+#include "core/eval/bezier_math.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <glm/vec4.hpp>
+
+#include "core/eval/patch_eval.hpp"
+#include "core/eval/rational_eval.hpp"
+
+namespace pw {
+
+namespace {
+
+// Homogeneous point (w·P, w).
+using H = glm::dvec4;
+
+Vec3 project(const H& h) { return Vec3(h) / h.w; }
+
+CasteljauSteps casteljau(const std::array<H, 4>& p, double t, H& out) {
+    CasteljauSteps s;
+    const H a = glm::mix(p[0], p[1], t), b = glm::mix(p[1], p[2], t), c = glm::mix(p[2], p[3], t);
+    const H d = glm::mix(a, b, t), e = glm::mix(b, c, t);
+    out = glm::mix(d, e, t);
+    s.first = {project(a), project(b), project(c)};
+    s.second = {project(d), project(e)};
+    s.point = project(out);
+    return s;
+}
+
+std::array<double, 4> bernstein(double t) {
+    const double s = 1.0 - t;
+    return {s * s * s, 3.0 * t * s * s, 3.0 * t * t * s, t * t * t};
+}
+
+std::string fixed(double x, int digits = 3) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, std::abs(x) < 0.5 * std::pow(10.0, -digits) ? 0.0 : x);
+    return buf;
+}
+
+std::string vec(const Vec3& p) { return "(" + fixed(p.x) + ", " + fixed(p.y) + ", " + fixed(p.z) + ")"; }
+
+std::string list(const std::array<double, 4>& b) { return fixed(b[0]) + "  " + fixed(b[1]) + "  " + fixed(b[2]) + "  " + fixed(b[3]); }
+
+}  // namespace
+
+BezierMath bezierMath(const Net16& net, const std::optional<Weights16>& weights, double u, double v) {
+    BezierMath m;
+    m.u = u;
+    m.v = v;
+    m.bu = bernstein(u);
+    m.bv = bernstein(v);
+    double total = 0.0;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            const double w = weights ? (*weights)[size_t(i * 4 + j)] : 1.0;
+            m.weights[size_t(i * 4 + j)] = w * m.bv[size_t(i)] * m.bu[size_t(j)];
+            total += m.weights[size_t(i * 4 + j)];
+        }
+    for (double& w : m.weights) w /= total;
+    std::array<H, 4> column{};
+    for (int i = 0; i < 4; ++i) {
+        std::array<H, 4> row{};
+        for (int j = 0; j < 4; ++j) {
+            const double w = weights ? (*weights)[size_t(i * 4 + j)] : 1.0;
+            row[size_t(j)] = H(net[size_t(i * 4 + j)] * w, w);
+        }
+        m.rows[size_t(i)] = casteljau(row, u, column[size_t(i)]);
+    }
+    H point{};
+    m.column = casteljau(column, v, point);
+    const SurfacePoint sp = evaluateWindow(WindowNet{net, weights}, Basis::Bezier, 0.5, u, v);
+    m.point = sp.p;
+    m.du = sp.du;
+    m.dv = sp.dv;
+    m.normal = sp.n;
+    return m;
+}
+
+MathDiagram bezierMathDiagram(const Net16& net, const BezierMath& m, double arrow) {
+    using Role = MathDiagram::Role;
+    MathDiagram d;
+    const auto stroke = [&](const Vec3& a, const Vec3& b, Role r) { d.strokes.push_back({a, b, r}); };
+    // The control net, each point sized by and labelled with its weight.
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            const size_t k = size_t(i * 4 + j);
+            if (j < 3) stroke(net[k], net[k + 1], Role::Net);
+            if (i < 3) stroke(net[k], net[k + 4], Role::Net);
+            d.dots.push_back({net[k], 0.6 + 2.4 * std::sqrt(m.weights[k]), Role::Net, fixed(m.weights[k])});
+        }
+    // Each row's de Casteljau pyramid in u, then the column through the rows' points in v.
+    const auto pyramid = [&](const CasteljauSteps& s, Role step, Role result) {
+        stroke(s.first[0], s.first[1], step);
+        stroke(s.first[1], s.first[2], step);
+        stroke(s.second[0], s.second[1], step);
+        for (const Vec3& p : s.first) d.dots.push_back({p, 0.5, step, {}});
+        for (const Vec3& p : s.second) d.dots.push_back({p, 0.6, step, {}});
+        d.dots.push_back({s.point, 0.9, result, {}});
+    };
+    for (const CasteljauSteps& r : m.rows) pyramid(r, Role::RowStep, Role::Row);
+    for (int i = 0; i < 3; ++i) stroke(m.rows[size_t(i)].point, m.rows[size_t(i + 1)].point, Role::Column);
+    pyramid(m.column, Role::ColumnStep, Role::Column);
+    // The point, its tangents (their ratio kept) and the unit normal.
+    const double longest = std::max({glm::length(m.du), glm::length(m.dv), 1e-300});
+    stroke(m.point, m.point + m.du * (arrow / longest), Role::TangentU);
+    stroke(m.point, m.point + m.dv * (arrow / longest), Role::TangentV);
+    stroke(m.point, m.point + m.normal * arrow, Role::Normal);
+    d.dots.push_back({m.point, 1.6, Role::Point, "S(" + fixed(m.u, 2) + ", " + fixed(m.v, 2) + ")"});
+    d.legend = {"u = " + fixed(m.u) + "   v = " + fixed(m.v),
+                "B(u) = " + list(m.bu),
+                "B(v) = " + list(m.bv),
+                "S = " + vec(m.point),
+                "dS/du = " + vec(m.du),
+                "dS/dv = " + vec(m.dv),
+                "n = " + vec(m.normal)};
+    return d;
+}
+
+std::array<unsigned char, 4> mathColor(MathDiagram::Role role) {
+    using Role = MathDiagram::Role;
+    switch (role) {
+        case Role::Net:
+            return {255, 150, 40, 255};
+        case Role::RowStep:
+            return {90, 200, 255, 200};
+        case Role::Row:
+            return {90, 200, 255, 255};
+        case Role::ColumnStep:
+            return {255, 90, 220, 220};
+        case Role::Column:
+            return {255, 90, 220, 255};
+        case Role::Point:
+            return {255, 255, 255, 255};
+        case Role::TangentU:
+            return {240, 60, 50, 255};
+        case Role::TangentV:
+            return {60, 210, 80, 255};
+        case Role::Normal:
+            return {70, 120, 255, 255};
+    }
+    return {255, 255, 255, 255};
+}
+
+float mathStrokeWidth(MathDiagram::Role role) {
+    using Role = MathDiagram::Role;
+    switch (role) {
+        case Role::Net:
+            return 1.5f;
+        case Role::RowStep:
+            return 1.0f;
+        case Role::ColumnStep:
+            return 2.0f;
+        case Role::Column:
+            return 2.5f;
+        case Role::TangentU:
+        case Role::TangentV:
+        case Role::Normal:
+            return 3.0f;
+        default:
+            return 1.5f;
+    }
+}
+
+}  // namespace pw
