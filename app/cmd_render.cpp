@@ -31,6 +31,7 @@
 #include "render/figures/level_legend.hpp"
 #include "render/figures/math_figure.hpp"
 #include "render/figures/model_figure.hpp"
+#include "render/figures/stage_bars.hpp"
 #include "render/scene/renderer.hpp"
 #include "render/targets/offscreen_target.hpp"
 #include "render/targets/png_writer.hpp"
@@ -285,6 +286,10 @@ int runRender(const RenderArgs& a) {
             std::vector<uint8_t> rgba = target.pixels();
             if (opt.display.shading == ShadingMode::Level)
                 render::drawLevelLegend(rgba, w, h, {0, 0, int(w), int(h)}, render::LabelRaster());
+            const float barPx = std::clamp(float(h) / 45.0f, 10.0f, 30.0f);
+            if (a.stageBars)
+                render::drawStageBars({w, h, rgba}, {0.0f, 0.0f, float(w), float(h)}, render::stageCounts(st), barPx,
+                                      render::LabelRaster());
             if (math) {
                 const Net16 net = gatherNet(doc, doc.patches[size_t(a.mathPatch)].idx);
                 Bounds box;
@@ -305,6 +310,10 @@ int runRender(const RenderArgs& a) {
             const auto results = render::renderModelFigure(renderer, target, labels, opt, panes, 0.0f, rgba);
             if (opt.display.shading == ShadingMode::Level)
                 for (const render::PaneResult& r : results) render::drawLevelLegend(rgba, w, h, r.rect, labels);
+            if (a.stageBars)
+                for (const render::PaneResult& r : results)
+                    render::drawStageBars({w, h, rgba}, {float(r.rect[0]), float(r.rect[1]), float(r.rect[2]), float(r.rect[3])},
+                                          render::stageCounts(r.stats), std::clamp(float(r.rect[3]) / 40.0f, 10.0f, 30.0f), labels);
             out.stage(a.output, render::encodePng(a.output, w, h, rgba));
             nlohmann::json j;
             j["device"] = dev.name();
@@ -396,6 +405,9 @@ void registerRenderCommand(CLI::App& app, Action& run) {
                     "U,V: draw the Bézier math of one patch at (U, V) over the model: each control point's Bernstein weight, the "
                     "de Casteljau rows and column, the point, its tangents and normal");
     cmd->add_option("--math-patch", a->mathPatch, "The patch --math shows (default 0)");
+    cmd->add_flag("--stage-bars", a->stageBars,
+                  "Draw each pane's per-stage counters: vertex shader invocations, control shader patches, evaluation shader "
+                  "invocations, triangles (log-scaled bars, the numbers beside them)");
     cmd->add_flag("--notes-patch", a->notesPatch, "Render the lecture notes' 16-point Bézier patch instead of a file");
     cmd->add_option("-o,--output", a->output, "Output PNG; a domain figure also .svg or .pdf (vector paths, one per triangle)")->required();
 }

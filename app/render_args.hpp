@@ -18,7 +18,7 @@ struct RenderArgs {
                        targetPx, maxLevel, domain, preset, compare, isolines, combJoin, compareDevice, eye, target, origin, theme, distance;
     std::string math;  // render --math U,V: the Bézier math of patch mathPatch drawn over the model
     int mathPatch = 0;
-    bool cull = false, validation = false, noMsaa = false, cullFar = false, notesPatch = false;
+    bool cull = false, validation = false, noMsaa = false, cullFar = false, notesPatch = false, stageBars = false;
     DisplacementArgs displacement;
 };
 

@@ -3,6 +3,7 @@
 // naming the option, and write nothing. Validation layer on (non-zero exit on any message).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -12,6 +13,7 @@
 #include "core/tess/tess_presets.hpp"
 #include "render/domain/domain_labels.hpp"
 #include "render/figures/domain_figure.hpp"
+#include "render/figures/stage_bars.hpp"
 #include "support.hpp"
 
 namespace pw::test {
@@ -486,6 +488,52 @@ TEST(TeachingCli, MathFigureDrawsTheEvaluationOnTheNet) {
         const RunResult b = runCommand(bin() + " render --notes-patch " + bad + " -o " + (dir / "x.png").string() + " 2>&1");
         EXPECT_EQ(b.exitCode, 2) << bad << ": " << b.output;
         EXPECT_FALSE(std::filesystem::exists(dir / "x.png")) << bad;
+    }
+}
+
+// `render --stage-bars`: each pane's per-stage counters, log-scaled bars in its bottom-right corner;
+// the numbers are the GPU's pipeline statistics (the control shader runs once per patch, the
+// evaluation shader once per tessellated vertex: 17 x 17 a patch at level 16; the vertex shader at
+// most once per control point fed, fewer where the implementation reuses shared ones).
+TEST(TeachingCli, StageBarsShowTheGpusCountersPerPane) {
+    render::FrameStats s;
+    EXPECT_TRUE(render::stageCounts(s).empty());  // no pipeline statistics: no bars
+    s.pipelineStatsValid = true;
+    s.vsInvocations = 9;
+    s.tcsPatches = 0;
+    s.tesInvocations = 99;
+    s.clippingInvocations = 999;
+    const auto c = render::stageCounts(s);
+    ASSERT_EQ(c.size(), 4u);
+    EXPECT_FLOAT_EQ(c[3].bar, 1.0f);
+    EXPECT_NEAR(c[0].bar, std::log(10.0) / std::log(1000.0), 1e-6);
+    EXPECT_EQ(c[1].bar, 0.0f);
+
+    const auto dir = freshTempDir("teach-stages");
+    const auto green = [](const Png& img) {
+        size_t n = 0;  // the primitives bar, bottom-right quadrant
+        for (int y = img.h / 2; y < img.h; ++y)
+            for (int x = img.w / 2; x < img.w; ++x) {
+                const auto p = img.at(x, y);
+                n += p[0] > 100 && p[0] < 140 && p[1] > 200 && p[2] > 70 && p[2] < 110;
+            }
+        return n;
+    };
+    const std::string base = bin() + " render " + (dataDir() / "teapot.bpt").string() + " --tess 16 --size 640x360 ";
+    const RunResult r =
+        runCommand(base + "--stage-bars --stats " + (dir / "s.json").string() + " -o " + (dir / "s.png").string() + " 2>&1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const RunResult plain = runCommand(base + "-o " + (dir / "p.png").string() + " 2>&1");
+    ASSERT_EQ(plain.exitCode, 0) << plain.output;
+    EXPECT_GT(green(loadPng(dir / "s.png")), 100u);
+    EXPECT_EQ(green(loadPng(dir / "p.png")), 0u);
+    std::ifstream in(dir / "s.json");
+    const nlohmann::json j = nlohmann::json::parse(in);
+    if (j["pipeline_statistics"].get<bool>()) {
+        EXPECT_EQ(j["tess_control_patches"].get<uint64_t>(), 32u);
+        EXPECT_EQ(j["tess_eval_invocations"].get<uint64_t>(), 32u * 17u * 17u);
+        EXPECT_GT(j["vertex_shader_invocations"].get<uint64_t>(), 0u);
+        EXPECT_LE(j["vertex_shader_invocations"].get<uint64_t>(), 32u * 16u);
     }
 }
 

@@ -9,8 +9,9 @@ namespace pw::render {
 
 namespace {
 constexpr VkQueryPipelineStatisticFlags kStatFlags =
-    VK_QUERY_PIPELINE_STATISTIC_INPUT_ASSEMBLY_PRIMITIVES_BIT | VK_QUERY_PIPELINE_STATISTIC_CLIPPING_INVOCATIONS_BIT |
-    VK_QUERY_PIPELINE_STATISTIC_CLIPPING_PRIMITIVES_BIT | VK_QUERY_PIPELINE_STATISTIC_TESSELLATION_CONTROL_SHADER_PATCHES_BIT |
+    VK_QUERY_PIPELINE_STATISTIC_INPUT_ASSEMBLY_PRIMITIVES_BIT | VK_QUERY_PIPELINE_STATISTIC_VERTEX_SHADER_INVOCATIONS_BIT |
+    VK_QUERY_PIPELINE_STATISTIC_CLIPPING_INVOCATIONS_BIT | VK_QUERY_PIPELINE_STATISTIC_CLIPPING_PRIMITIVES_BIT |
+    VK_QUERY_PIPELINE_STATISTIC_TESSELLATION_CONTROL_SHADER_PATCHES_BIT |
     VK_QUERY_PIPELINE_STATISTIC_TESSELLATION_EVALUATION_SHADER_INVOCATIONS_BIT;
 }
 
@@ -22,6 +23,7 @@ nlohmann::json statsJson(const FrameStats& s) {
             {"tess_eval_invocations", s.tesInvocations},
             {"tess_control_patches", s.tcsPatches},
             {"input_primitives", s.inputPrimitives},
+            {"vertex_shader_invocations", s.vsInvocations},
             {"pipeline_statistics", s.pipelineStatsValid},
             {"patches", s.patches},
             {"patches_culled", s.patchesCulled},
@@ -79,15 +81,16 @@ void FrameQueries::read(FrameStats& out) {
     }
     if (stats_) {
         // Results come in the order of the flag bits.
-        uint64_t r[5] = {0, 0, 0, 0, 0};
+        uint64_t r[6] = {0, 0, 0, 0, 0, 0};
         if (vkGetQueryPoolResults(dev_.device(), stats_, 0, 1, sizeof(r), r, sizeof(r),
                                   VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT) == VK_SUCCESS) {
             out.pipelineStatsValid = true;
             out.inputPrimitives = r[0];
-            out.clippingInvocations = r[1];
-            out.clippingPrimitives = r[2];
-            out.tcsPatches = r[3];
-            out.tesInvocations = r[4];
+            out.vsInvocations = r[1];
+            out.clippingInvocations = r[2];
+            out.clippingPrimitives = r[3];
+            out.tcsPatches = r[4];
+            out.tesInvocations = r[5];
         }
     }
 }

@@ -22,6 +22,7 @@ struct FrameStats {
     double gpuMs = -1.0;    // timestamps; -1 when unsupported
     bool pipelineStatsValid = false;
     uint64_t inputPrimitives = 0;      // patches (or plain triangles) fed to the surface pass
+    uint64_t vsInvocations = 0;        // vertex shader invocations (one per control point fed)
     uint64_t tcsPatches = 0;           // control shader patches
     uint64_t tesInvocations = 0;       // evaluation shader invocations
     uint64_t clippingInvocations = 0;  // triangles reaching the clipper = triangles drawn

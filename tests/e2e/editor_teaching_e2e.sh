@@ -231,6 +231,12 @@ PY
 import -window root "$WORK/bezier_math.png"
 click_item teach.math
 wait_for "not t['math']['on'] and t['math']['labels'] == 0"
+# Stage counters: four rows of the GPU's counts, one control shader patch per teapot patch.
+click_item teach.stageBars
+wait_for "t['stageBarRows'] == 4 and t['tcsPatches'] == 32 and t['tesInvocations'] == 32 * 17 * 17 and 0 < t['vsInvocations'] <= 32 * 16"
+import -window root "$WORK/stage_bars.png"
+click_item teach.stageBars
+wait_for "t['stageBarRows'] == 0"
 click_item teach.domain
 wait_for "len(t['domain']) == 1"
 check_validation

@@ -320,6 +320,7 @@ void Editor::drawFrame() {
     if (!teaching_.presentation) drawViewportOverlays();
     drawMathOverlay();
     teaching_.drawPaneCaptions(layout());
+    teaching_.drawStageBars(layout(), report_.stats);
     drawUi();
     window_.endUi();
     const auto t1 = clock::now();

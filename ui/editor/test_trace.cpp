@@ -55,6 +55,10 @@ void TestTrace::write(const EditorSnapshot& e) {
     j["presentation"] = teaching.presentation;
     j["presentationOverlay"] = {teaching.overlaySize[0], teaching.overlaySize[1], teaching.overlayTextRight};
     j["presentationLines"] = teaching.overlayLines;
+    j["stageBarRows"] = teaching.stageBarRows;
+    j["vsInvocations"] = stats.vsInvocations;
+    j["tcsPatches"] = stats.tcsPatches;
+    j["tesInvocations"] = stats.tesInvocations;
     j["math"] = {{"on", teaching.math.on}, {"patch", teaching.math.patch}, {"u", teaching.math.u},
                  {"v", teaching.math.v},   {"lines", teaching.mathLines},  {"labels", teaching.mathLabels}};
     j["presentationScale"] = teaching.presentationScale;

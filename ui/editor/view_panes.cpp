@@ -8,6 +8,7 @@
 #include <string>
 
 #include "render/figures/domain_figure.hpp"
+#include "render/figures/stage_bars.hpp"
 #include "render/scene/renderer.hpp"
 #include "ui/panels/teaching.hpp"
 #include "ui/platform/app_window.hpp"
@@ -71,6 +72,44 @@ void Teaching::drawPaneCaptions(const PanelLayout& layout) {
             dl->AddLine(ImVec2(r[0], r[1]), ImVec2(r[0], r[1] + r[3]), IM_COL32(150, 150, 150, 200));
         if (r[1] > (presentation ? 0.0f : ImGui::GetFrameHeight()) + 1.0f)
             dl->AddLine(ImVec2(r[0], r[1]), ImVec2(r[0] + r[2], r[1]), IM_COL32(150, 150, 150, 200));
+    }
+}
+
+void Teaching::drawStageBars(const PanelLayout& layout, const render::FrameStats& single) {
+    stageBarRows = 0;
+    if (!stageBars) return;
+    ImDrawList* dl = ImGui::GetBackgroundDrawList();
+    ImFont* font = presentation && window_.imgui().presentationFont() ? window_.imgui().presentationFont() : ImGui::GetFont();
+    const float px = presentation ? presentationTextPixels() * 0.8f : ImGui::GetFontSize();
+    const auto rects = viewPaneRects(layout);
+    static const ImU32 kBar[] = {IM_COL32(255, 150, 40, 255), IM_COL32(90, 200, 255, 255), IM_COL32(255, 90, 220, 255),
+                                 IM_COL32(120, 220, 90, 255)};
+    for (size_t i = 0; i < rects.size(); ++i) {
+        const auto counts = render::stageCounts(viewSplit() ? (i < viewPanes.size() ? viewPanes[i].stats : render::FrameStats{}) : single);
+        if (counts.empty()) continue;
+        // Right of the panes' left edge, clear of the right panel when it is there.
+        const float right = viewSplit() || presentation ? rects[i][0] + rects[i][2] : ImGui::GetIO().DisplaySize.x - layout.right;
+        const float pad = px * 0.5f, row = px * 1.45f, barW = px * 7.0f;
+        float labelW = 0.0f, numberW = 0.0f;
+        std::vector<std::string> numbers;
+        for (const render::StageCount& c : counts) {
+            numbers.push_back(std::to_string(c.count) + " " + c.unit);
+            labelW = std::max(labelW, font->CalcTextSizeA(px, FLT_MAX, 0.0f, c.stage.c_str()).x);
+            numberW = std::max(numberW, font->CalcTextSizeA(px, FLT_MAX, 0.0f, numbers.back().c_str()).x);
+        }
+        const float w = pad * 4.0f + labelW + barW + numberW, h = pad * 2.0f + row * float(counts.size());
+        // Bottom right, clear of the captions at the top; presenting, top right (the captions are at the bottom).
+        const float top = presentation ? rects[i][1] + pad : rects[i][1] + rects[i][3] - h - pad;
+        const ImVec2 o(right - w - pad, top);
+        dl->AddRectFilled(o, ImVec2(o.x + w, o.y + h), IM_COL32(0, 0, 0, 170), 4.0f);
+        for (size_t k = 0; k < counts.size(); ++k) {
+            const float y = o.y + pad + row * float(k), ty = y + (row - px) * 0.5f;
+            dl->AddText(font, px, ImVec2(o.x + pad, ty), IM_COL32(235, 235, 235, 255), counts[k].stage.c_str());
+            const float bx = o.x + pad * 2.0f + labelW;
+            dl->AddRectFilled(ImVec2(bx, y + row * 0.2f), ImVec2(bx + std::max(2.0f, barW * counts[k].bar), y + row * 0.8f), kBar[k % 4]);
+            dl->AddText(font, px, ImVec2(bx + barW + pad, ty), IM_COL32(235, 235, 235, 255), numbers[k].c_str());
+            ++stageBarRows;
+        }
     }
 }
 

@@ -212,6 +212,10 @@ void Teaching::drawControls(PanelContext& ctx) {
     ImGui::Text("level %.2f", double(sweep.level));
     commandButton(ctx, "Save animation...", "sweep-animation", "teach.saveAnimation");
 
+    if (ImGui::Checkbox("Stage counters", &stageBars)) ctx.wake();
+    traceItem("teach.stageBars");
+    tip("Each pane's per-stage counters from the GPU: vertex shader invocations, control shader patches, evaluation shader "
+        "invocations, triangles (log-scaled bars)");
     // The Bézier math of one patch at (u, v), on its control net.
     if (ImGui::Checkbox("Bezier math", &math.on)) ctx.wake();
     traceItem("teach.math");

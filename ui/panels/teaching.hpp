@@ -54,6 +54,9 @@ public:
     // The 3D view: one render, or one per pane; the (first pane's) stats.
     render::FrameStats renderView(render::Renderer& renderer, const render::RenderOptions& o, const PanelLayout& layout);
     void drawPaneCaptions(const PanelLayout& layout);  // each split pane's partitioning, level, triangles
+    // With `stageBars`: each pane's per-stage counters (render/figures/stage_bars) in a corner,
+    // from the frame that drew it; `single` is the unsplit view's stats.
+    void drawStageBars(const PanelLayout& layout, const render::FrameStats& single);
 
     // State the editor, the Shaders window and the test trace read.
     bool showDomain = false, presentation = false;
@@ -61,6 +64,8 @@ public:
     std::array<int, 4> paneSpacing{0, 1, 2, 3};  // index into kPaneSpacings
     std::array<float, 4> paneLevel{0, 0, 0, 0};  // a pane's own uniform level; 0: the document's
     bool splitView = false;                      // the 3D view split into the same panes, one camera
+    bool stageBars = false;                      // per-stage counters beside each pane
+    int stageBarRows = 0;                        // rows drawn last frame (the test trace)
     int activePane = 0;
     std::vector<render::PaneResult> viewPanes;           // what each split pane drew last frame
     std::vector<render::DomainViewOptions> domainPanes;  // this frame's panes, framebuffer pixels

@@ -1,0 +1,31 @@
+// The per-stage counters of one frame as a bar figure, the pipeline of the lecture in numbers:
+// vertex shader invocations (control points fed), control shader patches, evaluation shader
+// invocations (vertices the tessellator made) and primitives (triangles). The bars are log-scaled
+// (the counts span four orders of magnitude at level 64); the numbers are printed beside them.
+// Drawn in figure panes (`render --stage-bars`) and in the editor's panes (Teaching > Stage counters).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "render/figures/label_raster.hpp"
+#include "render/vk/stats.hpp"
+
+namespace pw::render {
+
+struct StageCount {
+    std::string stage;  // "vertex shader", "control shader", "evaluation shader", "primitives"
+    std::string unit;   // "invocations", "patches", "invocations", "triangles"
+    uint64_t count = 0;
+    float bar = 0.0f;  // 0..1: log(1 + count) / log(1 + the largest count)
+};
+// Empty when the device has no pipeline statistics.
+std::vector<StageCount> stageCounts(const FrameStats& s);
+
+// The bars in the bottom-right corner of `rect` (the panes' captions are at the top) (x, y, width, height) of an RGBA8 image.
+void drawStageBars(PixelImage image, const std::array<float, 4>& rect, const std::vector<StageCount>& counts, float textPixels,
+                   const LabelRaster& labels);
+
+}  // namespace pw::render
