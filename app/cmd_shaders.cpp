@@ -18,7 +18,7 @@ namespace {
 struct ShadersArgs {
     RenderArgs render;
     std::string stage, variant;
-    bool list = false, activeOnly = false;
+    bool list = false, activeOnly = false, teaching = false;
 };
 
 bool stageMatches(const std::string& stage, const std::string& filter) {
@@ -33,7 +33,14 @@ bool stageMatches(const std::string& stage, const std::string& filter) {
     return stage.starts_with(filter);
 }
 
-void printListing(const render::ShaderListing& l, bool activeOnly) {
+void printListing(const render::ShaderListing& l, bool activeOnly, bool teaching) {
+    if (teaching) {  // the short listing of a slide: the marked parts only
+        const auto lines = render::teachingListing(l);
+        std::cout << "// " << l.variant << ", the parts a lecture shows" << (lines.empty() ? ": none marked" : "") << "\n";
+        for (const auto& line : lines) std::cout << line.text << "\n";
+        std::cout.flush();
+        return;
+    }
     std::cout << "// " << l.variant << ": " << l.source << ", glslc --target-env=vulkan1.3 -O";
     for (const auto& d : l.defines) std::cout << " " << d;
     std::cout << "\n// '-' marks lines the defines switch off; included files are shown inline\n";
@@ -49,7 +56,7 @@ int runShaders(const ShadersArgs& a) {
     if (!a.variant.empty()) {
         const auto l = render::shaderListing(a.variant);
         if (!l) badOption("shaders", "--variant", "'" + a.variant + "' is not a compiled variant (see `patchwork shaders --list`)");
-        printListing(*l, a.activeOnly);
+        printListing(*l, a.activeOnly, a.teaching);
         return 0;
     }
     if (!a.stage.empty()) {
@@ -79,7 +86,7 @@ int runShaders(const ShadersArgs& a) {
             if (!stageMatches(s.stage, a.stage)) continue;
             std::cout << "-- " << s.stage << ": " << s.variant << "\n";
             if (a.list) continue;
-            if (const auto l = render::shaderListing(s.variant)) printListing(*l, a.activeOnly);
+            if (const auto l = render::shaderListing(s.variant)) printListing(*l, a.activeOnly, a.teaching);
         }
     }
     return 0;
@@ -95,6 +102,9 @@ void registerShadersCommand(CLI::App& app, Action& run) {
     cmd->add_option("--variant", a->variant, "Print one compiled variant by name instead");
     cmd->add_flag("--list", a->list, "List the pipelines and their stage variants without the source");
     cmd->add_flag("--active-only", a->activeOnly, "Leave out the lines the defines switch off");
+    cmd->add_flag("--teaching", a->teaching,
+                  "The short listing a slide shows: only the parts marked for teaching (the evaluation shader's Bernstein sum, the "
+                  "tessellator layout, main), defines substituted");
 }
 
 }  // namespace pw::app

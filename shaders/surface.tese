@@ -15,11 +15,13 @@
 #include "displacement.glsl"
 #endif
 
+// @teach{ the fixed tessellator: the quad domain, the partitioning, counter-clockwise triangles
 #ifdef POINT_MODE
 layout(quads, SPACING, ccw, point_mode) in;
 #else
 layout(quads, SPACING, ccw) in;
 #endif
+// @teach}
 
 layout(location = 1) patch in float netScalePatch;  // largest extent of the net (control shader)
 layout(location = 2) patch in uint edgeFlipPatch;    // bit e: evaluate boundary e reversed (control shader)
@@ -63,6 +65,7 @@ struct Derivs { vec3 p, du, dv, duu, dvv, duv; };
 // rational patch's derivatives (for weights 1 the polynomial's, bit for bit).
 // (lavapipe runs both sides of divergent branches, so the common path stays branch-free.)
 Derivs evalAt(float u, float v, bool second) {
+    // @teach{ S(u, v) = sum over rows i of B_i(v) * (sum over j of B_j(u) P_ij), with the weights
     vec4 wu, dwu, ddwu, wv, dwv, ddwv;
     weights(u, wu, dwu, ddwu);
     weights(v, wv, dwv, ddwv);
@@ -70,8 +73,9 @@ Derivs evalAt(float u, float v, bool second) {
     for (int i = 0; i < 4; ++i) {
         vec4 P0 = cph(i * 4), P1 = cph(i * 4 + 1), P2 = cph(i * 4 + 2), P3 = cph(i * 4 + 3);
         vec4 r = wu.x * P0 + wu.y * P1 + wu.z * P2 + wu.w * P3;
+        // @teach}
         vec4 ru = dwu.x * P0 + dwu.y * P1 + dwu.z * P2 + dwu.w * P3;
-        h += wv[i] * r;
+        h += wv[i] * r;  // @teach= the row's point, weighted by B_i(v)
         hu += wv[i] * ru;
         hv += dwv[i] * r;
         huv += dwv[i] * ru;
@@ -131,20 +135,20 @@ vec3 normalAt(float u, float v, Derivs d) {
 }
 
 void main() {
-    float u = gl_TessCoord.x, v = gl_TessCoord.y;
+    float u = gl_TessCoord.x, v = gl_TessCoord.y;  // @teach= main: where the tessellator put this vertex
 #ifdef FULL_VARYINGS
     bool curvature = frame.modes.w == kShadingGaussCurvature || frame.modes.w == kShadingMeanCurvature;
 #else
     const bool curvature = false;
 #endif
-    Derivs d = evalAt(u, v, curvature);
+    Derivs d = evalAt(u, v, curvature);  // @teach=
     vec3 p = d.p;
     bool onV = v == 0.0 || v == 1.0, onU = u == 0.0 || u == 1.0;
     if (draw.basisKind == kBasisBezier && (onU || onV)) {
         int e = onV ? (v == 0.0 ? 1 : 3) : (u == 0.0 ? 0 : 2);
         p = boundaryPoint(e, onV ? u : v);
     }
-    vec3 n = normalAt(u, v, d);
+    vec3 n = normalAt(u, v, d);  // @teach=
 #ifdef DISPLACE
     displaceSurface(p, n, d.du, d.dv, vec2(u, v), patches[draw.patchBase + uint(gl_PrimitiveID)]);
 #endif
@@ -165,5 +169,5 @@ void main() {
     outPatch = draw.patchBase + uint(gl_PrimitiveID);
     outCurv = curv;
 #endif
-    gl_Position = frame.viewProj * vec4(p, 1.0);
+    gl_Position = frame.viewProj * vec4(p, 1.0);  // @teach=
 }

@@ -4,6 +4,7 @@
 // overlays, triangles and domain panes. No device needed.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -199,4 +200,40 @@ TEST(ShaderListing, CommandPrintsTheStagesInUse) {
 }
 
 }  // namespace
+
+// The teaching listing (`shaders --teaching`, the panel's "Teaching listing"): only the marked parts
+// of the real source, a slide's length, each part headed by where it comes from, the defines and
+// the GLSL side of core/gpu/glsl_cpp.h substituted, no preprocessor lines and no marks left.
+TEST(ShaderListing, TeachingListingIsTheMarkedPartsOfTheVariant) {
+    const auto l = render::shaderListing("surface_tese_odd");
+    ASSERT_TRUE(l.has_value());
+    const auto t = render::teachingListing(*l);
+    ASSERT_GE(t.size(), 15u);
+    EXPECT_LE(t.size(), 40u);
+    std::set<std::string> texts;
+    size_t headers = 0;
+    for (const auto& line : t) {
+        texts.insert(line.text);
+        EXPECT_EQ(line.text.find("@teach"), std::string::npos) << line.text;
+        EXPECT_FALSE(line.text.starts_with("#")) << line.text;
+        if (line.line == 0 && !line.text.empty()) {
+            ++headers;
+            EXPECT_TRUE(line.text.starts_with("// ")) << line.text;
+            EXPECT_NE(line.text.find(line.file + ":"), std::string::npos) << line.text;
+        } else if (line.line > 0) {  // a real line of that file, inside the listing
+            EXPECT_TRUE(std::any_of(l->lines.begin(), l->lines.end(),
+                                    [&](const ListingLine& f) { return f.file == line.file && f.line == line.line && f.active; }))
+                << line.file << ":" << line.line;
+        }
+    }
+    EXPECT_GE(headers, 4u);
+    EXPECT_TRUE(texts.count("layout(quads, fractional_odd_spacing, ccw) in;"));
+    EXPECT_TRUE(texts.count("vec4 bernstein3(float t, float s) {"));
+    EXPECT_TRUE(texts.count("    float u = gl_TessCoord.x, v = gl_TessCoord.y;"));
+    // A variant without marked parts has no teaching listing (the panel shows it whole).
+    const auto vert = render::shaderListing("surface_vert");
+    ASSERT_TRUE(vert.has_value());
+    EXPECT_TRUE(render::teachingListing(*vert).empty());
+}
+
 }  // namespace pw::test

@@ -82,9 +82,11 @@ PW_FN bool edgeReversed(uint i0, uint i1, uint i2, uint i3) {
 
 // Cubic Bernstein weights and their first and second derivatives at t, with s = 1 - t passed
 // separately (a caller can give s exactly, e.g. (n - k) / n).
+// @teach{ the cubic Bernstein weights B_0..B_3 at t (s = 1 - t)
 PW_REAL_FN PW_REAL_VEC4 bernstein3(PW_REAL t, PW_REAL s) {
     return PW_REAL_VEC4(s * s * s, PW_REAL(3) * t * s * s, PW_REAL(3) * t * t * s, t * t * t);
 }
+// @teach}
 PW_REAL_FN PW_REAL_VEC4 bernstein3D1(PW_REAL t, PW_REAL s) {
     return PW_REAL_VEC4(PW_REAL(-3) * s * s, PW_REAL(3) * s * s - PW_REAL(6) * t * s, PW_REAL(6) * t * s - PW_REAL(3) * t * t,
                         PW_REAL(3) * t * t);

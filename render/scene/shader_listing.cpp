@@ -195,4 +195,76 @@ std::vector<std::string> shaderVariantNames() {
     return names;
 }
 
+std::vector<ListingLine> teachingListing(const ShaderListing& l) {
+    // The defines' values, for the words they name (SPACING=fractional_odd_spacing).
+    // And the object-like #defines of the active lines (core/gpu/glsl_cpp.h's GLSL side: PW_REAL float).
+    std::vector<std::pair<std::string, std::string>> macros;
+    for (const std::string& d : l.defines) {
+        const size_t eq = d.find('=');
+        if (d.starts_with("-D") && eq != std::string::npos) macros.emplace_back(d.substr(2, eq - 2), d.substr(eq + 1));
+    }
+    for (const ListingLine& line : l.lines) {
+        const size_t at = line.text.find("#define ");
+        if (!line.active || at == std::string::npos || line.text.find_first_not_of(' ') != at) continue;
+        std::string rest = line.text.substr(at + 8);
+        if (const size_t c = rest.find("//"); c != std::string::npos) rest.erase(c);
+        const size_t end = rest.find_first_of(" (");
+        if (end != std::string::npos && rest[end] == '(') continue;  // function-like
+        std::string value = end == std::string::npos ? "" : rest.substr(end + 1);
+        while (!value.empty() && (value.back() == ' ' || value.back() == '\\')) value.pop_back();
+        while (!value.empty() && value.front() == ' ') value.erase(value.begin());
+        macros.emplace_back(rest.substr(0, end), value);
+    }
+    const auto substitute = [&](const std::string& original) {
+        std::string text = original;
+        const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+        for (const auto& [name, value] : macros)
+            for (size_t at = 0; (at = text.find(name, at)) != std::string::npos;) {
+                const bool alone = (at == 0 || !word(text[at - 1])) && (at + name.size() == text.size() || !word(text[at + name.size()]));
+                if (alone) text.replace(at, name.size(), value);
+                at += alone ? value.size() : name.size();
+            }
+        // A macro that stood first on its line and vanished (PW_REAL_FN) leaves no indent behind.
+        if (!text.empty() && text.front() == ' ' && original.front() != ' ') text.erase(0, text.find_first_not_of(' '));
+        return text;
+    };
+    std::vector<ListingLine> out;
+    const auto header = [&](const ListingLine& at, std::string title) {
+        while (!title.empty() && title.front() == ' ') title.erase(title.begin());
+        ListingLine h = at;
+        h.text = "// " + title + "  (" + at.file + ":" + std::to_string(at.line) + ")";
+        h.line = 0;
+        if (!out.empty()) out.push_back({"", at.file, 0, at.depth, true});  // a blank line between parts
+        out.push_back(std::move(h));
+    };
+    bool inside = false;
+    for (const ListingLine& line : l.lines) {
+        const size_t open = line.text.find("// @teach{"), close = line.text.find("// @teach}"), one = line.text.find("// @teach=");
+        if (open != std::string::npos) {
+            inside = true;
+            header(line, line.text.substr(open + 10));
+            continue;
+        }
+        if (close != std::string::npos) {
+            inside = false;
+            continue;
+        }
+        const size_t first = line.text.find_first_not_of(' ');
+        if (!line.active || (first != std::string::npos && line.text[first] == '#')) continue;  // no preprocessor lines
+        if (one != std::string::npos) {
+            const std::string title = line.text.substr(one + 10);
+            if (title.find_first_not_of(' ') != std::string::npos) header(line, title);
+            ListingLine shown = line;
+            shown.text = substitute(line.text.substr(0, one));
+            while (!shown.text.empty() && shown.text.back() == ' ') shown.text.pop_back();
+            out.push_back(std::move(shown));
+        } else if (inside) {
+            ListingLine shown = line;
+            shown.text = substitute(line.text);
+            out.push_back(std::move(shown));
+        }
+    }
+    return out;
+}
+
 }  // namespace pw::render

@@ -57,6 +57,13 @@ struct ShaderListing {
 // The listing of one compiled variant; nullopt for a name the build does not have.
 std::optional<ShaderListing> shaderListing(std::string_view variant);
 
+// The short listing a slide shows (~20 lines): only the parts of the variant's source marked for
+// teaching, its active lines, each part headed by a comment naming it and where it is, the
+// variant's object-like defines substituted (SPACING -> fractional_odd_spacing). Marks in the
+// shader files: `// @teach{ title` ... `// @teach}` around lines, or `code  // @teach= [title]` on
+// one (a title starts a new part). Empty for a variant without marks.
+std::vector<ListingLine> teachingListing(const ShaderListing& l);
+
 // Every compiled variant's name (for checks and the command line).
 std::vector<std::string> shaderVariantNames();
 

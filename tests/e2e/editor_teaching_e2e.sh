@@ -60,7 +60,15 @@ wait_for "'preset.tri-4.9_4.5_4.1-4.4-fractional_odd' in t['items']"
 click_item preset.tri-4.9_4.5_4.1-4.4-fractional_odd
 wait_for "t['shaders']['shown'] == 'surface_tese_odd' and 'domain_tese_tri_odd' in t['shaders']['inUse']"
 import -window root "$WORK/shaders.png"
-say "shader panel: surface_tese_equal, then surface_tese_odd after the fractional_odd preset"
+FULL=$(trace "t['shaders']['lines']")
+# The teaching listing: the marked parts only, a slide's length.
+click_item shaders.teaching
+wait_for "t['shaders']['teaching'] and 15 <= t['shaders']['lines'] <= 40 and t['shaders']['lines'] < $FULL / 4"
+import -window root "$WORK/shaders_teaching.png"
+LINES=$(trace "t['shaders']['lines']")
+click_item shaders.teaching
+wait_for "not t['shaders']['teaching'] and t['shaders']['lines'] == $FULL"
+say "shader panel: surface_tese_equal, then surface_tese_odd after the fractional_odd preset ($FULL lines; teaching listing $LINES)"
 
 # The isoline domain on the model: the isocurve overlay, then a Bézier curve; both show up in the
 # shader panel with the document's partitioning, and adding the curve is one undo step. (The kept

@@ -93,7 +93,11 @@ void TestTrace::write(const EditorSnapshot& e) {
                    {"axisGizmo", e.axisGizmo},
                    {"left", e.layout.left},
                    {"right", e.layout.right}};
-    j["shaders"] = {{"open", e.shaders.open}, {"shown", e.shaders.shown}, {"inUse", e.shaders.variantsInUse}};
+    j["shaders"] = {{"open", e.shaders.open},
+                    {"shown", e.shaders.shown},
+                    {"inUse", e.shaders.variantsInUse},
+                    {"teaching", e.shaders.teaching},
+                    {"lines", e.shaders.shownLines}};
     j["items"] = items_.items;
     j["unsavedPrompt"] = e.dialogs.unsavedPromptOpen();
     j["palette"] = e.palette.open;

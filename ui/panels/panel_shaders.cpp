@@ -35,6 +35,7 @@ std::string listingText(const render::ShaderListing& l, bool activeOnly) {
 void ShaderPanel::draw(PanelContext& ctx, bool geometryShader, const TessSettings& shownTess,
                        const std::vector<render::DomainViewOptions>& domainPanes) {
     shown.clear();
+    shownLines = 0;
     variantsInUse.clear();
     if (!open) return;
     // First placed below where the domain view opens, between the side panels, so that the model,
@@ -78,6 +79,10 @@ void ShaderPanel::draw(PanelContext& ctx, bool geometryShader, const TessSetting
     }
     traceItem("shaders.pipeline");
     tip("The pipelines drawn with the current settings; wireframe, normals and the domain view add theirs");
+    ImGui::Checkbox("Teaching listing", &teaching);
+    traceItem("shaders.teaching");
+    tip("Only the parts a slide shows (the Bernstein sum, the tessellator's layout, main), with the defines substituted; the "
+        "stages without marked parts are listed whole");
     ImGui::SameLine();
     ImGui::Checkbox("Hide switched-off lines", &hideInactive_);
     traceItem("shaders.hide");
@@ -104,18 +109,25 @@ void ShaderPanel::draw(PanelContext& ctx, bool geometryShader, const TessSetting
             tip("Copy this stage's source (with the defines as a first comment line) to the clipboard");
             ImGui::TextDisabled("defines: %s", defs.empty() ? "(none)" : defs.c_str());
             ImGui::BeginChild("source", ImVec2(0, 0), true, ImGuiWindowFlags_HorizontalScrollbar);
+            const std::vector<render::ListingLine> teachingLines =
+                teaching ? render::teachingListing(l) : std::vector<render::ListingLine>{};
+            const std::vector<render::ListingLine>& lines = teachingLines.empty() ? l.lines : teachingLines;
             std::vector<int> shown;
-            shown.reserve(l.lines.size());
-            for (size_t i = 0; i < l.lines.size(); ++i)
-                if (l.lines[i].active || !hideInactive_) shown.push_back(int(i));
+            shown.reserve(lines.size());
+            for (size_t i = 0; i < lines.size(); ++i)
+                if (lines[i].active || !hideInactive_) shown.push_back(int(i));
+            shownLines = shown.size();
             const ImVec4 dim = ImGui::GetStyle().Colors[ImGuiCol_TextDisabled];
             const ImVec4 included(0.55f, 0.75f, 0.95f, 1.0f);
             ImGuiListClipper clipper;
             clipper.Begin(int(shown.size()));
             while (clipper.Step())
                 for (int k = clipper.DisplayStart; k < clipper.DisplayEnd; ++k) {
-                    const render::ListingLine& line = l.lines[size_t(shown[size_t(k)])];
-                    ImGui::TextDisabled("%4d", line.line);
+                    const render::ListingLine& line = lines[size_t(shown[size_t(k)])];
+                    if (line.line > 0)
+                        ImGui::TextDisabled("%4d", line.line);
+                    else
+                        ImGui::TextDisabled("    ");  // a teaching part's heading
                     ImGui::SameLine();
                     const bool tint = !line.active || line.depth > 0;
                     if (tint) ImGui::PushStyleColor(ImGuiCol_Text, line.active ? included : dim);

@@ -1,7 +1,7 @@
 // The Shaders window: the GLSL of the tessellation pipelines the current settings draw with
 // (surface, triangles, wireframe, normal vectors, domain panes), stage by stage, read-only, with
 // the glslc defines of each variant and the lines those defines switch off dimmed
-// (render/shader_listing), Copy.
+// (render/shader_listing), Copy; or the short teaching listing of the marked parts.
 #pragma once
 
 #include <functional>
@@ -24,6 +24,8 @@ public:
     bool open = false;
     std::string shown;  // the variant on screen this frame ("" = closed)
     std::vector<std::string> variantsInUse;
+    bool teaching = false;  // the short listing a slide shows (render::teachingListing) where the variant has one
+    size_t shownLines = 0;  // lines listed this frame (the test trace)
 
 private:
     bool hideInactive_ = false;
