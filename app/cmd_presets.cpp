@@ -17,8 +17,9 @@ void registerPresetsCommand(CLI::App& app, Action& run) {
                 std::cout << std::left << std::setw(36) << p.name << std::setw(34) << p.label << std::right << std::setw(4) << c.vertices
                           << " vertices " << std::setw(4) << c.primitives << " primitives  " << p.note << "\n";
             }
-            std::cout << "Model presets in the editor: the notes' Bézier patch (16 control points, level 25) and the notes' "
-                         "distance formula 64*saturate((d1-d)/(d1-d0)), d0 = 20, d1 = 100.\n";
+            std::cout << "Model presets in the editor: the notes' Bézier patch (16 control points; version 1 at level 25, version 2 "
+                         "at 15; `render --notes-patch 1|2`, `open-notes-patch 1|2`) and the notes' distance formula "
+                         "64*saturate((d1-d)/(d1-d0)), d0 = 20, d1 = 100.\n";
             return 0;
         };
     });

@@ -230,8 +230,10 @@ int runRender(const RenderArgs& a) {
     if (!a.compareDevice.empty()) bad("--compare-device", "compares domain patterns: give --preset or --domain");
     if (render::vectorFormatFor(a.output))
         bad("-o", "'" + a.output + "': SVG and PDF figures are of the tessellated domain (--domain, --preset); write the model as .png");
-    if (a.notesPatch && !a.input.empty()) bad("--notes-patch", "draws the notes' patch: leave out the file");
-    Document doc = a.notesPatch ? notesBezierPatch() : a.input.empty() ? builtinTeapot() : loadDocument(a.input);
+    if (a.notesPatch != 0 && !a.input.empty()) bad("--notes-patch", "draws the notes' patch: leave out the file");
+    if (a.notesPatch < 0 || a.notesPatch > kNotesPatchVersions)
+        bad("--notes-patch", "expected 1 or 2, got " + std::to_string(a.notesPatch));
+    Document doc = a.notesPatch ? notesBezierPatch(a.notesPatch) : a.input.empty() ? builtinTeapot() : loadDocument(a.input);
     // --math U,V: one patch's evaluation drawn over the model (one pane).
     std::optional<BezierMath> math;
     if (!a.math.empty()) {
@@ -408,7 +410,9 @@ void registerRenderCommand(CLI::App& app, Action& run) {
     cmd->add_flag("--stage-bars", a->stageBars,
                   "Draw each pane's per-stage counters: vertex shader invocations, control shader patches, evaluation shader "
                   "invocations, triangles (log-scaled bars, the numbers beside them)");
-    cmd->add_flag("--notes-patch", a->notesPatch, "Render the lecture notes' 16-point Bézier patch instead of a file");
+    cmd->add_option("--notes-patch", a->notesPatch,
+                    "Render the lecture notes' 16-point Bézier patch instead of a file: 1 the first notes' (level 25), 2 the second "
+                    "notes' (level 15, integer)");
     cmd->add_option("-o,--output", a->output, "Output PNG; a domain figure also .svg or .pdf (vector paths, one per triangle)")->required();
 }
 

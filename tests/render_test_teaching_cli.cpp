@@ -459,14 +459,14 @@ TEST(TeachingCli, DistanceFormulaCullsBeyondFar) {
     EXPECT_EQ(bad.exitCode, 2) << bad.output;
 }
 
-// `render --notes-patch --math U,V`: the notes' patch with its evaluation at (U, V) drawn on the net
+// `render --notes-patch 1 --math U,V`: the notes' patch with its evaluation at (U, V) drawn on the net
 // (weights in the net's orange, the de Casteljau column in magenta, the point in white) and the
 // point printed, equal to the CPU evaluation; bad parameters, patches and combinations are exit 2
 // with nothing written.
 TEST(TeachingCli, MathFigureDrawsTheEvaluationOnTheNet) {
     const auto dir = freshTempDir("teach-math");
     const auto png = dir / "m.png";
-    const RunResult r = runCommand(bin() + " render --notes-patch --math 0.35,0.6 --size 640x360 -o " + png.string() + " 2>&1");
+    const RunResult r = runCommand(bin() + " render --notes-patch 1 --math 0.35,0.6 --size 640x360 -o " + png.string() + " 2>&1");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const Document notes = notesBezierPatch();
     const Vec3 s = evaluateBezierBernsteinSum(gatherNet(notes, notes.patches[0].idx), 0.35, 0.6);
@@ -485,7 +485,7 @@ TEST(TeachingCli, MathFigureDrawsTheEvaluationOnTheNet) {
     EXPECT_GT(magenta, 100u);
     for (const std::string& bad : std::vector<std::string>{"--math 1.5,0.5", "--math 0.5", "--math 0.5,0.5 --math-patch 1",
                                                            "--math 0.5,0.5 --compare equal,pow2", (dataDir() / "teapot.bpt").string()}) {
-        const RunResult b = runCommand(bin() + " render --notes-patch " + bad + " -o " + (dir / "x.png").string() + " 2>&1");
+        const RunResult b = runCommand(bin() + " render --notes-patch 1 " + bad + " -o " + (dir / "x.png").string() + " 2>&1");
         EXPECT_EQ(b.exitCode, 2) << bad << ": " << b.output;
         EXPECT_FALSE(std::filesystem::exists(dir / "x.png")) << bad;
     }

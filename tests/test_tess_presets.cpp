@@ -2,6 +2,8 @@
 // distance formula.
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 #include <set>
 
 #include "core/eval/patch_eval.hpp"
@@ -54,6 +56,23 @@ TEST(TessPresets, NotesBezierPatchAndDistanceFormula) {
     EXPECT_EQ(t.distanceNear, 20.0f);
     EXPECT_EQ(t.distanceFar, 100.0f);
     EXPECT_TRUE(t.cullFar);  // level 0 beyond d1 culls, as the notes say
+}
+
+// The second notes' version of the patch: its raised points and level 15 under integer
+// partitioning, y-up like the first; versions other than 1 and 2 are refused.
+TEST(TessPresets, SecondNotesPatchVersion) {
+    const Document d = notesBezierPatch(2);
+    ASSERT_EQ(d.points.size(), 16u);
+    EXPECT_EQ(d.points[0], Vec3(-10, -20, 15));
+    EXPECT_EQ(d.points[6], Vec3(5, 30, 5));
+    EXPECT_EQ(d.points[15], Vec3(25, 20, -15));
+    EXPECT_EQ(d.tess.outer[2], 15.0f);
+    EXPECT_EQ(d.tess.inner[1], 15.0f);
+    EXPECT_EQ(d.tess.spacing, Spacing::Equal);
+    EXPECT_FALSE(d.camera.zUp);
+    EXPECT_NE(d.name, notesBezierPatch(1).name);
+    EXPECT_THROW(notesBezierPatch(3), std::invalid_argument);
+    EXPECT_THROW(notesBezierPatch(0), std::invalid_argument);
 }
 
 // The notes' patch is y-up data: it is shown upright (issue 41), +y up on screen, the whole net in

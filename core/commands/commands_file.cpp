@@ -80,10 +80,17 @@ void addFileCommands(CommandTable& t) {
            }});
     t.add({.name = "open-notes-patch",
            .label = "Open the Notes' Bézier Patch",
-           .help = "Replace the document with the 16-point Bézier patch of the lecture notes",
+           .usage = "[1|2]",
+           .help = "Replace the document with the 16-point Bézier patch of the lecture notes: 1 the first notes' (level 25), 2 the "
+                   "second notes' (level 15)",
            .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 0, 0);
-               if (mayReplace(ctx)) ctx.session.reset(notesBezierPatch(), "");
+               expectArgs(ctx, 0, 1);
+               int version = 1;
+               if (ctx.args.size() == 1) {
+                   if (ctx.args[0] != "1" && ctx.args[0] != "2") throw EditError("expected 1 or 2, got '" + ctx.args[0] + "'");
+                   version = ctx.args[0][0] - '0';
+               }
+               if (mayReplace(ctx)) ctx.session.reset(notesBezierPatch(version), "");
            }});
     t.add({.name = "import",
            .label = "Import...",

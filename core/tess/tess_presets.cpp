@@ -1,5 +1,7 @@
 #include "core/tess/tess_presets.hpp"
 
+#include <stdexcept>
+
 #include <algorithm>
 
 #include "core/model/camera_math.hpp"
@@ -72,16 +74,26 @@ const TessPreset* findTessPreset(std::string_view name) {
     return nullptr;
 }
 
-Document notesBezierPatch() {
+Document notesBezierPatch(int version) {
     // The notes' 16 control points (x, y, z with y up), row by row from z = +15 to z = -15.
-    static const double pts[16][3] = {
+    static const double first[16][3] = {
         {-10, -10, 15}, {-5, 0, 15},  {5, 0, 15},  {10, 0, 15},  //
         {-15, 0, 5},    {-5, 0, 5},   {5, 20, 5},  {15, 0, 5},   //
         {-15, 0, -5},   {-5, 0, -5},  {5, 0, -5},  {15, 0, -5},  //
         {-10, 10, -15}, {-5, 0, -15}, {5, 0, -15}, {25, 10, -15},
     };
+    static const double second[16][3] = {
+        {-10, -20, 15}, {-5, 0, 15},  {5, 0, 15},  {10, 0, 15},  //
+        {-15, 0, 5},    {-5, 0, 5},   {5, 30, 5},  {15, 0, 5},   //
+        {-15, 0, -5},   {-5, 0, -5},  {5, 0, -5},  {15, 0, -5},  //
+        {-10, 20, -15}, {-5, 0, -15}, {5, 0, -15}, {25, 20, -15},
+    };
+    if (version < 1 || version > kNotesPatchVersions)
+        throw std::invalid_argument("the notes' patch comes in versions 1 and 2, not " + std::to_string(version));
+    const auto& pts = version == 1 ? first : second;
+    const float level = version == 1 ? 25.0f : 15.0f;
     Document d;
-    d.name = "Bézier patch of the notes";
+    d.name = version == 1 ? "Bézier patch of the notes" : "Bézier patch of the notes, second version";
     Patch p;
     for (int i = 0; i < 16; ++i) {
         d.points.push_back(Vec3(pts[i][0], pts[i][1], pts[i][2]));
@@ -89,8 +101,9 @@ Document notesBezierPatch() {
     }
     p.name = "notes patch";
     d.patches.push_back(p);
-    d.tess.outer = {25, 25, 25, 25};
-    d.tess.inner = {25, 25};
+    d.tess.outer = {level, level, level, level};
+    d.tess.inner = {level, level};
+    d.tess.spacing = Spacing::Equal;  // the notes' [partitioning("integer")]
     d.display.showGrid = true;
     d.display.showWireframe = true;
     d.camera.zUp = false;  // the notes' data is y-up: shown upright, the raised point on top

@@ -27,8 +27,11 @@ const std::vector<TessPreset>& tessPresets();
 const TessPreset* findTessPreset(std::string_view name);
 
 // The bicubic Bézier patch of the notes (16 control points, rows z = +15 .. -15) as a document,
-// tessellated at 25 like the notes' hull shader, viewed from above at an angle.
-Document notesBezierPatch();
+// viewed from above at an angle, y up. Version 1: the first notes' points, tessellated at 25;
+// version 2: the second notes' (the raised point at y = 30, corners at -20 and +20), at 15 under
+// integer partitioning like their hull shader. Other versions throw std::invalid_argument.
+inline constexpr int kNotesPatchVersions = 2;
+Document notesBezierPatch(int version = 1);
 
 // The notes' distance formula, level = 64 * saturate((d1 - d) / (d1 - d0)) with d0 = 20 and d1 =
 // 100, applied to `doc`'s settings (adaptive distance mode). The formula itself, for a distance:

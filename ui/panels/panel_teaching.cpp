@@ -160,8 +160,11 @@ void Teaching::drawControls(PanelContext& ctx) {
             tip(p.note.c_str());
         }
         ImGui::Separator();
-        if (ImGui::Selectable("Bézier patch of the notes")) ctx.runLine("open-notes-patch");
-        tip("The notes' 16 control points at level 25 (replaces the document; asks first if it has changes)");
+        if (ImGui::Selectable("Bézier patch of the notes")) ctx.runLine("open-notes-patch 1");
+        tip("The first notes' 16 control points at level 25 (replaces the document; asks first if it has changes)");
+        if (ImGui::Selectable("Bézier patch of the notes, second version")) ctx.runLine("open-notes-patch 2");
+        traceItem("preset.notesPatch2");
+        tip("The second notes' 16 control points (raised higher) at level 15, integer partitioning (replaces the document)");
         if (ImGui::Selectable("Distance formula of the notes")) {  // adaptivity is the document's: a visible undo step
             endLesson(ctx, false);
             applyNotesDistanceFormula(ts);
