@@ -62,9 +62,10 @@ std::vector<render::DomainPane> domainPanes(const std::string& command, const Do
         }
     }
     if (!a.origin.empty()) {
-        if (a.origin != "upper-left" && a.origin != "lower-left")
+        const auto upperLeft = parseDomainOrigin(a.origin);
+        if (!upperLeft)
             badOption(command, "--origin", "'" + a.origin + "' is not one of upper-left (D3D, Vulkan's default), lower-left (GL)");
-        for (auto& p : panes) p.upperLeft = a.origin == "upper-left";
+        for (auto& p : panes) p.upperLeft = *upperLeft;
     }
     if (panes.empty() || panes.size() > 4) badOption(command, a.compare.empty() ? "--preset" : "--compare", "give 1 to 4 panes");
     return panes;

@@ -14,6 +14,7 @@
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
 #include "core/base/limits.hpp"
+#include "core/edit/edit_session.hpp"
 #include "core/io/bpt_format.hpp"
 #include "core/io/document_io.hpp"
 #include "core/io/patchwork_format.hpp"
@@ -534,4 +535,31 @@ TEST(PatchworkFormat, CullFarRoundTripsAndIsWrittenOnlyWhenOn) {
     const std::string text = serializeDocument(doc);
     EXPECT_NE(text.find("\"cullFar\""), std::string::npos);
     EXPECT_TRUE(parseDocument(text, "t.patchwork").tess.cullFar);
+}
+
+// display.domainOrigin (issue 41: the notes' convention kept with the document) round-trips, is
+// written only when upper-left, and a wrong value names the field; the `domain-origin` command sets
+// it as one undo step and refuses other words.
+TEST(PatchworkFormat, DomainOriginRoundTripsAndIsCheckedByName) {
+    Document doc = builtinTeapot();
+    EXPECT_EQ(serializeDocument(doc).find("domainOrigin"), std::string::npos);
+    doc.display.domainUpperLeft = true;
+    const std::string text = serializeDocument(doc);
+    EXPECT_EQ(nlohmann::json::parse(text)["display"]["domainOrigin"], "upper-left");
+    EXPECT_TRUE(parseDocument(text, "t.patchwork").display.domainUpperLeft);
+    std::string bad = text;
+    bad.replace(bad.find("\"upper-left\""), 12, "\"upside\"");
+    try {
+        (void)parseDocument(bad, "t.patchwork");
+        ADD_FAILURE() << "accepted domainOrigin \"upside\"";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("domainOrigin"), std::string::npos) << e.what();
+    }
+    EditSession s;
+    s.reset(builtinTeapot(), "");
+    test::runEditScript(s, "domain-origin upper-left");
+    EXPECT_TRUE(s.doc.display.domainUpperLeft);
+    EXPECT_THROW(test::runEditScript(s, "domain-origin sideways"), InputError);
+    test::runEditScript(s, "undo");
+    EXPECT_FALSE(s.doc.display.domainUpperLeft);
 }

@@ -110,6 +110,22 @@ void addViewCommands(CommandTable& t) {
                        "The GLSL of the tessellation stages in use, with the defines of each variant"));
     t.add(windowToggle("presentation", "Presentation Mode", "View", WindowToggle::Presentation, {"F5"},
                        "Hide the editing panels; levels and counts large, high contrast (F5 toggles back)"));
+    t.add({.name = "domain-origin",
+           .label = "Domain Origin",
+           .menu = "View",
+           .usage = "upper-left|lower-left",
+           .help = "The domain view's picture, kept with the document: upper-left (the D3D notes' and Vulkan's default: v = 0 on "
+                   "top, edges tagged [i]) or lower-left (GL)",
+           .bindings = {{"Upper-Left (D3D, Vulkan)", "upper-left", {}}, {"Lower-Left (GL)", "lower-left", {}}},
+           .checked = [](const EditSession& s, const CommandHost&) { return s.doc.display.domainUpperLeft; },
+           .run =
+               [](CommandContext& ctx) {
+                   expectArgs(ctx, 1, 1);
+                   const auto upperLeft = parseDomainOrigin(ctx.args[0]);
+                   if (!upperLeft) throw EditError("expected upper-left or lower-left, got '" + ctx.args[0] + "'");
+                   ctx.session.apply(
+                       "Domain origin", [&](Document& d) { d.display.domainUpperLeft = *upperLeft; }, false);
+               }});
     t.add({.name = "presentation-text",
            .label = "Presentation Text",
            .menu = "View",

@@ -74,6 +74,7 @@ json displayJson(const DisplaySettings& d) {
     if (d.showCombs) j["showCombs"] = true;
     if (d.combScale != 1.0f) j["combScale"] = floatJson(d.combScale);
     if (d.combDensity != 16) j["combDensity"] = d.combDensity;
+    if (d.domainUpperLeft) j["domainOrigin"] = domainOriginName(true);  // older files stay as they were
     return j;
 }
 
@@ -160,6 +161,9 @@ DisplaySettings readDisplay(const Reader& r, const json& v, const std::string& p
     r.optional(v, path, "showBoundaries", [&](const json& x, const std::string& p) { d.showBoundaries = r.boolean(x, p); });
     r.optional(v, path, "showIsocurves", [&](const json& x, const std::string& p) { d.showIsocurves = r.boolean(x, p); });
     r.optional(v, path, "showCombs", [&](const json& x, const std::string& p) { d.showCombs = r.boolean(x, p); });
+    r.optional(v, path, "domainOrigin", [&](const json& x, const std::string& p) {
+        d.domainUpperLeft = r.named<bool>(x, p, parseDomainOrigin, "lower-left, upper-left");
+    });
     auto number = [&](const char* field, auto& out) {
         r.optional(v, path, field,
                    [&](const json& x, const std::string& p) { readSetting(r, x, p, "display." + std::string(field), out); });

@@ -57,6 +57,13 @@ std::optional<AdaptiveMode> parseAdaptive(std::string_view n) { return parseEnum
 std::string_view shadingName(ShadingMode m) { return enumName(m, kShadingNames); }
 std::optional<ShadingMode> parseShading(std::string_view n) { return parseEnum<ShadingMode>(n, kShadingNames); }
 
+std::optional<bool> parseDomainOrigin(std::string_view n) {
+    if (n == "upper-left") return true;
+    if (n == "lower-left") return false;
+    return std::nullopt;
+}
+std::string_view domainOriginName(bool upperLeft) { return upperLeft ? "upper-left" : "lower-left"; }
+
 std::string_view displacementMappingName(DisplacementMapping m) { return enumName(m, kMappingNames); }
 std::optional<DisplacementMapping> parseDisplacementMapping(std::string_view n) { return parseEnum<DisplacementMapping>(n, kMappingNames); }
 

@@ -250,6 +250,9 @@ struct TessSettings {
 enum class ShadingMode : uint8_t { Lit, Normal, PatchId, UvChecker, Zebra, GaussCurvature, MeanCurvature, Level };
 std::string_view shadingName(ShadingMode m);  // "lit", "normal", "patch", "uv", "zebra", "gauss", "mean", "level"
 std::optional<ShadingMode> parseShading(std::string_view name);
+// "upper-left" (true: D3D, Vulkan's default) or "lower-left" (false: GL), the domain view's origin.
+std::optional<bool> parseDomainOrigin(std::string_view name);
+std::string_view domainOriginName(bool upperLeft);
 
 struct DisplaySettings {
     ShadingMode shading = ShadingMode::Lit;
@@ -269,6 +272,9 @@ struct DisplaySettings {
     float normalLength = 0.1f;
     std::array<float, 3> lightDir{0.4f, 0.5f, 0.75f};
     std::array<float, 3> background{0.16f, 0.17f, 0.19f};
+    // The domain view's picture: D3D's and Vulkan's default upper-left origin (v = 0 on top, edges
+    // tagged with their SV_TessFactor / gl_TessLevelOuter index) instead of GL's lower-left.
+    bool domainUpperLeft = false;
     bool operator==(const DisplaySettings&) const = default;
 };
 

@@ -218,6 +218,14 @@ say "presentation mode on and off"
 xdotool mousemove --sync 1030 500
 for i in 1 2 3 4 5 6; do xdotool click 5; sleep 0.05; done
 wait_for "t['items']['teach.math'][1] < 740"
+# The notes' convention, kept with the document: the upper-left origin, an edit Ctrl+Z undoes.
+click_item teach.upperLeft
+wait_for "len(t['domain']) == 1 and t['domain'][0]['upperLeft'] and t['modified']"
+import -window root "$WORK/domain_upper_left.png"
+xdotool mousemove --sync 640 700
+xdotool key ctrl+z
+wait_for "not t['domain'][0]['upperLeft']"
+say "domain view: upper-left origin on, undone"
 click_item teach.domain  # the domain window out of the view
 wait_for "len(t['domain']) == 0"
 click_item teach.math

@@ -75,6 +75,7 @@ void TestTrace::write(const EditorSnapshot& e) {
                                {"vertices", teaching.domainStats[i].vertices},
                                {"primitives", teaching.domainStats[i].primitives},
                                {"title", o.title},
+                               {"upperLeft", o.upperLeft},
                                {"levels", {o.levels.outer, o.levels.inner}},
                                {"shown", i < teaching.domainCounts.size() ? teaching.domainCounts[i] : std::array<uint64_t, 2>{}},
                                {"expectedVertices", want.vertices},

@@ -66,6 +66,7 @@ void Teaching::drawDomainWindow(PanelContext& ctx) {
             o.kind = DomainKind(domainKind);
             o.levels = {ts.outer, ts.inner};
             o.spacing = paneCount > 1 ? kPaneSpacings[paneSpacing[i]] : ts.spacing;
+            o.upperLeft = ctx.session().doc.display.domainUpperLeft;  // the document's convention (domain-origin)
             if (paneCount > 1 && paneLevel[i] > 0.0f) o.levels = withUniformLevel(o.levels, paneLevel[i]);
             o.rect = rects[i];
             o.margin = render::domainLabelMargin(px);

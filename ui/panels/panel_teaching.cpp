@@ -103,6 +103,12 @@ void Teaching::drawControls(PanelContext& ctx) {
     tip("The GLSL of the tessellation stages in use, read-only, with the active defines");
     ImGui::SameLine();
     commandButton(ctx, "Save figure...", "domain-figure", "teach.saveFigure");
+    ImGui::SameLine();
+    bool upperLeft = doc.display.domainUpperLeft;
+    if (ImGui::Checkbox("Upper-left", &upperLeft)) ctx.runLine(upperLeft ? "domain-origin upper-left" : "domain-origin lower-left");
+    traceItem("teach.upperLeft");
+    tip("Draw the domain as the D3D notes and Vulkan's default do: v = 0 on top, every edge tagged with its index [i] "
+        "(SV_TessFactor[i] = gl_TessLevelOuter[i]); off: GL's lower-left origin. Kept with the document");
     ImGui::TextUnformatted("Panes");
     for (int n : {1, 2, 4}) {
         ImGui::SameLine();
