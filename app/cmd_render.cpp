@@ -255,6 +255,15 @@ int runRender(const RenderArgs& a) {
     std::vector<render::ModelPane> panes;
     for (const PaneSpec& p : a.compare.empty() ? std::vector<PaneSpec>{} : parsePaneSpecs("render", "--compare", a.compare))
         panes.push_back({p.spacing, p.level});
+    // --near-far F: the distance-adaptive slide, the view beside the same view F times farther.
+    if (a.nearFar != 0.0) {
+        if (!panes.empty()) bad("--near-far", "makes its own two panes: leave out --compare");
+        std::ostringstream factor;
+        factor << a.nearFar;
+        if (!(a.nearFar > 1.0 && a.nearFar <= 1000.0)) bad("--near-far", "expected a factor in (1, 1000], got " + factor.str());
+        panes.push_back({doc.tess.spacing, 0.0f, 1.0, "near"});
+        panes.push_back({doc.tess.spacing, 0.0f, a.nearFar, "far \u00d7" + factor.str()});
+    }
     const auto [paneW, paneH] = render::paneSize(int(panes.size()), w, h);  // the camera is framed for a pane's aspect
     render::RenderOptions opt = buildRenderOptions(a, doc, paneW, paneH);
     if (math && a.eye.empty()) {  // the control net, which the math is drawn on, fills the frame (room for the numbers)
@@ -321,14 +330,19 @@ int runRender(const RenderArgs& a) {
             j["device"] = dev.name();
             for (size_t i = 0; i < results.size(); ++i) {
                 const render::PaneResult& r = results[i];
-                said << "wrote " << a.output << " pane " << i + 1 << ": " << render::paneCaption(r.tess, r.stats.triangles()) << ", GPU "
-                     << r.stats.gpuMs << " ms\n";
+                said << "wrote " << a.output << " pane " << i + 1 << ": " << (panes[i].label.empty() ? "" : panes[i].label + " \u00b7 ")
+                     << render::paneCaption(r.tess, r.stats.triangles()) << ", GPU " << r.stats.gpuMs << " ms\n";
                 nlohmann::json p = render::statsJson(r.stats);
                 p["spacing"] = spacingName(r.tess.spacing);
                 p["outer"] = r.tess.outer;
                 p["inner"] = r.tess.inner;
                 p["rect"] = r.rect;
                 j["panes"].push_back(std::move(p));
+            }
+            if (a.nearFar != 0.0 && results.size() == 2 && results[1].stats.triangles() > 0) {
+                const double ratio = double(results[0].stats.triangles()) / double(results[1].stats.triangles());
+                said << "near/far: " << ratio << "x the far view's triangles\n";
+                j["nearOverFar"] = ratio;
             }
             if (!a.stats.empty()) out.stage(a.stats, j.dump(2) + "\n");
         }
@@ -403,6 +417,9 @@ void registerRenderCommand(CLI::App& app, Action& run) {
     cmd->add_option("--compare-device", a->compareDevice,
                     "Domain figure: this device's pattern beside the one in this capture file (patchwork capture; data/captures), "
                     "differences highlighted");
+    cmd->add_option("--near-far", a->nearFar,
+                    "F: two panes, the view and the same view F times farther (the distance-adaptive slide: use with --adaptive "
+                    "distance or notes and --shading level); prints the far/near triangle ratio");
     cmd->add_option("--math", a->math,
                     "U,V: draw the Bézier math of one patch at (U, V) over the model: each control point's Bernstein weight, the "
                     "de Casteljau rows and column, the point, its tangents and normal");

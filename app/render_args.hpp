@@ -18,7 +18,9 @@ struct RenderArgs {
                        targetPx, maxLevel, domain, preset, compare, isolines, combJoin, compareDevice, eye, target, origin, theme, distance;
     std::string math;  // render --math U,V: the Bézier math of patch mathPatch drawn over the model
     int mathPatch = 0;
-    int notesPatch = 0;  // render --notes-patch 1|2: the notes' patch instead of a file (0: none)
+    int notesPatch = 0;
+    double nearFar = 0.0;  // render --near-far F: the view beside the same view F times farther (0: off)  // render --notes-patch 1|2: the
+                           // notes' patch instead of a file (0: none)
     bool cull = false, validation = false, noMsaa = false, cullFar = false, stageBars = false;
     DisplacementArgs displacement;
 };

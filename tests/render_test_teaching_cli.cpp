@@ -537,4 +537,29 @@ TEST(TeachingCli, StageBarsShowTheGpusCountersPerPane) {
     }
 }
 
+// `render --near-far F`: the distance-adaptive slide in one command: the view beside the same view F
+// times farther, each pane captioned and counted; the far pane has fewer triangles and the ratio
+// is printed and in the stats. A factor of 1 or less, or --compare beside it, is exit 2.
+TEST(TeachingCli, NearFarFigureComparesOneViewAtTwoDistances) {
+    const auto dir = freshTempDir("teach-nearfar");
+    const std::string base =
+        bin() + " render " + (dataDir() / "teapot.bpt").string() + " --adaptive distance --distance 10,60 --size 320x180 ";
+    const RunResult r =
+        runCommand(base + "--near-far 4 --stats " + (dir / "s.json").string() + " -o " + (dir / "nf.png").string() + " 2>&1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("near \u00b7"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("far \u00d74 \u00b7"), std::string::npos) << r.output;
+    std::ifstream in(dir / "s.json");
+    const nlohmann::json j = nlohmann::json::parse(in);
+    ASSERT_EQ(j["panes"].size(), 2u);
+    const double nearTris = j["panes"][0]["triangles"].get<double>(), farTris = j["panes"][1]["triangles"].get<double>();
+    EXPECT_GT(nearTris, 4.0 * farTris);
+    EXPECT_NEAR(j["nearOverFar"].get<double>(), nearTris / farTris, 1e-9);
+    for (const std::string bad : {"--near-far 1", "--near-far x", "--near-far 4 --compare equal,pow2"}) {
+        const RunResult b = runCommand(base + bad + " -o " + (dir / "x.png").string() + " 2>&1");
+        EXPECT_EQ(b.exitCode, 2) << bad << ": " << b.output;
+        EXPECT_FALSE(std::filesystem::exists(dir / "x.png")) << bad;
+    }
+}
+
 }  // namespace pw::test

@@ -19,6 +19,7 @@ RenderOptions paneOptions(const RenderOptions& base, const ModelPane& pane, cons
         o.tess.outer = {pane.level, pane.level, pane.level, pane.level};
         o.tess.inner = {pane.level, pane.level};
     }
+    o.camera.distance *= pane.farther;  // back along the view direction, the target kept
     o.pane = pixelRect(rect);
     o.keepTarget = index > 0;
     return o;
@@ -79,8 +80,9 @@ std::vector<PaneResult> renderModelFigure(Renderer& renderer, OffscreenTarget& t
         TextStyle st;
         st.pixels = textPixels > 0.0f ? textPixels : std::clamp(std::min(rects[i][2], rects[i][3]) / 24.0f, 11.0f, 36.0f);
         st.box = true;
-        labels.draw(img, rects[i][0] + st.pixels * 0.5f, rects[i][1] + st.pixels * 0.5f,
-                    paneCaption(results[i].tess, results[i].stats.triangles()), st);
+        labels.draw(
+            img, rects[i][0] + st.pixels * 0.5f, rects[i][1] + st.pixels * 0.5f,
+            (panes[i].label.empty() ? "" : panes[i].label + " \u00b7 ") + paneCaption(results[i].tess, results[i].stats.triangles()), st);
     }
     drawPaneDividers(rgba, ext.width, ext.height, rects);
     return results;

@@ -16,7 +16,9 @@ namespace pw::render {
 
 struct ModelPane {
     Spacing spacing = Spacing::Equal;
-    float level = 0.0f;  // a uniform level for this pane (no adaptivity); 0: the document's levels
+    float level = 0.0f;    // a uniform level for this pane (no adaptivity); 0: the document's levels
+    double farther = 1.0;  // the camera this many times its distance from the target (near/far figures)
+    std::string label;     // words before the caption ("far, 4x the distance"); empty: none
 };
 
 // What one pane drew: its tessellation settings (after paneOptions), its rectangle and statistics.
