@@ -13,35 +13,37 @@ namespace pw {
 namespace {
 
 // Homogeneous point (w·P, w).
-using H = glm::dvec4;
+using Homog = glm::dvec4;
 
-Vec3 project(const H& h) { return Vec3(h) / h.w; }
+Vec3 projectHomog(const Homog& h) { return Vec3(h) / h.w; }
 
-CasteljauSteps casteljau(const std::array<H, 4>& p, double t, H& out) {
+CasteljauSteps casteljauSteps(const std::array<Homog, 4>& p, double t, Homog& out) {
     CasteljauSteps s;
-    const H a = glm::mix(p[0], p[1], t), b = glm::mix(p[1], p[2], t), c = glm::mix(p[2], p[3], t);
-    const H d = glm::mix(a, b, t), e = glm::mix(b, c, t);
+    const Homog a = glm::mix(p[0], p[1], t), b = glm::mix(p[1], p[2], t), c = glm::mix(p[2], p[3], t);
+    const Homog d = glm::mix(a, b, t), e = glm::mix(b, c, t);
     out = glm::mix(d, e, t);
-    s.first = {project(a), project(b), project(c)};
-    s.second = {project(d), project(e)};
-    s.point = project(out);
+    s.first = {projectHomog(a), projectHomog(b), projectHomog(c)};
+    s.second = {projectHomog(d), projectHomog(e)};
+    s.point = projectHomog(out);
     return s;
 }
 
-std::array<double, 4> bernstein(double t) {
+std::array<double, 4> bernsteinAt(double t) {
     const double s = 1.0 - t;
     return {s * s * s, 3.0 * t * s * s, 3.0 * t * t * s, t * t * t};
 }
 
-std::string fixed(double x, int digits = 3) {
+std::string fixedText(double x, int digits = 3) {
     char buf[48];
     std::snprintf(buf, sizeof buf, "%.*f", digits, std::abs(x) < 0.5 * std::pow(10.0, -digits) ? 0.0 : x);
     return buf;
 }
 
-std::string vec(const Vec3& p) { return "(" + fixed(p.x) + ", " + fixed(p.y) + ", " + fixed(p.z) + ")"; }
+std::string vecText(const Vec3& p) { return "(" + fixedText(p.x) + ", " + fixedText(p.y) + ", " + fixedText(p.z) + ")"; }
 
-std::string list(const std::array<double, 4>& b) { return fixed(b[0]) + "  " + fixed(b[1]) + "  " + fixed(b[2]) + "  " + fixed(b[3]); }
+std::string factorList(const std::array<double, 4>& b) {
+    return fixedText(b[0]) + "  " + fixedText(b[1]) + "  " + fixedText(b[2]) + "  " + fixedText(b[3]);
+}
 
 }  // namespace
 
@@ -49,8 +51,8 @@ BezierMath bezierMath(const Net16& net, const std::optional<Weights16>& weights,
     BezierMath m;
     m.u = u;
     m.v = v;
-    m.bu = bernstein(u);
-    m.bv = bernstein(v);
+    m.bu = bernsteinAt(u);
+    m.bv = bernsteinAt(v);
     double total = 0.0;
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j) {
@@ -59,17 +61,17 @@ BezierMath bezierMath(const Net16& net, const std::optional<Weights16>& weights,
             total += m.weights[size_t(i * 4 + j)];
         }
     for (double& w : m.weights) w /= total;
-    std::array<H, 4> column{};
+    std::array<Homog, 4> column{};
     for (int i = 0; i < 4; ++i) {
-        std::array<H, 4> row{};
+        std::array<Homog, 4> row{};
         for (int j = 0; j < 4; ++j) {
             const double w = weights ? (*weights)[size_t(i * 4 + j)] : 1.0;
-            row[size_t(j)] = H(net[size_t(i * 4 + j)] * w, w);
+            row[size_t(j)] = Homog(net[size_t(i * 4 + j)] * w, w);
         }
-        m.rows[size_t(i)] = casteljau(row, u, column[size_t(i)]);
+        m.rows[size_t(i)] = casteljauSteps(row, u, column[size_t(i)]);
     }
-    H point{};
-    m.column = casteljau(column, v, point);
+    Homog point{};
+    m.column = casteljauSteps(column, v, point);
     const SurfacePoint sp = evaluateWindow(WindowNet{net, weights}, Basis::Bezier, 0.5, u, v);
     m.point = sp.p;
     m.du = sp.du;
@@ -88,7 +90,7 @@ MathDiagram bezierMathDiagram(const Net16& net, const BezierMath& m, double arro
             const size_t k = size_t(i * 4 + j);
             if (j < 3) stroke(net[k], net[k + 1], Role::Net);
             if (i < 3) stroke(net[k], net[k + 4], Role::Net);
-            d.dots.push_back({net[k], 0.6 + 2.4 * std::sqrt(m.weights[k]), Role::Net, fixed(m.weights[k])});
+            d.dots.push_back({net[k], 0.6 + 2.4 * std::sqrt(m.weights[k]), Role::Net, fixedText(m.weights[k])});
         }
     // Each row's de Casteljau pyramid in u, then the column through the rows' points in v.
     const auto pyramid = [&](const CasteljauSteps& s, Role step, Role result) {
@@ -107,14 +109,15 @@ MathDiagram bezierMathDiagram(const Net16& net, const BezierMath& m, double arro
     stroke(m.point, m.point + m.du * (arrow / longest), Role::TangentU);
     stroke(m.point, m.point + m.dv * (arrow / longest), Role::TangentV);
     stroke(m.point, m.point + m.normal * arrow, Role::Normal);
-    d.dots.push_back({m.point, 1.6, Role::Point, "S(" + fixed(m.u, 2) + ", " + fixed(m.v, 2) + ")"});
-    d.legend = {"u = " + fixed(m.u) + "   v = " + fixed(m.v),
-                "B(u) = " + list(m.bu),
-                "B(v) = " + list(m.bv),
-                "S = " + vec(m.point),
-                "dS/du = " + vec(m.du),
-                "dS/dv = " + vec(m.dv),
-                "n = " + vec(m.normal)};
+    d.dots.push_back({m.point, 1.6, Role::Point, "S(" + fixedText(m.u, 2) + ", " + fixedText(m.v, 2) + ")"});
+    d.legend = {"u = " + fixedText(m.u) + "   v = " + fixedText(m.v),
+                "B(u) = " + factorList(m.bu),
+                "B(v) = " + factorList(m.bv),
+                "S = " + vecText(m.point),
+                "dS/du = " + vecText(m.du),
+                "dS/dv = " + vecText(m.dv),
+                "n = " + vecText(m.normal)};
+    d.legendRoles = {Role::Point, Role::Row, Role::Column, Role::Point, Role::TangentU, Role::TangentV, Role::Normal};
     return d;
 }
 

@@ -51,6 +51,7 @@ struct MathDiagram {
     std::vector<Stroke> strokes;
     std::vector<Dot> dots;
     std::vector<std::string> legend;  // the lines of the side box: u, v, the 4 + 4 factors, point, tangents, normal
+    std::vector<Role> legendRoles;    // each line's colour: B(u) the rows', B(v) the column's, the arrows' their own
 };
 // `arrow`: the length the tangent and normal arrows are drawn at (model units; the tangents keep
 // their ratio, the longer one this long).

@@ -59,26 +59,25 @@ std::array<float, 2> LabelRaster::measure(std::string_view text, float pixels) c
     return {x, pixels};
 }
 
-namespace {
-
-void blend(PixelImage& img, int x, int y, const std::array<uint8_t, 4>& c, float coverage) {
+void blendPixel(PixelImage& img, int x, int y, const std::array<uint8_t, 4>& c, float coverage) {
     if (x < 0 || y < 0 || x >= int(img.width) || y >= int(img.height) || coverage <= 0.0f) return;
-    const float a = coverage * float(c[3]) / 255.0f;
+    const float a = std::min(coverage, 1.0f) * float(c[3]) / 255.0f;
     uint8_t* p = &img.rgba[(size_t(y) * img.width + size_t(x)) * 4];
     for (int k = 0; k < 3; ++k) p[k] = uint8_t(std::lround(float(p[k]) * (1.0f - a) + float(c[size_t(k)]) * a));
     p[3] = uint8_t(std::max(float(p[3]), a * 255.0f));
 }
 
-}  // namespace
+void fillRect(PixelImage& img, float x0, float y0, float x1, float y1, const std::array<uint8_t, 4>& c) {
+    for (int y = int(std::floor(y0)); y < int(std::ceil(y1)); ++y)
+        for (int x = int(std::floor(x0)); x < int(std::ceil(x1)); ++x) blendPixel(img, x, y, c, 1.0f);
+}
 
 void LabelRaster::draw(PixelImage image, float x, float y, std::string_view text, const TextStyle& style, float ax, float ay) const {
     const auto size = measure(text, style.pixels);
     const float left = x - ax * size[0], top = y - ay * size[1];
     if (style.box) {
         const float pad = std::ceil(style.pixels * 0.2f);
-        for (int py = int(std::floor(top - pad)); py < int(std::ceil(top + size[1] + pad)); ++py)
-            for (int px = int(std::floor(left - pad)); px < int(std::ceil(left + size[0] + pad)); ++px)
-                blend(image, px, py, style.boxColor, 1.0f);
+        fillRect(image, left - pad, top - pad, left + size[0] + pad, top + size[1] + pad, style.boxColor);
     }
     const stbtt_fontinfo* f = &font_->info;
     const float scale = stbtt_ScaleForPixelHeight(f, style.pixels);
@@ -102,7 +101,7 @@ void LabelRaster::draw(PixelImage image, float x, float y, std::string_view text
             const int ox = int(std::floor(pen)) + x0, oy = int(std::lround(baseline)) + y0;
             for (int gy = 0; gy < gh; ++gy)
                 for (int gx = 0; gx < gw; ++gx)
-                    blend(image, ox + gx, oy + gy, style.color, float(glyph[size_t(gy) * size_t(gw) + size_t(gx)]) / 255.0f);
+                    blendPixel(image, ox + gx, oy + gy, style.color, float(glyph[size_t(gy) * size_t(gw) + size_t(gx)]) / 255.0f);
         }
         pen += scale * float(advance);
         prev = cp;

@@ -41,6 +41,11 @@ private:
     std::unique_ptr<Font> font_;
 };
 
+// Pixels of an RGBA8 image: `c` blended over the pixel with `coverage` (0..1) times its alpha
+// (outside the image: nothing), and a rectangle [x0, x1) x [y0, y1) filled so.
+void blendPixel(PixelImage& img, int x, int y, const std::array<uint8_t, 4>& c, float coverage);
+void fillRect(PixelImage& img, float x0, float y0, float x1, float y1, const std::array<uint8_t, 4>& c);
+
 // The code points of UTF-8 text (invalid bytes become U+FFFD).
 std::vector<uint32_t> decodeUtf8(std::string_view text);
 

@@ -10,17 +10,8 @@ namespace pw::render {
 
 namespace {
 
-// Blends `c` into the pixel at (x, y) with coverage `a` (0..1).
-void blend(PixelImage& img, int x, int y, const std::array<unsigned char, 4>& c, float a) {
-    if (x < 0 || y < 0 || x >= int(img.width) || y >= int(img.height) || a <= 0.0f) return;
-    uint8_t* p = &img.rgba[(size_t(y) * img.width + size_t(x)) * 4];
-    const float k = std::min(a, 1.0f) * float(c[3]) / 255.0f;
-    for (int i = 0; i < 3; ++i) p[i] = uint8_t(std::lround(float(p[i]) * (1.0f - k) + float(c[size_t(i)]) * k));
-    p[3] = std::max(p[3], uint8_t(std::lround(255.0f * k)));
-}
-
 // A segment of width `w` with round caps, anti-aliased by distance (a disc where a == b).
-void segment(PixelImage& img, glm::dvec2 a, glm::dvec2 b, float w, const std::array<unsigned char, 4>& c) {
+void strokeSegment(PixelImage& img, glm::dvec2 a, glm::dvec2 b, float w, const std::array<unsigned char, 4>& c) {
     const double r = 0.5 * double(w);
     const int x0 = int(std::floor(std::min(a.x, b.x) - r - 1)), x1 = int(std::ceil(std::max(a.x, b.x) + r + 1));
     const int y0 = int(std::floor(std::min(a.y, b.y) - r - 1)), y1 = int(std::ceil(std::max(a.y, b.y) + r + 1));
@@ -31,7 +22,7 @@ void segment(PixelImage& img, glm::dvec2 a, glm::dvec2 b, float w, const std::ar
             const glm::dvec2 p(x + 0.5, y + 0.5);
             const double t = len2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
             const double d = glm::length(p - (a + t * ab));
-            blend(img, x, y, c, float(std::clamp(r + 0.5 - d, 0.0, 1.0)));
+            blendPixel(img, x, y, c, float(std::clamp(r + 0.5 - d, 0.0, 1.0)));
         }
 }
 
@@ -49,10 +40,10 @@ void drawMathDiagram(PixelImage image, const MathDiagram& d, const Camera& cam, 
     const float scale = textPixels / 13.0f, dot = 3.0f * scale;
     for (const MathDiagram::Stroke& s : d.strokes) {
         const auto a = proj(s.a), b = proj(s.b);
-        if (a && b) segment(image, *a, *b, mathStrokeWidth(s.role) * scale, mathColor(s.role));
+        if (a && b) strokeSegment(image, *a, *b, mathStrokeWidth(s.role) * scale, mathColor(s.role));
     }
     for (const MathDiagram::Dot& o : d.dots)
-        if (const auto c = proj(o.p)) segment(image, *c, *c, 2.0f * dot * float(o.radius), mathColor(o.role));
+        if (const auto c = proj(o.p)) strokeSegment(image, *c, *c, 2.0f * dot * float(o.radius), mathColor(o.role));
     for (const MathDiagram::Dot& o : d.dots) {
         const auto c = proj(o.p);
         if (!c || o.label.empty()) continue;
@@ -64,14 +55,12 @@ void drawMathDiagram(PixelImage image, const MathDiagram& d, const Camera& cam, 
         labels.draw(image, float(c->x) + dot * float(o.radius) + 2.0f, float(c->y) - 1.0f, o.label, st, 0.0f, 1.0f);
     }
     // The numbers, bottom left, each line in the colour of what it describes.
-    using Role = MathDiagram::Role;
-    static const Role kLineRole[] = {Role::Point, Role::Row, Role::Column, Role::Point, Role::TangentU, Role::TangentV, Role::Normal};
     const float line = textPixels * 1.3f;
     float y = rect[1] + rect[3] - textPixels * 0.8f - line * float(d.legend.size() - 1);
     for (size_t i = 0; i < d.legend.size(); ++i, y += line) {
         TextStyle st;
         st.pixels = textPixels;
-        st.color = mathColor(i < std::size(kLineRole) ? kLineRole[i] : Role::Point);
+        st.color = mathColor(i < d.legendRoles.size() ? d.legendRoles[i] : MathDiagram::Role::Point);
         st.box = true;
         st.boxColor = {0, 0, 0, 190};
         labels.draw(image, rect[0] + textPixels * 0.8f, y, d.legend[i], st, 0.0f, 1.0f);

@@ -17,18 +17,10 @@ std::vector<StageCount> stageCounts(const FrameStats& s) {
     return out;
 }
 
-namespace {
-
-void fill(PixelImage& img, float x0, float y0, float x1, float y1, const std::array<uint8_t, 4>& c) {
-    const float a = float(c[3]) / 255.0f;
-    for (int y = std::max(0, int(y0)); y < std::min(int(img.height), int(std::ceil(y1))); ++y)
-        for (int x = std::max(0, int(x0)); x < std::min(int(img.width), int(std::ceil(x1))); ++x) {
-            uint8_t* p = &img.rgba[(size_t(y) * img.width + size_t(x)) * 4];
-            for (int i = 0; i < 3; ++i) p[i] = uint8_t(std::lround(float(p[i]) * (1.0f - a) + float(c[size_t(i)]) * a));
-        }
+std::array<uint8_t, 4> stageColor(size_t i) {
+    static const std::array<uint8_t, 4> kBar[] = {{255, 150, 40, 255}, {90, 200, 255, 255}, {255, 90, 220, 255}, {120, 220, 90, 255}};
+    return kBar[i % 4];
 }
-
-}  // namespace
 
 void drawStageBars(PixelImage image, const std::array<float, 4>& rect, const std::vector<StageCount>& counts, float textPixels,
                    const LabelRaster& labels) {
@@ -41,8 +33,7 @@ void drawStageBars(PixelImage image, const std::array<float, 4>& rect, const std
     }
     const float w = pad * 4.0f + labelW + barW + numberW, h = pad * 2.0f + row * float(counts.size());
     const float x0 = rect[0] + rect[2] - w - pad, y0 = rect[1] + rect[3] - h - pad;
-    fill(image, x0, y0, x0 + w, y0 + h, {0, 0, 0, 170});
-    static const std::array<uint8_t, 4> kBar[] = {{255, 150, 40, 255}, {90, 200, 255, 255}, {255, 90, 220, 255}, {120, 220, 90, 255}};
+    fillRect(image, x0, y0, x0 + w, y0 + h, {0, 0, 0, 170});
     for (size_t i = 0; i < counts.size(); ++i) {
         const float y = y0 + pad + row * float(i);
         TextStyle st;
@@ -50,7 +41,7 @@ void drawStageBars(PixelImage image, const std::array<float, 4>& rect, const std
         st.color = {235, 235, 235, 255};
         labels.draw(image, x0 + pad, y + row * 0.5f, counts[i].stage, st, 0.0f, 0.5f);
         const float bx = x0 + pad * 2.0f + labelW;
-        fill(image, bx, y + row * 0.2f, bx + std::max(2.0f, barW * counts[i].bar), y + row * 0.8f, kBar[i % 4]);
+        fillRect(image, bx, y + row * 0.2f, bx + std::max(2.0f, barW * counts[i].bar), y + row * 0.8f, stageColor(i));
         labels.draw(image, bx + barW + pad, y + row * 0.5f, std::to_string(counts[i].count) + " " + counts[i].unit, st, 0.0f, 0.5f);
     }
 }

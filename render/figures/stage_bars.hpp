@@ -23,6 +23,8 @@ struct StageCount {
 };
 // Empty when the device has no pipeline statistics.
 std::vector<StageCount> stageCounts(const FrameStats& s);
+// The bar colour of stage `i` (RGBA): the editor's bars and the figures' alike.
+std::array<uint8_t, 4> stageColor(size_t i);
 
 // The bars in the bottom-right corner of `rect` (the panes' captions are at the top) (x, y, width, height) of an RGBA8 image.
 void drawStageBars(PixelImage image, const std::array<float, 4>& rect, const std::vector<StageCount>& counts, float textPixels,

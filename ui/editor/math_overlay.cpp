@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cfloat>
-#include <iterator>
 #include <string>
 
 #include "core/eval/bezier_math.hpp"
@@ -35,6 +34,7 @@ void Editor::drawMathOverlay() {
     const int p = mv.patch >= 0 ? mv.patch : sel_.patch >= 0 && sel_.patch < int(doc_.patches.size()) ? sel_.patch : 0;
     const Patch& patch = doc_.patches[size_t(p)];
     std::vector<std::string>& lines = teaching_.mathLines;
+    std::vector<MathDiagram::Role> roles;  // of the lines after the title
     const std::string name = patch.name.empty() ? "patch " + std::to_string(p) : "patch " + std::to_string(p) + " (" + patch.name + ")";
     lines.push_back("Bezier math \u00b7 " + name);
     const bool presenting = teaching_.presentation;
@@ -49,6 +49,7 @@ void Editor::drawMathOverlay() {
         for (const Vec3& q : net.points) box.add(q);
         const MathDiagram d = bezierMathDiagram(net.points, m, 0.25 * std::max(box.diagonal(), 1e-9));
         lines.insert(lines.end(), d.legend.begin(), d.legend.end());
+        roles = d.legendRoles;
         ImDrawList* dl = ImGui::GetBackgroundDrawList();
         const float dot = 3.0f * px / 13.0f;
         for (const auto& r : teaching_.viewPaneRects(sidePanels_.layout())) {
@@ -92,12 +93,9 @@ void Editor::drawMathOverlay() {
     if (ImGui::Begin("##bezierMath", nullptr, flags)) {
         ImGui::PushFont(font);
         ImGui::SetWindowFontScale(px / font->FontSize);
-        // Each line in the colour of what it describes: B(u) the rows, B(v) the column, the arrows.
-        using Role = MathDiagram::Role;
-        static const Role kLineRole[] = {Role::Point, Role::Point,    Role::Row,      Role::Column,
-                                         Role::Point, Role::TangentU, Role::TangentV, Role::Normal};
+        // Each line in the colour of what it describes (the diagram's legend roles; the title white).
         for (size_t i = 0; i < lines.size(); ++i) {
-            const Role role = i < std::size(kLineRole) ? kLineRole[i] : Role::Point;
+            const auto role = i >= 1 && i - 1 < roles.size() ? roles[i - 1] : MathDiagram::Role::Point;
             ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(colourOf(role)), "%s", lines[i].c_str());
         }
         ImGui::PopFont();

@@ -82,8 +82,6 @@ void Teaching::drawStageBars(const PanelLayout& layout, const render::FrameStats
     ImFont* font = presentation && window_.imgui().presentationFont() ? window_.imgui().presentationFont() : ImGui::GetFont();
     const float px = presentation ? presentationTextPixels() * 0.8f : ImGui::GetFontSize();
     const auto rects = viewPaneRects(layout);
-    static const ImU32 kBar[] = {IM_COL32(255, 150, 40, 255), IM_COL32(90, 200, 255, 255), IM_COL32(255, 90, 220, 255),
-                                 IM_COL32(120, 220, 90, 255)};
     for (size_t i = 0; i < rects.size(); ++i) {
         const auto counts = render::stageCounts(viewSplit() ? (i < viewPanes.size() ? viewPanes[i].stats : render::FrameStats{}) : single);
         if (counts.empty()) continue;
@@ -106,7 +104,8 @@ void Teaching::drawStageBars(const PanelLayout& layout, const render::FrameStats
             const float y = o.y + pad + row * float(k), ty = y + (row - px) * 0.5f;
             dl->AddText(font, px, ImVec2(o.x + pad, ty), IM_COL32(235, 235, 235, 255), counts[k].stage.c_str());
             const float bx = o.x + pad * 2.0f + labelW;
-            dl->AddRectFilled(ImVec2(bx, y + row * 0.2f), ImVec2(bx + std::max(2.0f, barW * counts[k].bar), y + row * 0.8f), kBar[k % 4]);
+            dl->AddRectFilled(ImVec2(bx, y + row * 0.2f), ImVec2(bx + std::max(2.0f, barW * counts[k].bar), y + row * 0.8f),
+                              IM_COL32(render::stageColor(k)[0], render::stageColor(k)[1], render::stageColor(k)[2], 255));
             dl->AddText(font, px, ImVec2(bx + barW + pad, ty), IM_COL32(235, 235, 235, 255), numbers[k].c_str());
             ++stageBarRows;
         }
