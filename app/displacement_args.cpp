@@ -11,6 +11,9 @@ void addDisplacementOptions(CLI::App* cmd, DisplacementArgs& a) {
     cmd->add_option("--displacement-bias", a.bias, "Displacement: height of the map's black (model units, default 0)");
     cmd->add_option("--displacement-mapping", a.mapping,
                     "Displacement UVs: planar (over the ground plane) | patch (each patch's parameters)");
+    cmd->add_option("--height-detail", a.heightDetail,
+                    "on (default) | off: whether the height map's detail raises adaptive levels (off: the distance or screen formula "
+                    "alone, the map only moves the vertices)");
 }
 
 void applyDisplacementArgs(const std::string& command, const DisplacementArgs& a, Document& doc) {
@@ -22,6 +25,11 @@ void applyDisplacementArgs(const std::string& command, const DisplacementArgs& a
         const auto m = parseDisplacementMapping(a.mapping);
         if (!m) badOption(command, "--displacement-mapping", "'" + a.mapping + "' is not planar or patch");
         d.mapping = *m;
+    }
+    if (!a.heightDetail.empty()) {
+        if (a.heightDetail != "on" && a.heightDetail != "off")
+            badOption(command, "--height-detail", "'" + a.heightDetail + "' is not on or off");
+        doc.tess.heightDetail = a.heightDetail == "on";
     }
     if (a.file.empty() && (!a.scale.empty() || !a.bias.empty() || !a.mapping.empty()) && !d.active())
         badOption(command, a.scale.empty() ? (a.bias.empty() ? "--displacement-mapping" : "--displacement-bias") : "--displacement-scale",

@@ -14,7 +14,7 @@
 namespace pw::app {
 
 struct DisplacementArgs {
-    std::string file, scale, bias, mapping;
+    std::string file, scale, bias, mapping, heightDetail;
 };
 
 void addDisplacementOptions(CLI::App* cmd, DisplacementArgs& a);

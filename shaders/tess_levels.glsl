@@ -28,7 +28,7 @@ float displacementMargin(PatchData pd) {
 // chord's midpoint, from the points alone, so both windows on the edge agree. The surface pass
 // counts the edges raised and the largest such level (the stats).
 float raiseForDisplacement(float level, vec3 p[4], float detail, float texels, PatchData pd) {
-    if (detail <= 0.0) return level;
+    if (detail <= 0.0 || (frame.modes.z & kKeepHeightLevels) != 0u) return level;
     mat4 m = frame.viewProj;
     vec3 mid = 0.5 * (p[0] + p[3]);
     float w = m[0][3] * mid.x + m[1][3] * mid.y + m[2][3] * mid.z + m[3][3];

@@ -142,6 +142,13 @@ TEST_F(Displacement, AdaptiveLevelsFollowTheMapsDetailAndItsSizeOnScreen) {
     EXPECT_GT(near.stats.displacedEdges, 0u);
     EXPECT_GT(near.stats.displacementLevel, 4u);
     EXPECT_GT(near.stats.triangles(), 4 * plain.stats.triangles());
+    // tess.heightDetail off (issue 41, the notes' terrain): the formula's levels alone, the map only
+    // moves the vertices: no edge raised, the flat map's triangle count.
+    render::RenderOptions kept = o;
+    kept.tess.heightDetail = false;
+    const Rendered formula = off.render(kept);
+    EXPECT_EQ(formula.stats.displacedEdges, 0u);
+    EXPECT_EQ(formula.stats.triangles(), plain.stats.triangles());
     render::RenderOptions far = o;
     far.camera.distance *= 8.0;
     const Rendered farAway = off.render(far);

@@ -535,6 +535,12 @@ TEST(PatchworkFormat, CullFarRoundTripsAndIsWrittenOnlyWhenOn) {
     const std::string text = serializeDocument(doc);
     EXPECT_NE(text.find("\"cullFar\""), std::string::npos);
     EXPECT_TRUE(parseDocument(text, "t.patchwork").tess.cullFar);
+    // tess.heightDetail likewise, written only when off.
+    EXPECT_EQ(text.find("heightDetail"), std::string::npos);
+    doc.tess.heightDetail = false;
+    const std::string kept = serializeDocument(doc);
+    EXPECT_EQ(nlohmann::json::parse(kept)["tess"]["heightDetail"], false);
+    EXPECT_FALSE(parseDocument(kept, "t.patchwork").tess.heightDetail);
 }
 
 // display.domainOrigin (issue 41: the notes' convention kept with the document) round-trips, is

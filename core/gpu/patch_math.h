@@ -26,7 +26,8 @@ PW_CONST uint kAdaptiveOrientation = 3u;
 // Culling bits.
 PW_CONST uint kCullBackFaces = 1u;
 PW_CONST uint kCullOffscreen = 2u;
-PW_CONST uint kCullFar = 4u;  // distance mode: a patch centred at or beyond the far distance (the notes' factor 0)
+PW_CONST uint kKeepHeightLevels = 8u;  // the height map's detail does not raise edge levels (tess.heightDetail off)
+PW_CONST uint kCullFar = 4u;           // distance mode: a patch centred at or beyond the far distance (the notes' factor 0)
 
 // Shading (core's ShadingMode).
 PW_CONST uint kShadingLit = 0u;

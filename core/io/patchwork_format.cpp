@@ -61,7 +61,8 @@ json tessJson(const TessSettings& t) {
            {"cullBackfaces", t.cullBackfaces},
            {"cullOffscreen", t.cullOffscreen}};
     if (t.isolineLevels != TessSettings{}.isolineLevels) j["isoline"] = floatArray(t.isolineLevels);  // older files stay as they were
-    if (t.cullFar) j["cullFar"] = true;                                                               // likewise
+    if (t.cullFar) j["cullFar"] = true;
+    if (!t.heightDetail) j["heightDetail"] = false;  // written only when off: older files stay as they were // likewise
     return j;
 }
 
@@ -145,6 +146,7 @@ TessSettings readTess(const Reader& r, const json& v, const std::string& path) {
     r.optional(v, path, "cullBackfaces", [&](const json& x, const std::string& p) { t.cullBackfaces = r.boolean(x, p); });
     r.optional(v, path, "cullOffscreen", [&](const json& x, const std::string& p) { t.cullOffscreen = r.boolean(x, p); });
     r.optional(v, path, "cullFar", [&](const json& x, const std::string& p) { t.cullFar = r.boolean(x, p); });
+    r.optional(v, path, "heightDetail", [&](const json& x, const std::string& p) { t.heightDetail = r.boolean(x, p); });
     r.optional(v, path, "isoline", [&](const json& x, const std::string& p) { readSetting(r, x, p, "tess.isoline", t.isolineLevels); });
     return t;
 }

@@ -239,6 +239,10 @@ struct TessSettings {
     // Distance mode: cull a patch whose control points' centre is at or beyond distanceFar, where
     // the lecture notes' formula gives level 0 (otherwise such patches keep level 1).
     bool cullFar = false;
+    // Adaptive modes with a height map: edges whose map has more detail than their level shows are
+    // raised (displacement-adaptive). Off keeps the levels the formula gives, so a figure shows the
+    // distance or screen rule alone (the notes' terrain: the height map only moves the vertices).
+    bool heightDetail = true;
     // The isoline domain's two levels, for curves and the isocurve overlay: lines (outer 0, always
     // rounded to an integer) and segments per line (outer 1, under `spacing`). Curves draw one line;
     // the isocurve overlay draws `lines` isoparametric curves per direction of every window, the

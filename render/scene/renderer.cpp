@@ -176,10 +176,10 @@ Renderer::FramePlan Renderer::prepareFrame(const RenderOptions& opt, VkRect2D ar
     fu.inner = {ts.inner[0], ts.inner[1], maxLevel, ts.targetPixels};
     fu.dist = {ts.distanceNear, ts.distanceFar, float(4.0 / std::max(modelSize_, 1e-9)), 12.0f};
     fu.dist.z = float(std::max(modelSize_, 1e-9) / 4.0);
-    fu.modes = {
-        uint32_t(ts.spacing), uint32_t(ts.adaptive),
-        (ts.cullBackfaces ? gpu::kCullBackFaces : 0u) | (ts.cullOffscreen ? gpu::kCullOffscreen : 0u) | (ts.cullFar ? gpu::kCullFar : 0u),
-        uint32_t(ds.shading)};
+    fu.modes = {uint32_t(ts.spacing), uint32_t(ts.adaptive),
+                (ts.cullBackfaces ? gpu::kCullBackFaces : 0u) | (ts.cullOffscreen ? gpu::kCullOffscreen : 0u) |
+                    (ts.cullFar ? gpu::kCullFar : 0u) | (ts.heightDetail ? 0u : gpu::kKeepHeightLevels),
+                uint32_t(ds.shading)};
     fu.sel = {opt.hoveredPoint >= 0 ? uint32_t(opt.hoveredPoint) : gpu::kNoPoint,
               opt.selectedPoint >= 0 ? uint32_t(opt.selectedPoint) : gpu::kNoPoint, m.scene.pointCount, 0u};
     fu.isoline = {ts.isolineLevels[0], ts.isolineLevels[1], 0.0f, 0.0f};

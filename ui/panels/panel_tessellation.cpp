@@ -26,6 +26,7 @@ void drawTessellationPanel(PanelContext& ctx) {
         settingRow(ctx, "tess.cullFar");  // only where it applies
     }
     if (ts.adaptive == AdaptiveMode::ScreenSpace) settingRow(ctx, "tess.targetPixels");
+    if (ts.adaptive != AdaptiveMode::None && ctx.session().doc.displacement.active()) settingRow(ctx, "tess.heightDetail");
     settingRow(ctx, "tess.maxLevel");
     settingRow(ctx, "tess.isoline", "tess.isolines");
     settingRow(ctx, "tess.cullBackfaces");
