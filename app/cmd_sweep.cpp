@@ -96,7 +96,13 @@ int runSweep(const SweepArgs& a) {
         if (!a.render.input.empty()) badOption(cmd, "--domain", "a domain sweep draws no document; leave out the file");
         panes = domainPanes(cmd, dargs);
     }
-    const Document doc = domain ? Document{} : a.render.input.empty() ? builtinTeapot() : loadDocument(a.render.input);
+    Document doc = domain ? Document{} : a.render.input.empty() ? builtinTeapot() : loadDocument(a.render.input);
+    // The document's displacement (and the options on top of it), as render draws it.
+    std::shared_ptr<const HeightMap> heightMap;
+    if (!domain) {
+        applyDisplacementArgs(cmd, a.render.displacement, doc);
+        heightMap = loadDocumentHeightMap(doc, a.render.input);
+    }
     // --compare on a model: the panes side by side, each with its partitioning, all at the sweep's level.
     std::vector<render::ModelPane> modelPanes;
     if (!domain && !a.render.compare.empty())
@@ -125,6 +131,7 @@ int runSweep(const SweepArgs& a) {
     spec.msaa = !a.render.noMsaa;
     spec.domainPanes = panes;
     spec.document = &doc;
+    spec.heightMap = heightMap;
     spec.options = opt;
     spec.modelPanes = modelPanes;
 

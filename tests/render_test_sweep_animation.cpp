@@ -68,4 +68,22 @@ TEST(SweepAnimation, WithoutAWorkingFfmpegNothingIsLost) {
     }
 }
 
+// A model sweep draws the document's displacement as render does, and takes the same displacement
+// options: a height map that cannot be read, or a bad --height-detail, is exit 2 with no frame
+// written (they were accepted and ignored).
+TEST(SweepAnimation, DisplacementOptionsApplyToModelSweeps) {
+    const auto dir = freshTempDir("sweep-displacement");
+    const std::string base =
+        bin() + " sweep " + (dataDir() / "teapot.bpt").string() + " --from 2 --to 3 --fps 2 --seconds 1 --size 160x90 ";
+    const RunResult missing = runCommand(base + "--displacement " + (dir / "none.png").string() + " -o " + (dir / "a").string() + "/ 2>&1");
+    EXPECT_EQ(missing.exitCode, 2) << missing.output;
+    EXPECT_NE(missing.output.find("none.png"), std::string::npos) << missing.output;
+    const RunResult bad = runCommand(base + "--height-detail maybe -o " + (dir / "b").string() + "/ 2>&1");
+    EXPECT_EQ(bad.exitCode, 2) << bad.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "a" / "frame_0000.png"));
+    const RunResult map = runCommand(base + "--displacement " + (dataDir() / "terrain.png").string() + " --displacement-scale 0.3 -o " +
+                                     (dir / "c").string() + "/ 2>&1");
+    EXPECT_EQ(map.exitCode, 0) << map.output;
+}
+
 }  // namespace pw::test

@@ -34,7 +34,7 @@ void renderSweep(Device& dev, const SweepSpec& s, const std::function<void(int, 
         view = std::make_unique<DomainView>(dev, target.colorFormat(), target.depthFormat(), target.samples());
     } else {
         renderer = std::make_unique<Renderer>(dev, target);
-        renderer->setDocument(*s.document);
+        renderer->setDocument(*s.document, s.heightMap);
         renderer->warmUp();
     }
     RenderOptions opt = s.options;

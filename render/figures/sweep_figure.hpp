@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "core/model/document.hpp"
@@ -21,10 +22,11 @@ struct SweepSpec {
     float from = 1.0f, to = 16.0f;
     int frames = 31;
     bool msaa = true;
-    std::vector<DomainPane> domainPanes;  // non-empty: a domain sweep (the document is not drawn)
-    const Document* document = nullptr;   // a model sweep: the document, with these options
-    RenderOptions options;                // (their levels are replaced frame by frame)
-    std::vector<ModelPane> modelPanes;    // 2 or 4: the model side by side per partitioning
+    std::vector<DomainPane> domainPanes;         // non-empty: a domain sweep (the document is not drawn)
+    const Document* document = nullptr;          // a model sweep: the document, with these options
+    std::shared_ptr<const HeightMap> heightMap;  // the document's height map (its displacement), or none
+    RenderOptions options;                       // (their levels are replaced frame by frame)
+    std::vector<ModelPane> modelPanes;           // 2 or 4: the model side by side per partitioning
 };
 
 // The level of frame k (from .. to in equal steps).

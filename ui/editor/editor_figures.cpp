@@ -63,6 +63,7 @@ void Editor::sweepAnimation(const std::string& path) {
         spec.width = std::max(64u, uint32_t(viewW) & ~1u);
         spec.height = std::max(64u, uint32_t(display.y) & ~1u);
         spec.document = &doc_;
+        spec.heightMap = documentHeightMap();
         spec.options = viewOptions();
         spec.options.hoveredPoint = spec.options.selectedPoint = -1;
         if (teaching_.viewSplit())
