@@ -235,7 +235,8 @@ int runRender(const RenderArgs& a) {
         bad("--notes-patch", "expected 1 or 2, got " + std::to_string(a.notesPatch));
     Document doc = a.notesPatch ? notesBezierPatch(a.notesPatch) : a.input.empty() ? builtinTeapot() : loadDocument(a.input);
     // --math U,V: one patch's evaluation drawn over the model (one pane).
-    std::optional<BezierMath> math;
+    std::optional<MathDiagram> math;
+    Net16 mathNet{};
     if (!a.math.empty()) {
         if (!a.compare.empty()) bad("--math", "draws over one view: leave out --compare");
         const auto uv = parseNumbers("render", "--math", a.math, 2, 0.0, 1.0, "U,V within [0, 1]");
@@ -247,7 +248,8 @@ int runRender(const RenderArgs& a) {
             bad("--math-patch", "patch " + std::to_string(a.mathPatch) + " is a " + std::string(basisName(p.basis)) +
                                     " window; the math figure shows Bézier patches");
         const WindowNet net = gatherWindow(doc, p.idx);
-        math = bezierMath(net.points, net.weights, uv[0], uv[1]);
+        mathNet = net.points;
+        math = bezierMathDiagram(mathNet, bezierMath(net.points, net.weights, uv[0], uv[1]));
     }
     applyDisplacementArgs("render", a.displacement, doc);
     const std::shared_ptr<const HeightMap> map = loadDocumentHeightMap(doc, a.input);
@@ -267,9 +269,7 @@ int runRender(const RenderArgs& a) {
     const auto [paneW, paneH] = render::paneSize(int(panes.size()), w, h);  // the camera is framed for a pane's aspect
     render::RenderOptions opt = buildRenderOptions(a, doc, paneW, paneH);
     if (math && a.eye.empty()) {  // the control net, which the math is drawn on, fills the frame (room for the numbers)
-        std::vector<glm::dvec3> net;
-        for (const uint32_t i : doc.patches[size_t(a.mathPatch)].idx) net.push_back(doc.points[i]);
-        opt.camera = frameTightly(opt.camera, net, double(paneW) / double(std::max(paneH, 1u)), 1.25);
+        opt.camera = frameTightly(opt.camera, {mathNet.begin(), mathNet.end()}, double(paneW) / double(std::max(paneH, 1u)), 1.25);
     }
 
     render::DeviceOptions dopt;
@@ -302,10 +302,7 @@ int runRender(const RenderArgs& a) {
                 render::drawStageBars({w, h, rgba}, {0.0f, 0.0f, float(w), float(h)}, render::stageCounts(st), barPx,
                                       render::LabelRaster());
             if (math) {
-                const Net16 net = gatherNet(doc, doc.patches[size_t(a.mathPatch)].idx);
-                Bounds box;
-                for (const Vec3& q : net) box.add(q);
-                const MathDiagram d = bezierMathDiagram(net, *math, 0.25 * std::max(box.diagonal(), 1e-9));
+                const MathDiagram& d = *math;
                 const float px = std::clamp(float(h) / 40.0f, 11.0f, 40.0f);
                 render::drawMathDiagram({w, h, rgba}, d, opt.camera, {0.0f, 0.0f, float(w), float(h)}, px, render::LabelRaster());
                 mathSaid = "Bezier math of patch " + std::to_string(a.mathPatch) + ": " + d.legend[0] + ", " + d.legend[3] + "\n";

@@ -243,7 +243,7 @@ TEST(BezierMath, DiagramLabelsEveryControlPoint) {
     std::mt19937 rng(7);
     const Net16 net = randomNet(rng);
     const BezierMath m = bezierMath(net, std::nullopt, 0.25, 0.5);
-    const MathDiagram d = bezierMathDiagram(net, m, 1.0);
+    const MathDiagram d = bezierMathDiagram(net, m);
     EXPECT_EQ(d.strokes.size(), 24u + 4u * 3u + 3u + 3u + 3u);
     size_t labelled = 0;
     for (const auto& dot : d.dots)

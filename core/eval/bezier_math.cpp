@@ -7,6 +7,7 @@
 
 #include "core/eval/patch_eval.hpp"
 #include "core/eval/rational_eval.hpp"
+#include "core/model/document.hpp"
 
 namespace pw {
 
@@ -80,8 +81,11 @@ BezierMath bezierMath(const Net16& net, const std::optional<Weights16>& weights,
     return m;
 }
 
-MathDiagram bezierMathDiagram(const Net16& net, const BezierMath& m, double arrow) {
+MathDiagram bezierMathDiagram(const Net16& net, const BezierMath& m) {
     using Role = MathDiagram::Role;
+    Bounds box;
+    for (const Vec3& q : net) box.add(q);
+    const double arrow = 0.25 * std::max(box.diagonal(), 1e-9);
     MathDiagram d;
     const auto stroke = [&](const Vec3& a, const Vec3& b, Role r) { d.strokes.push_back({a, b, r}); };
     // The control net, each point sized by and labelled with its weight.

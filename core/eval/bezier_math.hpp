@@ -53,9 +53,9 @@ struct MathDiagram {
     std::vector<std::string> legend;  // the lines of the side box: u, v, the 4 + 4 factors, point, tangents, normal
     std::vector<Role> legendRoles;    // each line's colour: B(u) the rows', B(v) the column's, the arrows' their own
 };
-// `arrow`: the length the tangent and normal arrows are drawn at (model units; the tangents keep
-// their ratio, the longer one this long).
-MathDiagram bezierMathDiagram(const Net16& net, const BezierMath& m, double arrow);
+// The tangent and normal arrows are a quarter of the net's bounding-box diagonal long (the tangents
+// keep their ratio, the longer one that long).
+MathDiagram bezierMathDiagram(const Net16& net, const BezierMath& m);
 std::array<unsigned char, 4> mathColor(MathDiagram::Role role);  // RGBA
 float mathStrokeWidth(MathDiagram::Role role);                   // pixels at 1x
 

@@ -45,9 +45,7 @@ void Editor::drawMathOverlay() {
     } else {
         const WindowNet net = gatherWindow(doc_, patch.idx);
         const BezierMath m = bezierMath(net.points, net.weights, double(mv.u), double(mv.v));
-        Bounds box;
-        for (const Vec3& q : net.points) box.add(q);
-        const MathDiagram d = bezierMathDiagram(net.points, m, 0.25 * std::max(box.diagonal(), 1e-9));
+        const MathDiagram d = bezierMathDiagram(net.points, m);
         lines.insert(lines.end(), d.legend.begin(), d.legend.end());
         roles = d.legendRoles;
         ImDrawList* dl = ImGui::GetBackgroundDrawList();
