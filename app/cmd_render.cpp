@@ -47,7 +47,29 @@ std::vector<float> renderLevels(const std::string& option, const std::string& te
     return app::parseLevels("render", option, text, count);
 }
 
-// Applies the command-line settings on top of the document's (validating everything first).
+// --debug-camera auto|X,Y,Z: the camera so far becomes the one that decides levels and culling;
+// the picture is drawn from X,Y,Z (auto: behind, beside and above it, far enough back to frame the
+// model and that camera's eye), looking at the middle of the model and the eye.
+void applyDebugCamera(const std::string& text, const Document& doc, double aspect, render::RenderOptions& o) {
+    o.lodCamera = o.camera;
+    const ViewMatrices lod = viewMatrices(o.camera, aspect);
+    Bounds box = computeBounds(doc.points);
+    box.add(Vec3(lod.eye.x, lod.eye.y, lod.eye.z));
+    const glm::dvec3 lo(box.min.x, box.min.y, box.min.z), hi(box.max.x, box.max.y, box.max.z), centre = 0.5 * (lo + hi);
+    glm::dvec3 eye;
+    if (text == "auto") {
+        const glm::dvec3 up = o.camera.zUp ? glm::dvec3(0, 0, 1) : glm::dvec3(0, 1, 0);
+        glm::dvec3 side = glm::cross(glm::dvec3(lod.forward), up);
+        side = glm::length(side) > 1e-9 ? glm::normalize(side) : glm::dvec3(1, 0, 0);
+        eye = centre + glm::length(hi - lo) * (0.9 * side + 0.8 * up - 0.5 * glm::dvec3(lod.forward));
+    } else {
+        eye = parsePoint("render", "--debug-camera", text);
+    }
+    const auto cam = lookFrom(o.camera, eye, centre);
+    if (!cam) bad("--debug-camera", "the debug camera is at the middle of the scene; give another point");
+    o.camera = text == "auto" ? frameBounds(*cam, box, aspect, 1.05) : *cam;
+}
+
 }  // namespace
 
 render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& doc, uint32_t width, uint32_t height) {
@@ -74,12 +96,29 @@ render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& do
     if (!a.spacing.empty()) {
         o.tess.spacing = parseSpacingOption("render", "--spacing", a.spacing);
     }
-    if (a.adaptive == "notes") {  // the lecture notes' formula: 64 saturate((100 - d) / (100 - 20)), level 0 culls
-        applyNotesDistanceFormula(o.tess);
+    if (a.adaptive == "notes" || a.adaptive == "notes-edges") {  // the first notes' 64 saturate((100 - d) / (100 - 20)), 0 culls
+        applyNotesDistanceFormula(o.tess, a.adaptive == "notes");
+    } else if (a.adaptive == "notes-terrain") {  // 2^lerp(20, 4, s), edges from midpoints, inner from the centre
+        applyNotesTerrainFormula(o.tess);
     } else if (!a.adaptive.empty()) {
         auto m = parseAdaptive(a.adaptive);
-        if (!m) bad("--adaptive", "'" + a.adaptive + "' is not one of none, distance, screen, orientation, notes");
+        if (!m)
+            bad("--adaptive", "'" + a.adaptive + "' is not one of none, distance, screen, orientation, notes, notes-edges, notes-terrain");
         o.tess.adaptive = *m;
+    }
+    if (!a.distanceCurve.empty()) {
+        const auto c = parseDistanceCurve(a.distanceCurve);
+        if (!c) bad("--distance-curve", "'" + a.distanceCurve + "' is not one of linear, pow2");
+        o.tess.distanceCurve = *c;
+    }
+    if (!a.distanceExponents.empty()) {
+        const auto v = parseNumbers("render", "--distance-exponents", a.distanceExponents, 2, -8.0, 32.0, "NEAR,FAR exponents");
+        o.tess.distanceExponents = {float(v[0]), float(v[1])};
+    }
+    if (!a.distanceFrom.empty()) {
+        const auto f = parseDistanceFrom(a.distanceFrom);
+        if (!f) bad("--distance-from", "'" + a.distanceFrom + "' is not one of edges, centre, edges-inner-centre");
+        o.tess.distanceFrom = *f;
     }
     if (!a.distance.empty()) {
         const auto v = parseNumbers("render", "--distance", a.distance, 2, 0.0, limits::kMaxCoordinate, "NEAR,FAR");
@@ -162,6 +201,7 @@ render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& do
         for (const auto& p : tessellateDocument(doc, 6).positions) surface.emplace_back(p[0], p[1], p[2]);
         o.camera = frameTightly(o.camera, surface, aspect);
     }
+    if (!a.debugCamera.empty()) applyDebugCamera(a.debugCamera, doc, aspect, o);
     o.display.normalLength = float(0.03 * modelSize(doc));
     return o;
 }
@@ -370,9 +410,21 @@ void addRenderOptions(CLI::App* cmd, RenderArgs& a) {
         "domain figure culls the patch");
     cmd->add_option("--inner", a.inner, "Two inner levels a,b (along u, along v), 1..64; with --domain tri one");
     cmd->add_option("--spacing", a.spacing, "equal (or integer, as the notes say) | fractional_odd | fractional_even | pow2");
-    cmd->add_option("--adaptive", a.adaptive,
-                    "none | distance | screen | orientation | notes (the lecture notes' distance formula: 64 at 20, 0 (culled) from 100)");
+    cmd->add_option(
+        "--adaptive", a.adaptive,
+        "none | distance | screen | orientation | notes (the first notes' formula from the patch centre: 64 at 20, 0 (culled) from "
+        "100) | notes-edges (the same per edge: crack-free) | notes-terrain (the terrain notes: 2^lerp(20, 4, s) over 10..200, "
+        "fractional_even)");
     cmd->add_option("--distance", a.distance, "Distance mode: NEAR,FAR (full level at NEAR or closer, level 1 at FAR or beyond)");
+    cmd->add_option("--distance-curve", a.distanceCurve,
+                    "Distance mode's curve: linear (max level at NEAR, 0 at FAR) | pow2 (2^lerp(E0, E1, s), the terrain notes)");
+    cmd->add_option("--distance-exponents", a.distanceExponents, "pow2 distance curve: exponents E0,E1 at NEAR and FAR (default 20,4)");
+    cmd->add_option("--distance-from", a.distanceFrom,
+                    "Where distance is measured: edges (each edge's midpoint: crack-free, the default) | centre (the patch centre, "
+                    "the first notes: neighbours disagree, cracks) | edges-inner-centre (the terrain notes)");
+    cmd->add_option("--debug-camera", a.debugCamera,
+                    "auto | X,Y,Z: draw from another camera while levels and culling stay those of the view: culled patches "
+                    "greyed in place, the view's frustum drawn");
     cmd->add_flag("--cull-far", a.cullFar, "Distance mode: cull patches centred at or beyond FAR (the notes' level 0) instead of level 1");
     cmd->add_option("--target-px", a.targetPx, "Screen-space adaptive: pixels per segment (default 8)");
     cmd->add_option("--max-level", a.maxLevel, "Adaptive: largest level, 1..64");

@@ -6,6 +6,8 @@
 #include "common.glsl"
 #include "core/gpu/level_colour.h"
 layout(location = 1) in vec3 inNormal;
+layout(location = 6) in float inWire;  // the wireframe's opacity (dense wires fade)
+layout(location = 5) flat in float inCulled;  // a patch the deciding camera culls, shown by a debug camera
 #ifdef FULL_VARYINGS
 layout(location = 2) in vec2 inUV;
 layout(location = 3) flat in uint inPatch;
@@ -25,8 +27,15 @@ vec3 diverging(float x) {  // blue (negative) - white - red (positive)
     return t < 0.0 ? mix(vec3(1.0), vec3(0.15, 0.35, 0.95), -t) : mix(vec3(1.0), vec3(0.95, 0.2, 0.15), t);
 }
 
+// A culled patch seen from a debug camera: grey hatching, so it reads as "not drawn from the real camera".
+vec3 culledGrey() { return ((int(gl_FragCoord.x + gl_FragCoord.y) / 5) & 1) == 0 ? vec3(0.42) : vec3(0.58); }
+
 void main() {
-    if (draw.drawMode == kDrawFlatColour) { outColor = draw.color; return; }
+    if (draw.drawMode == kDrawFlatColour) {
+        outColor = inCulled > 0.5 ? vec4(mix(draw.color.rgb, vec3(0.5), 0.6), draw.color.a) : draw.color;
+        outColor.a *= inWire;  // the wire pipelines blend
+        return;
+    }
     vec3 n = normalize(inNormal);
     vec2 ndc = (gl_FragCoord.xy - frame.viewport.zw) / frame.viewport.xy * 2.0 - 1.0;
     vec3 v = -normalize(frame.rayZ.xyz + ndc.x * frame.rayX.xyz + ndc.y * frame.rayY.xyz);  // towards the eye
@@ -59,6 +68,7 @@ void main() {
     else if (mode == kShadingLevel) base = levelColour(inCurv.x);
 #endif
     else base = vec3(0.72, 0.74, 0.78);
+    if (inCulled > 0.5) base = culledGrey();
     if (back) base *= vec3(1.0, 0.55, 0.5);  // back faces tinted
     vec3 c = base * light + (mode == kShadingLit ? vec3(0.35) * spec : vec3(0.0));
     outColor = vec4(clamp(c, 0.0, 1.0), 1.0);

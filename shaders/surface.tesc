@@ -16,6 +16,7 @@ layout(location = 1) patch out float netScalePatch;  // largest extent of the ne
 // Bit e set: boundary e (quad-domain order u0, v0, u1, v1) runs from the higher pool index to the
 // lower, so the evaluation shader evaluates it reversed (canonical direction, bit-identical seams).
 layout(location = 2) patch out uint edgeFlipPatch;
+layout(location = 3) patch out float culledPatch;  // 1: culled, drawn greyed for a debug camera (tess_levels.glsl showCulled)
 
 // Net slot of the k-th point of the row/column that represents edge e (quad-domain order u0,v0,u1,v1).
 // Bézier: the boundary row itself; splines: the row the neighbouring window shares (one inside).
@@ -68,7 +69,7 @@ bool backfacing(float margin) {
             vec3 c = cross(du[a], dv[b]);
             if (dot(c, c) == 0.0) continue;
             for (int q = 0; q < 16; ++q)
-                if (dot(c, frame.eye.xyz - cp(q)) >= 0.0) return false;
+                if (dot(c, frame.lodEye.xyz - cp(q)) >= 0.0) return false;
         }
     return true;
 }
@@ -87,6 +88,7 @@ void main() {
         if (reversedEdge(quadEdgeSlot(e, 0, 0), quadEdgeSlot(e, 1, 0), quadEdgeSlot(e, 2, 0), quadEdgeSlot(e, 3, 0)))
             flip |= 1u << uint(e);
     edgeFlipPatch = flip;
+    culledPatch = 0.0;
 
     // The settings' levels (uniform or adaptive), then the shared-edge rule: an edge whose windows
     // all have their own levels takes the largest of those, any other edge at least that much
@@ -95,6 +97,7 @@ void main() {
     float o[4];
     float in0, in1;
     bool adaptive = false;
+    float centreInnerLevel = 0.0;  // > 0: the inner levels measured from the centre
 #ifdef ADAPTIVE_AND_CULLING
     adaptive = frame.modes.y != kAdaptiveNone;
 #endif
@@ -103,11 +106,16 @@ void main() {
     }
 #ifdef ADAPTIVE_AND_CULLING
     else {
+        // Distance from the patch centre (tess.distanceFrom): the first notes' one level per patch,
+        // or the terrain notes' inner levels; otherwise each edge from its own midpoint.
+        float centre = centreInner() ? centreLevel(netCentre()) : 1.0;
         for (int e = 0; e < 4; ++e) {
             vec3 p[4];
             edgePoints(e, p);
-            o[e] = raiseForDisplacement(clamp(adaptiveEdgeLevel(p), 1.0, frame.inner.z), p, pd.detail[e], pd.texels[e], pd);
+            float level = centreLevels() ? centre : clamp(adaptiveEdgeLevel(p), 1.0, frame.inner.z);
+            o[e] = raiseForDisplacement(level, p, pd.detail[e], pd.texels[e], pd);
         }
+        if (centreInner()) centreInnerLevel = centre;
     }
 #endif
     uint fixedMask = uint(pd.inner.w + 0.5);
@@ -117,6 +125,9 @@ void main() {
     o[3] = sharedEdgeLevel(o[3], pd.outer.w, (fixedMask & 8u) != 0u);
     if (pd.inner.z > 0.5) {  // the window's own inner levels
         in0 = pd.inner.x; in1 = pd.inner.y;
+    } else if (centreInnerLevel > 0.0) {
+        in0 = centreInnerLevel;
+        in1 = centreInnerLevel;
     } else if (adaptive) {
         in0 = max(o[1], o[3]);  // inner[0] subdivides along u, like the v0 and v1 edges
         in1 = max(o[0], o[2]);
@@ -131,10 +142,14 @@ void main() {
     float margin = displacementMargin(pd);
     bool cull = ((frame.modes.z & kCullOffscreen) != 0u && offscreen(margin)) ||
                 ((frame.modes.z & kCullBackFaces) != 0u && backfacing(margin)) || (farCulling() && beyondFar(netCentre()));
-    if (cull) {
+    if (cull && showCulled()) {
+        culledPatch = 1.0;
+    } else if (cull) {
         for (int e = 0; e < 4; ++e) gl_TessLevelOuter[e] = 0.0;
         gl_TessLevelInner[0] = 0.0;
         gl_TessLevelInner[1] = 0.0;
+    }
+    if (cull) {
         if (draw.drawMode == kDrawShaded) atomicAdd(counters.culled, 1u);  // once, not again for each overlay
     }
 #endif

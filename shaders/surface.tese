@@ -25,6 +25,7 @@ layout(quads, SPACING, ccw) in;
 
 layout(location = 1) patch in float netScalePatch;  // largest extent of the net (control shader)
 layout(location = 2) patch in uint edgeFlipPatch;    // bit e: evaluate boundary e reversed (control shader)
+layout(location = 3) patch in float culledPatch;  // 1: culled, drawn greyed for a debug camera (control shader)
 #ifdef CAPTURE  // export as displayed: position, normal, UV and patch id into transform feedback (36 bytes a vertex)
 layout(xfb_buffer = 0, xfb_stride = 36) out;
 #define XFB(offset) , xfb_buffer = 0, xfb_offset = offset
@@ -35,6 +36,8 @@ layout(xfb_buffer = 0, xfb_stride = 36) out;
 layout(location = 0 XFB(0)) out vec3 outPos;  // the normal-vector overlay's base point; the captured position
 #endif
 layout(location = 1 XFB(12)) out vec3 outNormal;
+layout(location = 5) flat out float outCulled;
+layout(location = 6) out float outWire;  // the wireframe's opacity here (core/gpu/patch_math.h wireOpacity)
 #ifdef FULL_VARYINGS
 layout(location = 2 XFB(24)) out vec2 outUV;
 layout(location = 3 XFB(32)) flat out uint outPatch;
@@ -157,6 +160,9 @@ void main() {
     outPos = p;
 #endif
     outNormal = n;
+    outCulled = culledPatch;
+    outWire = wireOpacity(segmentSpan(segmentPixels(p, d.du, gl_TessLevelInner[0], frame.viewProj, frame.viewport.xy),
+                                      segmentPixels(p, d.dv, gl_TessLevelInner[1], frame.viewProj, frame.viewport.xy)));
 #ifdef FULL_VARYINGS
     // curvatures from the fundamental forms (curvature shading only)
     vec2 curv = vec2(0.0);

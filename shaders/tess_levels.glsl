@@ -4,17 +4,31 @@
 // Needs common.glsl first, and the control shader's `inIdx[]` (the pool index of each control point)
 // declared before the include.
 #ifdef ADAPTIVE_AND_CULLING
-// Adaptive level of one boundary curve from its four control points in canonical order.
+// Adaptive level of one boundary curve from its four control points in canonical order, seen from
+// the camera that decides levels (frame.lodEye: the view's, or the one a debug camera looks at).
 float adaptiveEdgeLevel(vec3 p[4]) {
-    return adaptiveEdgeLevel(p[0], p[1], p[2], p[3], frame.modes.y, frame.inner.z, frame.eye.xyz, frame.dist.x,
-                             frame.dist.y, frame.viewProj, frame.viewport.xy, frame.inner.w);
+    return adaptiveEdgeLevel(p[0], p[1], p[2], p[3], frame.modes.y, frame.inner.z, frame.lodEye.xyz, frame.dist.x, frame.dist.y,
+                             frame.distModes.x, frame.lodDist.xy, frame.lodViewProj, frame.viewport.xy, frame.inner.w);
 }
+
+// Distance mode measured from the patch centre (tess.distanceFrom centre, or the inner levels of
+// edges-inner-centre): the level at `centre`, clamped like an edge's.
+bool centreLevels() { return frame.modes.y == kAdaptiveDistance && frame.distModes.y == kFromCentre; }
+bool centreInner() { return frame.modes.y == kAdaptiveDistance && frame.distModes.y != kFromEdges; }
+float centreLevel(vec3 centre) {
+    float l = distanceLevel(distance(frame.lodEye.xyz, centre), frame.inner.z, frame.dist.x, frame.dist.y, frame.distModes.x,
+                            frame.lodDist.xy);
+    return clamp(l, 1.0, frame.inner.z);
+}
+
+// A debug camera draws culled patches greyed (their levels kept) instead of dropping them.
+bool showCulled() { return frame.lodEye.w > 0.5; }
 
 // The notes' factor 0 (tess.cullFar): in distance mode, a patch whose control points' centre is at
 // or beyond the far distance, where their formula 64 saturate((d1 - d) / (d1 - d0)) gives 0, is
 // culled. farCulling() first, so the centre is computed only when it is on.
 bool farCulling() { return (frame.modes.z & kCullFar) != 0u && frame.modes.y == kAdaptiveDistance; }
-bool beyondFar(vec3 centre) { return distance(frame.eye.xyz, centre) >= frame.dist.y; }
+bool beyondFar(vec3 centre) { return distance(frame.lodEye.xyz, centre) >= frame.dist.y; }
 
 // How far the displaced surface may leave the patch: the largest |height| (0 without a map, whose
 // texture then reads 0 and whose windows carry no detail).
@@ -29,7 +43,7 @@ float displacementMargin(PatchData pd) {
 // counts the edges raised and the largest such level (the stats).
 float raiseForDisplacement(float level, vec3 p[4], float detail, float texels, PatchData pd) {
     if (detail <= 0.0 || (frame.modes.z & kKeepHeightLevels) != 0u) return level;
-    mat4 m = frame.viewProj;
+    mat4 m = frame.lodViewProj;
     vec3 mid = 0.5 * (p[0] + p[3]);
     float w = m[0][3] * mid.x + m[1][3] * mid.y + m[2][3] * mid.z + m[3][3];
     if (w <= 1e-6) return level;
@@ -43,10 +57,10 @@ float raiseForDisplacement(float level, vec3 p[4], float detail, float texels, P
     return max(level, d);
 }
 
-// Plane k (0..5: left, right, top, bottom, near, far) of the view frustum in world space: a point
-// p is inside when dot(plane, vec4(p, 1)) >= 0.
+// Plane k (0..5: left, right, top, bottom, near, far) of the deciding camera's frustum in world
+// space: a point p is inside when dot(plane, vec4(p, 1)) >= 0.
 vec4 frustumPlane(int k) {
-    mat4 m = frame.viewProj;
+    mat4 m = frame.lodViewProj;
     vec4 rx = vec4(m[0][0], m[1][0], m[2][0], m[3][0]), ry = vec4(m[0][1], m[1][1], m[2][1], m[3][1]);
     vec4 rz = vec4(m[0][2], m[1][2], m[2][2], m[3][2]), rw = vec4(m[0][3], m[1][3], m[2][3], m[3][3]);
     return k == 0 ? rw + rx : k == 1 ? rw - rx : k == 2 ? rw + ry : k == 3 ? rw - ry : k == 4 ? rz : rw - rz;

@@ -14,16 +14,19 @@ layout(location = 0) in int inIdx[];
 layout(location = 1) patch out float netScalePatch;  // largest extent of the net
 // Bit e set: edge e runs from the higher pool index to the lower (evaluate it reversed).
 layout(location = 2) patch out uint edgeFlipPatch;
+layout(location = 3) patch out float culledPatch;  // 1: culled, drawn greyed for a debug camera (tess_levels.glsl showCulled)
 
 vec3 cp(int s) { return gl_in[s].gl_Position.xyz; }
 
 #ifdef ADAPTIVE_AND_CULLING
-// Edge e's level: adaptive, raised for the height map's detail along it (tess_levels.glsl).
-float adaptiveLevel(int e, PatchData pd) {
+// Edge e's level: adaptive (or `centre` when >= 0: measured from the patch centre), raised for the
+// height map's detail along it (tess_levels.glsl).
+float adaptiveLevel(int e, PatchData pd, float centre) {
     vec3 p[4];
     bool rev = reversedEdge(triEdgeSlot(e, 0), triEdgeSlot(e, 1), triEdgeSlot(e, 2), triEdgeSlot(e, 3));
     for (int k = 0; k < 4; ++k) p[k] = cp(triEdgeSlot(e, rev ? 3 - k : k));
-    return raiseForDisplacement(clamp(adaptiveEdgeLevel(p), 1.0, frame.inner.z), p, pd.detail[e], pd.texels[e], pd);
+    float level = centre >= 0.0 ? centre : clamp(adaptiveEdgeLevel(p), 1.0, frame.inner.z);
+    return raiseForDisplacement(level, p, pd.detail[e], pd.texels[e], pd);
 }
 
 // The centre of the control points (the patch's distance for the far cull).
@@ -62,7 +65,7 @@ bool backfacing(float margin) {
             vec3 c = cross(du[a], dv[b]);
             if (dot(c, c) == 0.0) continue;
             for (int q = 0; q < 10; ++q)
-                if (dot(c, frame.eye.xyz - cp(q)) >= 0.0) return false;
+                if (dot(c, frame.lodEye.xyz - cp(q)) >= 0.0) return false;
         }
     return true;
 }
@@ -79,12 +82,14 @@ void main() {
     for (int e = 0; e < 3; ++e)
         if (reversedEdge(triEdgeSlot(e, 0), triEdgeSlot(e, 1), triEdgeSlot(e, 2), triEdgeSlot(e, 3))) flip |= 1u << uint(e);
     edgeFlipPatch = flip;
+    culledPatch = 0.0;
 
     // The settings' levels, then the shared-edge rule (core/tess/edge_levels.hpp), as in surface.tesc.
     PatchData pd = patches[draw.patchBase + uint(gl_PrimitiveID)];
     float o[3];
     float in0;
     bool adaptive = false;
+    float centreInnerLevel = 0.0;  // > 0: the inner level measured from the centre
 #ifdef ADAPTIVE_AND_CULLING
     adaptive = frame.modes.y != kAdaptiveNone;
 #endif
@@ -93,7 +98,9 @@ void main() {
     }
 #ifdef ADAPTIVE_AND_CULLING
     else {
-        for (int e = 0; e < 3; ++e) o[e] = adaptiveLevel(e, pd);
+        float centre = centreInner() ? centreLevel(netCentre()) : 1.0;  // tess.distanceFrom, as surface.tesc
+        for (int e = 0; e < 3; ++e) o[e] = adaptiveLevel(e, pd, centreLevels() ? centre : -1.0);
+        if (centreInner()) centreInnerLevel = centre;
     }
 #endif
     uint fixedMask = uint(pd.inner.w + 0.5);
@@ -101,6 +108,7 @@ void main() {
     o[1] = sharedEdgeLevel(o[1], pd.outer.y, (fixedMask & 2u) != 0u);
     o[2] = sharedEdgeLevel(o[2], pd.outer.z, (fixedMask & 4u) != 0u);
     if (pd.inner.z > 0.5) in0 = pd.inner.x;  // the triangle's own inner level
+    else if (centreInnerLevel > 0.0) in0 = centreInnerLevel;
     else if (adaptive) in0 = max(o[0], max(o[1], o[2]));
     else in0 = frame.inner.x;
     for (int e = 0; e < 3; ++e) gl_TessLevelOuter[e] = roundLevel(o[e]);
@@ -112,9 +120,13 @@ void main() {
     float margin = displacementMargin(pd);
     bool cull = ((frame.modes.z & kCullOffscreen) != 0u && offscreen(margin)) ||
                 ((frame.modes.z & kCullBackFaces) != 0u && backfacing(margin)) || (farCulling() && beyondFar(netCentre()));
-    if (cull) {
+    if (cull && showCulled()) {
+        culledPatch = 1.0;
+    } else if (cull) {
         for (int e = 0; e < 3; ++e) gl_TessLevelOuter[e] = 0.0;
         gl_TessLevelInner[0] = 0.0;
+    }
+    if (cull) {
         if (draw.drawMode == kDrawShaded) atomicAdd(counters.culled, 1u);  // once, not again for each overlay
     }
 #endif

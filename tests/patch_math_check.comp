@@ -35,10 +35,11 @@ void main() {
     for (int i = 0; i < kCheckEdges; ++i) {
         vec3 p0 = inp.edges[i * 4].xyz, p1 = inp.edges[i * 4 + 1].xyz, p2 = inp.edges[i * 4 + 2].xyz,
              p3 = inp.edges[i * 4 + 3].xyz;
-        for (uint m = 0u; m < 3u; ++m)
-            outp.o[kOutAdaptive + i * 3 + int(m)] =
-                adaptiveEdgeLevel(p0, p1, p2, p3, kAdaptiveDistance + m, inp.params.z, inp.eye.xyz, inp.params.x,
-                                  inp.params.y, inp.viewProj, inp.viewport.xy, inp.params.w);
+        for (uint m = 0u; m < 4u; ++m)  // distance (linear), screen, orientation, then distance on the pow2 curve
+            outp.o[kOutAdaptive + i * 4 + int(m)] =
+                adaptiveEdgeLevel(p0, p1, p2, p3, m == 3u ? kAdaptiveDistance : kAdaptiveDistance + m, inp.params.z, inp.eye.xyz,
+                                  inp.params.x, inp.params.y, m == 3u ? kCurvePow2 : kCurveLinear, inp.exps.xy, inp.viewProj,
+                                  inp.viewport.xy, inp.params.w);
         // Two patches share this boundary and walk it in opposite directions; both evaluate it in
         // the canonical direction of its pool indices (pools[i]).
         uvec4 p = inp.pools[i];

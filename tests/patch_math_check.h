@@ -19,8 +19,8 @@ PW_CONST int kOutRound = 0;
 PW_CONST int kOutBernstein = kOutRound + kCheckLevels * 4;
 PW_CONST int kOutSlots = kOutBernstein + kCheckBernstein * 12;  // quad (e, k, depth) then triangle (e, k)
 PW_CONST int kOutReversed = kOutSlots + 64 + 12;
-PW_CONST int kOutAdaptive = kOutReversed + kCheckPools;      // modes distance, screen, orientation
-PW_CONST int kOutBoundary = kOutAdaptive + kCheckEdges * 3;  // per (edge, t): walked forward, backward
+PW_CONST int kOutAdaptive = kOutReversed + kCheckPools;      // modes distance, screen, orientation, distance on pow2
+PW_CONST int kOutBoundary = kOutAdaptive + kCheckEdges * 4;  // per (edge, t): walked forward, backward
 PW_CONST int kOutSize = kOutBoundary + kCheckEdges * kCheckT * 6;
 
 PW_BLOCK(layout(set = 0, binding = 0, std430) readonly buffer CheckInput, CheckInput) {
@@ -28,6 +28,7 @@ PW_BLOCK(layout(set = 0, binding = 0, std430) readonly buffer CheckInput, CheckI
     vec4 eye;       // xyz
     vec4 params;    // x d0, y d1, z max level, w target pixels per segment
     vec4 viewport;  // xy pixels
+    vec4 exps;      // xy the pow2 distance curve's exponents
     float levels[kCheckLevels];
     uvec4 pools[kCheckPools];
     vec4 edges[kCheckEdges * 4];  // xyz: four control points per boundary curve

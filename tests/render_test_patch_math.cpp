@@ -80,6 +80,7 @@ gpu::CheckInput makeInput() {
     in.viewProj = proj * view;
     in.eye = {3, -8, 4, 1};
     in.params = {2.0f, 14.0f, 48.0f, 6.0f};
+    in.exps = {6.0f, 1.5f, 0.0f, 0.0f};  // the pow2 distance curve: 64 at d0, 2.8 at d1
     in.viewport = {1200, 800, 0, 0};
     const float levels[] = {std::numeric_limits<float>::quiet_NaN(),
                             -3,
@@ -168,12 +169,18 @@ TEST_F(PatchMath, TheShadersAndTheCpuAgree) {
 
     for (int i = 0; i < gpu::kCheckEdges; ++i) {
         const glm::vec3 p0 = in.edges[i * 4], p1 = in.edges[i * 4 + 1], p2 = in.edges[i * 4 + 2], p3 = in.edges[i * 4 + 3];
-        for (uint32_t m = 0; m < 3; ++m) {
-            const float cpu = gpu::adaptiveEdgeLevel(p0, p1, p2, p3, gpu::kAdaptiveDistance + m, in.params.z, in.eye, in.params.x,
-                                                     in.params.y, in.viewProj, in.viewport, in.params.w);
-            EXPECT_NEAR(cpu, g[size_t(gpu::kOutAdaptive + i * 3 + int(m))], 1e-4f * std::max(1.0f, std::abs(cpu)))
-                << "edge " << i << " mode " << gpu::kAdaptiveDistance + m;
+        for (uint32_t m = 0; m < 4; ++m) {  // the fourth: distance on the pow2 curve
+            const float cpu = gpu::adaptiveEdgeLevel(
+                p0, p1, p2, p3, m == 3 ? gpu::kAdaptiveDistance : gpu::kAdaptiveDistance + m, in.params.z, in.eye, in.params.x, in.params.y,
+                m == 3 ? gpu::kCurvePow2 : gpu::kCurveLinear, glm::vec2(in.exps), in.viewProj, in.viewport, in.params.w);
+            EXPECT_NEAR(cpu, g[size_t(gpu::kOutAdaptive + i * 4 + int(m))], 1e-4f * std::max(1.0f, std::abs(cpu)))
+                << "edge " << i << " mode " << m;
         }
+        // The pow2 curve between its ends: 2^lerp(e0, e1, s), exactly the notes' formula.
+        const float d = glm::distance(glm::vec3(in.eye), 0.5f * (p0 + p3));
+        const float s = std::clamp((d - in.params.x) / (in.params.y - in.params.x), 0.0f, 1.0f);
+        EXPECT_NEAR(g[size_t(gpu::kOutAdaptive + i * 4 + 3)], std::pow(2.0f, in.exps.x + (in.exps.y - in.exps.x) * s),
+                    1e-4f * std::pow(2.0f, in.exps.x));
         const glm::uvec4 p = in.pools[i];
         const bool rev = gpu::edgeReversed(p.x, p.y, p.z, p.w);
         for (int j = 0; j < gpu::kCheckT; ++j) {

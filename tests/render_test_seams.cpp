@@ -5,7 +5,10 @@
 #include <cstdlib>
 
 #include "core/construct/model_builders.hpp"
+#include "core/gpu/patch_math.h"
 #include "core/mesh/mesh_tessellate.hpp"
+#include "core/tess/tess_domain.hpp"
+#include "core/tess/tess_presets.hpp"
 #include "render/targets/png_writer.hpp"
 #include "render_support.hpp"
 
@@ -133,6 +136,79 @@ TEST_F(RenderSeams, MixedPerPatchLevelsHaveNoCracks) {
             const Rendered r = off.render(o);
             EXPECT_EQ(holesInside(r, o, doc, rows, cols), 0u) << adaptiveName(a) << " " << spacingName(s);
         }
+}
+
+// Distance measured where the notes measure it (issue 41): the first notes' formula from the
+// patch centre gives every level of a patch the one value 64 saturate((d1 - d) / (d1 - d0)) at the
+// centre of its control points and culls patches centred beyond d1; the terrain notes' variant takes
+// each edge from its midpoint and the inner levels from the centre, on the pow2 curve
+// 2^lerp(e0, e1, s) under fractional_even. The GPU's triangle count is the count model's sum over
+// the patches of the levels computed here, patch by patch; the crack-free per-edge rule differs.
+TEST_F(RenderSeams, DistanceFromTheCentreOrTheEdgesIsTheNotesFormula) {
+    const int rows = 6, cols = 6;
+    const Document doc = makePatchGrid(rows, cols);
+    Offscreen off(640, 480, false);
+    off.setDocument(doc);
+    render::RenderOptions o = plainOptions(doc, 16, 640.0 / 480.0, "top");
+    o.camera.pitchDeg = 50;
+    const glm::vec3 eye = viewMatrices(o.camera, 640.0 / 480.0).eye;
+    const auto net = [&](size_t p, int slot) { return glm::vec3(doc.points[doc.patches[p].idx[size_t(slot)]]); };
+    const auto centreOf = [&](size_t p) {
+        glm::vec3 c(0.0f);
+        for (int k = 0; k < 16; ++k) c += net(p, k);
+        return c / 16.0f;
+    };
+    const auto expected = [&](const TessSettings& t, bool perEdge) {
+        const glm::vec2 exps(t.distanceExponents[0], t.distanceExponents[1]);
+        const auto level = [&](const glm::vec3& at) {
+            return std::clamp(
+                gpu::distanceLevel(glm::distance(eye, at), 64.0f, t.distanceNear, t.distanceFar, uint32_t(t.distanceCurve), exps), 1.0f,
+                64.0f);
+        };
+        uint64_t triangles = 0, culled = 0;
+        for (size_t p = 0; p < doc.patches.size(); ++p) {
+            if (t.cullFar && glm::distance(eye, centreOf(p)) >= t.distanceFar) {
+                ++culled;
+                continue;
+            }
+            const float c = level(centreOf(p));
+            DomainLevels l{{c, c, c, c}, {c, c}};
+            const int ends[4][2] = {{0, 12}, {0, 3}, {3, 15}, {12, 15}};  // edges u0, v0, u1, v1
+            if (perEdge)
+                for (int e = 0; e < 4; ++e) l.outer[size_t(e)] = level(0.5f * (net(p, ends[e][0]) + net(p, ends[e][1])));
+            triangles += expectedDomainCounts(DomainKind::Quad, l, t.spacing).primitives;
+        }
+        return std::pair(triangles, culled);
+    };
+    const double d = glm::distance(eye, centreOf(0));
+    // The first notes' formula from the centre, its distances scaled to this camera.
+    render::RenderOptions notes = o;
+    applyNotesDistanceFormula(notes.tess);
+    notes.tess.distanceNear = float(d * 0.5);
+    notes.tess.distanceFar = float(d * 1.05);
+    const auto [want, wantCulled] = expected(notes.tess, false);
+    ASSERT_GT(wantCulled, 0u);
+    ASSERT_LT(wantCulled, doc.patches.size());
+    const Rendered centre = off.render(notes);
+    EXPECT_EQ(centre.stats.triangles(), want);
+    EXPECT_EQ(centre.stats.patchesCulled, wantCulled);
+    // The same formula per edge (crack-free): other levels, so another count.
+    render::RenderOptions edges = notes;
+    edges.tess.distanceFrom = DistanceFrom::Edges;
+    const Rendered perEdge = off.render(edges);
+    EXPECT_NE(perEdge.stats.triangles(), want);
+    // The terrain notes' variant: edges from their midpoints, inner from the centre, pow2 curve,
+    // fractional_even (exponents chosen so the levels stay under 64 here).
+    render::RenderOptions terrain = o;
+    applyNotesTerrainFormula(terrain.tess);
+    terrain.tess.distanceNear = float(d * 0.5);
+    terrain.tess.distanceFar = float(d * 1.5);
+    terrain.tess.distanceExponents = {5.5f, 1.5f};
+    const auto [wantTerrain, none] = expected(terrain.tess, true);
+    EXPECT_EQ(none, 0u);
+    const Rendered t = off.render(terrain);
+    EXPECT_EQ(t.stats.triangles(), wantTerrain);
+    EXPECT_EQ(holesInside(t, terrain, doc, rows, cols), 0u);  // the edges agree: no crack
 }
 
 TEST_F(RenderSeams, BatchedLargeModelMatchesPlainMesh) {

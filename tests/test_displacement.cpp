@@ -16,6 +16,7 @@
 #include "core/eval/displacement.hpp"
 #include "core/io/document_io.hpp"
 #include "core/io/patchwork_format.hpp"
+#include "core/tess/tess_presets.hpp"
 #include "png16.hpp"
 #include "support.hpp"
 
@@ -153,13 +154,25 @@ TEST(DisplacementCommands, MapScaleBiasMappingAndOwnValuesAreUndoableSteps) {
     EXPECT_FALSE(s.doc.displacement.active());
 }
 
+// The terrain notes' preset (data/terrain_notes.patchwork): the same map under a terrain eight
+// times larger (1024 units, 32-unit windows), so the notes' distances 10..200 fall inside it, with
+// their formula: 2^lerp(20, 4, s), edges from midpoints and inner levels from the centre, fractional_even.
+Document notesTerrainDocument() {
+    Document doc = makeTerrainDocument({32, 1024.0, 112.0f, "terrain.png"});
+    doc.name = "terrain of the notes";
+    applyNotesTerrainFormula(doc.tess);
+    return doc;
+}
+
 TEST(Terrain, DataFolderHoldsTheGeneratedTerrainAndItsMap) {
     const HeightMap generated = makeTerrainHeightMap();
     const Document doc = makeTerrainDocument();
     if (std::getenv("PATCHWORK_REGENERATE_DATA")) {  // rewrites data/terrain.* from the generators
         writeGreyPng16(dataDir() / "terrain.png", generated.width, generated.height, generated.texels);
         std::ofstream(dataDir() / "terrain.patchwork") << serializeDocument(doc);
+        std::ofstream(dataDir() / "terrain_notes.patchwork") << serializeDocument(notesTerrainDocument());
     }
+    EXPECT_EQ(loadDocument(dataDir() / "terrain_notes.patchwork"), notesTerrainDocument());
     const HeightMap shipped = loadHeightMap(dataDir() / "terrain.png");
     EXPECT_EQ(shipped.bits, 16);
     EXPECT_EQ(shipped.width, generated.width);

@@ -19,6 +19,7 @@
 #include "core/io/document_io.hpp"
 #include "core/io/patchwork_format.hpp"
 #include "core/model/join_detect.hpp"
+#include "core/tess/tess_presets.hpp"
 #include "support.hpp"
 
 using namespace pw;
@@ -541,6 +542,37 @@ TEST(PatchworkFormat, CullFarRoundTripsAndIsWrittenOnlyWhenOn) {
     const std::string kept = serializeDocument(doc);
     EXPECT_EQ(nlohmann::json::parse(kept)["tess"]["heightDetail"], false);
     EXPECT_FALSE(parseDocument(kept, "t.patchwork").tess.heightDetail);
+}
+
+// The notes' distance variants (issue 41): tess.distanceCurve, distanceExponents and distanceFrom
+// round-trip, are written only when they differ from the default (older files stay as they were),
+// and a wrong name or exponent names its field.
+TEST(PatchworkFormat, DistanceCurveAndOriginRoundTripAndAreChecked) {
+    Document doc = builtinTeapot();
+    const std::string plain = serializeDocument(doc);
+    for (const char* k : {"distanceCurve", "distanceExponents", "distanceFrom"}) EXPECT_EQ(plain.find(k), std::string::npos) << k;
+    applyNotesTerrainFormula(doc.tess);
+    doc.tess.distanceExponents = {6.5f, 2.0f};
+    const std::string text = serializeDocument(doc);
+    const nlohmann::json j = nlohmann::json::parse(text);
+    EXPECT_EQ(j["tess"]["distanceCurve"], "pow2");
+    EXPECT_EQ(j["tess"]["distanceFrom"], "edges-inner-centre");
+    EXPECT_EQ(parseDocument(text, "t.patchwork").tess, doc.tess);
+    applyNotesDistanceFormula(doc.tess);
+    EXPECT_EQ(parseDocument(serializeDocument(doc), "t.patchwork").tess.distanceFrom, DistanceFrom::Centre);
+    const auto refused = [&](const std::string& from, const std::string& to, const std::string& field) {
+        std::string bad = text;
+        bad.replace(bad.find(from), from.size(), to);
+        try {
+            (void)parseDocument(bad, "t.patchwork");
+            ADD_FAILURE() << "accepted " << to;
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+        }
+    };
+    refused("\"pow2\"", "\"cubic\"", "distanceCurve");
+    refused("\"edges-inner-centre\"", "\"middle\"", "distanceFrom");
+    refused("6.5", "99", "distanceExponents");
 }
 
 // display.domainOrigin (issue 41: the notes' convention kept with the document) round-trips, is

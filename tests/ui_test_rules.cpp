@@ -57,6 +57,7 @@ public:
     bool keyPressed(int, int) const override { return false; }
     float uiScale() const override { return 1.0f; }
     void frameBox(const Bounds&) override {}
+    const Camera& viewCamera() const override { return camera_; }
     const PanelLayout& layout() const override { return layout_; }
     const FrameReport& frameReport() const override { return report_; }
     const ContinuityWatch& continuityWatch() const override { return watch_; }
@@ -70,6 +71,7 @@ private:
     CommandTable table_ = makeCommandTable();
     test::NoWritesHost host_;
     uint64_t version_ = 0;
+    Camera camera_;
     PanelLayout layout_;
     FrameReport report_;
     ContinuityWatch watch_;

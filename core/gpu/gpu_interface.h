@@ -36,6 +36,14 @@ PW_BLOCK(layout(set = 0, binding = 0, std140) uniform Frame, FrameUniforms) {
     // Curvature combs (shaders/comb.tese): x tooth length per unit curvature (model units²; a tooth
     // is −x·κN), y teeth per curve or isocurve.
     vec4 comb;
+    // Distance mode: x curve (kCurve*), y where distance is measured (kFrom*); lodDist xy the pow2
+    // curve's exponents at d0 and d1.
+    uvec4 distModes;
+    vec4 lodDist;
+    // The camera that decides adaptive levels and culling: the view's own, unless a debug camera
+    // draws the picture from elsewhere; then w is 1 and culled patches are drawn greyed instead of dropped.
+    mat4 lodViewProj;
+    vec4 lodEye;
 }
 PW_END_BLOCK(frame)
 
@@ -75,7 +83,7 @@ PW_END_BLOCK(draw)
 PW_END_NAMESPACE
 
 #ifdef __cplusplus
-static_assert(sizeof(pw::gpu::FrameUniforms) == 2 * 64 + 15 * 16);
+static_assert(sizeof(pw::gpu::FrameUniforms) == 3 * 64 + 18 * 16);
 static_assert(sizeof(pw::gpu::PatchData) == 96);
 static_assert(sizeof(pw::gpu::GpuCounters) == 16);
 static_assert(sizeof(pw::gpu::DrawPush) == 96);

@@ -23,6 +23,13 @@ PW_CONST uint kAdaptiveDistance = 1u;
 PW_CONST uint kAdaptiveScreen = 2u;
 PW_CONST uint kAdaptiveOrientation = 3u;
 
+// Distance mode's curve (core's DistanceCurve) and where the distance is measured (core's DistanceFrom).
+PW_CONST uint kCurveLinear = 0u;           // maxLevel at d0 or nearer, 0 at d1 or farther (the first notes)
+PW_CONST uint kCurvePow2 = 1u;             // 2^mix(near, far exponent, saturate((d - d0) / (d1 - d0))) (the terrain notes)
+PW_CONST uint kFromEdges = 0u;             // each edge from its own midpoint, inner the larger opposite edge: crack-free
+PW_CONST uint kFromCentre = 1u;            // all six levels from the patch centre (the first notes): neighbours may disagree
+PW_CONST uint kFromEdgesInnerCentre = 2u;  // edges from their midpoints, inner from the centre (the terrain notes)
+
 // Culling bits.
 PW_CONST uint kCullBackFaces = 1u;
 PW_CONST uint kCullOffscreen = 2u;
@@ -143,16 +150,23 @@ PW_FN vec2 toPixels(vec3 p, mat4 viewProj, vec2 viewport, PW_OUT(bool) behind) {
     return (vec2(c.x, c.y) / max(c.w, 1e-6f) * 0.5f + 0.5f) * viewport;
 }
 
+// Distance mode's level (before clamping and rounding) at distance d: linear, maxLevel at d0 or
+// nearer and 0 at d1 or farther (64 saturate((d1 - d) / (d1 - d0)), the first notes); pow2,
+// 2^lerp(exps.x, exps.y, s) with s = saturate((d - d0) / (d1 - d0)) (the terrain notes' 2^lerp(20, 4, s)).
+PW_FN float distanceLevel(float d, float maxLevel, float d0, float d1, uint curve, vec2 exps) {
+    if (curve == kCurvePow2) return exp2(mix(exps.x, exps.y, clamp((d - d0) / max(d1 - d0, 1e-6f), 0.0f, 1.0f)));
+    return maxLevel * clamp((d1 - d) / max(d1 - d0, 1e-6f), 0.0f, 1.0f);
+}
+
 // Adaptive level (before rounding) of one boundary curve from its four control points in
 // canonical order, so a neighbour sharing the curve gets the same value and no crack opens.
-// distance: maxLevel at distance d0 or nearer, 0 at d1 or farther; screen: the control polygon's
-// length in pixels over `targetPx`; orientation: edges whose bend is seen side-on get more.
-PW_FN float adaptiveEdgeLevel(vec3 p0, vec3 p1, vec3 p2, vec3 p3, uint mode, float maxLevel, vec3 eye, float d0, float d1, mat4 viewProj,
-                              vec2 viewport, float targetPx) {
+// distance: distanceLevel at the distance of the curve's chord midpoint; screen: the control
+// polygon's length in pixels over `targetPx`; orientation: edges whose bend is seen side-on get more.
+PW_FN float adaptiveEdgeLevel(vec3 p0, vec3 p1, vec3 p2, vec3 p3, uint mode, float maxLevel, vec3 eye, float d0, float d1, uint curve,
+                              vec2 exps, mat4 viewProj, vec2 viewport, float targetPx) {
     if (mode == kAdaptiveDistance) {
         PW_PRECISE vec3 mid = 0.5f * (p0 + p3);
-        float d = distance(eye, mid);
-        return maxLevel * clamp((d1 - d) / max(d1 - d0, 1e-6f), 0.0f, 1.0f);
+        return distanceLevel(distance(eye, mid), maxLevel, d0, d1, curve, exps);
     }
     if (mode == kAdaptiveScreen) {
         bool b0, b1, b2, b3;
@@ -169,6 +183,23 @@ PW_FN float adaptiveEdgeLevel(vec3 p0, vec3 p1, vec3 p2, vec3 p3, uint mode, flo
     float chord = max(distance(p0, p3), 1e-6f);
     return maxLevel * clamp(2.0f * length(side) / chord, 0.0f, 1.0f);
 }
+
+// Pixels that one of `level` segments along the derivative d (a whole parameter's change) at p spans
+// on a viewport of `viewport` pixels: the projection's derivative in that direction, over the level.
+// Behind the eye: large (no fading).
+PW_FN float segmentPixels(vec3 p, vec3 d, float level, mat4 viewProj, vec2 viewport) {
+    vec4 c = viewProj * vec4(p, 1.0f);
+    vec4 dc = viewProj * vec4(d, 0.0f);
+    if (c.w <= 1e-6f) return 1e6f;
+    vec2 dn = (vec2(dc.x, dc.y) * c.w - vec2(c.x, c.y) * dc.w) / (c.w * c.w);
+    return length(dn * 0.5f * viewport) / max(level, 1.0f);
+}
+
+// The wireframe's opacity where its segments span `px` pixels: opaque from 8 px, then in proportion.
+// A pixel is crossed by about 3 / px lines of a wire that dense (three edge directions), so the
+// wire covers about 1 - (1 - px / 8)^(3 / px), at most a third, however dense it gets: level 64 far
+// away tints the surface instead of blacking it out.
+PW_FN float wireOpacity(float px) { return clamp(px / 8.0f, 0.0f, 1.0f); }
 
 // Displacement-adaptive level of one boundary (DESIGN §11): n straight segments miss the displaced
 // edge by about detail / (8 n^2) world units (detail: core/model/height_map.hpp edgeDetail, times |scale|),

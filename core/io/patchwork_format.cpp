@@ -62,6 +62,10 @@ json tessJson(const TessSettings& t) {
            {"cullOffscreen", t.cullOffscreen}};
     if (t.isolineLevels != TessSettings{}.isolineLevels) j["isoline"] = floatArray(t.isolineLevels);  // older files stay as they were
     if (t.cullFar) j["cullFar"] = true;
+    const TessSettings defaults;  // the notes' distance variants: written only when chosen, so older files stay as they were
+    if (t.distanceCurve != defaults.distanceCurve) j["distanceCurve"] = distanceCurveName(t.distanceCurve);
+    if (t.distanceExponents != defaults.distanceExponents) j["distanceExponents"] = floatArray(t.distanceExponents);
+    if (t.distanceFrom != defaults.distanceFrom) j["distanceFrom"] = distanceFromName(t.distanceFrom);
     if (!t.heightDetail) j["heightDetail"] = false;  // written only when off: older files stay as they were // likewise
     return j;
 }
@@ -141,6 +145,13 @@ TessSettings readTess(const Reader& r, const json& v, const std::string& path) {
     });
     number("distanceNear", t.distanceNear);
     number("distanceFar", t.distanceFar);
+    r.optional(v, path, "distanceCurve", [&](const json& x, const std::string& p) {
+        t.distanceCurve = r.named<DistanceCurve>(x, p, parseDistanceCurve, "linear, pow2");
+    });
+    number("distanceExponents", t.distanceExponents);
+    r.optional(v, path, "distanceFrom", [&](const json& x, const std::string& p) {
+        t.distanceFrom = r.named<DistanceFrom>(x, p, parseDistanceFrom, "edges, centre, edges-inner-centre");
+    });
     number("targetPixels", t.targetPixels);
     number("maxLevel", t.maxLevel);
     r.optional(v, path, "cullBackfaces", [&](const json& x, const std::string& p) { t.cullBackfaces = r.boolean(x, p); });

@@ -18,6 +18,9 @@ static_assert(uint32_t(Spacing::Equal) == gpu::kSpacingEqual && uint32_t(Spacing
 static_assert(uint32_t(AdaptiveMode::None) == gpu::kAdaptiveNone && uint32_t(AdaptiveMode::Distance) == gpu::kAdaptiveDistance &&
               uint32_t(AdaptiveMode::ScreenSpace) == gpu::kAdaptiveScreen &&
               uint32_t(AdaptiveMode::Orientation) == gpu::kAdaptiveOrientation);
+static_assert(uint32_t(DistanceCurve::Linear) == gpu::kCurveLinear && uint32_t(DistanceCurve::Pow2) == gpu::kCurvePow2);
+static_assert(uint32_t(DistanceFrom::Edges) == gpu::kFromEdges && uint32_t(DistanceFrom::Centre) == gpu::kFromCentre &&
+              uint32_t(DistanceFrom::EdgesInnerCentre) == gpu::kFromEdgesInnerCentre);
 static_assert(uint32_t(ShadingMode::Lit) == gpu::kShadingLit && uint32_t(ShadingMode::Normal) == gpu::kShadingNormal &&
               uint32_t(ShadingMode::PatchId) == gpu::kShadingPatchId && uint32_t(ShadingMode::UvChecker) == gpu::kShadingUvChecker &&
               uint32_t(ShadingMode::Zebra) == gpu::kShadingZebra && uint32_t(ShadingMode::GaussCurvature) == gpu::kShadingGaussCurvature &&
@@ -31,6 +34,8 @@ constexpr std::array<std::string_view, 7> kEdgeNames{"u0", "v0", "u1", "v1", "e0
 constexpr std::array<std::string_view, 5> kContinuityNames{"C0", "C1", "G1", "C2", "G2"};
 constexpr std::array<std::string_view, 4> kSpacingNames{"equal", "fractional_odd", "fractional_even", "pow2"};
 constexpr std::array<std::string_view, 4> kAdaptiveNames{"none", "distance", "screen", "orientation"};
+constexpr std::array<std::string_view, 2> kCurveNames{"linear", "pow2"};
+constexpr std::array<std::string_view, 3> kFromNames{"edges", "centre", "edges-inner-centre"};
 constexpr std::array<std::string_view, 8> kShadingNames{"lit", "normal", "patch", "uv", "zebra", "gauss", "mean", "level"};
 constexpr std::array<std::string_view, 2> kMappingNames{"patch", "planar"};
 constexpr std::array<std::string_view, 4> kLengthUnitNames{"mm", "cm", "m", "in"};
@@ -54,6 +59,10 @@ std::string_view spacingName(Spacing s) { return enumName(s, kSpacingNames); }
 std::optional<Spacing> parseSpacing(std::string_view n) { return n == "integer" ? Spacing::Equal : parseEnum<Spacing>(n, kSpacingNames); }
 std::string_view adaptiveName(AdaptiveMode m) { return enumName(m, kAdaptiveNames); }
 std::optional<AdaptiveMode> parseAdaptive(std::string_view n) { return parseEnum<AdaptiveMode>(n, kAdaptiveNames); }
+std::string_view distanceCurveName(DistanceCurve c) { return enumName(c, kCurveNames); }
+std::optional<DistanceCurve> parseDistanceCurve(std::string_view n) { return parseEnum<DistanceCurve>(n, kCurveNames); }
+std::string_view distanceFromName(DistanceFrom f) { return enumName(f, kFromNames); }
+std::optional<DistanceFrom> parseDistanceFrom(std::string_view n) { return parseEnum<DistanceFrom>(n, kFromNames); }
 std::string_view shadingName(ShadingMode m) { return enumName(m, kShadingNames); }
 std::optional<ShadingMode> parseShading(std::string_view n) { return parseEnum<ShadingMode>(n, kShadingNames); }
 

@@ -224,6 +224,20 @@ enum class AdaptiveMode : uint8_t { None, Distance, ScreenSpace, Orientation };
 std::string_view adaptiveName(AdaptiveMode m);  // "none", "distance", "screen", "orientation"
 std::optional<AdaptiveMode> parseAdaptive(std::string_view name);
 
+// Distance mode's curve: linear (maxLevel at the near distance, 0 at the far one: the first notes'
+// 64 saturate((d1 - d) / (d1 - d0))) or pow2 (2^lerp(near exponent, far exponent, s): the terrain
+// notes' 2^lerp(20, 4, s)); core/gpu/patch_math.h distanceLevel.
+enum class DistanceCurve : uint8_t { Linear, Pow2 };
+std::string_view distanceCurveName(DistanceCurve c);  // "linear", "pow2"
+std::optional<DistanceCurve> parseDistanceCurve(std::string_view name);
+// Where distance mode measures the distance: each edge from its own chord midpoint (crack-free: both
+// patches on an edge agree), every level from the patch centre (the first notes: one level per
+// patch, so neighbours at different distances disagree on their shared edge and the surface cracks),
+// or edges from their midpoints and the inner levels from the centre (the terrain notes).
+enum class DistanceFrom : uint8_t { Edges, Centre, EdgesInnerCentre };
+std::string_view distanceFromName(DistanceFrom f);  // "edges", "centre", "edges-inner-centre"
+std::optional<DistanceFrom> parseDistanceFrom(std::string_view name);
+
 struct TessSettings {
     std::array<float, 4> outer{16, 16, 16, 16};
     std::array<float, 2> inner{16, 16};
@@ -232,6 +246,9 @@ struct TessSettings {
     AdaptiveMode adaptive = AdaptiveMode::None;
     float distanceNear = 2.0f;  // d0: full level at or below this distance
     float distanceFar = 30.0f;  // d1: level 1 at or beyond this distance
+    DistanceCurve distanceCurve = DistanceCurve::Linear;
+    std::array<float, 2> distanceExponents{20.0f, 4.0f};  // pow2: the exponents at d0 and d1
+    DistanceFrom distanceFrom = DistanceFrom::Edges;
     float targetPixels = 8.0f;  // screen-space mode: pixels per segment
     float maxLevel = 64.0f;
     bool cullBackfaces = false;

@@ -108,6 +108,20 @@ std::vector<Setting> makeSettings() {
                           "%.3g", [](Document& d) -> float& { return d.tess.distanceNear; }));
     t.push_back(numberRow("tess.distanceFar", "Far", "Level 1 at or beyond this distance", "model units", 0.0, 1e9, SettingWidget::Drag,
                           "%.3g", [](Document& d) -> float& { return d.tess.distanceFar; }));
+    t.push_back(choiceRow<DistanceCurve>(
+        "tess.distanceCurve", "Curve",
+        "Distance mode's curve: linear, max level at Near and 0 at Far (the first notes' 64 saturate((d1 - "
+        "d) / (d1 - d0))); pow2, 2^lerp(exponent at Near, exponent at Far, s) (the terrain notes)",
+        {"linear", "pow2"}, {"linear", "pow2 (2^lerp)"}, [](Document& d) -> DistanceCurve& { return d.tess.distanceCurve; }));
+    t.push_back(numberRow("tess.distanceExponents", "Exponents",
+                          "pow2 curve: the level is 2^x at Near and 2^y at Far (the terrain notes: 20, 4)", "", -8.0, 32.0,
+                          SettingWidget::Drag, "%.2f", [](Document& d) -> std::array<float, 2>& { return d.tess.distanceExponents; }));
+    t.push_back(choiceRow<DistanceFrom>(
+        "tess.distanceFrom", "Measured from",
+        "Where distance is measured: each edge from its midpoint (crack-free), everything from the patch centre (the first notes; "
+        "neighbours disagree and cracks open), or edges from midpoints and inner from the centre (the terrain notes)",
+        {"edges", "centre", "edges-inner-centre"}, {"edge midpoints", "patch centre", "edges, inner from centre"},
+        [](Document& d) -> DistanceFrom& { return d.tess.distanceFrom; }));
     Setting pixels =
         numberRow("tess.targetPixels", "Pixels/segment", "Target length of one segment on screen (about 8 px is the lecture advice)", "px",
                   0.0, 1e9, SettingWidget::Slider, "%.1f", [](Document& d) -> float& { return d.tess.targetPixels; });

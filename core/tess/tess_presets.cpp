@@ -114,12 +114,27 @@ Document notesBezierPatch(int version) {
 
 float notesDistanceLevel(float distance, float d0, float d1) { return 64.0f * std::clamp((d1 - distance) / (d1 - d0), 0.0f, 1.0f); }
 
-void applyNotesDistanceFormula(TessSettings& t) {
+void applyNotesDistanceFormula(TessSettings& t, bool fromCentre) {
     t.adaptive = AdaptiveMode::Distance;
     t.distanceNear = 20.0f;
     t.distanceFar = 100.0f;
+    t.distanceCurve = DistanceCurve::Linear;
+    t.distanceFrom = fromCentre ? DistanceFrom::Centre : DistanceFrom::Edges;
     t.maxLevel = 64.0f;
     t.cullFar = true;  // level 0 beyond d1: the patch is culled
+}
+
+void applyNotesTerrainFormula(TessSettings& t) {
+    t.adaptive = AdaptiveMode::Distance;
+    t.distanceNear = 10.0f;
+    t.distanceFar = 200.0f;
+    t.distanceCurve = DistanceCurve::Pow2;
+    t.distanceExponents = {20.0f, 4.0f};
+    t.distanceFrom = DistanceFrom::EdgesInnerCentre;
+    t.spacing = Spacing::FractionalEven;
+    t.maxLevel = 64.0f;
+    t.cullFar = false;  // 2^4 = 16 at the far distance: nothing reaches level 0
+    t.heightDetail = false;
 }
 
 }  // namespace pw

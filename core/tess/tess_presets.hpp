@@ -36,6 +36,14 @@ Document notesBezierPatch(int version = 1);
 // The notes' distance formula, level = 64 * saturate((d1 - d) / (d1 - d0)) with d0 = 20 and d1 =
 // 100, applied to `doc`'s settings (adaptive distance mode). The formula itself, for a distance:
 float notesDistanceLevel(float distance, float d0 = 20.0f, float d1 = 100.0f);
-void applyNotesDistanceFormula(TessSettings& t);
+// The first notes' distance formula: 64 saturate((100 - d) / (100 - 20)), level 0 culling the patch.
+// `fromCentre` (the notes' own): one level per patch from the centre of its control points, so
+// neighbours at different distances disagree on their shared edge and cracks open; otherwise each
+// edge from its midpoint (crack-free, the same formula).
+void applyNotesDistanceFormula(TessSettings& t, bool fromCentre = true);
+// The terrain notes' (Direct3D 12 demo): edges from their midpoints, inner levels from the patch
+// centre, level 2^lerp(20, 4, saturate((d - 10) / (200 - 10))) (clamped to 64 by the tessellator:
+// 64 up to d = 176.25, then down to 16 at 200), fractional_even; the height map moves the vertices only.
+void applyNotesTerrainFormula(TessSettings& t);
 
 }  // namespace pw

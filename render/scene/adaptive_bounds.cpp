@@ -18,6 +18,8 @@ std::vector<uint8_t> adaptiveLevelBounds(const SurfaceScene& s, const TessSettin
     for (const BasisRun& r : s.runs)
         for (uint32_t w = r.first; w < r.first + r.count; ++w) kind[w] = r.basisKind;
     const glm::vec2 viewport(viewportW, viewportH);
+    const glm::vec2 exps(tess.distanceExponents[0], tess.distanceExponents[1]);
+    const bool fromCentre = tess.adaptive == AdaptiveMode::Distance && tess.distanceFrom != DistanceFrom::Edges;
     for (uint32_t w = 0; w < s.windowCount; ++w) {
         const uint32_t* idx = &s.cpuIndices[size_t(w) * 16];
         const int depth = kind[w] == gpu::kBasisBezier ? 0 : 1;  // as the control shader's edgeSlot
@@ -28,8 +30,16 @@ std::vector<uint8_t> adaptiveLevelBounds(const SurfaceScene& s, const TessSettin
             const bool rev = gpu::edgeReversed(pool[0], pool[1], pool[2], pool[3]);
             glm::vec3 p[4];
             for (int k = 0; k < 4; ++k) p[k] = s.cpuPoints[pool[rev ? 3 - k : k]];
-            const float l = gpu::adaptiveEdgeLevel(p[0], p[1], p[2], p[3], uint32_t(tess.adaptive), maxLevel, vm.eye, tess.distanceNear,
-                                                   tess.distanceFar, vm.viewProj, viewport, tess.targetPixels);
+            const float l =
+                gpu::adaptiveEdgeLevel(p[0], p[1], p[2], p[3], uint32_t(tess.adaptive), maxLevel, vm.eye, tess.distanceNear,
+                                       tess.distanceFar, uint32_t(tess.distanceCurve), exps, vm.viewProj, viewport, tess.targetPixels);
+            level = std::max(level, std::clamp(l, 1.0f, maxLevel));
+        }
+        if (fromCentre) {  // the control shader's netCentre: the mean of the 16 control points
+            glm::vec3 c(0.0f);
+            for (int k = 0; k < 16; ++k) c += s.cpuPoints[idx[k]];
+            const float l = gpu::distanceLevel(glm::distance(vm.eye, c / 16.0f), maxLevel, tess.distanceNear, tess.distanceFar,
+                                               uint32_t(tess.distanceCurve), exps);
             level = std::max(level, std::clamp(l, 1.0f, maxLevel));
         }
         level = std::max(level, s.overrideLevel[w]);

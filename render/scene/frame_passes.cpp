@@ -143,6 +143,22 @@ void boundariesPass(Frame& f) {
     ++f.stats.draws;
 }
 
+bool frustumWanted(const Frame& f) { return f.plan.lodVm.has_value(); }
+
+// A debug camera's frustum (the camera that decided the levels and culling), rewritten each frame:
+// no frame reads the old buffer, render() waits for its own submission.
+void frustumPass(Frame& f) {
+    auto& m = f.m;
+    const std::vector<float> v = frustumLineVertices(*f.plan.lodVm, f.plan.frustumDepth);
+    m.frustum = uploadStatic(f.dev, v, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    m.frustumVertexCount = uint32_t(v.size() / 7);
+    vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, f.pipes.colorLines);
+    vkCmdPushConstants(f.cmd, f.pipes.layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(f.push), &f.push);
+    vkCmdBindVertexBuffers(f.cmd, 0, 1, m.frustum.buffer.ptr(), &kZero);
+    vkCmdDraw(f.cmd, m.frustumVertexCount, 1, 0, 0);
+    ++f.stats.draws;
+}
+
 bool controlNetWanted(const Frame& f) { return f.opt.display.showGrid && f.m.scene.pointCount; }
 
 // The control net: its lines, then the points of the shown items.
@@ -179,6 +195,7 @@ constexpr FramePasses::Pass kOverlays[] = {
     {"curvature combs", combsWanted, combsPass},
     {"boundaries", boundariesWanted, boundariesPass},
     {"control net", controlNetWanted, controlNetPass},
+    {"debug camera frustum", frustumWanted, frustumPass},
 };
 
 }  // namespace

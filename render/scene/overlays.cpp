@@ -1,5 +1,8 @@
 #include "render/scene/overlays.hpp"
 
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
 #include <algorithm>
 #include <set>
 
@@ -76,6 +79,39 @@ std::vector<float> groundGridVertices(double step, bool zUp) {
             else
                 vertex(i, -n, c), vertex(i, n, c);
         }
+    return v;
+}
+
+std::vector<float> frustumLineVertices(const ViewMatrices& vm, double depth) {
+    const glm::mat4 inv = glm::inverse(vm.viewProj);
+    const auto unproject = [&](float x, float y, float z) {
+        const glm::vec4 h = inv * glm::vec4(x, y, z, 1.0f);
+        return glm::vec3(h) / h.w;
+    };
+    const glm::vec3 fwd = glm::normalize(vm.forward);
+    std::array<glm::vec3, 4> nearC, farC;
+    const float xs[4] = {-1, 1, 1, -1}, ys[4] = {-1, -1, 1, 1};
+    for (int k = 0; k < 4; ++k) {  // along each corner ray (parallel ones when orthographic) to `depth` in front of the eye
+        nearC[size_t(k)] = unproject(xs[k], ys[k], 0.0f);
+        const glm::vec3 dir = unproject(xs[k], ys[k], 0.5f) - nearC[size_t(k)];
+        const float along = glm::dot(dir, fwd);
+        const float t = along > 1e-20f ? (float(depth) - glm::dot(nearC[size_t(k)] - vm.eye, fwd)) / along : 0.0f;
+        farC[size_t(k)] = nearC[size_t(k)] + dir * t;
+    }
+    std::vector<float> v;
+    const std::array<float, 4> edge{1.0f, 0.55f, 0.1f, 1.0f}, axis{1.0f, 0.85f, 0.3f, 1.0f};
+    auto line = [&](const glm::vec3& a, const glm::vec3& b, const std::array<float, 4>& c) {
+        for (const glm::vec3& p : {a, b}) {
+            v.insert(v.end(), {p.x, p.y, p.z});
+            v.insert(v.end(), c.begin(), c.end());
+        }
+    };
+    for (size_t k = 0; k < 4; ++k) {
+        line(nearC[k], farC[k], edge);
+        line(farC[k], farC[(k + 1) % 4], edge);
+        line(nearC[k], nearC[(k + 1) % 4], edge);
+    }
+    line(vm.eye, vm.eye + fwd * float(depth), axis);
     return v;
 }
 

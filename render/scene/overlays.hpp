@@ -7,6 +7,8 @@
 #include <array>
 #include <vector>
 
+#include "core/model/camera_math.hpp"
+
 #include "core/model/document.hpp"
 #include "render/vk/buffers.hpp"
 
@@ -28,6 +30,11 @@ std::array<float, 4> continuityColor(const Continuity* c);
 // The editor's ground grid: 21 lines each way in the z = 0 plane (y = 0 when y is up), `step`
 // apart, the axes red (x) and green (the other); line-list vertices of position + rgba.
 std::vector<float> groundGridVertices(double step, bool zUp);
+
+// A debug camera's view frustum (RenderOptions::lodCamera) as coloured lines (position + rgba per
+// vertex): the four side edges from the near plane out to `depth` along the view direction, the
+// far rectangle there and, for a perspective camera, the eye's axis to it.
+std::vector<float> frustumLineVertices(const ViewMatrices& vm, double depth);
 
 OverlayScene uploadOverlayScene(Device& dev, const Document& doc);
 

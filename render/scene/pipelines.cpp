@@ -82,6 +82,7 @@ void buildTessFamily(const Targets& t, const SharedStages& sh, uint32_t controlP
                 pd.polygon = VK_POLYGON_MODE_LINE;
                 pd.depthWrite = false;
                 pd.depthBias = true;
+                pd.blend = true;  // a dense wire fades (surface.frag, wireOpacity)
                 out.wire[overlayIndex(s, lv)] = t.build(pd);
             }
             if (!sh.geom) continue;

@@ -154,6 +154,9 @@ Renderer::FramePlan Renderer::prepareFrame(const RenderOptions& opt, VkRect2D ar
     fu.viewProj = vm.viewProj;
     fu.view = vm.view;
     fu.eye = glm::vec4(vm.eye, 1.0f);
+    const ViewMatrices lod = opt.lodCamera ? viewMatrices(*opt.lodCamera, double(ext.width) / double(ext.height)) : vm;
+    fu.lodViewProj = lod.viewProj;
+    fu.lodEye = glm::vec4(lod.eye, opt.lodCamera ? 1.0f : 0.0f);
     const glm::vec3 light(ds.lightDir[0], ds.lightDir[1], ds.lightDir[2]);
     const float lightLen = glm::length(light);
     const glm::vec3 lightUnit = lightLen > 1e-12f && std::isfinite(lightLen) ? light / lightLen : glm::vec3(0.0f, 0.0f, 1.0f);
@@ -176,6 +179,8 @@ Renderer::FramePlan Renderer::prepareFrame(const RenderOptions& opt, VkRect2D ar
     fu.inner = {ts.inner[0], ts.inner[1], maxLevel, ts.targetPixels};
     fu.dist = {ts.distanceNear, ts.distanceFar, float(4.0 / std::max(modelSize_, 1e-9)), 12.0f};
     fu.dist.z = float(std::max(modelSize_, 1e-9) / 4.0);
+    fu.distModes = {uint32_t(ts.distanceCurve), uint32_t(ts.distanceFrom), 0u, 0u};
+    fu.lodDist = {ts.distanceExponents[0], ts.distanceExponents[1], 0.0f, 0.0f};
     fu.modes = {uint32_t(ts.spacing), uint32_t(ts.adaptive),
                 (ts.cullBackfaces ? gpu::kCullBackFaces : 0u) | (ts.cullOffscreen ? gpu::kCullOffscreen : 0u) |
                     (ts.cullFar ? gpu::kCullFar : 0u) | (ts.heightDetail ? 0u : gpu::kKeepHeightLevels),
@@ -188,6 +193,14 @@ Renderer::FramePlan Renderer::prepareFrame(const RenderOptions& opt, VkRect2D ar
     fu.comb = {float(combToothLength(ds, modelSize_)), float(std::clamp(ds.combDensity, 2, 21)), 5.0f, 0.0f};
     std::memcpy(m.frameUbo.mapped, &fu, sizeof(fu));
     plan.vm = vm;
+    if (opt.lodCamera) {  // the frustum out to the far distance in distance mode, else just past the farthest control point
+        plan.lodVm = lod;
+        double reach = opt.lodCamera->distance;
+        for (const glm::vec3& p : m.scene.cpuPoints) reach = std::max(reach, double(glm::dot(p - lod.eye, lod.forward)));
+        plan.frustumDepth = opt.lodFrustumDepth > 0.0               ? opt.lodFrustumDepth
+                            : ts.adaptive == AdaptiveMode::Distance ? double(ts.distanceFar)
+                                                                    : 1.05 * reach;
+    }
     plan.variant = spacingVariant(ts.spacing);
     plan.levels = levelsVariant(ts);
     plan.maxLevel = maxLevel;
@@ -195,7 +208,7 @@ Renderer::FramePlan Renderer::prepareFrame(const RenderOptions& opt, VkRect2D ar
     plan.perDraw = patchesPerDraw(maxSegments(ts, m.scene.overrideMax, maxLevel), plan.budget);
     // (Displaced windows batch by the worst case: the map's detail may raise any edge to the maximum.)
     if (ts.adaptive != AdaptiveMode::None && !m.displaced)
-        plan.levelBounds = adaptiveLevelBounds(m.scene, ts, vm, float(ext.width), float(ext.height), maxLevel);
+        plan.levelBounds = adaptiveLevelBounds(m.scene, ts, lod, float(ext.width), float(ext.height), maxLevel);
     return plan;
 }
 

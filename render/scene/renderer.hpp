@@ -44,6 +44,11 @@ struct RenderOptions {
     // The wireframe overlay's colour: near-black on the dark theme; `--theme light` (slides) uses
     // a mid grey, so a dense wire shades the surface instead of blacking it out.
     std::array<float, 4> wireColor{0.08f, 0.09f, 0.12f, 1.0f};
+    // A debug camera: when set, adaptive levels and culling are decided from this camera while the
+    // picture is drawn from `camera`; the patches it culls are drawn greyed in place and its view
+    // frustum is drawn (out to `lodFrustumDepth`, or the far distance, or past the model).
+    std::optional<Camera> lodCamera;
+    double lodFrustumDepth = 0.0;
 };
 
 // The pane rectangle `opt` draws into, clamped to a target of `extent` (the whole target when

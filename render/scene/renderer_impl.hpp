@@ -4,6 +4,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/model/camera_math.hpp"
@@ -27,6 +28,8 @@ struct Renderer::Impl {
     Buffer frameUbo, counters;
     Buffer ground;  // ground grid vertices (position + rgba) for groundStep / groundZUp
     uint32_t groundVertexCount = 0;
+    Buffer frustum;  // the debug camera's frustum lines of the last frame that drew them (rewritten each such frame)
+    uint32_t frustumVertexCount = 0;
     double groundStep = 0.0;
     bool groundZUp = true;
     OwnedDescriptorPool descPool;
@@ -62,8 +65,10 @@ struct Renderer::FramePlan {
     int variant = 0;  // spacing variant
     LevelsVariant levels = LevelsVariant::Fixed;
     float maxLevel = 64.0f;
-    uint32_t budget = 0, perDraw = 1;  // evaluation vertices per draw (0: no limit), windows per draw
-    std::vector<uint8_t> levelBounds;  // adaptive: batch by this frame's levels, not by the worst case
+    uint32_t budget = 0, perDraw = 1;   // evaluation vertices per draw (0: no limit), windows per draw
+    std::vector<uint8_t> levelBounds;   // adaptive: batch by this frame's levels, not by the worst case
+    std::optional<ViewMatrices> lodVm;  // a debug camera's (RenderOptions::lodCamera), whose frustum is drawn
+    double frustumDepth = 0.0;
     const std::vector<uint8_t>* bounds() const { return levelBounds.empty() ? nullptr : &levelBounds; }
 };
 

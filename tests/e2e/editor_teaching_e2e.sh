@@ -253,6 +253,25 @@ wait_for "t['stageBarRows'] == 4 and t['tcsPatches'] == 32 and t['tesInvocations
 import -window root "$WORK/stage_bars.png"
 click_item teach.stageBars
 wait_for "t['stageBarRows'] == 0"
+# Debug camera: the view frozen as the camera that decides culling; zooming far in then culls
+# nothing more (the frozen view sees every patch), the same triangles are drawn; off, the zoomed
+# view decides again and culls the patches off its screen.
+wait_for "t['patchesCulled'] == 0"
+TRIS=$(trace "t['triangles']")
+click_item teach.debugCamera
+wait_for "t['debugCamera']"
+xdotool mousemove --sync 640 380
+for _ in 1 2 3 4 5 6 7 8 9 10; do xdotool click 4; sleep 0.1; done
+sleep 1
+wait_for "t['patchesCulled'] == 0 and t['triangles'] == $TRIS"
+import -window root "$WORK/debug_camera.png"
+click_item teach.debugCamera
+wait_for "not t['debugCamera'] and t['patchesCulled'] > 0"
+say "debug camera: the frozen view culls nothing, the zoomed view culls $(trace "t['patchesCulled']") patches"
+xdotool mousemove --sync 640 380
+for _ in 1 2 3 4 5 6 7 8 9 10; do xdotool click 5; sleep 0.1; done
+wait_for "t['patchesCulled'] == 0"
+check_validation
 click_item teach.domain
 wait_for "len(t['domain']) == 1"
 check_validation

@@ -260,6 +260,7 @@ render::RenderOptions Editor::viewOptions() const {
     o.hoveredPoint = hovered_;
     o.selectedPoint = sel_.points.empty() ? -1 : int(sel_.points.front());
     if (showGround_) o.groundGridStep = niceGridStep(modelSize(doc_));
+    o.lodCamera = teaching_.debugCamera;  // levels and culling from the frozen camera, drawn from this one
     // The curvature graph across the selected patch's highlighted edge when it is joined, or, with
     // points selected (dragged), across the first join next to them.
     if (doc_.display.showCombs && sel_.patch >= 0 && size_t(sel_.patch) < doc_.patches.size()) {

@@ -142,6 +142,7 @@ private:
     bool keyPressed(int key, int mods) const override { return window_.keyPressed(key, mods); }
     float uiScale() const override { return window_.uiScale(); }
     void frameBox(const Bounds& box) override;
+    const Camera& viewCamera() const override { return cam_; }
     const PanelLayout& layout() const override { return sidePanels_.layout(); }
     const FrameReport& frameReport() const override { return report_; }
     const ContinuityWatch& continuityWatch() const override { return continuity_; }

@@ -56,6 +56,8 @@ void TestTrace::write(const EditorSnapshot& e) {
     j["presentationOverlay"] = {teaching.overlaySize[0], teaching.overlaySize[1], teaching.overlayTextRight};
     j["presentationLines"] = teaching.overlayLines;
     j["stageBarRows"] = teaching.stageBarRows;
+    j["debugCamera"] = teaching.debugCamera.has_value();
+    j["patchesCulled"] = stats.patchesCulled;
     j["vsInvocations"] = stats.vsInvocations;
     j["tcsPatches"] = stats.tcsPatches;
     j["tesInvocations"] = stats.tesInvocations;

@@ -62,6 +62,7 @@ public:
     virtual bool keyPressed(int key, int mods) const = 0;  // queued this frame
     virtual float uiScale() const = 0;
     virtual void frameBox(const Bounds& box) = 0;  // fit the view to the box
+    virtual const Camera& viewCamera() const = 0;  // the 3D view's camera now
     virtual const PanelLayout& layout() const = 0;
     virtual const FrameReport& frameReport() const = 0;
     virtual const ContinuityWatch& continuityWatch() const = 0;  // the joins' live continuity, this frame's

@@ -171,15 +171,33 @@ void Teaching::drawControls(PanelContext& ctx) {
         if (ImGui::Selectable("Bézier patch of the notes, second version")) ctx.runLine("open-notes-patch 2");
         traceItem("preset.notesPatch2");
         tip("The second notes' 16 control points (raised higher) at level 15, integer partitioning (replaces the document)");
-        if (ImGui::Selectable("Distance formula of the notes")) {  // adaptivity is the document's: a visible undo step
-            endLesson(ctx, false);
-            applyNotesDistanceFormula(ts);
-            ctx.settingsChanged();
-            ctx.session().commit("Distance formula");
-            ctx.host().status("The notes' distance formula is now the document's adaptive tessellation (Ctrl+Z undoes it)");
-        }
-        tip("Sets the document's adaptive tessellation: level = 64 * saturate((d1 - d) / (d1 - d0)) per edge, d0 = 20, d1 = 100 (one undo "
-            "step)");
+        // The notes' distance formulas: adaptivity is the document's, so each is a visible undo step.
+        const auto formula = [&](const char* label, const char* id, auto apply, const char* said, const char* help) {
+            if (ImGui::Selectable(label)) {
+                endLesson(ctx, false);
+                apply(ts);
+                ctx.settingsChanged();
+                ctx.session().commit(label);
+                ctx.host().status(std::string(said) + " is now the document's adaptive tessellation (Ctrl+Z undoes it)");
+            }
+            traceItem(id);
+            tip(help);
+        };
+        formula(
+            "Distance formula of the notes", "preset.notesDistance", [](TessSettings& t) { applyNotesDistanceFormula(t, true); },
+            "The notes' distance formula",
+            "level = 64 * saturate((d1 - d) / (d1 - d0)) from each patch's centre, d0 = 20, d1 = 100, culled beyond: as the notes "
+            "write it, so neighbours at different distances crack (one undo step)");
+        formula(
+            "Distance formula of the notes, per edge", "preset.notesDistanceEdges",
+            [](TessSettings& t) { applyNotesDistanceFormula(t, false); }, "The notes' formula per edge",
+            "The same formula measured at each edge's midpoint: both patches on an edge agree, no crack (one undo step)");
+        formula(
+            "Terrain formula of the notes", "preset.notesTerrain", [](TessSettings& t) { applyNotesTerrainFormula(t); },
+            "The terrain notes' formula",
+            "level = 2^lerp(20, 4, saturate((d - 10) / (200 - 10))), edges from their midpoints and the inside from the centre, "
+            "fractional_even; the height map only moves the vertices. data/terrain_notes.patchwork is the notes' terrain with it "
+            "(one undo step)");
         ImGui::EndCombo();
     }
     traceItem("teach.preset");
@@ -225,6 +243,16 @@ void Teaching::drawControls(PanelContext& ctx) {
     traceItem("teach.stageBars");
     tip("Each pane's per-stage counters from the GPU: vertex shader invocations, control shader patches, evaluation shader "
         "invocations, triangles (log-scaled bars)");
+    ImGui::SameLine();
+    bool debug = debugCamera.has_value();
+    if (ImGui::Checkbox("Debug camera", &debug)) {
+        debugCamera = debug ? std::optional<Camera>(ctx.viewCamera()) : std::nullopt;
+        if (debug) ctx.host().status("Debug camera: this view decides levels and culling; orbit away");
+        ctx.wake();
+    }
+    traceItem("teach.debugCamera");
+    tip("Freeze this view as the camera that decides the levels and culling, then move the view away: the patches it culls "
+        "are drawn greyed (hatched) in place and its frustum in orange. Off: the view decides again");
     // The Bézier math of one patch at (u, v), on its control net.
     if (ImGui::Checkbox("Bezier math", &math.on)) ctx.wake();
     traceItem("teach.math");

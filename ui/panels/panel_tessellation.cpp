@@ -8,6 +8,23 @@
 
 namespace pw::ui {
 
+namespace {
+
+// What measuring the distance there means for the picture (the lecture's point about cracks).
+const char* distanceFromExplanation(DistanceFrom f) {
+    switch (f) {
+        case DistanceFrom::Centre:
+            return "One level per patch, from its centre (the notes): neighbours disagree on their shared edge, so cracks open.";
+        case DistanceFrom::EdgesInnerCentre:
+            return "Edges from their midpoints (neighbours agree, no crack), the inside from the centre (the terrain notes).";
+        case DistanceFrom::Edges:
+            break;
+    }
+    return "Each edge from its midpoint: neighbours agree, no crack (the notes' centre differs by up to a segment).";
+}
+
+}  // namespace
+
 void drawTessellationPanel(PanelContext& ctx) {
     if (!ImGui::CollapsingHeader("Tessellation", ImGuiTreeNodeFlags_DefaultOpen)) return;
     const TessSettings& ts = ctx.session().doc.tess;
@@ -23,6 +40,12 @@ void drawTessellationPanel(PanelContext& ctx) {
     if (ts.adaptive == AdaptiveMode::Distance) {
         settingRow(ctx, "tess.distanceNear");
         settingRow(ctx, "tess.distanceFar");
+        settingRow(ctx, "tess.distanceCurve");
+        if (ts.distanceCurve == DistanceCurve::Pow2) settingRow(ctx, "tess.distanceExponents");
+        settingRow(ctx, "tess.distanceFrom");
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("%s", distanceFromExplanation(ts.distanceFrom));
+        ImGui::PopStyleColor();
         settingRow(ctx, "tess.cullFar");  // only where it applies
     }
     if (ts.adaptive == AdaptiveMode::ScreenSpace) settingRow(ctx, "tess.targetPixels");

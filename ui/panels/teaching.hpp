@@ -11,6 +11,7 @@
 #include <array>
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -65,7 +66,10 @@ public:
     std::array<float, 4> paneLevel{0, 0, 0, 0};  // a pane's own uniform level; 0: the document's
     bool splitView = false;                      // the 3D view split into the same panes, one camera
     bool stageBars = false;                      // per-stage counters beside each pane
-    int stageBarRows = 0;                        // rows drawn last frame (the test trace)
+    // The debug camera: the view's camera frozen when it was turned on keeps deciding levels and
+    // culling while the view moves away; the patches it culls are drawn greyed, its frustum drawn.
+    std::optional<Camera> debugCamera;
+    int stageBarRows = 0;  // rows drawn last frame (the test trace)
     int activePane = 0;
     std::vector<render::PaneResult> viewPanes;           // what each split pane drew last frame
     std::vector<render::DomainViewOptions> domainPanes;  // this frame's panes, framebuffer pixels
