@@ -18,8 +18,10 @@ void registerPresetsCommand(CLI::App& app, Action& run) {
                           << " vertices " << std::setw(4) << c.primitives << " primitives  " << p.note << "\n";
             }
             std::cout << "Model presets in the editor: the notes' Bézier patch (16 control points; version 1 at level 25, version 2 "
-                         "at 15; `render --notes-patch 1|2`, `open-notes-patch 1|2`) and the notes' distance formula "
-                         "64*saturate((d1-d)/(d1-d0)), d0 = 20, d1 = 100.\n";
+                         "at 15; `render --notes-patch 1|2`, `open-notes-patch 1|2`), the notes' distance formula "
+                         "64*saturate((d1-d)/(d1-d0)), d0 = 20, d1 = 100, from the patch centre (`--adaptive notes`) or per edge "
+                         "(`notes-edges`), and the terrain notes' 2^lerp(20, 4, s) over 10..200 (`notes-terrain`, "
+                         "data/terrain_notes.patchwork). The rounding table: `patchwork rounding`.\n";
             return 0;
         };
     });

@@ -33,6 +33,7 @@ void registerConvertCommand(CLI::App& app, Action& run);
 void registerRenderCommand(CLI::App& app, Action& run);
 void registerBenchCommand(CLI::App& app, Action& run);
 void registerPresetsCommand(CLI::App& app, Action& run);
+void registerRoundingCommand(CLI::App& app, Action& run);
 void registerSweepCommand(CLI::App& app, Action& run);
 void registerShadersCommand(CLI::App& app, Action& run);
 void registerEditCommand(CLI::App& app, Action& run);

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
     pw::app::registerRenderCommand(app, run);
     pw::app::registerBenchCommand(app, run);
     pw::app::registerPresetsCommand(app, run);
+    pw::app::registerRoundingCommand(app, run);
     pw::app::registerSweepCommand(app, run);
     pw::app::registerShadersCommand(app, run);
     pw::app::registerEditCommand(app, run);

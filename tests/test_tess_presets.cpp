@@ -2,13 +2,16 @@
 // distance formula.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <set>
 #include <stdexcept>
 
-#include <set>
-
 #include "core/eval/patch_eval.hpp"
+#include "core/gpu/patch_math.h"
 #include "core/model/camera_math.hpp"
+#include "core/tess/tess_domain.hpp"
 #include "core/tess/tess_presets.hpp"
+#include "support.hpp"
 
 using namespace pw;
 
@@ -56,6 +59,66 @@ TEST(TessPresets, NotesBezierPatchAndDistanceFormula) {
     EXPECT_EQ(t.distanceNear, 20.0f);
     EXPECT_EQ(t.distanceFar, 100.0f);
     EXPECT_TRUE(t.cullFar);  // level 0 beyond d1 culls, as the notes say
+}
+
+// The terrain notes' formula: 2^lerp(20, 4, saturate((d - 10) / 190)), the tessellator clamping it
+// to 64 up to d = 10 + 190 * 14 / 16 = 176.25, 16 at 200 and beyond; edges from their midpoints,
+// inner from the centre, fractional_even; the first notes' formula from the centre or per edge.
+TEST(TessPresets, TerrainNotesFormula) {
+    TessSettings t;
+    applyNotesTerrainFormula(t);
+    EXPECT_EQ(t.distanceCurve, DistanceCurve::Pow2);
+    EXPECT_EQ(t.distanceFrom, DistanceFrom::EdgesInnerCentre);
+    EXPECT_EQ(t.spacing, Spacing::FractionalEven);
+    EXPECT_FALSE(t.cullFar);
+    EXPECT_FALSE(t.heightDetail);
+    const auto level = [&](float d) {
+        return gpu::distanceLevel(d, t.maxLevel, t.distanceNear, t.distanceFar, uint32_t(t.distanceCurve),
+                                  glm::vec2(t.distanceExponents[0], t.distanceExponents[1]));
+    };
+    EXPECT_FLOAT_EQ(level(10.0f), std::pow(2.0f, 20.0f));
+    EXPECT_FLOAT_EQ(level(176.25f), 64.0f);
+    EXPECT_FLOAT_EQ(level(200.0f), 16.0f);
+    EXPECT_FLOAT_EQ(level(500.0f), 16.0f);
+    EXPECT_NEAR(level(105.0f), std::pow(2.0f, 12.0f), 1e-2f);
+    applyNotesDistanceFormula(t);
+    EXPECT_EQ(t.distanceCurve, DistanceCurve::Linear);
+    EXPECT_EQ(t.distanceFrom, DistanceFrom::Centre);
+    applyNotesDistanceFormula(t, false);
+    EXPECT_EQ(t.distanceFrom, DistanceFrom::Edges);
+}
+
+// The notes' rounding table (second notes, "partitioning"): integer 3.0→3, 3.25→4, 3.75→4, 4.25→5,
+// 4.75→5; fractional_odd 3, 5, 5, 5, 5, 5 sliding by (f − 3) / (5 − 3) · 100; fractional_even 4, 4,
+// 4, 6, 6, 6 by (f − 4) / (6 − 4) · 100; pow2 4, 4, 4, 8, 8, 8. `patchwork rounding` prints it and
+// draws it as a slide; bad levels are exit 2 with nothing written.
+TEST(TessPresets, RoundingTableIsTheNotes) {
+    const std::vector<RoundingRow> rows = roundingTable(notesRoundingLevels());
+    ASSERT_EQ(rows.size(), 4u);
+    const std::vector<std::vector<int>> notes{{3, 4, 4, 5, 5, 5}, {3, 5, 5, 5, 5, 5}, {4, 4, 4, 6, 6, 6}, {4, 4, 4, 8, 8, 8}};
+    for (size_t r = 0; r < 4; ++r)
+        for (size_t c = 0; c < 6; ++c) EXPECT_EQ(rows[r].cells[c].segments, notes[r][c]) << spacingName(rows[r].spacing) << " " << c;
+    const float levels[6] = {3.0f, 3.25f, 3.75f, 4.25f, 4.75f, 5.0f};
+    for (size_t c = 0; c < 6; ++c) {
+        const float f = levels[c];
+        const float odd = (f - 3.0f) / (5.0f - 3.0f) * 100.0f, even = f < 4.0f ? (f - 2.0f) * 50.0f : (f - 4.0f) / (6.0f - 4.0f) * 100.0f;
+        EXPECT_FLOAT_EQ(rows[1].cells[c].slide, odd > 0.0f && odd < 100.0f ? odd : -1.0f) << f;
+        EXPECT_FLOAT_EQ(rows[2].cells[c].slide, even > 0.0f && even < 100.0f ? even : -1.0f) << f;
+        EXPECT_LT(rows[0].cells[c].slide, 0.0f);
+        EXPECT_LT(rows[3].cells[c].slide, 0.0f);
+    }
+    const auto dir = test::freshTempDir("rounding");
+    const test::RunResult r = test::runCommand(test::patchworkBinary().string() + " rounding -o " + (dir / "t.svg").string() + " 2>&1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("fractional_odd [1, 3, ..., 63]    3          5 (12.5 %)"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("pow2 [1, 2, 4, ..., 64]           4          4            4            8"), std::string::npos) << r.output;
+    EXPECT_GT(std::filesystem::file_size(dir / "t.svg"), 1000u);
+    for (const std::string bad : {"--levels 0.5", "--levels 3,x", "--levels 65", "--size 0x10"}) {
+        const test::RunResult b =
+            test::runCommand(test::patchworkBinary().string() + " rounding " + bad + " -o " + (dir / "x.png").string() + " 2>&1");
+        EXPECT_EQ(b.exitCode, 2) << bad << ": " << b.output;
+        EXPECT_FALSE(std::filesystem::exists(dir / "x.png")) << bad;
+    }
 }
 
 // The second notes' version of the patch: its raised points and level 15 under integer

@@ -92,6 +92,30 @@ uint64_t triangleInteriorVertices(int n) {
 
 }  // namespace
 
+float slidePercent(float level, Spacing spacing, int seg) {
+    const Spacing ts = tessellatorSpacing(spacing);
+    if (spacing == Spacing::Pow2 || ts == Spacing::Equal || seg < 2) return -1.0f;
+    const float f = std::max(level, ts == Spacing::FractionalEven ? 2.0f : 1.0f);
+    const float pct = std::clamp((f - float(seg - 2)) * 50.0f, 0.0f, 100.0f);
+    return pct >= 100.0f || pct <= 0.0f ? -1.0f : pct;
+}
+
+std::vector<RoundingRow> roundingTable(const std::vector<float>& levels, float maxLevel) {
+    std::vector<RoundingRow> rows;
+    for (Spacing s : {Spacing::Equal, Spacing::FractionalOdd, Spacing::FractionalEven, Spacing::Pow2}) {
+        RoundingRow row{s, {}};
+        for (float l : levels) {
+            const float cs = controlShaderLevel(l, s);
+            const int seg = segmentCount(cs, tessellatorSpacing(s), maxLevel);
+            row.cells.push_back({l, seg, slidePercent(cs, s, seg)});
+        }
+        rows.push_back(std::move(row));
+    }
+    return rows;
+}
+
+std::vector<float> notesRoundingLevels() { return {3.0f, 3.25f, 3.75f, 4.25f, 4.75f, 5.0f}; }
+
 int segmentCount(float level, Spacing s, float maxLevel) {
     if (culls(level)) return 0;
     return roundClamped(clampLevel(level, s, maxLevel), s, false);

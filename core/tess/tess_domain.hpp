@@ -56,6 +56,28 @@ Spacing tessellatorSpacing(Spacing s);
 // maxTessellationGenerationLevel.
 int segmentCount(float level, Spacing tessellatorSpacing, float maxLevel = 64.0f);
 
+// How far the two short segments of a fractional partitioning have grown, in percent of a full
+// segment, for an edge of `level` (the control shader's) cut into `seg` segments: the notes'
+// (f - 3) / (5 - 3) * 100 for a level f between 3 and 5 under fractional_odd, (f - 4) / (6 - 4) * 100
+// between 4 and 6 under fractional_even. Negative where nothing slides: equal and pow2 spacing,
+// fewer than two segments, or a level the partitioning meets exactly (all segments full, 0 or 100).
+float slidePercent(float level, Spacing spacing, int seg);
+
+// The notes' rounding table: what each partitioning (equal, fractional_odd, fractional_even, pow2)
+// makes of each requested level: the segments of one edge and, for the fractional ones, the slide.
+struct RoundingCell {
+    float level = 0.0f;
+    int segments = 0;
+    float slide = -1.0f;  // slidePercent, negative: none
+};
+struct RoundingRow {
+    Spacing spacing = Spacing::Equal;
+    std::vector<RoundingCell> cells;
+};
+std::vector<RoundingRow> roundingTable(const std::vector<float>& levels, float maxLevel = 64.0f);
+// The levels the notes' table lists: 3.0, 3.25, 3.75, 4.25, 4.75 and 5.
+std::vector<float> notesRoundingLevels();
+
 struct DomainCounts {
     bool culled = false;      // an outer level <= 0 or NaN: the patch is discarded
     uint64_t vertices = 0;    // distinct domain points = evaluation shader invocations

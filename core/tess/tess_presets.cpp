@@ -1,5 +1,7 @@
 #include "core/tess/tess_presets.hpp"
 
+#include "core/gpu/patch_math.h"
+
 #include <stdexcept>
 
 #include <algorithm>
@@ -112,7 +114,9 @@ Document notesBezierPatch(int version) {
     return d;
 }
 
-float notesDistanceLevel(float distance, float d0, float d1) { return 64.0f * std::clamp((d1 - distance) / (d1 - d0), 0.0f, 1.0f); }
+float notesDistanceLevel(float distance, float d0, float d1) {
+    return gpu::distanceLevel(distance, 64.0f, d0, d1, gpu::kCurveLinear, glm::vec2(0.0f));
+}
 
 void applyNotesDistanceFormula(TessSettings& t, bool fromCentre) {
     t.adaptive = AdaptiveMode::Distance;

@@ -48,10 +48,7 @@ std::string edgeText(float level, Spacing spacing, bool integerSpacing, float ma
 // (f − 3) / (5 − 3) for a level between 3 and 5 under fractional_odd); empty where they are full
 // length or there are none (equal, pow2, whole levels of the partitioning's parity).
 std::string slideText(float level, Spacing spacing, int seg) {
-    const Spacing ts = tessellatorSpacing(spacing);
-    if (spacing == Spacing::Pow2 || ts == Spacing::Equal || seg < 2) return {};
-    const float f = std::max(level, ts == Spacing::FractionalEven ? 2.0f : 1.0f);
-    const float pct = std::clamp((f - float(seg - 2)) * 50.0f, 0.0f, 100.0f);
+    const float pct = slidePercent(level, spacing, seg);
     if (pct >= 99.5f || pct < 0.5f) return {};
     return std::to_string(int(std::lround(pct))) + " %";
 }

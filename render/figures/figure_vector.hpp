@@ -12,14 +12,10 @@
 #include <string>
 #include <vector>
 
+#include "render/figures/cairo_canvas.hpp"
 #include "render/figures/domain_figure.hpp"
 
 namespace pw::render {
-
-enum class VectorFormat { Svg, Pdf };
-
-// SVG for a name ending in .svg, PDF for .pdf (any case); nothing otherwise.
-std::optional<VectorFormat> vectorFormatFor(const std::string& path);
 
 // What one pane of a figure drawn from patterns shows: the primitives a tessellator made
 // (DomainView::capture or a capture file), the vertices and primitives for the caption
