@@ -150,7 +150,12 @@ std::array<unsigned char, 4> mathColor(MathDiagram::Role role) {
     return {255, 255, 255, 255};
 }
 
-float mathStrokeWidth(MathDiagram::Role role) {
+namespace {
+
+constexpr float kMathBaseTextPixels = 13.0f;
+
+// Stroke width for 13-pixel text.
+float baseStrokeWidth(MathDiagram::Role role) {
     using Role = MathDiagram::Role;
     switch (role) {
         case Role::Net:
@@ -169,5 +174,10 @@ float mathStrokeWidth(MathDiagram::Role role) {
             return 1.5f;
     }
 }
+
+}  // namespace
+
+float mathStrokeWidth(MathDiagram::Role role, float textPixels) { return baseStrokeWidth(role) * textPixels / kMathBaseTextPixels; }
+float mathDotRadius(float textPixels) { return 3.0f * textPixels / kMathBaseTextPixels; }
 
 }  // namespace pw

@@ -57,6 +57,9 @@ struct MathDiagram {
 // keep their ratio, the longer one that long).
 MathDiagram bezierMathDiagram(const Net16& net, const BezierMath& m);
 std::array<unsigned char, 4> mathColor(MathDiagram::Role role);  // RGBA
-float mathStrokeWidth(MathDiagram::Role role);                   // pixels at 1x
+// Stroke width and control-point dot radius in pixels beside labels `textPixels` high (set for
+// 13-pixel text, the interface font's base size, and grown with the text).
+float mathStrokeWidth(MathDiagram::Role role, float textPixels);
+float mathDotRadius(float textPixels);
 
 }  // namespace pw

@@ -37,10 +37,10 @@ void drawMathDiagram(PixelImage image, const MathDiagram& d, const Camera& cam, 
         if (!s) return std::nullopt;
         return *s + glm::dvec2(rect[0], rect[1]);
     };
-    const float scale = textPixels / 13.0f, dot = 3.0f * scale;
+    const float dot = mathDotRadius(textPixels);
     for (const MathDiagram::Stroke& s : d.strokes) {
         const auto a = proj(s.a), b = proj(s.b);
-        if (a && b) strokeSegment(image, *a, *b, mathStrokeWidth(s.role) * scale, mathColor(s.role));
+        if (a && b) strokeSegment(image, *a, *b, mathStrokeWidth(s.role, textPixels), mathColor(s.role));
     }
     for (const MathDiagram::Dot& o : d.dots)
         if (const auto c = proj(o.p)) strokeSegment(image, *c, *c, 2.0f * dot * float(o.radius), mathColor(o.role));

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,22 @@ struct StageCount {
 std::vector<StageCount> stageCounts(const FrameStats& s);
 // The bar colour of stage `i` (RGBA): the editor's bars and the figures' alike.
 std::array<uint8_t, 4> stageColor(size_t i);
+
+// Where the bars go, for the figures' raster and the editor's ImGui alike: a backdrop box, and per
+// stage its name and its number (each anchored left, centred on `textY`) and its bar.
+struct StageBarsLayout {
+    std::array<float, 4> box{};  // x, y, width, height
+    struct Row {
+        float labelX = 0, numberX = 0, textY = 0;
+        std::array<float, 4> bar{};  // x0, y0, x1, y1
+        std::string number;          // "9248 invocations"
+    };
+    std::vector<Row> rows;
+};
+// The layout for text `textPixels` high whose widths `width` measures, in the bottom-right corner
+// of `rect` (x, y, width, height), or its top-right one with `atTop`.
+StageBarsLayout layoutStageBars(const std::vector<StageCount>& counts, float textPixels,
+                                const std::function<float(const std::string&)>& width, const std::array<float, 4>& rect, bool atTop);
 
 // The bars in the bottom-right corner of `rect` (the panes' captions are at the top) (x, y, width, height) of an RGBA8 image.
 void drawStageBars(PixelImage image, const std::array<float, 4>& rect, const std::vector<StageCount>& counts, float textPixels,

@@ -49,7 +49,7 @@ void Editor::drawMathOverlay() {
         lines.insert(lines.end(), d.legend.begin(), d.legend.end());
         roles = d.legendRoles;
         ImDrawList* dl = ImGui::GetBackgroundDrawList();
-        const float dot = 3.0f * px / 13.0f;
+        const float dot = mathDotRadius(px);
         for (const auto& r : teaching_.viewPaneRects(sidePanels_.layout())) {
             const int W = std::max(int(r[2]), 1), H = std::max(int(r[3]), 1);
             const ViewMatrices vm = viewMatrices(cam_, double(W) / H);
@@ -61,7 +61,7 @@ void Editor::drawMathOverlay() {
             dl->PushClipRect(ImVec2(r[0], r[1]), ImVec2(r[0] + r[2], r[1] + r[3]), true);
             for (const MathDiagram::Stroke& s : d.strokes) {
                 const auto a = proj(s.a), b = proj(s.b);
-                if (a && b) dl->AddLine(*a, *b, colourOf(s.role), mathStrokeWidth(s.role) * px / 13.0f);
+                if (a && b) dl->AddLine(*a, *b, colourOf(s.role), mathStrokeWidth(s.role, px));
             }
             for (const MathDiagram::Dot& o : d.dots) {
                 const auto c = proj(o.p);

@@ -87,26 +87,17 @@ void Teaching::drawStageBars(const PanelLayout& layout, const render::FrameStats
         if (counts.empty()) continue;
         // Right of the panes' left edge, clear of the right panel when it is there.
         const float right = viewSplit() || presentation ? rects[i][0] + rects[i][2] : ImGui::GetIO().DisplaySize.x - layout.right;
-        const float pad = px * 0.5f, row = px * 1.45f, barW = px * 7.0f;
-        float labelW = 0.0f, numberW = 0.0f;
-        std::vector<std::string> numbers;
-        for (const render::StageCount& c : counts) {
-            numbers.push_back(std::to_string(c.count) + " " + c.unit);
-            labelW = std::max(labelW, font->CalcTextSizeA(px, FLT_MAX, 0.0f, c.stage.c_str()).x);
-            numberW = std::max(numberW, font->CalcTextSizeA(px, FLT_MAX, 0.0f, numbers.back().c_str()).x);
-        }
-        const float w = pad * 4.0f + labelW + barW + numberW, h = pad * 2.0f + row * float(counts.size());
         // Bottom right, clear of the captions at the top; presenting, top right (the captions are at the bottom).
-        const float top = presentation ? rects[i][1] + pad : rects[i][1] + rects[i][3] - h - pad;
-        const ImVec2 o(right - w - pad, top);
-        dl->AddRectFilled(o, ImVec2(o.x + w, o.y + h), IM_COL32(0, 0, 0, 170), 4.0f);
+        const render::StageBarsLayout l = render::layoutStageBars(
+            counts, px, [&](const std::string& t) { return font->CalcTextSizeA(px, FLT_MAX, 0.0f, t.c_str()).x; },
+            {rects[i][0], rects[i][1], right - rects[i][0], rects[i][3]}, presentation);
+        dl->AddRectFilled(ImVec2(l.box[0], l.box[1]), ImVec2(l.box[0] + l.box[2], l.box[1] + l.box[3]), IM_COL32(0, 0, 0, 170), 4.0f);
         for (size_t k = 0; k < counts.size(); ++k) {
-            const float y = o.y + pad + row * float(k), ty = y + (row - px) * 0.5f;
-            dl->AddText(font, px, ImVec2(o.x + pad, ty), IM_COL32(235, 235, 235, 255), counts[k].stage.c_str());
-            const float bx = o.x + pad * 2.0f + labelW;
-            dl->AddRectFilled(ImVec2(bx, y + row * 0.2f), ImVec2(bx + std::max(2.0f, barW * counts[k].bar), y + row * 0.8f),
-                              IM_COL32(render::stageColor(k)[0], render::stageColor(k)[1], render::stageColor(k)[2], 255));
-            dl->AddText(font, px, ImVec2(bx + barW + pad, ty), IM_COL32(235, 235, 235, 255), numbers[k].c_str());
+            const render::StageBarsLayout::Row& r = l.rows[k];
+            const auto c = render::stageColor(k);
+            dl->AddText(font, px, ImVec2(r.labelX, r.textY - 0.5f * px), IM_COL32(235, 235, 235, 255), counts[k].stage.c_str());
+            dl->AddRectFilled(ImVec2(r.bar[0], r.bar[1]), ImVec2(r.bar[2], r.bar[3]), IM_COL32(c[0], c[1], c[2], 255));
+            dl->AddText(font, px, ImVec2(r.numberX, r.textY - 0.5f * px), IM_COL32(235, 235, 235, 255), r.number.c_str());
             ++stageBarRows;
         }
     }
