@@ -94,13 +94,26 @@ TEST_F(RenderSeams, ScreenSpaceAdaptiveGridHasNoCracks) {
     }
 }
 
-TEST_F(RenderSeams, DistanceAdaptiveGridHasNoCracks) {
-    const int rows = 6, cols = 6;
+// A 6 x 6 grid seen from above, tilted 50°: the near patches nearer the eye than the far ones;
+// single sample, so a crack shows as a background pixel.
+struct TiltedGrid {
+    static constexpr int rows = 6, cols = 6;
     const Document doc = makePatchGrid(rows, cols);
-    Offscreen off(640, 480, false);
-    off.setDocument(doc);
-    render::RenderOptions o = plainOptions(doc, 16, 640.0 / 480.0, "top");
-    o.camera.pitchDeg = 50;
+    Offscreen off{640, 480, false};
+    render::RenderOptions o;
+    TiltedGrid() {
+        off.setDocument(doc);
+        o = plainOptions(doc, 16, 640.0 / 480.0, "top");
+        o.camera.pitchDeg = 50;
+    }
+};
+
+TEST_F(RenderSeams, DistanceAdaptiveGridHasNoCracks) {
+    TiltedGrid g;
+    const Document& doc = g.doc;
+    Offscreen& off = g.off;
+    render::RenderOptions& o = g.o;
+    const int rows = TiltedGrid::rows, cols = TiltedGrid::cols;
     o.tess.adaptive = AdaptiveMode::Distance;
     o.tess.distanceNear = float(o.camera.distance * 0.7);
     o.tess.distanceFar = float(o.camera.distance * 1.5);
@@ -145,12 +158,11 @@ TEST_F(RenderSeams, MixedPerPatchLevelsHaveNoCracks) {
 // 2^lerp(e0, e1, s) under fractional_even. The GPU's triangle count is the count model's sum over
 // the patches of the levels computed here, patch by patch; the crack-free per-edge rule differs.
 TEST_F(RenderSeams, DistanceFromTheCentreOrTheEdgesIsTheNotesFormula) {
-    const int rows = 6, cols = 6;
-    const Document doc = makePatchGrid(rows, cols);
-    Offscreen off(640, 480, false);
-    off.setDocument(doc);
-    render::RenderOptions o = plainOptions(doc, 16, 640.0 / 480.0, "top");
-    o.camera.pitchDeg = 50;
+    TiltedGrid g;
+    const Document& doc = g.doc;
+    Offscreen& off = g.off;
+    const render::RenderOptions& o = g.o;
+    const int rows = TiltedGrid::rows, cols = TiltedGrid::cols;
     const glm::vec3 eye = viewMatrices(o.camera, 640.0 / 480.0).eye;
     const auto net = [&](size_t p, int slot) { return glm::vec3(doc.points[doc.patches[p].idx[size_t(slot)]]); };
     const auto centreOf = [&](size_t p) {
