@@ -21,19 +21,32 @@ struct CellHash {
     }
 };
 
-// Finds the position cluster of each point: the first point seen within `tol` (per coordinate) of
-// it, through a grid of cells `tol` wide (a match lies in one of the 27 cells around the point).
+// Finds the position cluster of each point: a point seen before within `tol` (per coordinate) of it,
+// through a grid of cells 16 `tol` wide. A match lies in a cell that the box p ± tol touches: the
+// point's own cell, which is searched first (a surface's vertices are each met about six times, at
+// one position), and a neighbour only where p is within `tol` of that face, so a search takes one
+// or two lookups instead of the 27 of cells `tol` wide (the as-displayed export spent a third of its
+// time here).
 class PositionClusters {
 public:
-    explicit PositionClusters(double tol) : tol_(tol), inv_(tol > 0.0 ? 1.0 / tol : 0.0) {}
+    explicit PositionClusters(double tol) : tol_(tol), inv_(tol > 0.0 ? 1.0 / (16.0 * tol) : 0.0) {}
 
     uint32_t find(const float p[3]) {
         const std::array<int64_t, 3> c = cell(p);
         if (tol_ > 0.0) {
-            for (int64_t dx = -1; dx <= 1; ++dx)
-                for (int64_t dy = -1; dy <= 1; ++dy)
-                    for (int64_t dz = -1; dz <= 1; ++dz) {
-                        auto it = cells_.find({c[0] + dx, c[1] + dy, c[2] + dz});
+            if (auto it = cells_.find(c); it != cells_.end())
+                for (uint32_t id : it->second)
+                    if (near(reps_[id], p)) return id;
+            std::array<int64_t, 3> lo{}, hi{};
+            for (int i = 0; i < 3; ++i) {
+                lo[size_t(i)] = int64_t(std::floor((double(p[i]) - tol_) * inv_));
+                hi[size_t(i)] = int64_t(std::floor((double(p[i]) + tol_) * inv_));
+            }
+            for (int64_t x = lo[0]; x <= hi[0]; ++x)
+                for (int64_t y = lo[1]; y <= hi[1]; ++y)
+                    for (int64_t z = lo[2]; z <= hi[2]; ++z) {
+                        if (std::array<int64_t, 3>{x, y, z} == c) continue;  // searched above
+                        auto it = cells_.find({x, y, z});
                         if (it == cells_.end()) continue;
                         for (uint32_t id : it->second)
                             if (near(reps_[id], p)) return id;

@@ -68,8 +68,12 @@ DomainView::DomainView(Device& dev, VkFormat color, VkFormat depth, VkSampleCoun
     VK_CHECK(vkCreatePipelineLayout(dev.device(), &pl, nullptr, layout_.replace(dev.device())));
 
     pointsSupported_ = dev.caps().tessGeomPointSize;
-    std::vector<OwnedShaderModule> modules;  // destroyed once the pipelines exist
-    auto mod = [&](const spirv::Blob& b) { return modules.emplace_back(dev.device(), makeModule(dev, b)).get(); };
+    auto mod = [&](const spirv::Blob& b) { return modules_.emplace_back(dev.device(), makeModule(dev, b)).get(); };
+    const auto lazy = [&](const PipelineDesc& pd) {
+        return LazyPipeline(dev.device(), [&dev, layout = layout_.get(), pd, color, depth, samples] {
+            return buildPipeline(dev, layout, VK_NULL_HANDLE, pd, color, depth, samples);
+        });
+    };
     const VkShaderModule vert = mod(spirv::domain_vert()), tesc = mod(spirv::domain_tesc()), frag = mod(spirv::line_frag());
     for (int d = 0; d < 3; ++d)
         for (int s = 0; s < 3; ++s) {
@@ -82,18 +86,15 @@ DomainView::DomainView(Device& dev, VkFormat color, VkFormat depth, VkSampleCoun
                          {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc},
                          {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::domain_tese(size_t(d), size_t(s), 0))},
                          {VK_SHADER_STAGE_FRAGMENT_BIT, frag}};
-            pipes_[size_t(d)][size_t(s)][0] =
-                OwnedPipeline(dev.device(), buildPipeline(dev, layout_, VK_NULL_HANDLE, pd, color, depth, samples));
+            pipes_[size_t(d)][size_t(s)][0] = lazy(pd);
             if (d != int(DomainKind::Isoline)) {  // isolines are lines already
                 pd.polygon = VK_POLYGON_MODE_LINE;
-                pipes_[size_t(d)][size_t(s)][1] =
-                    OwnedPipeline(dev.device(), buildPipeline(dev, layout_, VK_NULL_HANDLE, pd, color, depth, samples));
+                pipes_[size_t(d)][size_t(s)][1] = lazy(pd);
             }
             if (pointsSupported_) {
                 pd.polygon = VK_POLYGON_MODE_FILL;
                 pd.stages[2].second = mod(spirv::domain_tese(size_t(d), size_t(s), spirv::domain_tese_output_points));
-                pipes_[size_t(d)][size_t(s)][2] =
-                    OwnedPipeline(dev.device(), buildPipeline(dev, layout_, VK_NULL_HANDLE, pd, color, depth, samples));
+                pipes_[size_t(d)][size_t(s)][2] = lazy(pd);
             }
         }
 }
@@ -101,7 +102,7 @@ DomainView::DomainView(Device& dev, VkFormat color, VkFormat depth, VkSampleCoun
 DomainView::~DomainView() = default;
 
 VkPipeline DomainView::pipeline(DomainKind kind, Spacing spacing, int pass) const {
-    return pipes_[size_t(kind)][size_t(spacingVariant(spacing))][size_t(pass)].get();
+    return pipes_[size_t(kind)][size_t(spacingVariant(spacing))][size_t(pass)];
 }
 
 void DomainView::recordPass(VkCommandBuffer cmd, const DomainViewOptions& o, int pass, const DomainPlacement& at,

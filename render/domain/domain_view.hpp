@@ -14,6 +14,7 @@
 #include "core/tess/tess_pattern.hpp"
 #include "render/targets/render_target.hpp"
 #include "render/vk/device.hpp"
+#include "render/vk/pipeline_builder.hpp"
 #include "render/vk/vk_owned.hpp"
 
 namespace pw::gpu {
@@ -103,8 +104,9 @@ private:
 
     Device& dev_;
     OwnedPipelineLayout layout_;
-    // [domain][spacing][pass]
-    std::array<std::array<std::array<OwnedPipeline, 3>, 3>, 3> pipes_;
+    std::vector<OwnedShaderModule> modules_;  // what pipes_ are made from, when first drawn
+    // [domain][spacing][pass], made when first drawn (the editor draws one domain, one partitioning)
+    std::array<std::array<std::array<LazyPipeline, 3>, 3>, 3> pipes_;
     std::array<std::array<OwnedPipeline, 3>, 3> capturePipes_;  // [domain][spacing]
     VkFormat color_, depth_;
     VkSampleCountFlagBits samples_;

@@ -20,8 +20,8 @@ size_t surfaceSlot(const Frame& f) { return surfaceIndex(f.plan.variant, f.plan.
 size_t overlaySlot(const Frame& f) { return overlayIndex(f.plan.variant, f.plan.levels); }
 
 // Windows (and the Bézier triangles after them) through the family's pipelines at `slot`.
-void recordPatches(Frame& f, const std::array<VkPipeline, kSpacingVariants * kLevelsVariants>& windows,
-                   const std::array<VkPipeline, kSpacingVariants * kLevelsVariants>& triangles, gpu::DrawPush push) {
+void recordPatches(Frame& f, const std::array<LazyPipeline, kSpacingVariants * kLevelsVariants>& windows,
+                   const std::array<LazyPipeline, kSpacingVariants * kLevelsVariants>& triangles, gpu::DrawPush push) {
     const auto& m = f.m;
     vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, windows[overlaySlot(f)]);
     f.stats.draws += recordSurfaceDraws(f.cmd, f.pipes.layout, m.scene, f.plan.perDraw, push, f.plan.bounds(), f.plan.budget);

@@ -15,21 +15,39 @@
 namespace pw::render {
 namespace {
 
+using ModuleMaker = std::function<VkShaderModule(const spirv::Blob&)>;
+
 std::vector<char> readFile(const std::filesystem::path& p) {
     std::ifstream in(p, std::ios::binary);
     if (!in) return {};
     return std::vector<char>((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
-// Where pipelines are built for: device, layout, cache and attachment formats.
+// Where pipelines are built for: device, layout, cache and attachment formats; what making them costs.
 struct Targets {
     Device& dev;
     VkPipelineLayout layout;
     VkPipelineCache cache;
     VkFormat color, depth;
     VkSampleCountFlagBits samples;
-    VkPipeline build(const PipelineDesc& pd) const { return buildPipeline(dev, layout, cache, pd, color, depth, samples); }
+    std::shared_ptr<PipelineCost> cost;
+    // The pipeline `pd` describes, made when first bound (its shader modules live as long as the set).
+    LazyPipeline lazy(const PipelineDesc& pd) const {
+        ++cost->described;
+        return LazyPipeline(dev.device(), [t = *this, pd] {
+            const auto t0 = std::chrono::steady_clock::now();
+            const VkPipeline p = buildPipeline(t.dev, t.layout, t.cache, pd, t.color, t.depth, t.samples);
+            t.cost->createMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+            ++t.cost->made;
+            return p;
+        });
+    }
 };
+
+// A maker of shader modules that the set keeps (its pipelines are made later, from them).
+ModuleMaker keepModules(Device& dev, PipelineHandles& set) {
+    return [&dev, modules = set.modules](const spirv::Blob& blob) { return modules->emplace_back(makeModule(dev, blob)); };
+}
 
 // Stages every tessellated family shares: vertex, the fragment shader per varyings set, the line
 // fragment shader and the normals geometry shader (null where the device has none).
@@ -42,12 +60,10 @@ struct SharedStages {
 // The pipelines of one patch kind (quad patches, Bézier triangles): shaded by surfaceIndex,
 // wireframe and normal overlays by overlayIndex.
 struct FamilyOut {
-    std::array<VkPipeline, kSpacingVariants * kLevelsVariants * kVaryingsVariants>& surface;
-    std::array<VkPipeline, kSpacingVariants * kLevelsVariants>& wire;
-    std::array<VkPipeline, kSpacingVariants * kLevelsVariants>& normals;
+    std::array<LazyPipeline, kSpacingVariants * kLevelsVariants * kVaryingsVariants>& surface;
+    std::array<LazyPipeline, kSpacingVariants * kLevelsVariants>& wire;
+    std::array<LazyPipeline, kSpacingVariants * kLevelsVariants>& normals;
 };
-
-using ModuleMaker = std::function<VkShaderModule(const spirv::Blob&)>;
 
 // One patch family (quad windows or Bézier triangles) from its generated shader index
 // (shaders/CMakeLists.txt): control shader by levels, evaluation shader by spacing x varyings x
@@ -77,13 +93,13 @@ void buildTessFamily(const Targets& t, const SharedStages& sh, uint32_t controlP
                              {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc[size_t(l)]},
                              {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, te[v]},
                              {VK_SHADER_STAGE_FRAGMENT_BIT, sh.frag[v]}};
-                out.surface[surfaceIndex(s, lv, VaryingsVariant(v))] = t.build(pd);
+                out.surface[surfaceIndex(s, lv, VaryingsVariant(v))] = t.lazy(pd);
                 if (v != int(VaryingsVariant::Lean)) continue;
                 pd.polygon = VK_POLYGON_MODE_LINE;
                 pd.depthWrite = false;
                 pd.depthBias = true;
                 pd.blend = true;  // a dense wire fades (surface.frag, wireOpacity)
-                out.wire[overlayIndex(s, lv)] = t.build(pd);
+                out.wire[overlayIndex(s, lv)] = t.lazy(pd);
             }
             if (!sh.geom) continue;
             PipelineDesc nd;
@@ -95,7 +111,7 @@ void buildTessFamily(const Targets& t, const SharedStages& sh, uint32_t controlP
                          {VK_SHADER_STAGE_GEOMETRY_BIT, sh.geom},
                          {VK_SHADER_STAGE_FRAGMENT_BIT, sh.lineFrag}};
             nd.depthWrite = false;
-            out.normals[overlayIndex(s, lv)] = t.build(nd);
+            out.normals[overlayIndex(s, lv)] = t.lazy(nd);
         }
     }
 }
@@ -165,16 +181,15 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
     pl.pPushConstantRanges = &pr;
     VK_CHECK(vkCreatePipelineLayout(d, &pl, nullptr, &set.layout));
 
-    // Shader modules (destroyed once the pipelines exist).
-    std::vector<OwnedShaderModule> modules;
-    auto mod = [&](const spirv::Blob& blob) { return modules.emplace_back(dev.device(), makeModule(dev, blob)).get(); };
+    // Shader modules (kept with the set: the pipelines are made from them when first bound).
+    const ModuleMaker mod = keepModules(dev, set);
     VkShaderModule frag[kVaryingsVariants] = {};
     const SharedStages shared = makeSharedStages(dev, mod, frag);
     const VkShaderModule vert = shared.vert, lineFrag = shared.lineFrag;
     set.colorFormat = color;
     set.depthFormat = depth;
     set.samples = samples;
-    const Targets targets{dev, set.layout, set.cache, color, depth, samples};
+    const Targets targets{dev, set.layout, set.cache, color, depth, samples, set.cost};
     buildSurfaceFamilies(targets, shared, set.tess[0], false, mod);
     // Curves and isocurves: the isoline domain; lines drawn depth-tested over the surface.
     {
@@ -188,13 +203,13 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
                          {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, ctesc},
                          {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::curve_tese(size_t(s)))},
                          {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
-            set.curves[size_t(s)] = targets.build(cd);
+            set.curves[size_t(s)] = targets.lazy(cd);
             cd.patchControlPoints = 16;
             cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert},
                          {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, itesc},
                          {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::isocurve_tese(size_t(s)))},
                          {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
-            set.isocurves[size_t(s)] = targets.build(cd);
+            set.isocurves[size_t(s)] = targets.lazy(cd);
         }
         PipelineDesc cd;
         cd.tess = true;
@@ -204,20 +219,20 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
                      {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, mod(spirv::comb_tesc())},
                      {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::comb_tese())},
                      {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
-        set.combs = targets.build(cd);
+        set.combs = targets.lazy(cd);
         cd.patchControlPoints = 16;
         cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert},
                      {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, mod(spirv::isocomb_tesc())},
                      {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::isocomb_tese())},
                      {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
-        set.isoCombs = targets.build(cd);
+        set.isoCombs = targets.lazy(cd);
     }
     for (int v = 0; v < kVaryingsVariants; ++v) {
         PipelineDesc md;
         md.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
         md.vertexLayout = v == int(VaryingsVariant::Full) ? 1 : 3;
         md.stages = {{VK_SHADER_STAGE_VERTEX_BIT, mod(spirv::mesh_vert(size_t(v)))}, {VK_SHADER_STAGE_FRAGMENT_BIT, frag[v]}};
-        set.mesh[v] = targets.build(md);
+        set.mesh[v] = targets.lazy(md);
     }
     {
         VkShaderModule gv = mod(spirv::grid_vert());
@@ -226,31 +241,31 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
         gd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, gv}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
         gd.depthTest = false;
         gd.depthWrite = false;
-        set.gridLines = targets.build(gd);
+        set.gridLines = targets.lazy(gd);
         gd.topology = VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
-        set.gridPoints = targets.build(gd);
+        set.gridPoints = targets.lazy(gd);
         PipelineDesc cd;
         cd.topology = VK_PRIMITIVE_TOPOLOGY_LINE_LIST;
         cd.vertexLayout = 2;
         cd.depthWrite = false;
         cd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, mod(spirv::colorline_vert())}, {VK_SHADER_STAGE_FRAGMENT_BIT, lineFrag}};
-        set.colorLines = targets.build(cd);
+        set.colorLines = targets.lazy(cd);
         cd.blend = true;
-        set.groundLines = targets.build(cd);
+        set.groundLines = targets.lazy(cd);
     }
-    set.createMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    set.cost->createMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     return set;
 }
 
 void ensureDisplacedPipelines(Device& dev, PipelineSet& set) {
     if (set.tess[1].surface[0]) return;
     const auto t0 = std::chrono::steady_clock::now();
-    std::vector<OwnedShaderModule> modules;
-    auto mod = [&](const spirv::Blob& blob) { return modules.emplace_back(dev.device(), makeModule(dev, blob)).get(); };
+    const ModuleMaker mod = keepModules(dev, set);
     VkShaderModule frag[kVaryingsVariants] = {};
     const SharedStages shared = makeSharedStages(dev, mod, frag);
-    buildSurfaceFamilies({dev, set.layout, set.cache, set.colorFormat, set.depthFormat, set.samples}, shared, set.tess[1], true, mod);
-    set.createMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    buildSurfaceFamilies({dev, set.layout, set.cache, set.colorFormat, set.depthFormat, set.samples, set.cost}, shared, set.tess[1], true,
+                         mod);
+    set.cost->createMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
 PipelineSet& PipelineSet::operator=(PipelineSet&& o) noexcept {
@@ -283,10 +298,7 @@ void PipelineSet::release() {
         }
         vkDestroyPipelineCache(d, set.cache, nullptr);
     }
-    auto kill = [&](VkPipeline& p) {
-        if (p) vkDestroyPipeline(d, p, nullptr);
-        p = VK_NULL_HANDLE;
-    };
+    auto kill = [&](LazyPipeline& p) { p.destroy(); };
     for (SurfacePipelines& f : set.tess) {
         for (auto& p : f.surface) kill(p);
         for (auto& p : f.wire) kill(p);
@@ -304,6 +316,8 @@ void PipelineSet::release() {
     kill(set.gridPoints);
     kill(set.colorLines);
     kill(set.groundLines);
+    if (set.modules)
+        for (VkShaderModule m : *set.modules) vkDestroyShaderModule(d, m, nullptr);
     if (set.layout) vkDestroyPipelineLayout(d, set.layout, nullptr);
     if (set.setLayout) vkDestroyDescriptorSetLayout(d, set.setLayout, nullptr);
     set = PipelineHandles{};

@@ -1,16 +1,21 @@
-// Every graphics pipeline of the renderer, created up front from the embedded SPIR-V with a
-// VkPipelineCache kept on disk ($XDG_CACHE_HOME/patchwork or ~/.cache/patchwork), so switching
-// spacing, shading or overlays never compiles anything.
+// Every graphics pipeline of the renderer, described up front and made the first time a frame binds
+// it (issue 43: lavapipe compiles a pipeline in 50-100 ms and a first frame needs about 3 of the 60),
+// from the embedded SPIR-V with a VkPipelineCache kept on disk ($XDG_CACHE_HOME/patchwork or
+// ~/.cache/patchwork), so a variant used before compiles nothing.
 #pragma once
 
 #include <vulkan/vulkan.h>
 
 #include <array>
 #include <filesystem>
+#include <functional>
+#include <memory>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "render/vk/device.hpp"
+#include "render/vk/pipeline_builder.hpp"
 
 namespace pw::render {
 
@@ -35,41 +40,49 @@ constexpr size_t surfaceIndex(int spacing, LevelsVariant l, VaryingsVariant v) {
 // Index of the wireframe or normal-overlay pipeline (lean varyings) for a spacing and levels variant.
 constexpr size_t overlayIndex(int spacing, LevelsVariant l) { return size_t(spacing) * kLevelsVariants + size_t(l); }
 
+// What making the pipelines has cost so far (shared by the makers, which outlive moves of the set).
+struct PipelineCost {
+    double createMs = 0.0;  // set-up plus every pipeline made
+    int made = 0, described = 0;
+};
+
 // The pipelines of the tessellated surfaces, for one evaluation-shader family (plain or displaced).
 struct SurfacePipelines {
     // shaded tessellated surface, by surfaceIndex
-    std::array<VkPipeline, kSpacingVariants * kLevelsVariants * kVaryingsVariants> surface{};
+    std::array<LazyPipeline, kSpacingVariants * kLevelsVariants * kVaryingsVariants> surface{};
     // by overlayIndex: the surface as polygonMode LINE + depth bias; point-mode evaluation +
     // geometry shader for normal vectors (if supported)
-    std::array<VkPipeline, kSpacingVariants * kLevelsVariants> wire{}, normals{};
+    std::array<LazyPipeline, kSpacingVariants * kLevelsVariants> wire{}, normals{};
     // Bézier triangles (10 control points, triangle domain): shaded by surfaceIndex, wireframe and
     // normal vectors (if supported) by overlayIndex.
-    std::array<VkPipeline, kSpacingVariants * kLevelsVariants * kVaryingsVariants> triSurface{};
-    std::array<VkPipeline, kSpacingVariants * kLevelsVariants> triWire{}, triNormals{};
+    std::array<LazyPipeline, kSpacingVariants * kLevelsVariants * kVaryingsVariants> triSurface{};
+    std::array<LazyPipeline, kSpacingVariants * kLevelsVariants> triWire{}, triNormals{};
 };
 
 // The handles of every pipeline of the renderer (PipelineSet owns them).
 struct PipelineHandles {
     VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;  // 0: frame UBO, 1: patch data, 2: counters, 3: height map
     VkPipelineLayout layout = VK_NULL_HANDLE;          // + gpu::DrawPush push constants
-    // The tessellated surfaces, plain (tess[0], made up front) and displaced by the height map
-    // (tess[1], made on first use: ensureDisplacedPipelines).
+    // The tessellated surfaces, plain (tess[0]) and displaced by the height map (tess[1], described
+    // on first use: ensureDisplacedPipelines).
     std::array<SurfacePipelines, 2> tess{};
     // The isoline domain, by spacing variant: Bézier curves (4 points) and the isocurve overlay of
     // every window (16 points).
-    std::array<VkPipeline, kSpacingVariants> curves{}, isocurves{};
+    std::array<LazyPipeline, kSpacingVariants> curves{}, isocurves{};
     // Curvature combs (shaders/comb.*): on Bézier curves and on windows' isocurves; equal spacing.
-    VkPipeline combs{}, isoCombs{};
-    std::array<VkPipeline, kVaryingsVariants> mesh{};  // plain pre-tessellated triangles
-    VkPipeline gridLines = VK_NULL_HANDLE;             // control net lines (over everything)
-    VkPipeline gridPoints = VK_NULL_HANDLE;            // control points
-    VkPipeline colorLines = VK_NULL_HANDLE;            // coloured lines, depth-tested (boundaries)
-    VkPipeline groundLines = VK_NULL_HANDLE;           // coloured translucent lines, depth-tested (the editor's ground grid)
+    LazyPipeline combs, isoCombs;
+    std::array<LazyPipeline, kVaryingsVariants> mesh{};  // plain pre-tessellated triangles
+    LazyPipeline gridLines;                              // control net lines (over everything)
+    LazyPipeline gridPoints;                             // control points
+    LazyPipeline colorLines;                             // coloured lines, depth-tested (boundaries)
+    LazyPipeline groundLines;                            // coloured translucent lines, depth-tested (the editor's ground grid)
     VkPipelineCache cache = VK_NULL_HANDLE;
     std::filesystem::path cacheFile;
     VkFormat colorFormat = VK_FORMAT_UNDEFINED, depthFormat = VK_FORMAT_UNDEFINED;  // what the pipelines draw into
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
-    double createMs = 0.0;  // time spent creating all pipelines
+    std::shared_ptr<PipelineCost> cost = std::make_shared<PipelineCost>();
+    // The shader modules the makers use, kept until the set is released.
+    std::shared_ptr<std::vector<VkShaderModule>> modules = std::make_shared<std::vector<VkShaderModule>>();
 };
 
 // Every pipeline, their layouts and the pipeline cache, owned: when the set dies or is replaced it

@@ -48,8 +48,8 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
     auto& captureTriangles = m.captureTriangles[size_t(disp)];
 
     // Pipelines on first use: vertex, the frame's control shader, the capture evaluation shader
-    // (plain, or displaced by the height map).
-    if (!captureWindows[slot]) {
+    // (plain, or displaced by the height map); the triangles' only for a document that has some.
+    if (!captureWindows[slot] || (m.scene.triangleCount && !captureTriangles[slot])) {
         const size_t levels = size_t(plan.levels), spacing = size_t(plan.variant), capture = spirv::surface_tese_varyings_capture;
         OwnedShaderModule vert(dev_.device(), makeModule(dev_, spirv::surface_vert()));
         OwnedShaderModule tesc(dev_.device(), makeModule(dev_, spirv::surface_tesc(levels)));
@@ -67,14 +67,16 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
         // Rendering without attachments: nothing is drawn, so the capture never touches the target
         // (the editor's swapchain image belongs to its frame).
         const VkFormat none = VK_FORMAT_UNDEFINED;
-        captureWindows[slot] =
-            OwnedPipeline(dev_.device(), buildPipeline(dev_, pipes_.layout, pipes_.cache, pd, none, none, VK_SAMPLE_COUNT_1_BIT));
+        if (!captureWindows[slot])
+            captureWindows[slot] =
+                OwnedPipeline(dev_.device(), buildPipeline(dev_, pipes_.layout, pipes_.cache, pd, none, none, VK_SAMPLE_COUNT_1_BIT));
         pd.patchControlPoints = 10;
         pd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert},
                      {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, ttesc},
                      {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, ttese}};
-        captureTriangles[slot] =
-            OwnedPipeline(dev_.device(), buildPipeline(dev_, pipes_.layout, pipes_.cache, pd, none, none, VK_SAMPLE_COUNT_1_BIT));
+        if (m.scene.triangleCount)
+            captureTriangles[slot] =
+                OwnedPipeline(dev_.device(), buildPipeline(dev_, pipes_.layout, pipes_.cache, pd, none, none, VK_SAMPLE_COUNT_1_BIT));
     }
 
     // The first try holds the bound from the largest segment count these settings can give (capped:

@@ -4,6 +4,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -31,5 +32,42 @@ VkShaderModule makeModule(Device& dev, const spirv::Blob& blob);
 // (VK_FORMAT_UNDEFINED for both: no attachments), with dynamic viewport and scissor.
 VkPipeline buildPipeline(Device& dev, VkPipelineLayout layout, VkPipelineCache cache, const PipelineDesc& d, VkFormat color, VkFormat depth,
                          VkSampleCountFlagBits samples);
+
+// One pipeline, made the first time it is used as a VkPipeline (bound) from the maker it was given
+// (lavapipe compiles a pipeline in 50-100 ms; a first frame needs few of those a renderer can use);
+// `if (p)` asks whether it exists or can be made (a normals pipeline needs geometry shaders) without
+// making it. Move-only; destroys what it made (on `device`) when it dies or on destroy().
+class LazyPipeline {
+public:
+    LazyPipeline() = default;
+    LazyPipeline(VkDevice device, std::function<VkPipeline()> make) : device_(device), make_(std::move(make)) {}
+    ~LazyPipeline() { destroy(); }
+    LazyPipeline(LazyPipeline&& o) noexcept
+        : device_(o.device_), handle_(std::exchange(o.handle_, VK_NULL_HANDLE)), make_(std::move(o.make_)) {}
+    LazyPipeline& operator=(LazyPipeline&& o) noexcept {
+        std::swap(device_, o.device_);
+        std::swap(handle_, o.handle_);
+        std::swap(make_, o.make_);
+        return *this;
+    }
+    LazyPipeline(const LazyPipeline&) = delete;
+    LazyPipeline& operator=(const LazyPipeline&) = delete;
+    operator VkPipeline() const {  // NOLINT: binds like the handle it stands for
+        if (!handle_ && make_) handle_ = make_();
+        return handle_;
+    }
+    explicit operator bool() const { return handle_ != VK_NULL_HANDLE || bool(make_); }
+    bool made() const { return handle_ != VK_NULL_HANDLE; }
+    void destroy() {
+        if (handle_) vkDestroyPipeline(device_, handle_, nullptr);
+        handle_ = VK_NULL_HANDLE;
+        make_ = nullptr;
+    }
+
+private:
+    VkDevice device_ = VK_NULL_HANDLE;
+    mutable VkPipeline handle_ = VK_NULL_HANDLE;
+    std::function<VkPipeline()> make_;
+};
 
 }  // namespace pw::render
