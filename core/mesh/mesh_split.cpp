@@ -4,6 +4,7 @@
 #include "core/mesh/mesh_split.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <numeric>
 #include <tuple>
 #include <utility>
@@ -65,28 +66,39 @@ std::vector<uint32_t> groupTriangles(const TriangleMesh& mesh, MeshGrouping grou
     return group;
 }
 
-// closed[g]: every edge of group g's triangles, by position, is used by exactly two of them.
+// closed[g]: every edge of group g's triangles, by position, is used by exactly two of them. The
+// edges are bucketed by their lower position id (a counting sort) and each bucket, a handful of
+// edges, sorted alone: linear in the triangles (one sort of all 3T edges cost 60 % of a glb export).
 std::vector<bool> closedGroups(const std::vector<uint32_t>& indices, const std::vector<uint32_t>& group, const std::vector<uint32_t>& pid,
                                size_t groups) {
-    struct Key {
-        uint32_t g, a, b;
-        bool operator<(const Key& o) const { return std::tie(g, a, b) < std::tie(o.g, o.a, o.b); }
-        bool operator==(const Key& o) const { return g == o.g && a == o.a && b == o.b; }
+    const size_t T = group.size();
+    uint32_t top = 0;
+    for (size_t i = 0; i < 3 * T; ++i) top = std::max(top, pid[indices[i]]);
+    std::vector<uint32_t> start(size_t(top) + 2, 0);
+    const auto edge = [&](size_t t, int k) {
+        const uint32_t a = pid[indices[3 * t + size_t(k)]], b = pid[indices[3 * t + size_t((k + 1) % 3)]];
+        return std::pair{std::min(a, b), std::max(a, b)};
     };
-    std::vector<Key> edges;
-    edges.reserve(indices.size());
-    for (size_t t = 0; t < group.size(); ++t)
+    for (size_t t = 0; t < T; ++t)
+        for (int k = 0; k < 3; ++k) ++start[edge(t, k).first + 1];
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    std::vector<std::pair<uint32_t, uint32_t>> other(3 * T);  // (higher id, group), bucketed by the lower id
+    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+    for (size_t t = 0; t < T; ++t)
         for (int k = 0; k < 3; ++k) {
-            const uint32_t a = pid[indices[3 * t + k]], b = pid[indices[3 * t + (k + 1) % 3]];
-            edges.push_back({group[t], std::min(a, b), std::max(a, b)});
+            const auto [a, b] = edge(t, k);
+            other[fill[a]++] = {b, group[t]};
         }
-    std::sort(edges.begin(), edges.end());
     std::vector<bool> closed(groups, true);
-    for (size_t i = 0; i < edges.size();) {
-        size_t j = i;
-        while (j < edges.size() && edges[j] == edges[i]) ++j;
-        if (j - i != 2) closed[edges[i].g] = false;
-        i = j;
+    for (size_t a = 0; a + 1 < start.size(); ++a) {
+        const auto first = other.begin() + start[a], last = other.begin() + start[a + 1];
+        std::sort(first, last);
+        for (auto i = first; i != last;) {
+            auto j = i;
+            while (j != last && *j == *i) ++j;
+            if (j - i != 2) closed[i->second] = false;
+            i = j;
+        }
     }
     return closed;
 }
@@ -112,15 +124,26 @@ std::optional<MeshGrouping> parseMeshGrouping(const std::string& name) {
 }
 
 std::vector<uint32_t> positionIds(const std::vector<std::array<float, 3>>& positions) {
-    std::vector<uint32_t> order(positions.size());
-    std::iota(order.begin(), order.end(), 0u);
-    std::sort(order.begin(), order.end(),
-              [&](uint32_t a, uint32_t b) { return positions[a] < positions[b] || (positions[a] == positions[b] && a < b); });
-    std::vector<uint32_t> id(positions.size());
-    for (size_t i = 0; i < order.size();) {
-        size_t j = i;
-        while (j < order.size() && positions[order[j]] == positions[order[i]]) id[order[j++]] = order[i];
-        i = j;
+    // An open-addressing table of first occurrences, keyed by the coordinates' bits (-0 as +0, so
+    // that equal floats share a slot): one pass instead of sorting every position (a fifth of a glb
+    // export).
+    const auto bits = [](float f) {
+        uint32_t u;
+        f = f == 0.0f ? 0.0f : f;
+        std::memcpy(&u, &f, 4);
+        return u;
+    };
+    size_t size = 16;
+    while (size < 2 * positions.size()) size *= 2;
+    std::vector<uint32_t> slot(size, kNoVertex), id(positions.size());
+    for (size_t v = 0; v < positions.size(); ++v) {
+        const auto& p = positions[v];
+        uint64_t h = 1469598103934665603ull;
+        for (float c : p) h = (h ^ bits(c)) * 1099511628211ull;
+        size_t i = size_t(h ^ (h >> 29)) & (size - 1);
+        while (slot[i] != kNoVertex && positions[slot[i]] != p) i = (i + 1) & (size - 1);
+        if (slot[i] == kNoVertex) slot[i] = uint32_t(v);
+        id[v] = slot[i];
     }
     return id;
 }
