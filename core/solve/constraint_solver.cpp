@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "core/model/topology.hpp"
+#include "core/solve/ldlt_solve.hpp"
 #include "core/solve/sheared_joins.hpp"
 #include "core/solve/solver_constraints.hpp"
 #include "core/solve/triangle_seams.hpp"
@@ -270,7 +271,7 @@ struct DragSolver::Impl {
             }
             if (worst2 <= tol2 || round == 16) break;
             const Eigen::MatrixXd y =
-                comp.sparse ? Eigen::MatrixXd(comp.sparse->solve(r.topRows(m))) : Eigen::MatrixXd(comp.dense.solve(r.topRows(m)));
+                comp.sparse ? solver_detail::solveLdltColumns(*comp.sparse, r.topRows(m)) : Eigen::MatrixXd(comp.dense.solve(r.topRows(m)));
             const Eigen::MatrixXd d = comp.C.transpose() * y;
             for (size_t k = 0; k < comp.vars.size(); ++k) {
                 const uint32_t v = comp.vars[k];
