@@ -130,6 +130,21 @@ xdotool click 3
 xdotool mouseup 1
 wait_for "t['mode'] == 0 and t['world'][$IDX] == $ORIG and t['undoSteps'] == $STEPS"
 say "Esc and right click cancel and restore"
+# Soft selection (O): a grab shows the radius as a circle around the pivot; the wheel grows it.
+xdotool mousemove --sync $QX $QY
+xdotool key o
+wait_for "t['softOn']"
+xdotool key g
+wait_for "t['mode'] == 6 and t['softRadiusPx'] > 2"
+R0=$(trace "t['softRadiusPx']")
+xdotool click 5
+wait_for "t['softRadiusPx'] > $R0 * 1.1"
+import -window root "$WORK/soft_radius.png"
+xdotool key Escape
+wait_for "t['mode'] == 0 and t['softRadiusPx'] == 0 and t['world'][$IDX] == $ORIG and t['undoSteps'] == $STEPS"
+xdotool key o
+wait_for "not t['softOn']"
+say "soft selection: the radius circle, $R0 px, grows with the wheel"
 
 # --- 5. resize during a drag ------------------------------------------------------------------
 read -r QX QY < <(trace "' '.join(str(round(v)) for v in t['points'][$IDX])")

@@ -161,6 +161,7 @@ EditorSnapshot Editor::snapshot() const {
             .frame = frameCount_,
             .mode = mode_,
             .hovered = hovered_,
+            .softRadiusPixels = softRadiusPixels_,
             .help = showHelp_,
             .axisGizmo = axisGizmoRect_,
             .viewArea = viewArea_,

@@ -96,6 +96,7 @@ struct EditorSnapshot {
     uint64_t frame = 0;
     Interaction mode = Interaction::None;
     int hovered = -1;                          // the control point under the mouse
+    float softRadiusPixels = 0.0f;             // the soft-selection circle during a transform (0: none)
     bool help = false;                         // the F1 window is open
     std::array<float, 4> axisGizmo, viewArea;  // window pixels: x, y, w, h
     PanelLayout layout;
@@ -230,6 +231,7 @@ private:
     DragController drag_;
     int hovered_ = -1;
     int hoveredGizmo_ = -1;
+    float softRadiusPixels_ = 0.0f;                   // the soft-selection circle drawn last frame (0: none; the test trace)
     std::array<float, 4> axisGizmoRect_{0, 0, 0, 0};  // where the axis gizmo went last frame (x, y, w, h; the test trace)
     JoinToolState join_;
     CurveToolState curve_;

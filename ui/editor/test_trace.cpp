@@ -44,6 +44,8 @@ void TestTrace::write(const EditorSnapshot& e) {
     j["file"] = e.session.path();
     j["modified"] = e.session.isModified();
     j["mode"] = int(e.mode);
+    j["softOn"] = e.session.soft.on;
+    j["softRadiusPx"] = e.softRadiusPixels;
     j["undoSteps"] = e.session.history().size();
     j["canUndo"] = e.session.history().canUndo();
     j["hovered"] = e.hovered;

@@ -149,6 +149,28 @@ void Editor::drawPaneOverlays(const std::array<float, 4>& pane, bool active) {
         if (auto s = proj(doc_.points[size_t(hovered_)]))
             dl->AddCircle(ImVec2(float(s->x), float(s->y)), 8.0f, IM_COL32(255, 255, 255, 255), 16, 2.0f);
 
+    // Soft selection's reach during a transform: a circle of its radius around the pivot, in the view
+    // plane (the shares fall off along the nets, so this is the reach as the crow flies), and the
+    // radius beside it; the wheel changes it.
+    if ((mode_ == Interaction::DragPoints || mode_ == Interaction::Grab) && drag_.soft().on) {
+        const glm::dvec3 right(vm.view[0][0], vm.view[1][0], vm.view[2][0]);
+        const auto c = proj(drag_.anchor()), e = proj(drag_.anchor() + drag_.soft().radius * right);
+        if (c && e) {
+            const ImVec2 at(float(c->x), float(c->y));
+            const float r = float(glm::length(*e - *c));
+            softRadiusPixels_ = r;
+            dl->AddCircle(at, r, IM_COL32(255, 200, 80, 200), 64, 1.5f);
+            char label[64];
+            std::snprintf(label, sizeof label, "soft %.3g (wheel) %zu pts", drag_.soft().radius, drag_.softCount());
+            const ImVec2 t(at.x + r * 0.71f + 4.0f, at.y - r * 0.71f - ImGui::GetFontSize()), size = ImGui::CalcTextSize(label);
+            dl->AddRectFilled(ImVec2(t.x - 3.0f, t.y - 1.0f), ImVec2(t.x + size.x + 3.0f, t.y + size.y + 1.0f), IM_COL32(0, 0, 0, 150),
+                              3.0f);
+            dl->AddText(t, IM_COL32(255, 220, 140, 255), label);
+        }
+    } else {
+        softRadiusPixels_ = 0.0f;
+    }
+
     // Axis constraint line (or the plane's two axes) during a transform.
     if ((mode_ == Interaction::DragPoints || mode_ == Interaction::Grab) && drag_.axis() >= 0)
         for (int k = 0; k < 3; ++k) {
