@@ -10,6 +10,7 @@
 #include "core/eval/bezier_triangle.hpp"
 #include "core/gpu/patch_math.h"
 #include "core/tess/edge_levels.hpp"
+#include "core/tess/tess_levels.hpp"
 
 using namespace pw;
 
@@ -105,4 +106,32 @@ TEST(EdgeLevels, RandomOverridesOnGridsAndTrianglesAlwaysAgree) {
             if (rng() % 2) t.tessOverride = std::array<float, 4>{level(rng), level(rng), level(rng), level(rng)};
         EXPECT_GT(expectSharedEdgesAgree(doc), 0u);
     }
+}
+
+// What a frame asks of the tessellator (the editor's heavy-document rule): single patches, net
+// windows and triangles at the largest level any can get; past 8 192 patches or 2 M evaluation
+// vertices a CPU renderer is not interactive.
+TEST(FrameLoad, CountsEveryPatchAtItsLargestLevel) {
+    Document doc = makePatchGrid(4, 4);
+    TessSettings t;
+    t.outer = {9, 9, 9, 9};
+    t.inner = {9, 9};
+    render::FrameLoad l = render::frameLoad(doc, t);
+    EXPECT_EQ(l.patches, 16u);
+    EXPECT_EQ(l.segments, 9);
+    EXPECT_EQ(l.evaluations, 16u * 100u);
+    doc.patches[3].tessOverride = std::array<float, 6>{2, 2, 2, 2, 30, 2};
+    EXPECT_EQ(render::frameLoad(doc, t).segments, 30);
+    Surface net;
+    net.rows = net.cols = 99;  // B-spline: 96 x 96 windows
+    net.basis = Basis::BSpline;
+    net.idx.assign(size_t(99) * 99, 0u);
+    doc.surfaces.push_back(net);
+    l = render::frameLoad(doc, t);
+    EXPECT_EQ(l.patches, 16u + 96u * 96u);
+    EXPECT_TRUE(render::heavyForCpu(l));
+    EXPECT_FALSE(render::heavyForCpu(render::frameLoad(makePatchGrid(4, 4), t)));
+    t.adaptive = AdaptiveMode::ScreenSpace;
+    t.maxLevel = 64;
+    EXPECT_EQ(render::frameLoad(makePatchGrid(4, 4), t).segments, 64);  // adaptive: bounded by the max level
 }

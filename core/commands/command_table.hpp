@@ -19,7 +19,7 @@ namespace pw {
 
 // What the editor window does for commands; a script host keeps the defaults.
 enum class FileDialogKind { Open, SaveAs, Import, ExportGltf, Screenshot, DomainFigure, SweepAnimation, HeightMap };
-enum class WindowToggle { Help, Palette, Presentation, DomainView, ShaderPanel, GroundGrid, JoinTool, XRay, CurveTool };
+enum class WindowToggle { Help, Palette, Presentation, DomainView, ShaderPanel, GroundGrid, JoinTool, XRay, CurveTool, FullDetail };
 
 class CommandHost {
 public:

@@ -104,6 +104,9 @@ void addViewCommands(CommandTable& t) {
     t.add(windowToggle("xray", "Select Through (X-ray)", "View", WindowToggle::XRay, {"Alt+Z"},
                        "Box selection takes the points behind the surface too (off: only the points you can see)"));
     t.add(windowToggle("ground-grid", "Ground Grid", "View", WindowToggle::GroundGrid, {}, "Show the ground-plane grid"));
+    t.add(windowToggle("full-detail", "Full Detail", "View", WindowToggle::FullDetail, {},
+                       "Draw a document too heavy for the CPU renderer at its own levels (off: screen-adaptive, 8 px a segment, "
+                       "while it is that heavy)"));
     t.add(windowToggle("domain-view", "Domain View", "View", WindowToggle::DomainView, {},
                        "The parametric domain tessellated by the GPU with the current levels (Teaching panel for more)"));
     t.add(windowToggle("shaders", "Shaders", "View", WindowToggle::ShaderPanel, {},

@@ -25,6 +25,28 @@ int maxSegments(const TessSettings& tess, float overrideMax, float deviceMax) {
     return roundedSegments(m, tess.spacing);
 }
 
+FrameLoad frameLoad(const Document& doc, const TessSettings& tess) {
+    FrameLoad l;
+    float overrideMax = 0.0f;
+    for (const Patch& p : doc.patches) {
+        ++l.patches;
+        if (p.tessOverride)
+            for (float f : *p.tessOverride) overrideMax = std::max(overrideMax, f);
+    }
+    for (const Surface& s : doc.surfaces) {
+        const uint32_t step = netStep(s.basis);
+        l.patches += netWindowCount(s.rows, s.closedV, step) * netWindowCount(s.cols, s.closedU, step);
+    }
+    for (const TrianglePatch& t : doc.triangles) {
+        ++l.patches;
+        if (t.tessOverride)
+            for (float f : *t.tessOverride) overrideMax = std::max(overrideMax, f);
+    }
+    l.segments = maxSegments(tess, overrideMax);
+    l.evaluations = l.patches * uint64_t(l.segments + 1) * uint64_t(l.segments + 1);
+    return l;
+}
+
 uint32_t patchesPerDraw(int maxLevel, uint32_t vertexBudget) {
     if (vertexBudget == 0) return UINT32_MAX;
     const int l = std::max(maxLevel, 1);

@@ -16,6 +16,19 @@ int roundedSegments(float f, Spacing spacing);
 // (adaptive: bounded by the max level).
 int maxSegments(const TessSettings& tess, float overrideMax, float deviceMax = 64.0f);
 
+// What a frame at these settings asks of the tessellator at most: the patches (single patches, net
+// windows and Bézier triangles) and the evaluation vertices at the largest level any can get.
+struct FrameLoad {
+    uint64_t patches = 0, evaluations = 0;
+    int segments = 1;  // the largest level, rounded
+};
+FrameLoad frameLoad(const Document& doc, const TessSettings& tess);
+// Past these a CPU implementation (lavapipe) draws a frame in more than about a fifth of a second
+// (it pays ~15 µs a patch and ~0.1 µs an evaluation vertex): the editor draws such a document
+// screen-adaptive unless asked for full detail.
+inline constexpr uint64_t kCpuInteractivePatches = 8192, kCpuInteractiveEvaluations = 2'000'000;
+inline bool heavyForCpu(const FrameLoad& l) { return l.patches > kCpuInteractivePatches || l.evaluations > kCpuInteractiveEvaluations; }
+
 // Evaluation vertices per vkCmdDraw on CPU implementations: lavapipe's tessellator slows down past
 // a few thousand and renders wrong pixels past 65 535 (DESIGN §4). GPUs get no limit (0).
 inline constexpr uint32_t kCpuDrawVertexBudget = 4096;

@@ -162,6 +162,7 @@ EditorSnapshot Editor::snapshot() const {
             .mode = mode_,
             .hovered = hovered_,
             .softRadiusPixels = softRadiusPixels_,
+            .degraded = degradedLoad().has_value(),
             .help = showHelp_,
             .axisGizmo = axisGizmoRect_,
             .viewArea = viewArea_,
@@ -254,9 +255,23 @@ int Editor::run() {
     return status;
 }
 
+std::optional<render::FrameLoad> Editor::degradedLoad() const {
+    const TessSettings shown = teaching_.shownTess(doc_.tess);
+    if (fullDetail_ || shown.adaptive != AdaptiveMode::None || window_.device().properties().deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU)
+        return std::nullopt;
+    const render::FrameLoad load = render::frameLoad(doc_, shown);
+    if (!render::heavyForCpu(load)) return std::nullopt;
+    return load;
+}
+
 render::RenderOptions Editor::viewOptions() const {
     render::RenderOptions o = render::optionsFromDocument(doc_);
     o.tess = teaching_.shownTess(doc_.tess);  // a preset or sweep shows its own levels
+    if (const auto load = degradedLoad()) {   // too heavy for lavapipe at its own levels: each edge about 8 px instead
+        o.tess.adaptive = AdaptiveMode::ScreenSpace;
+        o.tess.targetPixels = 8.0f;
+        o.tess.maxLevel = float(load->segments);
+    }
     o.camera = cam_;
     o.hoveredPoint = hovered_;
     o.selectedPoint = sel_.points.empty() ? -1 : int(sel_.points.front());

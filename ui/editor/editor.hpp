@@ -21,6 +21,7 @@
 #include "core/edit/drag_controller.hpp"
 #include "core/edit/edit_session.hpp"
 #include "core/select/edge_pick.hpp"
+#include "core/tess/tess_levels.hpp"
 #include "ui/editor/test_trace.hpp"
 #include "ui/panels/command_panels.hpp"
 #include "ui/panels/dialogs.hpp"
@@ -97,6 +98,7 @@ struct EditorSnapshot {
     Interaction mode = Interaction::None;
     int hovered = -1;                          // the control point under the mouse
     float softRadiusPixels = 0.0f;             // the soft-selection circle during a transform (0: none)
+    bool degraded = false;                     // a heavy document drawn screen-adaptive (degradedLoad)
     bool help = false;                         // the F1 window is open
     std::array<float, 4> axisGizmo, viewArea;  // window pixels: x, y, w, h
     PanelLayout layout;
@@ -119,6 +121,9 @@ private:
     void addRecent(const std::string& path);
     void drawUi();
     render::RenderOptions viewOptions() const;  // what the 3D view draws this frame
+    // The load of the levels the view would draw, when it is too heavy for a CPU renderer and full
+    // detail is off: the view is then drawn screen-adaptive instead (and says so).
+    std::optional<render::FrameLoad> degradedLoad() const;
 
     // WindowClient: the frame loop (ui/platform/app_window.cpp).
     bool quitRequested() const override { return quit_; }
@@ -249,7 +254,8 @@ private:
     double lastX_ = 0, lastY_ = 0;
     std::array<float, 4> viewArea_{0, 0, 1, 1};  // this frame's interaction pane (window pixels)
     bool showGround_ = true;
-    bool xray_ = false;  // box selection through the surface
+    bool fullDetail_ = false;  // View > Full Detail: a document heavy for the CPU renderer drawn at its own levels
+    bool xray_ = false;        // box selection through the surface
 
     // The frame.
     uint64_t frameCount_ = 0;

@@ -98,6 +98,9 @@ void Editor::toggle(WindowToggle which) {
         case WindowToggle::GroundGrid:
             showGround_ = !showGround_;
             break;
+        case WindowToggle::FullDetail:
+            fullDetail_ = !fullDetail_;
+            break;
         case WindowToggle::JoinTool:
             setJoinTool(!join_.on);
             break;
@@ -130,6 +133,8 @@ bool Editor::toggled(WindowToggle which) const {
             return shaders_.open;
         case WindowToggle::GroundGrid:
             return showGround_;
+        case WindowToggle::FullDetail:
+            return fullDetail_;
         case WindowToggle::JoinTool:
             return join_.on;
         case WindowToggle::CurveTool:

@@ -46,6 +46,7 @@ void TestTrace::write(const EditorSnapshot& e) {
     j["mode"] = int(e.mode);
     j["softOn"] = e.session.soft.on;
     j["softRadiusPx"] = e.softRadiusPixels;
+    j["degraded"] = e.degraded;
     j["undoSteps"] = e.session.history().size();
     j["canUndo"] = e.session.history().canUndo();
     j["hovered"] = e.hovered;

@@ -73,6 +73,18 @@ void Editor::drawViewportOverlays() {
         dl->PopClipRect();
     }
 
+    // A document too heavy for the CPU renderer at its own levels is drawn screen-adaptive: say so.
+    if (const auto load = degradedLoad()) {
+        char text[256];
+        std::snprintf(text, sizeof text,
+                      "Heavy for this CPU renderer: %llu patches, %.1f M vertices a frame at level %d. Drawn screen-adaptive "
+                      "(8 px a segment); View > Full Detail draws it as set.",
+                      (unsigned long long)load->patches, double(load->evaluations) / 1e6, load->segments);
+        const float x = float(sidePanels_.layout().left) + 12.0f, y = ImGui::GetIO().DisplaySize.y - 3.2f * ImGui::GetFontSize();
+        const float wrap = std::max(ImGui::GetIO().DisplaySize.x - float(sidePanels_.layout().right) - x - 12.0f, 100.0f);
+        dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(x, y), IM_COL32(255, 190, 90, 255), text, nullptr, wrap);
+    }
+
     // Mode line.
     if (mode_ == Interaction::Grab || mode_ == Interaction::DragPoints) {
         const std::string hint = "X/Y/Z axis · Shift+X/Y/Z plane · Ctrl snap (" + std::string(snapTargetName(session_.snap)) + ")" +
