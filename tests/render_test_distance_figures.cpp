@@ -9,6 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/gpu/patch_math.h"
+#include "core/io/document_io.hpp"
+#include "render_support.hpp"
 #include "support.hpp"
 
 namespace pw::test {
@@ -64,6 +66,26 @@ TEST(DistanceFigures, DebugCameraDrawsTheCulledPatchesAndTheFrustum) {
         EXPECT_EQ(r.exitCode, 2) << bad << ": " << r.output;
         EXPECT_FALSE(std::filesystem::exists(dir / "x.png")) << bad;
     }
+}
+
+// Export as displayed under a debug camera captures what the frozen camera sees (its levels and
+// culling), not the greyed patches the debug view draws: the same mesh as capturing from it.
+class DebugCameraCapture : public RenderTest {};
+
+TEST_F(DebugCameraCapture, IsTheFrozenCamerasView) {
+    const Document doc = loadDocument(dataDir() / "teapot.bpt");
+    Offscreen off(480, 270, false);
+    off.setDocument(doc);
+    render::RenderOptions frozen = plainOptions(doc, 6, 480.0 / 270.0);
+    frozen.camera = *lookFrom(frozen.camera, {1, -2.5, 1.5}, {1.5, 0, 1.2});
+    render::RenderOptions debug = frozen;
+    debug.lodCamera = frozen.camera;
+    debug.camera = *lookFrom(frozen.camera, {6, -6, 5}, {0, 0, 1});
+    const render::CapturedSurface a = off.capture(frozen), b = off.capture(debug);
+    EXPECT_GT(a.patchesCulled, 8u);
+    EXPECT_EQ(b.patchesCulled, a.patchesCulled);
+    EXPECT_EQ(b.gpuTriangles, a.gpuTriangles);
+    EXPECT_EQ(b.mesh.indices.size(), a.mesh.indices.size());
 }
 
 // The notes' formula measured from the patch centre (`--adaptive notes`) and per edge

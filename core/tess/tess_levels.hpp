@@ -23,11 +23,11 @@ struct FrameLoad {
     int segments = 1;  // the largest level, rounded
 };
 FrameLoad frameLoad(const Document& doc, const TessSettings& tess);
-// Past these a CPU implementation (lavapipe) draws a frame in more than about a fifth of a second
-// (it pays ~15 µs a patch and ~0.1 µs an evaluation vertex): the editor draws such a document
-// screen-adaptive unless asked for full detail.
-inline constexpr uint64_t kCpuInteractivePatches = 8192, kCpuInteractiveEvaluations = 2'000'000;
-inline bool heavyForCpu(const FrameLoad& l) { return l.patches > kCpuInteractivePatches || l.evaluations > kCpuInteractiveEvaluations; }
+// Past this a CPU implementation (lavapipe) draws a frame in more than about a fifth of a second
+// (~0.1 µs an evaluation vertex, besides ~15 µs a patch, which no choice of levels removes): the
+// editor draws such a document screen-adaptive unless asked for full detail.
+inline constexpr uint64_t kCpuInteractiveEvaluations = 2'000'000;
+inline bool heavyForCpu(const FrameLoad& l) { return l.evaluations > kCpuInteractiveEvaluations; }
 
 // Evaluation vertices per vkCmdDraw on CPU implementations: lavapipe's tessellator slows down past
 // a few thousand and renders wrong pixels past 65 535 (DESIGN §4). GPUs get no limit (0).

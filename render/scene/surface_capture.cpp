@@ -40,6 +40,10 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
     Impl& m = *impl_;
     RenderOptions opt = optIn;
     opt.display.shading = ShadingMode::Lit;  // no curvature work in the evaluation shader
+    if (opt.lodCamera) {                     // a debug camera's levels and culling are its frozen camera's: capture as that one sees it
+        opt.camera = *opt.lodCamera;
+        opt.lodCamera.reset();
+    }
     const VkRect2D area = paneRect(opt, target_.extent());
     const FramePlan plan = prepareFrame(opt, area);
     const size_t slot = overlayIndex(plan.variant, plan.levels);

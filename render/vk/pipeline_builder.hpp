@@ -43,11 +43,14 @@ public:
     LazyPipeline(VkDevice device, std::function<VkPipeline()> make) : device_(device), make_(std::move(make)) {}
     ~LazyPipeline() { destroy(); }
     LazyPipeline(LazyPipeline&& o) noexcept
-        : device_(o.device_), handle_(std::exchange(o.handle_, VK_NULL_HANDLE)), make_(std::move(o.make_)) {}
+        : device_(o.device_), handle_(std::exchange(o.handle_, VK_NULL_HANDLE)), make_(std::exchange(o.make_, nullptr)) {}
     LazyPipeline& operator=(LazyPipeline&& o) noexcept {
-        std::swap(device_, o.device_);
-        std::swap(handle_, o.handle_);
-        std::swap(make_, o.make_);
+        if (this != &o) {
+            destroy();
+            device_ = o.device_;
+            handle_ = std::exchange(o.handle_, VK_NULL_HANDLE);
+            make_ = std::exchange(o.make_, nullptr);
+        }
         return *this;
     }
     LazyPipeline(const LazyPipeline&) = delete;

@@ -264,14 +264,19 @@ std::optional<render::FrameLoad> Editor::degradedLoad() const {
     return load;
 }
 
-render::RenderOptions Editor::viewOptions() const {
-    render::RenderOptions o = render::optionsFromDocument(doc_);
-    o.tess = teaching_.shownTess(doc_.tess);  // a preset or sweep shows its own levels
-    if (const auto load = degradedLoad()) {   // too heavy for lavapipe at its own levels: each edge about 8 px instead
+render::RenderOptions Editor::drawnOptions() const {
+    render::RenderOptions o = viewOptions();
+    if (const auto load = degradedLoad()) {  // too heavy for lavapipe at its own levels: each edge about 8 px instead
         o.tess.adaptive = AdaptiveMode::ScreenSpace;
         o.tess.targetPixels = 8.0f;
         o.tess.maxLevel = float(load->segments);
     }
+    return o;
+}
+
+render::RenderOptions Editor::viewOptions() const {
+    render::RenderOptions o = render::optionsFromDocument(doc_);
+    o.tess = teaching_.shownTess(doc_.tess);  // a preset or sweep shows its own levels
     o.camera = cam_;
     o.hoveredPoint = hovered_;
     o.selectedPoint = sel_.points.empty() ? -1 : int(sel_.points.front());
@@ -345,7 +350,7 @@ void Editor::drawFrame() {
     // Step 2: the 3D view into the swapchain image.
     if (!window_.acquire()) return;
     const auto t2 = clock::now();
-    report_.stats = teaching_.renderView(*renderer_, viewOptions(), layout());
+    report_.stats = teaching_.renderView(*renderer_, drawnOptions(), layout());
     teaching_.drawDomainPanes();
     if (screenshotRequested_) {
         screenshotRequested_ = false;

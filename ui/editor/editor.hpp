@@ -120,7 +120,8 @@ private:
     void recoverAutosave();
     void addRecent(const std::string& path);
     void drawUi();
-    render::RenderOptions viewOptions() const;  // what the 3D view draws this frame
+    render::RenderOptions viewOptions() const;   // the 3D view at the document's own levels (export as displayed)
+    render::RenderOptions drawnOptions() const;  // what it draws this frame: a heavy document screen-adaptive
     // The load of the levels the view would draw, when it is too heavy for a CPU renderer and full
     // detail is off: the view is then drawn screen-adaptive instead (and says so).
     std::optional<render::FrameLoad> degradedLoad() const;

@@ -94,7 +94,7 @@ int Editor::runBench(const EditorBenchOptions& opt) {
         acquire.push_back(report_.times.acquire);
         view.push_back(report_.times.view);
         present.push_back(report_.times.present);
-        bareMs.push_back(bare.render(viewOptions()).wallMs);
+        bareMs.push_back(bare.render(drawnOptions()).wallMs);
         moved = std::max(moved, glm::length(doc_.points[size_t(point)] - start));
         residual = std::max(residual, maxConstraintResidual(doc_));
     }

@@ -64,7 +64,7 @@ void Editor::sweepAnimation(const std::string& path) {
         spec.height = std::max(64u, uint32_t(display.y) & ~1u);
         spec.document = &doc_;
         spec.heightMap = documentHeightMap();
-        spec.options = viewOptions();
+        spec.options = drawnOptions();  // what the view shows (a heavy document screen-adaptive, as drawn)
         spec.options.hoveredPoint = spec.options.selectedPoint = -1;
         if (teaching_.viewSplit())
             for (int i = 0; i < teaching_.paneCount; ++i)

@@ -167,6 +167,7 @@ void Editor::drawPaneOverlays(const std::array<float, 4>& pane, bool active) {
     if ((mode_ == Interaction::DragPoints || mode_ == Interaction::Grab) && drag_.soft().on) {
         const glm::dvec3 right(vm.view[0][0], vm.view[1][0], vm.view[2][0]);
         const auto c = proj(drag_.anchor()), e = proj(drag_.anchor() + drag_.soft().radius * right);
+        softRadiusPixels_ = 0.0f;
         if (c && e) {
             const ImVec2 at(float(c->x), float(c->y));
             const float r = float(glm::length(*e - *c));
