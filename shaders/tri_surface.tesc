@@ -120,13 +120,13 @@ void main() {
     float margin = displacementMargin(pd);
     bool cull = ((frame.modes.z & kCullOffscreen) != 0u && offscreen(margin)) ||
                 ((frame.modes.z & kCullBackFaces) != 0u && backfacing(margin)) || (farCulling() && beyondFar(netCentre()));
-    if (cull && showCulled()) {
-        culledPatch = 1.0;
-    } else if (cull) {
-        for (int e = 0; e < 3; ++e) gl_TessLevelOuter[e] = 0.0;
-        gl_TessLevelInner[0] = 0.0;
-    }
     if (cull) {
+        if (showCulled()) {
+            culledPatch = 1.0;
+        } else {
+            for (int e = 0; e < 3; ++e) gl_TessLevelOuter[e] = 0.0;
+            gl_TessLevelInner[0] = 0.0;
+        }
         if (draw.drawMode == kDrawShaded) atomicAdd(counters.culled, 1u);  // once, not again for each overlay
     }
 #endif
