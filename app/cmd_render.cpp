@@ -112,7 +112,8 @@ render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& do
         o.tess.distanceCurve = *c;
     }
     if (!a.distanceExponents.empty()) {
-        const auto v = parseNumbers("render", "--distance-exponents", a.distanceExponents, 2, -8.0, 32.0, "NEAR,FAR exponents");
+        const auto v = parseNumbers("render", "--distance-exponents", a.distanceExponents, 2, limits::kMinDistanceExponent,
+                                    limits::kMaxDistanceExponent, "NEAR,FAR exponents");
         o.tess.distanceExponents = {float(v[0]), float(v[1])};
     }
     if (!a.distanceFrom.empty()) {

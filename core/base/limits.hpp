@@ -30,6 +30,8 @@ inline constexpr int kMaxExportLevel = 256;    // CPU tessellation for export
 // Teaching panel's slider).
 inline constexpr float kMinPresentationText = 1.0f;
 inline constexpr float kMaxPresentationText = 4.0f;
+// Distance mode's pow2 curve: the exponents of 2 at the near and far distances (tess.distanceExponents).
+inline constexpr double kMinDistanceExponent = -8.0, kMaxDistanceExponent = 32.0;
 // A perspective camera's vertical field of view, degrees, in (0, kMaxFovYDeg]: at 180 the
 // projection is singular (it rendered blank).
 inline constexpr double kMaxFovYDeg = 170.0;

@@ -114,8 +114,9 @@ std::vector<Setting> makeSettings() {
         "d) / (d1 - d0))); pow2, 2^lerp(exponent at Near, exponent at Far, s) (the terrain notes)",
         {"linear", "pow2"}, {"linear", "pow2 (2^lerp)"}, [](Document& d) -> DistanceCurve& { return d.tess.distanceCurve; }));
     t.push_back(numberRow("tess.distanceExponents", "Exponents",
-                          "pow2 curve: the level is 2^x at Near and 2^y at Far (the terrain notes: 20, 4)", "", -8.0, 32.0,
-                          SettingWidget::Drag, "%.2f", [](Document& d) -> std::array<float, 2>& { return d.tess.distanceExponents; }));
+                          "pow2 curve: the level is 2^x at Near and 2^y at Far (the terrain notes: 20, 4)", "",
+                          limits::kMinDistanceExponent, limits::kMaxDistanceExponent, SettingWidget::Drag, "%.2f",
+                          [](Document& d) -> std::array<float, 2>& { return d.tess.distanceExponents; }));
     t.push_back(choiceRow<DistanceFrom>(
         "tess.distanceFrom", "Measured from",
         "Where distance is measured: each edge from its midpoint (crack-free), everything from the patch centre (the first notes; "
