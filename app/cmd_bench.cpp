@@ -13,6 +13,7 @@
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,7 +46,7 @@ struct BenchArgs {
     bool msaa = false;
     bool editor = false;            // the editor's frame while dragging, against a bare render
     std::string file;               // the document: offscreen with its own settings, or the editor's (default: the teapot)
-    float level = 16.0f;            // editor: uniform level
+    std::optional<float> level;     // editor: uniform level (default: a --file's own levels, else 16)
     std::string size = "1280x720";  // editor: window size
 };
 
@@ -67,6 +68,7 @@ std::vector<Scene> allScenes() {
         {"teapot64", [] { return builtinTeapot(); }, 64, false, false, false, ""},
         {"grid32", [] { return makePatchGrid(32, 32); }, 16, false, false, false, ""},
         {"grid32-adaptive8px", [] { return makePatchGrid(32, 32); }, 16, true, false, false, "grid32"},
+        {"grid64-adaptive8px", [] { return makePatchGrid(64, 64); }, 16, true, false, false, ""},
         {"grid128", [] { return makePatchGrid(128, 128); }, 16, false, false, true, ""},
         {"terrain", [] { return makeTerrainDocument(); }, 64, true, false, true, "", true},
     };
@@ -81,7 +83,7 @@ double median(std::vector<double> v) {
 struct Measure {
     double wall = 0, submit = 0, gpu = 0;
     uint64_t triangles = 0;
-    uint32_t draws = 0;
+    uint32_t draws = 0, mergedWindows = 0, mergedBlocks = 0;
 };
 
 // Renders each option set `frames` times, alternating between them frame by frame, so that the
@@ -98,6 +100,8 @@ std::vector<Measure> measureInterleaved(render::Renderer& r, const std::vector<r
             gpu[v].push_back(s.gpuMs);
             m[v].triangles = s.triangles();
             m[v].draws = s.draws;
+            m[v].mergedWindows = s.mergedWindows;
+            m[v].mergedBlocks = s.mergedBlocks;
         }
     }
     for (size_t v = 0; v < variants.size(); ++v) {
@@ -274,6 +278,13 @@ int runBench(const BenchArgs& a) {
             variants.push_back(o);
             variants.back().plainMesh = true;
         }
+        // A document with nets on a CPU renderer: also every window its own patch (no merged blocks), in the same run.
+        size_t eachAt = 0;
+        if (cpuDevice && !doc.surfaces.empty()) {
+            eachAt = variants.size();
+            variants.push_back(o);
+            variants.back().mergeWindows = render::MergeWindows::Never;
+        }
         const std::vector<Measure> measured = measureInterleaved(renderer, variants, a.frames);
         const Measure& t = measured[0];
         trianglesByScene[sc.name] = t.triangles;
@@ -316,6 +327,17 @@ int runBench(const BenchArgs& a) {
         else
             std::printf("%-20s %9.2f %9.2f %9.2f %11llu %8.2f %7u | %9.2f %8.2f %7.2f\n", sc.name.c_str(), t.wall, t.submit, t.gpu,
                         (unsigned long long)t.triangles, mtri, t.draws, plainMs, plainMtri, ratio);
+        if (eachAt) {
+            const Measure& e = measured[eachAt];
+            j["merged_windows"] = t.mergedWindows;
+            j["merged_blocks"] = t.mergedBlocks;
+            j["each_window_a_patch"] = {{"wall_ms", e.wall}, {"gpu_ms", e.gpu}, {"triangles", e.triangles}, {"draws", e.draws}};
+            std::printf(
+                "%-20s %9.2f %9.2f %9.2f %11llu %8s %7u |  every window its own patch; above, %u of %zu windows merged into "
+                "%u patches: %.2fx faster\n",
+                "  each window", e.wall, e.submit, e.gpu, (unsigned long long)e.triangles, "", e.draws, t.mergedWindows,
+                expandPatches(doc).size(), t.mergedBlocks, t.wall > 0 ? e.wall / t.wall : 0.0);
+        }
         std::fflush(stdout);
     }
     const render::PipelineCost& cost = *renderer.pipelines().cost;
@@ -345,9 +367,10 @@ void registerBenchCommand(CLI::App& app, Action& run) {
     const auto [cmd, a] = addSubcommand<BenchArgs>(
         app, run, "bench", "Benchmark the GPU tessellation pipeline against a plain pre-tessellated mesh", runBench);
     cmd->add_option("--frames", a->frames, "Measured frames per scene (default 20)");
-    cmd->add_option("--scene", a->scenes,
-                    "Scene(s) to run: teapot16, teapot64, grid32, grid32-adaptive8px, grid128, terrain (only when named: "
-                    "near and far, culling off and on)");
+    cmd->add_option(
+        "--scene", a->scenes,
+        "Scene(s) to run: teapot16, teapot64, grid32, grid32-adaptive8px, grid64-adaptive8px, grid128, terrain (only when named: "
+        "near and far, culling off and on)");
     cmd->add_option("--json", a->json, "Write the results as JSON");
     cmd->add_option("--device", a->device, "Vulkan device: substring of its name");
     cmd->add_flag("--validation", a->validation, "Enable the Vulkan validation layer");
@@ -358,7 +381,10 @@ void registerBenchCommand(CLI::App& app, Action& run) {
     cmd->add_option("--file", a->file,
                     "A document measured offscreen with its own settings (levels, adaptivity, culling, display, camera), against a "
                     "plain mesh where its levels are uniform; with --editor: the document the editor opens (default: the teapot)");
-    cmd->add_option("--level", a->level, "With --editor: the uniform tessellation level (default 16)")->check(CLI::Range(1.0f, 64.0f));
+    cmd->add_option("--level", a->level,
+                    "With --editor: a uniform tessellation level for the drag (default: a --file's own levels, adaptive ones "
+                    "included; the teapot at 16)")
+        ->check(CLI::Range(1.0f, 64.0f));
     cmd->add_option("--size", a->size, "With --editor: the window size, WIDTHxHEIGHT (default 1280x720)");
 }
 

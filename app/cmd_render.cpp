@@ -203,6 +203,12 @@ render::RenderOptions buildRenderOptions(const RenderArgs& a, const Document& do
         o.camera = frameTightly(o.camera, surface, aspect);
     }
     if (!a.debugCamera.empty()) applyDebugCamera(a.debugCamera, doc, aspect, o);
+    if (a.mergeWindows == "never")
+        o.mergeWindows = render::MergeWindows::Never;
+    else if (a.mergeWindows == "always")
+        o.mergeWindows = render::MergeWindows::Always;
+    else if (a.mergeWindows != "auto")
+        bad("--merge-windows", "'" + a.mergeWindows + "' is not one of auto, never, always");
     o.display.normalLength = float(0.03 * modelSize(doc));
     return o;
 }
@@ -426,6 +432,9 @@ void addRenderOptions(CLI::App* cmd, RenderArgs& a) {
     cmd->add_option("--debug-camera", a.debugCamera,
                     "auto | X,Y,Z: draw from another camera while levels and culling stay those of the view: culled patches "
                     "greyed in place, the view's frustum drawn");
+    cmd->add_option("--merge-windows", a.mergeWindows,
+                    "auto (on CPU renderers) | never | always: draw windows of a net that get one power-of-two level "
+                    "several to a patch (the same vertices; lavapipe pays per patch)");
     cmd->add_flag("--cull-far", a.cullFar, "Distance mode: cull patches centred at or beyond FAR (the notes' level 0) instead of level 1");
     cmd->add_option("--target-px", a.targetPx, "Screen-space adaptive: pixels per segment (default 8)");
     cmd->add_option("--max-level", a.maxLevel, "Adaptive: largest level, 1..64");

@@ -17,8 +17,9 @@ struct RenderArgs {
     std::string input, output = "", size = "1280x720", tess, outer, inner, spacing, adaptive, shading, overlay, view, stats, device,
                        targetPx, maxLevel, domain, preset, compare, isolines, combJoin, compareDevice, eye, target, origin, theme, distance;
     std::string distanceCurve, distanceExponents, distanceFrom;  // distance mode's curve and where it measures
-    std::string debugCamera;  // auto or X,Y,Z: draw from there, levels and culling still from the view's camera
-    std::string math;         // render --math U,V: the Bézier math of patch mathPatch drawn over the model
+    std::string debugCamera;            // auto or X,Y,Z: draw from there, levels and culling still from the view's camera
+    std::string mergeWindows = "auto";  // auto | never | always (render/scene/merged_blocks.hpp)
+    std::string math;                   // render --math U,V: the Bézier math of patch mathPatch drawn over the model
     int mathPatch = 0;
     int notesPatch = 0;
     double nearFar = 0.0;  // render --near-far F: the view beside the same view F times farther (0: off)  // render --notes-patch 1|2: the

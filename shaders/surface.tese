@@ -4,6 +4,8 @@
 // (degenerate-edge fallback like core/eval/patch_eval.cpp normalAt), Bézier boundary points from the
 // boundary's four points in canonical order (bit-identical seams), and curvatures.
 // With -DDISPLACE the point moves along the normal by the height map (displacement.glsl).
+// With -DMERGED one patch is a block of Bu x Bv windows of a net at one level (shaders/merged.tesc,
+// render/scene/merged_blocks.hpp): each vertex finds its window and reads that window's points.
 // Built once per partitioning: -DSPACING=equal_spacing|fractional_odd_spacing|fractional_even_spacing,
 // with -DPOINT_MODE for the normal-vector overlay, and with -DFULL_VARYINGS for the shading modes
 // that need UV, patch id or curvatures (lit, normal, zebra and wireframe pass position and normal
@@ -23,9 +25,28 @@ layout(quads, SPACING, ccw) in;
 #endif
 // @teach}
 
+#ifdef MERGED
+// The block (shaders/merged.tesc): its first window, windows per net row, Bu + 256 Bv, the windows' level.
+layout(location = 4) patch in uvec4 blockPatch;
+layout(set = 0, binding = 4, std430) readonly buffer PoolPoints { vec4 poolPoints[]; };    // xyz, weight
+layout(set = 0, binding = 5, std430) readonly buffer WindowIndices { uint windowIndices[]; };  // 16 a window
+vec4 windowNet[16];  // this vertex's window, homogeneous (core/gpu/rational_math.h)
+uint windowFlips;    // bit e: boundary e runs against its canonical direction
+float windowScale;   // the window net's largest extent
+vec4 cph(int s) { return windowNet[s]; }
+uint edgeFlips() { return windowFlips; }
+float netScale() { return windowScale; }
+float culled() { return 0.0; }  // the renderer merges no window that the control shader would cull
+#else
 layout(location = 1) patch in float netScalePatch;  // largest extent of the net (control shader)
 layout(location = 2) patch in uint edgeFlipPatch;    // bit e: evaluate boundary e reversed (control shader)
 layout(location = 3) patch in float culledPatch;  // 1: culled, drawn greyed for a debug camera (control shader)
+// Control points arrive homogeneous (core/gpu/rational_math.h): w·P and w − 1.
+vec4 cph(int s) { return gl_in[s].gl_Position; }
+uint edgeFlips() { return edgeFlipPatch; }
+float netScale() { return netScalePatch; }
+float culled() { return culledPatch; }
+#endif
 #ifdef CAPTURE  // export as displayed: position, normal, UV and patch id into transform feedback (36 bytes a vertex)
 layout(xfb_buffer = 0, xfb_stride = 36) out;
 #define XFB(offset) , xfb_buffer = 0, xfb_offset = offset
@@ -44,9 +65,7 @@ layout(location = 3 XFB(32)) flat out uint outPatch;
 layout(location = 4) out vec2 outCurv;  // Gaussian, mean
 #endif
 
-// Control points arrive homogeneous (core/gpu/rational_math.h): w·P and w − 1.
-vec4 cph(int s) { return gl_in[s].gl_Position; }
-vec3 cp(int s) { return rationalPoint(gl_in[s].gl_Position); }
+vec3 cp(int s) { return rationalPoint(cph(s)); }
 
 void weights(float t, out vec4 w, out vec4 dw, out vec4 ddw) {
     if (draw.basisKind == kBasisBezier) {  // Bernstein from t and s = 1 - t (core/gpu/patch_math.h)
@@ -105,7 +124,7 @@ Derivs evalAt(float u, float v, bool second) {
 // e in quad-domain order (u0, v0, u1, v1). The points are picked with constant indices and
 // selects: indexing gl_in[] by a per-vertex edge number is very slow on lavapipe.
 vec3 boundaryPoint(int e, float t) {
-    bool rev = (edgeFlipPatch & (1u << uint(e))) != 0u;
+    bool rev = (edgeFlips() & (1u << uint(e))) != 0u;
     bool alongU = (e & 1) == 1;  // v0, v1: a row of the net; u0, u1: a column
     bool far = e >= 2;           // u1 (column 3) or v1 (row 3)
     vec4 q0 = alongU ? (far ? cph(12) : cph(0)) : (far ? cph(3) : cph(0));
@@ -116,7 +135,7 @@ vec3 boundaryPoint(int e, float t) {
 }
 
 vec3 normalAt(float u, float v, Derivs d) {
-    float scale = netScalePatch;
+    float scale = netScale();
     float s2 = scale * scale;
     // Common case first: du x dv is well defined away from collapsed edges.
     vec3 n = cross(d.du, d.dv);
@@ -137,8 +156,44 @@ vec3 normalAt(float u, float v, Derivs d) {
     return len > 0.0 ? n / len : vec3(0.0, 0.0, 1.0);
 }
 
+#ifdef MERGED
+// Loads window w's points and, as the control shader computes them for a patch of its own, its
+// boundaries' directions and its net's extent.
+void loadWindow(uint w) {
+    uint idx[16];
+    for (int s = 0; s < 16; ++s) {
+        idx[s] = windowIndices[w * 16u + uint(s)];
+        vec4 p = poolPoints[idx[s]];
+        windowNet[s] = homogeneousPoint(p.xyz, p.w);
+    }
+    windowFlips = 0u;
+    for (int e = 0; e < 4; ++e)
+        if (edgeReversed(idx[quadEdgeSlot(e, 0, 0)], idx[quadEdgeSlot(e, 1, 0)], idx[quadEdgeSlot(e, 2, 0)], idx[quadEdgeSlot(e, 3, 0)]))
+            windowFlips |= 1u << uint(e);
+    vec3 lo = cp(0), hi = cp(0);
+    for (int i = 1; i < 16; ++i) { lo = min(lo, cp(i)); hi = max(hi, cp(i)); }
+    windowScale = max(max(hi.x - lo.x, hi.y - lo.y), max(hi.z - lo.z, 1e-20));
+}
+#endif
+
 void main() {
+#ifdef MERGED
+    // The block's domain is Bu x Bv windows: scaling by Bu and Bv (powers of two) and taking the
+    // window's corner off are exact, so each window gets the parameters its own patch at level n
+    // would get (powers of two: the tessellator's i / (B n) is exactly i' / n).
+    uint blockU = blockPatch.z & 255u, blockV = blockPatch.z >> 8u;
+    float bu = gl_TessCoord.x * float(blockU), bv = gl_TessCoord.y * float(blockV);
+    uint col = min(uint(bu), blockU - 1u), row = min(uint(bv), blockV - 1u);
+    uint window = blockPatch.x + row * blockPatch.y + col;
+    loadWindow(window);
+    float u = bu - float(col), v = bv - float(row);
+    vec2 windowLevels = vec2(float(blockPatch.w));
+    uint patchId = window;
+#else
     float u = gl_TessCoord.x, v = gl_TessCoord.y;  // @teach= main: where the tessellator put this vertex
+    vec2 windowLevels = vec2(gl_TessLevelInner[0], gl_TessLevelInner[1]);
+    uint patchId = draw.patchBase + uint(gl_PrimitiveID);
+#endif
 #ifdef FULL_VARYINGS
     bool curvature = frame.modes.w == kShadingGaussCurvature || frame.modes.w == kShadingMeanCurvature;
 #else
@@ -153,26 +208,26 @@ void main() {
     }
     vec3 n = normalAt(u, v, d);  // @teach=
 #ifdef DISPLACE
-    displaceSurface(p, n, d.du, d.dv, vec2(u, v), patches[draw.patchBase + uint(gl_PrimitiveID)]);
+    displaceSurface(p, n, d.du, d.dv, vec2(u, v), patches[patchId]);
 #endif
 
 #if defined(POINT_MODE) || defined(CAPTURE)
     outPos = p;
 #endif
     outNormal = n;
-    outCulled = culledPatch;
-    outWire = wireOpacity(segmentSpan(segmentPixels(p, d.du, gl_TessLevelInner[0], frame.viewProj, frame.viewport.xy),
-                                      segmentPixels(p, d.dv, gl_TessLevelInner[1], frame.viewProj, frame.viewport.xy)));
+    outCulled = culled();
+    outWire = wireOpacity(segmentSpan(segmentPixels(p, d.du, windowLevels.x, frame.viewProj, frame.viewport.xy),
+                                      segmentPixels(p, d.dv, windowLevels.y, frame.viewProj, frame.viewport.xy)));
 #ifdef FULL_VARYINGS
     // curvatures from the fundamental forms (curvature shading only)
     vec2 curv = vec2(0.0);
     if (curvature) {
         curv = gaussMeanCurvature(d.du, d.dv, d.duu, d.duv, d.dvv, n);
     } else if (frame.modes.w == kShadingLevel) {  // the level the control shader chose for this patch
-        curv = vec2(max(gl_TessLevelInner[0], gl_TessLevelInner[1]), 0.0);
+        curv = vec2(max(windowLevels.x, windowLevels.y), 0.0);
     }
     outUV = vec2(u, v);
-    outPatch = draw.patchBase + uint(gl_PrimitiveID);
+    outPatch = patchId;
     outCurv = curv;
 #endif
     gl_Position = frame.viewProj * vec4(p, 1.0);  // @teach=

@@ -57,14 +57,8 @@ float raiseForDisplacement(float level, vec3 p[4], float detail, float texels, P
     return max(level, d);
 }
 
-// Plane k (0..5: left, right, top, bottom, near, far) of the deciding camera's frustum in world
-// space: a point p is inside when dot(plane, vec4(p, 1)) >= 0.
-vec4 frustumPlane(int k) {
-    mat4 m = frame.lodViewProj;
-    vec4 rx = vec4(m[0][0], m[1][0], m[2][0], m[3][0]), ry = vec4(m[0][1], m[1][1], m[2][1], m[3][1]);
-    vec4 rz = vec4(m[0][2], m[1][2], m[2][2], m[3][2]), rw = vec4(m[0][3], m[1][3], m[2][3], m[3][3]);
-    return k == 0 ? rw + rx : k == 1 ? rw - rx : k == 2 ? rw + ry : k == 3 ? rw - ry : k == 4 ? rz : rw - rz;
-}
+// Plane k of the deciding camera's frustum (core/gpu/patch_math.h frustumPlane).
+vec4 frustumPlane(int k) { return frustumPlane(frame.lodViewProj, k); }
 #endif
 
 // DESIGN §3 rounding under this frame's partitioning.

@@ -60,6 +60,9 @@ struct PatchData {
     vec4 texels PW_INIT(0.0f);
 };
 
+// bindings 4-6, storage, read by the merged blocks of net windows only (shaders/merged.tesc,
+// surface.tese -DMERGED): the pool (xyz, weight), the windows' 16 pool indices, this frame's blocks.
+
 // binding 2: statistics the shaders write (patches culled this frame).
 PW_BLOCK(layout(set = 0, binding = 2, std430) buffer Counters, GpuCounters) {
     uint culled;

@@ -184,6 +184,14 @@ PW_FN float adaptiveEdgeLevel(vec3 p0, vec3 p1, vec3 p2, vec3 p3, uint mode, flo
     return maxLevel * clamp(2.0f * length(side) / chord, 0.0f, 1.0f);
 }
 
+// Plane k (0..5: left, right, top, bottom, near, far) of the frustum of view-projection m, in world
+// space: a point p is inside when dot(plane, vec4(p, 1)) >= 0 (Vulkan clip space, depth 0..w).
+PW_FN vec4 frustumPlane(mat4 m, int k) {
+    vec4 rx = vec4(m[0][0], m[1][0], m[2][0], m[3][0]), ry = vec4(m[0][1], m[1][1], m[2][1], m[3][1]);
+    vec4 rz = vec4(m[0][2], m[1][2], m[2][2], m[3][2]), rw = vec4(m[0][3], m[1][3], m[2][3], m[3][3]);
+    return k == 0 ? rw + rx : k == 1 ? rw - rx : k == 2 ? rw + ry : k == 3 ? rw - ry : k == 4 ? rz : rw - rz;
+}
+
 // Pixels that one of `level` segments along the derivative d (a whole parameter's change) at p spans
 // on a viewport of `viewport` pixels: the projection's derivative in that direction, over the level.
 // Behind the eye: large (no fading).

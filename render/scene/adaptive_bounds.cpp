@@ -10,9 +10,24 @@
 
 namespace pw::render {
 
+namespace {
+
+// The segments an edge of raw level `l` gets, when the control shader's float arithmetic (which may
+// differ from this in the last bits) cannot round it differently; 0 when it could.
+int certainSegments(float l, Spacing spacing, float maxLevel) {
+    if (!std::isfinite(l)) return 0;
+    const float slack = 1e-3f * std::max(1.0f, l);
+    const int lo = roundedSegments(std::clamp(l - slack, 1.0f, maxLevel), spacing);
+    const int hi = roundedSegments(std::clamp(l + slack, 1.0f, maxLevel), spacing);
+    return lo == hi ? lo : 0;
+}
+
+}  // namespace
+
 std::vector<uint8_t> adaptiveLevelBounds(const SurfaceScene& s, const TessSettings& tess, const ViewMatrices& vm, float viewportW,
-                                         float viewportH, float maxLevel) {
+                                         float viewportH, float maxLevel, std::vector<uint8_t>* uniform) {
     std::vector<uint8_t> out(s.windowCount, uint8_t(roundedSegments(maxLevel, tess.spacing)));
+    if (uniform) uniform->assign(s.windowCount, 0);
     if (tess.adaptive == AdaptiveMode::None) return out;
     std::vector<uint32_t> kind(s.windowCount, 0);
     for (const BasisRun& r : s.runs)
@@ -24,6 +39,7 @@ std::vector<uint8_t> adaptiveLevelBounds(const SurfaceScene& s, const TessSettin
         const uint32_t* idx = &s.cpuIndices[size_t(w) * 16];
         const int depth = kind[w] == gpu::kBasisBezier ? 0 : 1;  // as the control shader's edgeSlot
         float level = 1.0f;
+        int same = -1;  // the segments every edge certainly gets; 0 when they differ or are uncertain
         for (int e = 0; e < 4; ++e) {
             uint32_t pool[4];
             for (int k = 0; k < 4; ++k) pool[k] = idx[gpu::quadEdgeSlot(e, k, depth)];
@@ -34,6 +50,10 @@ std::vector<uint8_t> adaptiveLevelBounds(const SurfaceScene& s, const TessSettin
                 gpu::adaptiveEdgeLevel(p[0], p[1], p[2], p[3], uint32_t(tess.adaptive), maxLevel, vm.eye, tess.distanceNear,
                                        tess.distanceFar, uint32_t(tess.distanceCurve), exps, vm.viewProj, viewport, tess.targetPixels);
             level = std::max(level, std::clamp(l, 1.0f, maxLevel));
+            if (uniform) {
+                const int n = certainSegments(l, tess.spacing, maxLevel);
+                same = same < 0 || same == n ? n : 0;
+            }
         }
         if (fromCentre) {  // the control shader's netCentre: the mean of the 16 control points
             glm::vec3 c(0.0f);
@@ -41,9 +61,12 @@ std::vector<uint8_t> adaptiveLevelBounds(const SurfaceScene& s, const TessSettin
             const float l = gpu::distanceLevel(glm::distance(vm.eye, c / 16.0f), maxLevel, tess.distanceNear, tess.distanceFar,
                                                uint32_t(tess.distanceCurve), exps);
             level = std::max(level, std::clamp(l, 1.0f, maxLevel));
+            same = 0;  // the inner levels come from elsewhere than the edges
         }
         level = std::max(level, s.overrideLevel[w]);
         out[w] = uint8_t(std::min(64, roundedSegments(level, tess.spacing) + 1));
+        // Inner levels are the larger opposite edges': equal edges make one level throughout.
+        if (uniform && s.overrideLevel[w] == 0.0f && same > 0) (*uniform)[w] = uint8_t(same);
     }
     return out;
 }

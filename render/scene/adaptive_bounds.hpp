@@ -13,7 +13,9 @@
 namespace pw::render {
 
 // Per window: an upper bound of its outer and inner segments (1..64), +1 for float differences.
+// With `uniform`: per window, the segments of all six levels when they are certainly one number (the
+// control shader's float arithmetic cannot round any edge otherwise; no override), else 0.
 std::vector<uint8_t> adaptiveLevelBounds(const SurfaceScene& s, const TessSettings& tess, const ViewMatrices& vm, float viewportW,
-                                         float viewportH, float maxLevel);
+                                         float viewportH, float maxLevel, std::vector<uint8_t>* uniform = nullptr);
 
 }  // namespace pw::render

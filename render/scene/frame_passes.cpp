@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/scene/merged_blocks.hpp"
 #include "render/scene/overlays.hpp"
 #include "render/scene/plain_mesh.hpp"
 #include "render/scene/surface_scene.hpp"
@@ -210,9 +211,17 @@ void FramePasses::surface(Frame& f) {
         f.stats.draws = m.mesh.indexCount ? 1 : 0;
         return;
     }
+    const MergedBlocks& merged = f.plan.merged;
     vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, f.fam.surface[surfaceSlot(f)]);
-    f.stats.draws = recordSurfaceDraws(f.cmd, f.pipes.layout, m.scene, f.plan.perDraw, f.push, f.plan.bounds(), f.plan.budget);
+    f.stats.draws = recordSurfaceDraws(f.cmd, f.pipes.layout, m.scene, f.plan.perDraw, f.push, f.plan.bounds(), f.plan.budget,
+                                       merged.windows ? &merged.merged : nullptr);
     f.stats.patches = m.scene.windowCount;
+    if (merged.windows) {  // windows at one level, several to a patch
+        vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, f.pipes.merged);
+        f.stats.draws += recordMergedBlocks(f.cmd, f.pipes.layout, m.scene, merged, f.push, f.plan.budget);
+        f.stats.mergedWindows = merged.windows;
+        f.stats.mergedBlocks = uint32_t(merged.blocks.size());
+    }
     if (m.scene.triangleCount) {  // Bézier triangles after the windows, inside the same statistics
         vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, f.fam.triSurface[surfaceSlot(f)]);
         f.stats.draws += recordTriangleDraws(f.cmd, f.pipes.layout, m.scene, f.plan.perDraw, f.push);

@@ -161,16 +161,17 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
         VK_CHECK(vkCreatePipelineCache(d, &pc, nullptr, &set.cache));
     }
 
-    // Descriptor set layout: 0 frame uniforms, 1 per-patch levels, 2 counters, 3 the height map.
+    // Descriptor set layout: 0 frame uniforms, 1 per-patch levels, 2 counters, 3 the height map; the
+    // merged blocks' 4 pool, 5 window indices, 6 blocks.
     const VkShaderStageFlags all = VK_SHADER_STAGE_ALL_GRAPHICS;
-    VkDescriptorSetLayoutBinding b[4] = {
-        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, all, nullptr},
-        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr},
-        {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr},
-        {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, all, nullptr},
+    VkDescriptorSetLayoutBinding b[7] = {
+        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, all, nullptr}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr},
+        {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr}, {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, all, nullptr},
+        {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr}, {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr},
+        {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr},
     };
     VkDescriptorSetLayoutCreateInfo dl{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    dl.bindingCount = 4;
+    dl.bindingCount = 7;
     dl.pBindings = b;
     VK_CHECK(vkCreateDescriptorSetLayout(d, &dl, nullptr, &set.setLayout));
     VkPushConstantRange pr{all, 0, sizeof(gpu::DrawPush)};
@@ -233,6 +234,17 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
         md.vertexLayout = v == int(VaryingsVariant::Full) ? 1 : 3;
         md.stages = {{VK_SHADER_STAGE_VERTEX_BIT, mod(spirv::mesh_vert(size_t(v)))}, {VK_SHADER_STAGE_FRAGMENT_BIT, frag[v]}};
         set.mesh[v] = targets.lazy(md);
+    }
+    {  // merged blocks: one control point (the block's index), no vertex buffer; lean varyings
+        PipelineDesc pd;
+        pd.tess = true;
+        pd.patchControlPoints = 1;
+        pd.vertexLayout = -1;
+        pd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, mod(spirv::merged_vert())},
+                     {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, mod(spirv::merged_tesc())},
+                     {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::merged_tese())},
+                     {VK_SHADER_STAGE_FRAGMENT_BIT, frag[size_t(VaryingsVariant::Lean)]}};
+        set.merged = targets.lazy(pd);
     }
     {
         VkShaderModule gv = mod(spirv::grid_vert());
@@ -312,6 +324,7 @@ void PipelineSet::release() {
     kill(set.combs);
     kill(set.isoCombs);
     for (auto& p : set.mesh) kill(p);
+    kill(set.merged);
     kill(set.gridLines);
     kill(set.gridPoints);
     kill(set.colorLines);

@@ -61,8 +61,9 @@ struct SurfacePipelines {
 
 // The handles of every pipeline of the renderer (PipelineSet owns them).
 struct PipelineHandles {
-    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;  // 0: frame UBO, 1: patch data, 2: counters, 3: height map
-    VkPipelineLayout layout = VK_NULL_HANDLE;          // + gpu::DrawPush push constants
+    // 0: frame UBO, 1: patch data, 2: counters, 3: height map, 4: pool, 5: window indices, 6: merged blocks
+    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+    VkPipelineLayout layout = VK_NULL_HANDLE;  // + gpu::DrawPush push constants
     // The tessellated surfaces, plain (tess[0]) and displaced by the height map (tess[1], described
     // on first use: ensureDisplacedPipelines).
     std::array<SurfacePipelines, 2> tess{};
@@ -72,10 +73,12 @@ struct PipelineHandles {
     // Curvature combs (shaders/comb.*): on Bézier curves and on windows' isocurves; equal spacing.
     LazyPipeline combs, isoCombs;
     std::array<LazyPipeline, kVaryingsVariants> mesh{};  // plain pre-tessellated triangles
-    LazyPipeline gridLines;                              // control net lines (over everything)
-    LazyPipeline gridPoints;                             // control points
-    LazyPipeline colorLines;                             // coloured lines, depth-tested (boundaries)
-    LazyPipeline groundLines;                            // coloured translucent lines, depth-tested (the editor's ground grid)
+    // Blocks of Bu x Bv net windows at one level, one patch each (render/scene/merged_blocks.hpp); lean varyings.
+    LazyPipeline merged;
+    LazyPipeline gridLines;    // control net lines (over everything)
+    LazyPipeline gridPoints;   // control points
+    LazyPipeline colorLines;   // coloured lines, depth-tested (boundaries)
+    LazyPipeline groundLines;  // coloured translucent lines, depth-tested (the editor's ground grid)
     VkPipelineCache cache = VK_NULL_HANDLE;
     std::filesystem::path cacheFile;
     VkFormat colorFormat = VK_FORMAT_UNDEFINED, depthFormat = VK_FORMAT_UNDEFINED;  // what the pipelines draw into

@@ -16,6 +16,7 @@
 #include "core/tess/tess_levels.hpp"
 #include "render/scene/adaptive_bounds.hpp"
 #include "render/scene/frame_passes.hpp"
+#include "render/scene/merged_blocks.hpp"
 #include "render/scene/overlays.hpp"
 #include "render/scene/plain_mesh.hpp"
 #include "render/scene/shader_variants.hpp"
@@ -48,26 +49,25 @@ VkRect2D paneRect(const RenderOptions& opt, VkExtent2D extent) {
 namespace {
 
 void writeDescriptors(Device& dev, VkDescriptorSet set, const Buffer& ubo, const Buffer& patches, const Buffer& counters,
-                      const HeightTexture& height) {
-    VkDescriptorBufferInfo infos[3] = {
-        {ubo.buffer, 0, VK_WHOLE_SIZE}, {patches.buffer, 0, VK_WHOLE_SIZE}, {counters.buffer, 0, VK_WHOLE_SIZE}};
-    VkWriteDescriptorSet w[4];
-    for (uint32_t i = 0; i < 3; ++i) {
+                      const HeightTexture& height, const std::array<const Buffer*, 3>& merged) {
+    // 0 frame uniforms, 1 patch data, 2 counters, 4..6 the merged blocks' pool, window indices and blocks.
+    const Buffer* storage[7] = {&ubo, &patches, &counters, nullptr, merged[0], merged[1], merged[2]};
+    VkDescriptorBufferInfo infos[7];
+    VkWriteDescriptorSet w[7];
+    for (uint32_t i = 0; i < 7; ++i) {
         w[i] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         w[i].dstSet = set;
         w[i].dstBinding = i;
         w[i].descriptorCount = 1;
+        if (i == 3) continue;
+        infos[i] = {storage[i]->buffer, 0, VK_WHOLE_SIZE};
         w[i].descriptorType = i == 0 ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
         w[i].pBufferInfo = &infos[i];
     }
     const VkDescriptorImageInfo image{height.sampler, height.image.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    w[3] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    w[3].dstSet = set;
-    w[3].dstBinding = 3;
-    w[3].descriptorCount = 1;
     w[3].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     w[3].pImageInfo = &image;
-    vkUpdateDescriptorSets(dev.device(), 4, w, 0, nullptr);
+    vkUpdateDescriptorSets(dev.device(), 7, w, 0, nullptr);
 }
 
 }  // namespace
@@ -81,8 +81,9 @@ Renderer::Renderer(Device& dev, RenderTarget& target) : dev_(dev), target_(targe
     m.scene.patchData = uploadStatic(dev, std::vector<gpu::PatchData>(1), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
 
     m.height = uploadHeightTexture(dev, nullptr);
+    m.placeholder = uploadStatic(dev, std::vector<uint32_t>(4, 0u), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     VkDescriptorPoolSize sizes[3] = {
-        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2}, {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
+        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5}, {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
     VkDescriptorPoolCreateInfo dp{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     dp.maxSets = 1;
     dp.poolSizeCount = 3;
@@ -93,7 +94,7 @@ Renderer::Renderer(Device& dev, RenderTarget& target) : dev_(dev), target_(targe
     ai.descriptorSetCount = 1;
     ai.pSetLayouts = &pipes_.setLayout;
     VK_CHECK(vkAllocateDescriptorSets(dev.device(), &ai, &m.set));
-    writeDescriptors(dev, m.set, m.frameUbo, m.scene.patchData, m.counters, m.height);
+    writeDescriptors(dev, m.set, m.frameUbo, m.scene.patchData, m.counters, m.height, m.mergedBuffers());
 
     m.queries = std::make_unique<FrameQueries>(dev);
     m.cmd = OwnedCommandBuffer(dev.device(), dev.commandPool());
@@ -123,7 +124,10 @@ void Renderer::setDocument(const Document& doc, std::shared_ptr<const HeightMap>
     m.displace = {0.0f, 0.0f, ds.mapping == DisplacementMapping::Planar ? 1.0f : 0.0f, doc.camera.zUp ? 1.0f : 0.0f};
     m.planar = {float(rect[0]), float(rect[1]), float(1.0 / rect[2]), float(1.0 / rect[3])};
     if (m.displaced) ensureDisplacedPipelines(dev_, pipes_);
-    writeDescriptors(dev_, m.set, m.frameUbo, m.scene.patchData, m.counters, m.height);
+    // Merged blocks: at most one per 2 windows, written each frame that merges.
+    m.blocks =
+        createBuffer(dev_, sizeof(glm::uvec4) * (m.scene.windowCount / 2 + 1), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::HostWritten);
+    writeDescriptors(dev_, m.set, m.frameUbo, m.scene.patchData, m.counters, m.height, m.mergedBuffers());
     modelSize_ = pw::modelSize(doc);
 }
 
@@ -141,6 +145,19 @@ void Renderer::updatePoints(const std::vector<Vec3>& points, const std::vector<u
     writePoolPositions(points, valid, static_cast<float*>(s.pool.mapped));  // the weights stay: a drag moves points only
     for (uint32_t i : valid)
         if (i < s.cpuPoints.size()) s.cpuPoints[i] = glm::vec3(points[i]);
+}
+
+bool Renderer::mergingWanted(const RenderOptions& opt) const {
+    const Impl& m = *impl_;
+    const bool device = opt.mergeWindows == MergeWindows::Always ||
+                        (opt.mergeWindows == MergeWindows::Auto && dev_.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU);
+    const DisplaySettings& ds = opt.display;
+    const TessSettings& ts = opt.tess;
+    // A vertex on a seam inside a block is evaluated on one of its two windows, so only what is
+    // continuous there may be drawn: position and normal (lean varyings), not UV, patch id or curvature.
+    return device && !m.scene.nets.empty() && !m.displaced && !opt.plainMesh && !opt.lodCamera && !ds.showWireframe && !ds.showNormals &&
+           varyingsVariant(ds.shading) == VaryingsVariant::Lean &&
+           !(ts.adaptive == AdaptiveMode::Distance && ts.distanceFrom != DistanceFrom::Edges);
 }
 
 Renderer::FramePlan Renderer::prepareFrame(const RenderOptions& opt, VkRect2D area) {
@@ -207,8 +224,17 @@ Renderer::FramePlan Renderer::prepareFrame(const RenderOptions& opt, VkRect2D ar
     plan.budget = dev_.drawVertexBudget();
     plan.perDraw = patchesPerDraw(maxSegments(ts, m.scene.overrideMax, maxLevel), plan.budget);
     // (Displaced windows batch by the worst case: the map's detail may raise any edge to the maximum.)
+    const bool merge = mergingWanted(opt);
+    std::vector<uint8_t> uniform;
     if (ts.adaptive != AdaptiveMode::None && !m.displaced)
-        plan.levelBounds = adaptiveLevelBounds(m.scene, ts, lod, float(ext.width), float(ext.height), maxLevel);
+        plan.levelBounds = adaptiveLevelBounds(m.scene, ts, lod, float(ext.width), float(ext.height), maxLevel, merge ? &uniform : nullptr);
+    else if (merge)
+        uniform = settingsWindowLevels(m.scene, ts, maxLevel);
+    if (merge) {
+        plan.merged = planMergedBlocks(m.scene, uniform, ts, lod, float(dev_.caps().maxTessLevel));
+        if (!plan.merged.blocks.empty())
+            std::memcpy(m.blocks.mapped, plan.merged.blocks.data(), sizeof(glm::uvec4) * plan.merged.blocks.size());
+    }
     return plan;
 }
 

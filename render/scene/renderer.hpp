@@ -18,6 +18,10 @@
 
 namespace pw::render {
 
+// Whether windows of a net at one level are drawn several to a patch (render/scene/merged_blocks.hpp):
+// by default on CPU renderers, where every patch costs the same whatever its level.
+enum class MergeWindows { Auto, Never, Always };
+
 struct RenderOptions {
     TessSettings tess;
     DisplaySettings display;  // shading, overlays (showGrid, showWireframe, showNormals, showBoundaries)
@@ -49,6 +53,7 @@ struct RenderOptions {
     // frustum is drawn (out to `lodFrustumDepth`, or the far distance, or past the model).
     std::optional<Camera> lodCamera;
     double lodFrustumDepth = 0.0;
+    MergeWindows mergeWindows = MergeWindows::Auto;
 };
 
 // The pane rectangle `opt` draws into, clamped to a target of `extent` (the whole target when
@@ -98,6 +103,7 @@ private:
     struct FramePlan;
     // Writes the frame uniforms for `opt` drawn into `area` and plans the draws.
     FramePlan prepareFrame(const RenderOptions& opt, VkRect2D area);
+    bool mergingWanted(const RenderOptions& opt) const;  // the frame may merge windows (render/scene/merged_blocks.hpp)
     Device& dev_;
     RenderTarget& target_;
     PipelineSet pipes_;

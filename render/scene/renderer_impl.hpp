@@ -9,6 +9,7 @@
 
 #include "core/model/camera_math.hpp"
 #include "render/scene/height_texture.hpp"
+#include "render/scene/merged_blocks.hpp"
 #include "render/scene/overlays.hpp"
 #include "render/scene/pipelines.hpp"
 #include "render/scene/plain_mesh.hpp"
@@ -47,6 +48,13 @@ struct Renderer::Impl {
     bool displaced = false;
     glm::vec4 displace{0.0f}, planar{0.0f};
     std::vector<Join> joins;  // the document's, for the curvature graph across a join (windows = patch indices)
+    Buffer blocks;            // this frame's merged blocks (render/scene/merged_blocks.hpp), HostWritten
+    Buffer placeholder;       // bound where the scene has no buffer yet (no windows)
+    // Bindings 4..6: the pool and window indices as storage, the blocks.
+    std::array<const Buffer*, 3> mergedBuffers() const {
+        const auto or_ = [&](const Buffer& b) { return b.buffer ? &b : &placeholder; };
+        return {or_(scene.pool), or_(scene.indices), or_(blocks)};
+    }
 };
 
 // Submits `cmd` to the device's queue and waits for it on `fence` (reset first).
@@ -68,6 +76,7 @@ struct Renderer::FramePlan {
     uint32_t budget = 0, perDraw = 1;   // evaluation vertices per draw (0: no limit), windows per draw
     std::vector<uint8_t> levelBounds;   // adaptive: batch by this frame's levels, not by the worst case
     std::optional<ViewMatrices> lodVm;  // a debug camera's (RenderOptions::lodCamera), whose frustum is drawn
+    MergedBlocks merged;                // windows drawn several to a patch (render/scene/merged_blocks.hpp)
     double frustumDepth = 0.0;
     const std::vector<uint8_t>* bounds() const { return levelBounds.empty() ? nullptr : &levelBounds; }
 };

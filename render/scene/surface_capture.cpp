@@ -40,6 +40,7 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
     Impl& m = *impl_;
     RenderOptions opt = optIn;
     opt.display.shading = ShadingMode::Lit;  // no curvature work in the evaluation shader
+    opt.mergeWindows = MergeWindows::Never;  // every window its own patch: the capture pipelines read 16 points a patch
     if (opt.lodCamera) {                     // a debug camera's levels and culling are its frozen camera's: capture as that one sees it
         opt.camera = *opt.lodCamera;
         opt.lodCamera.reset();

@@ -59,6 +59,18 @@ SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc, const HeightMa
         }
         ++s.runs.back().count;
     }
+    for (size_t w = 0; w < inst.size();) {  // each net's windows: row after row (expandPatches)
+        size_t end = w;
+        while (end < inst.size() && inst[end].surface >= 0 && inst[end].surface == inst[w].surface) ++end;
+        if (end == w) {
+            ++w;
+            continue;
+        }
+        uint32_t cols = 0;
+        while (w + cols < end && inst[w + cols].windowRow == inst[w].windowRow) ++cols;
+        s.nets.push_back({uint32_t(w), uint32_t((end - w) / cols), cols});
+        w = end;
+    }
     // Bézier triangles after the windows: indices in their own buffer, overrides appended.
     std::vector<uint32_t> triIdx;
     triIdx.reserve(doc.triangles.size() * 10);
@@ -78,8 +90,8 @@ SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc, const HeightMa
     s.cpuIndices = idx;
     s.pointCount = uint32_t(doc.points.size());
     s.windowCount = uint32_t(inst.size());
-    s.pool = uploadHostWritten(dev, pts, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-    s.indices = uploadStatic(dev, idx, VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    s.pool = uploadHostWritten(dev, pts, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    s.indices = uploadStatic(dev, idx, VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     s.patchData = uploadStatic(dev, pd, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     const std::vector<bool> used = usedPointMask(doc);
     std::vector<uint32_t> shown;
@@ -109,27 +121,31 @@ uint32_t recordWindowDraw(VkCommandBuffer cmd, VkPipelineLayout layout, const Su
 }
 
 uint32_t recordSurfaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t perDraw, gpu::DrawPush push,
-                            const std::vector<uint8_t>* levels, uint32_t vertexBudget) {
+                            const std::vector<uint8_t>* levels, uint32_t vertexBudget, const std::vector<uint8_t>* skip) {
     if (s.windowCount == 0) return 0;
     const VkDeviceSize zero = 0;
     vkCmdBindVertexBuffers(cmd, 0, 1, s.pool.buffer.ptr(), &zero);
     vkCmdBindIndexBuffer(cmd, s.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
     uint32_t draws = 0;
     perDraw = std::max(perDraw, 1u);
+    const auto skipped = [&](uint32_t w) { return skip && (*skip)[w]; };
     for (const BasisRun& run : s.runs) {
         const uint32_t end = run.first + run.count;
         for (uint32_t first = run.first, n = 0; first < end; first += n) {
-            if (levels && vertexBudget != 0) {  // grow the batch while it stays within the evaluation-vertex budget
-                uint32_t maxL = 0;
-                n = 0;
-                while (first + n < end) {
+            if (skipped(first)) {
+                n = 1;
+                continue;
+            }
+            // Grow the batch over windows not skipped: within the evaluation-vertex budget, or perDraw of them.
+            uint32_t maxL = 0;
+            for (n = 0; first + n < end && !skipped(first + n); ++n) {
+                if (levels && vertexBudget != 0) {
                     const uint32_t l = std::max<uint32_t>(maxL, (*levels)[first + n]);
                     if (n > 0 && (n + 1) * (l + 2) * (l + 2) > vertexBudget) break;
                     maxL = l;
-                    ++n;
+                } else if (n == perDraw) {
+                    break;
                 }
-            } else {
-                n = std::min(perDraw, end - first);
             }
             push.basis = run.matrix;
             push.basisKind = run.basisKind;

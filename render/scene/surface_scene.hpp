@@ -20,9 +20,14 @@ struct BasisRun {
     glm::mat4 matrix{1.0f};
 };
 
+// The windows of one net: rows x cols of them, row after row, from `first`.
+struct NetWindows {
+    uint32_t first = 0, rows = 0, cols = 0;
+};
+
 struct SurfaceScene {
-    Buffer pool;       // 4 floats per pool point: xyz, weight (HostWritten: dragged points are written in place)
-    Buffer indices;    // 16 uint32 per window
+    Buffer pool;       // 4 floats per pool point: xyz, weight (HostWritten: dragged points are written in place); also storage
+    Buffer indices;    // 16 uint32 per window; also storage (merged blocks read their windows' points)
     Buffer patchData;  // gpu::PatchData per window
     uint32_t pointCount = 0;
     uint32_t windowCount = 0;
@@ -32,6 +37,7 @@ struct SurfaceScene {
     std::vector<glm::vec3> cpuPoints;
     std::vector<uint32_t> cpuIndices;  // 16 per window
     std::vector<float> overrideLevel;  // per window: largest override level, 0 = none
+    std::vector<NetWindows> nets;      // the nets' windows, for merged blocks (render/scene/merged_blocks.hpp)
     // Bézier triangles: 10 uint32 pool indices each; their gpu::PatchData follows the windows' in
     // patchData (triangle t is entry windowCount + t).
     Buffer triIndices;
@@ -55,8 +61,10 @@ SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc, const HeightMa
 // One window alone (the curvature graph across a join); 0 draws for a window the scene lacks.
 uint32_t recordWindowDraw(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t window, gpu::DrawPush push);
 
+// With `skip`, the windows marked 1 are left out (merged blocks draw them).
 uint32_t recordSurfaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t perDraw, gpu::DrawPush push,
-                            const std::vector<uint8_t>* levels = nullptr, uint32_t vertexBudget = kCpuDrawVertexBudget);
+                            const std::vector<uint8_t>* levels = nullptr, uint32_t vertexBudget = kCpuDrawVertexBudget,
+                            const std::vector<uint8_t>* skip = nullptr);
 
 glm::mat4 basisPushMatrix(Basis basis, double tension);
 

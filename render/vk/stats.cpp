@@ -27,6 +27,8 @@ nlohmann::json statsJson(const FrameStats& s) {
             {"pipeline_statistics", s.pipelineStatsValid},
             {"patches", s.patches},
             {"patches_culled", s.patchesCulled},
+            {"merged_windows", s.mergedWindows},
+            {"merged_blocks", s.mergedBlocks},
             {"draws", s.draws},
             {"displaced_edges", s.displacedEdges},
             {"displacement_level", s.displacementLevel},

@@ -31,6 +31,7 @@ struct FrameStats {
     uint32_t displacedEdges = 0;     // window edges whose level the height map's detail raised (adaptive)
     uint32_t displacementLevel = 0;  // the largest of those levels
     uint32_t patches = 0;
+    uint32_t mergedWindows = 0, mergedBlocks = 0;  // windows drawn B x B as one patch, and those patches
     uint32_t draws = 0;
     uint64_t triangles() const { return clippingInvocations; }
 };

@@ -49,7 +49,7 @@ struct EditorBenchOptions {
     std::string file;                // empty: the built-in teapot
     int frames = 100;                // measured frames
     int width = 1280, height = 720;  // window size (pixels at content scale 1)
-    float level = 16.0f;             // uniform tessellation level of the benchmarked document
+    std::optional<float> level;      // uniform tessellation level of the drag; none: the file's own settings (the teapot: 16)
     std::string json;                // write the results here as JSON when not empty
 };
 // Needs a display (Xvfb will do); returns the exit code (2 without a display).

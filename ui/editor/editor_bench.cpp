@@ -39,13 +39,23 @@ double median(std::vector<double> v) {
 
 int Editor::runBench(const EditorBenchOptions& opt) {
     if (opt.frames < 1 || opt.frames > 100000) throw InputError("bench", "--frames: must be from 1 to 100000");
-    // Step 1: the document at the benchmark's level, and a bare renderer of the same size and format.
-    doc_.tess.outer = {opt.level, opt.level, opt.level, opt.level};
-    doc_.tess.inner = {opt.level, opt.level};
-    doc_.tess.spacing = Spacing::Equal;
-    doc_.tess.adaptive = AdaptiveMode::None;
-    session_.commit("Benchmark levels");
-    documentChanged(false);
+    // Step 1: the document at the benchmark's level (or a file's own settings), and a bare renderer of
+    // the same size and format.
+    const bool uniform = opt.level.has_value() || opt.file.empty();
+    const float level = opt.level.value_or(16.0f);
+    if (uniform) {
+        doc_.tess.outer = {level, level, level, level};
+        doc_.tess.inner = {level, level};
+        doc_.tess.spacing = Spacing::Equal;
+        doc_.tess.adaptive = AdaptiveMode::None;
+        session_.commit("Benchmark levels");
+        documentChanged(false);
+    }
+    char levels[96];
+    if (uniform)
+        std::snprintf(levels, sizeof levels, "level %g", double(level));
+    else
+        std::snprintf(levels, sizeof levels, "its own levels (adaptive: %s)", std::string(adaptiveName(doc_.tess.adaptive)).c_str());
     const VkExtent2D ext = window_.target().extent();
     render::OffscreenTarget bareTarget(window_.device(), ext.width, ext.height, window_.target().samples() > VK_SAMPLE_COUNT_1_BIT);
     bareTarget.setReadback(false);
@@ -108,9 +118,9 @@ int Editor::runBench(const EditorBenchOptions& opt) {
 
     // Step 6: report.
     const double frameMed = median(total), bareMed = median(bareMs);
-    std::printf("editor bench: %s, %zu patches at level %g, %ux%u window, %s, %d frames of a G drag, medians\n",
-                session_.path().empty() ? "built-in teapot" : session_.path().c_str(), expandPatches(doc_).size(), double(opt.level),
-                ext.width, ext.height, window_.device().name().c_str(), opt.frames);
+    std::printf("editor bench: %s, %zu patches at %s, %ux%u window, %s, %d frames of a G drag, medians\n",
+                session_.path().empty() ? "built-in teapot" : session_.path().c_str(), expandPatches(doc_).size(), levels, ext.width,
+                ext.height, window_.device().name().c_str(), opt.frames);
     std::printf(
         "  editor frame     %8.2f ms   (UI %.2f, of it drag solve + upload %.3f; acquire %.2f; 3D view %.2f; ImGui + present %.2f)\n",
         frameMed, median(ui), median(drag), median(acquire), median(view), median(present));
@@ -124,7 +134,8 @@ int Editor::runBench(const EditorBenchOptions& opt) {
                                {"width", ext.width},
                                {"height", ext.height},
                                {"frames", opt.frames},
-                               {"level", opt.level},
+                               {"level", uniform ? nlohmann::json(level) : nlohmann::json(nullptr)},
+                               {"adaptive", adaptiveName(doc_.tess.adaptive)},
                                {"patches", expandPatches(doc_).size()},
                                {"triangles", stats.triangles()},
                                {"frame_ms", frameMed},

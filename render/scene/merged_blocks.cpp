@@ -1,0 +1,137 @@
+#include "render/scene/merged_blocks.hpp"
+
+#include <algorithm>
+#include <glm/geometric.hpp>
+
+#include "core/gpu/patch_math.h"
+#include "core/tess/tess_levels.hpp"
+
+namespace pw::render {
+
+namespace {
+
+bool powerOfTwo(uint32_t n) { return n != 0 && (n & (n - 1)) == 0; }
+
+// What the control shader's culling would do to window w (no displacement: no margin), judged a
+// little in its favour: a window near a plane counts as culled and stays unmerged, so the control
+// shader decides it.
+bool mayBeCulled(const SurfaceScene& s, uint32_t w, const TessSettings& tess, const ViewMatrices& vm) {
+    const uint32_t* idx = &s.cpuIndices[size_t(w) * 16];
+    if (tess.cullOffscreen)
+        for (int k = 0; k < 6; ++k) {
+            const glm::vec4 plane = gpu::frustumPlane(vm.viewProj, k);
+            const float pad = 1e-4f * glm::length(glm::vec3(plane));
+            bool outside = true;
+            for (int i = 0; i < 16 && outside; ++i) outside = glm::dot(plane, glm::vec4(s.cpuPoints[idx[i]], 1.0f)) < pad;
+            if (outside) return true;
+        }
+    if (tess.cullFar && tess.adaptive == AdaptiveMode::Distance) {
+        glm::vec3 c(0.0f);
+        for (int i = 0; i < 16; ++i) c += s.cpuPoints[idx[i]];
+        if (glm::distance(vm.eye, c / 16.0f) >= tess.distanceFar * (1.0f - 1e-4f)) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+std::vector<uint8_t> settingsWindowLevels(const SurfaceScene& s, const TessSettings& tess, float maxLevel) {
+    int n = roundedSegments(std::min(tess.inner[0], maxLevel), tess.spacing);
+    for (float l : {tess.inner[1], tess.outer[0], tess.outer[1], tess.outer[2], tess.outer[3]})
+        if (roundedSegments(std::min(l, maxLevel), tess.spacing) != n) n = 0;
+    std::vector<uint8_t> out(s.windowCount, uint8_t(n));
+    for (uint32_t w = 0; w < s.windowCount; ++w)
+        if (s.overrideLevel[w] != 0.0f) out[w] = 0;  // the shared-edge rule may raise its edges
+    return out;
+}
+
+MergedBlocks planMergedBlocks(const SurfaceScene& s, const std::vector<uint8_t>& uniform, const TessSettings& tess,
+                              const ViewMatrices& cullView, float deviceMax) {
+    MergedBlocks out;
+    out.merged.assign(s.windowCount, 0);
+    out.perRun.assign(s.runs.size(), {0u, 0u});
+    if (tess.spacing != Spacing::Equal && tess.spacing != Spacing::Pow2) return out;  // fractional: no uniform grid
+    if (tess.cullBackfaces) return out;                                               // the normal-cone test is the control shader's alone
+    if (uniform.size() != s.windowCount) return out;
+    // Patches up to level 16: past that the per-patch cost is small beside the triangles', and
+    // lavapipe's draw module slows down on very large patches.
+    const uint32_t maxLevel = uint32_t(std::min(deviceMax, float(kMaxMergedLevel)));
+    // Per window, the level it may be merged at (0: not at all).
+    std::vector<uint8_t> level(s.windowCount, 0);
+    // Spline nets only: their windows meet with continuous normals (C2 B-splines, C1 Catmull-Rom),
+    // so a seam vertex evaluated on either window shades alike; Bézier nets may have creases.
+    std::vector<uint32_t> kind(s.windowCount, gpu::kBasisBezier);
+    for (const BasisRun& r : s.runs)
+        for (uint32_t w = r.first; w < r.first + r.count; ++w) kind[w] = r.basisKind;
+    for (const NetWindows& net : s.nets)
+        for (uint32_t w = net.first; w < net.first + net.rows * net.cols && kind[net.first] != gpu::kBasisBezier; ++w)
+            if (powerOfTwo(uniform[w]) && !mayBeCulled(s, w, tess, cullView)) level[w] = uniform[w];
+    const auto tryBlock = [&](const NetWindows& net, uint32_t r0, uint32_t c0, uint32_t bu, uint32_t bv) {
+        if (r0 + bv > net.rows || c0 + bu > net.cols) return false;
+        const uint32_t first = net.first + r0 * net.cols + c0;
+        const uint32_t n = level[first];
+        if (n == 0 || std::max(bu, bv) * n > maxLevel) return false;
+        // A quad with one inner level 1 and the other above gets that level rounded up to 2 (the
+        // Vulkan spec's special case): a strip of level-1 windows would gain vertices inside.
+        if (n == 1 && bu != bv) return false;
+        for (uint32_t r = 0; r < bv; ++r)
+            for (uint32_t c = 0; c < bu; ++c)
+                if (level[first + r * net.cols + c] != n) return false;
+        out.blocks.push_back({first, net.cols, bu + 256u * bv, n});
+        for (uint32_t r = 0; r < bv; ++r)
+            for (uint32_t c = 0; c < bu; ++c) out.merged[first + r * net.cols + c] = 1;
+        out.windows += bu * bv;
+        return true;
+    };
+    // Tiles of 4 x 4 windows; where a tile is not one level, its 2 x 2 quarters, and where a quarter
+    // is not, its rows or columns of two.
+    for (const NetWindows& net : s.nets)
+        for (uint32_t r0 = 0; r0 < net.rows; r0 += 4)
+            for (uint32_t c0 = 0; c0 < net.cols; c0 += 4) {
+                if (tryBlock(net, r0, c0, 4, 4)) continue;
+                for (uint32_t r = r0; r < r0 + 4; r += 2)
+                    for (uint32_t c = c0; c < c0 + 4; c += 2) {
+                        if (tryBlock(net, r, c, 2, 2)) continue;
+                        const bool rows = tryBlock(net, r, c, 2, 1) & tryBlock(net, r + 1, c, 2, 1);
+                        if (!rows && !out.merged[net.first + r * net.cols + c] && !out.merged[net.first + (r + 1) * net.cols + c])
+                            for (uint32_t k = 0; k < 2; ++k) tryBlock(net, r, c + k, 1, 2);
+                    }
+            }
+    // Blocks in window order (nets in order, tiles row by row within a net do not keep it).
+    std::sort(out.blocks.begin(), out.blocks.end(), [](const glm::uvec4& a, const glm::uvec4& b) { return a.x < b.x; });
+    size_t at = 0;
+    for (size_t r = 0; r < s.runs.size(); ++r) {
+        const uint32_t end = s.runs[r].first + s.runs[r].count;
+        const size_t from = at;
+        while (at < out.blocks.size() && out.blocks[at].x < end) ++at;
+        out.perRun[r] = {uint32_t(from), uint32_t(at - from)};
+    }
+    return out;
+}
+
+uint32_t recordMergedBlocks(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, const MergedBlocks& m, gpu::DrawPush push,
+                            uint32_t vertexBudget) {
+    uint32_t draws = 0;
+    for (size_t r = 0; r < s.runs.size() && r < m.perRun.size(); ++r) {
+        const auto [first, count] = m.perRun[r];
+        push.basis = s.runs[r].matrix;
+        push.basisKind = s.runs[r].basisKind;
+        push.patchBase = s.runs[r].first;
+        for (uint32_t at = first, n = 0; at < first + count; at += n) {
+            // As many blocks as keep their evaluation vertices within the budget (one at least).
+            uint32_t vertices = 0;
+            for (n = 0; at + n < first + count; ++n) {
+                const glm::uvec4& b = m.blocks[at + n];
+                const uint32_t v = ((b.z & 255u) * b.w + 1) * ((b.z >> 8u) * b.w + 1);
+                if (n > 0 && vertexBudget != 0 && vertices + v > vertexBudget) break;
+                vertices += v;
+            }
+            vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(gpu::DrawPush), &push);
+            vkCmdDraw(cmd, n, 1, at, 0);  // one control point a block: its index
+            ++draws;
+        }
+    }
+    return draws;
+}
+
+}  // namespace pw::render
