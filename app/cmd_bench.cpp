@@ -3,6 +3,7 @@
 // drawn as a plain mesh. Reports medians of wall, submit+wait and GPU times, triangles per frame,
 // million triangles per second and the tessellated/plain throughput ratio.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -239,10 +240,8 @@ int runBench(const BenchArgs& a) {
             continue;
         }
         const Document doc = sc.make();
-        if (!sc.path.empty())
-            renderer.setDocument(doc, loadDocumentHeightMap(doc, sc.path));
-        else
-            renderer.setDocument(doc);
+        const std::shared_ptr<const HeightMap> map = sc.path.empty() ? nullptr : loadDocumentHeightMap(doc, sc.path);
+        renderer.setDocument(doc, map);
         if (!warmed) {  // every pipeline variant once, so no measured frame pays for shader JIT
             renderer.warmUp();
             warmed = true;
@@ -337,6 +336,20 @@ int runBench(const BenchArgs& a) {
                 "%u patches: %.2fx faster\n",
                 "  each window", e.wall, e.submit, e.gpu, (unsigned long long)e.triangles, "", e.draws, t.mergedWindows,
                 expandPatches(doc).size(), t.mergedBlocks, t.wall > 0 ? e.wall / t.wall : 0.0);
+        }
+        {  // A per-patch level edit (the inspector's slider): the whole scene uploaded again, against the levels alone.
+            std::vector<double> whole, levels;
+            for (int i = 0; i < 5; ++i) {
+                const auto t0 = std::chrono::steady_clock::now();
+                renderer.setDocument(doc, map);
+                const auto t1 = std::chrono::steady_clock::now();
+                renderer.updateLevels(doc);
+                const auto t2 = std::chrono::steady_clock::now();
+                whole.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+                levels.push_back(std::chrono::duration<double, std::milli>(t2 - t1).count());
+            }
+            j["level_edit"] = {{"scene_upload_ms", median(whole)}, {"levels_only_ms", median(levels)}};
+            std::printf("%-20s level edit: whole scene uploaded %.2f ms, levels only %.3f ms\n", "", median(whole), median(levels));
         }
         std::fflush(stdout);
     }

@@ -54,6 +54,7 @@ public:
     Offscreen(uint32_t w, uint32_t h, bool msaa = true) : target_(sharedDevice(), w, h, msaa), renderer_(sharedDevice(), target_) {}
     void setDocument(const Document& doc, std::shared_ptr<const HeightMap> map = {}) { renderer_.setDocument(doc, std::move(map)); }
     void setPlainMesh(const TriangleMesh& m) { renderer_.setPlainMesh(m); }
+    void updateLevels(const Document& doc) { renderer_.updateLevels(doc); }
     Rendered render(const render::RenderOptions& o) {
         Rendered r;
         r.stats = renderer_.render(o);

@@ -136,6 +136,28 @@ TEST_F(RenderStats, PerPatchOverrideWinsOverUniformLevels) {
     EXPECT_EQ(long(off.render(o).stats.triangles()), quadTriangles({1, 2, 3, 4}, {5, 6}, Spacing::Equal));
 }
 
+// A per-patch level edit (the inspector's sliders) rewrites the levels alone: the frame after it is
+// the frame a fresh upload of the edited document gives, the neighbour's shared edge raised too.
+TEST_F(RenderStats, LevelEditsRewriteOnlyTheLevelsWithTheSameFrame) {
+    Document doc = makePatchGrid(3, 3);
+    Offscreen off(W, H, false);
+    off.setDocument(doc);
+    render::RenderOptions o = plainOptions(doc, 4.0f, double(W) / H);
+    const Rendered before = off.render(o);
+    EXPECT_EQ(long(before.stats.triangles()), 9 * quadTriangles({4, 4, 4, 4}, {4, 4}, Spacing::Equal));
+    doc.patches[4].tessOverride = std::array<float, 6>{9, 9, 9, 9, 9, 9};
+    off.updateLevels(doc);
+    const Rendered edited = off.render(o);
+    off.setDocument(doc);
+    const Rendered fresh = off.render(o);
+    EXPECT_GT(edited.stats.triangles(), before.stats.triangles());
+    EXPECT_EQ(edited.stats.triangles(), fresh.stats.triangles());
+    EXPECT_EQ(countDifferent(edited.image, fresh.image), 0u);
+    doc.patches[4].tessOverride.reset();  // and back
+    off.updateLevels(doc);
+    EXPECT_EQ(off.render(o).stats.triangles(), before.stats.triangles());
+}
+
 TEST_F(RenderStats, BackFacingPatchIsCulledWithZeroEvaluations) {
     const Document doc = flatPatch();
     Offscreen off(W, H);

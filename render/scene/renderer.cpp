@@ -160,6 +160,24 @@ bool Renderer::mergingWanted(const RenderOptions& opt) const {
            !(ts.adaptive == AdaptiveMode::Distance && ts.distanceFrom != DistanceFrom::Edges);
 }
 
+void Renderer::updateLevels(const Document& doc) {
+    Impl& m = *impl_;
+    const std::vector<PatchInstance> inst = expandPatches(doc);
+    if (inst.size() != m.scene.windowCount || doc.triangles.size() != m.scene.triangleCount || doc.points.size() != m.scene.pointCount)
+        return setDocument(doc, m.map);
+    const std::vector<gpu::PatchData> pd = windowPatchData(doc, inst, m.map.get(), m.scene);
+    const VkDeviceSize bytes = sizeof(gpu::PatchData) * pd.size();
+    if (m.scene.patchData.mapped && bytes > 0) {  // the previous frame has completed (render waits for it)
+        std::memcpy(m.scene.patchData.mapped, pd.data(), bytes);
+        const VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE, nullptr, m.scene.patchData.memory.get(), 0, VK_WHOLE_SIZE};
+        VK_CHECK(vkFlushMappedMemoryRanges(dev_.device(), 1, &range));
+        return;
+    }
+    vkDeviceWaitIdle(dev_.device());
+    m.scene.patchData = uploadStatic(dev_, pd, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    writeDescriptors(dev_, m.set, m.frameUbo, m.scene.patchData, m.counters, m.height, m.mergedBuffers());
+}
+
 Renderer::FramePlan Renderer::prepareFrame(const RenderOptions& opt, VkRect2D area) {
     Impl& m = *impl_;
     const VkExtent2D ext = area.extent;

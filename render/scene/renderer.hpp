@@ -86,6 +86,10 @@ public:
     // pool buffer is host-visible and the previous frame has completed). The topology must be the
     // one given to setDocument; boundary overlays refresh at the next setDocument.
     void updatePoints(const std::vector<Vec3>& points, const std::vector<uint32_t>& changed);
+    // Per-patch level edits: rewrites only the per-window levels (the patch-data buffer, in place where
+    // the host sees it, as on lavapipe) for `doc`, which must have the uploaded document's items and
+    // points; anything else is a setDocument.
+    void updateLevels(const Document& doc);
     FrameStats render(const RenderOptions& opt);
     // The surface `render(opt)` would draw, triangle for triangle, as a welded mesh in document
     // coordinates (render/scene/surface_capture.cpp). InputError (exit 2) when the device has no

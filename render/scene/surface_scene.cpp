@@ -17,21 +17,13 @@ glm::mat4 basisPushMatrix(Basis basis, double tension) {
     return g;
 }
 
-SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc, const HeightMap* map) {
-    SurfaceScene s;
-    std::vector<float> pts;
-    pts.reserve(doc.points.size() * 4);
-    for (uint32_t i = 0; i < doc.points.size(); ++i) {
-        const Vec3& p = doc.points[i];
-        pts.insert(pts.end(), {float(p.x), float(p.y), float(p.z), float(pointWeight(doc, i))});
-    }
-    const std::vector<PatchInstance> inst = expandPatches(doc);
-    std::vector<uint32_t> idx;
-    idx.reserve(inst.size() * 16);
+std::vector<gpu::PatchData> windowPatchData(const Document& doc, const std::vector<PatchInstance>& inst, const HeightMap* map,
+                                            SurfaceScene& s) {
     // Per window, then per triangle: the levels of the shared-edge rule (core/tess/edge_levels.hpp).
     const std::vector<WindowLevels> levels = resolveEdgeLevels(doc, inst);
     std::vector<gpu::PatchData> pd(levels.size());
     s.overrideLevel.assign(inst.size(), 0.0f);
+    s.overrideMax = 0.0f;
     const std::vector<WindowDisplacement> disp = windowDisplacements(doc, inst, map);
     for (size_t w = 0; w < pd.size() && w < disp.size(); ++w) {
         const WindowDisplacement& d = disp[w];
@@ -50,6 +42,21 @@ SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc, const HeightMa
         s.overrideMax = std::max(s.overrideMax, most);
         if (w < inst.size()) s.overrideLevel[w] = most;
     }
+    return pd;
+}
+
+SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc, const HeightMap* map) {
+    SurfaceScene s;
+    std::vector<float> pts;
+    pts.reserve(doc.points.size() * 4);
+    for (uint32_t i = 0; i < doc.points.size(); ++i) {
+        const Vec3& p = doc.points[i];
+        pts.insert(pts.end(), {float(p.x), float(p.y), float(p.z), float(pointWeight(doc, i))});
+    }
+    const std::vector<PatchInstance> inst = expandPatches(doc);
+    std::vector<uint32_t> idx;
+    idx.reserve(inst.size() * 16);
+    const std::vector<gpu::PatchData> pd = windowPatchData(doc, inst, map, s);
     for (size_t w = 0; w < inst.size(); ++w) {
         const PatchInstance& pi = inst[w];
         idx.insert(idx.end(), pi.idx.begin(), pi.idx.end());

@@ -51,6 +51,12 @@ struct SurfaceScene {
     uint32_t shownPointCount = 0;
 };
 
+// Per window, then per Bézier triangle: its levels under the shared-edge rule
+// (core/tess/edge_levels.hpp) and its displacement, as the control shaders read them; sets the
+// scene's overrideLevel and overrideMax. `inst`: expandPatches(doc).
+std::vector<gpu::PatchData> windowPatchData(const Document& doc, const std::vector<PatchInstance>& inst, const HeightMap* map,
+                                            SurfaceScene& s);
+
 // `map`: the height map whose detail per edge goes into the patch data (displacement-adaptive levels).
 SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc, const HeightMap* map = nullptr);
 

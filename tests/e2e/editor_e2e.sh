@@ -258,6 +258,19 @@ wait_for "not t['palette'] and t['degraded']"
 xdotool key ctrl+z
 wait_for "not t['degraded'] and t['patches'] == 32"
 say "heavy document: drawn screen-adaptive, full detail on request"
+# A per-patch level override from the inspector rewrites the levels alone (issue 43) and shows at once.
+before=$(trace "t['triangles']")
+xdotool key F3
+wait_for "t['palette']"
+sleep 0.3
+xdotool type --delay 30 "select patch 0"
+xdotool key Return
+wait_for "not t['palette'] and t['selectedPatch'] == 0 and 'inspector.patchOverride' in t['items']"
+click_item inspector.patchOverride
+wait_for "t['triangles'] < $before"
+xdotool key ctrl+z
+wait_for "t['triangles'] == $before"
+say "per-patch override: the levels rewritten in place ($before triangles, fewer with patch 0 at 8), undone"
 # The screenshot command (F12's) reads the 3D view back on lavapipe too (issue 19: it failed with
 # "the swapchain images cannot be read back"), without the side panels.
 xdotool key F3

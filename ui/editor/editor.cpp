@@ -132,6 +132,14 @@ void Editor::documentChanged(bool topology) {
     wake();
 }
 
+void Editor::levelsChanged() {
+    if (anyHidden(doc_)) return documentChanged(false);  // the renderer holds the shown items only
+    renderer_->updateLevels(doc_);
+    seenVersion_ = session_.version();
+    ++docVersion_;
+    wake();
+}
+
 void Editor::runCommand(const std::vector<std::string>& words, bool guarded) {
     try {
         commands_.run(session_, *this, words, guarded);

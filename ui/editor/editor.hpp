@@ -141,6 +141,7 @@ private:
     void previewCommand(const std::vector<std::string>& words) override;
     void previewConstruction(const std::vector<std::string>& words) override;  // construction_preview.cpp
     void documentChanged(bool topology) override;                              // re-upload
+    void levelsChanged() override;                                             // per-patch levels only
     void settingsChanged() override { ++docVersion_; }
     uint64_t documentVersion() const override { return docVersion_; }
     void showError(const std::string& message) override;

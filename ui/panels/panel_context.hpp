@@ -54,8 +54,10 @@ public:
     // for this frame only, the document untouched: what the button under the mouse would make.
     virtual void previewConstruction(const std::vector<std::string>& words) { (void)words; }
     virtual void documentChanged(bool topology) = 0;  // session().doc was edited: upload it
-    virtual void settingsChanged() = 0;               // tessellation or display settings (they travel in the render options)
-    virtual uint64_t documentVersion() const = 0;     // bumped by both
+    // Only per-patch or per-triangle levels were edited: the renderer rewrites the levels alone.
+    virtual void levelsChanged() { documentChanged(false); }
+    virtual void settingsChanged() = 0;            // tessellation or display settings (they travel in the render options)
+    virtual uint64_t documentVersion() const = 0;  // bumped by both
     virtual void showError(const std::string& message) = 0;
     virtual void wake() = 0;                               // draw the next frames
     virtual bool interacting() const = 0;                  // a drag, orbit, pan or box select is under way

@@ -39,7 +39,7 @@ void ownLevelsRows(PanelContext& ctx, const OwnLevelsText& t, std::string& name,
         levels.reset();
         if (ov) levels.emplace().fill(8.0f);
         s.commit(step);
-        ctx.documentChanged(false);
+        ctx.levelsChanged();
     }
     traceItem("inspector." + (id.empty() ? std::string("patch") : id) + "Override");
     tip(t.overrideTip);
@@ -50,8 +50,7 @@ void ownLevelsRows(PanelContext& ctx, const OwnLevelsText& t, std::string& name,
     const char* tips[2] = {t.outerTip, t.innerTip};
     for (int k = 0; k < 2; ++k) {
         float* data = levels->data() + (k == 0 ? 0 : outerCount);
-        if (ImGui::SliderScalarN((labels[k] + id).c_str(), ImGuiDataType_Float, data, counts[k], &lo, &hi, "%.0f"))
-            ctx.documentChanged(false);
+        if (ImGui::SliderScalarN((labels[k] + id).c_str(), ImGuiDataType_Float, data, counts[k], &lo, &hi, "%.0f")) ctx.levelsChanged();
         if (ImGui::IsItemDeactivatedAfterEdit()) s.commit(step);
         tip(tips[k]);
     }
