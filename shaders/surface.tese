@@ -157,8 +157,7 @@ vec3 normalAt(float u, float v, Derivs d) {
 }
 
 #ifdef MERGED
-// Loads window w's points and, as the control shader computes them for a patch of its own, its
-// boundaries' directions and its net's extent.
+// Loads window w's points and, as the control shader computes it for a patch of its own, its net's extent.
 void loadWindow(uint w) {
     uint idx[16];
     for (int s = 0; s < 16; ++s) {
@@ -166,10 +165,7 @@ void loadWindow(uint w) {
         vec4 p = poolPoints[idx[s]];
         windowNet[s] = homogeneousPoint(p.xyz, p.w);
     }
-    windowFlips = 0u;
-    for (int e = 0; e < 4; ++e)
-        if (edgeReversed(idx[quadEdgeSlot(e, 0, 0)], idx[quadEdgeSlot(e, 1, 0)], idx[quadEdgeSlot(e, 2, 0)], idx[quadEdgeSlot(e, 3, 0)]))
-            windowFlips |= 1u << uint(e);
+    windowFlips = 0u;  // only Bézier boundaries are evaluated canonically, and Bézier nets are never merged
     vec3 lo = cp(0), hi = cp(0);
     for (int i = 1; i < 16; ++i) { lo = min(lo, cp(i)); hi = max(hi, cp(i)); }
     windowScale = max(max(hi.x - lo.x, hi.y - lo.y), max(hi.z - lo.z, 1e-20));

@@ -161,6 +161,21 @@ TEST_F(MergedBlocks, DrawTheSameSurfaceAsOneWindowAPatch) {
     }
     EXPECT_GE(mergedFrames, 4);
 
+    // Uniform levels are not clamped by the max level (that is adaptive's): level 4 under a max of 2
+    // merges at 4, as the windows alone are drawn.
+    {
+        const Document doc = splineNet(35, NetShape::Flat);
+        off.setDocument(doc);
+        render::RenderOptions o = plainOptions(doc, 4.0f, double(W) / H);
+        o.tess.maxLevel = 2.0f;
+        o.mergeWindows = render::MergeWindows::Never;
+        const Rendered each = off.render(o);
+        o.mergeWindows = render::MergeWindows::Always;
+        const Rendered merged = off.render(o);
+        EXPECT_GT(merged.stats.mergedWindows, 0u);
+        EXPECT_EQ(merged.stats.triangles(), each.stats.triangles());
+    }
+
     // What shows each patch's own tessellation, or needs a window's own UV, is never merged.
     const Document doc = splineNet(35, NetShape::Flat);
     off.setDocument(doc);

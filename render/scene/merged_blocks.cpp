@@ -35,10 +35,11 @@ bool mayBeCulled(const SurfaceScene& s, uint32_t w, const TessSettings& tess, co
 
 }  // namespace
 
-std::vector<uint8_t> settingsWindowLevels(const SurfaceScene& s, const TessSettings& tess, float maxLevel) {
-    int n = roundedSegments(std::min(tess.inner[0], maxLevel), tess.spacing);
+std::vector<uint8_t> settingsWindowLevels(const SurfaceScene& s, const TessSettings& tess) {
+    // As the fixed-levels control shader: the settings rounded, with no max-level clamp (that is adaptive's).
+    int n = roundedSegments(tess.inner[0], tess.spacing);
     for (float l : {tess.inner[1], tess.outer[0], tess.outer[1], tess.outer[2], tess.outer[3]})
-        if (roundedSegments(std::min(l, maxLevel), tess.spacing) != n) n = 0;
+        if (roundedSegments(l, tess.spacing) != n) n = 0;
     std::vector<uint8_t> out(s.windowCount, uint8_t(n));
     for (uint32_t w = 0; w < s.windowCount; ++w)
         if (s.overrideLevel[w] != 0.0f) out[w] = 0;  // the shared-edge rule may raise its edges

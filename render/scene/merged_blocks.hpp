@@ -4,7 +4,8 @@
 // patch at levels Bu n and Bv n (shaders/merged.tesc, surface.tese -DMERGED): the tessellator still
 // makes every vertex, at exactly the parameters each window's own patch would get (i / (B n) = i' / n
 // for powers of two; lavapipe's fixed-point placement rounds other levels differently), so the
-// picture and the seams with unmerged neighbours stay the same. Only where the result cannot differ:
+// surface and the seams with unmerged neighbours stay the same (only the diagonals the tessellator
+// picks inside a block may differ). Only where the result cannot differ:
 // spline nets (normals continuous across their windows' seams, where a vertex inside a block is
 // evaluated on one of the two windows), shading by position and normal only (not UV, patch id,
 // curvature or level), equal or pow2 spacing, no overrides, no displacement, no window the control
@@ -47,6 +48,6 @@ uint32_t recordMergedBlocks(VkCommandBuffer cmd, VkPipelineLayout layout, const 
                             uint32_t vertexBudget);
 
 // Per window the level uniform settings (no adaptivity) give all six levels, when they agree; 0 otherwise.
-std::vector<uint8_t> settingsWindowLevels(const SurfaceScene& s, const TessSettings& tess, float maxLevel);
+std::vector<uint8_t> settingsWindowLevels(const SurfaceScene& s, const TessSettings& tess);
 
 }  // namespace pw::render

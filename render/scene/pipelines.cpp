@@ -165,10 +165,15 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
     // merged blocks' 4 pool, 5 window indices, 6 blocks.
     const VkShaderStageFlags all = VK_SHADER_STAGE_ALL_GRAPHICS;
     VkDescriptorSetLayoutBinding b[7] = {
-        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, all, nullptr}, {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr},
-        {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr}, {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, all, nullptr},
-        {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr}, {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr},
-        {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr},
+        {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, all, nullptr},
+        {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr},
+        {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr},
+        {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, all, nullptr},
+        // Only the stages that read them: every stage then sees at most 4 storage buffers (the
+        // guaranteed maxPerStageDescriptorStorageBuffers).
+        {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, nullptr},
+        {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, nullptr},
+        {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, nullptr},
     };
     VkDescriptorSetLayoutCreateInfo dl{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     dl.bindingCount = 7;

@@ -247,7 +247,7 @@ Renderer::FramePlan Renderer::prepareFrame(const RenderOptions& opt, VkRect2D ar
     if (ts.adaptive != AdaptiveMode::None && !m.displaced)
         plan.levelBounds = adaptiveLevelBounds(m.scene, ts, lod, float(ext.width), float(ext.height), maxLevel, merge ? &uniform : nullptr);
     else if (merge)
-        uniform = settingsWindowLevels(m.scene, ts, maxLevel);
+        uniform = settingsWindowLevels(m.scene, ts);
     if (merge) {
         plan.merged = planMergedBlocks(m.scene, uniform, ts, lod, float(dev_.caps().maxTessLevel));
         if (!plan.merged.blocks.empty())
@@ -351,6 +351,16 @@ void Renderer::warmUp() {
                 o.display.shading = shading;
                 render(o);
             }
+    // Merged blocks (lean, no overlays): drawn when the document has nets, else at least made.
+    RenderOptions merged;
+    merged.tess.outer = {2, 2, 2, 2};
+    merged.tess.inner = {2, 2};
+    merged.display.showGrid = false;
+    merged.mergeWindows = MergeWindows::Always;
+    if (!impl_->scene.nets.empty())
+        render(merged);
+    else
+        (void)static_cast<VkPipeline>(pipes_.merged);
     if (impl_->mesh.indexCount) {
         o.plainMesh = true;
         for (ShadingMode shading : {ShadingMode::Lit, ShadingMode::PatchId}) {
