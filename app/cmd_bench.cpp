@@ -277,6 +277,13 @@ int runBench(const BenchArgs& a) {
             variants.push_back(o);
             variants.back().plainMesh = true;
         }
+        // Uniform levels: also the raw tessellator (the same windows and levels through trivial shaders), the floor.
+        size_t rawAt = 0;
+        if (plain) {
+            rawAt = variants.size();
+            variants.push_back(o);
+            variants.back().rawTessellator = true;
+        }
         // A document with nets on a CPU renderer: also every window its own patch (no merged blocks), in the same run.
         size_t eachAt = 0;
         if (cpuDevice && !doc.surfaces.empty()) {
@@ -312,7 +319,6 @@ int runBench(const BenchArgs& a) {
         } else if (trianglesByScene.count(sc.comparedTo) && t.triangles > 0) {
             j["fewer_triangles_than_" + sc.comparedTo] = double(trianglesByScene[sc.comparedTo]) / double(t.triangles);
         }
-        out.push_back(j);
         if (!plain && own)
             std::printf(
                 "%-20s %9.2f %9.2f %9.2f %11llu %8.2f %7u | %9s %8s %7s  (its own %s levels: no plain mesh of the same triangles)\n",
@@ -326,6 +332,16 @@ int runBench(const BenchArgs& a) {
         else
             std::printf("%-20s %9.2f %9.2f %9.2f %11llu %8.2f %7u | %9.2f %8.2f %7.2f\n", sc.name.c_str(), t.wall, t.submit, t.gpu,
                         (unsigned long long)t.triangles, mtri, t.draws, plainMs, plainMtri, ratio);
+        if (rawAt) {
+            const Measure& r = measured[rawAt];
+            const double vsRaw = t.gpu > 0 ? r.gpu / t.gpu : 0.0;
+            j["raw_tessellator"] = {{"wall_ms", r.wall}, {"gpu_ms", r.gpu}, {"triangles", r.triangles}};
+            j["throughput_ratio_tess_over_raw"] = vsRaw;
+            std::printf(
+                "%-20s %9.2f %9.2f %9.2f %11llu %8s %7u |  the raw tessellator (trivial shaders, the same patches and "
+                "levels): Patchwork at %.2fx its throughput\n",
+                "  raw tessellator", r.wall, r.submit, r.gpu, (unsigned long long)r.triangles, "", r.draws, vsRaw);
+        }
         if (eachAt) {
             const Measure& e = measured[eachAt];
             j["merged_windows"] = t.mergedWindows;
@@ -351,6 +367,7 @@ int runBench(const BenchArgs& a) {
             j["level_edit"] = {{"scene_upload_ms", median(whole)}, {"levels_only_ms", median(levels)}};
             std::printf("%-20s level edit: whole scene uploaded %.2f ms, levels only %.3f ms\n", "", median(whole), median(levels));
         }
+        out.push_back(j);
         std::fflush(stdout);
     }
     const render::PipelineCost& cost = *renderer.pipelines().cost;

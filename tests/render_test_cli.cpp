@@ -119,9 +119,14 @@ TEST(RenderCli, BenchMeasuresADocumentAtItsOwnSettings) {
             // The plain mesh leaves out the lid's zero-area triangles at the poles (1 560 of 1 600).
             EXPECT_LE(sc["plain"]["triangles"].get<uint64_t>(), sc["triangles"].get<uint64_t>());
             EXPECT_GE(sc["plain"]["triangles"].get<uint64_t>(), 32u * 2 * 5 * 5 * 95 / 100);
+            // The raw tessellator (trivial shaders): the same patches at the same levels, measured beside.
+            EXPECT_EQ(sc["raw_tessellator"]["triangles"].get<uint64_t>(), sc["triangles"].get<uint64_t>());
+            EXPECT_GT(sc["throughput_ratio_tess_over_raw"].get<double>(), 0.0);
+            EXPECT_GT(sc["level_edit"]["scene_upload_ms"].get<double>(), 0.0);
         } else {
             EXPECT_TRUE(sc["adaptive"].get<bool>());
             EXPECT_FALSE(sc.contains("plain"));
+            EXPECT_FALSE(sc.contains("raw_tessellator"));
             EXPECT_GT(sc["triangles"].get<uint64_t>(), 0u);
         }
     }

@@ -211,6 +211,12 @@ void FramePasses::surface(Frame& f) {
         f.stats.draws = m.mesh.indexCount ? 1 : 0;
         return;
     }
+    if (f.opt.rawTessellator) {
+        vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, f.pipes.raw);
+        f.stats.draws = recordSurfaceDraws(f.cmd, f.pipes.layout, m.scene, f.plan.perDraw, f.push, nullptr, f.plan.budget);
+        f.stats.patches = m.scene.windowCount;
+        return;
+    }
     const MergedBlocks& merged = f.plan.merged;
     vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, f.fam.surface[surfaceSlot(f)]);
     f.stats.draws = recordSurfaceDraws(f.cmd, f.pipes.layout, m.scene, f.plan.perDraw, f.push, f.plan.bounds(), f.plan.budget,

@@ -250,6 +250,14 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
                      {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::merged_tese())},
                      {VK_SHADER_STAGE_FRAGMENT_BIT, frag[size_t(VaryingsVariant::Lean)]}};
         set.merged = targets.lazy(pd);
+        PipelineDesc rd;
+        rd.tess = true;
+        rd.patchControlPoints = 16;
+        rd.stages = {{VK_SHADER_STAGE_VERTEX_BIT, vert},
+                     {VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, mod(spirv::raw_tesc())},
+                     {VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, mod(spirv::raw_tese())},
+                     {VK_SHADER_STAGE_FRAGMENT_BIT, frag[size_t(VaryingsVariant::Lean)]}};
+        set.raw = targets.lazy(rd);
     }
     {
         VkShaderModule gv = mod(spirv::grid_vert());
@@ -330,6 +338,7 @@ void PipelineSet::release() {
     kill(set.isoCombs);
     for (auto& p : set.mesh) kill(p);
     kill(set.merged);
+    kill(set.raw);
     kill(set.gridLines);
     kill(set.gridPoints);
     kill(set.colorLines);

@@ -75,6 +75,8 @@ struct PipelineHandles {
     std::array<LazyPipeline, kVaryingsVariants> mesh{};  // plain pre-tessellated triangles
     // Blocks of Bu x Bv net windows at one level, one patch each (render/scene/merged_blocks.hpp); lean varyings.
     LazyPipeline merged;
+    // The raw tessellator's reference for `patchwork bench`: windows at uniform levels through trivial shaders.
+    LazyPipeline raw;
     LazyPipeline gridLines;    // control net lines (over everything)
     LazyPipeline gridPoints;   // control points
     LazyPipeline colorLines;   // coloured lines, depth-tested (boundaries)

@@ -155,8 +155,8 @@ bool Renderer::mergingWanted(const RenderOptions& opt) const {
     const TessSettings& ts = opt.tess;
     // A vertex on a seam inside a block is evaluated on one of its two windows, so only what is
     // continuous there may be drawn: position and normal (lean varyings), not UV, patch id or curvature.
-    return device && !m.scene.nets.empty() && !m.displaced && !opt.plainMesh && !opt.lodCamera && !ds.showWireframe && !ds.showNormals &&
-           varyingsVariant(ds.shading) == VaryingsVariant::Lean &&
+    return device && !m.scene.nets.empty() && !m.displaced && !opt.plainMesh && !opt.rawTessellator && !opt.lodCamera &&
+           !ds.showWireframe && !ds.showNormals && varyingsVariant(ds.shading) == VaryingsVariant::Lean &&
            !(ts.adaptive == AdaptiveMode::Distance && ts.distanceFrom != DistanceFrom::Edges);
 }
 

@@ -54,6 +54,9 @@ struct RenderOptions {
     std::optional<Camera> lodCamera;
     double lodFrustumDepth = 0.0;
     MergeWindows mergeWindows = MergeWindows::Auto;
+    // The benchmark's floor: the windows at the uniform levels through trivial shaders (a bilinear
+    // position of the corners, lit flat), no Bézier triangles, no merging.
+    bool rawTessellator = false;
 };
 
 // The pane rectangle `opt` draws into, clamped to a target of `extent` (the whole target when
