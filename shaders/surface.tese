@@ -212,8 +212,11 @@ void main() {
 #endif
     outNormal = n;
     outCulled = culled();
-    outWire = wireOpacity(segmentSpan(segmentPixels(p, d.du, windowLevels.x, frame.viewProj, frame.viewport.xy),
-                                      segmentPixels(p, d.dv, windowLevels.y, frame.viewProj, frame.viewport.xy)));
+    // The wire's opacity only where a wire is drawn (flat colour): two projections a vertex otherwise wasted.
+    outWire = draw.drawMode != kDrawFlatColour
+                  ? 1.0
+                  : wireOpacity(segmentSpan(segmentPixels(p, d.du, windowLevels.x, frame.viewProj, frame.viewport.xy),
+                                            segmentPixels(p, d.dv, windowLevels.y, frame.viewProj, frame.viewport.xy)));
 #ifdef FULL_VARYINGS
     // curvatures from the fundamental forms (curvature shading only)
     vec2 curv = vec2(0.0);

@@ -110,8 +110,10 @@ void main() {
 #endif
     outNormal = n;
     outCulled = culledPatch;
-    outWire = wireOpacity(segmentSpan(segmentPixels(p, du, gl_TessLevelInner[0], frame.viewProj, frame.viewport.xy),
-                                      segmentPixels(p, dv, gl_TessLevelInner[0], frame.viewProj, frame.viewport.xy)));
+    outWire = draw.drawMode != kDrawFlatColour
+                  ? 1.0
+                  : wireOpacity(segmentSpan(segmentPixels(p, du, gl_TessLevelInner[0], frame.viewProj, frame.viewport.xy),
+                                            segmentPixels(p, dv, gl_TessLevelInner[0], frame.viewProj, frame.viewport.xy)));
 #ifdef FULL_VARYINGS
     outUV = vec2(u, v);
     outPatch = draw.patchBase + uint(gl_PrimitiveID);
