@@ -61,6 +61,7 @@ void TestTrace::write(const EditorSnapshot& e) {
     j["stageBarRows"] = teaching.stageBarRows;
     j["debugCamera"] = teaching.debugCamera.has_value();
     j["patchesCulled"] = stats.patchesCulled;
+    j["mergedWindows"] = stats.mergedWindows;
     j["vsInvocations"] = stats.vsInvocations;
     j["tcsPatches"] = stats.tcsPatches;
     j["tesInvocations"] = stats.tesInvocations;

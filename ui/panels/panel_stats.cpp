@@ -31,6 +31,11 @@ void drawStatsPanel(const FrameReport& report) {
     tip("Tessellation evaluation shader invocations");
     ImGui::Text("Patches     %u (culled %u)", stats.patches, stats.patchesCulled);
     tip("Patches drawn and patches culled by the control shader");
+    if (stats.mergedWindows) {
+        ImGui::Text("Merged      %u windows in %u patches", stats.mergedWindows, stats.mergedBlocks);
+        tip("Net windows at one power-of-two level drawn several to a tessellated patch: the same vertices, fewer "
+            "patches for this CPU renderer, which pays per patch (render --merge-windows)");
+    }
     if (stats.displacedEdges) {
         ImGui::Text("Displaced   %u edges raised (to %u)", stats.displacedEdges, stats.displacementLevel);
         tip("Adaptive levels: window edges whose level the height map's detail along them raised, and the highest such level");
