@@ -31,10 +31,9 @@ layout(location = 4) patch in uvec4 blockPatch;
 layout(set = 0, binding = 4, std430) readonly buffer PoolPoints { vec4 poolPoints[]; };    // xyz, weight
 layout(set = 0, binding = 5, std430) readonly buffer WindowIndices { uint windowIndices[]; };  // 16 a window
 vec4 windowNet[16];  // this vertex's window, homogeneous (core/gpu/rational_math.h)
-uint windowFlips;    // bit e: boundary e runs against its canonical direction
 float windowScale;   // the window net's largest extent
 vec4 cph(int s) { return windowNet[s]; }
-uint edgeFlips() { return windowFlips; }
+uint edgeFlips() { return 0u; }  // only Bézier boundaries are evaluated canonically, and Bézier nets never merge
 float netScale() { return windowScale; }
 float culled() { return 0.0; }  // the renderer merges no window that the control shader would cull
 #else
@@ -165,7 +164,6 @@ void loadWindow(uint w) {
         vec4 p = poolPoints[idx[s]];
         windowNet[s] = homogeneousPoint(p.xyz, p.w);
     }
-    windowFlips = 0u;  // only Bézier boundaries are evaluated canonically, and Bézier nets are never merged
     vec3 lo = cp(0), hi = cp(0);
     for (int i = 1; i < 16; ++i) { lo = min(lo, cp(i)); hi = max(hi, cp(i)); }
     windowScale = max(max(hi.x - lo.x, hi.y - lo.y), max(hi.z - lo.z, 1e-20));

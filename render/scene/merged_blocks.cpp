@@ -61,12 +61,12 @@ MergedBlocks planMergedBlocks(const SurfaceScene& s, const std::vector<uint8_t>&
     std::vector<uint8_t> level(s.windowCount, 0);
     // Spline nets only: their windows meet with continuous normals (C2 B-splines, C1 Catmull-Rom),
     // so a seam vertex evaluated on either window shades alike; Bézier nets may have creases.
-    std::vector<uint32_t> kind(s.windowCount, gpu::kBasisBezier);
-    for (const BasisRun& r : s.runs)
-        for (uint32_t w = r.first; w < r.first + r.count; ++w) kind[w] = r.basisKind;
-    for (const NetWindows& net : s.nets)
-        for (uint32_t w = net.first; w < net.first + net.rows * net.cols && kind[net.first] != gpu::kBasisBezier; ++w)
+    for (const NetWindows& net : s.nets) {
+        const BasisRun* run = windowRun(s, net.first);  // a net's windows share one basis
+        if (!run || run->basisKind == gpu::kBasisBezier) continue;
+        for (uint32_t w = net.first; w < net.first + net.rows * net.cols; ++w)
             if (powerOfTwo(uniform[w]) && !mayBeCulled(s, w, tess, cullView)) level[w] = uniform[w];
+    }
     const auto tryBlock = [&](const NetWindows& net, uint32_t r0, uint32_t c0, uint32_t bu, uint32_t bv) {
         if (r0 + bv > net.rows || c0 + bu > net.cols) return false;
         const uint32_t first = net.first + r0 * net.cols + c0;

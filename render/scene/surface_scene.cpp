@@ -111,20 +111,24 @@ SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc, const HeightMa
     return s;
 }
 
+const BasisRun* windowRun(const SurfaceScene& s, uint32_t w) {
+    for (const BasisRun& r : s.runs)
+        if (w >= r.first && w < r.first + r.count) return &r;
+    return nullptr;
+}
+
 uint32_t recordWindowDraw(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t window, gpu::DrawPush push) {
-    for (const BasisRun& run : s.runs) {
-        if (window < run.first || window >= run.first + run.count) continue;
-        const VkDeviceSize zero = 0;
-        vkCmdBindVertexBuffers(cmd, 0, 1, s.pool.buffer.ptr(), &zero);
-        vkCmdBindIndexBuffer(cmd, s.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
-        push.basis = run.matrix;
-        push.basisKind = run.basisKind;
-        push.patchBase = window;
-        vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(gpu::DrawPush), &push);
-        vkCmdDrawIndexed(cmd, 16, 1, 16 * window, 0, 0);
-        return 1;
-    }
-    return 0;
+    const BasisRun* run = windowRun(s, window);
+    if (!run) return 0;
+    const VkDeviceSize zero = 0;
+    vkCmdBindVertexBuffers(cmd, 0, 1, s.pool.buffer.ptr(), &zero);
+    vkCmdBindIndexBuffer(cmd, s.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
+    push.basis = run->matrix;
+    push.basisKind = run->basisKind;
+    push.patchBase = window;
+    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(gpu::DrawPush), &push);
+    vkCmdDrawIndexed(cmd, 16, 1, 16 * window, 0, 0);
+    return 1;
 }
 
 uint32_t recordSurfaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t perDraw, gpu::DrawPush push,

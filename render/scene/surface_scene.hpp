@@ -65,6 +65,9 @@ SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc, const HeightMa
 // keep windows x (max level + 2)^2 <= vertexBudget. Returns the number of draws. `push` supplies
 // drawMode/colour; basis fields are filled per run.
 // One window alone (the curvature graph across a join); 0 draws for a window the scene lacks.
+// The basis run that holds window w; null for a window the scene lacks.
+const BasisRun* windowRun(const SurfaceScene& s, uint32_t w);
+
 uint32_t recordWindowDraw(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, uint32_t window, gpu::DrawPush push);
 
 // With `skip`, the windows marked 1 are left out (merged blocks draw them).
