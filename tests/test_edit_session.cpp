@@ -135,7 +135,7 @@ TEST(Commands, TableNamesAreUniqueAndEveryCommandIsDocumented) {
         SCOPED_TRACE(c.name);
         EXPECT_FALSE(c.label.empty());
         EXPECT_FALSE(c.help.empty());
-        EXPECT_TRUE(bool(c.run));
+        EXPECT_TRUE(bool(c.exec));
     }
     // Each shortcut belongs to one binding only.
     std::vector<std::string> keys;

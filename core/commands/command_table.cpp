@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include "core/base/errors.hpp"
@@ -50,6 +53,162 @@ std::vector<std::string> splitCommandWords(std::string_view line) {
     return words;
 }
 
+namespace {
+
+std::string argUsage(const CommandArg& a) {
+    if (!a.shown.empty()) return a.shown;
+    std::string text;
+    switch (a.type) {
+        case ArgType::Choice:
+            for (const std::string& c : a.choices) text += (text.empty() ? "" : "|") + c;
+            break;
+        case ArgType::Axis:
+            text = "X|Y|Z";
+            break;
+        case ArgType::Edge:
+            text = a.name == "EDGE" ? "u0|v0|u1|v1" : a.name;
+            break;
+        default:
+            text = a.name;
+    }
+    return a.repeated ? text + "..." : text;
+}
+
+std::string formUsage(const CommandForm& form) {
+    std::string out;
+    size_t open = 0;
+    for (const CommandArg& a : form) {
+        if (!out.empty()) out += ' ';
+        if (a.optional) out += '[', ++open;
+        out += argUsage(a);
+    }
+    return out + std::string(open, ']');
+}
+
+// The value of `word` as argument `a`, or the reason it is not one.
+std::optional<ArgValue> checkArg(const CommandArg& a, const std::string& word, const Document& doc, std::string& why) {
+    ArgValue v;
+    try {
+        switch (a.type) {
+            case ArgType::Word:
+                break;  // "" clears a name
+            case ArgType::Path:
+                if (word.empty()) throw EditError(a.name + ": expected a file name, got nothing");
+                break;
+            case ArgType::Number:
+                v.number = commandNumber(word, a.name.c_str());
+                break;
+            case ArgType::Count: {
+                uint64_t k = 0;
+                const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), k);
+                if (ec != std::errc() || ptr != word.data() + word.size() || k > uint64_t(limits::kMaxPoints))
+                    throw EditError(a.name + ": expected a whole number, got '" + word + "'");
+                v.index = uint32_t(k);
+                v.number = double(k);
+                break;
+            }
+            case ArgType::Choice: {
+                const auto it = std::find(a.choices.begin(), a.choices.end(), word);
+                if (it == a.choices.end()) {
+                    std::string list;
+                    for (size_t i = 0; i < a.choices.size(); ++i)
+                        list += (i == 0 ? "" : i + 1 == a.choices.size() ? " or " : ", ") + a.choices[i];
+                    throw EditError("expected " + list + ", got '" + word + "'");
+                }
+                v.index = uint32_t(it - a.choices.begin());
+                break;
+            }
+            case ArgType::Axis:
+                v.index = uint32_t(axisIndex(word));
+                break;
+            case ArgType::Edge: {
+                const auto e = parseEdge(word);
+                if (!e) throw EditError("expected an edge u0, v0, u1 or v1, got '" + word + "'");
+                v.index = uint32_t(*e);
+                break;
+            }
+            case ArgType::Patch:
+                v.index = commandIndex(word, doc.patches.size(), "patch");
+                break;
+            case ArgType::Triangle:
+                v.index = commandIndex(word, doc.triangles.size(), "triangle");
+                break;
+            case ArgType::Curve:
+                v.index = commandIndex(word, doc.curves.size(), "curve");
+                break;
+            case ArgType::Net:
+                v.index = commandIndex(word, doc.surfaces.size(), "net");
+                break;
+        }
+    } catch (const EditError& e) {
+        why = e.what();
+        return std::nullopt;
+    }
+    return v;
+}
+
+// The number of words a form takes: [fewest, most].
+std::pair<size_t, size_t> formArity(const CommandForm& form) {
+    size_t least = 0;
+    for (const CommandArg& a : form) least += a.optional ? 0 : 1;
+    const bool open = !form.empty() && form.back().repeated;
+    return {least, open ? std::numeric_limits<size_t>::max() : form.size()};
+}
+
+}  // namespace
+
+std::string commandUsage(const Command& c) {
+    if (c.forms.size() == 2 && c.forms[0].empty()) return "[" + formUsage(c.forms[1]) + "]";
+    std::string out;
+    for (const CommandForm& f : c.forms) out += (out.empty() ? "" : " | ") + formUsage(f);
+    return out;
+}
+
+bool commandNeedsWords(const Command& c) {
+    return !c.forms.empty() && std::all_of(c.forms.begin(), c.forms.end(), [](const CommandForm& f) { return formArity(f).first > 0; });
+}
+
+// Fits the context's words to the first of the command's forms that takes them; otherwise an
+// EditError naming the argument (or the count and the usage).
+static void bindArgs(CommandContext& ctx) {
+    const Command& c = ctx.command;
+    const std::vector<CommandForm> none(1);
+    const std::vector<CommandForm>& forms = c.forms.empty() ? none : c.forms;
+    const size_t n = ctx.args.size();
+    std::string firstWhy;
+    size_t fitting = 0;
+    for (size_t f = 0; f < forms.size(); ++f) {
+        const auto [least, most] = formArity(forms[f]);
+        if (n < least || n > most) continue;
+        ++fitting;
+        std::vector<ArgValue> values;
+        std::string why;
+        for (size_t i = 0; i < n && why.empty(); ++i) {
+            const CommandArg& a = forms[f][std::min(i, forms[f].size() - 1)];
+            if (const auto v = checkArg(a, ctx.args[i], ctx.session.doc, why)) values.push_back(*v);
+        }
+        if (why.empty()) {
+            ctx.form = f;
+            ctx.values = std::move(values);
+            return;
+        }
+        if (firstWhy.empty()) firstWhy = why;
+    }
+    if (fitting > 0) throw EditError(firstWhy);
+    size_t least = std::numeric_limits<size_t>::max(), most = 0;
+    for (const CommandForm& f : forms) {
+        const auto [l, m] = formArity(f);
+        least = std::min(least, l), most = std::max(most, m);
+    }
+    std::string want = least == most                                ? std::to_string(least)
+                       : most == std::numeric_limits<size_t>::max() ? "at least " + std::to_string(least)
+                       : forms.size() == 1                          ? std::to_string(least) + " to " + std::to_string(most)
+                                                                    : "another number of";
+    const std::string usage = commandUsage(c);
+    throw EditError("expected " + want + " argument" + (most == 1 ? "" : "s") + ", got " + std::to_string(n) + " (usage: " + c.name +
+                    (usage.empty() ? "" : " " + usage) + ")");
+}
+
 void CommandTable::run(EditSession& session, CommandHost& host, std::string_view line, bool guarded) const {
     run(session, host, splitCommandWords(line), guarded);
 }
@@ -60,7 +219,8 @@ void CommandTable::preview(EditSession& session, CommandHost& host, const std::v
     if (!c || !c->previewable) throw EditError("'" + (words.front()) + "' cannot be previewed");
     CommandContext ctx{*c, session, host, std::vector<std::string>(words.begin() + 1, words.end()), true, true};
     try {
-        c->run(ctx);
+        bindArgs(ctx);
+        c->exec(ctx);
     } catch (const EditError& e) {
         throw EditError(c->name + ": " + e.what());
     }
@@ -74,7 +234,8 @@ void CommandTable::run(EditSession& session, CommandHost& host, const std::vecto
     if (!isEnabled(*c, session)) throw EditError("'" + c->name + "' is not available now: " + c->help);
     CommandContext ctx{*c, session, host, std::vector<std::string>(words.begin() + 1, words.end()), guarded};
     try {
-        c->run(ctx);
+        bindArgs(ctx);
+        c->exec(ctx);
     } catch (const EditError& e) {
         throw EditError(c->name + ": " + e.what());
     }
@@ -115,8 +276,13 @@ double commandNumber(const std::string& word, const char* what) {
     const char* e = b + word.size();
     if (!word.empty() && *b == '+') ++b;
     const auto [ptr, ec] = std::from_chars(b, e, v);
-    if (ec != std::errc() || ptr != e || !std::isfinite(v) || std::abs(v) > limits::kMaxCoordinate)
+    if (ec != std::errc() || ptr != e || !std::isfinite(v))
         throw EditError(std::string(what) + ": expected a finite number, got '" + word + "'");
+    if (std::abs(v) > limits::kMaxCoordinate) {
+        char msg[160];
+        std::snprintf(msg, sizeof msg, "%s: %g is beyond the coordinate limit ±%g and was not applied", what, v, limits::kMaxCoordinate);
+        throw EditError(msg);
+    }
     return v;
 }
 
@@ -145,15 +311,7 @@ Command windowToggle(const char* name, const char* label, const char* menu, Wind
             .bindings = {{"", "", std::move(keys)}},
             .windowOnly = true,
             .checked = [which](const EditSession&, const CommandHost& h) { return h.toggled(which); },
-            .run = [which](CommandContext& ctx) { ctx.host.toggle(which); }};
-}
-
-void expectArgs(const CommandContext& ctx, size_t min, size_t max) {
-    const size_t n = ctx.args.size();
-    if (n >= min && n <= max) return;
-    std::string want = min == max ? std::to_string(min) : std::to_string(min) + " to " + std::to_string(max);
-    throw EditError("expected " + want + " argument" + (max == 1 ? "" : "s") + ", got " + std::to_string(n) +
-                    " (usage: " + ctx.command.name + (ctx.command.usage.empty() ? "" : " " + ctx.command.usage) + ")");
+            .exec = [which](CommandContext& ctx) { ctx.host.toggle(which); }};
 }
 
 CommandTable makeCommandTable() {
@@ -166,6 +324,9 @@ CommandTable makeCommandTable() {
     addSettingCommands(t);
     addDisplacementCommands(t);
     addConstructCommands(t);
+    addItemCommands(t);
+    addNetCommands(t);
+    addTessCommands(t);
     return t;
 }
 

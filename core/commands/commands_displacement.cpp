@@ -24,8 +24,7 @@ std::string documentMapPath(const std::filesystem::path& file, const std::string
 }
 
 // A scale or bias: the settings row's range (core/model/settings), as the panel and the reader take it.
-float heightNumber(const std::string& word, const char* what) {
-    const double v = commandNumber(word, what);
+float heightNumber(double v, const char* what) {
     if (auto problem = settingProblem(setting("displacement.scale"), {v})) throw EditError(std::string(what) + ": " + *problem);
     return float(v);
 }
@@ -34,92 +33,102 @@ void requireMap(const CommandContext& ctx) {
     if (!ctx.session.doc.displacement.active()) throw EditError("the document has no height map; load one with `displacement FILE`");
 }
 
+void execDisplacement(CommandContext& ctx) {
+    if (ctx.has(0) && ctx.word(0) == "off") {
+        requireMap(ctx);
+        return ctx.session.apply(
+            "Remove height map", [](Document& d) { d.displacement.map.clear(); }, false);
+    }
+    if (!ctx.has(0)) {
+        if (ctx.host.hasWindow()) return ctx.host.fileDialog(FileDialogKind::HeightMap);
+        throw EditError("expected 1 argument, got 0 (usage: displacement FILE | off)");  // only a window asks for the file
+    }
+    const HeightMap map = loadHeightMap(ctx.word(0));  // refused here, naming the file, when unreadable
+    const std::string stored = documentMapPath(ctx.word(0), ctx.session.path());
+    ctx.session.apply(
+        "Height map",
+        [&](Document& d) {
+            const bool first = !d.displacement.active() && d.displacement.scale == 0.0f;
+            d.displacement.map = stored;
+            if (first) d.displacement.scale = float(0.05 * modelSize(d));  // visible, not overwhelming
+        },
+        false);
+    ctx.host.status("Height map " + std::to_string(map.width) + " x " + std::to_string(map.height) + ", " + std::to_string(map.bits) +
+                    "-bit: " + stored);
+}
+
+void execDisplacementScale(CommandContext& ctx) {
+    requireMap(ctx);
+    const float s = heightNumber(ctx.number(0), "the scale");
+    ctx.session.apply(
+        "Displacement scale", [&](Document& d) { d.displacement.scale = s; }, false);
+}
+
+void execDisplacementBias(CommandContext& ctx) {
+    requireMap(ctx);
+    const float b = heightNumber(ctx.number(0), "the bias");
+    ctx.session.apply(
+        "Displacement bias", [&](Document& d) { d.displacement.bias = b; }, false);
+}
+
+void execDisplacementMapping(CommandContext& ctx) {
+    const DisplacementMapping m = *parseDisplacementMapping(ctx.word(0));  // planar or patch, as the form checked
+    ctx.session.apply(
+        "Displacement mapping", [&](Document& d) { d.displacement.mapping = m; }, false);
+}
+
+void execDisplacementOwn(CommandContext& ctx) {
+    std::optional<DisplacementOverride> own;
+    if (ctx.form == 0) own = DisplacementOverride{heightNumber(ctx.number(0), "the scale"), heightNumber(ctx.number(1), "the bias")};
+    const Selection& sel = ctx.session.sel;
+    const auto set = [&](Document& d) {
+        if (sel.patch >= 0)
+            d.patches[size_t(sel.patch)].displacement = own;
+        else if (sel.surface >= 0)
+            d.surfaces[size_t(sel.surface)].displacement = own;
+        else
+            d.triangles[size_t(sel.triangle)].displacement = own;
+    };
+    if (ctx.preview) {  // while the panel's drag moves: no undo step
+        set(ctx.session.doc);
+        return ctx.session.changed(false);
+    }
+    ctx.session.apply("Own displacement", set, false);
+}
+
 }  // namespace
 
 void addDisplacementCommands(CommandTable& t) {
+    using namespace arg;
     t.add({.name = "displacement",
            .label = "Height Map...",
            .menu = "Display",
-           .usage = "FILE | off",
+           // Without a word the editor window asks for the file; a script names it.
+           .forms = {{opt(shown(path(), "FILE|off"))}},
            .help = "Displace the surface along its normal by an 8- or 16-bit PNG height map (off: remove it)",
-           .run = [](CommandContext& ctx) {
-               expectArgs(ctx, ctx.host.hasWindow() ? 0 : 1, 1);
-               if (ctx.args.empty()) return ctx.host.fileDialog(FileDialogKind::HeightMap);
-               if (ctx.args[0] == "off") {
-                   requireMap(ctx);
-                   return ctx.session.apply(
-                       "Remove height map", [](Document& d) { d.displacement.map.clear(); }, false);
-               }
-               const HeightMap map = loadHeightMap(ctx.args[0]);  // refused here, naming the file, when unreadable
-               const std::string stored = documentMapPath(ctx.args[0], ctx.session.path());
-               ctx.session.apply(
-                   "Height map",
-                   [&](Document& d) {
-                       const bool first = !d.displacement.active() && d.displacement.scale == 0.0f;
-                       d.displacement.map = stored;
-                       if (first) d.displacement.scale = float(0.05 * modelSize(d));  // visible, not overwhelming
-                   },
-                   false);
-               ctx.host.status("Height map " + std::to_string(map.width) + " x " + std::to_string(map.height) + ", " +
-                               std::to_string(map.bits) + "-bit: " + stored);
-           }});
+           .exec = execDisplacement});
     t.add({.name = "displacement-scale",
            .label = "Displacement Scale",
-           .usage = "S",
+           .forms = {{number("S")}},
            .help = "Height of the map's white above its black, in model units",
-           .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 1, 1);
-               requireMap(ctx);
-               const float s = heightNumber(ctx.args[0], "the scale");
-               ctx.session.apply(
-                   "Displacement scale", [&](Document& d) { d.displacement.scale = s; }, false);
-           }});
+           .exec = execDisplacementScale});
     t.add({.name = "displacement-bias",
            .label = "Displacement Bias",
-           .usage = "B",
+           .forms = {{number("B")}},
            .help = "Height of the map's black, in model units",
-           .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 1, 1);
-               requireMap(ctx);
-               const float b = heightNumber(ctx.args[0], "the bias");
-               ctx.session.apply(
-                   "Displacement bias", [&](Document& d) { d.displacement.bias = b; }, false);
-           }});
+           .exec = execDisplacementBias});
     t.add({.name = "displacement-mapping",
            .label = "Displacement Mapping",
-           .usage = "planar|patch",
+           .forms = {{choice("MAPPING", {"planar", "patch"})}},
            .help = "Map UVs: planar over the ground plane (crack-free everywhere) or each patch's parameters (nets tile the map)",
-           .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 1, 1);
-               const auto m = parseDisplacementMapping(ctx.args[0]);
-               if (!m) throw EditError("expected planar or patch, got '" + ctx.args[0] + "'");
-               ctx.session.apply(
-                   "Displacement mapping", [&](Document& d) { d.displacement.mapping = *m; }, false);
-           }});
+           .exec = execDisplacementMapping});
     t.add({.name = "displacement-own",
            .label = "Own Displacement",
-           .usage = "S B | off",
+           .forms = {{number("S"), number("B")}, {choice("OFF", {"off"})}},
            .help = "Give the selected patch, net or triangle its own displacement scale and bias (off: the document's again)",
+           .previewable = true,
            .enabled = [](const EditSession& s) { return s.sel.patch >= 0 || s.sel.surface >= 0 || s.sel.triangle >= 0; },
-           .run =
-               [](CommandContext& ctx) {
-                   const bool off = ctx.args.size() == 1 && ctx.args[0] == "off";
-                   if (!off) expectArgs(ctx, 2, 2);
-                   std::optional<DisplacementOverride> own;
-                   if (!off) own = DisplacementOverride{heightNumber(ctx.args[0], "the scale"), heightNumber(ctx.args[1], "the bias")};
-                   const Selection& sel = ctx.session.sel;
-                   ctx.session.apply(
-                       "Own displacement",
-                       [&](Document& d) {
-                           if (sel.patch >= 0)
-                               d.patches[size_t(sel.patch)].displacement = own;
-                           else if (sel.surface >= 0)
-                               d.surfaces[size_t(sel.surface)].displacement = own;
-                           else
-                               d.triangles[size_t(sel.triangle)].displacement = own;
-                       },
-                       false);
-               }});
+           .exec = execDisplacementOwn});
 }
 
 }  // namespace pw

@@ -44,13 +44,11 @@ void selectItems(Selection& sel, const std::vector<Item>& items, const std::stri
     if (ids.size() == 1) sel.*field = int(ids[0]);
 }
 
-void select(CommandContext& ctx) {
-    expectArgs(ctx, 1, 2);
+void execSelect(CommandContext& ctx) {
     const std::string& what = ctx.args[0];
     const Document& doc = ctx.session.doc;
     Selection& sel = ctx.session.sel;
     if (what == "all" || what == "none") {
-        expectArgs(ctx, 1, 1);
         sel.clear();
         if (what == "all") {
             const std::vector<bool> shown = visiblePointMask(doc);
@@ -60,7 +58,6 @@ void select(CommandContext& ctx) {
         return;
     }
     if (what == "linked" || what == "invert") {
-        expectArgs(ctx, 1, 1);
         const std::vector<uint32_t> from = ctx.session.selectedPoints();
         if (what == "linked" && from.empty()) throw EditError("nothing is selected: select a point or an item to extend");
         std::vector<uint32_t> pts = what == "linked" ? linkedPoints(doc, from) : invertedPoints(doc, from);
@@ -68,7 +65,6 @@ void select(CommandContext& ctx) {
         sel.points = std::move(pts);
         return;
     }
-    expectArgs(ctx, 2, 2);
     const std::string& list = ctx.args[1];
     sel.clear();
     if (what == "point") {
@@ -81,8 +77,6 @@ void select(CommandContext& ctx) {
         selectItems(sel, doc.triangles, list, "triangle", &Selection::triangle);
     } else if (what == "curve") {
         selectItems(sel, doc.curves, list, "curve", &Selection::curve);
-    } else {
-        throw EditError("expected all, none, linked, invert, point, patch, net, triangle or curve, got '" + what + "'");
     }
     std::sort(sel.points.begin(), sel.points.end());
     sel.points.erase(std::unique(sel.points.begin(), sel.points.end()), sel.points.end());
@@ -132,191 +126,183 @@ void transformSelection(CommandContext& ctx, const std::string& label, const std
     transformSelection(ctx, label, [&f](uint32_t, const Vec3& p) { return f(p); });
 }
 
+// Every run below sees words the table has checked against the command's forms.
+
+void execMove(CommandContext& ctx) {
+    const Vec3 d(ctx.number(0), ctx.number(1), ctx.number(2));
+    transformSelection(ctx, "Move", [d](const Vec3& p) { return p + d; });
+}
+
+void execSlide(CommandContext& ctx) {
+    const SlideAxis axis = *parseSlideAxis(ctx.word(0));
+    const double dist = ctx.number(1);
+    // Directions from the shape before the slide, so that every point moves by DIST.
+    const Document& doc = ctx.session.doc;
+    for (uint32_t p : ctx.session.selectedPoints())
+        if (!slideDirection(doc, p, axis))
+            throw EditError("point " + std::to_string(p) + " has no control polygon to slide along (a point of a patch or net slides)");
+    std::vector<Vec3> cache(doc.points.size(), Vec3(std::nan("")));
+    transformSelection(ctx, "Slide", [&](uint32_t p, const Vec3& at) {
+        if (std::isnan(cache[p].x)) cache[p] = slideDirection(doc, p, axis).value_or(Vec3(0.0));
+        return at + dist * cache[p];
+    });
+}
+
+void execRotate(CommandContext& ctx) {
+    Vec3 axis(0.0);
+    axis[ctx.index(0)] = 1.0;
+    const double rad = glm::radians(ctx.number(1));
+    const Vec3 c = ctx.session.transformPivot();
+    const glm::dmat4 m = glm::rotate(glm::dmat4(1.0), rad, axis);
+    transformSelection(ctx, "Rotate", [&](const Vec3& p) { return c + Vec3(m * glm::dvec4(p - c, 0.0)); });
+}
+
+void execScale(CommandContext& ctx) {
+    const Vec3 s = ctx.form == 0 ? Vec3(ctx.number(0)) : Vec3(ctx.number(0), ctx.number(1), ctx.number(2));
+    const Vec3 c = ctx.session.transformPivot();
+    transformSelection(ctx, "Scale", [&](const Vec3& p) { return c + s * (p - c); });
+}
+
+void execHide(CommandContext& ctx) {
+    const bool unselected = ctx.has(0);
+    const std::vector<uint32_t> pts = ctx.session.selectedPoints();
+    if (pts.empty()) throw EditError("nothing is selected (select what to hide, or what to keep for 'hide unselected')");
+    const Selection sel = ctx.session.sel;
+    ctx.session.apply(unselected ? "Hide unselected" : "Hide", [&](Document& d) {
+        if (hideItems(d, sel, pts, unselected) == 0) throw EditError("the selection covers no whole item to hide");
+    });
+    if (!unselected) ctx.session.sel.clear();
+}
+
+void execUnhide(CommandContext& ctx) {
+    std::vector<uint32_t> revealed;
+    ctx.session.apply("Reveal hidden", [&](Document& d) { revealed = revealItems(d); });
+    ctx.session.sel.clear();
+    ctx.session.sel.points = std::move(revealed);
+}
+
+void execPivot(CommandContext& ctx) { ctx.session.pivot = *parsePivot(ctx.word(0)); }
+
+void execSymmetry(CommandContext& ctx) {
+    if (ctx.form == 0) {
+        ctx.session.symmetry = {};
+        return;
+    }
+    const int a = int(ctx.index(0));
+    ctx.session.symmetry = Symmetry{a, ctx.session.cursor[a]};
+}
+
+void execSoft(CommandContext& ctx) {
+    SoftSelection& soft = ctx.session.soft;
+    SoftSelection next = soft;
+    if (ctx.form == 0) {
+        const std::string& w = ctx.word(0);
+        next.on = w == "on" || (w == "toggle" && !soft.on);
+    } else {
+        next.radius = ctx.number(0);
+        if (!(next.radius > 0.0)) throw EditError("the radius must be a positive number, got " + ctx.word(0));
+        next.on = true;
+        if (ctx.has(1)) next.falloff = *parseFalloff(ctx.word(1));
+    }
+    soft = next;
+    ctx.host.status(softDescription(soft));
+}
+
+void execSnap(CommandContext& ctx) { ctx.session.snap = *parseSnapTarget(ctx.word(0)); }
+
+void execCursor(CommandContext& ctx) { ctx.session.cursor = Vec3(ctx.number(0), ctx.number(1), ctx.number(2)); }
+
 }  // namespace
 
 void addSelectCommands(CommandTable& t) {
+    using namespace arg;
     t.add({.name = "select",
            .label = "Select",
            .menu = "Select",
-           .usage = "all|none|linked|invert|point N[,N...]|patch N[,N...]|net N|triangle N|curve N",
+           .forms = {{choice("WHAT", {"all", "none", "linked", "invert"})},
+                     {choice("ITEM", {"point", "patch", "net", "triangle", "curve"}), shown(word("N"), "N[,N...]")}},
            .help = "Select control points, or whole patches, nets, triangles or curves by number; linked: everything connected to the "
                    "selection; invert",
            .bindings = {{"Select All", "all", {"A"}},
                         {"Select None", "none", {"Alt+A"}},
                         {"Select Linked", "linked", {"L", "Ctrl+L"}},
                         {"Invert Selection", "invert", {"Ctrl+I"}}},
-           .run = select});
+           .exec = execSelect});
     t.add({.name = "move",
            .label = "Move",
-           .usage = "DX DY DZ",
+           .forms = {{number("DX"), number("DY"), number("DZ")}},
            .help = "Move the selection by a vector; joins are held",
-           .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 3, 3);
-               const Vec3 d(commandNumber(ctx.args[0], "DX"), commandNumber(ctx.args[1], "DY"), commandNumber(ctx.args[2], "DZ"));
-               transformSelection(ctx, "Move", [d](const Vec3& p) { return p + d; });
-           }});
+           .exec = execMove});
     t.add({.name = "slide",
            .label = "Slide",
-           .usage = "u|v|n DIST",
+           .forms = {{choice("DIR", {"u", "v", "n"}), number("DIST")}},
            .help = "Slide each selected point along its own control polygon in u or v, or along the surface normal there (n), by "
                    "DIST (Rhino's UVN move); soft selection slides the points around it along theirs, and joins are held",
-           .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 2, 2);
-               const auto axis = parseSlideAxis(ctx.args[0]);
-               if (!axis) throw EditError("expected u, v or n, got '" + ctx.args[0] + "'");
-               const double dist = commandNumber(ctx.args[1], "DIST");
-               // Directions from the shape before the slide, so that every point moves by DIST.
-               const Document& doc = ctx.session.doc;
-               for (uint32_t p : ctx.session.selectedPoints()) {
-                   const auto d = slideDirection(doc, p, *axis);
-                   if (!d)
-                       throw EditError("point " + std::to_string(p) +
-                                       " has no control polygon to slide along (a point of a patch or net slides)");
-               }
-               auto dirOf = [&doc, axis = *axis](uint32_t p) { return slideDirection(doc, p, axis).value_or(Vec3(0.0)); };
-               std::vector<Vec3> cache(doc.points.size(), Vec3(std::nan("")));
-               transformSelection(ctx, "Slide", [&](uint32_t p, const Vec3& at) {
-                   if (std::isnan(cache[p].x)) cache[p] = dirOf(p);
-                   return at + dist * cache[p];
-               });
-           }});
+           .exec = execSlide});
     t.add({.name = "rotate",
            .label = "Rotate",
-           .usage = "X|Y|Z DEG",
+           .forms = {{axis(), number("DEG")}},
            .help = "Rotate the selection about an axis through the pivot (median, active or 3D cursor); joins are held",
-           .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 2, 2);
-               Vec3 axis(0.0);
-               axis[axisIndex(ctx.args[0])] = 1.0;
-               const double rad = glm::radians(commandNumber(ctx.args[1], "DEG"));
-               const Vec3 c = ctx.session.transformPivot();
-               const glm::dmat4 m = glm::rotate(glm::dmat4(1.0), rad, axis);
-               transformSelection(ctx, "Rotate", [&](const Vec3& p) { return c + Vec3(m * glm::dvec4(p - c, 0.0)); });
-           }});
+           .exec = execRotate});
     t.add({.name = "scale",
            .label = "Scale",
-           .usage = "S | SX SY SZ",
+           .forms = {{number("S")}, {number("SX"), number("SY"), number("SZ")}},
            .help = "Scale the selection about the pivot (median, active or 3D cursor); joins are held",
-           .run = [](CommandContext& ctx) {
-               if (ctx.args.size() != 1) expectArgs(ctx, 3, 3);
-               Vec3 s(commandNumber(ctx.args[0], "S"));
-               if (ctx.args.size() == 3)
-                   s = Vec3(commandNumber(ctx.args[0], "SX"), commandNumber(ctx.args[1], "SY"), commandNumber(ctx.args[2], "SZ"));
-               const Vec3 c = ctx.session.transformPivot();
-               transformSelection(ctx, "Scale", [&](const Vec3& p) { return c + s * (p - c); });
-           }});
+           .exec = execScale});
     t.add({.name = "hide",
            .label = "Hide",
            .menu = "Select",
-           .usage = "[unselected]",
+           .forms = {{opt(choice("WHICH", {"unselected"}))}},
            .help = "Hide the selected items (or every item the selection does not touch); hidden items are not drawn or picked",
            .bindings = {{"Hide Selected", "", {"H"}}, {"Hide Unselected", "unselected", {"Shift+H"}}},
-           .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 0, 1);
-               if (ctx.args.size() == 1 && ctx.args[0] != "unselected")
-                   throw EditError("expected 'unselected' or nothing, got '" + ctx.args[0] + "'");
-               const bool unselected = ctx.args.size() == 1;
-               const std::vector<uint32_t> pts = ctx.session.selectedPoints();
-               if (pts.empty()) throw EditError("nothing is selected (select what to hide, or what to keep for 'hide unselected')");
-               const Selection sel = ctx.session.sel;
-               ctx.session.apply(unselected ? "Hide unselected" : "Hide", [&](Document& d) {
-                   if (hideItems(d, sel, pts, unselected) == 0) throw EditError("the selection covers no whole item to hide");
-               });
-               if (!unselected) ctx.session.sel.clear();
-           }});
+           .exec = execHide});
     t.add({.name = "unhide",
            .label = "Reveal Hidden",
            .menu = "Select",
            .help = "Show every hidden item again and select it",
            .bindings = {{"", "", {"Alt+H"}}},
-           .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 0, 0);
-               std::vector<uint32_t> revealed;
-               ctx.session.apply("Reveal hidden", [&](Document& d) { revealed = revealItems(d); });
-               ctx.session.sel.clear();
-               ctx.session.sel.points = std::move(revealed);
-           }});
+           .exec = execUnhide});
     t.add({.name = "pivot",
            .label = "Pivot",
            .menu = "Select",
-           .usage = "median|active|cursor",
+           .forms = {{choice("PIVOT", {"median", "active", "cursor"})}},
            .help = "What rotate and scale turn about: the median of the selection, the active point or item, or the 3D cursor",
            .bindings = {{"Pivot: Median", "median", {}}, {"Pivot: Active", "active", {}}, {"Pivot: 3D Cursor", "cursor", {}}},
-           .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 1, 1);
-               const auto m = parsePivot(ctx.args[0]);
-               if (!m) throw EditError("expected median, active or cursor, got '" + ctx.args[0] + "'");
-               ctx.session.pivot = *m;
-           }});
+           .exec = execPivot});
     t.add({.name = "symmetry",
            .label = "Symmetry",
            .menu = "Select",
-           .usage = "X|Y|Z|off",
+           .forms = {{choice("OFF", {"off"})}, {axis()}},
            .help = "Live symmetry: every transform moves each point's mirror partner across the plane normal to the axis through "
                    "the 3D cursor, and points on that plane stay on it",
            .bindings = {{"Symmetry: Off", "off", {}}, {"Symmetry: X", "X", {}}, {"Symmetry: Y", "Y", {}}, {"Symmetry: Z", "Z", {}}},
-           .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 1, 1);
-               if (ctx.args[0] == "off") {
-                   ctx.session.symmetry = {};
-                   return;
-               }
-               const int a = axisIndex(ctx.args[0]);
-               ctx.session.symmetry = Symmetry{a, ctx.session.cursor[a]};
-           }});
+           .exec = execSymmetry});
     t.add({.name = "soft",
            .label = "Soft Selection",
            .menu = "Select",
-           .usage = "on|off|toggle|RADIUS [smooth|linear|sharp|constant]",
+           .forms = {{choice("MODE", {"on", "off", "toggle"})},
+                     {number("RADIUS"), opt(choice("FALLOFF", {"smooth", "linear", "sharp", "constant"}))}},
            .help = "Soft selection (Blender's proportional editing): transforms also carry the points within RADIUS of the moved ones, "
                    "measured along the control nets and across joins, by the falloff; the joins are held as always. The wheel "
                    "changes the radius while moving",
            .bindings = {{"Soft Selection", "toggle", {"O"}}},
            .checked = [](const EditSession& s, const CommandHost&) { return s.soft.on; },
-           .run =
-               [](CommandContext& ctx) {
-                   expectArgs(ctx, 1, 2);
-                   SoftSelection& soft = ctx.session.soft;
-                   const std::string& w = ctx.args[0];
-                   SoftSelection next = soft;
-                   if (w == "on" || w == "off" || w == "toggle") {
-                       next.on = w == "on" || (w == "toggle" && !soft.on);
-                   } else {
-                       next.radius = commandNumber(w, "RADIUS");
-                       if (!(next.radius > 0.0) || next.radius > 1e9) throw EditError("the radius must be a positive number, got " + w);
-                       next.on = true;
-                   }
-                   if (ctx.args.size() == 2) {
-                       const auto f = parseFalloff(ctx.args[1]);
-                       if (!f) throw EditError("expected smooth, linear, sharp or constant, got '" + ctx.args[1] + "'");
-                       next.falloff = *f;
-                   }
-                   soft = next;
-                   ctx.host.status(softDescription(soft));
-               }});
+           .exec = execSoft});
     t.add({.name = "snap",
            .label = "Snap To",
            .menu = "Select",
-           .usage = "grid|points|edges|surfaces",
+           .forms = {{choice("TARGET", {"grid", "points", "edges", "surfaces"})}},
            .help = "What a move snaps to while Ctrl is held: grid increments, control points, boundary edges or surfaces",
            .bindings = {{"Snap: Grid", "grid", {}},
                         {"Snap: Points", "points", {}},
                         {"Snap: Edges", "edges", {}},
                         {"Snap: Surfaces", "surfaces", {}}},
-           .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 1, 1);
-               const auto m = parseSnapTarget(ctx.args[0]);
-               if (!m) throw EditError("expected grid, points, edges or surfaces, got '" + ctx.args[0] + "'");
-               ctx.session.snap = *m;
-           }});
+           .exec = execSnap});
     t.add({.name = "cursor",
            .label = "Place 3D Cursor",
-           .usage = "X Y Z",
+           .forms = {{number("X"), number("Y"), number("Z")}},
            .help = "Place the 3D cursor, where new patches, triangles, curves and nets appear",
-           .run = [](CommandContext& ctx) {
-               expectArgs(ctx, 3, 3);
-               ctx.session.cursor = Vec3(commandNumber(ctx.args[0], "X"), commandNumber(ctx.args[1], "Y"), commandNumber(ctx.args[2], "Z"));
-           }});
+           .exec = execCursor});
 }
 
 }  // namespace pw

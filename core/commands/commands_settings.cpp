@@ -16,28 +16,31 @@ std::string settingKeys() {
     return keys;
 }
 
+// `set KEY VALUE...`: the words after the key are the row's values, checked by the settings table.
+void execSet(CommandContext& ctx) {
+    const Setting* s = findSetting(ctx.word(0));
+    if (!s) throw EditError("no setting named '" + ctx.word(0) + "'; keys: " + settingKeys());
+    const std::vector<double> values = parseSettingValues(*s, ctx.rest(1));
+    if (ctx.preview) {
+        s->set(ctx.session.doc, values);
+        ctx.session.changed(false);
+        return;
+    }
+    ctx.session.apply(
+        std::string(s->label), [&](Document& d) { s->set(d, values); }, false);
+}
+
 }  // namespace
 
 void addSettingCommands(CommandTable& t) {
+    using namespace arg;
     t.add({.name = "set",
            .label = "Set a Setting",
-           .usage = "KEY VALUE...",
+           .forms = {{word("KEY"), many(word("VALUE"))}},
            .help = "Set a tessellation or display setting by its file name (" + settingKeys() +
                    "): numbers within the setting's range, on|off, or one of its choices",
            .previewable = true,
-           .run = [](CommandContext& ctx) {
-               if (ctx.args.empty()) throw EditError("expected KEY VALUE...; keys: " + settingKeys());
-               const Setting* s = findSetting(ctx.args[0]);
-               if (!s) throw EditError("no setting named '" + ctx.args[0] + "'; keys: " + settingKeys());
-               const std::vector<double> values = parseSettingValues(*s, std::vector<std::string>(ctx.args.begin() + 1, ctx.args.end()));
-               if (ctx.preview) {
-                   s->set(ctx.session.doc, values);
-                   ctx.session.changed(false);
-                   return;
-               }
-               ctx.session.apply(
-                   std::string(s->label), [&](Document& d) { s->set(d, values); }, false);
-           }});
+           .exec = execSet});
 }
 
 }  // namespace pw

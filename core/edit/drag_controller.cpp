@@ -338,4 +338,10 @@ std::string HeldPointEdit::set(EditSession& session, uint32_t point, const Vec3&
     return "";
 }
 
+void HeldPointEdit::finish(EditSession& session) {
+    if (projection_.ok()) return session.commit("Edit point");
+    session.doc = session.committed();
+    session.changed(false);
+}
+
 }  // namespace pw

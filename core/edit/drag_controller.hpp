@@ -153,9 +153,12 @@ private:
 class HeldPointEdit {
 public:
     // Writes session.doc.points (the point's mirror partner too under the session's symmetry);
-    // commit() is the caller's. Returns "" or, for a coordinate that is
+    // finish() commits it when the drag ends. Returns "" or, for a coordinate that is
     // not finite or beyond limits::kMaxCoordinate, the message (and changes nothing).
     std::string set(EditSession& session, uint32_t point, const Vec3& position);
+    // The drag let go: what set() did is one undo step ("Edit point"), or, when the joins could
+    // not follow the last position, nothing: the document goes back to its committed state.
+    void finish(EditSession& session);
     void reset() { solver_.reset(); }                             // another document
     const Projection& projection() const { return projection_; }  // of the last set()
 

@@ -24,6 +24,7 @@ const std::string& EditSession::title() const {
 
 void EditSession::changed(bool topology) {
     ++version_;
+    ++shapeVersion_;
     if (topology) ++topologyVersion_;
     clampSelection(sel, doc);
 }
@@ -87,6 +88,7 @@ void EditSession::commit(const std::string& label) {
     history_.commit(committed_, doc, label);
     markCommitted();
     ++version_;
+    ++shapeVersion_;
 }
 
 bool EditSession::undo() { return step(false); }
@@ -112,6 +114,16 @@ void EditSession::apply(const std::string& label, const std::function<void(Docum
     doc = std::move(d);
     commit(label);
     changed(topology);
+}
+
+void EditSession::applyLevels(const std::string& label, const std::function<void(Document&)>& op) {
+    Document d = doc;
+    op(d);
+    doc = std::move(d);
+    const uint64_t shape = shapeVersion_;
+    commit(label);
+    shapeVersion_ = shape;
+    changedLevels();
 }
 
 Document EditSession::documentToSave() const {

@@ -49,7 +49,11 @@ public:
     uint64_t version() const { return version_; }
     uint64_t topologyVersion() const { return topologyVersion_; }
     uint64_t documentSerial() const { return serial_; }  // bumped by reset(): a different document
+    // Bumped with version() except when only items' own tessellation levels changed
+    // (changedLevels): a renderer rewrites their levels in place instead of uploading the scene.
+    uint64_t shapeVersion() const { return shapeVersion_; }
     void changed(bool topology);
+    void changedLevels() { ++version_; }
 
     // Replaces the document (new, open, recover): history cleared, saved state, camera from the
     // document, selection cleared.
@@ -70,6 +74,8 @@ public:
     // `detected`: the edit brings in joins found by join detection (import, mirror), which may be
     // off by detection's own tolerance (1e-4 × model size) like a file that is opened.
     void apply(const std::string& label, const std::function<void(Document&)>& op, bool topology = true, bool detected = false);
+    // The same for an edit of items' own tessellation levels only (changedLevels).
+    void applyLevels(const std::string& label, const std::function<void(Document&)>& op);
 
     // The document as it is saved: doc with the session's camera.
     Document documentToSave() const;
@@ -95,7 +101,7 @@ private:
     Document committed_;
     EditHistory history_;
     std::string path_;
-    uint64_t generation_ = 0, version_ = 0, topologyVersion_ = 0, serial_ = 0;
+    uint64_t generation_ = 0, version_ = 0, topologyVersion_ = 0, shapeVersion_ = 0, serial_ = 0;
     bool forceModified_ = false;
     std::vector<std::string> notes_;
     void markCommitted();

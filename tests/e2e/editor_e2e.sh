@@ -101,7 +101,7 @@ sleep 0.3
 xdotool type --delay 40 "5e10"
 sleep 0.3
 xdotool key Return
-wait_for "t['modal'] == 'error' and '5e+10 was not applied' in t['error'] and t['world'][$IDX] == $ORIG"
+wait_for "t['modal'] == 'error' and '5e+10 is beyond the coordinate limit' in t['error'] and t['world'][$IDX] == $ORIG"
 say "inspector: $(trace "t['error']")"
 click_item error.ok
 wait_for "t['modal'] == '' and t['world'][$IDX] == $ORIG"

@@ -128,6 +128,7 @@ void Editor::documentChanged(bool topology) {
     clampSelection(sel_, doc_);
     seenVersion_ = session_.version();
     seenTopology_ = session_.topologyVersion();
+    seenShape_ = session_.shapeVersion();
     ++docVersion_;
     wake();
 }
@@ -148,6 +149,8 @@ void Editor::runCommand(const std::vector<std::string>& words, bool guarded) {
     }
     if (session_.documentSerial() != seenSerial_)
         documentReplaced();
+    else if (session_.version() != seenVersion_ && session_.shapeVersion() == seenShape_)
+        levelsChanged();  // only items' own levels: rewritten in place
     else if (session_.version() != seenVersion_)
         documentChanged(session_.topologyVersion() != seenTopology_);
     wake();
@@ -183,8 +186,10 @@ void Editor::previewCommand(const std::vector<std::string>& words) {
     } catch (const std::exception&) {
         return;  // the document is unchanged; the runCommand on release reports the error
     }
+    if (session_.version() != seenVersion_ && session_.shapeVersion() == seenShape_) return levelsChanged();
     // Settings travel in the render options: nothing to upload while the slider moves.
     seenVersion_ = session_.version();
+    seenShape_ = session_.shapeVersion();
     settingsChanged();
 }
 

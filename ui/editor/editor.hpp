@@ -223,9 +223,9 @@ private:
     Document& doc_ = session_.doc;
     Selection& sel_ = session_.sel;
     Camera& cam_ = session_.camera;
-    Edge& lastEdge_ = session_.activeEdge;                          // edge nearest the last surface click (extrude, unjoin)
-    uint64_t seenVersion_ = 0, seenTopology_ = 0, seenSerial_ = 0;  // the session as last drawn
-    uint64_t docVersion_ = 0;                                       // bumped by every edit and settings change (caches of the document)
+    Edge& lastEdge_ = session_.activeEdge;                                          // edge nearest the last surface click (extrude, unjoin)
+    uint64_t seenVersion_ = 0, seenTopology_ = 0, seenShape_ = 0, seenSerial_ = 0;  // the session as last drawn
+    uint64_t docVersion_ = 0;  // bumped by every edit and settings change (caches of the document)
     std::vector<bool> usedMask_;
     // The document's height map (displacement), loaded when the file it names changes; a map that
     // cannot be read leaves the surface undisplaced and says why once.

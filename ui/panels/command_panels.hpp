@@ -18,7 +18,7 @@ struct CommandEntry {
     std::string label, args, shortcut;  // shortcut: every key of the binding, " / "-joined
     // A command whose arguments are required and not given by the binding: menus and the palette
     // put "name " into the palette's field to be completed instead of running it.
-    bool needsArguments() const { return args.empty() && !command->usage.empty() && command->usage[0] != '['; }
+    bool needsArguments() const { return args.empty() && commandNeedsWords(*command); }
     std::vector<std::string> words() const {
         std::vector<std::string> w = splitCommandWords(args);
         w.insert(w.begin(), command->name);

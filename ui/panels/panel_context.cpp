@@ -1,9 +1,9 @@
-// The widgets every panel shares (ui/panels/panel_context.hpp): a button that runs a command, and a
-// document operation as one undo step.
+// The widgets every panel shares (ui/panels/panel_context.hpp): a button that runs a command.
 #include "ui/panels/panel_context.hpp"
 
 #include <imgui.h>
 
+#include <cstdio>
 #include <stdexcept>
 
 #include "ui/platform/imgui_tip.hpp"
@@ -23,14 +23,10 @@ void commandButton(PanelContext& ctx, const char* label, const std::string& line
     if (pressed) ctx.runCommand(words);
 }
 
-void patchOp(PanelContext& ctx, const std::string& label, const std::function<void(Document&)>& op, bool topology) {
-    try {
-        ctx.session().apply(label, op, topology);
-    } catch (const std::exception& e) {
-        ctx.showError(label + " failed: " + e.what());
-        return;
-    }
-    ctx.documentChanged(topology);
+std::string commandWord(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
 }
 
 }  // namespace pw::ui

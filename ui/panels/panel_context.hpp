@@ -73,7 +73,7 @@ public:
 // A button that runs a command line: disabled when the command is, its help as tooltip, traced
 // under `trace` when given.
 void commandButton(PanelContext& ctx, const char* label, const std::string& line, const char* trace = nullptr);
-// Runs `op` on the document as one undo step; an exception goes to the error dialog.
-void patchOp(PanelContext& ctx, const std::string& label, const std::function<void(Document&)>& op, bool topology = true);
+// A number as a command word that reads back to the same double ("%.17g").
+std::string commandWord(double v);
 
 }  // namespace pw::ui

@@ -15,7 +15,7 @@ namespace pw::ui {
 namespace {
 
 // The selection's own displacement, if the selection is a patch, net or triangle.
-std::optional<DisplacementOverride>* selectedOwn(EditSession& s) {
+const std::optional<DisplacementOverride>* selectedOwn(const EditSession& s) {
     if (s.sel.patch >= 0 && size_t(s.sel.patch) < s.doc.patches.size()) return &s.doc.patches[size_t(s.sel.patch)].displacement;
     if (s.sel.surface >= 0 && size_t(s.sel.surface) < s.doc.surfaces.size()) return &s.doc.surfaces[size_t(s.sel.surface)].displacement;
     if (s.sel.triangle >= 0 && size_t(s.sel.triangle) < s.doc.triangles.size())
@@ -27,8 +27,8 @@ std::optional<DisplacementOverride>* selectedOwn(EditSession& s) {
 
 void drawDisplacementPanel(PanelContext& ctx) {
     if (!ImGui::CollapsingHeader("Displacement")) return;
-    EditSession& s = ctx.session();
-    DisplacementSettings& d = s.doc.displacement;
+    const EditSession& s = ctx.session();
+    const DisplacementSettings& d = s.doc.displacement;
     if (ImGui::Button("Load height map...")) ctx.runCommand({"displacement"});
     traceItem("displacement.load");
     tip("An 8- or 16-bit PNG; the surface moves along its normal by scale x map + bias");
@@ -43,16 +43,22 @@ void drawDisplacementPanel(PanelContext& ctx) {
     settingRow(ctx, "displacement.bias");
     settingRow(ctx, "displacement.mapping");
     const float speed = float(std::max(modelSize(s.doc), 1e-6) * 1e-3);
-    if (std::optional<DisplacementOverride>* own = selectedOwn(s)) {
+    // The selection's own scale and bias: the displacement-own command (previewed while dragged,
+    // one undo step on release).
+    if (const std::optional<DisplacementOverride>* own = selectedOwn(s)) {
         bool has = own->has_value();
-        if (ImGui::Checkbox("Own scale and bias", &has)) {
-            *own = has ? std::optional<DisplacementOverride>(DisplacementOverride{d.scale, d.bias}) : std::nullopt;
-            s.commit("Own displacement");
-        }
+        if (ImGui::Checkbox("Own scale and bias", &has))
+            ctx.runCommand(has ? std::vector<std::string>{"displacement-own", commandWord(d.scale), commandWord(d.bias)}
+                               : std::vector<std::string>{"displacement-own", "off"});
         tip("The selected patch, net or triangle displaced by its own scale and bias");
         if (own->has_value()) {
-            commitEdit(ctx, ImGui::DragFloat("Own scale", &(*own)->scale, speed, -1e6f, 1e6f, "%.4g"), "Own displacement");
-            commitEdit(ctx, ImGui::DragFloat("Own bias", &(*own)->bias, speed, -1e6f, 1e6f, "%.4g"), "Own displacement");
+            float scale = (*own)->scale, bias = (*own)->bias;
+            for (float* v : {&scale, &bias}) {
+                const bool moved = ImGui::DragFloat(v == &scale ? "Own scale" : "Own bias", v, speed, -1e6f, 1e6f, "%.4g");
+                const std::vector<std::string> words{"displacement-own", commandWord(scale), commandWord(bias)};
+                if (moved) ctx.previewCommand(words);
+                if (ImGui::IsItemDeactivatedAfterEdit()) ctx.runCommand(words);
+            }
         }
     }
     ImGui::TextDisabled("Adaptive levels follow the map's detail");

@@ -51,7 +51,7 @@ void drawHelp(PanelContext& ctx, bool& open) {
                     ImGui::TableNextColumn();
                     ImGui::TextUnformatted(e.shortcut.c_str());
                     ImGui::TableNextColumn();
-                    const std::string script = c.name + " " + (e.args.empty() ? c.usage : e.args);
+                    const std::string script = c.name + " " + (e.args.empty() ? commandUsage(c) : e.args);
                     ImGui::TextWrapped("%s", script.c_str());
                     ImGui::TableNextColumn();
                     ImGui::TextWrapped("%s: %s", e.label.c_str(), c.help.c_str());

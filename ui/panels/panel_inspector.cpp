@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/base/limits.hpp"
 #include "ui/panels/side_panels.hpp"
 #include "ui/platform/imgui_tip.hpp"
 #include "ui/platform/item_trace.hpp"
@@ -17,41 +18,49 @@ namespace pw::ui {
 namespace {
 
 struct OwnLevelsText {
-    const char* what;  // "patch", "triangle": in the undo step names
-    const char* id;    // ImGui id suffix and trace name part
+    const char* what;     // "patch", "triangle": the item in the `rename` command
+    const char* command;  // "patch-levels", "triangle-levels"
+    const char* id;       // ImGui id suffix and trace name part
     const char *overrideTip, *outerTip, *innerTip;
 };
 
-// The name row and the own-levels rows of a patch (4 outer + 2 inner) or a triangle (3 + 1).
+// The name row and the own-levels rows of item `index`, a patch (4 outer + 2 inner) or a triangle
+// (3 + 1): the `rename` and `patch-levels` / `triangle-levels` commands (previewed while a slider
+// moves, one undo step on release). `typedName` keeps the name being typed between frames.
 template <size_t N>
-void ownLevelsRows(PanelContext& ctx, const OwnLevelsText& t, std::string& name, std::optional<std::array<float, N>>& levels,
-                   int outerCount) {
-    EditSession& s = ctx.session();
-    const std::string what = t.what, id = t.id;
+void ownLevelsRows(PanelContext& ctx, const OwnLevelsText& t, uint32_t index, const std::string& name,
+                   const std::optional<std::array<float, N>>& levels, int outerCount, std::string& typedName) {
+    const std::string id = t.id, item = std::to_string(index);
     char buf[128];
     std::snprintf(buf, sizeof buf, "%s", name.c_str());
-    if (ImGui::InputText(("Name##" + id).c_str(), buf, sizeof buf)) name = buf;
-    if (ImGui::IsItemDeactivatedAfterEdit()) s.commit("Rename " + what);
+    if (ImGui::InputText(("Name##" + id).c_str(), buf, sizeof buf)) typedName = buf;
+    if (ImGui::IsItemDeactivatedAfterEdit()) ctx.runCommand({"rename", t.what, item, typedName});
     tip("Name shown in the outliner");
-    const std::string step = (what == "patch" ? "Patch" : "Triangle") + std::string(" tessellation override");
     bool ov = levels.has_value();
     if (ImGui::Checkbox(("Override tessellation##" + id).c_str(), &ov)) {
-        levels.reset();
-        if (ov) levels.emplace().fill(8.0f);
-        s.commit(step);
-        ctx.levelsChanged();
+        std::vector<std::string> words{t.command, item};
+        if (ov)
+            words.insert(words.end(), N, "8");
+        else
+            words.push_back("off");
+        ctx.runCommand(words);
     }
-    traceItem("inspector." + (id.empty() ? std::string("patch") : id) + "Override");
+    traceItem("inspector." + id + "Override");
     tip(t.overrideTip);
     if (!levels) return;
-    const float lo = 1.0f, hi = 64.0f;
+    std::array<float, N> edited = *levels;
+    const float lo = 1.0f, hi = limits::kMaxTessLevel;
     const int counts[2] = {outerCount, int(N) - outerCount};
     const char* labels[2] = {"Outer##ov", "Inner##ov"};
     const char* tips[2] = {t.outerTip, t.innerTip};
     for (int k = 0; k < 2; ++k) {
-        float* data = levels->data() + (k == 0 ? 0 : outerCount);
-        if (ImGui::SliderScalarN((labels[k] + id).c_str(), ImGuiDataType_Float, data, counts[k], &lo, &hi, "%.0f")) ctx.levelsChanged();
-        if (ImGui::IsItemDeactivatedAfterEdit()) s.commit(step);
+        float* data = edited.data() + (k == 0 ? 0 : outerCount);
+        const bool moved = ImGui::SliderScalarN((labels[k] + id).c_str(), ImGuiDataType_Float, data, counts[k], &lo, &hi, "%.0f",
+                                                ImGuiSliderFlags_AlwaysClamp);
+        std::vector<std::string> words{t.command, item};
+        for (float v : edited) words.push_back(commandWord(v));
+        if (moved) ctx.previewCommand(words);
+        if (ImGui::IsItemDeactivatedAfterEdit()) ctx.runCommand(words);
         tip(tips[k]);
     }
 }
@@ -106,9 +115,7 @@ void weightRow(PanelContext& ctx, const std::vector<uint32_t>& points) {
     for (uint32_t p : points) mixed = mixed || pointWeight(doc, p) != w;
     if (ImGui::InputDouble(mixed ? "Weight (mixed)" : "Weight", &w, 0.0, 0.0, "%.6g",
                            ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CharsScientific)) {
-        char buf[32];
-        std::snprintf(buf, sizeof buf, "%.17g", w);
-        ctx.runCommand({"weight", buf});
+        ctx.runCommand({"weight", commandWord(w)});
     }
     traceItem("inspector.weight");
     tip("The weight of the selected control points (rational patches): above 1 pulls the surface towards them, below 1 lets it go; "
@@ -120,7 +127,7 @@ void weightRow(PanelContext& ctx, const std::vector<uint32_t>& points) {
 void InspectorPanel::draw(PanelContext& ctx) {
     if (!ImGui::CollapsingHeader("Inspector", ImGuiTreeNodeFlags_DefaultOpen)) return;
     EditSession& s = ctx.session();
-    Document& doc = s.doc;
+    const Document& doc = s.doc;
     const Selection& sel = s.sel;
     transformRow(ctx);
     if (sel.points.size() == 1) {
@@ -134,14 +141,18 @@ void InspectorPanel::draw(PanelContext& ctx) {
             setPoint(ctx, p, Vec3(v[0], v[1], v[2]));
         }
         traceItem("inspector.position");
-        if (ImGui::IsItemDeactivatedAfterEdit()) s.commit("Edit point");
+        if (ImGui::IsItemDeactivatedAfterEdit()) {
+            held_.finish(s);
+            ctx.documentChanged(false);
+        }
         tip("Drag to change; joins are held (the solver moves the neighbours)");
         // Exact entry: applied when Enter is pressed.
         double typed[3] = {doc.points[p].x, doc.points[p].y, doc.points[p].z};
         if (ImGui::InputScalarN("Set", ImGuiDataType_Double, typed, 3, nullptr, nullptr, "%.6g",
                                 ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CharsScientific)) {
-            setPoint(ctx, p, Vec3(typed[0], typed[1], typed[2]));
-            s.commit("Set point");
+            std::vector<std::string> words{"point", std::to_string(p)};
+            for (double v : typed) words.push_back(commandWord(v));
+            ctx.runCommand(words);
         }
         traceItem("inspector.set");
         tip("Type exact coordinates and press Enter; joins are held");
@@ -159,21 +170,21 @@ void InspectorPanel::draw(PanelContext& ctx) {
     }
     if (sel.patch >= 0 && sel.patch < int(doc.patches.size())) {
         ImGui::Separator();
-        Patch& pt = doc.patches[size_t(sel.patch)];
+        const Patch& pt = doc.patches[size_t(sel.patch)];
         ImGui::Text("Patch %d  (%s)", sel.patch, basisName(pt.basis).data());
         ownLevelsRows(ctx,
-                      {"patch", "patch", "Give this patch its own outer/inner levels", "Outer levels of edges u0, v0, u1, v1",
-                       "Inner levels along u and v"},
-                      pt.name, pt.tessOverride, 4);
+                      {"patch", "patch-levels", "patch", "Give this patch its own outer/inner levels",
+                       "Outer levels of edges u0, v0, u1, v1", "Inner levels along u and v"},
+                      uint32_t(sel.patch), pt.name, pt.tessOverride, 4, typedName_);
     }
     if (sel.triangle >= 0 && sel.triangle < int(doc.triangles.size())) {
         ImGui::Separator();
-        TrianglePatch& tri = doc.triangles[size_t(sel.triangle)];
+        const TrianglePatch& tri = doc.triangles[size_t(sel.triangle)];
         ImGui::Text("Bézier triangle %d  (10 points)", sel.triangle);
         ownLevelsRows(ctx,
-                      {"triangle", "tri", "Give this triangle its own three outer levels and inner level",
+                      {"triangle", "triangle-levels", "tri", "Give this triangle its own three outer levels and inner level",
                        "Outer levels of edges u = 0, v = 0, w = 0", "Inner level"},
-                      tri.name, tri.tessOverride, 3);
+                      uint32_t(sel.triangle), tri.name, tri.tessOverride, 3, typedName_);
     }
 }
 

@@ -43,7 +43,7 @@ void CommandPalette::complete(PanelContext& ctx, const Command& c) {
     cursor_ = 0;
     refocus_ = true;
     cursorToEnd_ = true;
-    ctx.host().status("Type the arguments: " + c.name + " " + c.usage);
+    ctx.host().status("Type the arguments: " + c.name + " " + commandUsage(c));
 }
 
 void CommandPalette::draw(PanelContext& ctx) {

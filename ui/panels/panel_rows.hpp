@@ -1,5 +1,5 @@
 // Rows the settings panels share: a row of the settings table (core/model/settings.hpp) drawn as
-// its widget, and an edited value committed as one undo step.
+// its widget.
 #pragma once
 
 #include <imgui.h>
@@ -9,13 +9,6 @@
 #include "ui/panels/panel_context.hpp"
 
 namespace pw::ui {
-
-// After a slider, drag or field: redraws while it changes and commits one undo step `step` when
-// the user lets go (or at once for a click that is already over).
-inline void commitEdit(PanelContext& ctx, bool changed, const char* step) {
-    if (changed) ctx.settingsChanged();
-    if (ImGui::IsItemDeactivatedAfterEdit() || (changed && !ImGui::IsItemActive())) ctx.session().commit(step);
-}
 
 // The setting `key` as its widget (slider, drag, colour, checkbox or combo) with its label and
 // tooltip. It reads the document and writes it only through the `set` command: a live preview while

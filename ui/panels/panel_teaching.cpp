@@ -54,12 +54,12 @@ TessSettings Teaching::shownTess(const TessSettings& doc) const {
 void Teaching::endLesson(PanelContext& ctx, bool keep) {
     if (!lesson.active) return;
     sweep.playing = false;
-    if (keep) {
-        TessSettings& ts = ctx.session().doc.tess;
-        ts = shownTess(ts);
-        ts.linked = false;
-        ctx.settingsChanged();
-        ctx.session().commit(lesson.name + " levels");
+    if (keep) {  // one undo step: the tess-fixed command
+        const TessSettings ts = shownTess(ctx.session().doc.tess);
+        std::vector<std::string> words{"tess-fixed", std::string(spacingName(ts.spacing))};
+        for (float v : ts.outer) words.push_back(commandWord(v));
+        for (float v : ts.inner) words.push_back(commandWord(v));
+        ctx.runCommand(words);
     }
     lesson.active = false;
     ctx.wake();
@@ -89,8 +89,7 @@ void Teaching::drawControls(PanelContext& ctx) {
     const bool open = ImGui::CollapsingHeader("Teaching");
     traceItem("panel.teaching");
     if (!open) return;
-    Document& doc = ctx.session().doc;
-    TessSettings& ts = doc.tess;
+    const Document& doc = ctx.session().doc;
     ImGui::Checkbox("Domain view", &showDomain);
     traceItem("teach.domain");
     tip("The parametric domain tessellated by the GPU with the current levels and partitioning");
@@ -172,32 +171,24 @@ void Teaching::drawControls(PanelContext& ctx) {
         traceItem("preset.notesPatch2");
         tip("The second notes' 16 control points (raised higher) at level 15, integer partitioning (replaces the document)");
         // The notes' distance formulas: adaptivity is the document's, so each is a visible undo step.
-        const auto formula = [&](const char* label, const char* id, auto apply, const char* said, const char* help) {
+        const auto formula = [&](const char* label, const char* id, const char* preset, const char* said, const char* help) {
             if (ImGui::Selectable(label)) {
                 endLesson(ctx, false);
-                apply(ts);
-                ctx.settingsChanged();
-                ctx.session().commit(label);
+                ctx.runCommand({"adaptive-preset", preset});
                 ctx.host().status(std::string(said) + " is now the document's adaptive tessellation (Ctrl+Z undoes it)");
             }
             traceItem(id);
             tip(help);
         };
-        formula(
-            "Distance formula of the notes", "preset.notesDistance", [](TessSettings& t) { applyNotesDistanceFormula(t, true); },
-            "The notes' distance formula",
-            "level = 64 * saturate((d1 - d) / (d1 - d0)) from each patch's centre, d0 = 20, d1 = 100, culled beyond: as the notes "
-            "write it, so neighbours at different distances crack (one undo step)");
-        formula(
-            "Distance formula of the notes, per edge", "preset.notesDistanceEdges",
-            [](TessSettings& t) { applyNotesDistanceFormula(t, false); }, "The notes' formula per edge",
-            "The same formula measured at each edge's midpoint: both patches on an edge agree, no crack (one undo step)");
-        formula(
-            "Terrain formula of the notes", "preset.notesTerrain", [](TessSettings& t) { applyNotesTerrainFormula(t); },
-            "The terrain notes' formula",
-            "level = 2^lerp(20, 4, saturate((d - 10) / (200 - 10))), edges from their midpoints and the inside from the centre, "
-            "fractional_even; the height map only moves the vertices. data/terrain_notes.patchwork is the notes' terrain with it "
-            "(one undo step)");
+        formula("Distance formula of the notes", "preset.notesDistance", "notes", "The notes' distance formula",
+                "level = 64 * saturate((d1 - d) / (d1 - d0)) from each patch's centre, d0 = 20, d1 = 100, culled beyond: as the notes "
+                "write it, so neighbours at different distances crack (one undo step)");
+        formula("Distance formula of the notes, per edge", "preset.notesDistanceEdges", "notes-edges", "The notes' formula per edge",
+                "The same formula measured at each edge's midpoint: both patches on an edge agree, no crack (one undo step)");
+        formula("Terrain formula of the notes", "preset.notesTerrain", "notes-terrain", "The terrain notes' formula",
+                "level = 2^lerp(20, 4, saturate((d - 10) / (200 - 10))), edges from their midpoints and the inside from the centre, "
+                "fractional_even; the height map only moves the vertices. data/terrain_notes.patchwork is the notes' terrain with it "
+                "(one undo step)");
         ImGui::EndCombo();
     }
     traceItem("teach.preset");

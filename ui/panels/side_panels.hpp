@@ -31,7 +31,8 @@ public:
     void documentReplaced() { held_.reset(); }
 
 private:
-    HeldPointEdit held_;  // numeric edits hold the joins like a drag
+    HeldPointEdit held_;     // dragging the Position row holds the joins like a drag in the view
+    std::string typedName_;  // the name being typed into a Name row
     void setPoint(PanelContext& ctx, uint32_t p, const Vec3& position);
 };
 
