@@ -20,6 +20,7 @@
 #include "ui/panels/side_panels.hpp"
 #include "ui/platform/item_trace.hpp"
 #include "ui/platform/shortcuts.hpp"
+#include "ui/platform/widgets.hpp"
 
 using namespace pw;
 using namespace pw::ui;
@@ -195,7 +196,7 @@ TEST_F(Ui, ATickedBoxRunsItsSettingCommand) {
     ImGuiIO& io = ImGui::GetIO();
     auto panel = [&] { drawDisplayPanel(ctx); };
     frame(panel);
-    io.MousePos = centre("display.boundaries");
+    io.MousePos = centre("display.showBoundaries");
     io.MouseDown[0] = true;
     frame(panel);
     io.MouseDown[0] = false;
@@ -203,6 +204,35 @@ TEST_F(Ui, ATickedBoxRunsItsSettingCommand) {
     EXPECT_TRUE(ctx.session().doc.display.showBoundaries);
     EXPECT_EQ(ctx.commandsRun, 1);
     EXPECT_EQ(ctx.session().history().undoLabel(), "Boundaries");
+}
+
+// The Inspector and the Net panel act only through commands (issue 38): the Override box runs
+// patch-levels (one undo step, levels only), the net's Convert button runs net-to-patches.
+TEST_F(Ui, TheInspectorAndTheNetPanelRunCommands) {
+    HeadlessContext ctx;
+    ctx.runCommand({"add-patch"}, true);
+    ctx.runCommand({"select", "patch", "0"}, true);
+    InspectorPanel inspector;
+    auto drawInspector = [&] { inspector.draw(ctx); };
+    const uint64_t shape = ctx.session().shapeVersion();
+    const int before = ctx.commandsRun;
+    click(drawInspector, "inspector.patchOverride");
+    ASSERT_TRUE(ctx.session().doc.patches[0].tessOverride.has_value());
+    EXPECT_EQ(*ctx.session().doc.patches[0].tessOverride, (std::array<float, 6>{8, 8, 8, 8, 8, 8}));
+    EXPECT_EQ(ctx.commandsRun, before + 1);
+    EXPECT_EQ(ctx.session().history().undoLabel(), "Patch tessellation override");
+    EXPECT_EQ(ctx.session().shapeVersion(), shape);  // the renderer rewrites levels in place
+    click(drawInspector, "inspector.patchOverride");
+    EXPECT_FALSE(ctx.session().doc.patches[0].tessOverride.has_value());
+
+    ctx.runCommand({"add-net", "7", "7"}, true);
+    ASSERT_EQ(ctx.session().sel.surface, 0);
+    NetPanel net;
+    click([&] { net.draw(ctx); }, "net.toPatches");
+    EXPECT_TRUE(ctx.session().doc.surfaces.empty());
+    EXPECT_EQ(ctx.session().doc.patches.size(), 17u);
+    EXPECT_EQ(ctx.session().history().undoLabel(), "Convert net to patches");
+    EXPECT_TRUE(ctx.errors.empty()) << ::testing::PrintToString(ctx.errors);
 }
 
 TEST(UiKeys, TheEditorsKeysComeFromTheCommandTableAlone) {
@@ -242,17 +272,19 @@ TEST(UiKeys, F1ListsEveryKeyTheTableBindsAndTheModalKeys) {
 
 TEST_F(Ui, WidgetsAreTracedOnlyWhileATraceIsSet) {
     frame([] {
-        ImGui::Button("one");
-        traceItem("one");
-        traceModal("modal");
+        widget::Button("One##one");
+        widget::Button("Unnamed");
+        widget::BeginModalWindow("A dialog##modal", nullptr);
+        ImGui::End();
     });
     EXPECT_EQ(trace.items.count("one"), 1u);
+    EXPECT_EQ(trace.items.size(), 1u);  // a label without "##name" is not traced
     EXPECT_EQ(trace.modal, "modal");
+    EXPECT_EQ(traceName("Domain view##teach.domain"), "teach.domain");
+    EXPECT_EQ(traceName("Tab###shaders.tab.x"), "shaders.tab.x");
+    EXPECT_EQ(traceName("Tese##shaders.tab.x###tese"), "shaders.tab.x");
     setItemTrace(nullptr);
-    frame([] {
-        ImGui::Button("two");
-        traceItem("two");
-    });
+    frame([] { widget::Button("Two##two"); });
     EXPECT_EQ(trace.items.count("two"), 0u);
 }
 

@@ -74,7 +74,7 @@ say "shader panel: surface_tese_equal, then surface_tese_odd after the fractiona
 # shader panel with the document's partitioning, and adding the curve is one undo step. (The kept
 # preset's undone step is dropped by the next edit.)
 STEPS=$(trace "t['undoSteps'] - 1")
-click_item display.isocurves
+click_item display.showIsocurves
 wait_for "t['isocurves'] and 'isocurve_tese_odd' in t['shaders']['inUse']"
 click_item op.addCurve
 wait_for "t['curves'] == 1 and 'curve_tese_odd' in t['shaders']['inUse'] and t['undoSteps'] == $STEPS + 2"

@@ -19,7 +19,7 @@
 #include "core/select/snapping.hpp"
 #include "ui/editor/editor.hpp"
 #include "ui/platform/imgui_tip.hpp"
-#include "ui/platform/item_trace.hpp"
+#include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
 
@@ -124,8 +124,7 @@ void Editor::drawCurvePanel() {
     ImGui::Text("Click points on the %s plane through the 3D cursor: %zu so far%s%s", kAxisPlane[curve_.planeAxis], curve_.points.size(),
                 curve_.snapped.empty() ? "" : "; snapping to a ", curve_.snapped.c_str());
     ImGui::SetNextItemWidth(140 * uiScale());
-    ImGui::Combo("Plane", &curve_.plane, kPlaneNames, 4);
-    traceItem("curve.plane");
+    widget::Combo("Plane##curve.plane", &curve_.plane, kPlaneNames, 4);
     ImGui::SameLine();
     ImGui::Checkbox("Grid", &curve_.gridSnap);
     tip("Snap to the grid in the plane (points and edges always snap)");
@@ -134,15 +133,13 @@ void Editor::drawCurvePanel() {
     ImGui::SameLine();
     ImGui::Checkbox("Control points", &curve_.controlPoints);
     tip("The points are the control points of a clamped cubic B-spline (4 or more), not points the curve passes through");
-    if (ImGui::Button("Finish (Enter)")) finishCurve();
-    traceItem("curve.finish");
+    if (widget::Button("Finish (Enter)##curve.finish")) finishCurve();
     ImGui::SameLine();
     ImGui::BeginDisabled(curve_.points.empty());
     if (ImGui::Button("Undo point (Backspace)")) curve_.points.pop_back();
     ImGui::EndDisabled();
     ImGui::SameLine();
-    if (ImGui::Button("Cancel (Esc)")) setCurveTool(false);
-    traceItem("curve.cancel");
+    if (widget::Button("Cancel (Esc)##curve.cancel")) setCurveTool(false);
     ImGui::End();
 }
 

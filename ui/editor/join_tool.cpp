@@ -11,7 +11,7 @@
 #include "core/base/errors.hpp"
 
 #include "ui/editor/editor.hpp"
-#include "ui/platform/item_trace.hpp"
+#include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
 
@@ -102,23 +102,21 @@ void Editor::drawJoinPanel() {
             ImGui::TextUnformatted("1/2  Click an open edge (it lights up under the mouse)");
         else
             ImGui::Text("2/2  %s picked: click the edge to join it to", patchEdgeName(*join_.first).c_str());
-        if (ImGui::Button(join_.first ? "Back (Esc)" : "Close (Esc)")) join_.first ? join_.first.reset() : setJoinTool(false);
-        traceItem("join.back");
+        if (widget::Button(join_.first ? "Back (Esc)##join.back" : "Close (Esc)##join.back"))
+            join_.first ? join_.first.reset() : setJoinTool(false);
     } else {
         ImGui::Text("Joined %s to %s: the preview shows the result", patchEdgeName(join_.a).c_str(), patchEdgeName(join_.b).c_str());
         for (Continuity c : {Continuity::C0, Continuity::C1, Continuity::G1, Continuity::C2, Continuity::G2}) {
             ImGui::SameLine();
-            if (ImGui::RadioButton(std::string(continuityName(c)).c_str(), join_.continuity == c) && join_.continuity != c) {
+            const std::string name(continuityName(c));
+            if (widget::RadioButton((name + "##join." + name).c_str(), join_.continuity == c) && join_.continuity != c) {
                 endJoinPreview(false);  // take it back, run it again with c
                 joinPreview(c);
             }
-            traceItem("join." + std::string(continuityName(c)));
         }
-        if (ImGui::Button("Apply (Enter)")) setJoinTool(false);
-        traceItem("join.apply");
+        if (widget::Button("Apply (Enter)##join.apply")) setJoinTool(false);
         ImGui::SameLine();
-        if (ImGui::Button("Cancel (Esc)")) endJoinPreview(false);
-        traceItem("join.cancel");
+        if (widget::Button("Cancel (Esc)##join.cancel")) endJoinPreview(false);
     }
     ImGui::End();
 }

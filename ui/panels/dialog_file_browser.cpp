@@ -11,7 +11,7 @@
 #include "core/io/formats.hpp"
 #include "ui/panels/dialogs.hpp"
 #include "ui/platform/imgui_tip.hpp"
-#include "ui/platform/item_trace.hpp"
+#include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
 
@@ -69,12 +69,11 @@ void Dialogs::drawFileBrowser(PanelContext& ctx) {
                             "Save Sweep Animation (.gif, .mp4, .webm)",
                             "Load Height Map (.png)"};
     const char* title = titles[int(fileMode_)];
-    ImGui::OpenPopup("File browser");
+    ImGui::OpenPopup("File browser##file");
     const ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowSize(ImVec2(std::min(640.0f, io.DisplaySize.x - 40), std::min(480.0f, io.DisplaySize.y - 40)), ImGuiCond_Always);
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    if (!ImGui::BeginPopupModal("File browser", nullptr, ImGuiWindowFlags_NoResize)) return;
-    traceModal("file");
+    if (!widget::BeginPopupModal("File browser##file", nullptr, ImGuiWindowFlags_NoResize)) return;
     bool doubleClicked = false;
     ImGui::Text("%s: %s", title, browseDir_.string().c_str());
     if (ImGui::Button("Up")) browseDir_ = browseDir_.parent_path();
@@ -102,13 +101,11 @@ void Dialogs::drawFileBrowser(PanelContext& ctx) {
     // As in any file dialog, the name field starts with the keyboard and its text selected: typing
     // replaces the offered name.
     if (std::exchange(focusName_, false)) ImGui::SetKeyboardFocusHere();
-    ImGui::InputText("File name", fileName_, sizeof fileName_, ImGuiInputTextFlags_AutoSelectAll);
-    traceItem("file.name");
+    widget::InputText("File name##file.name", fileName_, sizeof fileName_, ImGuiInputTextFlags_AutoSelectAll);
     tip("Name in the directory above, or an absolute path");
     if (fileMode_ == FileDialogMode::ExportGltf || fileMode_ == FileDialogMode::SaveAs) {
         ExportOptions& eo = ctx.session().exportOptions;
-        ImGui::Checkbox("As displayed", &eo.asDisplayed);
-        traceItem("file.as_displayed");
+        widget::Checkbox("As displayed##file.as_displayed", &eo.asDisplayed);
         tip("The triangles the 3D view draws: the document's per-edge levels, partitioning, adaptive levels and\n"
             "culling from this camera, read back from the GPU's tessellator (glTF and OBJ)");
         ImGui::SameLine();
@@ -130,8 +127,7 @@ void Dialogs::drawFileBrowser(PanelContext& ctx) {
         ImGui::Checkbox("Cage", &ctx.session().exportOptions.cage);
         tip("Also export the control cage as lines");
     }
-    const bool ok = ImGui::Button("OK", ImVec2(100, 0)) || doubleClicked;
-    traceItem("file.ok");
+    const bool ok = widget::Button("OK##file.ok", ImVec2(100, 0)) || doubleClicked;
     tip("Confirm");
     ImGui::SameLine();
     const bool cancel = ImGui::Button("Cancel", ImVec2(100, 0)) || ctx.keyPressed(GLFW_KEY_ESCAPE, 0);

@@ -8,7 +8,7 @@
 #include "core/io/document_io.hpp"
 #include "ui/panels/dialogs.hpp"
 #include "ui/platform/imgui_tip.hpp"
-#include "ui/platform/item_trace.hpp"
+#include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
 namespace {
@@ -19,7 +19,7 @@ bool beginCentredModal(const char* name, bool& openRequest) {
     if (std::exchange(openRequest, false)) ImGui::OpenPopup(name);
     const ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    return ImGui::BeginPopupModal(name, nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    return widget::BeginPopupModal(name, nullptr, ImGuiWindowFlags_AlwaysAutoResize);
 }
 
 }  // namespace
@@ -40,13 +40,11 @@ void Dialogs::offerRecovery(std::vector<AutosaveEntry> entries) {
 }
 
 void Dialogs::drawModals(PanelContext& ctx, const std::function<void()>& recoverFirst) {
-    if (beginCentredModal("Error", openError_)) {
-        traceModal("error");
+    if (beginCentredModal("Error##error", openError_)) {
         ImGui::PushTextWrapPos(560.0f);
         ImGui::TextUnformatted(errorMessage_.c_str());
         ImGui::PopTextWrapPos();
-        const bool ok = ImGui::Button("OK", ImVec2(120, 0));
-        traceItem("error.ok");
+        const bool ok = widget::Button("OK##error.ok", ImVec2(120, 0));
         // Enter closes it, but not the Enter that caused it (a numeric field submitted this frame).
         if (ok || (ctx.keyPressed(GLFW_KEY_ENTER, 0) && !ImGui::IsWindowAppearing())) {
             errorMessage_.clear();
@@ -56,11 +54,9 @@ void Dialogs::drawModals(PanelContext& ctx, const std::function<void()>& recover
         ImGui::EndPopup();
     }
 
-    if (beginCentredModal("Unsaved changes", openUnsavedPrompt_)) {
-        traceModal("unsaved");
+    if (beginCentredModal("Unsaved changes##unsaved", openUnsavedPrompt_)) {
         ImGui::Text("Save changes to %s?", ctx.session().path().empty() ? "the untitled document" : ctx.session().path().c_str());
-        const bool save = ImGui::Button("Save", ImVec2(100, 0));
-        traceItem("unsaved.save");
+        const bool save = widget::Button("Save##unsaved.save", ImVec2(100, 0));
         if (save) {
             ImGui::CloseCurrentPopup();
             if (!ctx.session().path().empty() && saveKeepsEverything(ctx.session().path())) {
@@ -74,8 +70,7 @@ void Dialogs::drawModals(PanelContext& ctx, const std::function<void()>& recover
         }
         tip("Save, then continue");
         ImGui::SameLine();
-        const bool discard = ImGui::Button("Discard", ImVec2(100, 0));
-        traceItem("unsaved.discard");
+        const bool discard = widget::Button("Discard##unsaved.discard", ImVec2(100, 0));
         if (discard) {
             ImGui::CloseCurrentPopup();
             ctx.runCommand(std::exchange(pendingCommand_, {}), false);
@@ -90,16 +85,14 @@ void Dialogs::drawModals(PanelContext& ctx, const std::function<void()>& recover
         ImGui::EndPopup();
     }
 
-    if (beginCentredModal("Recover autosave", offerRecovery_)) {
+    if (beginCentredModal("Recover autosave##recover", offerRecovery_)) {
         if (!recoverable.empty()) {
             const AutosaveEntry& e = recoverable.front();
             ImGui::Text("Patchwork did not exit cleanly. An autosave of %s exists.",
                         e.originalPath.empty() ? "an untitled document" : e.originalPath.c_str());
             ImGui::TextDisabled("%s", e.document.string().c_str());
         }
-        traceModal("recover");
-        const bool recover = ImGui::Button("Recover", ImVec2(120, 0));
-        traceItem("recover");
+        const bool recover = widget::Button("Recover##recover", ImVec2(120, 0));
         if (recover) {
             ImGui::CloseCurrentPopup();
             recoverFirst();

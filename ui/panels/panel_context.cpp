@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "ui/platform/imgui_tip.hpp"
-#include "ui/platform/item_trace.hpp"
+#include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
 
@@ -16,9 +16,8 @@ void commandButton(PanelContext& ctx, const char* label, const std::string& line
     const Command* c = ctx.commands().find(words.front());
     if (!c) throw std::logic_error("panel button '" + std::string(label) + "' names no command: " + line);
     ImGui::BeginDisabled(!ctx.commands().isEnabled(*c, ctx.session()));
-    const bool pressed = ImGui::Button(label);
+    const bool pressed = widget::Button(trace ? (std::string(label) + "##" + trace).c_str() : label);
     ImGui::EndDisabled();
-    if (trace) traceItem(trace);
     tip(c->help.c_str());
     if (pressed) ctx.runCommand(words);
 }

@@ -71,7 +71,7 @@ public:
 };
 
 // A button that runs a command line: disabled when the command is, its help as tooltip, traced
-// under `trace` when given.
+// under `trace` when given (its label's "##trace").
 void commandButton(PanelContext& ctx, const char* label, const std::string& line, const char* trace = nullptr);
 // A number as a command word that reads back to the same double ("%.17g").
 std::string commandWord(double v);

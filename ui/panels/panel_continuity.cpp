@@ -10,7 +10,7 @@
 #include "core/solve/constraint_solver.hpp"
 #include "ui/panels/side_panels.hpp"
 #include "ui/platform/imgui_tip.hpp"
-#include "ui/platform/item_trace.hpp"
+#include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
 
@@ -28,9 +28,7 @@ void cell(const char* format, double v, bool out) {
 }  // namespace
 
 void ContinuityPanel::draw(PanelContext& ctx) {
-    const bool open = ImGui::CollapsingHeader("Continuity");
-    traceItem("panel.continuity");
-    if (!open) return;
+    if (!widget::CollapsingHeader("Continuity##panel.continuity")) return;
     const Document& doc = ctx.session().doc;
     if (version_ != ctx.documentVersion() && !ctx.interacting()) {
         residual_ = maxConstraintResidual(doc);
@@ -44,17 +42,16 @@ void ContinuityPanel::draw(PanelContext& ctx) {
     bool edited = false;
     auto field = [&](const char* id, double& v, const char* format, const char* help) {
         ImGui::SetNextItemWidth(w);
-        ImGui::InputDouble(id, &v, 0.0, 0.0, format);
+        widget::InputDouble(id, &v, 0.0, 0.0, format, 0);
         edited = edited || ImGui::IsItemDeactivatedAfterEdit();
-        traceItem(std::string("continuity.") + (id + 2));
         tip(help);
     };
-    field("##position", tol_.position, "%.4g", "Position tolerance (model units): the largest gap between the two sides");
+    field("##continuity.position", tol_.position, "%.4g", "Position tolerance (model units): the largest gap between the two sides");
     ImGui::SameLine();
-    field("##angle", tol_.angleDeg, "%.3g°",
+    field("##continuity.angle", tol_.angleDeg, "%.3g°",
           "Angle tolerance (degrees): the largest angle between the two sides' normals (C1, G1, C2, G2)");
     ImGui::SameLine();
-    field("##curvature", tol_.curvaturePct, "%.3g%%",
+    field("##continuity.curvature", tol_.curvaturePct, "%.3g%%",
           "Curvature tolerance (percent): the largest curvature deviation across the seam (C2, G2)");
     if (edited && tol_ != doc.tolerances) {
         char line[160];
@@ -66,8 +63,7 @@ void ContinuityPanel::draw(PanelContext& ctx) {
     tip("Shown in red below, and drawn thick in orange in the viewport when Display > Boundaries is on (live while dragging)");
     ImGui::Text("Max constraint residual %.3g", !ctx.interacting() ? residual_ : 0.0);
     tip("Largest violation of the join constraints (should be <= 1e-6 x model size)");
-    ImGui::Checkbox("Only out of tolerance", &onlyFailing_);
-    traceItem("continuity.only");
+    widget::Checkbox("Only out of tolerance##continuity.only", &onlyFailing_);
     if (ImGui::BeginTable("cont", 5, ImGuiTableFlags_Borders | ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg, ImVec2(0, 220))) {
         ImGui::TableSetupColumn("join", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("00.u0-00.u0").x);
         ImGui::TableSetupColumn("kind", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("kind").x + ImGui::GetFrameHeight());

@@ -8,7 +8,7 @@
 #include "ui/panels/panel_rows.hpp"
 #include "ui/panels/side_panels.hpp"
 #include "ui/platform/imgui_tip.hpp"
-#include "ui/platform/item_trace.hpp"
+#include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
 
@@ -29,8 +29,7 @@ void drawDisplacementPanel(PanelContext& ctx) {
     if (!ImGui::CollapsingHeader("Displacement")) return;
     const EditSession& s = ctx.session();
     const DisplacementSettings& d = s.doc.displacement;
-    if (ImGui::Button("Load height map...")) ctx.runCommand({"displacement"});
-    traceItem("displacement.load");
+    if (widget::Button("Load height map...##displacement.load")) ctx.runCommand({"displacement"});
     tip("An 8- or 16-bit PNG; the surface moves along its normal by scale x map + bias");
     if (!d.active()) {
         ImGui::TextDisabled("No height map");
@@ -39,7 +38,7 @@ void drawDisplacementPanel(PanelContext& ctx) {
     ImGui::SameLine();
     if (ImGui::Button("Remove")) return ctx.runCommand({"displacement", "off"});
     ImGui::TextWrapped("%s", d.map.c_str());
-    settingRow(ctx, "displacement.scale", "displacement.scale");
+    settingRow(ctx, "displacement.scale");
     settingRow(ctx, "displacement.bias");
     settingRow(ctx, "displacement.mapping");
     const float speed = float(std::max(modelSize(s.doc), 1e-6) * 1e-3);

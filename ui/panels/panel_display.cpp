@@ -17,10 +17,10 @@ void drawDisplayPanel(PanelContext& ctx) {
     settingRow(ctx, "display.showWireframe");
     settingRow(ctx, "display.showNormals");
     ImGui::SameLine();
-    settingRow(ctx, "display.showBoundaries", "display.boundaries");
-    settingRow(ctx, "display.showIsocurves", "display.isocurves");
+    settingRow(ctx, "display.showBoundaries");
+    settingRow(ctx, "display.showIsocurves");
     ImGui::SameLine();
-    settingRow(ctx, "display.showCombs", "display.combs");
+    settingRow(ctx, "display.showCombs");
     if (ctx.session().doc.display.showCombs) {
         settingRow(ctx, "display.combScale");
         settingRow(ctx, "display.combDensity");

@@ -11,7 +11,7 @@
 #include "core/base/limits.hpp"
 #include "ui/panels/side_panels.hpp"
 #include "ui/platform/imgui_tip.hpp"
-#include "ui/platform/item_trace.hpp"
+#include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
 
@@ -33,11 +33,11 @@ void ownLevelsRows(PanelContext& ctx, const OwnLevelsText& t, uint32_t index, co
     const std::string id = t.id, item = std::to_string(index);
     char buf[128];
     std::snprintf(buf, sizeof buf, "%s", name.c_str());
-    if (ImGui::InputText(("Name##" + id).c_str(), buf, sizeof buf)) typedName = buf;
+    if (widget::InputText(("Name##inspector." + id + "Name").c_str(), buf, sizeof buf)) typedName = buf;
     if (ImGui::IsItemDeactivatedAfterEdit()) ctx.runCommand({"rename", t.what, item, typedName});
     tip("Name shown in the outliner");
     bool ov = levels.has_value();
-    if (ImGui::Checkbox(("Override tessellation##" + id).c_str(), &ov)) {
+    if (widget::Checkbox(("Override tessellation##inspector." + id + "Override").c_str(), &ov)) {
         std::vector<std::string> words{t.command, item};
         if (ov)
             words.insert(words.end(), N, "8");
@@ -45,7 +45,6 @@ void ownLevelsRows(PanelContext& ctx, const OwnLevelsText& t, uint32_t index, co
             words.push_back("off");
         ctx.runCommand(words);
     }
-    traceItem("inspector." + id + "Override");
     tip(t.overrideTip);
     if (!levels) return;
     std::array<float, N> edited = *levels;
@@ -83,23 +82,22 @@ void transformRow(PanelContext& ctx) {
                            const char* command, const char* help) {
         ImGui::SetNextItemWidth(
             std::max(40.0f, w - ImGui::CalcTextSize(label).x - ImGui::GetStyle().ItemSpacing.x));  // the label stays whole
-        if (ImGui::BeginCombo(id, std::string(current).c_str())) {
+        if (widget::BeginCombo(id, std::string(current).c_str())) {
             for (std::string_view n : names)
                 if (ImGui::Selectable(std::string(n).c_str(), n == current)) ctx.runCommand({command, std::string(n)});
-            ImGui::EndCombo();
+            widget::EndCombo(id);
         }
-        traceItem(id);
         tip(help);
         ImGui::SameLine();
         ImGui::TextUnformatted(label);
     };
-    combo("##pivot", "Pivot", pivotName(s.pivot), {"median", "active", "cursor"}, "pivot",
+    combo("##inspector.pivot", "Pivot", pivotName(s.pivot), {"median", "active", "cursor"}, "pivot",
           "What R (rotate) and S (scale) turn about: the selection's median, the active point or item, or the 3D cursor");
     ImGui::SameLine();
-    combo("##snap", "Snap", snapTargetName(s.snap), {"grid", "points", "edges", "surfaces"}, "snap",
+    combo("##inspector.snap", "Snap", snapTargetName(s.snap), {"grid", "points", "edges", "surfaces"}, "snap",
           "What a move snaps to while Ctrl is held");
     const std::string sym = symmetryName(s.symmetry);
-    combo("##symmetry", "Symmetry", sym, {"off", "X", "Y", "Z"}, "symmetry",
+    combo("##inspector.symmetry", "Symmetry", sym, {"off", "X", "Y", "Z"}, "symmetry",
           "Live symmetry: each moved point's mirror partner follows across the plane through the 3D cursor (set when chosen)");
     if (s.symmetry.on()) {
         ImGui::SameLine();
@@ -113,11 +111,10 @@ void weightRow(PanelContext& ctx, const std::vector<uint32_t>& points) {
     double w = pointWeight(doc, points.front());
     bool mixed = false;
     for (uint32_t p : points) mixed = mixed || pointWeight(doc, p) != w;
-    if (ImGui::InputDouble(mixed ? "Weight (mixed)" : "Weight", &w, 0.0, 0.0, "%.6g",
-                           ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CharsScientific)) {
+    if (widget::InputDouble(mixed ? "Weight (mixed)##inspector.weight" : "Weight##inspector.weight", &w, 0.0, 0.0, "%.6g",
+                            ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CharsScientific)) {
         ctx.runCommand({"weight", commandWord(w)});
     }
-    traceItem("inspector.weight");
     tip("The weight of the selected control points (rational patches): above 1 pulls the surface towards them, below 1 lets it go; "
         "1 = polynomial. Exact circles need 1/√2 at the corners of quadratic arcs (add-sphere builds them). Type and press Enter");
 }
@@ -137,10 +134,9 @@ void InspectorPanel::draw(PanelContext& ctx) {
         ImGui::Text("Point %u", p);
         double v[3] = {doc.points[p].x, doc.points[p].y, doc.points[p].z};
         const double step = 0.001 * modelSize(doc);
-        if (ImGui::DragScalarN("Position", ImGuiDataType_Double, v, 3, float(step), nullptr, nullptr, "%.4f")) {
+        if (widget::DragScalarN("Position##inspector.position", ImGuiDataType_Double, v, 3, float(step), nullptr, nullptr, "%.4f")) {
             setPoint(ctx, p, Vec3(v[0], v[1], v[2]));
         }
-        traceItem("inspector.position");
         if (ImGui::IsItemDeactivatedAfterEdit()) {
             held_.finish(s);
             ctx.documentChanged(false);
@@ -148,13 +144,12 @@ void InspectorPanel::draw(PanelContext& ctx) {
         tip("Drag to change; joins are held (the solver moves the neighbours)");
         // Exact entry: applied when Enter is pressed.
         double typed[3] = {doc.points[p].x, doc.points[p].y, doc.points[p].z};
-        if (ImGui::InputScalarN("Set", ImGuiDataType_Double, typed, 3, nullptr, nullptr, "%.6g",
-                                ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CharsScientific)) {
+        if (widget::InputScalarN("Set##inspector.set", ImGuiDataType_Double, typed, 3, nullptr, nullptr, "%.6g",
+                                 ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CharsScientific)) {
             std::vector<std::string> words{"point", std::to_string(p)};
             for (double v : typed) words.push_back(commandWord(v));
             ctx.runCommand(words);
         }
-        traceItem("inspector.set");
         tip("Type exact coordinates and press Enter; joins are held");
         weightRow(ctx, sel.points);
         ImGui::EndDisabled();

@@ -7,15 +7,14 @@
 
 #include "ui/panels/command_panels.hpp"
 #include "ui/platform/imgui_tip.hpp"
-#include "ui/platform/item_trace.hpp"
+#include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
 
 void drawMenuBar(PanelContext& ctx, CommandPalette& palette, const std::vector<std::string>& recent) {
     if (!ImGui::BeginMainMenuBar()) return;
     for (const std::string& menu : ctx.commands().menus()) {
-        const bool open = ImGui::BeginMenu(menu.c_str());
-        traceItem("menubar." + menu);
+        const bool open = widget::BeginMenu((menu + "##menubar." + menu).c_str());
         if (!open) continue;
         for (const Command& c : ctx.commands().commands()) {
             if (c.menu != menu) continue;
@@ -28,10 +27,10 @@ void drawMenuBar(PanelContext& ctx, CommandPalette& palette, const std::vector<s
                 }
                 const std::string first = e.shortcut.substr(0, e.shortcut.find(" / "));
                 const bool checked = c.checked && c.checked(ctx.session(), ctx.host());
-                if (ImGui::MenuItem((label + (e.needsArguments() ? "..." : "")).c_str(), first.empty() ? nullptr : first.c_str(), checked,
-                                    enabled))
+                const std::string traced =
+                    label + (e.needsArguments() ? "..." : "") + "##menu." + c.name + (e.args.empty() ? "" : "." + e.args);
+                if (widget::MenuItem(traced.c_str(), first.empty() ? nullptr : first.c_str(), checked, enabled))
                     e.needsArguments() ? palette.complete(ctx, c) : ctx.runCommand(e.words());
-                traceItem("menu." + c.name + (e.args.empty() ? "" : "." + e.args));
                 tip(c.help.c_str());
             }
             if (c.name == "open") {  // the recent files follow Open

@@ -15,7 +15,7 @@
 #include "core/solve/constraint_solver.hpp"
 #include "ui/panels/side_panels.hpp"
 #include "ui/platform/imgui_tip.hpp"
-#include "ui/platform/item_trace.hpp"
+#include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
 
@@ -82,18 +82,16 @@ void NetPanel::drawCreate(PanelContext& ctx) {
     ImGui::SetNextItemWidth(95 * uiScale);
     ImGui::Combo("##netbasis", &basis_, kBasisNames, 3);
     tip("Basis of the new net (Bézier nets need 3k + 1 open or 3k closed rows and columns)");
-    if (ImGui::Button("Add net"))
+    if (widget::Button("Add net##net.add"))
         ctx.runCommand({"add-net", std::to_string(rows_), std::to_string(cols_), shapes[shape_], kBasisWords[basis_]});
-    traceItem("net.add");
     tip("Add a net of that size, shape and basis at the 3D cursor (the add-net command)");
 
     // Patches -> net.
     const bool hasPatch = sel.patch >= 0 && sel.patch < int(doc.patches.size());
     ImGui::SameLine();
     ImGui::BeginDisabled(!hasPatch);
-    if (ImGui::Button("Patches to B-spline net")) ctx.runCommand({"patches-to-net", std::to_string(sel.patch)});
+    if (widget::Button("Patches to B-spline net##net.fromPatches")) ctx.runCommand({"patches-to-net", std::to_string(sel.patch)});
     ImGui::EndDisabled();
-    traceItem("net.fromPatches");
     tip("Replace the selected patch and the patches joined to it by one uniform B-spline net: exact when they form a "
         "regular C2 grid (for example a converted B-spline net), refused otherwise");
 }
@@ -150,8 +148,7 @@ void NetPanel::drawActive(PanelContext& ctx, uint32_t si) {
     ImGui::SameLine();
     if (ImGui::Button("Delete column")) ctx.runCommand({"net-delete", n, "column", std::to_string(col)});
     tip("Remove the selected point's column (or the last)");
-    if (ImGui::Button("Convert to Bézier patches")) ctx.runCommand({"net-to-patches", n});
-    traceItem("net.toPatches");
+    if (widget::Button("Convert to Bézier patches##net.toPatches")) ctx.runCommand({"net-to-patches", n});
     tip("Replace the net by independent Bézier patches describing the same surface exactly, joined as the basis "
         "implies (C1 for splines and kept-C1 Bézier nets, C0 otherwise)");
 }

@@ -9,7 +9,7 @@
 
 #include "ui/panels/command_panels.hpp"
 #include "ui/platform/imgui_tip.hpp"
-#include "ui/platform/item_trace.hpp"
+#include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
 
@@ -50,8 +50,7 @@ void CommandPalette::draw(PanelContext& ctx) {
     const ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, ImGui::GetFrameHeight() * 3.0f), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
     ImGui::SetNextWindowSize(ImVec2(std::min(640.0f * ctx.uiScale(), io.DisplaySize.x * 0.8f), 0.0f));
-    traceModal("palette");
-    if (!ImGui::Begin("Command palette (F3)", &open, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings)) {
+    if (!widget::BeginModalWindow("Command palette (F3)##palette", &open, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings)) {
         ImGui::End();
         return;
     }
@@ -66,9 +65,8 @@ void CommandPalette::draw(PanelContext& ctx) {
         return 0;
     };
     const bool enter =
-        ImGui::InputTextWithHint("##query", "type a command (e.g. 'save', 'move 1 0 0')", query_, sizeof query_,
-                                 ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CallbackAlways, toEnd, &cursorToEnd_);
-    traceItem("palette.query");
+        widget::InputTextWithHint("##palette.query", "type a command (e.g. 'save', 'move 1 0 0')", query_, sizeof query_,
+                                  ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CallbackAlways, toEnd, &cursorToEnd_);
     if (!ImGui::IsItemActive() && !enter && ImGui::IsWindowFocused()) ImGui::SetKeyboardFocusHere(-1);
     // Entries that contain every typed word (case-insensitive): those matching in the label or
     // the command's name first, then those matching only in the help text.

@@ -7,7 +7,7 @@
 
 #include "ui/panels/panel_shaders.hpp"
 #include "ui/platform/imgui_tip.hpp"
-#include "ui/platform/item_trace.hpp"
+#include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
 
@@ -69,30 +69,28 @@ void ShaderPanel::draw(PanelContext& ctx, bool geometryShader, const TessSetting
     for (const auto& p : pipes)
         if (p.name == pipeline_) pipe = &p;
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
-    if (ImGui::BeginCombo("Pipeline", pipe->name.c_str())) {
+    if (widget::BeginCombo("Pipeline##shaders.pipeline", pipe->name.c_str())) {
         for (const auto& p : pipes)
             if (ImGui::Selectable(p.name.c_str(), &p == pipe)) {
                 pipeline_ = p.name;
                 pipe = &p;
             }
-        ImGui::EndCombo();
+        widget::EndCombo("Pipeline##shaders.pipeline");
     }
-    traceItem("shaders.pipeline");
     tip("The pipelines drawn with the current settings; wireframe, normals and the domain view add theirs");
-    ImGui::Checkbox("Teaching listing", &teaching);
-    traceItem("shaders.teaching");
+    widget::Checkbox("Teaching listing##shaders.teaching", &teaching);
     tip("Only the parts a slide shows (the Bernstein sum, the tessellator's layout, main), with the defines substituted; the "
         "stages without marked parts are listed whole");
     ImGui::SameLine();
-    ImGui::Checkbox("Hide switched-off lines", &hideInactive_);
-    traceItem("shaders.hide");
+    widget::Checkbox("Hide switched-off lines##shaders.hide", &hideInactive_);
     tip("Leave out the #ifdef branches this variant's defines switch off (shown dimmed otherwise)");
     ImGui::TextWrapped("%s", pipe->why.c_str());
 
     if (ImGui::BeginTabBar("stages")) {
         for (const auto& stage : pipe->stages) {
-            const bool open = ImGui::BeginTabItem((tabLabel(stage.stage) + "##" + stage.stage).c_str());
-            traceItem("shaders.tab." + stage.variant);
+            // The tab keeps its id by stage (the selected stage stays when the variant changes).
+            const bool open =
+                widget::BeginTabItem((tabLabel(stage.stage) + "##shaders.tab." + stage.variant + "###" + stage.stage).c_str());
             if (!open) continue;
             auto it = listings_.find(stage.variant);
             if (it == listings_.end()) {

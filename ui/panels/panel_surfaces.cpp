@@ -13,7 +13,7 @@
 #include "core/model/construction_refs.hpp"
 #include "ui/panels/side_panels.hpp"
 #include "ui/platform/imgui_tip.hpp"
-#include "ui/platform/item_trace.hpp"
+#include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
 
@@ -56,8 +56,7 @@ void SurfacesPanel::draw(PanelContext& ctx) {
     std::string d[3] = {"0", "0", "0"};
     d[axis_] = std::to_string(length_);
     button("Extrude", "extrude " + c + " " + d[0] + " " + d[1] + " " + d[2], "op.extrudeCurve");
-    if (ImGui::Button("Add to list")) sections_.push_back(c);
-    traceItem("surfaces.addCurve");
+    if (widget::Button("Add to list##surfaces.addCurve")) sections_.push_back(c);
     tip("Add the selected curve to the list the buttons below build from, in order: loft sections, edge-surface sides, "
         "sweep rails then the profile, network U curves then / then V curves");
     ImGui::EndDisabled();
@@ -65,8 +64,8 @@ void SurfacesPanel::draw(PanelContext& ctx) {
     const bool patch =
         s.sel.patch >= 0 && size_t(s.sel.patch) < doc.patches.size() && doc.patches[size_t(s.sel.patch)].basis == Basis::Bezier;
     ImGui::BeginDisabled(!patch);
-    if (ImGui::Button("Add edge")) sections_.push_back(std::to_string(s.sel.patch) + ":" + std::string(edgeName(s.activeEdge)));
-    traceItem("surfaces.addEdge");
+    if (widget::Button("Add edge##surfaces.addEdge"))
+        sections_.push_back(std::to_string(s.sel.patch) + ":" + std::string(edgeName(s.activeEdge)));
     tip("Add the selected patch's highlighted edge (the one Extrude edge uses): a loft from it can leave it G1 or G2, an edge "
         "surface continues it G1");
     ImGui::EndDisabled();
@@ -87,8 +86,7 @@ void SurfacesPanel::draw(PanelContext& ctx) {
     tip("Loft: back to the first section");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(50 * ctx.uiScale());
-    ImGui::Combo("Start", &loftEnds_[0], kEnds, 3);
-    traceItem("surfaces.loftStart");
+    widget::Combo("Start##surfaces.loftStart", &loftEnds_[0], kEnds, 3);
     tip("Loft: how the surface leaves a first section that is a patch edge (G0: position only)");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(50 * ctx.uiScale());
@@ -131,11 +129,10 @@ void SurfacesPanel::draw(PanelContext& ctx) {
     tip("Fill a hole of three listed edges with one Bézier triangle, G1 to all three, held while you drag");
     ImGui::SameLine();
     ImGui::BeginDisabled(n < 2 || !isEdge(n >= 2 ? sections_[n - 2] : "") || !isEdge(n >= 1 ? sections_[n - 1] : ""));
-    if (ImGui::SmallButton("Join last two")) {
+    if (widget::SmallButton("Join last two##surfaces.pairEdges")) {
         sections_[n - 2] += "+" + sections_[n - 1];
         sections_.pop_back();
     }
-    traceItem("surfaces.pairEdges");
     tip("Make the last two listed edges one side of a hole (they meet end to end)");
     ImGui::EndDisabled();
     if (!sections_.empty()) {

@@ -30,7 +30,7 @@ void drawTessellationPanel(PanelContext& ctx) {
     const TessSettings& ts = ctx.session().doc.tess;
     settingRow(ctx, "tess.linked");
     if (ts.linked) {
-        settingRow(ctx, "tess.level", "tess.level");
+        settingRow(ctx, "tess.level");
     } else {
         settingRow(ctx, "tess.outer");
         settingRow(ctx, "tess.inner");
@@ -51,7 +51,7 @@ void drawTessellationPanel(PanelContext& ctx) {
     if (ts.adaptive == AdaptiveMode::ScreenSpace) settingRow(ctx, "tess.targetPixels");
     if (ts.adaptive != AdaptiveMode::None && ctx.session().doc.displacement.active()) settingRow(ctx, "tess.heightDetail");
     settingRow(ctx, "tess.maxLevel");
-    settingRow(ctx, "tess.isoline", "tess.isolines");
+    settingRow(ctx, "tess.isoline");
     settingRow(ctx, "tess.cullBackfaces");
     ImGui::SameLine();
     settingRow(ctx, "tess.cullOffscreen");
