@@ -227,25 +227,25 @@ TEST_F(RenderStats, OffscreenPatchIsCulled) {
 
 TEST(Batching, PatchesPerDrawKeepsEvaluationVerticesBounded) {
     for (int l = 1; l <= 64; ++l) {
-        const uint32_t n = render::patchesPerDraw(l);
+        const uint32_t n = patchesPerDraw(l);
         EXPECT_GE(n, 1u);
         if (n > 1) {
             EXPECT_LE(n * uint32_t((l + 2) * (l + 2)), 4096u);
         }
     }
-    EXPECT_EQ(render::patchesPerDraw(16), 12u);
-    EXPECT_EQ(render::patchesPerDraw(64), 1u);
+    EXPECT_EQ(patchesPerDraw(16), 12u);
+    EXPECT_EQ(patchesPerDraw(64), 1u);
 }
 
 TEST(Batching, RoundedSegmentsFollowDesignRules) {
-    EXPECT_EQ(render::roundedSegments(4.2f, Spacing::Equal), 5);
-    EXPECT_EQ(render::roundedSegments(4.2f, Spacing::FractionalOdd), 5);
-    EXPECT_EQ(render::roundedSegments(5.5f, Spacing::FractionalOdd), 7);
-    EXPECT_EQ(render::roundedSegments(1.0f, Spacing::FractionalEven), 2);
-    EXPECT_EQ(render::roundedSegments(4.5f, Spacing::FractionalEven), 6);
-    EXPECT_EQ(render::roundedSegments(5.0f, Spacing::Pow2), 8);
-    EXPECT_EQ(render::roundedSegments(64.0f, Spacing::Pow2), 64);
-    EXPECT_EQ(render::roundedSegments(64.0f, Spacing::FractionalOdd), 63);
+    EXPECT_EQ(roundedSegments(4.2f, Spacing::Equal), 5);
+    EXPECT_EQ(roundedSegments(4.2f, Spacing::FractionalOdd), 5);
+    EXPECT_EQ(roundedSegments(5.5f, Spacing::FractionalOdd), 7);
+    EXPECT_EQ(roundedSegments(1.0f, Spacing::FractionalEven), 2);
+    EXPECT_EQ(roundedSegments(4.5f, Spacing::FractionalEven), 6);
+    EXPECT_EQ(roundedSegments(5.0f, Spacing::Pow2), 8);
+    EXPECT_EQ(roundedSegments(64.0f, Spacing::Pow2), 64);
+    EXPECT_EQ(roundedSegments(64.0f, Spacing::FractionalOdd), 63);
 }
 
 TEST_F(RenderStats, LargeGridUsesSeveralDraws) {

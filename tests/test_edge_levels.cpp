@@ -116,27 +116,27 @@ TEST(FrameLoad, CountsEveryPatchAtItsLargestLevel) {
     TessSettings t;
     t.outer = {9, 9, 9, 9};
     t.inner = {9, 9};
-    render::FrameLoad l = render::frameLoad(doc, t);
+    FrameLoad l = frameLoad(doc, t);
     EXPECT_EQ(l.patches, 16u);
     EXPECT_EQ(l.segments, 9);
     EXPECT_EQ(l.evaluations, 16u * 100u);
     doc.patches[3].tessOverride = std::array<float, 6>{2, 2, 2, 2, 30, 2};
-    EXPECT_EQ(render::frameLoad(doc, t).segments, 30);
+    EXPECT_EQ(frameLoad(doc, t).segments, 30);
     Surface net;
     net.rows = net.cols = 99;  // B-spline: 96 x 96 windows
     net.basis = Basis::BSpline;
     net.idx.assign(size_t(99) * 99, 0u);
     doc.surfaces.push_back(net);
-    l = render::frameLoad(doc, t);
+    l = frameLoad(doc, t);
     EXPECT_EQ(l.patches, 16u + 96u * 96u);
-    EXPECT_TRUE(render::heavyForCpu(l));  // 9 232 patches at 30 (the override): 8.9 M vertices
+    EXPECT_TRUE(heavyForCpu(l));  // 9 232 patches at 30 (the override): 8.9 M vertices
     doc.patches[3].tessOverride.reset();
-    EXPECT_FALSE(render::heavyForCpu(render::frameLoad(doc, t)));  // at 9: 0.92 M vertices
+    EXPECT_FALSE(heavyForCpu(frameLoad(doc, t)));  // at 9: 0.92 M vertices
     t.outer = {16, 16, 16, 16};
     t.inner = {16, 16};
-    EXPECT_TRUE(render::heavyForCpu(render::frameLoad(doc, t)));  // at 16: 2.7 M
-    EXPECT_FALSE(render::heavyForCpu(render::frameLoad(makePatchGrid(4, 4), t)));
+    EXPECT_TRUE(heavyForCpu(frameLoad(doc, t)));  // at 16: 2.7 M
+    EXPECT_FALSE(heavyForCpu(frameLoad(makePatchGrid(4, 4), t)));
     t.adaptive = AdaptiveMode::ScreenSpace;
     t.maxLevel = 64;
-    EXPECT_EQ(render::frameLoad(makePatchGrid(4, 4), t).segments, 64);  // adaptive: bounded by the max level
+    EXPECT_EQ(frameLoad(makePatchGrid(4, 4), t).segments, 64);  // adaptive: bounded by the max level
 }

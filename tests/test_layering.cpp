@@ -215,6 +215,39 @@ TEST(LayeringCheck, FindsCyclesStrayFilesAndForbiddenHeaders) {
     EXPECT_NE(all.find("(no such file)"), std::string::npos) << all;
 }
 
+// Each library is its namespace part: every source of core/X, render/X and ui/X that opens
+// namespace pw puts its code in `inline namespace X` (pw::model::Document, pw::render::scene::Renderer),
+// so a symbol names its layer while code within pw still writes Document. core/gpu, shared with
+// GLSL, is pw::gpu.
+TEST(Layering, EveryLibraryIsItsNamespacePart) {
+    std::vector<std::string> problems;
+    const LayerMap layers = readLayers(repo(), problems);
+    std::vector<std::string> wrong;
+    size_t checked = 0;
+    for (const auto& [dir, uses] : layers) {
+        const fs::path d(dir);
+        const std::string top = d.begin()->string(), part = d.filename().string();
+        if ((top != "core" && top != "render" && top != "ui") || dir == "core/gpu") continue;
+        const std::regex opens(R"(^namespace pw[\w:]* \{)");
+        const std::regex inlinePart("^inline namespace " + part + R"( \{)");
+        for (const auto& e : fs::directory_iterator(repo() / dir)) {
+            const std::string ext = e.path().extension().string();
+            if (ext != ".hpp" && ext != ".h" && ext != ".cpp") continue;
+            std::ifstream in(e.path());
+            bool opened = false, ownPart = false;
+            for (std::string line; std::getline(in, line);) {
+                if (std::regex_search(line, opens)) opened = true;
+                if (std::regex_search(line, inlinePart)) ownPart = true;
+            }
+            if (!opened) continue;
+            ++checked;
+            if (!ownPart) wrong.push_back(relPath(repo(), e.path()) + " has no `inline namespace " + part + "`");
+        }
+    }
+    EXPECT_GT(checked, 300u);
+    EXPECT_TRUE(wrong.empty()) << ::testing::PrintToString(wrong);
+}
+
 // Each layer's README names every header in the folder (as name.hpp, name.h or name.*).
 TEST(Layering, EveryHeaderIsNamedInItsFoldersReadme) {
     std::vector<std::string> problems;

@@ -31,7 +31,7 @@ void expectNoUnusedPoints(const Document& doc) {
     EXPECT_EQ(std::count(used.begin(), used.end(), false), 0);
 }
 
-Vec3 eval(const Document& doc, uint32_t p, double u, double v) {
+Vec3 evalAt(const Document& doc, uint32_t p, double u, double v) {
     return evaluateNet(gatherNet(doc, doc.patches[p].idx), Basis::Bezier, 0.5, u, v).p;
 }
 
@@ -42,11 +42,11 @@ TEST(EditorPatchOps, AddAndDuplicate) {
     const uint32_t p = addFlatPatch(doc, {1, 2, 3}, 2.0);
     EXPECT_EQ(p, 0u);
     EXPECT_EQ(doc.points.size(), 16u);
-    const Vec3 c = eval(doc, 0, 0.5, 0.5);
+    const Vec3 c = evalAt(doc, 0, 0.5, 0.5);
     EXPECT_NEAR(glm::length(c - Vec3(1, 2, 3)), 0.0, 1e-12);
     const uint32_t q = duplicatePatch(doc, 0, {5, 0, 0});
     EXPECT_EQ(doc.points.size(), 32u);
-    EXPECT_NEAR(glm::length(eval(doc, q, 0.5, 0.5) - Vec3(6, 2, 3)), 0.0, 1e-12);
+    EXPECT_NEAR(glm::length(evalAt(doc, q, 0.5, 0.5) - Vec3(6, 2, 3)), 0.0, 1e-12);
     for (uint32_t i : doc.patches[q].idx) EXPECT_GE(i, 16u);  // own points
     EXPECT_THROW(duplicatePatch(doc, 7, {}), EditError);
 }
@@ -105,11 +105,11 @@ TEST(EditorPatchOps, SplitIsExactAndJoined) {
             EXPECT_EQ(doc.joins.size(), 7u);
             for (double s : {0.0, 0.25, 0.8, 1.0})
                 for (double w : {0.1, 0.6}) {
-                    const Vec3 pa = alongU ? eval(doc, a, s, w) : eval(doc, a, w, s);
-                    const Vec3 po = alongU ? eval(orig, 3, s * t, w) : eval(orig, 3, w, s * t);
+                    const Vec3 pa = alongU ? evalAt(doc, a, s, w) : evalAt(doc, a, w, s);
+                    const Vec3 po = alongU ? evalAt(orig, 3, s * t, w) : evalAt(orig, 3, w, s * t);
                     EXPECT_LT(glm::length(pa - po), 1e-12);
-                    const Vec3 pb = alongU ? eval(doc, b, s, w) : eval(doc, b, w, s);
-                    const Vec3 pob = alongU ? eval(orig, 3, t + s * (1 - t), w) : eval(orig, 3, w, t + s * (1 - t));
+                    const Vec3 pb = alongU ? evalAt(doc, b, s, w) : evalAt(doc, b, w, s);
+                    const Vec3 pob = alongU ? evalAt(orig, 3, t + s * (1 - t), w) : evalAt(orig, 3, w, t + s * (1 - t));
                     EXPECT_LT(glm::length(pb - pob), 1e-12);
                 }
             const Join& seam = doc.joins.back();

@@ -3,7 +3,11 @@
 
 #include <string_view>
 
-namespace pw::embedded {
+namespace pw {
+inline namespace base {
+namespace embedded {
 extern const std::string_view teapotBpt;  // data/teapot.bpt, the default document
 extern const std::string_view uiFontTtf;  // DejaVu Sans (fonts-dejavu-core): figure labels, presentation fonts
-}  // namespace pw::embedded
+}  // namespace embedded
+}  // namespace base
+}  // namespace pw

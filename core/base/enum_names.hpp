@@ -8,6 +8,7 @@
 #include <string_view>
 
 namespace pw {
+inline namespace base {
 
 template <typename E, size_t N>
 std::string_view enumName(E value, const std::array<std::string_view, N>& names) {
@@ -22,4 +23,5 @@ std::optional<E> parseEnum(std::string_view name, const std::array<std::string_v
     return std::nullopt;
 }
 
+}  // namespace base
 }  // namespace pw

@@ -3,6 +3,7 @@
 #include <sstream>
 
 namespace pw {
+inline namespace base {
 
 namespace {
 std::string formatInput(const std::string& file, const std::string& what, int line, const std::string& field) {
@@ -42,4 +43,5 @@ InputError::InputError(std::string where, std::string what, int line, std::strin
 OutputError::OutputError(const std::string& path, const std::string& what)
     : std::runtime_error(printable("cannot write " + path + ": " + what)) {}
 
+}  // namespace base
 }  // namespace pw

@@ -7,6 +7,7 @@
 #include <string_view>
 
 namespace pw {
+inline namespace base {
 
 // `text` with control characters (below 0x20, and 0x7f) written as \xNN, so that a name or path
 // from a file cannot move the cursor, clear the screen or retitle the terminal when printed. Every
@@ -40,4 +41,5 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+}  // namespace base
 }  // namespace pw

@@ -14,6 +14,7 @@
 #include "core/base/limits.hpp"
 
 namespace pw {
+inline namespace base {
 
 std::string readFileLimited(const std::filesystem::path& path) {
     const std::string name = path.string();
@@ -170,4 +171,5 @@ std::string lowerExtension(const std::filesystem::path& path) {
     return ext;
 }
 
+}  // namespace base
 }  // namespace pw

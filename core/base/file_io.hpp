@@ -11,6 +11,7 @@
 #include <vector>
 
 namespace pw {
+inline namespace base {
 
 // Reads the file; throws InputError naming it when it is missing, unreadable, a directory or
 // larger than limits::kMaxFileBytes.
@@ -62,4 +63,5 @@ void writeFileAtomic(const std::filesystem::path& path, std::string_view data,
 // Lower-case extension with the dot, e.g. ".glb".
 std::string lowerExtension(const std::filesystem::path& path);
 
+}  // namespace base
 }  // namespace pw

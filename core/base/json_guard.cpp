@@ -6,6 +6,7 @@
 #include "core/base/limits.hpp"
 
 namespace pw {
+inline namespace base {
 
 int lineAt(std::string_view text, size_t byte) {
     byte = std::min(byte, text.size());
@@ -84,4 +85,5 @@ nlohmann::json parseJsonGuarded(std::string_view text, const std::string& source
     }
 }
 
+}  // namespace base
 }  // namespace pw

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 namespace pw {
+inline namespace base {
 
 // A Patchwork document nests 4 deep; 64 levels refuse files of millions of '[' before they can
 // exhaust the stack or memory.
@@ -29,4 +30,5 @@ std::string parseErrorReason(const std::string& what);
 // kMaxJsonDepth is refused before parsing. Throws InputError naming `sourceName` and the line.
 nlohmann::json parseJsonGuarded(std::string_view text, const std::string& sourceName, int maxDepth = kMaxJsonDepth);
 
+}  // namespace base
 }  // namespace pw

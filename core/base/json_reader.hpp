@@ -13,7 +13,9 @@
 #include "core/base/json_guard.hpp"
 #include "core/base/limits.hpp"
 
-namespace pw::json_reader {
+namespace pw {
+inline namespace base {
+namespace json_reader {
 
 using nlohmann::json;
 
@@ -143,4 +145,6 @@ private:
     std::string prefix_;
 };
 
-}  // namespace pw::json_reader
+}  // namespace json_reader
+}  // namespace base
+}  // namespace pw

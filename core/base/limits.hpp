@@ -5,7 +5,9 @@
 #include <cstddef>
 #include <cstdint>
 
-namespace pw::limits {
+namespace pw {
+inline namespace base {
+namespace limits {
 
 inline constexpr std::size_t kMaxFileBytes = 256u * 1024u * 1024u;  // any file read
 inline constexpr std::size_t kMaxPoints = 4'000'000;                // pool entries
@@ -36,4 +38,6 @@ inline constexpr double kMinDistanceExponent = -8.0, kMaxDistanceExponent = 32.0
 // projection is singular (it rendered blank).
 inline constexpr double kMaxFovYDeg = 170.0;
 
-}  // namespace pw::limits
+}  // namespace limits
+}  // namespace base
+}  // namespace pw

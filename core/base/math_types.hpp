@@ -6,6 +6,7 @@
 #include <glm/vec3.hpp>
 
 namespace pw {
+inline namespace base {
 
 using Vec3 = glm::dvec3;
 
@@ -17,4 +18,5 @@ using Net16 = std::array<Vec3, 16>;
 // Their weights (rational windows, core/eval/rational_eval.hpp).
 using Weights16 = std::array<double, 16>;
 
+}  // namespace base
 }  // namespace pw

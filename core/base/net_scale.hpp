@@ -10,6 +10,7 @@
 #include "core/base/math_types.hpp"
 
 namespace pw {
+inline namespace base {
 
 // Diagonal of the control points' bounding box (never 0).
 template <size_t N>
@@ -26,4 +27,5 @@ double netScale(const std::array<Vec3, N>& net) {
 // net's scale squared).
 inline bool degenerateCross(const Vec3& n, double scale2) { return !(glm::length(n) > 1e-12 * scale2); }
 
+}  // namespace base
 }  // namespace pw

@@ -10,6 +10,7 @@
 #include "core/base/math_types.hpp"
 
 namespace pw {
+inline namespace base {
 
 // Indices i where after[i] != before[i] (sizes must match); `before` is then updated to `after`.
 inline void takeChangedPoints(std::vector<Vec3>& before, const std::vector<Vec3>& after, std::vector<uint32_t>& changed) {
@@ -31,4 +32,5 @@ inline void writePoolPositions(const std::vector<Vec3>& points, const std::vecto
     }
 }
 
+}  // namespace base
 }  // namespace pw

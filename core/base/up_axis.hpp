@@ -8,6 +8,7 @@
 #include "core/base/math_types.hpp"
 
 namespace pw {
+inline namespace base {
 
 // A Z-up point in a +Y-up file: (x, y, z) -> (x, z, -y) (+Z to +Y, the front -Y to +Z).
 inline std::array<float, 3> zUpToYUp(const std::array<float, 3>& p) { return {p[0], p[2], -p[1]}; }
@@ -15,4 +16,5 @@ inline std::array<float, 3> zUpToYUp(const std::array<float, 3>& p) { return {p[
 // A Y-up point in a +Z-up file: (x, y, z) -> (x, -z, y), the inverse of zUpToYUp.
 inline Vec3 yUpToZUp(const Vec3& p) { return {p.x, -p.z, p.y}; }
 
+}  // namespace base
 }  // namespace pw

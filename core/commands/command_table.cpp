@@ -12,6 +12,7 @@
 #include "core/base/limits.hpp"
 
 namespace pw {
+inline namespace commands {
 
 void CommandTable::add(Command c) {
     if (find(c.name)) throw std::logic_error("command '" + c.name + "' is defined twice");
@@ -330,4 +331,5 @@ CommandTable makeCommandTable() {
     return t;
 }
 
+}  // namespace commands
 }  // namespace pw

@@ -16,6 +16,7 @@
 #include "core/edit/edit_session.hpp"
 
 namespace pw {
+inline namespace commands {
 
 // What the editor window does for commands; a script host keeps the defaults.
 enum class FileDialogKind { Open, SaveAs, Import, ExportGltf, Screenshot, DomainFigure, SweepAnimation, HeightMap };
@@ -237,4 +238,5 @@ int axisIndex(const std::string& word);  // X|Y|Z (either case) → 0|1|2
 Command windowToggle(const char* name, const char* label, const char* menu, WindowToggle which, std::vector<std::string> keys,
                      const char* help);
 
+}  // namespace commands
 }  // namespace pw

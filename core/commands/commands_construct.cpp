@@ -13,6 +13,7 @@
 #include "core/ops/patch_ops.hpp"
 
 namespace pw {
+inline namespace commands {
 
 namespace {
 
@@ -382,4 +383,5 @@ void addConstructCommands(CommandTable& t) {
            .exec = execBake});
 }
 
+}  // namespace commands
 }  // namespace pw

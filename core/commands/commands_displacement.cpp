@@ -9,6 +9,7 @@
 #include "core/model/settings.hpp"
 
 namespace pw {
+inline namespace commands {
 
 namespace {
 
@@ -131,4 +132,5 @@ void addDisplacementCommands(CommandTable& t) {
            .exec = execDisplacementOwn});
 }
 
+}  // namespace commands
 }  // namespace pw

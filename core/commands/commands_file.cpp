@@ -13,6 +13,7 @@
 #include "core/tess/tess_presets.hpp"
 
 namespace pw {
+inline namespace commands {
 
 namespace {
 
@@ -245,4 +246,5 @@ void addFileCommands(CommandTable& t) {
            .exec = execRedo});
 }
 
+}  // namespace commands
 }  // namespace pw

@@ -9,6 +9,7 @@
 #include "core/solve/constraint_solver.hpp"
 
 namespace pw {
+inline namespace commands {
 
 namespace {
 
@@ -71,4 +72,5 @@ void addItemCommands(CommandTable& t) {
            .exec = execPoint});
 }
 
+}  // namespace commands
 }  // namespace pw

@@ -13,6 +13,7 @@
 #include "core/select/symmetry.hpp"
 
 namespace pw {
+inline namespace commands {
 
 namespace {
 
@@ -390,4 +391,5 @@ void addModelCommands(CommandTable& t) {
                    &Selection::curve, curveFromEdge));
 }
 
+}  // namespace commands
 }  // namespace pw

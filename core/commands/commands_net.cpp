@@ -8,6 +8,7 @@
 #include "core/solve/constraint_solver.hpp"
 
 namespace pw {
+inline namespace commands {
 
 namespace {
 
@@ -152,4 +153,5 @@ void addNetCommands(CommandTable& t) {
            .exec = execPatchesToNet});
 }
 
+}  // namespace commands
 }  // namespace pw

@@ -12,6 +12,7 @@
 #include "core/model/placement.hpp"
 
 namespace pw {
+inline namespace commands {
 
 namespace {
 
@@ -98,4 +99,5 @@ void addPrimitiveCommands(CommandTable& t) {
            .exec = execWeight});
 }
 
+}  // namespace commands
 }  // namespace pw

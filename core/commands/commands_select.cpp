@@ -19,6 +19,7 @@
 #include "core/select/symmetry.hpp"
 
 namespace pw {
+inline namespace commands {
 
 namespace {
 
@@ -305,4 +306,5 @@ void addSelectCommands(CommandTable& t) {
            .exec = execCursor});
 }
 
+}  // namespace commands
 }  // namespace pw

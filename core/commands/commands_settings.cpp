@@ -7,6 +7,7 @@
 #include "core/model/settings.hpp"
 
 namespace pw {
+inline namespace commands {
 
 namespace {
 
@@ -43,4 +44,5 @@ void addSettingCommands(CommandTable& t) {
            .exec = execSet});
 }
 
+}  // namespace commands
 }  // namespace pw

@@ -8,6 +8,7 @@
 #include "core/tess/tess_presets.hpp"
 
 namespace pw {
+inline namespace commands {
 
 namespace {
 
@@ -114,4 +115,5 @@ void addTessCommands(CommandTable& t) {
            .exec = execAdaptivePreset});
 }
 
+}  // namespace commands
 }  // namespace pw

@@ -10,6 +10,7 @@
 #include "core/model/settings.hpp"
 
 namespace pw {
+inline namespace commands {
 
 namespace {
 
@@ -234,4 +235,5 @@ void addViewCommands(CommandTable& t) {
                        "List every command with its keys, and the mouse actions"));
 }
 
+}  // namespace commands
 }  // namespace pw

@@ -10,6 +10,7 @@
 #include "core/model/topology.hpp"
 
 namespace pw {
+inline namespace construct {
 
 namespace {
 
@@ -135,4 +136,5 @@ ConstructedNet blendNet(const Document& doc, const Construction& c) {
     return net;
 }
 
+}  // namespace construct
 }  // namespace pw

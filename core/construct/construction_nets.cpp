@@ -7,6 +7,7 @@
 #include "core/model/construction_refs.hpp"
 
 namespace pw {
+inline namespace construct {
 
 namespace {
 Vec3 vec(const std::array<double, 3>& a) { return Vec3(a[0], a[1], a[2]); }
@@ -299,4 +300,5 @@ ConstructedNet edgeSurfaceNet(const Document& doc, const Construction& c) {
     return net;
 }
 
+}  // namespace construct
 }  // namespace pw

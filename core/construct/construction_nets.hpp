@@ -11,6 +11,7 @@
 #include "core/construct/constructions.hpp"
 
 namespace pw {
+inline namespace construct {
 
 ConstructedNet revolveNet(const Document& doc, const Construction& c);
 ConstructedNet extrudeNet(const Document& doc, const Construction& c);
@@ -44,4 +45,5 @@ void makeNetworkCorners(Document& doc, const Construction& c);
 // "1 segment", "3 segments"
 inline std::string segmentsWord(size_t n) { return std::to_string(n) + (n == 1 ? " segment" : " segments"); }
 
+}  // namespace construct
 }  // namespace pw

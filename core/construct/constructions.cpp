@@ -9,6 +9,7 @@
 #include "core/model/construction_refs.hpp"
 
 namespace pw {
+inline namespace construct {
 
 namespace {
 
@@ -241,4 +242,5 @@ RerunReport rerunConstructions(Document& doc) {
     return report;
 }
 
+}  // namespace construct
 }  // namespace pw

@@ -23,6 +23,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace construct {
 
 // The input as a Bézier chain: a curve's points, or a patch edge's four.
 CurveShape inputShape(const Document& doc, const CurveInput& in);
@@ -64,4 +65,5 @@ struct RerunReport {
 // longer are its net's windows (split, flipped, unjoined by hand) is baked.
 RerunReport rerunConstructions(Document& doc);
 
+}  // namespace construct
 }  // namespace pw

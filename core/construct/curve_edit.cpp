@@ -10,6 +10,7 @@
 #include "core/construct/curves.hpp"
 
 namespace pw {
+inline namespace construct {
 
 namespace {
 
@@ -90,4 +91,5 @@ void removeCurvePoint(Document& doc, uint32_t c, size_t k) {
     cv.idx.insert(cv.idx.begin() + long(3 * k - 2), {i1, i2});
 }
 
+}  // namespace construct
 }  // namespace pw

@@ -11,6 +11,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace construct {
 
 // Splits curve c at parameter t (segment floor(t), at its fraction; 0 < t < segments, not at a
 // segment end): one more segment, its inner points new pool points (the old ones, which a patch
@@ -22,4 +23,5 @@ void insertCurvePoint(Document& doc, uint32_t c, double t);
 // no such point or the curve would have no segment left.
 void removeCurvePoint(Document& doc, uint32_t c, size_t k);
 
+}  // namespace construct
 }  // namespace pw

@@ -6,6 +6,7 @@
 #include "core/base/limits.hpp"
 
 namespace pw {
+inline namespace construct {
 
 namespace {
 
@@ -207,4 +208,5 @@ uint32_t addCurveShape(Document& doc, const CurveShape& shape, const std::string
     return uint32_t(doc.curves.size() - 1);
 }
 
+}  // namespace construct
 }  // namespace pw

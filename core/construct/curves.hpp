@@ -14,6 +14,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace construct {
 
 using HPoint = glm::dvec4;  // homogeneous: (w·x, w·y, w·z, w)
 inline HPoint homogeneous(const Vec3& p, double w = 1.0) { return HPoint(p * w, w); }
@@ -51,4 +52,5 @@ CurveShape arcCurve(const Vec3& center, const Vec3& e1, const Vec3& e2, double r
 // index. EditError when the document is full.
 uint32_t addCurveShape(Document& doc, const CurveShape& shape, const std::string& name);
 
+}  // namespace construct
 }  // namespace pw

@@ -10,6 +10,7 @@
 #include <string>
 
 namespace pw {
+inline namespace construct {
 
 namespace {
 
@@ -154,4 +155,5 @@ Document makeTriangleDome(double radius, double height) {
     return doc;
 }
 
+}  // namespace construct
 }  // namespace pw

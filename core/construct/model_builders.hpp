@@ -4,6 +4,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace construct {
 
 // A rows x cols grid of bicubic Bézier patches over [0, cols] x [0, rows] (z up), with a gentle
 // wave in z, sharing boundary points through the pool, and joined with `continuity` across every
@@ -17,4 +18,5 @@ Document makePatchGrid(int rows, int cols, Continuity continuity = Continuity::C
 // four pool points, so the dome is watertight and smooth; its normals point up (+z).
 Document makeTriangleDome(double radius = 1.0, double height = 0.5);
 
+}  // namespace construct
 }  // namespace pw

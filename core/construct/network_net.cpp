@@ -12,6 +12,7 @@
 #include "core/model/construction_refs.hpp"
 
 namespace pw {
+inline namespace construct {
 
 namespace {
 
@@ -163,4 +164,5 @@ void makeNetworkCorners(Document& doc, const Construction& c) {
     }
 }
 
+}  // namespace construct
 }  // namespace pw

@@ -10,6 +10,7 @@
 #include "core/base/limits.hpp"
 
 namespace pw {
+inline namespace construct {
 
 namespace {
 
@@ -136,4 +137,5 @@ PrimitiveResult addTorus(Document& doc, const Vec3& center, double major, double
                    true, "torus");
 }
 
+}  // namespace construct
 }  // namespace pw

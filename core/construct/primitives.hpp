@@ -16,6 +16,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace construct {
 
 struct PrimitiveResult {
     std::vector<uint32_t> patches;  // the new patches
@@ -29,4 +30,5 @@ PrimitiveResult addCone(Document& doc, const Vec3& center, double radius, double
 // Distance from the axis to the tube's centre, and the tube's radius (0 < minor < major).
 PrimitiveResult addTorus(Document& doc, const Vec3& center, double major, double minor, bool zUp);
 
+}  // namespace construct
 }  // namespace pw

@@ -9,6 +9,7 @@
 #include "core/model/construction_refs.hpp"
 
 namespace pw {
+inline namespace construct {
 
 namespace {
 
@@ -248,4 +249,5 @@ ConstructedNet sweep2Net(const Document& doc, const Construction& c) {
     return net;
 }
 
+}  // namespace construct
 }  // namespace pw

@@ -3,6 +3,7 @@
 #include <cmath>
 
 namespace pw {
+inline namespace construct {
 
 Document makeTerrainDocument(const TerrainSpec& spec) {
     Document doc;
@@ -87,4 +88,5 @@ HeightMap makeTerrainHeightMap(uint32_t size, uint32_t seed) {
     return heightMapFromValues(size, size, v, "terrain.png");
 }
 
+}  // namespace construct
 }  // namespace pw

@@ -8,6 +8,7 @@
 #include "core/model/height_map.hpp"
 
 namespace pw {
+inline namespace construct {
 
 struct TerrainSpec {
     int windows = 32;      // per side
@@ -23,4 +24,5 @@ Document makeTerrainDocument(const TerrainSpec& spec = {});
 // machine.
 HeightMap makeTerrainHeightMap(uint32_t size = 512, uint32_t seed = 7);
 
+}  // namespace construct
 }  // namespace pw

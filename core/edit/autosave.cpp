@@ -19,6 +19,7 @@
 #include "core/io/document_io.hpp"
 
 namespace pw {
+inline namespace edit {
 
 namespace fs = std::filesystem;
 
@@ -105,4 +106,5 @@ void removeAutosave(const AutosaveEntry& e) {
     fs::remove(e.note, ec);
 }
 
+}  // namespace edit
 }  // namespace pw

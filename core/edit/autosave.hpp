@@ -12,6 +12,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace edit {
 
 std::filesystem::path autosaveDirectory();
 
@@ -52,4 +53,5 @@ std::vector<AutosaveEntry> findRecoverableAutosaves(const std::filesystem::path&
 // Deletes an entry's files.
 void removeAutosave(const AutosaveEntry& e);
 
+}  // namespace edit
 }  // namespace pw

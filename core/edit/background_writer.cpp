@@ -6,6 +6,7 @@
 #include "core/io/document_io.hpp"
 
 namespace pw {
+inline namespace edit {
 
 BackgroundWriter::BackgroundWriter() : worker_([this] { work(); }) {}
 
@@ -69,4 +70,5 @@ void BackgroundWriter::work() {
     }
 }
 
+}  // namespace edit
 }  // namespace pw

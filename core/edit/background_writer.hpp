@@ -16,6 +16,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace edit {
 
 class BackgroundWriter {
 public:
@@ -57,4 +58,5 @@ private:
     std::thread worker_;
 };
 
+}  // namespace edit
 }  // namespace pw

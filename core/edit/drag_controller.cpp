@@ -17,6 +17,7 @@
 #include "core/select/picking.hpp"
 
 namespace pw {
+inline namespace edit {
 
 namespace {
 
@@ -344,4 +345,5 @@ void HeldPointEdit::finish(EditSession& session) {
     session.changed(false);
 }
 
+}  // namespace edit
 }  // namespace pw

@@ -24,6 +24,7 @@
 #include "core/solve/constraint_solver.hpp"
 
 namespace pw {
+inline namespace edit {
 
 // The view a drag is seen in: mouse positions are pixels of a width x height image of `camera`.
 struct DragView {
@@ -171,4 +172,5 @@ private:
     SymmetryPairs pairs_;
 };
 
+}  // namespace edit
 }  // namespace pw

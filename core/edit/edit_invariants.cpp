@@ -12,6 +12,7 @@
 #include "core/solve/constraint_solver.hpp"
 
 namespace pw {
+inline namespace edit {
 
 namespace {
 
@@ -84,4 +85,5 @@ void checkEditInvariants(const Document& before, const Document& after, bool det
     checkFolds(before, after);
 }
 
+}  // namespace edit
 }  // namespace pw

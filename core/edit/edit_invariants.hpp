@@ -11,6 +11,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace edit {
 
 // The residual every join must stay within after an edit: 1e-6 × model size.
 double joinTolerance(const Document& doc);
@@ -24,4 +25,5 @@ std::string describeJoin(const Document& doc, size_t j);
 // found by join detection (import, mirror), held to detection's own tolerance (1e-4 × model size).
 void checkEditInvariants(const Document& before, const Document& after, bool detected = false);
 
+}  // namespace edit
 }  // namespace pw

@@ -10,6 +10,7 @@
 #include "core/ops/patch_ops.hpp"
 
 namespace pw {
+inline namespace edit {
 
 EditSession::EditSession() {
     doc.name = "untitled";
@@ -153,4 +154,5 @@ std::vector<uint32_t> EditSession::selectedPoints() const {
 
 Vec3 EditSession::transformPivot() const { return pw::transformPivot(doc, sel, selectedPoints(), pivot, cursor); }
 
+}  // namespace edit
 }  // namespace pw

@@ -20,6 +20,7 @@
 #include "core/select/symmetry.hpp"
 
 namespace pw {
+inline namespace edit {
 
 class EditSession {
 public:
@@ -108,4 +109,5 @@ private:
     bool step(bool forward);  // undo (false) or redo (true)
 };
 
+}  // namespace edit
 }  // namespace pw

@@ -8,6 +8,7 @@
 #include "core/solve/constraint_solver.hpp"
 
 namespace pw {
+inline namespace edit {
 
 std::vector<uint32_t> withConstructionPoints(const Document& doc, std::vector<uint32_t> driven) {
     if (doc.constructions.empty()) return driven;
@@ -60,4 +61,5 @@ std::string constructedPointsRefusal(const Document& doc, const std::vector<uint
     return "";
 }
 
+}  // namespace edit
 }  // namespace pw

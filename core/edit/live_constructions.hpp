@@ -10,6 +10,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace edit {
 
 // The points a solve must keep where the constructions put them: every made net's points and
 // every input's points. Sorted, unique.
@@ -26,4 +27,5 @@ std::vector<std::string> refreshConstructions(Document& doc);
 // made by revolve k0 from c1: move c1, or `bake` it to edit its points").
 std::string constructedPointsRefusal(const Document& doc, const std::vector<uint32_t>& points);
 
+}  // namespace edit
 }  // namespace pw

@@ -5,6 +5,7 @@
 #include "core/eval/rational_eval.hpp"
 
 namespace pw {
+inline namespace eval {
 
 Vec3 evaluateCurve(const std::array<Vec3, 4>& p, double t) {
     if (t <= 0.0) return p[0];
@@ -48,4 +49,5 @@ std::vector<Vec3> sampleCurve(const Document& doc, const BezierCurve& c, int seg
     return out;
 }
 
+}  // namespace eval
 }  // namespace pw

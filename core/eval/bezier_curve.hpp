@@ -9,6 +9,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace eval {
 
 // The point at parameter t in [0, 1].
 Vec3 evaluateCurve(const std::array<Vec3, 4>& p, double t);
@@ -23,4 +24,5 @@ std::vector<Vec3> sampleCurve(const std::array<Vec3, 4>& p, int segments);
 // points have weights, exact at every segment's ends.
 std::vector<Vec3> sampleCurve(const Document& doc, const BezierCurve& c, int segments);
 
+}  // namespace eval
 }  // namespace pw

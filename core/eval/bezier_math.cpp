@@ -10,6 +10,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace eval {
 
 namespace {
 
@@ -180,4 +181,5 @@ float baseStrokeWidth(MathDiagram::Role role) {
 float mathStrokeWidth(MathDiagram::Role role, float textPixels) { return baseStrokeWidth(role) * textPixels / kMathBaseTextPixels; }
 float mathDotRadius(float textPixels) { return 3.0f * textPixels / kMathBaseTextPixels; }
 
+}  // namespace eval
 }  // namespace pw

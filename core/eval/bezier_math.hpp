@@ -14,6 +14,7 @@
 #include "core/base/math_types.hpp"
 
 namespace pw {
+inline namespace eval {
 
 // One de Casteljau pyramid over four points at t: two intermediate levels and the point.
 struct CasteljauSteps {
@@ -62,4 +63,5 @@ std::array<unsigned char, 4> mathColor(MathDiagram::Role role);  // RGBA
 float mathStrokeWidth(MathDiagram::Role role, float textPixels);
 float mathDotRadius(float textPixels);
 
+}  // namespace eval
 }  // namespace pw

@@ -8,6 +8,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace eval {
 
 namespace {
 
@@ -143,4 +144,5 @@ Net16 triangleAsCollapsedQuad(const Net10& net) {
     return quad;
 }
 
+}  // namespace eval
 }  // namespace pw

@@ -12,8 +12,13 @@
 #include "core/base/math_types.hpp"
 
 namespace pw {
-
+inline namespace model {
 struct Document;
+}  // namespace model
+}  // namespace pw
+
+namespace pw {
+inline namespace eval {
 
 // Ten control points in the canonical order of TrianglePatch::idx (b300, b210, b201, b120, b111,
 // b102, b030, b021, b012, b003).
@@ -75,4 +80,5 @@ void evaluateTriangleGrid(const Net10& net, const std::array<uint32_t, 10>& pool
 // (∂/∂s × ∂/∂t) agrees with the triangle's.
 Net16 triangleAsCollapsedQuad(const Net10& net);
 
+}  // namespace eval
 }  // namespace pw

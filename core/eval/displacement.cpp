@@ -8,6 +8,7 @@
 #include "core/eval/rational_eval.hpp"
 
 namespace pw {
+inline namespace eval {
 
 std::filesystem::path resolveMapPath(const DisplacementSettings& d, const std::filesystem::path& documentPath) {
     const std::filesystem::path map(d.map);
@@ -137,4 +138,5 @@ std::vector<WindowDisplacement> windowDisplacements(const Document& doc, const s
     return out;
 }
 
+}  // namespace eval
 }  // namespace pw

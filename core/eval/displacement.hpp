@@ -13,6 +13,7 @@
 #include "core/model/height_map.hpp"
 
 namespace pw {
+inline namespace eval {
 
 // Where the document's map file is: absolute, or relative to the document's folder (the working
 // directory for an unsaved document).
@@ -44,4 +45,5 @@ struct WindowDisplacement {
 // displacement-adaptive levels never open a crack. Without a map the details are zero.
 std::vector<WindowDisplacement> windowDisplacements(const Document& doc, const std::vector<PatchInstance>& windows, const HeightMap* map);
 
+}  // namespace eval
 }  // namespace pw

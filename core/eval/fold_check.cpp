@@ -7,6 +7,7 @@
 #include "core/eval/rational_eval.hpp"
 
 namespace pw {
+inline namespace eval {
 
 namespace {
 
@@ -106,4 +107,5 @@ std::string foldMadeBy(const Document& before, const Document& after) {
     return "";
 }
 
+}  // namespace eval
 }  // namespace pw

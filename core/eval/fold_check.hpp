@@ -13,6 +13,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace eval {
 
 struct PatchShape {
     int invertedTriangles = 0;  // of the 2·level² grid triangles
@@ -37,4 +38,5 @@ inline bool foldedFurther(const PatchShape& before, const PatchShape& after) {
 // first that foldedFurther. "" when none, else "patch 3 (5 of its triangles turned over)".
 std::string foldMadeBy(const Document& before, const Document& after);
 
+}  // namespace eval
 }  // namespace pw

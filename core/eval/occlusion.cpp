@@ -10,6 +10,7 @@
 #include "core/eval/rational_eval.hpp"
 
 namespace pw {
+inline namespace eval {
 
 namespace {
 
@@ -122,4 +123,5 @@ std::vector<uint32_t> unoccludedPoints(const Document& doc, const Camera& cam, i
     return out;
 }
 
+}  // namespace eval
 }  // namespace pw

@@ -10,6 +10,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace eval {
 
 // The points of `candidates` that no shown surface lies in front of, in a width x height view.
 // Each window is a `level` x `level` grid, each triangle its barycentric grid; a point on the
@@ -18,4 +19,5 @@ namespace pw {
 std::vector<uint32_t> unoccludedPoints(const Document& doc, const Camera& cam, int width, int height,
                                        const std::vector<uint32_t>& candidates, int level = 8);
 
+}  // namespace eval
 }  // namespace pw

@@ -8,6 +8,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace eval {
 
 namespace {
 
@@ -229,4 +230,5 @@ void evaluateGrid(const Net16& net, const std::array<uint32_t, 16>& poolIdx, con
     }
 }
 
+}  // namespace eval
 }  // namespace pw

@@ -12,6 +12,7 @@
 #include "core/model/basis.hpp"
 
 namespace pw {
+inline namespace eval {
 
 struct SurfacePoint {
     Vec3 p{0.0};
@@ -62,4 +63,5 @@ GridWeights makeGridWeights(Basis basis, double tension, int nu, int nv);
 // boundary rows and columns come from evaluateSharedBezierEdge (watertight seams).
 void evaluateGrid(const Net16& net, const std::array<uint32_t, 16>& poolIdx, const GridWeights& weights, std::vector<SurfacePoint>& out);
 
+}  // namespace eval
 }  // namespace pw

@@ -9,6 +9,7 @@
 #include "core/model/basis.hpp"
 
 namespace pw {
+inline namespace eval {
 
 namespace {
 
@@ -162,4 +163,5 @@ CurveJet evaluateRationalCurve(const std::array<Vec3, 4>& p, const std::array<do
     return j;
 }
 
+}  // namespace eval
 }  // namespace pw

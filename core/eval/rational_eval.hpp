@@ -14,6 +14,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace eval {
 
 struct WindowNet {
     Net16 points{};
@@ -42,4 +43,5 @@ struct CurveJet {
 };
 CurveJet evaluateRationalCurve(const std::array<Vec3, 4>& p, const std::array<double, 4>& w, double t);
 
+}  // namespace eval
 }  // namespace pw

@@ -9,6 +9,7 @@
 #include "core/model/basis.hpp"
 
 namespace pw {
+inline namespace eval {
 
 template <class V>
 struct TensorSums {
@@ -36,4 +37,5 @@ TensorSums<V> tensorSums(const std::array<V, 16>& net, const BasisWeights& wu, c
     return s;
 }
 
+}  // namespace eval
 }  // namespace pw

@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 namespace pw {
+inline namespace io {
 
 namespace {
 
@@ -118,4 +119,5 @@ BoundedResult runBounded(const std::function<std::string()>& work, double second
     return result;
 }
 
+}  // namespace io
 }  // namespace pw

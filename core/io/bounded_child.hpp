@@ -9,6 +9,7 @@
 #include <string>
 
 namespace pw {
+inline namespace io {
 
 struct BoundedResult {
     enum class Kind { Done, TimedOut, OutOfMemory, Crashed } kind = Kind::Done;
@@ -21,4 +22,5 @@ struct BoundedResult {
 // the whole address space). std::bad_alloc in the child counts as OutOfMemory.
 BoundedResult runBounded(const std::function<std::string()>& work, double seconds, std::size_t memoryBytes);
 
+}  // namespace io
 }  // namespace pw

@@ -16,6 +16,7 @@
 #include "core/ops/orientation.hpp"
 
 namespace pw {
+inline namespace io {
 
 namespace {
 
@@ -287,4 +288,5 @@ std::string formatBpt(const Document& doc) {
     return out;
 }
 
+}  // namespace io
 }  // namespace pw

@@ -11,6 +11,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace io {
 
 // `sourceName` is used in error messages (InputError with the line number). A file whose count
 // lists more than limits::kMaxPoints points is refused at its first line. `notes`, when given,
@@ -22,4 +23,5 @@ Document loadBpt(const std::filesystem::path& path, std::vector<std::string>* no
 // bases with an error naming the patch) in the tea-set format, numbers printed round-trip exact.
 std::string formatBpt(const Document& doc);
 
+}  // namespace io
 }  // namespace pw

@@ -23,7 +23,9 @@
 #include <algorithm>
 #include <cmath>
 
-namespace pw::occt {
+namespace pw {
+inline namespace io {
+namespace occt {
 
 std::variant<std::monostate, BezierPatches, std::string> planarFan(const TopoDS_Face& face) {
     Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
@@ -102,4 +104,6 @@ std::variant<std::monostate, BezierPatches, std::string> planarFan(const TopoDS_
     return patches;
 }
 
-}  // namespace pw::occt
+}  // namespace occt
+}  // namespace io
+}  // namespace pw

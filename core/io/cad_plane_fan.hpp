@@ -15,9 +15,13 @@
 #include <variant>
 #include <vector>
 
-namespace pw::occt {
+namespace pw {
+inline namespace io {
+namespace occt {
 
 using BezierPatches = std::vector<Handle(Geom_BezierSurface)>;
 std::variant<std::monostate, BezierPatches, std::string> planarFan(const TopoDS_Face& face);
 
-}  // namespace pw::occt
+}  // namespace occt
+}  // namespace io
+}  // namespace pw

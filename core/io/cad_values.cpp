@@ -8,6 +8,7 @@
 #include "core/base/limits.hpp"
 
 namespace pw {
+inline namespace io {
 
 namespace {
 
@@ -158,4 +159,5 @@ void checkCadValues(const std::string& file, std::string_view text, bool step) {
         checkIges(file, text);
 }
 
+}  // namespace io
 }  // namespace pw

@@ -10,7 +10,9 @@
 #include <string_view>
 
 namespace pw {
+inline namespace io {
 
 void checkCadValues(const std::string& file, std::string_view text, bool step);
 
+}  // namespace io
 }  // namespace pw

@@ -6,6 +6,7 @@
 #include "core/model/construction_refs.hpp"
 
 namespace pw {
+inline namespace io {
 
 using json_reader::at;
 using nlohmann::json;
@@ -108,4 +109,5 @@ void readConstructions(const json_reader::Reader& r, const json& v, Document& do
     }
 }
 
+}  // namespace io
 }  // namespace pw

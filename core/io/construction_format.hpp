@@ -10,10 +10,12 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace io {
 
 nlohmann::json constructionsJson(const Document& doc);
 // Reads `v` (the "constructions" array) into doc.constructions; doc's points, patches and curves
 // are already read. InputError naming the field for anything that does not fit.
 void readConstructions(const json_reader::Reader& r, const nlohmann::json& v, Document& doc);
 
+}  // namespace io
 }  // namespace pw

@@ -8,6 +8,7 @@
 #include "core/io/formats.hpp"
 
 namespace pw {
+inline namespace io {
 
 Document loadDocument(const std::filesystem::path& path, LoadReport* report) {
     if (report) *report = LoadReport{};
@@ -57,4 +58,5 @@ Document builtinTeapot() {
     return doc;
 }
 
+}  // namespace io
 }  // namespace pw

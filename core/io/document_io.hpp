@@ -13,6 +13,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace io {
 
 // What a load learnt beside the document.
 struct LoadReport {
@@ -44,4 +45,5 @@ bool saveKeepsEverything(const std::filesystem::path& path);
 // The built-in teapot (data/teapot.bpt compiled into the binary), joins detected.
 Document builtinTeapot();
 
+}  // namespace io
 }  // namespace pw

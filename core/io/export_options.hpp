@@ -8,6 +8,7 @@
 #include "core/mesh/mesh_split.hpp"
 
 namespace pw {
+inline namespace io {
 
 struct ExportOptions {
     int level = 0;                                     // tessellation level; 0 = the document's (max of its uniform levels, rounded up)
@@ -20,4 +21,5 @@ struct ExportOptions {
     bool operator==(const ExportOptions&) const = default;
 };
 
+}  // namespace io
 }  // namespace pw

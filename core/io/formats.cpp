@@ -12,6 +12,7 @@
 #include "core/io/step_import.hpp"
 
 namespace pw {
+inline namespace io {
 
 namespace {
 
@@ -145,4 +146,5 @@ std::string formatList(FormatUse use, std::string_view lastJoin) {
     return out;
 }
 
+}  // namespace io
 }  // namespace pw

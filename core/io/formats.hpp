@@ -16,9 +16,15 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace mesh {
+struct TriangleMesh;
+}  // namespace mesh
+}  // namespace pw
+
+namespace pw {
+inline namespace io {
 
 struct LoadReport;
-struct TriangleMesh;
 
 struct FileFormat {
     std::string_view name;                     // "glTF 2.0 binary"
@@ -45,4 +51,5 @@ enum class FormatUse { Load, Save, Document, Mesh, Export, Exact };
 std::string formatList(FormatUse use, std::string_view lastJoin = " or ");
 bool formatDoes(const FileFormat& f, FormatUse use);
 
+}  // namespace io
 }  // namespace pw

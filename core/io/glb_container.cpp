@@ -7,6 +7,7 @@
 #include "core/base/errors.hpp"
 
 namespace pw {
+inline namespace io {
 
 namespace {
 constexpr uint32_t kJsonChunk = 0x4E4F534Au;  // "JSON"
@@ -62,4 +63,5 @@ std::string joinGlb(std::string json, std::string_view rest) {
     return out;
 }
 
+}  // namespace io
 }  // namespace pw

@@ -9,6 +9,7 @@
 #include <string_view>
 
 namespace pw {
+inline namespace io {
 
 struct GlbParts {
     std::string_view json;  // the JSON chunk's bytes (padding included)
@@ -26,4 +27,5 @@ size_t binChunkBytes(std::string_view rest, const std::string& sourceName);
 // alone. Throws std::length_error past the 4 GiB a GLB can describe.
 std::string joinGlb(std::string json, std::string_view rest);
 
+}  // namespace io
 }  // namespace pw

@@ -29,6 +29,7 @@
 #include "core/mesh/mesh_tessellate.hpp"
 
 namespace pw {
+inline namespace io {
 
 namespace {
 
@@ -427,4 +428,5 @@ void exportGltf(const Document& doc, const std::filesystem::path& path, const Ex
     exportGltfWithStats(doc, path, options);
 }
 
+}  // namespace io
 }  // namespace pw

@@ -14,6 +14,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace io {
 
 // The options an export used, kept in asset.extras.patchworkExport ({"level", "primitives",
 // "cage"}, and "asDisplayed": true with "viewport": [w, h] when it was) so a re-export without flags writes the same file. nullopt when the
@@ -50,4 +51,5 @@ std::string exportGltfBytes(const Document& doc, bool binary, const ExportOption
 GltfExportStats exportGltfWithStats(const Document& doc, const std::filesystem::path& path, const ExportOptions& options,
                                     TriangleMesh* displayed = nullptr);
 
+}  // namespace io
 }  // namespace pw

@@ -15,6 +15,7 @@
 #include "core/io/patchwork_format.hpp"
 
 namespace pw {
+inline namespace io {
 
 namespace {
 
@@ -153,4 +154,5 @@ Document parsePatchworkGltf(std::string_view data, const std::string& name, std:
     return doc;
 }
 
+}  // namespace io
 }  // namespace pw

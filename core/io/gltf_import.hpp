@@ -11,6 +11,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace io {
 
 // exportOptions (when given) receives the options the file was exported with (extras
 // patchworkExport), or nullopt for a file without them.
@@ -20,4 +21,5 @@ Document importPatchworkGltf(const std::filesystem::path& path, std::optional<Ex
 // file and decodes no image: a hostile glTF cannot make Patchwork open paths its URIs name.
 Document parsePatchworkGltf(std::string_view data, const std::string& sourceName, std::optional<ExportOptions>* exportOptions = nullptr);
 
+}  // namespace io
 }  // namespace pw

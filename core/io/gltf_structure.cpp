@@ -9,6 +9,7 @@
 #include "core/base/json_reader.hpp"
 
 namespace pw {
+inline namespace io {
 
 namespace {
 
@@ -232,4 +233,5 @@ void checkGltfStructure(const json& gltf, const std::string& name, bool binary, 
     checkSceneGraph(c, gltf);
 }
 
+}  // namespace io
 }  // namespace pw

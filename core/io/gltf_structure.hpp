@@ -11,9 +11,11 @@
 #include <nlohmann/json.hpp>
 
 namespace pw {
+inline namespace io {
 
 // Throws InputError naming `name` and the field, e.g. "accessors[3].componentType". `binBytes`: the
 // size of a .glb's BIN chunk (0 when it has none or the file is .gltf).
 void checkGltfStructure(const nlohmann::json& gltf, const std::string& name, bool binary, size_t binBytes);
 
+}  // namespace io
 }  // namespace pw

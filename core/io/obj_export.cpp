@@ -16,6 +16,7 @@
 #include "core/mesh/mesh_tessellate.hpp"
 
 namespace pw {
+inline namespace io {
 
 namespace {
 
@@ -199,4 +200,5 @@ ObjExportStats exportObj(const Document& doc, const std::filesystem::path& path,
     return stats;
 }
 
+}  // namespace io
 }  // namespace pw

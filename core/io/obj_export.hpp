@@ -13,6 +13,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace io {
 
 struct ObjExportStats {
     int level = 0;
@@ -35,4 +36,5 @@ ObjFiles exportObjText(const Document& doc, int level, const std::string& mtlNam
 // left changed. Throws OutputError naming the path.
 ObjExportStats exportObj(const Document& doc, const std::filesystem::path& path, int level = 0, TriangleMesh* displayed = nullptr);
 
+}  // namespace io
 }  // namespace pw

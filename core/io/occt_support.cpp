@@ -12,7 +12,9 @@
 #include <TColgp_Array2OfPnt.hxx>
 #include <UnitsMethods.hxx>
 
-namespace pw::occt {
+namespace pw {
+inline namespace io {
+namespace occt {
 
 std::unique_lock<std::mutex> lock() {
     static std::mutex m;
@@ -66,4 +68,6 @@ const char* unitName(LengthUnit u) {
     return "M";
 }
 
-}  // namespace pw::occt
+}  // namespace occt
+}  // namespace io
+}  // namespace pw

@@ -14,7 +14,9 @@
 #include "core/base/math_types.hpp"
 #include "core/model/document.hpp"
 
-namespace pw::occt {
+namespace pw {
+inline namespace io {
+namespace occt {
 
 // Held for every use of OCCT's readers and writers; the first call also removes OCCT's console
 // printers (its transfer statistics would otherwise go to stdout).
@@ -34,4 +36,6 @@ const char* unitName(LengthUnit u);
 // STEP model's own units (StepData_StepModel::SetLocalLengthUnit, SetWriteLengthUnit).
 double useLengthUnit(LengthUnit u);
 
-}  // namespace pw::occt
+}  // namespace occt
+}  // namespace io
+}  // namespace pw

@@ -17,6 +17,7 @@
 #include "core/model/settings.hpp"
 
 namespace pw {
+inline namespace io {
 
 using nlohmann::json;
 
@@ -584,4 +585,5 @@ Document parseDocument(std::string_view text, const std::string& sourceName) {
     return documentFromJson(j, sourceName);
 }
 
+}  // namespace io
 }  // namespace pw

@@ -11,6 +11,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace io {
 
 nlohmann::json documentToJson(const Document& doc);
 // Validates everything (types, counts, index ranges, finite coordinates, limits.hpp); throws
@@ -21,4 +22,5 @@ Document documentFromJson(const nlohmann::json& json, const std::string& sourceN
 std::string serializeDocument(const Document& doc);
 Document parseDocument(std::string_view text, const std::string& sourceName);  // errors carry the line
 
+}  // namespace io
 }  // namespace pw

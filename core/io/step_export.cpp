@@ -50,6 +50,7 @@
 #include "core/ops/net_ops.hpp"
 
 namespace pw {
+inline namespace io {
 
 namespace {
 
@@ -277,4 +278,5 @@ StepExportStats exportStep(const Document& doc, const std::filesystem::path& pat
     return stats;
 }
 
+}  // namespace io
 }  // namespace pw

@@ -19,6 +19,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace io {
 
 enum class StepSchema { AP214, AP242 };
 
@@ -44,4 +45,5 @@ std::string exportIgesText(const Document& doc, StepExportStats* stats = nullptr
 // Atomic write (.step or .stp; .iges or .igs as IGES). Throws OutputError naming the path.
 StepExportStats exportStep(const Document& doc, const std::filesystem::path& path, const StepExportOptions& options = {});
 
+}  // namespace io
 }  // namespace pw

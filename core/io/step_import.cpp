@@ -56,6 +56,7 @@
 #include "core/model/join_detect.hpp"
 
 namespace pw {
+inline namespace io {
 
 namespace {
 
@@ -374,4 +375,5 @@ Document importCadSurfaces(const std::filesystem::path& path, CadImportReport* r
     return doc;
 }
 
+}  // namespace io
 }  // namespace pw

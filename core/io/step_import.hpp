@@ -15,6 +15,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace io {
 
 struct CadImportReport {
     size_t faces = 0;                  // faces in the file
@@ -28,4 +29,5 @@ struct CadImportReport {
 
 Document importCadSurfaces(const std::filesystem::path& path, CadImportReport* report = nullptr);
 
+}  // namespace io
 }  // namespace pw

@@ -9,6 +9,7 @@
 #include "core/base/json_reader.hpp"
 
 namespace pw {
+inline namespace io {
 
 namespace {
 
@@ -122,4 +123,5 @@ TessCaptureFile readTessCaptureFile(const std::string& text, const std::string& 
 
 TessCaptureFile loadTessCaptureFile(const std::filesystem::path& path) { return readTessCaptureFile(readFileLimited(path), path.string()); }
 
+}  // namespace io
 }  // namespace pw

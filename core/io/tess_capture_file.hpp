@@ -12,6 +12,7 @@
 #include "core/tess/tess_pattern.hpp"
 
 namespace pw {
+inline namespace io {
 
 struct TessCaptureFile {
     std::string device;  // VkPhysicalDeviceProperties::deviceName
@@ -31,4 +32,5 @@ std::string writeTessCaptureFile(const TessCaptureFile& f);
 TessCaptureFile readTessCaptureFile(const std::string& text, const std::string& source);
 TessCaptureFile loadTessCaptureFile(const std::filesystem::path& path);
 
+}  // namespace io
 }  // namespace pw

@@ -10,6 +10,7 @@
 #include <utility>
 
 namespace pw {
+inline namespace mesh {
 
 namespace {
 
@@ -194,4 +195,5 @@ SplitMesh splitMesh(TriangleMesh&& mesh, MeshGrouping grouping) {
     return out;
 }
 
+}  // namespace mesh
 }  // namespace pw

@@ -13,6 +13,7 @@
 #include "core/mesh/mesh_tessellate.hpp"
 
 namespace pw {
+inline namespace mesh {
 
 enum class MeshGrouping { Surfaces, Patches, Single };
 
@@ -42,4 +43,5 @@ SplitMesh splitMesh(TriangleMesh&& mesh, MeshGrouping grouping);
 // welded mesh keeps separate vertices at C0 creases and unjoined seams, which are still one surface.
 std::vector<uint32_t> positionIds(const std::vector<std::array<float, 3>>& positions);
 
+}  // namespace mesh
 }  // namespace pw

@@ -22,6 +22,7 @@
 #include "core/mesh/triangle_mesh.hpp"
 
 namespace pw {
+inline namespace mesh {
 
 namespace {
 
@@ -442,4 +443,5 @@ CageLines controlCage(const Document& doc) {
     return cage;
 }
 
+}  // namespace mesh
 }  // namespace pw

@@ -11,6 +11,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace mesh {
 
 // An index slot not yet given a vertex (the mesh builders' grids and maps).
 inline constexpr uint32_t kNoVertex = 0xFFFFFFFFu;
@@ -64,4 +65,5 @@ struct CageLines {
 };
 CageLines controlCage(const Document& doc);
 
+}  // namespace mesh
 }  // namespace pw

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 namespace pw {
+inline namespace mesh {
 
 namespace {
 
@@ -150,4 +151,5 @@ TriangleMesh weldTriangleSoup(const std::vector<SoupVertex>& soup, size_t window
     return mesh;
 }
 
+}  // namespace mesh
 }  // namespace pw

@@ -14,6 +14,7 @@
 #include "core/mesh/mesh_tessellate.hpp"
 
 namespace pw {
+inline namespace mesh {
 
 // One captured vertex, in the capture shaders' transform-feedback layout (36 bytes).
 struct SoupVertex {
@@ -36,4 +37,5 @@ struct WeldStats {
 TriangleMesh weldTriangleSoup(const std::vector<SoupVertex>& soup, size_t windowCount, size_t triangleCount, double tolerance,
                               WeldStats* stats = nullptr);
 
+}  // namespace mesh
 }  // namespace pw

@@ -5,6 +5,7 @@
 #include "core/eval/bezier_triangle.hpp"
 
 namespace pw {
+inline namespace mesh {
 
 namespace {
 
@@ -141,4 +142,5 @@ void appendBezierTriangles(const Document& doc, int level, TriangleMesh& mesh, c
     }
 }
 
+}  // namespace mesh
 }  // namespace pw

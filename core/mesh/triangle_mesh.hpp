@@ -13,6 +13,7 @@
 #include "core/mesh/mesh_tessellate.hpp"
 
 namespace pw {
+inline namespace mesh {
 
 // Vertices already in the mesh on Bézier boundaries, by pool: corners by pool index, edge
 // interiors (k = 1 .. level-1 in the canonical direction of the edge's four pool indices, the
@@ -29,4 +30,5 @@ struct BoundaryVertices {
 // boundary uses the quad's vertex where their normals agree (a crease keeps its own vertex).
 void appendBezierTriangles(const Document& doc, int level, TriangleMesh& mesh, const BoundaryVertices* quads = nullptr);
 
+}  // namespace mesh
 }  // namespace pw

@@ -4,6 +4,7 @@
 #include "core/gpu/patch_math.h"
 
 namespace pw {
+inline namespace model {
 
 namespace {
 constexpr std::array<std::string_view, 3> kBasisNames{"bezier", "bspline", "catmull-rom"};
@@ -67,4 +68,5 @@ BasisWeights basisWeights(Basis basis, double tension, double t) {
     return w1;
 }
 
+}  // namespace model
 }  // namespace pw

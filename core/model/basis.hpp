@@ -7,6 +7,7 @@
 #include "core/base/math_types.hpp"
 
 namespace pw {
+inline namespace model {
 
 enum class Basis { Bezier, BSpline, CatmullRom };
 
@@ -34,4 +35,5 @@ BasisWeights bernsteinWeights(double t, double s);
 // Weights for `basis`: Bernstein (from t, 1-t) for Bézier, the matrix form otherwise.
 BasisWeights basisWeights(Basis basis, double tension, double t);
 
+}  // namespace model
 }  // namespace pw

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 namespace pw {
+inline namespace model {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -157,4 +158,5 @@ std::optional<glm::dvec2> projectToPixel(const ViewMatrices& vm, const glm::dvec
     return glm::dvec2((x * 0.5 + 0.5) * width, (y * 0.5 + 0.5) * height);
 }
 
+}  // namespace model
 }  // namespace pw

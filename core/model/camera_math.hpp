@@ -13,6 +13,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace model {
 
 struct ViewMatrices {
     glm::mat4 view{1.0f};
@@ -49,4 +50,5 @@ Camera frameTightly(Camera cam, const std::vector<glm::dvec3>& points, double as
 // nullopt when the point is behind the camera.
 std::optional<glm::dvec2> projectToPixel(const ViewMatrices& vm, const glm::dvec3& p, int width, int height);
 
+}  // namespace model
 }  // namespace pw

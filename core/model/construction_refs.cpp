@@ -7,6 +7,7 @@
 #include "core/base/errors.hpp"
 
 namespace pw {
+inline namespace model {
 
 namespace {
 constexpr std::array<std::string_view, 8> kKindNames{"revolve", "extrude", "loft", "edge-surface", "sweep1", "sweep2", "network", "blend"};
@@ -123,4 +124,5 @@ void dropCurveFromConstructions(Document& doc, uint32_t cv, std::vector<std::str
         });
 }
 
+}  // namespace model
 }  // namespace pw

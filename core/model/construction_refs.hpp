@@ -11,6 +11,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace model {
 
 // "c3" for a curve, "2:u0" for a patch edge.
 std::string curveInputName(const CurveInput& in);
@@ -37,4 +38,5 @@ void bakeConstruction(Document& doc, size_t k);
 void dropPatchFromConstructions(Document& doc, uint32_t p, std::vector<std::string>* baked = nullptr);
 void dropCurveFromConstructions(Document& doc, uint32_t c, std::vector<std::string>* baked = nullptr);
 
+}  // namespace model
 }  // namespace pw

@@ -11,6 +11,7 @@
 #include <string>
 
 namespace pw {
+inline namespace model {
 
 // The shaders receive these enums as the named constants of core/gpu/patch_math.h.
 static_assert(uint32_t(Spacing::Equal) == gpu::kSpacingEqual && uint32_t(Spacing::FractionalOdd) == gpu::kSpacingFractionalOdd &&
@@ -224,4 +225,5 @@ std::vector<uint32_t> withCurveHandles(const Document& doc, std::vector<uint32_t
     return points;
 }
 
+}  // namespace model
 }  // namespace pw

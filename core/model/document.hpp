@@ -13,6 +13,7 @@
 #include "core/model/basis.hpp"
 
 namespace pw {
+inline namespace model {
 
 // Edges of a 4x4 window, numbered like the quad domain's outer levels (DESIGN §3):
 // U0 = column j=0 (u=0), V0 = row i=0 (v=0), U1 = column j=3 (u=1), V1 = row i=3 (v=1).
@@ -438,4 +439,5 @@ Bounds computeBounds(const std::vector<Vec3>& points);
 // The model's size for relative tolerances: the bounding-box diagonal, at least 1e-12.
 double modelSize(const Document& doc);
 
+}  // namespace model
 }  // namespace pw

@@ -1,6 +1,7 @@
 #include "core/model/document_merge.hpp"
 
 namespace pw {
+inline namespace model {
 
 namespace {
 
@@ -55,4 +56,5 @@ MergedRange mergeDocument(Document& into, const Document& from) {
     return r;
 }
 
+}  // namespace model
 }  // namespace pw

@@ -8,6 +8,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace model {
 
 // Where the merged content landed in the target: [first, first + count) of each list.
 struct MergedRange {
@@ -23,4 +24,5 @@ struct MergedRange {
 // renumbered; `into`'s settings, camera and name are kept). Returns where they went.
 MergedRange mergeDocument(Document& into, const Document& from);
 
+}  // namespace model
 }  // namespace pw

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 namespace pw {
+inline namespace model {
 
 namespace {
 
@@ -70,4 +71,5 @@ void EditHistory::clear() {
     savedCursor_ = 0;
 }
 
+}  // namespace model
 }  // namespace pw

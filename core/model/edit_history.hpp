@@ -12,6 +12,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace model {
 
 class EditHistory {
 public:
@@ -58,4 +59,5 @@ private:
     size_t maxSteps_;
 };
 
+}  // namespace model
 }  // namespace pw

@@ -9,6 +9,7 @@
 #include "core/base/file_io.hpp"
 
 namespace pw {
+inline namespace model {
 
 namespace {
 constexpr uint32_t kMaxSide = 8192;
@@ -74,4 +75,5 @@ HeightMap heightMapFromValues(uint32_t width, uint32_t height, const std::vector
     return m;
 }
 
+}  // namespace model
 }  // namespace pw

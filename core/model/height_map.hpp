@@ -11,6 +11,7 @@
 #include <vector>
 
 namespace pw {
+inline namespace model {
 
 struct HeightMap {
     uint32_t width = 0, height = 0;
@@ -30,4 +31,5 @@ HeightMap loadHeightMap(const std::filesystem::path& path);
 // An in-memory map (tests, generated terrain): width x height values in 0..1, row-major.
 HeightMap heightMapFromValues(uint32_t width, uint32_t height, const std::vector<double>& values, std::string source = "(generated)");
 
+}  // namespace model
 }  // namespace pw

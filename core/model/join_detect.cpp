@@ -26,6 +26,7 @@
 #include <unordered_map>
 
 namespace pw {
+inline namespace model {
 
 namespace {
 
@@ -205,4 +206,5 @@ void mergeCoincidentPoints(Document& doc, double tolerance) {
     doc.points = std::move(pool);
 }
 
+}  // namespace model
 }  // namespace pw

@@ -8,6 +8,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace model {
 
 // Defaults absorb coordinates rounded to ~4-6 significant decimals (the tea set); see join_detect.cpp.
 struct JoinDetectOptions {
@@ -26,4 +27,5 @@ std::vector<Join> detectJoins(const Document& doc, JoinDetectOptions options = {
 // a point of another weight within it keeps its own entry but moves onto the kept one's position.
 void mergeCoincidentPoints(Document& doc, double tolerance = 0.0);
 
+}  // namespace model
 }  // namespace pw

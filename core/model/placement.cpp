@@ -4,6 +4,7 @@
 #include <vector>
 
 namespace pw {
+inline namespace model {
 
 namespace {
 
@@ -57,4 +58,5 @@ Vec3 moveClearOfExisting(Document& doc, size_t firstNewPoint) {
     return move;
 }
 
+}  // namespace model
 }  // namespace pw

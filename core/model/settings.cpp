@@ -8,6 +8,7 @@
 #include "core/base/limits.hpp"
 
 namespace pw {
+inline namespace model {
 
 namespace {
 
@@ -300,4 +301,5 @@ std::vector<double> parseSettingValues(const Setting& s, const std::vector<std::
     return out;
 }
 
+}  // namespace model
 }  // namespace pw

@@ -16,6 +16,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace model {
 
 enum class SettingKind : uint8_t {
     Number,  // `count` numbers within [min, max] (whole numbers when `integer`)
@@ -58,4 +59,5 @@ std::optional<std::string> settingProblem(const Setting& s, const std::vector<do
 std::vector<std::string> formatSettingValues(const Setting& s, const std::vector<double>& values);
 std::vector<double> parseSettingValues(const Setting& s, const std::vector<std::string>& words);
 
+}  // namespace model
 }  // namespace pw

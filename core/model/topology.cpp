@@ -3,6 +3,7 @@
 #include "core/gpu/patch_math.h"
 
 namespace pw {
+inline namespace model {
 
 int findJoin(const Document& doc, uint32_t p, Edge e) {
     for (size_t i = 0; i < doc.joins.size(); ++i) {
@@ -90,4 +91,5 @@ bool edgesPairReversed(const Document& doc, uint32_t a, Edge ea, uint32_t b, Edg
     return crossed < straight;
 }
 
+}  // namespace model
 }  // namespace pw

@@ -11,6 +11,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace model {
 
 // Index of a join that uses edge e of patch p (of triangle p for a triangle edge), or -1.
 int findJoin(const Document& doc, uint32_t p, Edge e);
@@ -53,4 +54,5 @@ int edgeLoopSign(Edge e);
 // The nearer way to pair the end points of a's edge ea with b's edge eb (true: k with 3 - k).
 bool edgesPairReversed(const Document& doc, uint32_t a, Edge ea, uint32_t b, Edge eb);
 
+}  // namespace model
 }  // namespace pw

@@ -19,6 +19,7 @@
 #include "core/solve/sheared_joins.hpp"
 
 namespace pw {
+inline namespace ops {
 
 namespace {
 
@@ -291,4 +292,5 @@ std::string closeCornersOf(Document& doc, size_t j) {
     return notes;
 }
 
+}  // namespace ops
 }  // namespace pw

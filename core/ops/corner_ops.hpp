@@ -18,6 +18,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace ops {
 
 // The patches around one point, in order, and the joins between consecutive ones (joins[i] is
 // between patches[i] and patches[i + 1], cyclically).
@@ -53,4 +54,5 @@ std::string closeCornersOf(Document& doc, size_t j);
 // are singular unless the ratios multiply to 1). nullopt at an end with no such seam.
 std::array<std::optional<double>, 2> alphaAtEnds(const Document& doc, size_t j);
 
+}  // namespace ops
 }  // namespace pw

@@ -17,6 +17,7 @@
 #include "core/ops/triangle_joins.hpp"
 
 namespace pw {
+inline namespace ops {
 
 namespace {
 
@@ -302,4 +303,5 @@ std::string fillHoleWithTriangle(Document& doc, const std::vector<HoleSide>& sid
            (joined == 1 ? "" : "s") + ", through the points of its " + std::to_string(3 - joined) + " curve" + (joined == 2 ? "" : "s");
 }
 
+}  // namespace ops
 }  // namespace pw

@@ -16,6 +16,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace ops {
 
 struct HoleSide {
     std::vector<std::pair<uint32_t, Edge>> edges;  // one edge, or two that meet end to end
@@ -37,4 +38,5 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides);
 // a side has two edges.
 std::string fillHoleWithTriangle(Document& doc, const std::vector<HoleSide>& sides);
 
+}  // namespace ops
 }  // namespace pw

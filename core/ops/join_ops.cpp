@@ -18,6 +18,7 @@
 #include "core/solve/sheared_joins.hpp"
 
 namespace pw {
+inline namespace ops {
 
 namespace {
 
@@ -302,4 +303,5 @@ void unjoin(Document& doc, size_t j) {
     }
 }
 
+}  // namespace ops
 }  // namespace pw

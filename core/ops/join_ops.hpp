@@ -11,6 +11,7 @@
 #include "core/model/topology.hpp"
 
 namespace pw {
+inline namespace ops {
 
 // How a join of edge ea of patch a to edge eb of patch b goes (Rhino's Join and MatchSrf, with
 // the orientation chosen so the patches end up on opposite sides of the seam, never folded):
@@ -57,4 +58,5 @@ void remeasureJoin(Document& doc, size_t j);
 // be moved apart.
 void unjoin(Document& doc, size_t j);
 
+}  // namespace ops
 }  // namespace pw

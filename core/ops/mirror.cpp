@@ -11,6 +11,7 @@
 #include "core/model/topology.hpp"
 
 namespace pw {
+inline namespace ops {
 
 MirrorResult mirrorItems(Document& doc, const std::vector<uint32_t>& selected, int axis, double planeAt) {
     if (axis < 0 || axis > 2) throw EditError("mirror: the axis must be X, Y or Z");
@@ -94,4 +95,5 @@ MirrorResult mirrorItems(Document& doc, const std::vector<uint32_t>& selected, i
     return r;
 }
 
+}  // namespace ops
 }  // namespace pw

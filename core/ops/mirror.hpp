@@ -12,6 +12,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace ops {
 
 struct MirrorResult {
     std::vector<uint32_t> patches, triangles, curves;  // the new items
@@ -23,4 +24,5 @@ struct MirrorResult {
 // `planeAt` the plane's coordinate on that axis. Throws EditError when no whole item is selected.
 MirrorResult mirrorItems(Document& doc, const std::vector<uint32_t>& selected, int axis, double planeAt);
 
+}  // namespace ops
 }  // namespace pw

@@ -12,6 +12,7 @@
 #include "core/ops/patch_ops.hpp"
 
 namespace pw {
+inline namespace ops {
 
 namespace {
 
@@ -450,4 +451,5 @@ uint32_t convertPatchesToNet(Document& doc, std::vector<uint32_t> patches, doubl
     return uint32_t(doc.surfaces.size() - 1);
 }
 
+}  // namespace ops
 }  // namespace pw

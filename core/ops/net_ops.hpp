@@ -15,6 +15,7 @@
 #include "core/model/topology.hpp"
 
 namespace pw {
+inline namespace ops {
 
 enum class NetShape { Flat, Tube, Torus };
 
@@ -63,4 +64,5 @@ std::vector<uint32_t> convertNetToPatches(Document& doc, uint32_t s);
 // that is C2 across every seam within `tolerance` × model size. Returns the new surface index.
 uint32_t convertPatchesToNet(Document& doc, std::vector<uint32_t> patches, double tolerance = 1e-9);
 
+}  // namespace ops
 }  // namespace pw

@@ -5,6 +5,7 @@
 #include "core/ops/patch_ops.hpp"
 
 namespace pw {
+inline namespace ops {
 
 double positionFlux(const Document& doc, int n) {
     const Bounds b = computeBounds(doc.points);
@@ -45,4 +46,5 @@ bool orientOutward(Document& doc) {
     return true;
 }
 
+}  // namespace ops
 }  // namespace pw

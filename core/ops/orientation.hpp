@@ -6,6 +6,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace ops {
 
 // ∮ (p - c)·n dA over every window (c = bounding-box centre), by the midpoint rule on an
 // n x n grid per window.
@@ -20,4 +21,5 @@ double openBoundaryShare(const Document& doc);
 // as they are.
 bool orientOutward(Document& doc);
 
+}  // namespace ops
 }  // namespace pw

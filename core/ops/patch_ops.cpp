@@ -11,6 +11,7 @@
 #include "core/solve/constraint_solver.hpp"
 
 namespace pw {
+inline namespace ops {
 
 namespace {
 
@@ -244,4 +245,5 @@ void compactPool(Document& doc) {
     forEachPointIndex(doc, [&](uint32_t& i) { i = remap[i]; });
 }
 
+}  // namespace ops
 }  // namespace pw

@@ -15,6 +15,7 @@
 #include "core/model/topology.hpp"
 
 namespace pw {
+inline namespace ops {
 
 // A flat 1x1 Bézier patch of side `size` centred at `center`, in the ground plane (z = const for
 // z-up documents, y = const otherwise). Returns the new patch index.
@@ -66,4 +67,5 @@ uint32_t addPoint(Document& doc, const Vec3& v, double weight = 1.0);
 Edge oppositeEdge(Edge e);
 int flippedSlot(int s);
 
+}  // namespace ops
 }  // namespace pw

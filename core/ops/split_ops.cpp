@@ -15,6 +15,7 @@
 #include "core/solve/sheared_joins.hpp"
 
 namespace pw {
+inline namespace ops {
 
 namespace {
 
@@ -204,4 +205,5 @@ std::pair<uint32_t, uint32_t> splitPatch(Document& doc, uint32_t p, bool alongU,
     return {p, made.front().second};
 }
 
+}  // namespace ops
 }  // namespace pw

@@ -12,6 +12,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace ops {
 
 // One patch the cut goes through: split along u (the cut is the line u = t) or along v.
 struct RingCut {
@@ -36,4 +37,5 @@ std::vector<std::pair<RingCut, uint32_t>> splitRing(Document& doc, uint32_t p, b
 // splitRing, returning the two halves of p.
 std::pair<uint32_t, uint32_t> splitPatch(Document& doc, uint32_t p, bool alongU, double t);
 
+}  // namespace ops
 }  // namespace pw

@@ -15,6 +15,7 @@
 #include "core/solve/triangle_seams.hpp"
 
 namespace pw {
+inline namespace ops {
 
 namespace {
 
@@ -160,4 +161,5 @@ void remeasureTriangleJoin(Document& doc, size_t j) {
         jn.alpha = fit->alpha, jn.alphaEnd = fit->alphaEnd, jn.shear = fit->shear;
 }
 
+}  // namespace ops
 }  // namespace pw

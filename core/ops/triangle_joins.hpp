@@ -10,6 +10,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace ops {
 
 // Joins side (a, ea) to side (b, eb), at least one of them a triangle's edge (Edge::T0..T2; the
 // index is then a triangle's). The end points pair the nearer way; edges that meet (within 1e-6 of
@@ -29,4 +30,5 @@ void setTriangleJoinContinuity(Document& doc, size_t j, Continuity continuity);
 // patch side moved it onto a half whose rows are shorter).
 void remeasureTriangleJoin(Document& doc, size_t j);
 
+}  // namespace ops
 }  // namespace pw

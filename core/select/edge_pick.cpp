@@ -10,6 +10,7 @@
 #include "core/select/picking.hpp"
 
 namespace pw {
+inline namespace select {
 
 std::vector<Vec3> boundaryCurve(const Document& doc, uint32_t p, Edge e, int n) {
     std::vector<Vec3> out;
@@ -71,4 +72,5 @@ std::optional<PatchEdge> pickBoundaryEdge(const Document& doc, const Camera& cam
 
 std::string patchEdgeName(const PatchEdge& e) { return std::to_string(e.patch) + ":" + std::string(edgeName(e.edge)); }
 
+}  // namespace select
 }  // namespace pw

@@ -12,6 +12,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace select {
 
 struct PatchEdge {
     uint32_t patch = 0;
@@ -33,4 +34,5 @@ std::optional<PatchEdge> pickBoundaryEdge(const Document& doc, const Camera& cam
 // "3:u1", the form the `join` command reads.
 std::string patchEdgeName(const PatchEdge& e);
 
+}  // namespace select
 }  // namespace pw

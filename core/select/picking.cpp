@@ -12,6 +12,7 @@
 #include "core/select/selection.hpp"
 
 namespace pw {
+inline namespace select {
 
 Ray rayThroughPixel(const Camera& cam, double x, double y, int width, int height) {
     const double aspect = double(std::max(width, 1)) / double(std::max(height, 1));
@@ -220,4 +221,5 @@ double niceGridStep(double modelSize) {
     return (m < 1.5 ? 1.0 : m < 3.5 ? 2.0 : m < 7.5 ? 5.0 : 10.0) * e;
 }
 
+}  // namespace select
 }  // namespace pw

@@ -13,6 +13,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace select {
 
 struct Ray {
     glm::dvec3 origin{0.0};
@@ -87,4 +88,5 @@ glm::dvec3 snapToGrid(const glm::dvec3& v, double step);
 // A "nice" grid step (1, 2 or 5 × 10^k) about a tenth of the model size.
 double niceGridStep(double modelSize);
 
+}  // namespace select
 }  // namespace pw

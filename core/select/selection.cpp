@@ -8,6 +8,7 @@
 #include "core/model/camera_math.hpp"
 
 namespace pw {
+inline namespace select {
 
 bool Selection::contains(uint32_t p) const { return std::binary_search(points.begin(), points.end(), p); }
 
@@ -127,4 +128,5 @@ void panCamera(Camera& cam, double dxPx, double dyPx, int viewportHeightPx) {
 
 void zoomCamera(Camera& cam, double steps, double factor) { cam.distance = std::clamp(cam.distance * std::pow(factor, steps), 1e-6, 1e9); }
 
+}  // namespace select
 }  // namespace pw

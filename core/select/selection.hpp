@@ -10,6 +10,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace select {
 
 struct Selection {
     std::vector<uint32_t> points;  // sorted, unique pool indices
@@ -64,4 +65,5 @@ void zoomCamera(Camera& cam, double steps, double factor = 0.85);
 // World-space right and up vectors of the view.
 void cameraAxes(const Camera& cam, Vec3& right, Vec3& up, Vec3& forward);
 
+}  // namespace select
 }  // namespace pw

@@ -5,6 +5,7 @@
 #include <numeric>
 
 namespace pw {
+inline namespace select {
 
 namespace {
 
@@ -137,4 +138,5 @@ std::vector<uint32_t> revealItems(Document& doc) {
     return sortedUnique(std::move(out));
 }
 
+}  // namespace select
 }  // namespace pw

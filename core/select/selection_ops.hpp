@@ -11,6 +11,7 @@
 #include "core/select/selection.hpp"
 
 namespace pw {
+inline namespace select {
 
 bool anyHidden(const Document& doc);
 // The document without its hidden items (joins between shown patches kept, renumbered); the point
@@ -32,4 +33,5 @@ size_t hideItems(Document& doc, const Selection& sel, const std::vector<uint32_t
 // Shows every hidden item; returns the points of the items revealed (Blender selects them).
 std::vector<uint32_t> revealItems(Document& doc);
 
+}  // namespace select
 }  // namespace pw

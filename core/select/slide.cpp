@@ -3,6 +3,7 @@
 #include <cmath>
 
 namespace pw {
+inline namespace select {
 
 std::optional<SlideAxis> parseSlideAxis(std::string_view word) {
     if (word == "u" || word == "U") return SlideAxis::U;
@@ -56,4 +57,5 @@ std::optional<Vec3> slideDirection(const Document& doc, uint32_t i, SlideAxis ax
     return d / len;
 }
 
+}  // namespace select
 }  // namespace pw

@@ -10,6 +10,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace select {
 
 enum class SlideAxis : uint8_t { U, V, N };
 std::optional<SlideAxis> parseSlideAxis(std::string_view word);  // "u", "v", "n" (either case)
@@ -20,4 +21,5 @@ std::optional<SlideAxis> parseSlideAxis(std::string_view word);  // "u", "v", "n
 // or where the polygon collapses there.
 std::optional<Vec3> slideDirection(const Document& doc, uint32_t i, SlideAxis axis);
 
+}  // namespace select
 }  // namespace pw

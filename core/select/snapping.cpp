@@ -13,6 +13,7 @@
 #include "core/select/selection_ops.hpp"
 
 namespace pw {
+inline namespace select {
 
 namespace {
 
@@ -106,4 +107,5 @@ std::optional<Vec3> snapPoint(const Document& doc, const std::vector<bool>& move
     return std::nullopt;
 }
 
+}  // namespace select
 }  // namespace pw

@@ -10,6 +10,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace select {
 
 enum class SnapTarget { Grid, Points, Edges, Surfaces };
 std::string_view snapTargetName(SnapTarget t);  // "grid", "points", "edges", "surfaces"
@@ -25,4 +26,5 @@ std::optional<SnapTarget> parseSnapTarget(std::string_view name);
 std::optional<Vec3> snapPoint(const Document& doc, const std::vector<bool>& moved, SnapTarget target, const Camera& cam, int width,
                               int height, double x, double y, double radiusPx = 12.0);
 
+}  // namespace select
 }  // namespace pw

@@ -9,6 +9,7 @@
 #include <queue>
 
 namespace pw {
+inline namespace select {
 
 namespace {
 
@@ -130,4 +131,5 @@ std::string softDescription(const SoftSelection& s) {
     return buf;
 }
 
+}  // namespace select
 }  // namespace pw

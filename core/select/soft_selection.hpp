@@ -15,6 +15,7 @@
 #include "core/select/symmetry.hpp"
 
 namespace pw {
+inline namespace select {
 
 enum class Falloff : uint8_t { Smooth, Linear, Sharp, Constant };
 std::string_view falloffName(Falloff f);  // "smooth", "linear", "sharp", "constant"
@@ -43,4 +44,5 @@ SoftWeights softWeights(const Document& doc, const std::vector<uint32_t>& moved,
 // "soft 0.5 smooth"
 std::string softDescription(const SoftSelection& s);
 
+}  // namespace select
 }  // namespace pw

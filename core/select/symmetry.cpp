@@ -7,6 +7,7 @@
 #include "core/select/picking.hpp"
 
 namespace pw {
+inline namespace select {
 
 std::string symmetryName(const Symmetry& s) { return s.on() ? std::string(1, char('X' + s.axis)) : "off"; }
 
@@ -93,4 +94,5 @@ void applySymmetry(std::vector<Vec3>& points, const SymmetryPairs& pairs, const 
     for (const auto& [p, q] : pairs.partners) points[q] = reflect(points[p], s);
 }
 
+}  // namespace select
 }  // namespace pw

@@ -14,6 +14,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace select {
 
 struct Symmetry {
     int axis = -1;  // -1 off, 0..2 the plane x, y or z = offset
@@ -43,4 +44,5 @@ std::optional<std::pair<uint32_t, Edge>> mirrorEdge(const Document& doc, uint32_
 // partner at its point's mirror image.
 void applySymmetry(std::vector<Vec3>& points, const SymmetryPairs& pairs, const Symmetry& s);
 
+}  // namespace select
 }  // namespace pw

@@ -18,6 +18,7 @@
 #include "core/solve/triangle_seams.hpp"
 
 namespace pw {
+inline namespace solve {
 
 namespace solver_detail {
 
@@ -518,4 +519,5 @@ JoinResiduals joinResiduals(const Document& doc) {
     return out;
 }
 
+}  // namespace solve
 }  // namespace pw

@@ -16,6 +16,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace solve {
 
 struct SolverOptions {
     double boundaryWeight = 1e4;  // weight of points on a joined boundary (tangent drags mirror to 0.9996)
@@ -88,4 +89,5 @@ struct JoinResiduals {
 };
 JoinResiduals joinResiduals(const Document& doc);
 
+}  // namespace solve
 }  // namespace pw

@@ -13,6 +13,7 @@
 #include "core/solve/triangle_seams.hpp"
 
 namespace pw {
+inline namespace solve {
 
 namespace {
 
@@ -208,4 +209,5 @@ std::vector<JoinContinuity> continuityReport(const Document& doc, int samples, c
     return out;
 }
 
+}  // namespace solve
 }  // namespace pw

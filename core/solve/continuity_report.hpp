@@ -9,6 +9,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace solve {
 
 struct JoinContinuity {
     size_t join = 0;
@@ -31,4 +32,5 @@ uint8_t toleranceFailures(const JoinContinuity& c, Continuity continuity, const 
 // Samples each seam at `samples`+1 points; `only` (when not empty) limits the report to those joins.
 std::vector<JoinContinuity> continuityReport(const Document& doc, int samples = 32, const std::vector<size_t>& only = {});
 
+}  // namespace solve
 }  // namespace pw

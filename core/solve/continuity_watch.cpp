@@ -5,6 +5,7 @@
 #include <algorithm>
 
 namespace pw {
+inline namespace solve {
 
 std::vector<size_t> joinsTouching(const Document& doc, const std::vector<uint32_t>& points) {
     std::vector<char> hit(doc.points.size(), 0);
@@ -46,4 +47,5 @@ size_t ContinuityWatch::outOfTolerance() const {
     return size_t(std::count_if(failures_.begin(), failures_.end(), [](uint8_t f) { return f != 0; }));
 }
 
+}  // namespace solve
 }  // namespace pw

@@ -11,6 +11,7 @@
 #include "core/solve/continuity_report.hpp"
 
 namespace pw {
+inline namespace solve {
 
 class ContinuityWatch {
 public:
@@ -38,4 +39,5 @@ private:
 // Joins whose patches hold any of `points` (pool indices), in join order.
 std::vector<size_t> joinsTouching(const Document& doc, const std::vector<uint32_t>& points);
 
+}  // namespace solve
 }  // namespace pw

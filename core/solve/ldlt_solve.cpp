@@ -2,7 +2,9 @@
 
 #include <vector>
 
-namespace pw::solver_detail {
+namespace pw {
+inline namespace solve {
+namespace solver_detail {
 
 namespace {
 
@@ -67,4 +69,6 @@ Eigen::MatrixXd solveLdltColumns(const SparseLdlt& f, const Eigen::MatrixXd& b) 
     return x;
 }
 
-}  // namespace pw::solver_detail
+}  // namespace solver_detail
+}  // namespace solve
+}  // namespace pw

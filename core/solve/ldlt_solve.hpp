@@ -8,7 +8,9 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
-namespace pw::solver_detail {
+namespace pw {
+inline namespace solve {
+namespace solver_detail {
 
 using SparseLdlt = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>;
 
@@ -16,4 +18,6 @@ using SparseLdlt = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>;
 // result as f.solve(b) up to rounding.
 Eigen::MatrixXd solveLdltColumns(const SparseLdlt& f, const Eigen::MatrixXd& b);
 
-}  // namespace pw::solver_detail
+}  // namespace solver_detail
+}  // namespace solve
+}  // namespace pw

@@ -5,6 +5,7 @@
 #include "core/solve/solver_constraints.hpp"
 
 namespace pw {
+inline namespace solve {
 
 double shearWeight(int i, int j) {
     static constexpr double kC2[3] = {1, 2, 1}, kC4[5] = {1, 4, 6, 4, 1};
@@ -63,4 +64,5 @@ std::optional<ShearFit> fitShear(const Document& doc, const Join& join) {
     return fit;
 }
 
+}  // namespace solve
 }  // namespace pw

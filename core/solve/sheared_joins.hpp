@@ -14,6 +14,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace solve {
 
 // True when the join leans along its seam (any shear coefficient non-zero) or its α varies
 // (Join::alphaEnd): its rows are then the degree-4 identity's
@@ -43,4 +44,5 @@ struct ShearFit {
 };
 std::optional<ShearFit> fitShear(const Document& doc, const Join& join);
 
+}  // namespace solve
 }  // namespace pw

@@ -9,7 +9,9 @@
 #include "core/model/document.hpp"
 #include "core/solve/constraint_solver.hpp"
 
-namespace pw::solver_detail {
+namespace pw {
+inline namespace solve {
+namespace solver_detail {
 
 // One scalar constraint Σ coef·p[idx] = 0, applied identically to x, y and z.
 struct ConstraintRow {
@@ -44,4 +46,6 @@ std::vector<ConstraintRow> buildConstraintRows(const Document& doc);
 // Points that lie on a joined edge (boundary points), as a flag per pool entry.
 std::vector<char> joinedBoundaryPoints(const Document& doc);
 
-}  // namespace pw::solver_detail
+}  // namespace solver_detail
+}  // namespace solve
+}  // namespace pw

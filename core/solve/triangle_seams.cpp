@@ -8,6 +8,7 @@
 #include "core/eval/bezier_triangle.hpp"
 
 namespace pw {
+inline namespace solve {
 
 namespace {
 
@@ -230,4 +231,5 @@ SeamPoint measureTriangleSeam(const Document& doc, const Join& join, double t) {
     return s;
 }
 
+}  // namespace solve
 }  // namespace pw

@@ -21,6 +21,7 @@
 #include "core/solve/solver_constraints.hpp"
 
 namespace pw {
+inline namespace solve {
 
 // A combination Σ coef·p[idx] of pool points.
 using PointCombination = std::vector<std::pair<uint32_t, double>>;
@@ -60,4 +61,5 @@ struct SeamPoint {
 };
 SeamPoint measureTriangleSeam(const Document& doc, const Join& join, double t);
 
+}  // namespace solve
 }  // namespace pw

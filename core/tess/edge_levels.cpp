@@ -9,6 +9,7 @@
 #include "core/gpu/patch_math.h"
 
 namespace pw {
+inline namespace tess {
 
 namespace {
 
@@ -63,4 +64,5 @@ std::vector<WindowLevels> resolveEdgeLevels(const Document& doc, const std::vect
     return out;
 }
 
+}  // namespace tess
 }  // namespace pw

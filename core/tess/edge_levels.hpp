@@ -13,6 +13,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace tess {
 
 struct WindowLevels {
     // Per outer level slot (quads: u0, v0, u1, v1; triangles: edges 0, 1, 2): when bit e of
@@ -31,4 +32,5 @@ struct WindowLevels {
 // spline windows' edges are their own.
 std::vector<WindowLevels> resolveEdgeLevels(const Document& doc, const std::vector<PatchInstance>& windows);
 
+}  // namespace tess
 }  // namespace pw

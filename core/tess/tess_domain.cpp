@@ -8,6 +8,7 @@
 #include "core/gpu/patch_math.h"
 
 namespace pw {
+inline namespace tess {
 
 namespace {
 constexpr std::array<std::string_view, 3> kDomainNames{"quad", "tri", "isoline"};
@@ -181,4 +182,5 @@ DomainLevels withUniformLevel(const DomainLevels& used, float level) {
     return out;
 }
 
+}  // namespace tess
 }  // namespace pw

@@ -13,6 +13,7 @@
 #include "core/model/document.hpp"
 
 namespace pw {
+inline namespace tess {
 
 enum class DomainKind : uint8_t { Quad, Triangle, Isoline };
 std::string_view domainName(DomainKind k);                     // "quad", "tri", "isoline"
@@ -91,4 +92,5 @@ struct DomainCounts {
 // it is applied as the control shader does).
 DomainCounts expectedDomainCounts(DomainKind kind, const DomainLevels& levels, Spacing spacing, float maxLevel = 64.0f);
 
+}  // namespace tess
 }  // namespace pw

@@ -6,7 +6,8 @@
 #include "core/gpu/patch_math.h"
 #include "core/tess/tess_domain.hpp"
 
-namespace pw::render {
+namespace pw {
+inline namespace tess {
 
 int roundedSegments(float f, Spacing spacing) {
     // The control shader's rounding, then the tessellator's (core/gpu/patch_math.h, core/tess/tess_domain.hpp).
@@ -53,4 +54,5 @@ uint32_t patchesPerDraw(int maxLevel, uint32_t vertexBudget) {
     return std::max<uint32_t>(1u, vertexBudget / uint32_t((l + 2) * (l + 2)));
 }
 
-}  // namespace pw::render
+}  // namespace tess
+}  // namespace pw

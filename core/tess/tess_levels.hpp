@@ -6,7 +6,8 @@
 
 #include "core/model/document.hpp"
 
-namespace pw::render {
+namespace pw {
+inline namespace tess {
 
 // Segments on an edge with requested level f: equal ceil(f) in [1,64]; fractional_odd next odd >= f
 // in [1,63]; fractional_even next even >= f in [2,64]; pow2 next power of two in [1,64].
@@ -37,4 +38,5 @@ inline constexpr uint32_t kCpuDrawVertexBudget = 4096;
 // vertexBudget 0 = unlimited (one draw per basis run).
 uint32_t patchesPerDraw(int maxLevel, uint32_t vertexBudget = kCpuDrawVertexBudget);
 
-}  // namespace pw::render
+}  // namespace tess
+}  // namespace pw

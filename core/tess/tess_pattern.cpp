@@ -7,6 +7,7 @@
 #include <utility>
 
 namespace pw {
+inline namespace tess {
 
 std::vector<std::array<float, 2>> TessPattern::distinctPoints() const {
     std::vector<std::array<float, 2>> v = uv;
@@ -117,4 +118,5 @@ PatternDiff comparePatterns(const TessPattern& a, const TessPattern& b, float to
     return d;
 }
 
+}  // namespace tess
 }  // namespace pw

@@ -14,6 +14,7 @@
 #include "core/tess/tess_domain.hpp"
 
 namespace pw {
+inline namespace tess {
 
 struct TessPattern {
     DomainKind kind = DomainKind::Quad;
@@ -48,4 +49,5 @@ struct PatternDiff {
 };
 PatternDiff comparePatterns(const TessPattern& a, const TessPattern& b, float tolerance = 1e-5f);
 
+}  // namespace tess
 }  // namespace pw

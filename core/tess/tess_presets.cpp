@@ -9,6 +9,7 @@
 #include "core/model/camera_math.hpp"
 
 namespace pw {
+inline namespace tess {
 
 namespace {
 
@@ -141,4 +142,5 @@ void applyNotesTerrainFormula(TessSettings& t) {
     t.heightDetail = false;
 }
 
+}  // namespace tess
 }  // namespace pw

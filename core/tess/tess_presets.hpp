@@ -11,6 +11,7 @@
 #include "core/tess/tess_domain.hpp"
 
 namespace pw {
+inline namespace tess {
 
 struct TessPreset {
     std::string name;   // id for the command line: "quad-1_2_3_4-4_4", "tri-4.9_4.5_4.1-4.4-fractional_odd"
@@ -46,4 +47,5 @@ void applyNotesDistanceFormula(TessSettings& t, bool fromCentre = true);
 // 64 up to d = 176.25, then down to 16 at 200), fractional_even; the height map moves the vertices only.
 void applyNotesTerrainFormula(TessSettings& t);
 
+}  // namespace tess
 }  // namespace pw

@@ -16,6 +16,7 @@
 #include "shaders/spirv.hpp"
 
 namespace pw::render {
+inline namespace domain {
 
 namespace {
 
@@ -107,4 +108,5 @@ TessPattern DomainView::capture(const DomainPane& pane) {
     }
 }
 
+}  // namespace domain
 }  // namespace pw::render

@@ -6,6 +6,7 @@
 #include <utility>
 
 namespace pw::render {
+inline namespace domain {
 
 std::string formatLevel(float level) {
     if (!std::isfinite(level)) return "nan";
@@ -175,4 +176,5 @@ std::vector<DomainLabel> domainLabels(const DomainViewOptions& o, uint64_t verti
     return out;
 }
 
+}  // namespace domain
 }  // namespace pw::render

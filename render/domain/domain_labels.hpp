@@ -12,6 +12,7 @@
 #include "render/domain/domain_view.hpp"
 
 namespace pw::render {
+inline namespace domain {
 
 struct DomainLabel {
     enum class Role { Edge, Caption, Title };
@@ -39,4 +40,5 @@ void titleByPartitioning(std::vector<DomainViewOptions>& panes);
 // The margin a domain view needs around the domain for its labels at this text size.
 float domainLabelMargin(float textPixels);
 
+}  // namespace domain
 }  // namespace pw::render

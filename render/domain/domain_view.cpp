@@ -10,6 +10,7 @@
 #include "shaders/spirv.hpp"
 
 namespace pw::render {
+inline namespace domain {
 
 namespace {
 
@@ -197,4 +198,5 @@ std::vector<DomainStats> countDomain(Device& dev, DomainKind kind, Spacing spaci
     return view.draw(target, panes, true);
 }
 
+}  // namespace domain
 }  // namespace pw::render

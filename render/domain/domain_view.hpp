@@ -22,6 +22,7 @@ struct DomainPush;
 }
 
 namespace pw::render {
+inline namespace domain {
 
 // The pattern one pane shows: a domain, its levels and partitioning.
 struct DomainPane {
@@ -117,4 +118,5 @@ private:
 // target, measured with its own pipeline-statistics query.
 std::vector<DomainStats> countDomain(Device& dev, DomainKind kind, Spacing spacing, const std::vector<DomainLevels>& levels);
 
+}  // namespace domain
 }  // namespace pw::render

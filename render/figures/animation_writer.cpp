@@ -18,6 +18,7 @@
 extern char** environ;
 
 namespace pw::render {
+inline namespace figures {
 
 std::optional<AnimationFormat> animationFormatFor(const std::filesystem::path& path) {
     const std::string ext = lowerExtension(path);
@@ -178,4 +179,5 @@ std::string AnimationEncoder::finish() {
     return bytes;
 }
 
+}  // namespace figures
 }  // namespace pw::render

@@ -14,6 +14,7 @@
 #include <vector>
 
 namespace pw::render {
+inline namespace figures {
 
 enum class AnimationFormat { Gif, Mp4, Webm };
 
@@ -43,4 +44,5 @@ private:
     pid_t child_ = -1;
 };
 
+}  // namespace figures
 }  // namespace pw::render

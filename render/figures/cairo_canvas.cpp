@@ -14,6 +14,7 @@
 #include "render/targets/png_writer.hpp"
 
 namespace pw::render {
+inline namespace figures {
 
 std::optional<VectorFormat> vectorFormatFor(const std::string& path) {
     const std::string ext = lowerExtension(path);
@@ -110,4 +111,5 @@ std::string cairoFigure(std::optional<VectorFormat> format, const std::filesyste
     return format ? bytes : encodePng(output, width, height, rgba);
 }
 
+}  // namespace figures
 }  // namespace pw::render

@@ -16,6 +16,7 @@
 typedef struct _cairo cairo_t;  // cairo.h's own declaration: cairo stays private to render/figures
 
 namespace pw::render {
+inline namespace figures {
 
 enum class VectorFormat { Svg, Pdf };
 
@@ -36,4 +37,5 @@ double cairoTextWidth(cairo_t* cr, const std::string& text, double pixels);
 
 void cairoColor(cairo_t* cr, const std::array<uint8_t, 4>& c);
 
+}  // namespace figures
 }  // namespace pw::render

@@ -6,6 +6,7 @@
 #include "render/domain/domain_labels.hpp"
 
 namespace pw::render {
+inline namespace figures {
 
 std::array<uint64_t, 2> shownCounts(const DomainStats& gpu, const DomainPane& pane) {
     const DomainCounts c = expectedDomainCounts(pane.kind, pane.levels, pane.spacing);
@@ -58,4 +59,5 @@ std::vector<DomainStats> renderDomainFigure(DomainView& view, OffscreenTarget& t
     return stats;
 }
 
+}  // namespace figures
 }  // namespace pw::render

@@ -15,6 +15,7 @@
 #include "render/targets/offscreen_target.hpp"
 
 namespace pw::render {
+inline namespace figures {
 
 // The vertices and primitives to show for a pane: the distinct vertices of the pattern (the rules:
 // a GPU may run the evaluation shader more than once for a vertex, NVIDIA's does under fractional
@@ -42,4 +43,5 @@ TextStyle domainLabelStyle(DomainLabel::Role role, float textPixels);
 std::vector<DomainStats> renderDomainFigure(DomainView& view, OffscreenTarget& target, const LabelRaster& labels,
                                             const std::vector<DomainPane>& panes, float textPixels, std::vector<uint8_t>& rgba);
 
+}  // namespace figures
 }  // namespace pw::render

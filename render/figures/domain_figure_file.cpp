@@ -7,6 +7,7 @@
 #include "render/targets/png_writer.hpp"
 
 namespace pw::render {
+inline namespace figures {
 
 DomainFigureFile encodeDomainFigure(Device& dev, const std::filesystem::path& output, uint32_t w, uint32_t h,
                                     const std::vector<DomainPane>& panes, bool msaa) {
@@ -50,4 +51,5 @@ DeviceComparison encodeDeviceComparison(Device& dev, const std::filesystem::path
     return c;
 }
 
+}  // namespace figures
 }  // namespace pw::render

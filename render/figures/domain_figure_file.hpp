@@ -13,6 +13,7 @@
 #include "render/vk/device.hpp"
 
 namespace pw::render {
+inline namespace figures {
 
 struct DomainFigureFile {
     std::string bytes;               // the file's contents
@@ -34,4 +35,5 @@ struct DeviceComparison {
 DeviceComparison encodeDeviceComparison(Device& dev, const std::filesystem::path& output, uint32_t width, uint32_t height,
                                         const DomainPane& pane, const TessPattern& other, const std::string& otherDevice);
 
+}  // namespace figures
 }  // namespace pw::render

@@ -9,6 +9,7 @@
 #include "render/figures/pane_layout.hpp"
 
 namespace pw::render {
+inline namespace figures {
 
 namespace {
 
@@ -103,4 +104,5 @@ std::string patternFigure(std::optional<VectorFormat> format, const std::filesys
     });
 }
 
+}  // namespace figures
 }  // namespace pw::render

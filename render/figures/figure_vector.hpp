@@ -16,6 +16,7 @@
 #include "render/figures/domain_figure.hpp"
 
 namespace pw::render {
+inline namespace figures {
 
 // What one pane of a figure drawn from patterns shows: the primitives a tessellator made
 // (DomainView::capture or a capture file), the vertices and primitives for the caption
@@ -34,4 +35,5 @@ struct PatternPane {
 std::string patternFigure(std::optional<VectorFormat> format, const std::filesystem::path& output, uint32_t width, uint32_t height,
                           const DomainFigureLayout& layout, const std::vector<PatternPane>& panes);
 
+}  // namespace figures
 }  // namespace pw::render

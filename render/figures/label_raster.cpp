@@ -9,6 +9,7 @@
 #include "core/base/embedded_data.hpp"
 
 namespace pw::render {
+inline namespace figures {
 
 struct LabelRaster::Font {
     stbtt_fontinfo info{};
@@ -108,4 +109,5 @@ void LabelRaster::draw(PixelImage image, float x, float y, std::string_view text
     }
 }
 
+}  // namespace figures
 }  // namespace pw::render

@@ -9,6 +9,7 @@
 #include <vector>
 
 namespace pw::render {
+inline namespace figures {
 
 struct TextStyle {
     float pixels = 18.0f;                           // line height in pixels
@@ -49,4 +50,5 @@ void fillRect(PixelImage& img, float x0, float y0, float x1, float y1, const std
 // The code points of UTF-8 text (invalid bytes become U+FFFD).
 std::vector<uint32_t> decodeUtf8(std::string_view text);
 
+}  // namespace figures
 }  // namespace pw::render

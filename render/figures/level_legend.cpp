@@ -7,6 +7,7 @@
 #include "core/gpu/level_colour.h"
 
 namespace pw::render {
+inline namespace figures {
 
 void drawLevelLegend(std::vector<uint8_t>& rgba, uint32_t width, uint32_t height, const std::array<int, 4>& rect,
                      const LabelRaster& labels) {
@@ -41,4 +42,5 @@ void drawLevelLegend(std::vector<uint8_t>& rgba, uint32_t width, uint32_t height
     }
 }
 
+}  // namespace figures
 }  // namespace pw::render

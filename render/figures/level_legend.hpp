@@ -9,9 +9,11 @@
 #include "render/figures/label_raster.hpp"
 
 namespace pw::render {
+inline namespace figures {
 
 // Draws the legend inside `rect` (x, y, width, height in pixels) of the `width` x `height` image.
 void drawLevelLegend(std::vector<uint8_t>& rgba, uint32_t width, uint32_t height, const std::array<int, 4>& rect,
                      const LabelRaster& labels);
 
+}  // namespace figures
 }  // namespace pw::render

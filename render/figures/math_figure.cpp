@@ -7,6 +7,7 @@
 #include "core/model/camera_math.hpp"
 
 namespace pw::render {
+inline namespace figures {
 
 namespace {
 
@@ -67,4 +68,5 @@ void drawMathDiagram(PixelImage image, const MathDiagram& d, const Camera& cam, 
     }
 }
 
+}  // namespace figures
 }  // namespace pw::render

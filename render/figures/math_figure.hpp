@@ -10,10 +10,12 @@
 #include "render/figures/label_raster.hpp"
 
 namespace pw::render {
+inline namespace figures {
 
 // Draws `d` as `cam` sees it in the rectangle `rect` (x, y, width, height) of `image`; `textPixels`
 // is the label size (dots and strokes scale with it).
 void drawMathDiagram(PixelImage image, const MathDiagram& d, const Camera& cam, const std::array<float, 4>& rect, float textPixels,
                      const LabelRaster& labels);
 
+}  // namespace figures
 }  // namespace pw::render

@@ -5,6 +5,7 @@
 #include "render/domain/domain_labels.hpp"
 
 namespace pw::render {
+inline namespace figures {
 
 std::array<uint32_t, 2> paneSize(int count, uint32_t width, uint32_t height) {
     const auto r = pixelRect(splitPanes(std::max(count, 1), {0.0f, 0.0f, float(width), float(height)}).front());
@@ -88,4 +89,5 @@ std::vector<PaneResult> renderModelFigure(Renderer& renderer, OffscreenTarget& t
     return results;
 }
 
+}  // namespace figures
 }  // namespace pw::render

@@ -13,6 +13,7 @@
 #include "render/targets/offscreen_target.hpp"
 
 namespace pw::render {
+inline namespace figures {
 
 struct ModelPane {
     Spacing spacing = Spacing::Equal;
@@ -45,4 +46,5 @@ std::string paneCaption(const TessSettings& ts, uint64_t triangles, bool twoLine
 std::vector<PaneResult> renderModelFigure(Renderer& renderer, OffscreenTarget& target, const LabelRaster& labels, const RenderOptions& base,
                                           const std::vector<ModelPane>& panes, float textPixels, std::vector<uint8_t>& rgba);
 
+}  // namespace figures
 }  // namespace pw::render

@@ -4,6 +4,7 @@
 #include <cmath>
 
 namespace pw::render {
+inline namespace figures {
 
 std::vector<std::array<float, 4>> splitPanes(int count, const std::array<float, 4>& a) {
     std::vector<std::array<float, 4>> out;
@@ -36,4 +37,5 @@ void drawPaneDividers(std::vector<uint8_t>& rgba, uint32_t width, uint32_t heigh
     }
 }
 
+}  // namespace figures
 }  // namespace pw::render

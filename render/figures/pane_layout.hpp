@@ -7,6 +7,7 @@
 #include <vector>
 
 namespace pw::render {
+inline namespace figures {
 
 // The rectangles (x, y, width, height) of `count` panes (1, 2: side by side, 3 or 4: a 2 x 2 grid)
 // filling `area`.
@@ -20,4 +21,5 @@ std::array<int, 4> pixelRect(const std::array<float, 4>& rect);
 // an RGBA8 image of `width` x `height`.
 void drawPaneDividers(std::vector<uint8_t>& rgba, uint32_t width, uint32_t height, const std::vector<std::array<float, 4>>& rects);
 
+}  // namespace figures
 }  // namespace pw::render

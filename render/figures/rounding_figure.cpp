@@ -9,6 +9,7 @@
 #include "render/domain/domain_labels.hpp"
 
 namespace pw::render {
+inline namespace figures {
 
 namespace {
 
@@ -118,4 +119,5 @@ std::string roundingTableFigure(std::optional<VectorFormat> format, const std::f
     });
 }
 
+}  // namespace figures
 }  // namespace pw::render

@@ -14,6 +14,7 @@
 #include "render/figures/cairo_canvas.hpp"
 
 namespace pw::render {
+inline namespace figures {
 
 // "integer [1..64]", "fractional_odd [1, 3, ..., 63]": the row's name (the notes' D3D names) and
 // the segment counts it allows.
@@ -26,4 +27,5 @@ std::vector<std::string> roundingTableLines(const std::vector<RoundingRow>& rows
 std::string roundingTableFigure(std::optional<VectorFormat> format, const std::filesystem::path& output, uint32_t width, uint32_t height,
                                 const std::vector<RoundingRow>& rows);
 
+}  // namespace figures
 }  // namespace pw::render

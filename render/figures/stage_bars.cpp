@@ -4,6 +4,7 @@
 #include <cmath>
 
 namespace pw::render {
+inline namespace figures {
 
 std::vector<StageCount> stageCounts(const FrameStats& s) {
     if (!s.pipelineStatsValid) return {};
@@ -64,4 +65,5 @@ void drawStageBars(PixelImage image, const std::array<float, 4>& rect, const std
     }
 }
 
+}  // namespace figures
 }  // namespace pw::render

@@ -15,6 +15,7 @@
 #include "render/vk/stats.hpp"
 
 namespace pw::render {
+inline namespace figures {
 
 struct StageCount {
     std::string stage;  // "vertex shader", "control shader", "evaluation shader", "primitives"
@@ -47,4 +48,5 @@ StageBarsLayout layoutStageBars(const std::vector<StageCount>& counts, float tex
 void drawStageBars(PixelImage image, const std::array<float, 4>& rect, const std::vector<StageCount>& counts, float textPixels,
                    const LabelRaster& labels);
 
+}  // namespace figures
 }  // namespace pw::render

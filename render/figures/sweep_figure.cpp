@@ -10,6 +10,7 @@
 #include "render/targets/offscreen_target.hpp"
 
 namespace pw::render {
+inline namespace figures {
 
 namespace {
 
@@ -64,4 +65,5 @@ void renderSweep(Device& dev, const SweepSpec& s, const std::function<void(int, 
     }
 }
 
+}  // namespace figures
 }  // namespace pw::render

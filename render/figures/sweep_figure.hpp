@@ -16,6 +16,7 @@
 #include "render/vk/device.hpp"
 
 namespace pw::render {
+inline namespace figures {
 
 struct SweepSpec {
     uint32_t width = 1280, height = 720;
@@ -35,4 +36,5 @@ float sweepLevel(const SweepSpec& s, int k);
 // Renders every frame (width x height RGBA8) and calls `frame(k, rgba)` for each.
 void renderSweep(Device& dev, const SweepSpec& s, const std::function<void(int, const std::vector<uint8_t>&)>& frame);
 
+}  // namespace figures
 }  // namespace pw::render

@@ -9,6 +9,7 @@
 #include "core/tess/tess_levels.hpp"
 
 namespace pw::render {
+inline namespace scene {
 
 namespace {
 
@@ -71,4 +72,5 @@ std::vector<uint8_t> adaptiveLevelBounds(const SurfaceScene& s, const TessSettin
     return out;
 }
 
+}  // namespace scene
 }  // namespace pw::render

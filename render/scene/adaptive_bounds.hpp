@@ -11,6 +11,7 @@
 #include "render/scene/surface_scene.hpp"
 
 namespace pw::render {
+inline namespace scene {
 
 // Per window: an upper bound of its outer and inner segments (1..64), +1 for float differences.
 // With `uniform`: per window, the segments of all six levels when they are certainly one number (the
@@ -18,4 +19,5 @@ namespace pw::render {
 std::vector<uint8_t> adaptiveLevelBounds(const SurfaceScene& s, const TessSettings& tess, const ViewMatrices& vm, float viewportW,
                                          float viewportH, float maxLevel, std::vector<uint8_t>* uniform = nullptr);
 
+}  // namespace scene
 }  // namespace pw::render

@@ -10,6 +10,7 @@
 #include "render/scene/triangle_draws.hpp"
 
 namespace pw::render {
+inline namespace scene {
 
 namespace {
 
@@ -237,4 +238,5 @@ void FramePasses::surface(Frame& f) {
 
 std::span<const FramePasses::Pass> FramePasses::overlays() { return kOverlays; }
 
+}  // namespace scene
 }  // namespace pw::render

@@ -10,6 +10,7 @@
 #include "render/scene/renderer_impl.hpp"
 
 namespace pw::render {
+inline namespace scene {
 
 class FramePasses {
 public:
@@ -35,4 +36,5 @@ public:
     static std::span<const Pass> overlays();  // after the surface, in drawing order
 };
 
+}  // namespace scene
 }  // namespace pw::render

@@ -3,6 +3,7 @@
 #include "render/vk/vk_check.hpp"
 
 namespace pw::render {
+inline namespace scene {
 
 HeightTexture uploadHeightTexture(Device& dev, const HeightMap* map) {
     HeightTexture t;
@@ -35,4 +36,5 @@ HeightTexture uploadHeightTexture(Device& dev, const HeightMap* map) {
     return t;
 }
 
+}  // namespace scene
 }  // namespace pw::render

@@ -7,6 +7,7 @@
 #include "render/vk/buffers.hpp"
 
 namespace pw::render {
+inline namespace scene {
 
 struct HeightTexture {
     Image image;
@@ -16,4 +17,5 @@ struct HeightTexture {
 
 HeightTexture uploadHeightTexture(Device& dev, const HeightMap* map);
 
+}  // namespace scene
 }  // namespace pw::render

@@ -7,6 +7,7 @@
 #include "core/tess/tess_levels.hpp"
 
 namespace pw::render {
+inline namespace scene {
 
 namespace {
 
@@ -135,4 +136,5 @@ uint32_t recordMergedBlocks(VkCommandBuffer cmd, VkPipelineLayout layout, const 
     return draws;
 }
 
+}  // namespace scene
 }  // namespace pw::render

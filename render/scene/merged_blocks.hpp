@@ -25,6 +25,7 @@
 #include "render/scene/surface_scene.hpp"
 
 namespace pw::render {
+inline namespace scene {
 
 // The largest level of a merged patch (Bu n, Bv n).
 constexpr uint32_t kMaxMergedLevel = 16;
@@ -50,4 +51,5 @@ uint32_t recordMergedBlocks(VkCommandBuffer cmd, VkPipelineLayout layout, const 
 // Per window the level uniform settings (no adaptivity) give all six levels, when they agree; 0 otherwise.
 std::vector<uint8_t> settingsWindowLevels(const SurfaceScene& s, const TessSettings& tess);
 
+}  // namespace scene
 }  // namespace pw::render

@@ -10,6 +10,7 @@
 #include "core/eval/rational_eval.hpp"
 
 namespace pw::render {
+inline namespace scene {
 
 std::vector<uint32_t> controlGridLines(const Document& doc) {
     std::set<std::pair<uint32_t, uint32_t>> seen;
@@ -163,4 +164,5 @@ OverlayScene uploadOverlayScene(Device& dev, const Document& doc) {
     return s;
 }
 
+}  // namespace scene
 }  // namespace pw::render

@@ -13,6 +13,7 @@
 #include "render/vk/buffers.hpp"
 
 namespace pw::render {
+inline namespace scene {
 
 struct OverlayScene {
     Buffer gridIndices;  // line pairs into the pool vertex buffer
@@ -38,4 +39,5 @@ std::vector<float> frustumLineVertices(const ViewMatrices& vm, double depth);
 
 OverlayScene uploadOverlayScene(Device& dev, const Document& doc);
 
+}  // namespace scene
 }  // namespace pw::render

@@ -13,6 +13,7 @@
 #include "shaders/spirv.hpp"
 
 namespace pw::render {
+inline namespace scene {
 namespace {
 
 using ModuleMaker = std::function<VkShaderModule(const spirv::Blob&)>;
@@ -350,4 +351,5 @@ void PipelineSet::release() {
     set = PipelineHandles{};
 }
 
+}  // namespace scene
 }  // namespace pw::render

@@ -18,6 +18,7 @@
 #include "render/vk/pipeline_builder.hpp"
 
 namespace pw::render {
+inline namespace scene {
 
 // Tessellation-evaluation variants: one per partitioning (pow2 uses equal spacing).
 enum class SpacingVariant { Equal = 0, FractionalOdd = 1, FractionalEven = 2 };
@@ -114,4 +115,5 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
 // Builds set.tess[1], the displaced surfaces, unless they exist (the first frame with a height map).
 void ensureDisplacedPipelines(Device& dev, PipelineSet& set);
 
+}  // namespace scene
 }  // namespace pw::render

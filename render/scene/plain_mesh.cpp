@@ -1,6 +1,7 @@
 #include "render/scene/plain_mesh.hpp"
 
 namespace pw::render {
+inline namespace scene {
 
 PlainMesh uploadPlainMesh(Device& dev, const TriangleMesh& mesh) {
     PlainMesh m;
@@ -23,4 +24,5 @@ void recordPlainMesh(VkCommandBuffer cmd, const PlainMesh& m) {
     vkCmdDrawIndexed(cmd, m.indexCount, 1, 0, 0, 0);
 }
 
+}  // namespace scene
 }  // namespace pw::render

@@ -7,6 +7,7 @@
 #include "render/vk/buffers.hpp"
 
 namespace pw::render {
+inline namespace scene {
 
 struct PlainMesh {
     Buffer positions, normals, uvs, indices;
@@ -16,4 +17,5 @@ struct PlainMesh {
 PlainMesh uploadPlainMesh(Device& dev, const TriangleMesh& mesh);
 void recordPlainMesh(VkCommandBuffer cmd, const PlainMesh& m);
 
+}  // namespace scene
 }  // namespace pw::render

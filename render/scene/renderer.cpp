@@ -26,6 +26,7 @@
 #include "render/vk/vk_owned.hpp"
 
 namespace pw::render {
+inline namespace scene {
 
 RenderOptions optionsFromDocument(const Document& doc) {
     RenderOptions o;
@@ -370,4 +371,5 @@ void Renderer::warmUp() {
     }
 }
 
+}  // namespace scene
 }  // namespace pw::render

@@ -17,6 +17,7 @@
 #include "render/vk/stats.hpp"
 
 namespace pw::render {
+inline namespace scene {
 
 // Whether windows of a net at one level are drawn several to a patch (render/scene/merged_blocks.hpp):
 // by default on CPU renderers, where every patch costs the same whatever its level.
@@ -118,4 +119,5 @@ private:
     double modelSize_ = 1.0;
 };
 
+}  // namespace scene
 }  // namespace pw::render

@@ -21,6 +21,7 @@
 #include "render/vk/vk_owned.hpp"
 
 namespace pw::render {
+inline namespace scene {
 
 struct Renderer::Impl {
     SurfaceScene scene;
@@ -81,4 +82,5 @@ struct Renderer::FramePlan {
     const std::vector<uint8_t>* bounds() const { return levelBounds.empty() ? nullptr : &levelBounds; }
 };
 
+}  // namespace scene
 }  // namespace pw::render

@@ -10,6 +10,7 @@
 #include "shaders/spirv.hpp"
 
 namespace pw::render {
+inline namespace scene {
 namespace {
 
 // Which settings chose the spacing and control-shader variants.
@@ -267,4 +268,5 @@ std::vector<ListingLine> teachingListing(const ShaderListing& l) {
     return out;
 }
 
+}  // namespace scene
 }  // namespace pw::render

@@ -14,6 +14,7 @@
 #include "core/tess/tess_domain.hpp"
 
 namespace pw::render {
+inline namespace scene {
 
 struct StageUse {
     std::string stage;    // "vertex", "tessellation control", "tessellation evaluation", "geometry", "fragment"
@@ -67,4 +68,5 @@ std::vector<ListingLine> teachingListing(const ShaderListing& l);
 // Every compiled variant's name (for checks and the command line).
 std::vector<std::string> shaderVariantNames();
 
+}  // namespace scene
 }  // namespace pw::render

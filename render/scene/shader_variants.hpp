@@ -6,6 +6,7 @@
 #include "render/scene/pipelines.hpp"
 
 namespace pw::render {
+inline namespace scene {
 
 // Evaluation-shader spacing: pow2 uses equal spacing (its levels are rounded in the control shader).
 inline int spacingVariant(Spacing s) {
@@ -39,4 +40,5 @@ inline VaryingsVariant varyingsVariant(ShadingMode m) {
     }
 }
 
+}  // namespace scene
 }  // namespace pw::render

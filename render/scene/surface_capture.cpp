@@ -18,6 +18,7 @@
 #include "shaders/spirv.hpp"
 
 namespace pw::render {
+inline namespace scene {
 
 namespace {
 
@@ -182,4 +183,5 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
     }
 }
 
+}  // namespace scene
 }  // namespace pw::render

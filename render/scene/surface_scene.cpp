@@ -7,6 +7,7 @@
 #include "core/tess/edge_levels.hpp"
 
 namespace pw::render {
+inline namespace scene {
 
 glm::mat4 basisPushMatrix(Basis basis, double tension) {
     const Mat4 m = basisMatrix(basis, tension);
@@ -169,4 +170,5 @@ uint32_t recordSurfaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const 
     return draws;
 }
 
+}  // namespace scene
 }  // namespace pw::render

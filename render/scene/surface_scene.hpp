@@ -13,6 +13,7 @@
 #include "render/vk/buffers.hpp"
 
 namespace pw::render {
+inline namespace scene {
 
 struct BasisRun {
     uint32_t first = 0, count = 0;  // windows [first, first + count)
@@ -77,4 +78,5 @@ uint32_t recordSurfaceDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const 
 
 glm::mat4 basisPushMatrix(Basis basis, double tension);
 
+}  // namespace scene
 }  // namespace pw::render

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 namespace pw::render {
+inline namespace scene {
 
 namespace {
 
@@ -37,4 +38,5 @@ uint32_t recordCurveDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const Su
     return recordPatchListDraws(cmd, layout, s, s.curveIndices.buffer, s.curveCount, 4, perDraw, 0, push);
 }
 
+}  // namespace scene
 }  // namespace pw::render

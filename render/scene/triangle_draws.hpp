@@ -10,6 +10,7 @@
 #include "render/scene/surface_scene.hpp"
 
 namespace pw::render {
+inline namespace scene {
 
 // Binds the pool and the triangle index buffer and issues the draws; patchBase is
 // windowCount + first triangle (their gpu::PatchData follows the windows'). Returns the number of draws.
@@ -20,4 +21,5 @@ uint32_t recordTriangleDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const
 // vertexBudget / 65 curves (lavapipe: 63; 0 = no budget, one draw). Returns the number of draws.
 uint32_t recordCurveDraws(VkCommandBuffer cmd, VkPipelineLayout layout, const SurfaceScene& s, gpu::DrawPush push, uint32_t vertexBudget);
 
+}  // namespace scene
 }  // namespace pw::render

@@ -3,6 +3,7 @@
 #include "render/vk/dynamic_rendering.hpp"
 
 namespace pw::render {
+inline namespace targets {
 
 OffscreenTarget::OffscreenTarget(Device& dev, uint32_t width, uint32_t height, bool msaa)
     : dev_(dev), extent_{width, height}, samples_(msaa ? dev.caps().maxSamples : VkSampleCountFlagBits(VK_SAMPLE_COUNT_1_BIT)) {
@@ -68,4 +69,5 @@ std::vector<uint8_t> OffscreenTarget::pixels() const {
     return out;
 }
 
+}  // namespace targets
 }  // namespace pw::render

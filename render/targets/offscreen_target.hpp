@@ -9,6 +9,7 @@
 #include "render/vk/buffers.hpp"
 
 namespace pw::render {
+inline namespace targets {
 
 class OffscreenTarget final : public RenderTarget {
 public:
@@ -39,4 +40,5 @@ private:
     bool readImageInTransferSrc_ = false;  // the last recorded endRendering copied it out, leaving it in TRANSFER_SRC
 };
 
+}  // namespace targets
 }  // namespace pw::render

@@ -8,6 +8,7 @@
 #include "core/base/file_io.hpp"
 
 namespace pw::render {
+inline namespace targets {
 
 std::string encodePng(const std::filesystem::path& path, uint32_t width, uint32_t height, const std::vector<uint8_t>& rgba) {
     if (rgba.size() < size_t(width) * height * 4) throw OutputError(path.string(), "image buffer too small");
@@ -26,4 +27,5 @@ void writePng(const std::filesystem::path& path, uint32_t width, uint32_t height
     writeFileAtomic(path, encodePng(path, width, height, rgba));
 }
 
+}  // namespace targets
 }  // namespace pw::render

@@ -8,6 +8,7 @@
 #include <array>
 
 namespace pw::render {
+inline namespace targets {
 
 class RenderTarget {
 public:
@@ -30,4 +31,5 @@ public:
     virtual void endRendering(VkCommandBuffer cmd) = 0;
 };
 
+}  // namespace targets
 }  // namespace pw::render

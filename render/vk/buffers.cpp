@@ -1,6 +1,7 @@
 #include "render/vk/buffers.hpp"
 
 namespace pw::render {
+inline namespace vk {
 
 namespace {
 
@@ -131,4 +132,5 @@ void copyColorAttachmentToHost(VkCommandBuffer cmd, VkImage image, VkExtent2D ex
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &bb, 0, nullptr);
 }
 
+}  // namespace vk
 }  // namespace pw::render

@@ -14,6 +14,7 @@
 #include "render/vk/vk_owned.hpp"
 
 namespace pw::render {
+inline namespace vk {
 
 // What a buffer's memory is for (DESIGN: static data device-local on discrete GPUs).
 enum class MemoryUse {
@@ -72,4 +73,5 @@ void copyColorAttachmentToHost(VkCommandBuffer cmd, VkImage image, VkExtent2D ex
 void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
                   VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess);
 
+}  // namespace vk
 }  // namespace pw::render

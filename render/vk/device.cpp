@@ -12,6 +12,7 @@
 #include "core/base/errors.hpp"
 
 namespace pw::render {
+inline namespace vk {
 
 const char* vkResultName(VkResult r) {
     switch (r) {
@@ -390,4 +391,5 @@ std::string Device::apiVersionText() const {
            std::to_string(VK_API_VERSION_PATCH(v));
 }
 
+}  // namespace vk
 }  // namespace pw::render

@@ -14,6 +14,7 @@
 #include "render/vk/vk_check.hpp"
 
 namespace pw::render {
+inline namespace vk {
 
 struct DeviceOptions {
     std::string name;                             // substring of the device name; empty = best available
@@ -112,4 +113,5 @@ private:
     TransformFeedbackFns xfb_;
 };
 
+}  // namespace vk
 }  // namespace pw::render

@@ -3,6 +3,7 @@
 #include "render/vk/buffers.hpp"
 
 namespace pw::render {
+inline namespace vk {
 
 void discardDepthToAttachment(VkCommandBuffer cmd, VkImage depth) {
     const VkPipelineStageFlags tests = VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
@@ -49,4 +50,5 @@ void pauseColorDepthRendering(VkCommandBuffer cmd) {
     vkCmdPipelineBarrier(cmd, stages, stages, 0, 1, &mb, 0, nullptr, 0, nullptr);
 }
 
+}  // namespace vk
 }  // namespace pw::render

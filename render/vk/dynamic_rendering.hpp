@@ -7,6 +7,7 @@
 #include <array>
 
 namespace pw::render {
+inline namespace vk {
 
 struct ColorDepthAttachments {
     VkExtent2D extent{};
@@ -25,4 +26,5 @@ void beginColorDepthRendering(VkCommandBuffer cmd, const ColorDepthAttachments& 
 // vkCmdEndRendering, then a barrier ordering the attachment writes before the next pass's loads.
 void pauseColorDepthRendering(VkCommandBuffer cmd);
 
+}  // namespace vk
 }  // namespace pw::render

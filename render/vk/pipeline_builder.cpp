@@ -1,6 +1,7 @@
 #include "render/vk/pipeline_builder.hpp"
 
 namespace pw::render {
+inline namespace vk {
 
 VkShaderModule makeModule(Device& dev, const spirv::Blob& blob) {
     VkShaderModuleCreateInfo ci{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
@@ -109,4 +110,5 @@ VkPipeline buildPipeline(Device& dev, VkPipelineLayout layout, VkPipelineCache c
     return p;
 }
 
+}  // namespace vk
 }  // namespace pw::render

@@ -12,6 +12,7 @@
 #include "shaders/spirv.hpp"
 
 namespace pw::render {
+inline namespace vk {
 
 struct PipelineDesc {
     std::vector<std::pair<VkShaderStageFlagBits, VkShaderModule>> stages;
@@ -73,4 +74,5 @@ private:
     std::function<VkPipeline()> make_;
 };
 
+}  // namespace vk
 }  // namespace pw::render

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 namespace pw::render {
+inline namespace vk {
 
 namespace {
 constexpr VkQueryPipelineStatisticFlags kStatFlags =
@@ -113,4 +114,5 @@ std::array<uint64_t, 2> readTransformFeedbackQuery(Device& dev, VkQueryPool pool
     return prims;
 }
 
+}  // namespace vk
 }  // namespace pw::render

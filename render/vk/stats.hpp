@@ -15,6 +15,7 @@
 #include "render/vk/vk_owned.hpp"
 
 namespace pw::render {
+inline namespace vk {
 
 struct FrameStats {
     double wallMs = 0.0;    // record + submit + wait
@@ -65,4 +66,5 @@ private:
 OwnedQueryPool makeTransformFeedbackQuery(Device& dev);
 std::array<uint64_t, 2> readTransformFeedbackQuery(Device& dev, VkQueryPool pool);
 
+}  // namespace vk
 }  // namespace pw::render

@@ -7,6 +7,7 @@
 #include <string>
 
 namespace pw::render {
+inline namespace vk {
 
 class VulkanError : public std::runtime_error {
 public:
@@ -17,6 +18,7 @@ const char* vkResultName(VkResult r);
 
 [[noreturn]] void throwVkError(VkResult r, const char* call, const char* file, int line);
 
+}  // namespace vk
 }  // namespace pw::render
 
 #define VK_CHECK(call)                                                                                         \

@@ -3,6 +3,7 @@
 #include "render/vk/vk_check.hpp"
 
 namespace pw::render {
+inline namespace vk {
 
 OwnedCommandBuffer::OwnedCommandBuffer(VkDevice device, VkCommandPool pool) : device_(device), pool_(pool) {
     VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
@@ -17,4 +18,5 @@ void OwnedCommandBuffer::reset() {
     cmd_ = VK_NULL_HANDLE;
 }
 
+}  // namespace vk
 }  // namespace pw::render

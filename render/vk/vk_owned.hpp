@@ -9,6 +9,7 @@
 #include <utility>
 
 namespace pw::render {
+inline namespace vk {
 
 template <class H, void (*Destroy)(VkDevice, H, const VkAllocationCallbacks*)>
 class Owned {
@@ -91,4 +92,5 @@ private:
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;
 };
 
+}  // namespace vk
 }  // namespace pw::render

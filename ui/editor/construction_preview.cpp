@@ -9,6 +9,7 @@
 #include "ui/editor/editor.hpp"
 
 namespace pw::ui {
+inline namespace editor {
 
 namespace {
 // Runs commands without a window: nothing written, no messages.
@@ -58,4 +59,5 @@ void Editor::drawConstructionPreview(const std::function<void(const Vec3&, const
         }
 }
 
+}  // namespace editor
 }  // namespace pw::ui

@@ -22,6 +22,7 @@
 #include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
+inline namespace editor {
 
 namespace {
 constexpr double kSnapPx = 10.0;
@@ -175,4 +176,5 @@ void Editor::drawCurveOverlay(const std::function<void(const Vec3&, const Vec3&,
     }
 }
 
+}  // namespace editor
 }  // namespace pw::ui

@@ -23,6 +23,7 @@
 #include "ui/platform/swapchain_target.hpp"
 
 namespace pw::ui {
+inline namespace editor {
 
 namespace fs = std::filesystem;
 
@@ -268,12 +269,12 @@ int Editor::run() {
     return status;
 }
 
-std::optional<render::FrameLoad> Editor::degradedLoad() const {
+std::optional<FrameLoad> Editor::degradedLoad() const {
     const TessSettings shown = teaching_.shownTess(doc_.tess);
     if (fullDetail_ || shown.adaptive != AdaptiveMode::None || window_.device().properties().deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU)
         return std::nullopt;
-    const render::FrameLoad load = render::frameLoad(doc_, shown);
-    if (!render::heavyForCpu(load)) return std::nullopt;
+    const FrameLoad load = frameLoad(doc_, shown);
+    if (!heavyForCpu(load)) return std::nullopt;
     return load;
 }
 
@@ -383,4 +384,5 @@ void Editor::drawFrame() {
     if (trace_.enabled()) trace_.write(snapshot());
 }
 
+}  // namespace editor
 }  // namespace pw::ui

@@ -33,11 +33,14 @@
 #include "ui/platform/shortcuts.hpp"
 
 namespace pw::render {
+inline namespace scene {
 class Renderer;
 struct RenderOptions;
+}  // namespace scene
 }  // namespace pw::render
 
 namespace pw::ui {
+inline namespace editor {
 
 // Opens the editor on `file` (empty: the built-in teapot). Returns the exit code; 2 when there is
 // no display.
@@ -124,7 +127,7 @@ private:
     render::RenderOptions drawnOptions() const;  // what it draws this frame: a heavy document screen-adaptive
     // The load of the levels the view would draw, when it is too heavy for a CPU renderer and full
     // detail is off: the view is then drawn screen-adaptive instead (and says so).
-    std::optional<render::FrameLoad> degradedLoad() const;
+    std::optional<FrameLoad> degradedLoad() const;
 
     // WindowClient: the frame loop (ui/platform/app_window.cpp).
     bool quitRequested() const override { return quit_; }
@@ -288,4 +291,5 @@ private:
     Teaching teaching_{window_, shaders_.open};
 };
 
+}  // namespace editor
 }  // namespace pw::ui

@@ -26,6 +26,7 @@
 #include "ui/platform/swapchain_target.hpp"
 
 namespace pw::ui {
+inline namespace editor {
 
 namespace {
 
@@ -164,4 +165,5 @@ int Editor::runBench(const EditorBenchOptions& opt) {
     return 0;
 }
 
+}  // namespace editor
 }  // namespace pw::ui

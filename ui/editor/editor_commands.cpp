@@ -15,6 +15,7 @@
 #include "ui/platform/swapchain_target.hpp"
 
 namespace pw::ui {
+inline namespace editor {
 
 void Editor::bindShortcuts() { keyBindings_ = keyBindingsOf(commands_); }
 
@@ -168,4 +169,5 @@ void Editor::status(const std::string& message) {
     statusTime_ = std::chrono::steady_clock::now();
 }
 
+}  // namespace editor
 }  // namespace pw::ui

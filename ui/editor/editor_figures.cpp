@@ -17,6 +17,7 @@
 #include "ui/editor/editor.hpp"
 
 namespace pw::ui {
+inline namespace editor {
 
 namespace {
 
@@ -76,4 +77,5 @@ void Editor::sweepAnimation(const std::string& path) {
     status("Sweep animation saved to " + path + " (" + std::to_string(spec.frames) + " frames)");
 }
 
+}  // namespace editor
 }  // namespace pw::ui

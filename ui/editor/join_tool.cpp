@@ -14,6 +14,7 @@
 #include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
+inline namespace editor {
 
 namespace {
 constexpr double kEdgePickPx = 10.0;
@@ -136,4 +137,5 @@ void Editor::drawJoinOverlay(const std::function<void(const Vec3&, const Vec3&, 
     if (join_.preview && join_.a.patch < doc_.patches.size()) edge(join_.a, IM_COL32(80, 255, 120, 255), 4.0f);
 }
 
+}  // namespace editor
 }  // namespace pw::ui

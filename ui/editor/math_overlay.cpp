@@ -15,6 +15,7 @@
 #include "ui/platform/imgui_layer.hpp"
 
 namespace pw::ui {
+inline namespace editor {
 
 namespace {
 
@@ -101,4 +102,5 @@ void Editor::drawMathOverlay() {
     ImGui::End();
 }
 
+}  // namespace editor
 }  // namespace pw::ui

@@ -16,6 +16,7 @@
 #include "ui/editor/editor.hpp"
 
 namespace pw::ui {
+inline namespace editor {
 
 TestTrace::TestTrace() {
     if (const char* t = std::getenv("PATCHWORK_EDITOR_TRACE"); t && *t) {
@@ -170,4 +171,5 @@ void TestTrace::write(const EditorSnapshot& e) {
     }
 }
 
+}  // namespace editor
 }  // namespace pw::ui

@@ -11,6 +11,7 @@
 #include "ui/platform/item_trace.hpp"
 
 namespace pw::ui {
+inline namespace editor {
 
 struct EditorSnapshot;
 
@@ -30,4 +31,5 @@ private:
     ItemTrace items_;  // what the widgets reported this frame
 };
 
+}  // namespace editor
 }  // namespace pw::ui

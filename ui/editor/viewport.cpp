@@ -22,6 +22,7 @@
 #include "ui/platform/app_window.hpp"
 
 namespace pw::ui {
+inline namespace editor {
 
 namespace {
 
@@ -319,4 +320,5 @@ void Editor::cancelDrag() {
     documentChanged(false);
 }
 
+}  // namespace editor
 }  // namespace pw::ui

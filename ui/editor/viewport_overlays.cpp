@@ -17,6 +17,7 @@
 #include "ui/editor/editor.hpp"
 
 namespace pw::ui {
+inline namespace editor {
 
 namespace {
 constexpr ImU32 kAxisColours[3] = {IM_COL32(230, 60, 60, 230), IM_COL32(60, 210, 60, 230), IM_COL32(70, 120, 255, 230)};
@@ -271,4 +272,5 @@ void Editor::drawPaneOverlays(const std::array<float, 4>& pane, bool active) {
     }
 }
 
+}  // namespace editor
 }  // namespace pw::ui

@@ -11,6 +11,7 @@
 #include "ui/panels/panel_context.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 // One menu / palette entry: a command with a binding's arguments.
 struct CommandEntry {
@@ -65,4 +66,5 @@ void drawMenuBar(PanelContext& ctx, CommandPalette& palette, const std::vector<s
 // The F1 window: every command with its keys and script form, then the mouse and modal keys.
 void drawHelp(PanelContext& ctx, bool& open);
 
+}  // namespace panels
 }  // namespace pw::ui

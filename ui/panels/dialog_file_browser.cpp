@@ -14,6 +14,7 @@
 #include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 namespace fs = std::filesystem;
 
@@ -168,4 +169,5 @@ void Dialogs::drawFileBrowser(PanelContext& ctx) {
     ImGui::EndPopup();
 }
 
+}  // namespace panels
 }  // namespace pw::ui

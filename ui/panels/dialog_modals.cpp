@@ -11,6 +11,7 @@
 #include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 namespace {
 
 // Opens the modal `name` when `openRequest` is set (and clears it), centred in the window; true
@@ -112,4 +113,5 @@ void Dialogs::drawModals(PanelContext& ctx, const std::function<void()>& recover
     }
 }
 
+}  // namespace panels
 }  // namespace pw::ui

@@ -12,6 +12,7 @@
 #include "ui/panels/panel_context.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 enum class FileDialogMode { None, Open, SaveAs, Import, ExportGltf, Screenshot, DomainFigure, SweepAnimation, HeightMap };
 
@@ -47,4 +48,5 @@ private:
     bool offerRecovery_ = false;
 };
 
+}  // namespace panels
 }  // namespace pw::ui

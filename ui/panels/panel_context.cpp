@@ -10,6 +10,7 @@
 #include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 void commandButton(PanelContext& ctx, const char* label, const std::string& line, const char* trace) {
     const std::vector<std::string> words = splitCommandWords(line);
@@ -28,4 +29,5 @@ std::string commandWord(double v) {
     return buf;
 }
 
+}  // namespace panels
 }  // namespace pw::ui

@@ -14,6 +14,7 @@
 #include "render/vk/stats.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 // Where one editor frame's time went (wall clock, milliseconds).
 struct FrameTimes {
@@ -76,4 +77,5 @@ void commandButton(PanelContext& ctx, const char* label, const std::string& line
 // A number as a command word that reads back to the same double ("%.17g").
 std::string commandWord(double v);
 
+}  // namespace panels
 }  // namespace pw::ui

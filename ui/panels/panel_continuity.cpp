@@ -13,6 +13,7 @@
 #include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 namespace {
 
@@ -104,4 +105,5 @@ void ContinuityPanel::draw(PanelContext& ctx) {
     tip("Measured continuity of every join: gap, largest normal angle and curvature deviation across the seam (red: out of tolerance)");
 }
 
+}  // namespace panels
 }  // namespace pw::ui

@@ -11,6 +11,7 @@
 #include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 namespace {
 
@@ -64,4 +65,5 @@ void drawDisplacementPanel(PanelContext& ctx) {
     tip("With an adaptive mode on, each edge's level grows with the height map's detail along it and its size on screen (Stats)");
 }
 
+}  // namespace panels
 }  // namespace pw::ui

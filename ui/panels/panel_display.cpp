@@ -8,6 +8,7 @@
 #include "ui/panels/side_panels.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 void drawDisplayPanel(PanelContext& ctx) {
     if (!ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) return;
@@ -30,4 +31,5 @@ void drawDisplayPanel(PanelContext& ctx) {
     settingRow(ctx, "display.background");
 }
 
+}  // namespace panels
 }  // namespace pw::ui

@@ -15,6 +15,7 @@
 #include "ui/platform/swapchain_target.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 void Teaching::drawDomainWindow(PanelContext& ctx) {
     domainPanes.clear();
@@ -117,4 +118,5 @@ void Teaching::drawDomainPanes() {
     drawnDomain_.assign(domainPanes.begin(), domainPanes.end());
 }
 
+}  // namespace panels
 }  // namespace pw::ui

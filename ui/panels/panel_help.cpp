@@ -7,6 +7,7 @@
 #include "ui/panels/command_panels.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 const std::vector<KeyHelp>& modalKeys() {
     static const std::vector<KeyHelp> keys{
@@ -70,4 +71,5 @@ void drawHelp(PanelContext& ctx, bool& open) {
     ImGui::End();
 }
 
+}  // namespace panels
 }  // namespace pw::ui

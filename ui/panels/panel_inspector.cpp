@@ -14,6 +14,7 @@
 #include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 namespace {
 
@@ -183,4 +184,5 @@ void InspectorPanel::draw(PanelContext& ctx) {
     }
 }
 
+}  // namespace panels
 }  // namespace pw::ui

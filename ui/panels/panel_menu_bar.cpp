@@ -10,6 +10,7 @@
 #include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 void drawMenuBar(PanelContext& ctx, CommandPalette& palette, const std::vector<std::string>& recent) {
     if (!ImGui::BeginMainMenuBar()) return;
@@ -49,4 +50,5 @@ void drawMenuBar(PanelContext& ctx, CommandPalette& palette, const std::vector<s
     ImGui::EndMainMenuBar();
 }
 
+}  // namespace panels
 }  // namespace pw::ui

@@ -18,6 +18,7 @@
 #include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 namespace {
 
@@ -153,4 +154,5 @@ void NetPanel::drawActive(PanelContext& ctx, uint32_t si) {
         "implies (C1 for splines and kept-C1 Bézier nets, C0 otherwise)");
 }
 
+}  // namespace panels
 }  // namespace pw::ui

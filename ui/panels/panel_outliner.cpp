@@ -10,6 +10,7 @@
 #include "ui/platform/imgui_tip.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 void drawOutliner(PanelContext& ctx) {
     if (!ImGui::CollapsingHeader("Outliner", ImGuiTreeNodeFlags_DefaultOpen)) return;
@@ -62,4 +63,5 @@ void drawOutliner(PanelContext& ctx) {
     if (!doc.curves.empty() || !doc.triangles.empty()) ImGui::Text("%zu triangles, %zu curves", doc.triangles.size(), doc.curves.size());
 }
 
+}  // namespace panels
 }  // namespace pw::ui

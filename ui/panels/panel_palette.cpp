@@ -12,6 +12,7 @@
 #include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 namespace {
 
@@ -123,4 +124,5 @@ void CommandPalette::draw(PanelContext& ctx) {
     ctx.runCommand(words);
 }
 
+}  // namespace panels
 }  // namespace pw::ui

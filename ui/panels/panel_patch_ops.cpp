@@ -12,6 +12,7 @@
 #include "ui/platform/imgui_tip.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 namespace {
 
@@ -85,4 +86,5 @@ void PatchOpsPanel::draw(PanelContext& ctx) {
                       kEdgeNames[joinEdgeB_] + " " + kinds[joinKind_]);
 }
 
+}  // namespace panels
 }  // namespace pw::ui

@@ -14,6 +14,7 @@
 #include "ui/platform/imgui_layer.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 namespace {
 
@@ -99,4 +100,5 @@ void Teaching::drawPresentationOverlay(PanelContext& ctx) {
     ImGui::End();
 }
 
+}  // namespace panels
 }  // namespace pw::ui

@@ -10,6 +10,7 @@
 #include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 namespace {
 
@@ -95,4 +96,5 @@ bool settingRow(PanelContext& ctx, std::string_view key) {
     return changed;
 }
 
+}  // namespace panels
 }  // namespace pw::ui

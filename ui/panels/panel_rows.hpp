@@ -9,6 +9,7 @@
 #include "ui/panels/panel_context.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 // The setting `key` as its widget (slider, drag, colour, checkbox or combo) with its label and
 // tooltip. It reads the document and writes it only through the `set` command: a live preview while
@@ -17,4 +18,5 @@ namespace pw::ui {
 // tests click it). Returns true when the value changed this frame.
 bool settingRow(PanelContext& ctx, std::string_view key);
 
+}  // namespace panels
 }  // namespace pw::ui

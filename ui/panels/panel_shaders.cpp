@@ -10,6 +10,7 @@
 #include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 namespace {
 
@@ -141,4 +142,5 @@ void ShaderPanel::draw(PanelContext& ctx, bool geometryShader, const TessSetting
     ImGui::End();
 }
 
+}  // namespace panels
 }  // namespace pw::ui

@@ -14,6 +14,7 @@
 #include "ui/panels/panel_context.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 class ShaderPanel {
 public:
@@ -33,4 +34,5 @@ private:
     std::map<std::string, render::ShaderListing, std::less<>> listings_;  // cache by variant
 };
 
+}  // namespace panels
 }  // namespace pw::ui

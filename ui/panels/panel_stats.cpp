@@ -6,6 +6,7 @@
 #include "ui/platform/imgui_tip.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 void drawStatsPanel(const FrameReport& report) {
     if (!ImGui::CollapsingHeader("Stats", ImGuiTreeNodeFlags_DefaultOpen)) return;
@@ -44,4 +45,5 @@ void drawStatsPanel(const FrameReport& report) {
     tip("vkCmdDraw calls this frame");
 }
 
+}  // namespace panels
 }  // namespace pw::ui

@@ -16,6 +16,7 @@
 #include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 namespace {
 const char* kAxes[] = {"X", "Y", "Z"};
@@ -150,4 +151,5 @@ void SurfacesPanel::draw(PanelContext& ctx) {
     commandButton(ctx, "Bake", "bake k" + std::to_string(k), "op.bake");
 }
 
+}  // namespace panels
 }  // namespace pw::ui

@@ -12,6 +12,7 @@
 #include "ui/platform/widgets.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 namespace {
 
@@ -249,4 +250,5 @@ void Teaching::drawControls(PanelContext& ctx) {
     tip("Size of the presentation text relative to the interface (Ctrl+= and Ctrl+- in presentation mode)");
 }
 
+}  // namespace panels
 }  // namespace pw::ui

@@ -7,6 +7,7 @@
 #include "ui/panels/side_panels.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 namespace {
 
@@ -57,4 +58,5 @@ void drawTessellationPanel(PanelContext& ctx) {
     settingRow(ctx, "tess.cullOffscreen");
 }
 
+}  // namespace panels
 }  // namespace pw::ui

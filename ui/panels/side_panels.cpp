@@ -8,6 +8,7 @@
 #include "ui/panels/teaching.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 void SidePanels::begin(const char* name, float x, float width) {
     const ImGuiIO& io = ImGui::GetIO();
@@ -50,4 +51,5 @@ void SidePanels::drawRight(PanelContext& ctx, Teaching& teaching) {
     ImGui::End();
 }
 
+}  // namespace panels
 }  // namespace pw::ui

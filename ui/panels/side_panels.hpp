@@ -15,6 +15,7 @@
 #include "ui/panels/panel_context.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 class Teaching;
 
@@ -100,4 +101,5 @@ private:
     ContinuityPanel continuity_;
 };
 
+}  // namespace panels
 }  // namespace pw::ui

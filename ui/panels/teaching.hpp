@@ -20,13 +20,19 @@
 #include "ui/panels/panel_context.hpp"
 
 namespace pw::render {
+inline namespace scene {
 class Renderer;
 struct RenderOptions;
+}  // namespace scene
 }  // namespace pw::render
+namespace pw::ui {
+inline namespace platform {
+class AppWindow;
+}  // namespace platform
+}  // namespace pw::ui
 
 namespace pw::ui {
-
-class AppWindow;
+inline namespace panels {
 
 // The partitionings a comparison pane can pick, in the order of its combo.
 inline constexpr Spacing kPaneSpacings[] = {Spacing::Equal, Spacing::FractionalOdd, Spacing::FractionalEven, Spacing::Pow2};
@@ -128,4 +134,5 @@ private:
     std::vector<render::DomainPane> drawnDomain_;  // the panes domainStats counted
 };
 
+}  // namespace panels
 }  // namespace pw::ui

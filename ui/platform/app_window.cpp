@@ -23,6 +23,7 @@
 #include "ui/platform/x11_present.hpp"
 
 namespace pw::ui {
+inline namespace platform {
 
 namespace {
 
@@ -182,13 +183,13 @@ AppWindow::AppWindow(GLFWwindow* window) : window_(window) {
     // everything else presents through a Vulkan swapchain.
     if (dev_->properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) hostPresenter_ = X11Presenter::create(window_);
     if (hostPresenter_) {
-        target_ = std::make_unique<render::SwapchainTarget>(
+        target_ = std::make_unique<SwapchainTarget>(
             *dev_, VK_NULL_HANDLE, VkExtent2D{uint32_t(fbw), uint32_t(fbh)},
             [p = hostPresenter_.get()](const uint8_t* bgra, VkExtent2D ext, uint32_t rowBytes) { p->present(bgra, ext, rowBytes); });
     } else {
         if (glfwCreateWindowSurface(dev_->instance(), window_, nullptr, &surface_) != VK_SUCCESS)
             throw render::VulkanError("cannot create a Vulkan surface for the window");
-        target_ = std::make_unique<render::SwapchainTarget>(*dev_, surface_, VkExtent2D{uint32_t(fbw), uint32_t(fbh)});
+        target_ = std::make_unique<SwapchainTarget>(*dev_, surface_, VkExtent2D{uint32_t(fbw), uint32_t(fbh)});
     }
 
     // Step 2: input callbacks (before ImGui so it chains to them), then ImGui.
@@ -348,4 +349,5 @@ void AppWindow::writeScreenshot(const std::string& path, float cropLeft, float c
     render::writePng(path, x1 - x0, h, out);
 }
 
+}  // namespace platform
 }  // namespace pw::ui

@@ -22,11 +22,15 @@
 struct GLFWwindow;
 
 namespace pw::render {
+inline namespace vk {
 class Device;
-class SwapchainTarget;
+}  // namespace vk
 }  // namespace pw::render
 
 namespace pw::ui {
+inline namespace platform {
+
+class SwapchainTarget;  // ui/platform/swapchain_target.hpp
 
 class ImGuiLayer;
 class X11Presenter;
@@ -53,7 +57,7 @@ public:
     AppWindow& operator=(const AppWindow&) = delete;
 
     render::Device& device() { return *dev_; }
-    render::SwapchainTarget& target() { return *target_; }
+    SwapchainTarget& target() { return *target_; }
     ImGuiLayer& imgui() { return *imgui_; }
     float uiScale() const { return uiScale_; }  // monitor content scale (HiDPI), at least 1
     std::array<int, 2> windowSize() const;
@@ -98,7 +102,7 @@ private:
     std::unique_ptr<render::Device> dev_;
     VkSurfaceKHR surface_ = VK_NULL_HANDLE;
     std::unique_ptr<X11Presenter> hostPresenter_;  // CPU devices on X11: frames go to the window by XPutImage
-    std::unique_ptr<render::SwapchainTarget> target_;
+    std::unique_ptr<SwapchainTarget> target_;
     std::unique_ptr<ImGuiLayer> imgui_;
     float uiScale_ = 1.0f;
     bool swapchainDirty_ = false;
@@ -113,4 +117,5 @@ private:
     std::optional<std::array<double, 2>> mouseOverride_;
 };
 
+}  // namespace platform
 }  // namespace pw::ui

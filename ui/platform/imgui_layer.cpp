@@ -14,6 +14,7 @@
 #include "ui/platform/swapchain_target.hpp"
 
 namespace pw::ui {
+inline namespace platform {
 
 namespace {
 void checkVk(VkResult r) {
@@ -21,8 +22,7 @@ void checkVk(VkResult r) {
 }
 }  // namespace
 
-ImGuiLayer::ImGuiLayer(render::Device& dev, GLFWwindow* window, render::SwapchainTarget& target, float contentScale)
-    : dev_(dev), target_(target) {
+ImGuiLayer::ImGuiLayer(render::Device& dev, GLFWwindow* window, SwapchainTarget& target, float contentScale) : dev_(dev), target_(target) {
     // Step 1: context, style and a font scaled for the monitor's content scale (HiDPI).
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
@@ -129,4 +129,5 @@ VkCommandBuffer ImGuiLayer::record(std::span<const std::array<float, 4>> fills, 
 
 void ImGuiLayer::swapchainRecreated() { ImGui_ImplVulkan_SetMinImageCount(target_.minImageCount()); }
 
+}  // namespace platform
 }  // namespace pw::ui

@@ -14,16 +14,20 @@ struct ImFont;
 struct GLFWwindow;
 
 namespace pw::render {
+inline namespace vk {
 class Device;
-class SwapchainTarget;
+}  // namespace vk
 }  // namespace pw::render
 
 namespace pw::ui {
+inline namespace platform {
+
+class SwapchainTarget;  // ui/platform/swapchain_target.hpp
 
 class ImGuiLayer {
 public:
     // Call after the window's own GLFW callbacks are installed (the backend chains to them).
-    ImGuiLayer(render::Device& dev, GLFWwindow* window, render::SwapchainTarget& target, float contentScale);
+    ImGuiLayer(render::Device& dev, GLFWwindow* window, SwapchainTarget& target, float contentScale);
     ~ImGuiLayer();
     ImGuiLayer(const ImGuiLayer&) = delete;
     ImGuiLayer& operator=(const ImGuiLayer&) = delete;
@@ -38,10 +42,11 @@ public:
 
 private:
     render::Device& dev_;
-    render::SwapchainTarget& target_;
+    SwapchainTarget& target_;
     render::OwnedDescriptorPool pool_;
     render::OwnedCommandBuffer cmd_;
     ImFont* presentationFont_ = nullptr;
 };
 
+}  // namespace platform
 }  // namespace pw::ui

@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 namespace pw::ui {
+inline namespace platform {
 
 inline void tip(const char* text) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
@@ -19,4 +20,5 @@ inline void sameLineIfFits(const char* nextLabel) {
     if (ImGui::GetItemRectMax().x + s.ItemSpacing.x + width <= right) ImGui::SameLine();
 }
 
+}  // namespace platform
 }  // namespace pw::ui

@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 namespace pw::ui {
+inline namespace platform {
 
 namespace {
 ItemTrace* active = nullptr;
@@ -33,4 +34,5 @@ void modalHook(std::string_view label) {
     active->modal = std::string(name.empty() ? label : name);
 }
 
+}  // namespace platform
 }  // namespace pw::ui

@@ -12,6 +12,7 @@
 #include <string_view>
 
 namespace pw::ui {
+inline namespace platform {
 
 struct ItemTrace {
     std::map<std::string, std::array<float, 2>> items;  // window-coordinate centres of named widgets
@@ -35,4 +36,5 @@ std::string_view traceName(std::string_view label);
 void itemHook(std::string_view label);
 void modalHook(std::string_view label);
 
+}  // namespace platform
 }  // namespace pw::ui

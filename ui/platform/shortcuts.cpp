@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 namespace pw::ui {
+inline namespace platform {
 
 std::optional<KeyChord> parseShortcut(std::string_view text) {
     KeyChord k;
@@ -76,4 +77,5 @@ std::vector<KeyBinding> keyBindingsOf(const CommandTable& table) {
     return out;
 }
 
+}  // namespace platform
 }  // namespace pw::ui

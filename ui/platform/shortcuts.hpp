@@ -10,6 +10,7 @@
 #include "core/commands/command_table.hpp"
 
 namespace pw::ui {
+inline namespace platform {
 
 struct KeyChord {
     int key = 0;   // GLFW_KEY_*
@@ -28,4 +29,5 @@ struct KeyBinding {
 // alone. Throws std::logic_error naming the command for a shortcut parseShortcut does not know.
 std::vector<KeyBinding> keyBindingsOf(const CommandTable& table);
 
+}  // namespace platform
 }  // namespace pw::ui

@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <cstring>
 
-namespace pw::render {
+namespace pw::ui {
+inline namespace platform {
+
+using namespace render;  // the Vulkan objects of render/vk and render/targets
 
 SwapchainTarget::SwapchainTarget(Device& dev, VkSurfaceKHR surface, VkExtent2D framebufferSize, HostPresent hostPresent)
     : dev_(dev), surface_(surface), hostPresent_(std::move(hostPresent)) {
@@ -301,4 +304,5 @@ std::vector<uint8_t> SwapchainTarget::readCurrentImage() {
     return out;
 }
 
-}  // namespace pw::render
+}  // namespace platform
+}  // namespace pw::ui

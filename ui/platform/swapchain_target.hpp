@@ -22,15 +22,16 @@
 #include "render/vk/buffers.hpp"
 #include "render/vk/vk_owned.hpp"
 
-namespace pw::render {
+namespace pw::ui {
+inline namespace platform {
 
-class SwapchainTarget final : public RenderTarget {
+class SwapchainTarget final : public render::RenderTarget {
 public:
     // Shows a finished frame: B8G8R8A8 pixels, rows top first, `rowBytes` apart.
     using HostPresent = std::function<void(const uint8_t* bgra, VkExtent2D extent, uint32_t rowBytes)>;
     // `surface` stays owned by the caller (destroy it after this target). With `hostPresent`,
     // `surface` is not used (it may be VK_NULL_HANDLE) and frames go to that function instead.
-    SwapchainTarget(Device& dev, VkSurfaceKHR surface, VkExtent2D framebufferSize, HostPresent hostPresent = {});
+    SwapchainTarget(render::Device& dev, VkSurfaceKHR surface, VkExtent2D framebufferSize, HostPresent hostPresent = {});
     ~SwapchainTarget() override;
 
     VkExtent2D extent() const override { return extent_; }
@@ -67,27 +68,28 @@ private:
     void createHostImage(VkExtent2D size);  // host presentation: the one image, its copy and buffer
     void addImage(VkImage image);           // view, overlay framebuffer and semaphore of one image
     void destroySwapchainResources();
-    Device& dev_;
+    render::Device& dev_;
     VkSurfaceKHR surface_;
-    OwnedSwapchain swapchain_;
+    render::OwnedSwapchain swapchain_;
     VkFormat format_ = VK_FORMAT_B8G8R8A8_UNORM;
     VkColorSpaceKHR colorSpace_ = VK_COLOR_SPACE_SRGB_NONLINEAR_KHR;
     VkExtent2D extent_{0, 0};
     uint32_t minImageCount_ = 2;
     std::vector<VkImage> images_;
-    std::vector<OwnedImageView> views_;
-    std::vector<OwnedFramebuffer> framebuffers_;
-    std::vector<OwnedSemaphore> renderDone_;  // per image: overlay submit -> present
-    Image depth_;
-    OwnedRenderPass overlayPass_;
-    OwnedFence acquireFence_, submitFence_;
+    std::vector<render::OwnedImageView> views_;
+    std::vector<render::OwnedFramebuffer> framebuffers_;
+    std::vector<render::OwnedSemaphore> renderDone_;  // per image: overlay submit -> present
+    render::Image depth_;
+    render::OwnedRenderPass overlayPass_;
+    render::OwnedFence acquireFence_, submitFence_;
     uint32_t current_ = 0;
     bool transferSrc_ = false;
     // Host presentation.
     HostPresent hostPresent_;
-    Image hostImage_;
-    Buffer hostPixels_;           // mapped copy of the finished frame
-    OwnedCommandBuffer copyCmd_;  // image -> hostPixels_, recorded per size
+    render::Image hostImage_;
+    render::Buffer hostPixels_;           // mapped copy of the finished frame
+    render::OwnedCommandBuffer copyCmd_;  // image -> hostPixels_, recorded per size
 };
 
-}  // namespace pw::render
+}  // namespace platform
+}  // namespace pw::ui

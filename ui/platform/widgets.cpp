@@ -2,7 +2,9 @@
 
 #include "ui/platform/item_trace.hpp"
 
-namespace pw::ui::widget {
+namespace pw::ui {
+inline namespace platform {
+namespace widget {
 
 namespace {
 // The widget's result, after the hook saw the item it drew.
@@ -77,4 +79,6 @@ bool BeginPopupModal(const char* name, bool* open, ImGuiWindowFlags flags) {
     return shown;
 }
 
-}  // namespace pw::ui::widget
+}  // namespace widget
+}  // namespace platform
+}  // namespace pw::ui

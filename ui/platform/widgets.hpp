@@ -6,7 +6,9 @@
 
 #include <imgui.h>
 
-namespace pw::ui::widget {
+namespace pw::ui {
+inline namespace platform {
+namespace widget {
 
 bool Button(const char* label, const ImVec2& size = ImVec2(0, 0));
 bool SmallButton(const char* label);
@@ -38,4 +40,6 @@ bool BeginPopupModal(const char* name, bool* open = nullptr, ImGuiWindowFlags fl
 // A window that takes the keyboard as a modal does (the command palette): traced as the modal.
 bool BeginModalWindow(const char* name, bool* open, ImGuiWindowFlags flags = 0);
 
-}  // namespace pw::ui::widget
+}  // namespace widget
+}  // namespace platform
+}  // namespace pw::ui

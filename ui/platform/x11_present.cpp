@@ -13,6 +13,7 @@
 #include <X11/extensions/XShm.h>
 
 namespace pw::ui {
+inline namespace platform {
 
 struct X11Presenter::Impl {
     Display* display = nullptr;
@@ -135,4 +136,5 @@ void X11Presenter::present(const uint8_t* bgra, VkExtent2D extent, uint32_t rowB
     XSync(m.display, False);  // one frame in flight, like FIFO
 }
 
+}  // namespace platform
 }  // namespace pw::ui

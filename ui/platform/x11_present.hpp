@@ -1,4 +1,4 @@
-// Host presentation into the editor's X11 window (render::SwapchainTarget::HostPresent): the
+// Host presentation into the editor's X11 window (SwapchainTarget::HostPresent): the
 // finished frame is copied into a MIT-SHM segment and put with XShmPutImage (0.5 ms at 720p under
 // Xvfb), or, where the server cannot attach the segment (a remote display), sent with XPutImage,
 // which Xlib splits into requests the server takes at once (1.1 ms). Used on CPU Vulkan devices
@@ -14,6 +14,7 @@
 struct GLFWwindow;
 
 namespace pw::ui {
+inline namespace platform {
 
 class X11Presenter {
 public:
@@ -33,4 +34,5 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
+}  // namespace platform
 }  // namespace pw::ui

@@ -15,6 +15,7 @@
 #include "ui/platform/imgui_layer.hpp"
 
 namespace pw::ui {
+inline namespace panels {
 
 std::vector<std::array<float, 4>> Teaching::viewPaneRects(const PanelLayout& layout) const {
     const ImGuiIO& io = ImGui::GetIO();
@@ -103,4 +104,5 @@ void Teaching::drawStageBars(const PanelLayout& layout, const render::FrameStats
     }
 }
 
+}  // namespace panels
 }  // namespace pw::ui
