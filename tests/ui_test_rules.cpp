@@ -17,6 +17,7 @@
 #include "core/solve/constraint_solver.hpp"
 #include "support.hpp"
 #include "ui/panels/command_panels.hpp"
+#include "ui/panels/join_tool.hpp"
 #include "ui/panels/side_panels.hpp"
 #include "ui/platform/item_trace.hpp"
 #include "ui/platform/shortcuts.hpp"
@@ -222,6 +223,7 @@ TEST_F(Ui, TheInspectorAndTheNetPanelRunCommands) {
     EXPECT_EQ(ctx.commandsRun, before + 1);
     EXPECT_EQ(ctx.session().history().undoLabel(), "Patch tessellation override");
     EXPECT_EQ(ctx.session().shapeVersion(), shape);  // the renderer rewrites levels in place
+    EXPECT_TRUE(ctx.session().isModified());         // the title's "(modified)", the unsaved-changes prompt
     click(drawInspector, "inspector.patchOverride");
     EXPECT_FALSE(ctx.session().doc.patches[0].tessOverride.has_value());
 
@@ -232,6 +234,66 @@ TEST_F(Ui, TheInspectorAndTheNetPanelRunCommands) {
     EXPECT_TRUE(ctx.session().doc.surfaces.empty());
     EXPECT_EQ(ctx.session().doc.patches.size(), 17u);
     EXPECT_EQ(ctx.session().history().undoLabel(), "Convert net to patches");
+    EXPECT_TRUE(ctx.errors.empty()) << ::testing::PrintToString(ctx.errors);
+}
+
+// Join by picking's states (ui/panels/join_tool), against the real command table: first pick,
+// second pick runs the join as a preview, another continuity re-runs it, Cancel takes it back to
+// the second pick, Apply keeps it and closes; Esc steps back; another edit keeps the preview.
+TEST(UiJoinTool, PicksPreviewChooseCancelApplyAndBack) {
+    HeadlessContext ctx;
+    ctx.runCommand({"add-patch"}, true);
+    ctx.runCommand({"cursor", "3", "0", "0"}, true);
+    ctx.runCommand({"add-patch"}, true);
+    const Document& doc = ctx.session().doc;
+    ASSERT_EQ(doc.patches.size(), 2u);
+    JoinTool tool;
+    tool.setOn(ctx, true);
+    EXPECT_TRUE(tool.state().on);
+    const PatchEdge a{0, Edge::U1}, b{1, Edge::U0};
+    tool.pick(ctx, a);
+    ASSERT_TRUE(tool.state().first.has_value());
+    EXPECT_EQ(*tool.state().first, a);
+    EXPECT_TRUE(doc.joins.empty());
+    tool.pick(ctx, b);  // the join runs at once, as a preview
+    ASSERT_EQ(doc.joins.size(), 1u);
+    EXPECT_TRUE(tool.state().preview);
+    EXPECT_EQ(doc.joins[0].continuity, Continuity::C1);
+    tool.choose(ctx, Continuity::G1);  // taken back and run again
+    ASSERT_EQ(doc.joins.size(), 1u);
+    EXPECT_EQ(doc.joins[0].continuity, Continuity::G1);
+    EXPECT_EQ(tool.state().continuity, Continuity::G1);
+    tool.cancel(ctx);  // taken back: the second pick again
+    EXPECT_TRUE(doc.joins.empty());
+    EXPECT_FALSE(tool.state().preview);
+    EXPECT_EQ(tool.state().first, a);
+    tool.pick(ctx, b);
+    ASSERT_EQ(doc.joins.size(), 1u);
+    tool.apply(ctx);  // kept; the tool closes
+    EXPECT_FALSE(tool.state().on);
+    EXPECT_EQ(doc.joins.size(), 1u);
+    EXPECT_EQ(ctx.session().history().undoLabel(), "Join edges");
+    // Esc: the first pick dropped, then the tool closed.
+    tool.setOn(ctx, true);
+    tool.pick(ctx, PatchEdge{0, Edge::V0});
+    tool.back(ctx);
+    EXPECT_TRUE(tool.state().on);
+    EXPECT_FALSE(tool.state().first.has_value());
+    tool.back(ctx);
+    EXPECT_FALSE(tool.state().on);
+    // Another edit while the preview shows keeps the join.
+    ctx.runCommand({"unjoin", "0:u1"}, true);
+    ASSERT_TRUE(doc.joins.empty());
+    tool.setOn(ctx, true);
+    tool.pick(ctx, a);
+    tool.pick(ctx, b);
+    ASSERT_TRUE(tool.state().preview);
+    ctx.runCommand({"select", "all"}, true);
+    ctx.runCommand({"move", "0", "0", "1"}, true);
+    tool.followSession(ctx.session());
+    EXPECT_FALSE(tool.state().preview);
+    tool.back(ctx);
+    EXPECT_EQ(doc.joins.size(), 1u);
     EXPECT_TRUE(ctx.errors.empty()) << ::testing::PrintToString(ctx.errors);
 }
 

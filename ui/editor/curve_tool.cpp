@@ -37,7 +37,7 @@ std::string coordinates(const Vec3& p) {
 }  // namespace
 
 void Editor::setCurveTool(bool on) {
-    if (on && join_.on) setJoinTool(false);
+    if (on && join_.state().on) setJoinTool(false);
     curve_.on = on;
     curve_.points.clear();
     curve_.hover.reset();

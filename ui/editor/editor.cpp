@@ -165,7 +165,7 @@ EditorSnapshot Editor::snapshot() const {
             .shaders = shaders_,
             .palette = palette_,
             .continuity = continuity_,
-            .join = join_,
+            .join = join_.state(),
             .curveTool = curve_,
             .usedMask = usedMask_,
             .windowSize = window_.windowSize(),

@@ -25,6 +25,7 @@
 #include "ui/editor/test_trace.hpp"
 #include "ui/panels/command_panels.hpp"
 #include "ui/panels/dialogs.hpp"
+#include "ui/panels/join_tool.hpp"
 #include "ui/panels/panel_context.hpp"
 #include "ui/panels/panel_shaders.hpp"
 #include "ui/panels/side_panels.hpp"
@@ -59,17 +60,6 @@ struct EditorBenchOptions {
 int runEditorBench(const EditorBenchOptions& options);
 
 enum class Interaction { None, Orbit, Pan, BoxSelect, PendingDrag, DragPoints, Grab };
-
-// The join tool (J, ui/editor/join_tool.cpp): the join runs at once as a preview; the panel changes
-// its continuity, keeps it or takes it back.
-struct JoinToolState {
-    bool on = false;
-    std::optional<PatchEdge> first, hover;  // the first pick; the open edge under the mouse
-    bool preview = false;                   // the join a-b is applied, waiting for Apply or Cancel
-    PatchEdge a, b;
-    Continuity continuity = Continuity::C1;
-    uint64_t version = 0;  // the session's version right after the preview ran
-};
 
 // The curve tool (C, ui/editor/curve_tool.cpp): click points on the construction plane through the
 // 3D cursor (snapping to points, edges and the grid); Enter makes the curve through them.
@@ -202,8 +192,6 @@ private:
     // join_tool.cpp: join by picking (J), its state a JoinToolState.
     void setJoinTool(bool on);
     void joinToolInput(double mx, double my, bool overUi);
-    void joinPreview(Continuity c);  // runs `join a b c`
-    void endJoinPreview(bool keep);  // keep it, or undo it and go back to the second pick
     void drawJoinPanel();
     void drawJoinOverlay(const std::function<void(const Vec3&, const Vec3&, unsigned, float)>& line) const;
     // curve_tool.cpp: draw a curve by clicking (C), its state a CurveToolState.
@@ -243,7 +231,7 @@ private:
     int hoveredGizmo_ = -1;
     float softRadiusPixels_ = 0.0f;                   // the soft-selection circle drawn last frame (0: none; the test trace)
     std::array<float, 4> axisGizmoRect_{0, 0, 0, 0};  // where the axis gizmo went last frame (x, y, w, h; the test trace)
-    JoinToolState join_;
+    JoinTool join_;                                   // join by picking (ui/panels/join_tool)
     CurveToolState curve_;
     // The construction preview: the words asked this frame, and the last ones made with the
     // document version they were made on and the patches they would add (in a scratch document).

@@ -103,7 +103,7 @@ void Editor::toggle(WindowToggle which) {
             fullDetail_ = !fullDetail_;
             break;
         case WindowToggle::JoinTool:
-            setJoinTool(!join_.on);
+            setJoinTool(!join_.state().on);
             break;
         case WindowToggle::CurveTool:
             setCurveTool(!curve_.on);
@@ -137,7 +137,7 @@ bool Editor::toggled(WindowToggle which) const {
         case WindowToggle::FullDetail:
             return fullDetail_;
         case WindowToggle::JoinTool:
-            return join_.on;
+            return join_.state().on;
         case WindowToggle::CurveTool:
             return curve_.on;
         case WindowToggle::XRay:

@@ -75,7 +75,7 @@ void Editor::viewportInput() {
                 beginDrag(true, TransformKind::Move);
             }
             grabAfterShortcut_ = false;
-            if (mode_ == Interaction::None && join_.on) joinToolInput(mx, my, overUi);
+            if (mode_ == Interaction::None && join_.state().on) joinToolInput(mx, my, overUi);
             if (mode_ == Interaction::None && curve_.on) curveToolInput(mx, my, overUi);
             if (mode_ == Interaction::None && !session_.selectedPoints().empty()) {
                 const int keys[3] = {GLFW_KEY_G, GLFW_KEY_R, GLFW_KEY_S};
@@ -87,7 +87,7 @@ void Editor::viewportInput() {
                         beginDrag(true, kinds[k]);
                     }
             }
-            if (mode_ == Interaction::None && !join_.on && !curve_.on && keyPressed(GLFW_KEY_ESCAPE, 0) && !palette_.open) sel_.clear();
+            if (mode_ == Interaction::None && !join_.state().on && !curve_.on && keyPressed(GLFW_KEY_ESCAPE, 0) && !palette_.open) sel_.clear();
         } else {
             transformKeys(mx, my);
         }
@@ -138,7 +138,7 @@ void Editor::viewportInput() {
                 placeCursor(mx, my);
                 break;
             }
-            if (!overUi && mouseValid && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && (join_.on || curve_.on) && !io.KeyAlt)
+            if (!overUi && mouseValid && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && (join_.state().on || curve_.on) && !io.KeyAlt)
                 break;  // the join or curve tool's
             if (!overUi && mouseValid && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
                 const auto press = window_.leftPress();
