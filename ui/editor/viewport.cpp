@@ -87,7 +87,8 @@ void Editor::viewportInput() {
                         beginDrag(true, kinds[k]);
                     }
             }
-            if (mode_ == Interaction::None && !join_.state().on && !curve_.on && keyPressed(GLFW_KEY_ESCAPE, 0) && !palette_.open) sel_.clear();
+            if (mode_ == Interaction::None && !join_.state().on && !curve_.on && keyPressed(GLFW_KEY_ESCAPE, 0) && !palette_.open)
+                sel_.clear();
         } else {
             transformKeys(mx, my);
         }
