@@ -21,6 +21,28 @@ function(patchwork_layer_uses dir out)
   set(${out} ${targets} PARENT_SCOPE)
 endfunction()
 
+# Precompiled headers for the product libraries (PATCHWORK_PCH): the standard library and GLM
+# headers most of their sources include, compiled once by the first library with sources
+# (core/base) and reused by every other one, as the tests reuse one for GoogleTest. On in the
+# sanitizer build (scripts/sanitize.sh: a unity build, which already hides a missing include),
+# off in the Release build, which compiles one file at a time so that every file must include
+# what it uses, and where GCC 12 raises its -Warray-bounds false positives in libstdc++ through
+# the precompiled header. docs/PERFORMANCE.md has the build times with and without.
+option(PATCHWORK_PCH "Precompiled headers for the product libraries" OFF)
+function(patchwork_precompiled_headers target)
+  if(NOT PATCHWORK_PCH)
+    return()
+  endif()
+  get_property(first GLOBAL PROPERTY PATCHWORK_PCH_TARGET)
+  if(NOT first)
+    set_property(GLOBAL PROPERTY PATCHWORK_PCH_TARGET ${target})
+    target_precompile_headers(${target} PRIVATE <algorithm> <array> <cmath> <cstdint> <cstdio> <filesystem> <functional> <map>
+                              <memory> <optional> <string> <string_view> <utility> <vector> <glm/geometric.hpp> <glm/vec3.hpp>)
+  else()
+    target_precompile_headers(${target} REUSE_FROM ${first})
+  endif()
+endfunction()
+
 # patchwork_layer([PUBLIC libs...] [PRIVATE libs...]): the library of the calling folder.
 function(patchwork_layer)
   cmake_parse_arguments(L "" "" "PUBLIC;PRIVATE" ${ARGN})
@@ -32,6 +54,7 @@ function(patchwork_layer)
     add_library(${name} STATIC ${srcs})
     target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR})
     target_link_libraries(${name} PUBLIC ${uses} ${L_PUBLIC} PRIVATE ${L_PRIVATE})
+    patchwork_precompiled_headers(${name})
   else()
     add_library(${name} INTERFACE)
     target_include_directories(${name} INTERFACE ${PROJECT_SOURCE_DIR})
