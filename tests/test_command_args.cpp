@@ -131,6 +131,16 @@ TEST(PanelCommands, OwnLevelsChangeOnlyTheLevels) {
     EXPECT_EQ(s.history().size(), steps);
     t.run(s, host, std::vector<std::string>{"patch-levels", "0", "8", "8", "8", "8", "8", "8"});
     EXPECT_EQ(s.history().size(), steps + 1);
+    // A setting's preview changes neither the shape nor the levels: it travels in render options.
+    const uint64_t settings = s.settingsVersion();
+    t.preview(s, host, {"set", "tess.level", "9"});
+    EXPECT_EQ(s.shapeVersion(), shape);
+    EXPECT_EQ(s.settingsVersion(), settings + 1);
+    // A net's tension previewed is the shape: the scene is uploaded while the slider moves.
+    run(s, "add-net 5 5 flat catmull-rom");
+    const uint64_t netShape = s.shapeVersion();
+    t.preview(s, host, {"net-tension", "0", "0.2"});
+    EXPECT_GT(s.shapeVersion(), netShape);
     run(s, "patch-levels 0 off");
     EXPECT_FALSE(s.doc.patches[0].tessOverride.has_value());
     run(s, "undo");

@@ -24,7 +24,7 @@ void execSet(CommandContext& ctx) {
     const std::vector<double> values = parseSettingValues(*s, ctx.rest(1));
     if (ctx.preview) {
         s->set(ctx.session.doc, values);
-        ctx.session.changed(false);
+        ctx.session.changedSettings();
         return;
     }
     ctx.session.apply(

@@ -53,8 +53,15 @@ public:
     // Bumped with version() except when only items' own tessellation levels changed
     // (changedLevels): a renderer rewrites their levels in place instead of uploading the scene.
     uint64_t shapeVersion() const { return shapeVersion_; }
+    // Bumped by changedSettings: a preview of document settings that travel in a renderer's
+    // options (levels, shading, …), so that nothing needs uploading while a slider moves.
+    uint64_t settingsVersion() const { return settingsVersion_; }
     void changed(bool topology);
     void changedLevels() { ++version_; }
+    void changedSettings() {
+        ++version_;
+        ++settingsVersion_;
+    }
 
     // Replaces the document (new, open, recover): history cleared, saved state, camera from the
     // document, selection cleared.
@@ -102,7 +109,7 @@ private:
     Document committed_;
     EditHistory history_;
     std::string path_;
-    uint64_t generation_ = 0, version_ = 0, topologyVersion_ = 0, shapeVersion_ = 0, serial_ = 0;
+    uint64_t generation_ = 0, version_ = 0, topologyVersion_ = 0, shapeVersion_ = 0, settingsVersion_ = 0, serial_ = 0;
     bool forceModified_ = false;
     std::vector<std::string> notes_;
     void markCommitted();

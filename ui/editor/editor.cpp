@@ -130,6 +130,7 @@ void Editor::documentChanged(bool topology) {
     seenVersion_ = session_.version();
     seenTopology_ = session_.topologyVersion();
     seenShape_ = session_.shapeVersion();
+    seenSettings_ = session_.settingsVersion();
     ++docVersion_;
     wake();
 }
@@ -148,13 +149,19 @@ void Editor::runCommand(const std::vector<std::string>& words, bool guarded) {
     } catch (const std::exception& e) {
         showError(std::string("The command did not run; the document is unchanged.\n\n") + e.what());
     }
-    if (session_.documentSerial() != seenSerial_)
-        documentReplaced();
-    else if (session_.version() != seenVersion_ && session_.shapeVersion() == seenShape_)
-        levelsChanged();  // only items' own levels: rewritten in place
-    else if (session_.version() != seenVersion_)
-        documentChanged(session_.topologyVersion() != seenTopology_);
+    followSession();
     wake();
+}
+
+void Editor::followSession() {
+    if (session_.documentSerial() != seenSerial_) return documentReplaced();
+    if (session_.version() == seenVersion_) return;
+    if (session_.shapeVersion() != seenShape_) return documentChanged(session_.topologyVersion() != seenTopology_);
+    if (session_.settingsVersion() == seenSettings_) return levelsChanged();  // only items' own levels: rewritten in place
+    // Settings travel in the render options: nothing to upload while a slider moves.
+    seenVersion_ = session_.version();
+    seenSettings_ = session_.settingsVersion();
+    settingsChanged();
 }
 
 EditorSnapshot Editor::snapshot() const {
@@ -187,11 +194,7 @@ void Editor::previewCommand(const std::vector<std::string>& words) {
     } catch (const std::exception&) {
         return;  // the document is unchanged; the runCommand on release reports the error
     }
-    if (session_.version() != seenVersion_ && session_.shapeVersion() == seenShape_) return levelsChanged();
-    // Settings travel in the render options: nothing to upload while the slider moves.
-    seenVersion_ = session_.version();
-    seenShape_ = session_.shapeVersion();
-    settingsChanged();
+    followSession();  // a net's tension or an item's own displacement is uploaded, settings and levels are not
 }
 
 void Editor::showError(const std::string& message) {

@@ -131,6 +131,9 @@ private:
     const CommandTable& commands() const override { return commands_; }
     CommandHost& host() override { return *this; }
     void runCommand(const std::vector<std::string>& words, bool guarded = true) override;
+    // After a command or a preview: what changed in the session reaches the renderer (a new
+    // document, the scene uploaded, items' levels rewritten in place, or settings only).
+    void followSession();
     void previewCommand(const std::vector<std::string>& words) override;
     void previewConstruction(const std::vector<std::string>& words) override;  // construction_preview.cpp
     void documentChanged(bool topology) override;                              // re-upload
@@ -214,8 +217,8 @@ private:
     Document& doc_ = session_.doc;
     Selection& sel_ = session_.sel;
     Camera& cam_ = session_.camera;
-    Edge& lastEdge_ = session_.activeEdge;                                          // edge nearest the last surface click (extrude, unjoin)
-    uint64_t seenVersion_ = 0, seenTopology_ = 0, seenShape_ = 0, seenSerial_ = 0;  // the session as last drawn
+    Edge& lastEdge_ = session_.activeEdge;  // edge nearest the last surface click (extrude, unjoin)
+    uint64_t seenVersion_ = 0, seenTopology_ = 0, seenShape_ = 0, seenSettings_ = 0, seenSerial_ = 0;  // the session as last drawn
     uint64_t docVersion_ = 0;  // bumped by every edit and settings change (caches of the document)
     std::vector<bool> usedMask_;
     // The document's height map (displacement), loaded when the file it names changes; a map that
