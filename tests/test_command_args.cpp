@@ -8,6 +8,7 @@
 
 #include "core/base/errors.hpp"
 #include "core/commands/command_table.hpp"
+#include "core/select/soft_selection.hpp"
 #include "core/solve/constraint_solver.hpp"
 
 using namespace pw;
@@ -50,7 +51,7 @@ TEST(CommandArgs, UsageIsWrittenFromTheForms) {
     EXPECT_EQ(commandUsage(command(t, "move")), "DX DY DZ");
     EXPECT_EQ(commandUsage(command(t, "scale")), "S | SX SY SZ");
     EXPECT_EQ(commandUsage(command(t, "rotate")), "X|Y|Z DEG");
-    EXPECT_EQ(commandUsage(command(t, "soft")), "on|off|toggle | RADIUS [smooth|linear|sharp|constant]");
+    EXPECT_EQ(commandUsage(command(t, "soft")), "on|off|toggle [smooth|linear|sharp|constant] | RADIUS [smooth|linear|sharp|constant]");
     EXPECT_EQ(commandUsage(command(t, "undo")), "");
     // Every form is well made: optional arguments only at the end, a repeated one only last, a
     // choice with choices; every command has an exec function.
@@ -86,6 +87,18 @@ TEST(CommandArgs, WordsAreCheckedBeforeTheCommandRuns) {
     EXPECT_TRUE(s.soft.on);
     EXPECT_DOUBLE_EQ(s.soft.radius, 0.5);
     EXPECT_EQ(failure("", "soft 0.5 wobbly"), "soft: expected smooth, linear, sharp or constant, got 'wobbly'");
+    run(s, "soft on sharp");  // a mode and a falloff, as before the forms
+    EXPECT_EQ(s.soft.falloff, *parseFalloff("sharp"));
+    // A whole number may be written as one ("5.0"), and a choice may take either case where it did.
+    run(s, "add-net 5.0 5");
+    EXPECT_EQ(s.doc.surfaces.back().rows, 5u);
+    EXPECT_EQ(failure("", "add-net 5.5 5"), "add-net: ROWS: expected a whole number, got '5.5'");
+    EXPECT_EQ(failure("", "slide W 1"), "slide: expected u, v or n, got 'W'");
+    EXPECT_NE(failure("", "slide U 1"), "slide: expected u, v or n, got 'U'");
+    // A command that is not available now cannot be previewed either.
+    QuietHost host;
+    EditSession empty;
+    EXPECT_THROW(makeCommandTable().preview(empty, host, {"displacement-own", "1", "0"}), EditError);
 }
 
 TEST(PanelCommands, RenameAndPlaceAPointAreOneUndoStepEach) {

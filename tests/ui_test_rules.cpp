@@ -227,12 +227,30 @@ TEST_F(Ui, TheInspectorAndTheNetPanelRunCommands) {
     click(drawInspector, "inspector.patchOverride");
     EXPECT_FALSE(ctx.session().doc.patches[0].tessOverride.has_value());
 
+    // A name typed for patch 0 stays patch 0's when patch 1 is selected before Enter.
+    ctx.runCommand({"cursor", "3", "0", "0"}, true);
+    ctx.runCommand({"add-patch"}, true);
+    ctx.runCommand({"select", "patch", "0"}, true);
+    click(drawInspector, "inspector.patchName");
+    ImGui::GetIO().AddInputCharactersUTF8("lid");
+    frame(drawInspector);
+    ctx.runCommand({"select", "patch", "1"}, true);  // as a click in the view does
+    ImGui::GetIO().MousePos = ImVec2(5, 870);
+    ImGui::GetIO().MouseDown[0] = true;  // a click elsewhere ends the typing
+    frame(drawInspector);
+    ImGui::GetIO().MouseDown[0] = false;
+    frame(drawInspector);
+    frame(drawInspector);
+    EXPECT_EQ(ctx.session().doc.patches[0].name.substr(ctx.session().doc.patches[0].name.size() - 3), "lid");
+    EXPECT_EQ(ctx.session().doc.patches[1].name.find("lid"), std::string::npos);
+    EXPECT_EQ(ctx.session().history().undoLabel(), "Rename patch");
+
     ctx.runCommand({"add-net", "7", "7"}, true);
     ASSERT_EQ(ctx.session().sel.surface, 0);
     NetPanel net;
     click([&] { net.draw(ctx); }, "net.toPatches");
     EXPECT_TRUE(ctx.session().doc.surfaces.empty());
-    EXPECT_EQ(ctx.session().doc.patches.size(), 17u);
+    EXPECT_EQ(ctx.session().doc.patches.size(), 18u);
     EXPECT_EQ(ctx.session().history().undoLabel(), "Convert net to patches");
     EXPECT_TRUE(ctx.errors.empty()) << ::testing::PrintToString(ctx.errors);
 }

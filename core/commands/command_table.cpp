@@ -1,6 +1,7 @@
 #include "core/commands/command_table.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -100,16 +101,22 @@ std::optional<ArgValue> checkArg(const CommandArg& a, const std::string& word, c
                 v.number = commandNumber(word, a.name.c_str());
                 break;
             case ArgType::Count: {
-                uint64_t k = 0;
+                double k = 0.0;
                 const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), k);
-                if (ec != std::errc() || ptr != word.data() + word.size() || k > uint64_t(limits::kMaxPoints))
+                if (ec != std::errc() || ptr != word.data() + word.size() || !(k >= 0.0 && k <= double(limits::kMaxPoints)) ||
+                    k != std::floor(k))
                     throw EditError(a.name + ": expected a whole number, got '" + word + "'");
                 v.index = uint32_t(k);
-                v.number = double(k);
+                v.number = k;
                 break;
             }
             case ArgType::Choice: {
-                const auto it = std::find(a.choices.begin(), a.choices.end(), word);
+                const auto same = [&](const std::string& c) {
+                    return a.anyCase ? std::equal(c.begin(), c.end(), word.begin(), word.end(),
+                                                  [](char x, char y) { return std::tolower(uint8_t(x)) == std::tolower(uint8_t(y)); })
+                                     : c == word;
+                };
+                const auto it = std::find_if(a.choices.begin(), a.choices.end(), same);
                 if (it == a.choices.end()) {
                     std::string list;
                     for (size_t i = 0; i < a.choices.size(); ++i)
@@ -176,26 +183,27 @@ static void bindArgs(CommandContext& ctx) {
     const std::vector<CommandForm> none(1);
     const std::vector<CommandForm>& forms = c.forms.empty() ? none : c.forms;
     const size_t n = ctx.args.size();
-    std::string firstWhy;
-    size_t fitting = 0;
+    std::string bestWhy;  // of the form that fitted the most words before one failed
+    size_t fitting = 0, bestDepth = 0;
     for (size_t f = 0; f < forms.size(); ++f) {
         const auto [least, most] = formArity(forms[f]);
         if (n < least || n > most) continue;
         ++fitting;
         std::vector<ArgValue> values;
         std::string why;
+        size_t depth = 0;
         for (size_t i = 0; i < n && why.empty(); ++i) {
             const CommandArg& a = forms[f][std::min(i, forms[f].size() - 1)];
-            if (const auto v = checkArg(a, ctx.args[i], ctx.session.doc, why)) values.push_back(*v);
+            if (const auto v = checkArg(a, ctx.args[i], ctx.session.doc, why)) values.push_back(*v), depth = i + 1;
         }
         if (why.empty()) {
             ctx.form = f;
             ctx.values = std::move(values);
             return;
         }
-        if (firstWhy.empty()) firstWhy = why;
+        if (bestWhy.empty() || depth > bestDepth) bestWhy = why, bestDepth = depth;
     }
-    if (fitting > 0) throw EditError(firstWhy);
+    if (fitting > 0) throw EditError(bestWhy);
     size_t least = std::numeric_limits<size_t>::max(), most = 0;
     for (const CommandForm& f : forms) {
         const auto [l, m] = formArity(f);
@@ -218,6 +226,7 @@ void CommandTable::preview(EditSession& session, CommandHost& host, const std::v
     if (words.empty()) return;
     const Command* c = find(words.front());
     if (!c || !c->previewable) throw EditError("'" + (words.front()) + "' cannot be previewed");
+    if (!isEnabled(*c, session)) throw EditError("'" + c->name + "' is not available now: " + c->help);
     CommandContext ctx{*c, session, host, std::vector<std::string>(words.begin() + 1, words.end()), true, true};
     try {
         bindArgs(ctx);

@@ -71,7 +71,7 @@ public:
 enum class ArgType : uint8_t {
     Word,      // any word: a name, a key, a list, a point "X,Y,Z"
     Number,    // a finite number within the coordinate limit (commandNumber)
-    Count,     // a whole number ≥ 0
+    Count,     // a whole number ≥ 0 ("5" or "5.0")
     Choice,    // one of the argument's `choices`, as written
     Axis,      // X, Y or Z (either case)
     Edge,      // a patch edge u0, v0, u1 or v1
@@ -88,6 +88,7 @@ struct CommandArg {
     std::vector<std::string> choices;  // ArgType::Choice
     bool optional = false;             // may be left out (with every argument after it)
     bool repeated = false;             // the last argument only: takes every word left (one or more)
+    bool anyCase = false;              // a Choice taken in either case ("U" for "u")
     std::string shown;                 // the usage text where the name alone does not say it ("C C ... [closed]")
 };
 // One way to call a command: its arguments in order. A command with several forms ("scale S" and
@@ -116,6 +117,10 @@ inline CommandArg opt(CommandArg a) {
 }
 inline CommandArg many(CommandArg a) {
     a.repeated = true;
+    return a;
+}
+inline CommandArg anyCase(CommandArg a) {
+    a.anyCase = true;
     return a;
 }
 inline CommandArg shown(CommandArg a, std::string text) {

@@ -21,16 +21,13 @@ void execRename(CommandContext& ctx) {
     const char* what[4] = {"patch", "net", "triangle", "curve"};
     const uint32_t i = commandIndex(ctx.word(1), counts[kind], what[kind]);
     if (name.find_first_of("\n\r") != std::string::npos) throw EditError("a name is one line");
-    ctx.session.apply(
-        std::string("Rename ") + what[kind],
-        [&](Document& d) {
-            std::string& field = kind == 0   ? d.patches[i].name
-                                 : kind == 1 ? d.surfaces[i].name
-                                 : kind == 2 ? d.triangles[i].name
-                                             : d.curves[i].name;
-            field = name;
-        },
-        false);
+    ctx.session.applyOutsideScene(std::string("Rename ") + what[kind], [&](Document& d) {
+        std::string& field = kind == 0   ? d.patches[i].name
+                             : kind == 1 ? d.surfaces[i].name
+                             : kind == 2 ? d.triangles[i].name
+                                         : d.curves[i].name;
+        field = name;
+    });
 }
 
 // `point P X Y Z`: pool point P at (X, Y, Z), its mirror partner under live symmetry too; the joins

@@ -203,8 +203,8 @@ void execSoft(CommandContext& ctx) {
         next.radius = ctx.number(0);
         if (!(next.radius > 0.0)) throw EditError("the radius must be a positive number, got " + ctx.word(0));
         next.on = true;
-        if (ctx.has(1)) next.falloff = *parseFalloff(ctx.word(1));
     }
+    if (ctx.has(1)) next.falloff = *parseFalloff(ctx.word(1));
     soft = next;
     ctx.host.status(softDescription(soft));
 }
@@ -236,7 +236,7 @@ void addSelectCommands(CommandTable& t) {
            .exec = execMove});
     t.add({.name = "slide",
            .label = "Slide",
-           .forms = {{choice("DIR", {"u", "v", "n"}), number("DIST")}},
+           .forms = {{anyCase(choice("DIR", {"u", "v", "n"})), number("DIST")}},
            .help = "Slide each selected point along its own control polygon in u or v, or along the surface normal there (n), by "
                    "DIST (Rhino's UVN move); soft selection slides the points around it along theirs, and joins are held",
            .exec = execSlide});
@@ -281,7 +281,7 @@ void addSelectCommands(CommandTable& t) {
     t.add({.name = "soft",
            .label = "Soft Selection",
            .menu = "Select",
-           .forms = {{choice("MODE", {"on", "off", "toggle"})},
+           .forms = {{choice("MODE", {"on", "off", "toggle"}), opt(choice("FALLOFF", {"smooth", "linear", "sharp", "constant"}))},
                      {number("RADIUS"), opt(choice("FALLOFF", {"smooth", "linear", "sharp", "constant"}))}},
            .help = "Soft selection (Blender's proportional editing): transforms also carry the points within RADIUS of the moved ones, "
                    "measured along the control nets and across joins, by the falloff; the joins are held as always. The wheel "

@@ -50,34 +50,29 @@ void execTriangleLevels(CommandContext& ctx) {
 void execTessFixed(CommandContext& ctx) {
     const Spacing spacing = *parseSpacing(ctx.word(0));
     const std::array<float, 6> l = levelWords<6>(ctx, 1);
-    ctx.session.apply(
-        "Keep levels",
-        [&](Document& d) {
-            TessSettings& t = d.tess;
-            t.adaptive = AdaptiveMode::None;
-            t.spacing = spacing;
-            t.outer = {l[0], l[1], l[2], l[3]};
-            t.inner = {l[4], l[5]};
-            t.linked = false;
-        },
-        false);
+    ctx.session.applyOutsideScene("Keep levels", [&](Document& d) {
+        TessSettings& t = d.tess;
+        t.adaptive = AdaptiveMode::None;
+        t.spacing = spacing;
+        t.outer = {l[0], l[1], l[2], l[3]};
+        t.inner = {l[4], l[5]};
+        t.linked = false;
+    });
 }
 
 // `adaptive-preset notes|notes-edges|notes-terrain`: a distance formula of the notes as the
 // document's adaptive tessellation.
 void execAdaptivePreset(CommandContext& ctx) {
     const uint32_t which = ctx.index(0);
-    ctx.session.apply(
-        which == 0   ? "Distance formula of the notes"
-        : which == 1 ? "Distance formula of the notes, per edge"
-                     : "Terrain formula of the notes",
-        [&](Document& d) {
-            if (which == 2)
-                applyNotesTerrainFormula(d.tess);
-            else
-                applyNotesDistanceFormula(d.tess, which == 0);
-        },
-        false);
+    ctx.session.applyOutsideScene(which == 0   ? "Distance formula of the notes"
+                                  : which == 1 ? "Distance formula of the notes, per edge"
+                                               : "Terrain formula of the notes",
+                                  [&](Document& d) {
+                                      if (which == 2)
+                                          applyNotesTerrainFormula(d.tess);
+                                      else
+                                          applyNotesDistanceFormula(d.tess, which == 0);
+                                  });
 }
 
 }  // namespace

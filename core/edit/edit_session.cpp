@@ -127,6 +127,16 @@ void EditSession::applyLevels(const std::string& label, const std::function<void
     changedLevels();
 }
 
+void EditSession::applyOutsideScene(const std::string& label, const std::function<void(Document&)>& op) {
+    Document d = doc;
+    op(d);
+    doc = std::move(d);
+    const uint64_t shape = shapeVersion_;
+    commit(label);
+    shapeVersion_ = shape;
+    changedSettings();
+}
+
 Document EditSession::documentToSave() const {
     Document out = doc;
     out.camera = camera;

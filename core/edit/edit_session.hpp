@@ -84,6 +84,9 @@ public:
     void apply(const std::string& label, const std::function<void(Document&)>& op, bool topology = true, bool detected = false);
     // The same for an edit of items' own tessellation levels only (changedLevels).
     void applyLevels(const std::string& label, const std::function<void(Document&)>& op);
+    // The same for an edit of what a renderer's scene does not hold: settings that travel in its
+    // options, names (changedSettings: nothing to upload).
+    void applyOutsideScene(const std::string& label, const std::function<void(Document&)>& op);
 
     // The document as it is saved: doc with the session's camera.
     Document documentToSave() const;

@@ -45,14 +45,15 @@ void drawDisplacementPanel(PanelContext& ctx) {
     const float speed = float(std::max(modelSize(s.doc), 1e-6) * 1e-3);
     // The selection's own scale and bias: the displacement-own command (previewed while dragged,
     // one undo step on release).
-    if (const std::optional<DisplacementOverride>* own = selectedOwn(s)) {
-        bool has = own->has_value();
+    if (const std::optional<DisplacementOverride>* selected = selectedOwn(s)) {
+        const std::optional<DisplacementOverride> own = *selected;  // a copy: a command replaces the arrays
+        bool has = own.has_value();
         if (ImGui::Checkbox("Own scale and bias", &has))
             ctx.runCommand(has ? std::vector<std::string>{"displacement-own", commandWord(d.scale), commandWord(d.bias)}
                                : std::vector<std::string>{"displacement-own", "off"});
         tip("The selected patch, net or triangle displaced by its own scale and bias");
-        if (own->has_value()) {
-            float scale = (*own)->scale, bias = (*own)->bias;
+        if (own.has_value()) {
+            float scale = own->scale, bias = own->bias;
             for (float* v : {&scale, &bias}) {
                 const bool moved = ImGui::DragFloat(v == &scale ? "Own scale" : "Own bias", v, speed, -1e6f, 1e6f, "%.4g");
                 const std::vector<std::string> words{"displacement-own", commandWord(scale), commandWord(bias)};

@@ -2,6 +2,7 @@
 // core/edit/drag_controller.hpp's HeldPointEdit), the selected patch's or triangle's name and own
 // tessellation levels, and the selected points' weight.
 #include <imgui.h>
+#include <imgui_internal.h>  // ImGui::GetActiveID: is the Name field still being edited
 
 #include <cstdio>
 #include <initializer_list>
@@ -27,15 +28,23 @@ struct OwnLevelsText {
 
 // The name row and the own-levels rows of item `index`, a patch (4 outer + 2 inner) or a triangle
 // (3 + 1): the `rename` and `patch-levels` / `triangle-levels` commands (previewed while a slider
-// moves, one undo step on release). `typedName` keeps the name being typed between frames.
+// moves, one undo step on release). `name` and `levels` are copies: a command replaces the
+// document's arrays. `typed` keeps the name being typed, and for which item, between frames.
 template <size_t N>
-void ownLevelsRows(PanelContext& ctx, const OwnLevelsText& t, uint32_t index, const std::string& name,
-                   const std::optional<std::array<float, N>>& levels, int outerCount, std::string& typedName) {
+void ownLevelsRows(PanelContext& ctx, const OwnLevelsText& t, uint32_t index, const std::string name,
+                   const std::optional<std::array<float, N>> levels, int outerCount, std::optional<TypedName>& typed) {
     const std::string id = t.id, item = std::to_string(index);
     char buf[128];
     std::snprintf(buf, sizeof buf, "%s", name.c_str());
-    if (widget::InputText(("Name##inspector." + id + "Name").c_str(), buf, sizeof buf)) typedName = buf;
-    if (ImGui::IsItemDeactivatedAfterEdit()) ctx.runCommand({"rename", t.what, item, typedName});
+    ImGui::PushID(int(index));  // each item's own field: a name typed for one never lands on another
+    if (widget::InputText(("Name##inspector." + id + "Name").c_str(), buf, sizeof buf))
+        typed = TypedName{t.what, index, buf, ImGui::GetItemID()};
+    const bool done = ImGui::IsItemDeactivatedAfterEdit();
+    ImGui::PopID();
+    if (done && typed) {
+        ctx.runCommand({"rename", typed->what, std::to_string(typed->index), typed->text});
+        typed.reset();
+    }
     tip("Name shown in the outliner");
     bool ov = levels.has_value();
     if (widget::Checkbox(("Override tessellation##inspector." + id + "Override").c_str(), &ov)) {
@@ -123,6 +132,12 @@ void weightRow(PanelContext& ctx, const std::vector<uint32_t>& points) {
 }  // namespace
 
 void InspectorPanel::draw(PanelContext& ctx) {
+    // A name typed into a field that is no longer being edited (another item was clicked, the
+    // selection cleared) is applied to the item it was typed for, as a click elsewhere applies it.
+    if (typedName_ && ImGui::GetActiveID() != typedName_->field) {
+        ctx.runCommand({"rename", typedName_->what, std::to_string(typedName_->index), typedName_->text});
+        typedName_.reset();
+    }
     if (!ImGui::CollapsingHeader("Inspector", ImGuiTreeNodeFlags_DefaultOpen)) return;
     EditSession& s = ctx.session();
     const Document& doc = s.doc;

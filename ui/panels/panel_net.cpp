@@ -105,31 +105,37 @@ void NetPanel::drawActive(PanelContext& ctx, uint32_t si) {
     const Surface& net = doc.surfaces[si];
     ImGui::Text("Net %d  %s: %u x %u, %s%s%s", int(si), net.name.c_str(), net.rows, net.cols, basisName(net.basis).data(),
                 net.closedU ? ", closed u" : "", net.closedV ? ", closed v" : "");
+    // What the rows below show, read before any of them runs a command (a command replaces the
+    // document's arrays, `net` with them).
+    const Basis netBasis = net.basis;
+    const float netTension = float(net.tension);
+    bool keep = net.keepC1, cu = net.closedU, cv = net.closedV;
+    const auto problem = netLayoutProblem(net);
+    const auto cell = sel.points.size() == 1 ? netCell(net, sel.points.front()) : std::nullopt;
+    const uint32_t row = cell ? cell->first : net.rows - 1, col = cell ? cell->second : net.cols - 1;
 
     // Basis, tension, continuity: the net commands.
     const std::string n = std::to_string(si);
-    int basis = net.basis == Basis::Bezier ? 0 : net.basis == Basis::BSpline ? 1 : 2;
+    int basis = netBasis == Basis::Bezier ? 0 : netBasis == Basis::BSpline ? 1 : 2;
     ImGui::SetNextItemWidth(120 * uiScale);
     if (ImGui::Combo("Basis##net", &basis, kBasisNames, 3)) ctx.runCommand({"net-basis", n, kBasisWords[basis]});
     tip("The same net under another basis: Bézier (windows step by 3, C0 or kept C1), uniform B-spline (C2, "
         "approximating) or Catmull-Rom (C1, through its inner points)");
-    if (net.basis == Basis::CatmullRom) {
-        float tension = float(net.tension);
+    if (netBasis == Basis::CatmullRom) {
+        float tension = netTension;
         ImGui::SetNextItemWidth(120 * uiScale);
         const bool moved = ImGui::SliderFloat("Tension", &tension, 0.0f, 1.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp);
         if (moved) ctx.previewCommand({"net-tension", n, commandWord(tension)});
         if (ImGui::IsItemDeactivatedAfterEdit()) ctx.runCommand({"net-tension", n, commandWord(tension)});
         tip("Catmull-Rom tension: 0.5 is the classic spline, 0 gives straight segments");
     }
-    if (net.basis == Basis::Bezier) {
-        bool keep = net.keepC1;
+    if (netBasis == Basis::Bezier) {
         if (ImGui::Checkbox("Keep C1 across windows", &keep)) ctx.runCommand({"net-keep-c1", n, keep ? "on" : "off"});
         tip("Hold every seam point midway between its neighbours while you drag (otherwise the windows only meet C0)");
     }
-    if (auto problem = netLayoutProblem(net)) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "%s", problem->c_str());
+    if (problem) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "%s", problem->c_str());
 
     // Closing.
-    bool cu = net.closedU, cv = net.closedV;
     if (ImGui::Checkbox("Closed u", &cu)) ctx.runCommand({"net-closed", n, "u", cu ? "on" : "off"});
     tip("Columns wrap around: the last window joins the first (tubes, rings)");
     ImGui::SameLine();
@@ -137,8 +143,6 @@ void NetPanel::drawActive(PanelContext& ctx, uint32_t si) {
     tip("Rows wrap around");
 
     // Rows and columns at the selected point (else at the end).
-    const auto cell = sel.points.size() == 1 ? netCell(net, sel.points.front()) : std::nullopt;
-    const uint32_t row = cell ? cell->first : net.rows - 1, col = cell ? cell->second : net.cols - 1;
     if (ImGui::Button("Insert row")) ctx.runCommand({"net-insert", n, "row", std::to_string(row + 1)});
     tip("A new row after the selected point's row (or at the end): midway between its neighbours");
     ImGui::SameLine();

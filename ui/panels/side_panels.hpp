@@ -26,14 +26,22 @@ void drawDisplayPanel(PanelContext& ctx);
 void drawDisplacementPanel(PanelContext& ctx);  // ui/panels/panel_displacement.cpp
 void drawStatsPanel(const FrameReport& report);
 
+// A name being typed into the Inspector: for which item, and the field's ImGui id.
+struct TypedName {
+    std::string what;  // "patch", "triangle"
+    uint32_t index = 0;
+    std::string text;
+    unsigned field = 0;
+};
+
 class InspectorPanel {  // panel_inspector.cpp: the selected point, patch or triangle
 public:
     void draw(PanelContext& ctx);
     void documentReplaced() { held_.reset(); }
 
 private:
-    HeldPointEdit held_;     // dragging the Position row holds the joins like a drag in the view
-    std::string typedName_;  // the name being typed into a Name row
+    HeldPointEdit held_;                  // dragging the Position row holds the joins like a drag in the view
+    std::optional<TypedName> typedName_;  // the name being typed into a Name row
     void setPoint(PanelContext& ctx, uint32_t p, const Vec3& position);
 };
 
