@@ -117,24 +117,14 @@ void EditSession::apply(const std::string& label, const std::function<void(Docum
     changed(topology);
 }
 
-void EditSession::applyLevels(const std::string& label, const std::function<void(Document&)>& op) {
+void EditSession::applyKeepingShape(const std::string& label, const std::function<void(Document&)>& op, bool levels) {
     Document d = doc;
     op(d);
     doc = std::move(d);
     const uint64_t shape = shapeVersion_;
     commit(label);
     shapeVersion_ = shape;
-    changedLevels();
-}
-
-void EditSession::applyOutsideScene(const std::string& label, const std::function<void(Document&)>& op) {
-    Document d = doc;
-    op(d);
-    doc = std::move(d);
-    const uint64_t shape = shapeVersion_;
-    commit(label);
-    shapeVersion_ = shape;
-    changedSettings();
+    levels ? changedLevels() : changedSettings();
 }
 
 Document EditSession::documentToSave() const {

@@ -83,10 +83,10 @@ public:
     // off by detection's own tolerance (1e-4 × model size) like a file that is opened.
     void apply(const std::string& label, const std::function<void(Document&)>& op, bool topology = true, bool detected = false);
     // The same for an edit of items' own tessellation levels only (changedLevels).
-    void applyLevels(const std::string& label, const std::function<void(Document&)>& op);
+    void applyLevels(const std::string& label, const std::function<void(Document&)>& op) { applyKeepingShape(label, op, true); }
     // The same for an edit of what a renderer's scene does not hold: settings that travel in its
     // options, names (changedSettings: nothing to upload).
-    void applyOutsideScene(const std::string& label, const std::function<void(Document&)>& op);
+    void applyOutsideScene(const std::string& label, const std::function<void(Document&)>& op) { applyKeepingShape(label, op, false); }
 
     // The document as it is saved: doc with the session's camera.
     Document documentToSave() const;
@@ -116,6 +116,8 @@ private:
     bool forceModified_ = false;
     std::vector<std::string> notes_;
     void markCommitted();
+    // apply() for an edit that leaves what the scene holds: the shape version stays.
+    void applyKeepingShape(const std::string& label, const std::function<void(Document&)>& op, bool levels);
     bool step(bool forward);  // undo (false) or redo (true)
 };
 
