@@ -43,18 +43,23 @@
 #include <filesystem>
 #include <numbers>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "core/base/errors.hpp"
 #include "core/base/up_axis.hpp"
 #include "core/construct/primitives.hpp"
 #include "core/edit/edit_session.hpp"
+#include "core/eval/bezier_triangle.hpp"
 #include "core/io/bpt_format.hpp"
+#include "core/io/cad_labels.hpp"
 #include "core/io/occt_support.hpp"
 #include "core/io/patchwork_format.hpp"
 #include "core/io/step_export.hpp"
 #include "core/io/step_import.hpp"
 #include "core/mesh/mesh_tessellate.hpp"
+#include "core/ops/net_ops.hpp"
+#include "core/ops/patch_ops.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;
@@ -409,4 +414,101 @@ TEST(IgesExport, TheSameSolidsInTheDocumentsUnit) {
     EXPECT_NE(r.output.find("(1 closed: a solid)"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("IGES"), std::string::npos) << r.output;
     fs::remove_all(dir);
+}
+
+namespace {
+double worstPointDistance(const pw::Document& a, const std::vector<uint32_t>& ia, const pw::Document& b, const std::vector<uint32_t>& ib) {
+    EXPECT_EQ(ia.size(), ib.size());
+    double worst = 0.0;
+    for (size_t k = 0; k < std::min(ia.size(), ib.size()); ++k) worst = std::max(worst, glm::length(a.points[ia[k]] - b.points[ib[k]]));
+    return worst;
+}
+template <class Idx>
+std::vector<uint32_t> ids(const Idx& idx) {
+    return std::vector<uint32_t>(idx.begin(), idx.end());
+}
+}  // namespace
+
+// A STEP round trip gives back the same items in the same places: patches keep their numbers even
+// where the sewn shells interleave them (the teapot's bottom is sewn to its body), a C2 B-spline
+// net comes back one net with its layout, closed where it was, even a flat one, Bézier triangles
+// come back triangles, and names stay names while unnamed items stay unnamed.
+TEST(StepRoundTrip, ItemsComeBackInTheirPlacesAsTheyWere) {
+    const fs::path dir = pw::test::freshTempDir("step-round-trip");
+    pw::Document doc = pw::loadBpt(pw::test::dataDir() / "teapot.bpt");
+    doc.patches[3].name = "rim 3";
+    pw::addNetSurface(doc, 8, 10, pw::NetShape::Tube, pw::Basis::BSpline, pw::Vec3(10.0, 0.0, 0.0), 4.0);
+    pw::addNetSurface(doc, 5, 6, pw::NetShape::Flat, pw::Basis::BSpline, pw::Vec3(-10.0, 0.0, 0.0), 4.0);
+    doc.surfaces[0].name = "tube";
+    doc.surfaces[1].name.clear();
+    pw::addTriangle(doc, pw::Vec3(0.0, 10.0, 0.0), 2.0);
+    pw::addTriangle(doc, pw::Vec3(0.0, -10.0, 0.0), 2.0);
+    doc.points[doc.triangles[0].idx[4]].z += 0.6;  // a dome
+    doc.triangles[1].name = "lid";
+    ASSERT_EQ(doc.triangles[0].name, "triangle 0");
+    pw::exportStep(doc, dir / "all.step");
+    const std::string text = pw::test::readBytes(dir / "all.step");
+    EXPECT_NE(text.find("ADVANCED_FACE('patch 30'"), std::string::npos) << "unnamed items are labelled with their place";
+    EXPECT_NE(text.find("ADVANCED_FACE('rim 3'"), std::string::npos);
+    const pw::Document back = pw::importCadSurfaces(dir / "all.step");
+    ASSERT_EQ(back.patches.size(), doc.patches.size());
+    ASSERT_EQ(back.surfaces.size(), doc.surfaces.size());
+    ASSERT_EQ(back.triangles.size(), doc.triangles.size());
+    const double size = pw::modelSize(doc);
+    for (size_t p = 0; p < doc.patches.size(); ++p) {
+        SCOPED_TRACE("patch " + std::to_string(p));
+        EXPECT_EQ(back.patches[p].name, doc.patches[p].name);
+        EXPECT_LT(worstPointDistance(doc, ids(doc.patches[p].idx), back, ids(back.patches[p].idx)), 1e-9 * size);
+    }
+    for (size_t s = 0; s < doc.surfaces.size(); ++s) {
+        SCOPED_TRACE("net " + std::to_string(s));
+        const pw::Surface &a = doc.surfaces[s], &b = back.surfaces[s];
+        EXPECT_EQ(b.name, a.name);
+        EXPECT_EQ(b.basis, pw::Basis::BSpline);
+        EXPECT_EQ(std::tie(b.rows, b.cols, b.closedU, b.closedV), std::tie(a.rows, a.cols, a.closedU, a.closedV));
+        EXPECT_LT(worstPointDistance(doc, a.idx, back, b.idx), 1e-9 * size);
+    }
+    for (size_t t = 0; t < doc.triangles.size(); ++t) {
+        SCOPED_TRACE("triangle " + std::to_string(t));
+        // "triangle 0" on triangle 0 (the name add-triangle gives) reads as its place: unnamed.
+        const std::string& name = doc.triangles[t].name;
+        EXPECT_EQ(back.triangles[t].name, name == pw::cadFaceName("triangle", t, "") ? "" : name);
+        EXPECT_LT(worstPointDistance(doc, ids(doc.triangles[t].idx), back, ids(back.triangles[t].idx)), 1e-9 * size);
+    }
+    // A Catmull-Rom net is C1 only: it comes back as its Bézier patches, joined C1.
+    pw::Document cr;
+    pw::addNetSurface(cr, 5, 5, pw::NetShape::Flat, pw::Basis::CatmullRom, pw::Vec3(0.0), 4.0);
+    for (size_t k = 0; k < cr.surfaces[0].idx.size(); ++k) cr.points[cr.surfaces[0].idx[k]].z += 0.3 * std::sin(1.7 * double(k * k));
+    pw::exportStep(cr, dir / "cr.step");
+    const pw::Document crBack = pw::importCadSurfaces(dir / "cr.step");
+    EXPECT_TRUE(crBack.surfaces.empty());
+    EXPECT_EQ(crBack.patches.size(), 4u);
+    fs::remove_all(dir);
+}
+
+TEST(CadLabels, PlacesAreReadOnlyFromExactLabels) {
+    EXPECT_EQ(pw::cadFaceLabelIndex("patch 12", "patch"), 12u);
+    EXPECT_EQ(pw::cadFaceLabelIndex("net 0", "net"), 0u);
+    for (const char* name : {"patch", "patch ", "patch 012", "patch 1a", "patch -1", "patches 1", "net 1", "Patch 1"})
+        EXPECT_FALSE(pw::cadFaceLabelIndex(name, "patch")) << name;
+    std::vector<std::string> items{"a", "b", "c", "d"};
+    pw::placeByLabel(items, {std::nullopt, 0, std::nullopt, 1});  // b goes first, d second
+    EXPECT_EQ(items, (std::vector<std::string>{"b", "d", "a", "c"}));
+    pw::placeByLabel(items, {0, 0, std::nullopt, std::nullopt});  // not distinct: left alone
+    EXPECT_EQ(items, (std::vector<std::string>{"b", "d", "a", "c"}));
+    pw::placeByLabel(items, {7, std::nullopt, std::nullopt, std::nullopt});  // out of range: left alone
+    EXPECT_EQ(items, (std::vector<std::string>{"b", "d", "a", "c"}));
+}
+
+// The inverse of triangleAsCollapsedQuad finds the triangle and nothing else.
+TEST(CadLabels, ACollapsedQuadIsATriangleOnlyWhenItIsOne) {
+    pw::Net10 tri;
+    for (size_t k = 0; k < 10; ++k) tri[k] = pw::Vec3(std::cos(double(k)), std::sin(2.0 * double(k)), 0.1 * double(k));
+    const pw::Net16 quad = pw::triangleAsCollapsedQuad(tri);
+    const auto back = pw::collapsedQuadAsTriangle(quad, 1e-9);
+    ASSERT_TRUE(back);
+    for (size_t k = 0; k < 10; ++k) EXPECT_LT(glm::length((*back)[k] - tri[k]), 1e-9) << k;
+    pw::Net16 other = quad;
+    other[10].z += 1e-3;  // still collapsed at s = 0, no longer a cubic triangle
+    EXPECT_FALSE(pw::collapsedQuadAsTriangle(other, 1e-9));
 }

@@ -1,5 +1,6 @@
 #include "core/eval/bezier_triangle.hpp"
 
+#include <Eigen/Dense>
 #include <algorithm>
 
 #include "core/base/net_scale.hpp"
@@ -142,6 +143,41 @@ Net16 triangleAsCollapsedQuad(const Net10& net) {
     const TriPoint t = evaluateTriangle(net, 0.5, 0.25, 0.25);
     if (glm::dot(glm::cross(q.du, q.dv), t.n) < 0.0) quad = build(true);
     return quad;
+}
+
+std::optional<Net10> collapsedQuadAsTriangle(const Net16& quad, double tol) {
+    // The cubic triangle interpolating the quad at the ten nodes (i, j, k) / 3 of the triangle,
+    // read at (s, t) = (1 - u, w / (1 - u)) and, for the other row order, (s, 1 - t); kept when
+    // collapsing it again gives the quad back.
+    Eigen::Matrix<double, 10, 10> basis;
+    std::array<std::array<double, 3>, 10> nodes;
+    size_t n = 0;
+    for (int i = 0; i <= 3; ++i)
+        for (int j = 0; i + j <= 3; ++j) nodes[n++] = {i / 3.0, j / 3.0, (3 - i - j) / 3.0};
+    for (size_t c = 0; c < 10; ++c) {
+        Net10 unit{};
+        unit[c] = Vec3(1.0, 0.0, 0.0);
+        for (size_t r = 0; r < 10; ++r)
+            basis(long(r), long(c)) = evaluateTriangleBernsteinSum(unit, nodes[r][0], nodes[r][1], nodes[r][2]).x;
+    }
+    const Eigen::PartialPivLU<Eigen::Matrix<double, 10, 10>> lu(basis);
+    for (bool flip : {false, true}) {
+        Eigen::Matrix<double, 10, 3> values;
+        for (size_t r = 0; r < 10; ++r) {
+            const double s = 1.0 - nodes[r][0];
+            const double t = s > 0.0 ? nodes[r][2] / s : 0.0;
+            const Vec3 q = evaluateNet(quad, Basis::Bezier, 0.5, s, flip ? 1.0 - t : t).p;
+            values.row(long(r)) << q.x, q.y, q.z;
+        }
+        const Eigen::Matrix<double, 10, 3> coef = lu.solve(values);
+        Net10 net;
+        for (size_t c = 0; c < 10; ++c) net[c] = Vec3(coef(long(c), 0), coef(long(c), 1), coef(long(c), 2));
+        const Net16 again = triangleAsCollapsedQuad(net);
+        double worst = 0.0;
+        for (size_t k = 0; k < 16; ++k) worst = std::max(worst, glm::length(again[k] - quad[k]));
+        if (worst <= tol) return net;
+    }
+    return std::nullopt;
 }
 
 }  // namespace eval

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "core/base/math_types.hpp"
@@ -79,6 +80,11 @@ void evaluateTriangleGrid(const Net10& net, const std::array<uint32_t, 10>& pool
 // (s = 0) is the u = 1 corner b300 four times. The rows run so that the patch's normal
 // (∂/∂s × ∂/∂t) agrees with the triangle's.
 Net16 triangleAsCollapsedQuad(const Net10& net);
+
+// The inverse, for a quad read back from a CAD file: the triangle whose collapsed quad is `quad`
+// within `tol` (every control point), or nullopt when it is not one (a collapsed quad of another
+// shape, or an ordinary patch).
+std::optional<Net10> collapsedQuadAsTriangle(const Net16& quad, double tol);
 
 }  // namespace eval
 }  // namespace pw

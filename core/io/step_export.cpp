@@ -14,6 +14,7 @@
 #include <IGESData_GlobalSection.hxx>
 #include <IGESData_IGESModel.hxx>
 #include <Interface_Static.hxx>
+#include <NCollection_DataMap.hxx>
 #include <Precision.hxx>
 #include <STEPConstruct.hxx>
 #include <STEPControl_Writer.hxx>
@@ -30,6 +31,7 @@
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
+#include <TopTools_ShapeMapHasher.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Shell.hxx>
@@ -39,6 +41,7 @@
 #include <XSControl_WorkSession.hxx>
 
 #include <algorithm>
+#include <cstdint>
 #include <sstream>
 #include <stdexcept>
 
@@ -46,6 +49,7 @@
 #include "core/base/file_io.hpp"
 #include "core/base/up_axis.hpp"
 #include "core/eval/bezier_triangle.hpp"
+#include "core/io/cad_labels.hpp"
 #include "core/io/occt_support.hpp"
 #include "core/ops/net_ops.hpp"
 
@@ -56,7 +60,8 @@ namespace {
 
 // One B-spline surface for a whole net: its Bézier grid as poles with interior knots of
 // multiplicity 3 (exact), then each interior knot lowered as far as the surface allows within
-// `tol` (a uniform B-spline net ends with simple knots: C2, as it was drawn).
+// `tol`, but kept: a uniform B-spline net ends with simple knots (C2, as it was drawn), one knot
+// between each two windows even where the surface is flat, so that an import finds its windows.
 Handle(Geom_BSplineSurface) netSurface(const Document& doc, const Surface& s, double tol) {
     const BezierGrid g = netToBezierGrid(doc, s);
     const int cols = int(g.cols) + (g.closedU ? 1 : 0), rows = int(g.rows) + (g.closedV ? 1 : 0);
@@ -79,10 +84,10 @@ Handle(Geom_BSplineSurface) netSurface(const Document& doc, const Surface& s, do
     knots(sv, vk, vm);
     Handle(Geom_BSplineSurface) surface = new Geom_BSplineSurface(poles, uk, vk, um, vm, 3, 3);
     for (int k = su; k >= 2; --k)
-        for (int m = 0; m < 3; ++m)
+        for (int m = 1; m < 3; ++m)
             if (surface->RemoveUKnot(k, m, tol)) break;
     for (int k = sv; k >= 2; --k)
-        for (int m = 0; m < 3; ++m)
+        for (int m = 1; m < 3; ++m)
             if (surface->RemoveVKnot(k, m, tol)) break;
     return surface;
 }
@@ -106,26 +111,47 @@ TopoDS_Solid solidOf(TopoDS_Shell shell) {
     return solid;
 }
 
-// The sewn faces as one shape: each closed shell a solid, each open shell a shell, a lone face a
-// shell of its own; one of them alone, several in a compound.
-TopoDS_Shape piecesOf(const TopoDS_Shape& sewed, size_t& solids) {
-    std::vector<TopoDS_Shape> pieces;
+// Each sewn face's place in the document: patches, then nets, then triangles.
+using FaceOrder = NCollection_DataMap<TopoDS_Shape, size_t, TopTools_ShapeMapHasher>;
+
+// The shell's faces in the document's order, so that the file lists them so and a round trip
+// keeps their numbers; `first` is the first one's place.
+TopoDS_Shell orderedShell(const TopoDS_Shape& shell, const FaceOrder& order, size_t& first) {
+    std::vector<std::pair<size_t, TopoDS_Shape>> faces;
+    for (TopExp_Explorer e(shell, TopAbs_FACE); e.More(); e.Next()) {
+        const size_t* at = order.Seek(e.Current());
+        faces.emplace_back(at ? *at : SIZE_MAX, e.Current());
+    }
+    std::stable_sort(faces.begin(), faces.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    TopoDS_Shell out;
     BRep_Builder b;
+    b.MakeShell(out);
+    for (const auto& face : faces) b.Add(out, face.second);
+    first = faces.empty() ? SIZE_MAX : faces.front().first;
+    return out;
+}
+
+// The sewn faces as one shape: each closed shell a solid, each open shell a shell, a lone face a
+// shell of its own; one of them alone, several in a compound, in the order of their first faces.
+TopoDS_Shape piecesOf(const TopoDS_Shape& sewed, const FaceOrder& order, size_t& solids) {
+    std::vector<std::pair<size_t, TopoDS_Shape>> pieces;
+    size_t first = 0;
     for (TopExp_Explorer e(sewed, TopAbs_SHELL); e.More(); e.Next()) {
-        const TopoDS_Solid solid = solidOf(TopoDS::Shell(e.Current()));
-        pieces.push_back(solid.IsNull() ? e.Current() : TopoDS_Shape(solid));
+        const TopoDS_Shell shell = orderedShell(e.Current(), order, first);
+        const TopoDS_Solid solid = solidOf(shell);
+        pieces.emplace_back(first, solid.IsNull() ? TopoDS_Shape(shell) : TopoDS_Shape(solid));
         solids += solid.IsNull() ? 0 : 1;
     }
     for (TopExp_Explorer e(sewed, TopAbs_FACE, TopAbs_SHELL); e.More(); e.Next()) {
-        TopoDS_Shell shell;
-        b.MakeShell(shell);
-        b.Add(shell, e.Current());
-        pieces.push_back(shell);
+        const TopoDS_Shell shell = orderedShell(e.Current(), order, first);
+        pieces.emplace_back(first, shell);
     }
-    if (pieces.size() == 1) return pieces.front();
+    std::stable_sort(pieces.begin(), pieces.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    if (pieces.size() == 1) return pieces.front().second;
     TopoDS_Compound compound;
+    BRep_Builder b;
     b.MakeCompound(compound);
-    for (const TopoDS_Shape& piece : pieces) b.Add(compound, piece);
+    for (const auto& piece : pieces) b.Add(compound, piece.second);
     return compound;
 }
 
@@ -157,30 +183,35 @@ CadShape cadShape(const Document& doc, const char* format) {
     const double size = std::max(1.0, modelSize(doc));
     const double tol = std::max(Precision::Confusion(), 1e-9 * size);
     BRepBuilderAPI_Sewing sewing(std::max(Precision::Confusion(), 1e-7 * size));
-    // The faces of named patches, nets and triangles, with their names.
-    std::vector<std::pair<TopoDS_Face, std::string>> named;
+    // Every face in the document's order, with its name or place (cad_labels.hpp).
+    std::vector<std::pair<TopoDS_Face, std::string>> made;
     auto addFace = [&](const Handle(Geom_Surface) & surface, const std::string& what, const std::string& name) {
         BRepBuilderAPI_MakeFace face(surface, Precision::Confusion());
         if (!face.IsDone())
             throw std::runtime_error(what + ": OpenCASCADE could not make a face of it (error " + std::to_string(int(face.Error())) + ")");
         sewing.Add(face.Face());
-        if (!name.empty()) named.emplace_back(face.Face(), name);
+        made.emplace_back(face.Face(), name);
     };
     for (size_t p = 0; p < src.patches.size(); ++p) {
         const std::optional<Weights16> w = gatherWeights(src, src.patches[p].idx);  // rational: exact, weights and all
         addFace(occt::bezierSurface(patchNet(src, src.patches[p].idx), w ? &*w : nullptr), "patch " + std::to_string(p),
-                src.patches[p].name);
+                cadFaceName("patch", p, src.patches[p].name));
     }
     for (size_t s = 0; s < src.surfaces.size(); ++s)
-        addFace(netSurface(src, src.surfaces[s], tol), "surface " + std::to_string(s), src.surfaces[s].name);
+        addFace(netSurface(src, src.surfaces[s], tol), "surface " + std::to_string(s), cadFaceName("net", s, src.surfaces[s].name));
     for (size_t t = 0; t < src.triangles.size(); ++t)
         addFace(occt::bezierSurface(triangleAsCollapsedQuad(gatherTriangleNet(src, src.triangles[t].idx))), "triangle " + std::to_string(t),
-                src.triangles[t].name);
+                cadFaceName("triangle", t, src.triangles[t].name));
     sewing.Perform();
     CadShape out;
-    out.shape = piecesOf(sewing.SewedShape(), out.stats.solids);
     // The sewn face is the one its original became (sewing may replace a face when it merges its edges).
-    for (const auto& [face, name] : named) out.namedFaces.emplace_back(sewing.IsModified(face) ? sewing.Modified(face) : face, name);
+    FaceOrder order;
+    for (size_t k = 0; k < made.size(); ++k) {
+        const TopoDS_Shape sewn = sewing.IsModified(made[k].first) ? sewing.Modified(made[k].first) : made[k].first;
+        order.Bind(sewn, k);
+        if (!made[k].second.empty()) out.namedFaces.emplace_back(sewn, made[k].second);
+    }
+    out.shape = piecesOf(sewing.SewedShape(), order, out.stats.solids);
     TopTools_IndexedMapOfShape faces, shells, edges;
     TopExp::MapShapes(out.shape, TopAbs_FACE, faces);
     TopExp::MapShapes(out.shape, TopAbs_SHELL, shells);

@@ -47,13 +47,16 @@
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
 #include "core/base/limits.hpp"
+#include "core/eval/bezier_triangle.hpp"
 #include "core/io/bounded_child.hpp"
+#include "core/io/cad_labels.hpp"
 #include "core/io/cad_plane_fan.hpp"
 #include "core/io/cad_values.hpp"
 #include "core/io/occt_support.hpp"
 #include "core/io/patchwork_format.hpp"
 #include "core/model/camera_math.hpp"
 #include "core/model/join_detect.hpp"
+#include "core/ops/net_ops.hpp"
 
 namespace pw {
 inline namespace io {
@@ -191,10 +194,55 @@ FaceNames stepFaceNames(STEPControl_Reader& reader) {
     return names;
 }
 
+// A polynomial face cut into several Bézier patches may be a uniform B-spline net (a net
+// Patchwork wrote comes back one); rebuildNets decides from the patches themselves, since
+// OpenCASCADE reads a closed face as periodic and its knots then run past the face.
+bool mayBeNet(const Handle(Geom_BSplineSurface) & bs) { return !bs->IsURational() && !bs->IsVRational(); }
+
+// Whether the first column of poles (s = 0) is one point, as in a triangle's collapsed quad.
+bool collapsedColumn(const Handle(Geom_BezierSurface) & z) {
+    for (int r = 2; r <= 4; ++r)
+        if (z->Pole(1, r).Distance(z->Pole(1, 1)) > 0.0) return false;
+    return true;
+}
+
+// The patches one such face made: doc.patches[first, first + count).
+struct NetFace {
+    uint32_t first = 0, count = 0;
+    std::string name;
+    std::optional<size_t> place;  // "net N" (cad_labels.hpp)
+};
+
+// Each C2 face's patches (their shared points merged) as one uniform B-spline net, closed where
+// the face closes on itself, in the faces' order and under the face's name. A face whose knots
+// are not uniform (not C2 in the net's uniform parameters) keeps its patches.
+// `patchPlaces` (one per patch) loses the entries of the patches that became nets; the nets are
+// put in their places.
+void rebuildNets(Document& doc, const std::vector<NetFace>& netFaces, std::vector<std::optional<size_t>>& patchPlaces) {
+    std::vector<std::optional<size_t>> netPlaces;
+    for (auto f = netFaces.rbegin(); f != netFaces.rend(); ++f) {  // last first: earlier indices stay
+        std::vector<uint32_t> patches(f->count);
+        for (uint32_t k = 0; k < f->count; ++k) patches[k] = f->first + k;
+        try {
+            // 1e-8 × size: above the 1e-9 × size the export's knot removal may move a pole by.
+            doc.surfaces[convertPatchesToNet(doc, patches, 1e-8)].name = f->name;
+            netPlaces.push_back(f->place);
+            patchPlaces.erase(patchPlaces.begin() + f->first, patchPlaces.begin() + f->first + f->count);
+        } catch (const EditError&) {  // not a uniform C2 grid: the face stays patches
+        }
+    }
+    std::reverse(doc.surfaces.begin(), doc.surfaces.end());
+    std::reverse(netPlaces.begin(), netPlaces.end());
+    placeByLabel(doc.surfaces, netPlaces);
+}
+
 // The import itself, in whatever process runs it (the caller holds OCCT's lock).
 Document importInProcess(const std::filesystem::path& path, bool step, const std::string& bytes, CadImportReport* report) {
     CadImportReport rep;
     Document doc;
+    std::vector<NetFace> netFaces;                   // faces that may come back as nets
+    std::vector<std::optional<size_t>> patchPlaces;  // a patch's place when its face is labelled "patch N"
+    std::vector<std::optional<size_t>> trianglePlaces;
     try {
         TopoDS_Shape shape;
         FaceNames faceNames;
@@ -240,8 +288,10 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
             // The face's Bézier patches: its B-spline cut at its knots, or a planar face trimmed
             // by curves as a fan from its centre; or the reason it has none.
             occt::BezierPatches patches;
+            bool netCandidate = false;
             auto result = faceSurface(TopoDS::Face(faces(f)));
             if (auto* bs = std::get_if<Handle(Geom_BSplineSurface)>(&result)) {
+                netCandidate = mayBeNet(*bs);
                 GeomConvert_BSplineSurfaceToBezierSurface split(*bs);
                 for (int i = 1; i <= split.NbUPatches(); ++i)
                     for (int j = 1; j <= split.NbVPatches(); ++j) patches.push_back(split.Patch(i, j));
@@ -255,15 +305,47 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
                 continue;
             }
             // The face's name on its patches: "lid" for one patch, "lid 3" (in order) for several.
+            // A label that is a place (a face Patchwork wrote for an unnamed item) is not a name.
             const std::string* found = faceNames.Seek(faces(f));
-            const std::string name = found ? *found : std::string();
+            std::string name = found ? *found : std::string();
+            const std::optional<size_t> patchPlace = patches.size() == 1 ? cadFaceLabelIndex(name, "patch") : std::nullopt;
+            const std::optional<size_t> netPlace = cadFaceLabelIndex(name, "net");
+            const std::optional<size_t> trianglePlace = patches.size() == 1 ? cadFaceLabelIndex(name, "triangle") : std::nullopt;
+            const bool mayBeTriangle = patches.size() == 1 && !netPlace && !patchPlace;
+            if (patchPlace || netPlace || trianglePlace) name.clear();
+            if (netCandidate && (patches.size() > 1 || netPlace))
+                netFaces.push_back({uint32_t(doc.patches.size()), uint32_t(patches.size()), name, netPlace});
             for (size_t k = 0; k < patches.size(); ++k) {
                 // Raised to bicubic per Bézier patch: BSplSLib's degree elevation of a whole
                 // rational B-spline fails in OCCT 7.6 (an out-of-range index on a converted sphere).
                 const Handle(Geom_BezierSurface)& z = patches[k];
                 z->Increase(3, 3);
+                // A Bézier triangle written as a collapsed quad (by Patchwork, or exactly one by
+                // another system) comes back a triangle.
+                if (mayBeTriangle && !z->IsURational() && !z->IsVRational() && collapsedColumn(z)) {
+                    Net16 quad;
+                    double extent = 1.0;
+                    for (int r = 0; r < 4; ++r)
+                        for (int c = 0; c < 4; ++c) {
+                            const gp_Pnt p = z->Pole(c + 1, r + 1);
+                            quad[size_t(r * 4 + c)] = Vec3(p.X(), p.Y(), p.Z());
+                            extent = std::max({extent, std::abs(p.X()), std::abs(p.Y()), std::abs(p.Z())});
+                        }
+                    if (const std::optional<Net10> net = collapsedQuadAsTriangle(quad, 1e-9 * extent)) {
+                        TrianglePatch tri;
+                        tri.name = name;
+                        for (size_t c = 0; c < 10; ++c) {
+                            tri.idx[c] = uint32_t(doc.points.size());
+                            doc.points.push_back((*net)[c]);
+                        }
+                        doc.triangles.push_back(tri);
+                        trianglePlaces.push_back(trianglePlace);
+                        continue;
+                    }
+                }
                 Patch patch;
                 if (!name.empty()) patch.name = patches.size() > 1 ? name + " " + std::to_string(k) : name;
+                if (trianglePlace) patch.name = "triangle " + std::to_string(*trianglePlace);  // a quad after all: keep its label
                 for (int r = 0; r < 4; ++r)
                     for (int c = 0; c < 4; ++c) {
                         const gp_Pnt p = z->Pole(c + 1, r + 1);
@@ -273,6 +355,7 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
                             setPointWeight(doc, uint32_t(doc.points.size() - 1), z->Weight(c + 1, r + 1));
                     }
                 doc.patches.push_back(patch);
+                patchPlaces.push_back(patchPlace);
                 if (doc.patches.size() > limits::kMaxPatches)
                     throw InputError(path.string(), "more than " + std::to_string(limits::kMaxPatches) + " patches");
             }
@@ -299,6 +382,9 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
             throw InputError(path.string(), "a control point is not finite or too large");
     const Bounds box = computeBounds(doc.points);
     mergeCoincidentPoints(doc, 1e-9 * modelSize(doc));
+    rebuildNets(doc, netFaces, patchPlaces);
+    placeByLabel(doc.patches, patchPlaces);
+    placeByLabel(doc.triangles, trianglePlaces);
     doc.joins = detectJoins(doc);
     doc.name = path.stem().string();
     doc.camera.zUp = true;  // CAD systems are Z-up
