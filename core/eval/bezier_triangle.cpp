@@ -1,6 +1,5 @@
 #include "core/eval/bezier_triangle.hpp"
 
-#include <Eigen/Dense>
 #include <algorithm>
 
 #include "core/base/net_scale.hpp"
@@ -146,32 +145,21 @@ Net16 triangleAsCollapsedQuad(const Net10& net) {
 }
 
 std::optional<Net10> collapsedQuadAsTriangle(const Net16& quad, double tol) {
-    // The cubic triangle interpolating the quad at the ten nodes (i, j, k) / 3 of the triangle,
-    // read at (s, t) = (1 - u, w / (1 - u)) and, for the other row order, (s, 1 - t); kept when
-    // collapsing it again gives the quad back.
-    Eigen::Matrix<double, 10, 10> basis;
-    std::array<std::array<double, 3>, 10> nodes;
-    size_t n = 0;
-    for (int i = 0; i <= 3; ++i)
-        for (int j = 0; i + j <= 3; ++j) nodes[n++] = {i / 3.0, j / 3.0, (3 - i - j) / 3.0};
-    for (size_t c = 0; c < 10; ++c) {
-        Net10 unit{};
-        unit[c] = Vec3(1.0, 0.0, 0.0);
-        for (size_t r = 0; r < 10; ++r)
-            basis(long(r), long(c)) = evaluateTriangleBernsteinSum(unit, nodes[r][0], nodes[r][1], nodes[r][2]).x;
-    }
-    const Eigen::PartialPivLU<Eigen::Matrix<double, 10, 10>> lu(basis);
+    // The quad's rows t = 0 and t = 1 are the triangle's edges w = 0 (b300 b210 b120 b030: slots
+    // 0 1 3 6) and v = 0 (b300 b201 b102 b003: 0 2 5 9), or the other way round when its rows were
+    // turned, and its column s = 1 the edge u = 0 (6 7 8 9); the centre b111 (slot 4) follows from the quad's value at (2/3, 1/2), the
+    // image of (1/3, 1/3, 1/3), where b111 weighs 6/27. Kept when collapsing it again gives the quad back.
+    static constexpr size_t kEdgeW0[4] = {0, 1, 3, 6}, kEdgeV0[4] = {0, 2, 5, 9};
     for (bool flip : {false, true}) {
-        Eigen::Matrix<double, 10, 3> values;
-        for (size_t r = 0; r < 10; ++r) {
-            const double s = 1.0 - nodes[r][0];
-            const double t = s > 0.0 ? nodes[r][2] / s : 0.0;
-            const Vec3 q = evaluateNet(quad, Basis::Bezier, 0.5, s, flip ? 1.0 - t : t).p;
-            values.row(long(r)) << q.x, q.y, q.z;
+        Net10 net{};
+        for (size_t j = 0; j < 4; ++j) {
+            net[kEdgeW0[j]] = quad[(flip ? 12 : 0) + j];
+            net[kEdgeV0[j]] = quad[(flip ? 0 : 12) + j];
         }
-        const Eigen::Matrix<double, 10, 3> coef = lu.solve(values);
-        Net10 net;
-        for (size_t c = 0; c < 10; ++c) net[c] = Vec3(coef(long(c), 0), coef(long(c), 1), coef(long(c), 2));
+        net[7] = quad[(flip ? 2 : 1) * 4 + 3];  // column s = 1 is the edge u = 0: b030 b021 b012 b003
+        net[8] = quad[(flip ? 1 : 2) * 4 + 3];
+        const Vec3 centre = evaluateNet(quad, Basis::Bezier, 0.5, 2.0 / 3.0, 0.5).p;
+        net[4] = (centre - evaluateTriangleBernsteinSum(net, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0)) * (27.0 / 6.0);
         const Net16 again = triangleAsCollapsedQuad(net);
         double worst = 0.0;
         for (size_t k = 0; k < 16; ++k) worst = std::max(worst, glm::length(again[k] - quad[k]));
