@@ -156,6 +156,25 @@ TEST_F(RenderCapture, EveryPartitioningAndAdaptiveModeIsCapturedWholeAndWatertig
     }
 }
 
+// The teaspoon's tip edge doubles back: at level 16 two of its vertices lie 7e-7 apart, inside the
+// weld's 1e-6 × size. Only collapsed edges (poles) weld within the tolerance, so no triangle folds
+// onto its neighbour (before: one edge used by four triangles, two of them one triangle reversed).
+TEST_F(RenderCapture, AShortEdgeIsNotWeldedLikeAPole) {
+    const Document doc = loadDocument(dataDir() / "teaspoon.bpt");
+    Offscreen off(320, 240, false);
+    off.setDocument(doc);
+    const render::CapturedSurface c = off.capture(render::optionsFromDocument(doc));  // as `export --as-displayed`
+    EXPECT_EQ(c.mesh.indices.size() / 3, c.gpuTriangles - c.degenerate);
+    // By position (a crease keeps two vertices at one position): no edge of more than two triangles.
+    // (The tip's open edge keeps vertices closer than any crack tolerance apart, as the CPU export
+    // does, so cracks() does not apply.)
+    TriangleMesh byPosition = c.mesh;
+    std::map<std::array<float, 3>, uint32_t> ids;
+    for (uint32_t& i : byPosition.indices) i = ids.emplace(c.mesh.positions[i], uint32_t(ids.size())).first->second;
+    EXPECT_FALSE(openEdges(byPosition).empty());
+    EXPECT_GT(windingAgreement(c.mesh), 0.99);
+}
+
 TEST_F(RenderCapture, BezierTrianglesAreCapturedWeldedAndInTheirRanges) {
     const Document dome = makeTriangleDome(1.0, 0.5);
     Offscreen off(320, 240, false);

@@ -94,12 +94,8 @@ void tessellateWindows(const Document& doc, const std::vector<PatchInstance>& wi
         if (inst.basis != Basis::Bezier) continue;
         for (Edge e : kEdges) {
             const size_t k = w * 4 + static_cast<size_t>(e);
-            const auto ids = edgePool(inst.idx, e);
-            const Vec3& p0 = doc.points[ids[0]];
-            const bool samePoint = ids[0] == ids[1] && ids[0] == ids[2] && ids[0] == ids[3];
-            const bool samePosition = p0 == doc.points[ids[1]] && p0 == doc.points[ids[2]] && p0 == doc.points[ids[3]];
-            collapsed[k] = samePoint || samePosition;
-            flip[k] = edgeReversed(ids);
+            collapsed[k] = windowEdgeCollapsed(doc.points, inst, e);
+            flip[k] = edgeReversed(edgePool(inst.idx, e));
             if (collapsed[k])
                 cornerSets.unite(static_cast<uint32_t>(w * 4 + cornerOfSlot(edgeSlot(e, 0))),
                                  static_cast<uint32_t>(w * 4 + cornerOfSlot(edgeSlot(e, 3))));
@@ -332,6 +328,13 @@ void tessellateWindows(const Document& doc, const std::vector<PatchInstance>& wi
 }
 
 }  // namespace
+
+bool windowEdgeCollapsed(const std::vector<Vec3>& points, const PatchInstance& w, Edge e) {
+    const auto ids = edgePool(w.idx, e);
+    const Vec3& p0 = points[ids[0]];
+    const bool samePoint = ids[0] == ids[1] && ids[0] == ids[2] && ids[0] == ids[3];
+    return samePoint || (p0 == points[ids[1]] && p0 == points[ids[2]] && p0 == points[ids[3]]);
+}
 
 void removeUnusedVertices(TriangleMesh& mesh) {
     std::vector<uint8_t> used(mesh.positions.size(), 0);

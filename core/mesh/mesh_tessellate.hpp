@@ -57,6 +57,10 @@ TriangleMesh tessellateDocument(const Document& doc, int level);
 // out as degenerate) and renumbers the indices.
 void removeUnusedVertices(TriangleMesh& mesh);
 
+// Whether edge e (U0..V1) of Bézier window w is collapsed: its four control points one pool point
+// or one position (a pole). Such edges share one vertex along their length.
+bool windowEdgeCollapsed(const std::vector<Vec3>& points, const PatchInstance& w, Edge e);
+
 // The control cage: pool points and the line segments of every window's 4x4 net and every
 // triangle's net (deduplicated).
 struct CageLines {

@@ -32,12 +32,14 @@ class PositionClusters {
 public:
     explicit PositionClusters(double tol) : tol_(tol), inv_(tol > 0.0 ? 1.0 / (16.0 * tol) : 0.0) {}
 
-    uint32_t find(const float p[3]) {
+    // The cluster of p among those `accept` allows, or a new one.
+    template <class Accept>
+    uint32_t find(const float p[3], Accept&& accept) {
         const std::array<int64_t, 3> c = cell(p);
         if (tol_ > 0.0) {
             if (auto it = cells_.find(c); it != cells_.end())
                 for (uint32_t id : it->second)
-                    if (near(reps_[id], p)) return id;
+                    if (near(reps_[id], p) && accept(id)) return id;
             std::array<int64_t, 3> lo{}, hi{};
             for (int i = 0; i < 3; ++i) {
                 lo[size_t(i)] = int64_t(std::floor((double(p[i]) - tol_) * inv_));
@@ -50,11 +52,11 @@ public:
                         auto it = cells_.find({x, y, z});
                         if (it == cells_.end()) continue;
                         for (uint32_t id : it->second)
-                            if (near(reps_[id], p)) return id;
+                            if (near(reps_[id], p) && accept(id)) return id;
                     }
         } else if (auto it = cells_.find(c); it != cells_.end()) {
             for (uint32_t id : it->second)
-                if (reps_[id] == std::array<float, 3>{p[0], p[1], p[2]}) return id;
+                if (reps_[id] == std::array<float, 3>{p[0], p[1], p[2]} && accept(id)) return id;
         }
         const auto id = uint32_t(reps_.size());
         reps_.push_back({p[0], p[1], p[2]});
@@ -87,7 +89,7 @@ private:
 }  // namespace
 
 TriangleMesh weldTriangleSoup(const std::vector<SoupVertex>& soup, size_t windowCount, size_t triangleCount, double tolerance,
-                              WeldStats* stats) {
+                              WeldStats* stats, const std::vector<uint8_t>* collapsedEdges) {
     if (soup.size() % 3 != 0)
         throw std::invalid_argument("the captured surface has " + std::to_string(soup.size()) + " vertices, not whole triangles");
     const size_t items = windowCount + triangleCount, tris = soup.size() / 3;
@@ -105,11 +107,30 @@ TriangleMesh weldTriangleSoup(const std::vector<SoupVertex>& soup, size_t window
 
     TriangleMesh mesh;
     PositionClusters clusters(tolerance);
+    // Per cluster, the window vertex that made it (item, u, v): another vertex of the same window
+    // at other (u, v) joins it only bit-identical or with both on one collapsed edge.
+    struct Origin {
+        uint32_t item;
+        float u, v;
+    };
+    std::vector<Origin> origins;
+    auto onCollapsedEdge = [&](uint32_t item, float u, float v) -> uint8_t {
+        const uint8_t bits = (*collapsedEdges)[item];
+        return uint8_t(((bits & 1) && u == 0.0f ? 1 : 0) | ((bits & 2) && v == 0.0f ? 2 : 0) | ((bits & 4) && u == 1.0f ? 4 : 0) |
+                       ((bits & 8) && v == 1.0f ? 8 : 0));
+    };
     // Per position cluster, its vertices so far: (vertex id, first normal); normals summed in `sums`.
     std::vector<std::vector<std::pair<uint32_t, std::array<float, 3>>>> atPosition;
     std::vector<std::array<double, 3>> sums;
     auto vertexOf = [&](const SoupVertex& v) -> uint32_t {
-        const uint32_t pc = clusters.find(v.position);
+        const bool checked = collapsedEdges && v.item < windowCount && v.item < collapsedEdges->size();
+        const uint32_t pc = clusters.find(v.position, [&](uint32_t id) {
+            const Origin& o = origins[id];
+            if (!checked || o.item != v.item || (o.u == v.uv[0] && o.v == v.uv[1])) return true;
+            if (clusters.position(id) == std::array<float, 3>{v.position[0], v.position[1], v.position[2]}) return true;
+            return (onCollapsedEdge(o.item, o.u, o.v) & onCollapsedEdge(v.item, v.uv[0], v.uv[1])) != 0;
+        });
+        if (pc >= origins.size()) origins.push_back({v.item, v.uv[0], v.uv[1]});
         if (pc >= atPosition.size()) atPosition.resize(pc + 1);
         for (auto& [id, n0] : atPosition[pc])
             if (double(n0[0]) * v.normal[0] + double(n0[1]) * v.normal[1] + double(n0[2]) * v.normal[2] > kWeldSmoothCos) {
@@ -149,6 +170,16 @@ TriangleMesh weldTriangleSoup(const std::vector<SoupVertex>& soup, size_t window
     removeUnusedVertices(mesh);  // those only collapsed triangles used
     if (stats) *stats = st;
     return mesh;
+}
+
+std::vector<uint8_t> collapsedWindowEdges(const std::vector<PatchInstance>& windows, const std::vector<Vec3>& points) {
+    std::vector<uint8_t> bits(windows.size(), 0);
+    for (size_t w = 0; w < windows.size(); ++w) {
+        if (windows[w].basis != Basis::Bezier) continue;
+        for (int e = 0; e < 4; ++e)
+            if (windowEdgeCollapsed(points, windows[w], Edge(e))) bits[w] |= uint8_t(1 << e);
+    }
+    return bits;
 }
 
 }  // namespace mesh

@@ -34,8 +34,18 @@ struct WeldStats {
 // item is its first vertex's. The mesh's perWindow has windowCount ranges and perTriangle
 // triangleCount, in item order. Throws std::invalid_argument on a soup whose size is not a
 // multiple of three or an item outside the document.
+//
+// Within one window, two vertices at different (u, v) merge within `tolerance` only where both lie
+// on an edge that `collapsedEdges` (4 bits a window: bit e for Edge e, U0 u = 0, V0 v = 0, U1 u = 1,
+// V1 v = 1) marks collapsed, else only when bit-identical: an edge that is merely short (the
+// teaspoon's tip doubles back within 1e-6 of the model's size) keeps its vertices apart, so no
+// triangle folds onto its neighbour. Without the mask every window merges within tolerance.
 TriangleMesh weldTriangleSoup(const std::vector<SoupVertex>& soup, size_t windowCount, size_t triangleCount, double tolerance,
-                              WeldStats* stats = nullptr);
+                              WeldStats* stats = nullptr, const std::vector<uint8_t>* collapsedEdges = nullptr);
+
+// The collapsed-edge bits of every window (expandPatches order) at these points: a Bézier window's
+// edge whose four control points are one pool point or one position, as tessellateDocument shares them.
+std::vector<uint8_t> collapsedWindowEdges(const std::vector<PatchInstance>& windows, const std::vector<Vec3>& points);
 
 }  // namespace mesh
 }  // namespace pw

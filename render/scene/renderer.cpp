@@ -119,6 +119,7 @@ void Renderer::setDocument(const Document& doc, std::shared_ptr<const HeightMap>
     }
     m.displaced = bool(m.map);
     m.scene = uploadSurfaceScene(dev_, doc, m.map.get());
+    m.windows = expandPatches(doc);
     m.overlays = uploadOverlayScene(dev_, doc);
     m.joins = doc.joins;
     const std::array<double, 4> rect = planarRect(doc);

@@ -25,6 +25,7 @@ inline namespace scene {
 
 struct Renderer::Impl {
     SurfaceScene scene;
+    std::vector<PatchInstance> windows;  // the scene's windows, for the capture's collapsed edges
     OverlayScene overlays;
     PlainMesh mesh;
     Buffer frameUbo, counters;

@@ -177,7 +177,13 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
         if (dev_.caps().storesAndAtomics) result.patchesCulled = static_cast<const uint32_t*>(m.counters.mapped)[0];
         WeldStats ws;
         // Seams are bit-identical; poles and collapsed edges agree to float rounding of the model's size.
-        result.mesh = weldTriangleSoup(soup, m.scene.windowCount, m.scene.triangleCount, 1e-6 * std::max(modelSize_, 1e-9), &ws);
+        // Poles are welded within the tolerance, other edges only where bit-identical (mesh_weld.hpp);
+        // the poles of the points as drawn now (a drag updates the pool, not the scene's windows).
+        const std::vector<Vec3> points(m.scene.cpuPoints.begin(), m.scene.cpuPoints.end());
+        const std::vector<uint8_t> collapsed =
+            m.windows.size() == m.scene.windowCount ? collapsedWindowEdges(m.windows, points) : std::vector<uint8_t>{};
+        result.mesh = weldTriangleSoup(soup, m.scene.windowCount, m.scene.triangleCount, 1e-6 * std::max(modelSize_, 1e-9), &ws,
+                                       collapsed.empty() ? nullptr : &collapsed);
         result.degenerate = ws.degenerateTriangles;
         return result;
     }
