@@ -57,6 +57,18 @@ TEST(Examples, BSplineTubeIsAClosedC2Net) {
     ASSERT_EQ(doc.surfaces.size(), 1u);
     EXPECT_EQ(doc.surfaces[0].basis, Basis::BSpline);
     EXPECT_TRUE(doc.surfaces[0].closedU || doc.surfaces[0].closedV);
+    // It does not fold: the normal points away from the axis (z) everywhere, and one way. (A bump
+    // moved along the axis past its neighbouring rows once turned 526 triangles inside out.)
+    size_t outward = 0, inward = 0;
+    for (const PatchInstance& w : expandPatches(doc)) {
+        const Net16 net = gatherNet(doc, w.idx);
+        for (int i = 0; i <= 16; ++i)
+            for (int j = 0; j <= 16; ++j) {
+                const SurfacePoint sp = evaluateNet(net, w.basis, w.tension, j / 16.0, i / 16.0);
+                (glm::dot(sp.n, Vec3(sp.p.x, sp.p.y, 0.0)) > 0.0 ? outward : inward) += 1;
+            }
+    }
+    EXPECT_TRUE(outward == 0 || inward == 0) << outward << " samples face out, " << inward << " in";
 }
 
 TEST(Examples, CatmullRomNetInterpolates) {
