@@ -330,3 +330,55 @@ TEST(Transforms, ScriptCommandsUseThePivotAndSnapSettings) {
     EXPECT_THROW(run(s, "pivot centre"), InputError);
     EXPECT_THROW(run(s, "snap vertices"), InputError);
 }
+
+// U / V / N while grabbing: the drag is the `slide` command under the mouse. A typed distance
+// moves the points as `slide u D` does; the mouse moves them along their mean direction; the same
+// key again is a plain move, X ends the slide; a point with no polygon refuses it.
+TEST(Transforms, SlideWhileGrabbingIsTheSlideCommand) {
+    Grid g;
+    const std::vector<Vec3> before = g.s.doc.points;
+    g.s.sel = Selection{};
+    g.s.sel.points = {g.s.doc.patches[0].idx[5], g.s.doc.patches[0].idx[6]};
+    DragController d;
+    ASSERT_TRUE(d.begin(g.s.doc, g.start(TransformKind::Move), g.view, 400, 300));
+    ASSERT_TRUE(d.toggleSlide(g.s.doc, SlideAxis::U));
+    EXPECT_EQ(d.slide(), SlideAxis::U);
+    for (char ch : std::string("0.25")) d.typeChar(ch);
+    ASSERT_TRUE(d.update(g.s.doc, g.view, 555, 123, false));
+    EXPECT_NE(d.status().find("Slide 2 points along U: 0.25"), std::string::npos) << d.status();
+    const std::vector<Vec3> dragged = g.s.doc.points;
+    d.finish(g.s);
+    EXPECT_EQ(g.s.history().undoLabel(), "Slide 2 points");
+    g.s.undo();
+    ASSERT_EQ(g.s.doc.points, before);
+    run(g.s, "slide u 0.25");
+    for (size_t i = 0; i < before.size(); ++i) EXPECT_LT(glm::length(g.s.doc.points[i] - dragged[i]), 1e-12) << i;
+    g.s.undo();
+
+    // By mouse: along the points' own direction, a positive distance to the right (+X from above).
+    ASSERT_TRUE(d.begin(g.s.doc, g.start(TransformKind::Move), g.view, 400, 300));
+    ASSERT_TRUE(d.toggleSlide(g.s.doc, SlideAxis::U));
+    ASSERT_TRUE(d.update(g.s.doc, g.view, 440, 300, false));
+    const uint32_t p = g.s.sel.points[0];
+    const Vec3 moved = g.s.doc.points[p] - before[p];
+    const Vec3 dir = *slideDirection(g.s.committed(), p, SlideAxis::U);
+    EXPECT_GT(glm::length(moved), 0.01);
+    EXPECT_LT(glm::length(glm::cross(moved, dir)), 1e-9 * glm::length(moved));
+    EXPECT_LT(maxConstraintResidual(g.s.doc), 1e-9);
+    ASSERT_TRUE(d.toggleSlide(g.s.doc, SlideAxis::U));  // again: a plain move
+    EXPECT_FALSE(d.slide());
+    ASSERT_TRUE(d.toggleSlide(g.s.doc, SlideAxis::N));
+    d.setAxis(0);  // X: a move along X
+    EXPECT_FALSE(d.slide());
+    d.cancel(g.s.doc);
+    EXPECT_EQ(g.s.doc.points, before);
+
+    // A point no patch uses has no polygon: the slide is refused and the move goes on.
+    g.s.doc.points.push_back(Vec3(9.0));
+    g.s.sel.points = {uint32_t(g.s.doc.points.size() - 1)};
+    ASSERT_TRUE(d.begin(g.s.doc, g.start(TransformKind::Move), g.view, 400, 300));
+    EXPECT_FALSE(d.toggleSlide(g.s.doc, SlideAxis::V));
+    EXPECT_NE(d.refusal().find("no control polygon"), std::string::npos);
+    EXPECT_FALSE(d.slide());
+    d.cancel(g.s.doc);
+}

@@ -83,6 +83,37 @@ bool DragController::begin(const Document& doc, const TransformStart& start, con
 void DragController::setAxis(int axis, bool plane) {
     axis_ = axis < 0 || axis > 2 ? -1 : axis;
     plane_ = axis_ >= 0 && plane;
+    slide_.reset();
+}
+
+bool DragController::toggleSlide(const Document& doc, SlideAxis axis) {
+    if (!active() || kind_ != TransformKind::Move) return false;
+    if (slide_ == axis) {
+        slide_.reset();
+        return true;
+    }
+    Document at = doc;
+    at.points = start_;  // the directions of the shape as it was
+    std::vector<Vec3> dirs(start_.size(), Vec3(0.0));
+    Vec3 sum(0.0);
+    for (uint32_t p : moved_) {
+        const std::optional<Vec3> d = slideDirection(at, p, axis);
+        if (!d) {
+            refusal_ = "point " + std::to_string(p) + " has no control polygon to slide along (a point of a patch or net slides)";
+            return false;
+        }
+        dirs[p] = *d;
+        sum += *d;
+    }
+    for (uint32_t p : softPoints_.points) dirs[p] = slideDirection(at, p, axis).value_or(Vec3(0.0));
+    // The mouse follows the mean direction; where the directions cancel (a ring), the first one.
+    slideMean_ = glm::length(sum) > 1e-9 * double(moved_.size()) ? glm::normalize(sum) : dirs[moved_.front()];
+    slideDirs_ = std::move(dirs);
+    slide_ = axis;
+    axis_ = -1;
+    plane_ = false;
+    refusal_.clear();
+    return true;
 }
 
 void DragController::toggleAxis(int axis, bool plane) {
@@ -118,8 +149,8 @@ std::optional<Vec3> DragController::moveOffset(const Document& doc, const DragVi
         const Vec3 a = axisVector(axis_);
         return plane_ ? d - a * glm::dot(d, a) : a * glm::dot(d, a);
     };
-    if (const auto v = typedValue()) return axisVector(axis_ < 0 ? 0 : plane_ ? (axis_ + 1) % 3 : axis_) * *v;
-    if (snap && snapTarget_ != SnapTarget::Grid) {
+    if (const auto v = typedValue()) return slide_ ? slideMean_ * *v : axisVector(axis_ < 0 ? 0 : plane_ ? (axis_ + 1) % 3 : axis_) * *v;
+    if (snap && snapTarget_ != SnapTarget::Grid && !slide_) {
         const auto target = snapPoint(doc, movedMask_, snapTarget_, view.camera, view.width, view.height, x, y);
         if (target) return constrain(*target - anchor_);
     }
@@ -131,6 +162,29 @@ std::optional<Vec3> DragController::moveOffset(const Document& doc, const DragVi
         if (!hit) return std::nullopt;
         return *hit - startHit_;
     };
+    // Along direction a under the mouse, exactly, while it shows on screen; a direction nearly
+    // along the view moves at most kMaxAxisRate times as fast as a move in the view plane.
+    const auto alongDirection = [&](const Vec3& a) -> std::optional<Vec3> {
+        const auto screen = axisOnScreen(view.camera, view.width, view.height, anchor_, a);
+        if (!screen) return std::nullopt;
+        const glm::dvec2 s = screen->alongPx;
+        const double perUnit = screen->acrossPx;
+        if (glm::length(s) >= perUnit / kMaxAxisRate) return closestPointOnAxis(ray, anchor_, a) - closestPointOnAxis(r0, anchor_, a);
+        Vec3 right, up, fwd;
+        cameraAxes(view.camera, right, up, fwd);
+        glm::dvec2 dir = glm::length(s) > 1e-9 * perUnit ? s / glm::length(s) : glm::dvec2(0.0, glm::dot(a, fwd) < 0.0 ? -1.0 : 1.0);
+        return a * (glm::dot(glm::dvec2(x - startX_, y - startY_), dir) * kMaxAxisRate / std::max(perUnit, 1e-300));
+    };
+    if (slide_) {
+        const auto d = alongDirection(slideMean_);
+        if (!d) return std::nullopt;
+        double dist = glm::dot(*d, slideMean_);
+        if (snap) {
+            const double step = niceGridStep(modelSize(doc)) / 5.0;
+            dist = step * std::round(dist / step);
+        }
+        return slideMean_ * dist;
+    }
     if (axis_ < 0) {
         const auto d = viewPlaneDelta();
         if (!d) return std::nullopt;
@@ -146,21 +200,9 @@ std::optional<Vec3> DragController::moveOffset(const Document& doc, const DragVi
             delta = constrain(*d);
         }
     } else {
-        // Along the axis under the mouse, exactly, while the axis shows on screen; an axis nearly
-        // along the view moves at most kMaxAxisRate times as fast as a move in the view plane.
-        const Vec3 a = axisVector(axis_);
-        const auto screen = axisOnScreen(view.camera, view.width, view.height, anchor_, a);
-        if (!screen) return std::nullopt;
-        const glm::dvec2 s = screen->alongPx;
-        const double perUnit = screen->acrossPx;
-        if (glm::length(s) >= perUnit / kMaxAxisRate) {
-            delta = closestPointOnAxis(ray, anchor_, a) - closestPointOnAxis(r0, anchor_, a);
-        } else {
-            Vec3 right, up, fwd;
-            cameraAxes(view.camera, right, up, fwd);
-            glm::dvec2 dir = glm::length(s) > 1e-9 * perUnit ? s / glm::length(s) : glm::dvec2(0.0, glm::dot(a, fwd) < 0.0 ? -1.0 : 1.0);
-            delta = a * (glm::dot(glm::dvec2(x - startX_, y - startY_), dir) * kMaxAxisRate / std::max(perUnit, 1e-300));
-        }
+        const auto d = alongDirection(axisVector(axis_));
+        if (!d) return std::nullopt;
+        delta = *d;
     }
     if (snap && snapTarget_ == SnapTarget::Grid) {  // the moved centre on the grid
         const Vec3 snapped = snapToGrid(anchor_ + delta, niceGridStep(modelSize(doc)) / 5.0);
@@ -171,13 +213,18 @@ std::optional<Vec3> DragController::moveOffset(const Document& doc, const DragVi
 
 bool DragController::update(Document& doc, const DragView& view, double x, double y, bool snap) {
     if (!active()) return false;
-    doc.points = start_;  // snapping looks at the document as it was
-    std::function<Vec3(const Vec3&)> f;
+    doc.points = start_;                           // snapping looks at the document as it was
+    std::function<Vec3(uint32_t, const Vec3&)> f;  // where point i at p goes
     if (kind_ == TransformKind::Move) {
         const auto d = moveOffset(doc, view, x, y, snap);
         if (!d) return false;
         lastOffset_ = *d;
-        f = [d = *d](const Vec3& p) { return p + d; };
+        if (slide_) {
+            lastSlide_ = glm::dot(*d, slideMean_);
+            f = [this](uint32_t i, const Vec3& p) { return p + lastSlide_ * slideDirs_[i]; };
+        } else {
+            f = [d = *d](uint32_t, const Vec3& p) { return p + d; };
+        }
     } else {
         const glm::dvec2 c = pixelOf(view, anchor_).value_or(glm::dvec2(view.width, view.height) * 0.5);
         const auto v = typedValue();
@@ -198,7 +245,7 @@ bool DragController::update(Document& doc, const DragView& view, double x, doubl
                 deg = 5.0 * std::round(deg / 5.0);
             lastAngle_ = deg;
             const glm::dmat4 m = glm::rotate(glm::dmat4(1.0), glm::radians(deg), axis);
-            f = [m, c0 = anchor_](const Vec3& p) { return c0 + Vec3(m * glm::dvec4(p - c0, 0.0)); };
+            f = [m, c0 = anchor_](uint32_t, const Vec3& p) { return c0 + Vec3(m * glm::dvec4(p - c0, 0.0)); };
         } else {
             const double d0 = std::max(std::hypot(startX_ - c.x, startY_ - c.y), 5.0);
             double k = std::hypot(x - c.x, y - c.y) / d0;
@@ -212,15 +259,15 @@ bool DragController::update(Document& doc, const DragView& view, double x, doubl
                 s[axis_] = plane_ ? 1.0 : k;
             }
             lastScale_ = s;
-            f = [s, c0 = anchor_](const Vec3& p) { return c0 + s * (p - c0); };
+            f = [s, c0 = anchor_](uint32_t, const Vec3& p) { return c0 + s * (p - c0); };
         }
     }
-    for (uint32_t p : moved_) doc.points[p] = f(start_[p]);
+    for (uint32_t p : moved_) doc.points[p] = f(p, start_[p]);
     // Soft selection: the points around take their share of the transform (not fixed: the solver
     // may still move them to hold a join).
     for (size_t k = 0; k < softPoints_.points.size(); ++k) {
         const uint32_t p = softPoints_.points[k];
-        if (!movedMask_[p]) doc.points[p] = glm::mix(start_[p], f(start_[p]), softPoints_.weights[k]);
+        if (!movedMask_[p]) doc.points[p] = glm::mix(start_[p], f(p, start_[p]), softPoints_.weights[k]);
     }
     applySymmetry(doc.points, pairs_, symmetry_);
     if (!doc.constructions.empty()) rerunConstructions(doc);  // the surfaces follow their inputs
@@ -269,7 +316,9 @@ std::string DragController::status() const {
     static const char* const kAxis[3] = {"X", "Y", "Z"};
     static const char* const kPlane[3] = {"YZ", "ZX", "XY"};
     char where[32] = "";
-    if (axis_ < 0)
+    if (slide_)
+        std::snprintf(where, sizeof where, " along %s", *slide_ == SlideAxis::U ? "U" : *slide_ == SlideAxis::V ? "V" : "the normal");
+    else if (axis_ < 0)
         std::snprintf(where, sizeof where, "%s",
                       kind_ == TransformKind::Move     ? " in the view plane"
                       : kind_ == TransformKind::Rotate ? " about the view axis"
@@ -279,15 +328,17 @@ std::string DragController::status() const {
     else
         std::snprintf(where, sizeof where, " %s %s", kind_ == TransformKind::Rotate ? "about" : "along", kAxis[axis_]);
     char buf[200];
-    if (kind_ == TransformKind::Move)
+    if (slide_)
+        std::snprintf(buf, sizeof buf, "%.4g", lastSlide_);
+    else if (kind_ == TransformKind::Move)
         std::snprintf(buf, sizeof buf, "%.4g, %.4g, %.4g", lastOffset_.x, lastOffset_.y, lastOffset_.z);
     else if (kind_ == TransformKind::Rotate)
         std::snprintf(buf, sizeof buf, "%.4g°", lastAngle_);
     else
         std::snprintf(buf, sizeof buf, "×%.4g", lastScale_[axis_ < 0 ? 0 : plane_ ? (axis_ + 1) % 3 : axis_]);
     const std::string value = buf;
-    std::snprintf(buf, sizeof buf, "%s %zu point%s%s: %s", kindName(kind_), moved_.size(), moved_.size() == 1 ? "" : "s", where,
-                  value.c_str());
+    std::snprintf(buf, sizeof buf, "%s %zu point%s%s: %s", slide_ ? "Slide" : kindName(kind_), moved_.size(), moved_.size() == 1 ? "" : "s",
+                  where, value.c_str());
     std::string out = buf;
     if (!typed_.empty()) out += "  [typed " + typed_ + "]";
     if (soft_.on) {
@@ -303,7 +354,7 @@ std::string DragController::status() const {
 
 void DragController::finish(EditSession& session) {
     const size_t n = moved_.size();
-    const std::string kind = kindName(kind_);
+    const std::string kind = slide_ ? "Slide" : kindName(kind_);
     *this = DragController{};
     if (session.doc.points != session.committed().points)
         session.commit(n == 1 ? kind + " point" : kind + " " + std::to_string(n) + " points");

@@ -18,6 +18,7 @@
 #include "core/edit/edit_session.hpp"
 #include "core/model/document.hpp"
 #include "core/select/selection.hpp"
+#include "core/select/slide.hpp"
 #include "core/select/snapping.hpp"
 #include "core/select/soft_selection.hpp"
 #include "core/select/symmetry.hpp"
@@ -73,8 +74,17 @@ public:
     // (moves and scales in the other two).
     int axis() const { return axis_; }
     bool plane() const { return plane_; }
-    void setAxis(int axis, bool plane = false);
+    void setAxis(int axis, bool plane = false);     // also ends a slide
     void toggleAxis(int axis, bool plane = false);  // the same key again frees the transform
+
+    // Slide (U / V / N while moving; Rhino's UVN move, the `slide` command as a drag): each moved
+    // point, and each soft point by its share, moves along its own control polygon in u or v or
+    // along the surface normal, by one distance: the mouse along the points' mean direction, or
+    // the typed value. Directions come from the shape at begin(). False, leaving the move as it
+    // was, when a moved point has no polygon to slide along (refusal() says which); the same key
+    // again ends the slide.
+    bool toggleSlide(const Document& doc, SlideAxis axis);
+    std::optional<SlideAxis> slide() const { return slide_; }
 
     // Typed value (Blender's "G X 2 Enter"): digits, '.', '-' and Backspace edit it; while it reads
     // as a number it replaces the mouse: a distance along the axis (X when free, the plane's first
@@ -135,6 +145,10 @@ private:
     double startX_ = 0, startY_ = 0;
     int axis_ = -1;
     bool plane_ = false;
+    std::optional<SlideAxis> slide_;
+    std::vector<Vec3> slideDirs_;    // per pool point: its slide direction (0 where it has none)
+    Vec3 slideMean_{1.0, 0.0, 0.0};  // the moved points' mean direction, which the mouse follows
+    double lastSlide_ = 0.0;
     bool grab_ = false;
     std::string typed_;
     std::string refusal_;

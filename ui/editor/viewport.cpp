@@ -1,7 +1,7 @@
 // Viewport input (Blender conventions, DESIGN §6): hover, navigation (wheel zoom, middle orbit,
 // Shift+middle pan, Alt+left orbit), click / Shift+click / box selection, surface picks, and point
 // transforms (a left drag on a selected point or a gizmo handle; G / R / S) through
-// core/edit/drag_controller.hpp: X/Y/Z constrain to an axis, Shift+X/Y/Z to a plane, digits type a value,
+// core/edit/drag_controller.hpp: X/Y/Z constrain to an axis, Shift+X/Y/Z to a plane, U/V/N slide, digits type a value,
 // Ctrl snaps, Esc or right click cancels. Mouse positions are relative to the pane the mouse works
 // in (ui/editor/view_panes.cpp). Shift+right click places the 3D cursor.
 #include <GLFW/glfw3.h>
@@ -277,6 +277,16 @@ void Editor::transformKeys(double mx, double my) {
         if (keyPressed(GLFW_KEY_X + a, 0)) drag_.toggleAxis(a), changed = true;
         if (keyPressed(GLFW_KEY_X + a, GLFW_MOD_SHIFT)) drag_.toggleAxis(a, true), changed = true;
     }
+    // U / V / N while moving: slide along each point's own control polygon or the normal.
+    static const std::pair<int, SlideAxis> kSlideKeys[3] = {
+        {GLFW_KEY_U, SlideAxis::U}, {GLFW_KEY_V, SlideAxis::V}, {GLFW_KEY_N, SlideAxis::N}};
+    for (const auto& [key, axis] : kSlideKeys)
+        if (drag_.kind() == TransformKind::Move && keyPressed(key, 0)) {
+            if (drag_.toggleSlide(doc_, axis))
+                changed = true;
+            else
+                status(drag_.refusal());
+        }
     if (mode_ == Interaction::Grab)  // typed values: "G X 2 Enter", the keys in the order they came
         for (const auto& [key, mods] : window_.queuedKeys()) {
             if (mods & (GLFW_MOD_CONTROL | GLFW_MOD_ALT | GLFW_MOD_SUPER)) continue;

@@ -24,6 +24,7 @@ const std::vector<KeyHelp>& modalKeys() {
         {"S", "Scale the selected points about the pivot (move the mouse, click or Enter confirms); joins are held"},
         {"X / Y / Z (while moving)", "Constrain to that axis (again: free)"},
         {"Shift + X / Y / Z (while moving)", "Move in the plane across that axis"},
+        {"U / V / N (while moving)", "Slide each point along its own control polygon in u or v, or along the surface normal (again: free)"},
         {"0-9 . - Backspace (while grabbing)", "Type the distance (\"G X 2 Enter\")"},
         {"Ctrl (while moving)", "Snap to the grid"},
         {"Esc / right click (while moving)", "Cancel the move and restore"},
