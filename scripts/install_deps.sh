@@ -18,7 +18,7 @@ build_packages=(
   libgtest-dev libbenchmark-dev
   help2man
   libcairo2-dev ffmpeg
-  libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev
+  libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev libocct-ocaf-dev
 )
 test_packages=(vulkan-validationlayers vulkan-tools xvfb xdotool imagemagick openbox clang clang-format libclang-rt-dev desktop-file-utils assimp-utils librsvg2-bin libxml2-utils poppler-utils)
 

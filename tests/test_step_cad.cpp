@@ -26,21 +26,28 @@
 #include <IGESData_GlobalSection.hxx>
 #include <IGESData_IGESModel.hxx>
 #include <Interface_Static.hxx>
+#include <STEPCAFControl_Reader.hxx>
 #include <STEPControl_Reader.hxx>
 #include <STEPControl_Writer.hxx>
 #include <StepData_StepModel.hxx>
 #include <TColgp_Array1OfPnt.hxx>
+#include <TDataStd_Name.hxx>
+#include <TDocStd_Document.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
+#include <XCAFApp_Application.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
+#include <XCAFDoc_ShapeTool.hxx>
 #include <gp_Ax2.hxx>
 #include <gp_Circ.hxx>
 
 #include <cmath>
 #include <deque>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <string>
 #include <tuple>
@@ -511,4 +518,60 @@ TEST(CadLabels, ACollapsedQuadIsATriangleOnlyWhenItIsOne) {
     pw::Net16 other = quad;
     other[10].z += 1e-3;  // still collapsed at s = 0, no longer a cubic triangle
     EXPECT_FALSE(pw::collapsedQuadAsTriangle(other, 1e-9));
+}
+
+// Parts: when the user named one (a sewn piece whose items share a name), the file is an assembly
+// of one product per piece under the document's product, read so by OpenCASCADE's XCAF reader;
+// unnamed pieces are numbered. A round trip keeps the face names and places.
+TEST(StepParts, NamedPartsAreProductsOfAnAssembly) {
+    EXPECT_EQ(pw::cadPartName({"lid 0", "lid 1", ""}), "lid");
+    EXPECT_EQ(pw::cadPartName({"rim front", "rim back"}), "rim");
+    EXPECT_EQ(pw::cadPartName({"rim", "body"}), "");
+    EXPECT_EQ(pw::cadPartName({"", ""}), "");
+    const fs::path dir = pw::test::freshTempDir("step-parts");
+    pw::Document doc = pw::loadBpt(pw::test::dataDir() / "teapot.bpt");
+    doc.name = "Utah teapot";
+    for (size_t p = 12; p < 16; ++p) doc.patches[p].name = "handle " + std::to_string(p - 12);
+    for (size_t p = 20; p < 28; ++p) doc.patches[p].name = "lid";
+    pw::StepExportStats stats;
+    const std::string text = pw::exportStepText(doc, {}, &stats);
+    EXPECT_EQ(stats.parts, 4u);  // body with its bottom, handle, spout, lid
+    std::ofstream(dir / "parts.step") << text;
+
+    Handle(TDocStd_Document) xdoc;
+    XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", xdoc);
+    STEPCAFControl_Reader reader;
+    reader.SetNameMode(true);
+    ASSERT_EQ(reader.ReadFile((dir / "parts.step").string().c_str()), IFSelect_RetDone);
+    ASSERT_TRUE(reader.Transfer(xdoc));
+    const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(xdoc->Main());
+    auto nameOf = [](const TDF_Label& l) {
+        Handle(TDataStd_Name) n;
+        return l.FindAttribute(TDataStd_Name::GetID(), n) ? TCollection_AsciiString(n->Get()).ToCString() : std::string();
+    };
+    TDF_LabelSequence roots, components;
+    tool->GetFreeShapes(roots);
+    ASSERT_EQ(roots.Length(), 1);
+    EXPECT_EQ(nameOf(roots(1)), "Utah teapot");
+    ASSERT_TRUE(tool->IsAssembly(roots(1)));
+    tool->GetComponents(roots(1), components);
+    std::vector<std::string> parts;
+    for (int i = 1; i <= components.Length(); ++i) {
+        TDF_Label part;
+        ASSERT_TRUE(tool->GetReferredShape(components(i), part));
+        parts.push_back(nameOf(part));
+    }
+    EXPECT_EQ(parts, (std::vector<std::string>{"Utah teapot 1", "handle", "Utah teapot 3", "lid"}));
+
+    const pw::Document back = pw::importCadSurfaces(dir / "parts.step");
+    ASSERT_EQ(back.patches.size(), doc.patches.size());
+    for (size_t p = 0; p < doc.patches.size(); ++p) {
+        EXPECT_EQ(back.patches[p].name, doc.patches[p].name) << p;
+        EXPECT_LT(worstPointDistance(doc, ids(doc.patches[p].idx), back, ids(back.patches[p].idx)), 1e-9) << p;
+    }
+    // Without a named part: one product.
+    for (size_t p = 12; p < 28; ++p) doc.patches[p].name.clear();
+    pw::exportStepText(doc, {}, &stats);
+    EXPECT_EQ(stats.parts, 1u);
+    fs::remove_all(dir);
 }

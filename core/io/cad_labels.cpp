@@ -20,5 +20,22 @@ std::optional<size_t> cadFaceLabelIndex(std::string_view name, std::string_view 
     return n;
 }
 
+std::string cadPartName(const std::vector<std::string>& itemNames) {
+    std::optional<std::string> common;
+    for (const std::string& name : itemNames) {
+        if (name.empty()) continue;
+        if (!common) {
+            common = name;
+            continue;
+        }
+        size_t n = 0;
+        while (n < common->size() && n < name.size() && (*common)[n] == name[n]) ++n;
+        common->resize(n);
+    }
+    if (!common) return {};
+    while (!common->empty() && std::string_view(" _-.,:#0123456789").find(common->back()) != std::string_view::npos) common->pop_back();
+    return *common;
+}
+
 }  // namespace io
 }  // namespace pw

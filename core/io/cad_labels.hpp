@@ -20,6 +20,11 @@ std::string cadFaceName(std::string_view kind, size_t index, const std::string& 
 // N when `name` is exactly "`kind` N" (a place, not a name), nullopt otherwise.
 std::optional<size_t> cadFaceLabelIndex(std::string_view name, std::string_view kind);
 
+// The name of a part (a sewn shell or solid) from the names the user gave its items (empty ones
+// left out): what they have in common, without trailing numbers, spaces and separators ("lid 0",
+// "lid 1" → "lid"; "rim front", "rim back" → "rim"); empty when there is none.
+std::string cadPartName(const std::vector<std::string>& itemNames);
+
 // Puts each item with a place at that place and the others, in their order, in the places left.
 // Leaves the order as it is when the places are not distinct and within the items.
 template <class T>

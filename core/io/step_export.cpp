@@ -16,6 +16,7 @@
 #include <Interface_Static.hxx>
 #include <NCollection_DataMap.hxx>
 #include <Precision.hxx>
+#include <STEPCAFControl_Writer.hxx>
 #include <STEPConstruct.hxx>
 #include <STEPControl_Writer.hxx>
 #include <Standard_Failure.hxx>
@@ -28,6 +29,8 @@
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
 #include <TCollection_HAsciiString.hxx>
+#include <TDataStd_Name.hxx>
+#include <TDocStd_Document.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
@@ -37,6 +40,9 @@
 #include <TopoDS_Shell.hxx>
 #include <TopoDS_Solid.hxx>
 #include <Transfer_FinderProcess.hxx>
+#include <XCAFApp_Application.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
+#include <XCAFDoc_ShapeTool.hxx>
 #include <XSControl_TransferWriter.hxx>
 #include <XSControl_WorkSession.hxx>
 
@@ -114,9 +120,17 @@ TopoDS_Solid solidOf(TopoDS_Shell shell) {
 // Each sewn face's place in the document: patches, then nets, then triangles.
 using FaceOrder = NCollection_DataMap<TopoDS_Shape, size_t, TopTools_ShapeMapHasher>;
 
+// One connected piece of the sewn model: a solid or a shell, its faces' places in the document
+// (ascending) and its name (cad_labels.hpp cadPartName; empty when its items have none in common).
+struct Piece {
+    TopoDS_Shape shape;
+    std::vector<size_t> places;
+    std::string name;
+};
+
 // The shell's faces in the document's order, so that the file lists them so and a round trip
-// keeps their numbers; `first` is the first one's place.
-TopoDS_Shell orderedShell(const TopoDS_Shape& shell, const FaceOrder& order, size_t& first) {
+// keeps their numbers; their places in `places`.
+TopoDS_Shell orderedShell(const TopoDS_Shape& shell, const FaceOrder& order, std::vector<size_t>& places) {
     std::vector<std::pair<size_t, TopoDS_Shape>> faces;
     for (TopExp_Explorer e(shell, TopAbs_FACE); e.More(); e.Next()) {
         const size_t* at = order.Seek(e.Current());
@@ -126,32 +140,40 @@ TopoDS_Shell orderedShell(const TopoDS_Shape& shell, const FaceOrder& order, siz
     TopoDS_Shell out;
     BRep_Builder b;
     b.MakeShell(out);
-    for (const auto& face : faces) b.Add(out, face.second);
-    first = faces.empty() ? SIZE_MAX : faces.front().first;
+    places.clear();
+    for (const auto& face : faces) b.Add(out, face.second), places.push_back(face.first);
     return out;
 }
 
-// The sewn faces as one shape: each closed shell a solid, each open shell a shell, a lone face a
-// shell of its own; one of them alone, several in a compound, in the order of their first faces.
-TopoDS_Shape piecesOf(const TopoDS_Shape& sewed, const FaceOrder& order, size_t& solids) {
-    std::vector<std::pair<size_t, TopoDS_Shape>> pieces;
-    size_t first = 0;
+// The sewn faces as pieces: each closed shell a solid, each open shell a shell, a lone face a
+// shell of its own, in the order of their first faces.
+std::vector<Piece> piecesOf(const TopoDS_Shape& sewed, const FaceOrder& order, size_t& solids) {
+    std::vector<Piece> pieces;
     for (TopExp_Explorer e(sewed, TopAbs_SHELL); e.More(); e.Next()) {
-        const TopoDS_Shell shell = orderedShell(e.Current(), order, first);
+        Piece piece;
+        const TopoDS_Shell shell = orderedShell(e.Current(), order, piece.places);
         const TopoDS_Solid solid = solidOf(shell);
-        pieces.emplace_back(first, solid.IsNull() ? TopoDS_Shape(shell) : TopoDS_Shape(solid));
+        piece.shape = solid.IsNull() ? TopoDS_Shape(shell) : TopoDS_Shape(solid);
         solids += solid.IsNull() ? 0 : 1;
+        pieces.push_back(std::move(piece));
     }
     for (TopExp_Explorer e(sewed, TopAbs_FACE, TopAbs_SHELL); e.More(); e.Next()) {
-        const TopoDS_Shell shell = orderedShell(e.Current(), order, first);
-        pieces.emplace_back(first, shell);
+        Piece piece;
+        piece.shape = orderedShell(e.Current(), order, piece.places);
+        pieces.push_back(std::move(piece));
     }
-    std::stable_sort(pieces.begin(), pieces.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    if (pieces.size() == 1) return pieces.front().second;
+    const auto first = [](const Piece& p) { return p.places.empty() ? SIZE_MAX : p.places.front(); };
+    std::stable_sort(pieces.begin(), pieces.end(), [&](const Piece& a, const Piece& b) { return first(a) < first(b); });
+    return pieces;
+}
+
+// The pieces as one shape: one alone, several in a compound.
+TopoDS_Shape oneShape(const std::vector<Piece>& pieces) {
+    if (pieces.size() == 1) return pieces.front().shape;
     TopoDS_Compound compound;
     BRep_Builder b;
     b.MakeCompound(compound);
-    for (const auto& piece : pieces) b.Add(compound, piece.second);
+    for (const Piece& piece : pieces) b.Add(compound, piece.shape);
     return compound;
 }
 
@@ -159,6 +181,7 @@ TopoDS_Shape piecesOf(const TopoDS_Shape& sewed, const FaceOrder& order, size_t&
 // solids, +Z up (a Y-up document turned), the named faces with their names, and the counts.
 struct CadShape {
     TopoDS_Shape shape;
+    std::vector<Piece> pieces;                                     // what `shape` is made of, named
     std::vector<std::pair<TopoDS_Shape, std::string>> namedFaces;  // the sewn faces
     StepExportStats stats;
 };
@@ -185,23 +208,25 @@ CadShape cadShape(const Document& doc, const char* format) {
     BRepBuilderAPI_Sewing sewing(std::max(Precision::Confusion(), 1e-7 * size));
     // Every face in the document's order, with its name or place (cad_labels.hpp).
     std::vector<std::pair<TopoDS_Face, std::string>> made;
-    auto addFace = [&](const Handle(Geom_Surface) & surface, const std::string& what, const std::string& name) {
+    std::vector<std::string> userNames;  // the items' own names (empty where unnamed)
+    // A name that is the item's own place ("patch 5", what add-patch gives patch 5) is no name.
+    auto addFace = [&](const Handle(Geom_Surface) & surface, const char* kind, size_t index, const std::string& name) {
+        const std::string what = std::string(std::string_view(kind) == "net" ? "surface" : kind) + " " + std::to_string(index);
         BRepBuilderAPI_MakeFace face(surface, Precision::Confusion());
         if (!face.IsDone())
             throw std::runtime_error(what + ": OpenCASCADE could not make a face of it (error " + std::to_string(int(face.Error())) + ")");
         sewing.Add(face.Face());
-        made.emplace_back(face.Face(), name);
+        made.emplace_back(face.Face(), cadFaceName(kind, index, name));
+        userNames.push_back(cadFaceLabelIndex(name, kind) == index ? std::string() : name);
     };
     for (size_t p = 0; p < src.patches.size(); ++p) {
         const std::optional<Weights16> w = gatherWeights(src, src.patches[p].idx);  // rational: exact, weights and all
-        addFace(occt::bezierSurface(patchNet(src, src.patches[p].idx), w ? &*w : nullptr), "patch " + std::to_string(p),
-                cadFaceName("patch", p, src.patches[p].name));
+        addFace(occt::bezierSurface(patchNet(src, src.patches[p].idx), w ? &*w : nullptr), "patch", p, src.patches[p].name);
     }
-    for (size_t s = 0; s < src.surfaces.size(); ++s)
-        addFace(netSurface(src, src.surfaces[s], tol), "surface " + std::to_string(s), cadFaceName("net", s, src.surfaces[s].name));
+    for (size_t s = 0; s < src.surfaces.size(); ++s) addFace(netSurface(src, src.surfaces[s], tol), "net", s, src.surfaces[s].name);
     for (size_t t = 0; t < src.triangles.size(); ++t)
-        addFace(occt::bezierSurface(triangleAsCollapsedQuad(gatherTriangleNet(src, src.triangles[t].idx))), "triangle " + std::to_string(t),
-                cadFaceName("triangle", t, src.triangles[t].name));
+        addFace(occt::bezierSurface(triangleAsCollapsedQuad(gatherTriangleNet(src, src.triangles[t].idx))), "triangle", t,
+                src.triangles[t].name);
     sewing.Perform();
     CadShape out;
     // The sewn face is the one its original became (sewing may replace a face when it merges its edges).
@@ -211,7 +236,14 @@ CadShape cadShape(const Document& doc, const char* format) {
         order.Bind(sewn, k);
         if (!made[k].second.empty()) out.namedFaces.emplace_back(sewn, made[k].second);
     }
-    out.shape = piecesOf(sewing.SewedShape(), order, out.stats.solids);
+    out.pieces = piecesOf(sewing.SewedShape(), order, out.stats.solids);
+    out.shape = oneShape(out.pieces);
+    for (Piece& piece : out.pieces) {
+        std::vector<std::string> names;
+        for (size_t k : piece.places)
+            if (k < userNames.size()) names.push_back(userNames[k]);
+        piece.name = cadPartName(names);
+    }
     TopTools_IndexedMapOfShape faces, shells, edges;
     TopExp::MapShapes(out.shape, TopAbs_FACE, faces);
     TopExp::MapShapes(out.shape, TopAbs_SHELL, shells);
@@ -224,6 +256,24 @@ CadShape cadShape(const Document& doc, const char* format) {
     return out;
 }
 
+// An XCAF document of one assembly named `product` with a component product per piece, named
+// after the piece or, unnamed, "`product` k" (k counting from 1 in the pieces' order).
+Handle(TDocStd_Document) partsDocument(const std::string& product, const std::vector<Piece>& pieces) {
+    Handle(TDocStd_Document) xdoc;
+    XCAFApp_Application::GetApplication()->NewDocument("MDTV-XCAF", xdoc);
+    const Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(xdoc->Main());
+    const TDF_Label root = tool->NewShape();
+    TDataStd_Name::Set(root, TCollection_ExtendedString(product.c_str(), true));
+    for (size_t k = 0; k < pieces.size(); ++k) {
+        const std::string name = pieces[k].name.empty() ? product + " " + std::to_string(k + 1) : pieces[k].name;
+        const TDF_Label part = tool->AddShape(pieces[k].shape, false);
+        TDataStd_Name::Set(part, TCollection_ExtendedString(name.c_str(), true));
+        tool->AddComponent(root, part, TopLoc_Location());
+    }
+    tool->UpdateAssemblies();
+    return xdoc;
+}
+
 }  // namespace
 
 std::string exportStepText(const Document& doc, const StepExportOptions& options, StepExportStats* stats) {
@@ -231,23 +281,35 @@ std::string exportStepText(const Document& doc, const StepExportOptions& options
     try {
         CadShape cad = cadShape(doc, "STEP");
         // The schema is read when the writer's model is made: set it first. Lengths are in the
-        // document's unit, with no conversion; one product (not an assembly of one product per
-        // piece), named after the document.
+        // document's unit, with no conversion. One product named after the document; when the
+        // user named a part (a sewn piece whose items share a name), an assembly of one product per
+        // piece under it, through an XCAF document as CAD tools expect (unnamed pieces numbered).
         const std::string product = doc.name.empty() ? "Patchwork" : doc.name;
         Interface_Static::SetCVal("write.step.schema", options.schema == StepSchema::AP242 ? "AP242DIS" : "AP214IS");
         Interface_Static::SetCVal("write.step.unit", occt::unitName(doc.unit));
         Interface_Static::SetIVal("write.step.assembly", 0);
         const double unitInMm = occt::useLengthUnit(doc.unit);
-        STEPControl_Writer writer;
+        const bool parts =
+            cad.pieces.size() > 1 && std::any_of(cad.pieces.begin(), cad.pieces.end(), [](const Piece& p) { return !p.name.empty(); });
+        STEPCAFControl_Writer cafWriter;
+        STEPControl_Writer plainWriter;
+        STEPControl_Writer& writer = parts ? cafWriter.ChangeWriter() : plainWriter;
         writer.Model()->SetLocalLengthUnit(unitInMm);
         writer.Model()->SetWriteLengthUnit(unitInMm);
-        if (writer.Transfer(cad.shape, STEPControl_AsIs) != IFSelect_RetDone)
-            throw std::runtime_error("OpenCASCADE could not transfer the shape to STEP");
-        for (int i = 1; i <= writer.Model()->NbEntities(); ++i)
-            if (const auto p = Handle(StepBasic_Product)::DownCast(writer.Model()->Value(i)); !p.IsNull()) {
-                p->SetId(new TCollection_HAsciiString(product.c_str()));
-                p->SetName(new TCollection_HAsciiString(product.c_str()));
-            }
+        if (parts) {
+            cad.stats.parts = cad.pieces.size();
+            if (!cafWriter.Transfer(partsDocument(product, cad.pieces), STEPControl_AsIs))
+                throw std::runtime_error("OpenCASCADE could not transfer the parts to STEP");
+        } else {
+            cad.stats.parts = 1;
+            if (writer.Transfer(cad.shape, STEPControl_AsIs) != IFSelect_RetDone)
+                throw std::runtime_error("OpenCASCADE could not transfer the shape to STEP");
+            for (int i = 1; i <= writer.Model()->NbEntities(); ++i)
+                if (const auto p = Handle(StepBasic_Product)::DownCast(writer.Model()->Value(i)); !p.IsNull()) {
+                    p->SetId(new TCollection_HAsciiString(product.c_str()));
+                    p->SetName(new TCollection_HAsciiString(product.c_str()));
+                }
+        }
         // Names on the faces: ADVANCED_FACE('name', ...).
         const Handle(Transfer_FinderProcess) finder = writer.WS()->TransferWriter()->FinderProcess();
         for (const auto& [face, name] : cad.namedFaces)

@@ -34,6 +34,7 @@ struct StepExportStats {
     size_t freeEdges = 0;        // boundary edges (open surfaces)
     size_t degenerateEdges = 0;  // collapsed edges (poles, triangles' collapsed side)
     size_t bytes = 0;
+    size_t parts = 0;  // products: 1, or one per sewn piece when the user named a part (STEP only)
 };
 
 // The file's text. Throws OutputError-free std::runtime_error when OCCT fails.

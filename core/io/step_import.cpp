@@ -41,6 +41,7 @@
 #include <cstdlib>
 #include <iterator>
 #include <sstream>
+#include <unordered_map>
 #include <variant>
 #include <vector>
 
@@ -177,9 +178,16 @@ LengthUnit fileUnit(STEPControl_Reader& reader) {
     return LengthUnit::Metre;
 }
 
-// The names of the file's faces (ADVANCED_FACE('lid', ...)), by the shape each became; unnamed
-// faces are left out.
-using FaceNames = NCollection_DataMap<TopoDS_Shape, std::string, TopTools_ShapeMapHasher>;
+// The names of the file's faces (ADVANCED_FACE('lid', ...)), by the shape each became, whatever
+// its placement (a part of an assembly comes back located); unnamed faces are left out.
+struct FaceNames {
+    std::unordered_map<const TopoDS_TShape*, std::string> byShape;
+    void Bind(const TopoDS_Shape& s, const std::string& name) { byShape[s.TShape().get()] = name; }
+    const std::string* Seek(const TopoDS_Shape& s) const {
+        const auto it = byShape.find(s.TShape().get());
+        return it == byShape.end() ? nullptr : &it->second;
+    }
+};
 
 FaceNames stepFaceNames(STEPControl_Reader& reader) {
     FaceNames names;

@@ -88,8 +88,9 @@ void Editor::drawViewportOverlays() {
 
     // Mode line.
     if (mode_ == Interaction::Grab || mode_ == Interaction::DragPoints) {
-        const std::string hint = "X/Y/Z axis · Shift+X/Y/Z plane · U/V/N slide · Ctrl snap (" + std::string(snapTargetName(session_.snap)) + ")" +
-                                 (mode_ == Interaction::Grab ? " · type a value · click/Enter confirm" : "") + " · Esc/right click cancel";
+        const std::string hint = "X/Y/Z axis · Shift+X/Y/Z plane · U/V/N slide · Ctrl snap (" + std::string(snapTargetName(session_.snap)) +
+                                 ")" + (mode_ == Interaction::Grab ? " · type a value · click/Enter confirm" : "") +
+                                 " · Esc/right click cancel";
         const std::string text =
             drag_.status() + (session_.symmetry.on() ? " · symmetry " + symmetryName(session_.symmetry) : "") + "\n" + hint;
         const float x = float(sidePanels_.layout().left) + 12.0f;
