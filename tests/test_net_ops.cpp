@@ -2,6 +2,8 @@
 // patches and back, spline continuity, the C1 seams of Bézier nets, and file round trips.
 #include <gtest/gtest.h>
 
+#include <tuple>
+
 #include <cmath>
 #include <random>
 
@@ -177,6 +179,31 @@ TEST(NetOps, OnlyARegularC2GridConvertsToANet) {
     EXPECT_NO_THROW(pw::convertPatchesToNet(bs, grid));
     EXPECT_EQ(bs.patches.size(), 1u);
     EXPECT_EQ(bs.surfaces.size(), 1u);
+}
+
+// A C1 grid (a Catmull-Rom net's patches, closed around too) becomes one Bézier net keeping C1 on
+// the patches' own points; a grid with a kink is refused and left as it was.
+TEST(NetOps, AC1GridConvertsToABezierNetKeepingC1) {
+    for (const pw::NetShape shape : {pw::NetShape::Flat, pw::NetShape::Tube}) {
+        Document cr = bumpyNet(Basis::CatmullRom, 5, 6, shape);
+        const pw::BezierGrid grid = pw::netToBezierGrid(cr, cr.surfaces[0]);
+        pw::convertNetToPatches(cr, 0);
+        const size_t points = cr.points.size();
+        const uint32_t s = pw::convertPatchesToBezierNet(cr, {});
+        EXPECT_TRUE(cr.patches.empty());
+        EXPECT_EQ(cr.points.size(), points);  // the patches' own points
+        const pw::Surface& net = cr.surfaces[s];
+        EXPECT_EQ(net.basis, Basis::Bezier);
+        EXPECT_TRUE(net.keepC1);
+        EXPECT_EQ(std::tie(net.rows, net.cols, net.closedU, net.closedV), std::tie(grid.rows, grid.cols, grid.closedU, grid.closedV));
+        for (size_t k = 0; k < grid.points.size(); ++k) EXPECT_LT(glm::length(cr.points[net.idx[k]] - grid.points[k]), 1e-12) << k;
+    }
+    Document kinked = bumpyNet(Basis::CatmullRom, 5, 5);
+    pw::convertNetToPatches(kinked, 0);
+    kinked.points[kinked.patches[0].idx[2]].z += 0.5;  // beside the seam u = 1 of patch 0
+    const Document before = kinked;
+    EXPECT_THROW(pw::convertPatchesToBezierNet(kinked, {}), pw::EditError);
+    EXPECT_TRUE(kinked == before);
 }
 
 TEST(NetOps, RowsAndColumnsInsertDeleteAndClose) {

@@ -438,7 +438,8 @@ std::vector<uint32_t> ids(const Idx& idx) {
 
 // A STEP round trip gives back the same items in the same places: patches keep their numbers even
 // where the sewn shells interleave them (the teapot's bottom is sewn to its body), a C2 B-spline
-// net comes back one net with its layout, closed where it was, even a flat one, Bézier triangles
+// net comes back one net with its layout, closed where it was, even a flat one (a Catmull-Rom net
+// as a Bézier net keeping C1), Bézier triangles
 // come back triangles, and names stay names while unnamed items stay unnamed.
 TEST(StepRoundTrip, ItemsComeBackInTheirPlacesAsTheyWere) {
     const fs::path dir = pw::test::freshTempDir("step-round-trip");
@@ -482,14 +483,23 @@ TEST(StepRoundTrip, ItemsComeBackInTheirPlacesAsTheyWere) {
         EXPECT_EQ(back.triangles[t].name, name == pw::cadFaceName("triangle", t, "") ? "" : name);
         EXPECT_LT(worstPointDistance(doc, ids(doc.triangles[t].idx), back, ids(back.triangles[t].idx)), 1e-9 * size);
     }
-    // A Catmull-Rom net is C1 only: it comes back as its Bézier patches, joined C1.
+    // A Catmull-Rom net is C1 only (double knots): it comes back one Bézier net that keeps C1, the
+    // same surface (its Bézier grid).
     pw::Document cr;
     pw::addNetSurface(cr, 5, 5, pw::NetShape::Flat, pw::Basis::CatmullRom, pw::Vec3(0.0), 4.0);
     for (size_t k = 0; k < cr.surfaces[0].idx.size(); ++k) cr.points[cr.surfaces[0].idx[k]].z += 0.3 * std::sin(1.7 * double(k * k));
     pw::exportStep(cr, dir / "cr.step");
     const pw::Document crBack = pw::importCadSurfaces(dir / "cr.step");
-    EXPECT_TRUE(crBack.surfaces.empty());
-    EXPECT_EQ(crBack.patches.size(), 4u);
+    EXPECT_TRUE(crBack.patches.empty());
+    ASSERT_EQ(crBack.surfaces.size(), 1u);
+    const pw::Surface& bez = crBack.surfaces[0];
+    EXPECT_EQ(bez.basis, pw::Basis::Bezier);
+    EXPECT_TRUE(bez.keepC1);
+    const pw::BezierGrid grid = pw::netToBezierGrid(cr, cr.surfaces[0]);
+    ASSERT_EQ(std::tie(bez.rows, bez.cols), std::tie(grid.rows, grid.cols));
+    double worst = 0.0;
+    for (size_t k = 0; k < grid.points.size(); ++k) worst = std::max(worst, glm::length(crBack.points[bez.idx[k]] - grid.points[k]));
+    EXPECT_LT(worst, 1e-9 * pw::modelSize(cr));
     fs::remove_all(dir);
 }
 

@@ -231,13 +231,20 @@ void rebuildNets(Document& doc, const std::vector<NetFace>& netFaces, std::vecto
     for (auto f = netFaces.rbegin(); f != netFaces.rend(); ++f) {  // last first: earlier indices stay
         std::vector<uint32_t> patches(f->count);
         for (uint32_t k = 0; k < f->count; ++k) patches[k] = f->first + k;
+        // 1e-8 × size: above the 1e-9 × size the export's knot removal may move a pole by.
+        std::optional<uint32_t> net;
         try {
-            // 1e-8 × size: above the 1e-9 × size the export's knot removal may move a pole by.
-            doc.surfaces[convertPatchesToNet(doc, patches, 1e-8)].name = f->name;
-            netPlaces.push_back(f->place);
-            patchPlaces.erase(patchPlaces.begin() + f->first, patchPlaces.begin() + f->first + f->count);
-        } catch (const EditError&) {  // not a uniform C2 grid: the face stays patches
+            net = convertPatchesToNet(doc, patches, 1e-8);
+        } catch (const EditError&) {  // not a uniform C2 grid: a C1 one is a Bézier net keeping C1
+            try {
+                net = convertPatchesToBezierNet(doc, patches, 1e-8);
+            } catch (const EditError&) {  // G1 or C0 seams: the face stays patches, joined
+            }
         }
+        if (!net) continue;
+        doc.surfaces[*net].name = f->name;
+        netPlaces.push_back(f->place);
+        patchPlaces.erase(patchPlaces.begin() + f->first, patchPlaces.begin() + f->first + f->count);
     }
     std::reverse(doc.surfaces.begin(), doc.surfaces.end());
     std::reverse(netPlaces.begin(), netPlaces.end());

@@ -332,7 +332,18 @@ std::vector<uint32_t> convertNetToPatches(Document& doc, uint32_t si) {
     return created;
 }
 
-uint32_t convertPatchesToNet(Document& doc, std::vector<uint32_t> patches, double tolerance) {
+namespace {
+
+// Bézier patches laid out as a regular grid (neighbours share whole edges, u next to u, v next to
+// v; a direction may wrap): the pool indices of the Bézier grid they share, rows x cols, row-major.
+struct PatchGrid {
+    std::vector<uint32_t> patches;  // sorted
+    uint32_t rows = 0, cols = 0;    // of the Bézier grid (3 a patch, +1 on open sides)
+    bool closedU = false, closedV = false;
+    std::vector<uint32_t> idx;
+};
+
+PatchGrid patchGrid(const Document& doc, std::vector<uint32_t> patches, const char* what) {
     if (patches.empty())
         for (uint32_t p = 0; p < doc.patches.size(); ++p) patches.push_back(p);
     std::sort(patches.begin(), patches.end());
@@ -340,7 +351,7 @@ uint32_t convertPatchesToNet(Document& doc, std::vector<uint32_t> patches, doubl
     if (patches.empty()) throw EditError("there are no patches to convert");
     for (uint32_t p : patches) {
         if (p >= doc.patches.size()) throw EditError("no patch " + std::to_string(p));
-        refuseWeights(doc, doc.patches[p].idx, "converting patches to a net");
+        refuseWeights(doc, doc.patches[p].idx, what);
         if (doc.patches[p].basis != Basis::Bezier) throw EditError("patch " + std::to_string(p) + " is not a Bézier patch");
     }
     // Neighbours through whole shared edges, same orientation.
@@ -394,17 +405,42 @@ uint32_t convertPatchesToNet(Document& doc, std::vector<uint32_t> patches, doubl
     for (uint32_t r = 0; r < R; ++r)
         for (uint32_t c = 0; c + 1 < C || (closedU && c < C); ++c)
             if (right(columns[c][r]) != int(columns[(c + 1) % C][r])) throw EditError(notGrid);
+    PatchGrid g;
+    g.patches = patches;
+    g.closedU = closedU;
+    g.closedV = closedV;
+    g.cols = closedU ? 3 * C : 3 * C + 1;
+    g.rows = closedV ? 3 * R : 3 * R + 1;
+    g.idx.resize(size_t(g.rows) * g.cols);
+    for (uint32_t y = 0; y < g.rows; ++y)
+        for (uint32_t x = 0; x < g.cols; ++x) {
+            const uint32_t pr = std::min(y / 3, R - 1), pc = std::min(x / 3, C - 1);
+            g.idx[size_t(y) * g.cols + x] = doc.patches[columns[pc][pr]].idx[(y - 3 * pr) * 4 + (x - 3 * pc)];
+        }
+    return g;
+}
+
+// Replaces the grid's patches by net `s` (made of existing or new points): one undoable whole.
+uint32_t replaceByNet(Document& doc, const PatchGrid& g, Surface s) {
+    Document d = doc;
+    d.surfaces.push_back(std::move(s));
+    for (auto it = g.patches.rbegin(); it != g.patches.rend(); ++it) deletePatch(d, *it);
+    doc = std::move(d);
+    return uint32_t(doc.surfaces.size() - 1);
+}
+
+}  // namespace
+
+uint32_t convertPatchesToNet(Document& doc, std::vector<uint32_t> patches, double tolerance) {
+    const PatchGrid g = patchGrid(doc, std::move(patches), "converting patches to a net");
+    const bool closedU = g.closedU, closedV = g.closedV;
+    const uint32_t gc = g.cols, gr = g.rows;
+    const uint32_t C = closedU ? gc / 3 : (gc - 1) / 3, R = closedV ? gr / 3 : (gr - 1) / 3;
     if ((closedU && C < 4) || (closedV && R < 4))
         throw EditError("a closed B-spline net needs at least 4 patches around each closed direction");
-
-    // The Bézier grid the patches share, then its de Boor points along u and along v.
-    const uint32_t gc = closedU ? 3 * C : 3 * C + 1, gr = closedV ? 3 * R : 3 * R + 1;
-    std::vector<Vec3> bez(size_t(gr) * gc);
-    for (uint32_t y = 0; y < gr; ++y)
-        for (uint32_t x = 0; x < gc; ++x) {
-            const uint32_t pr = std::min(y / 3, R - 1), pc = std::min(x / 3, C - 1);
-            bez[size_t(y) * gc + x] = doc.points[doc.patches[columns[pc][pr]].idx[(y - 3 * pr) * 4 + (x - 3 * pc)]];
-        }
+    // The de Boor points along u and along v of the Bézier grid.
+    std::vector<Vec3> bez(g.idx.size());
+    for (size_t k = 0; k < bez.size(); ++k) bez[k] = doc.points[g.idx[k]];
     const uint32_t nc = closedU ? C : C + 3, nr = closedV ? R : R + 3;
     std::vector<Vec3> half(size_t(gr) * nc), net(size_t(nr) * nc);
     for (uint32_t y = 0; y < gr; ++y) {
@@ -443,12 +479,40 @@ uint32_t convertPatchesToNet(Document& doc, std::vector<uint32_t> patches, doubl
         throw EditError(msg);
     }
 
-    Document d = doc;
-    for (size_t k = 0; k < net.size(); ++k) s.idx[k] = appendPoint(d, net[k]);
-    d.surfaces.push_back(s);
-    for (auto it = patches.rbegin(); it != patches.rend(); ++it) deletePatch(d, *it);
-    doc = std::move(d);
-    return uint32_t(doc.surfaces.size() - 1);
+    for (size_t k = 0; k < net.size(); ++k) s.idx[k] = appendPoint(doc, net[k]);
+    return replaceByNet(doc, g, std::move(s));
+}
+
+uint32_t convertPatchesToBezierNet(Document& doc, std::vector<uint32_t> patches, double tolerance) {
+    const PatchGrid g = patchGrid(doc, std::move(patches), "converting patches to a net");
+    if ((g.closedU && g.cols < 6) || (g.closedV && g.rows < 6))
+        throw EditError("a closed Bézier net needs at least 2 patches around each closed direction");
+    // C1 across every seam: each seam point the midpoint of its neighbours across it.
+    const double tol = tolerance * modelSize(doc);
+    auto at = [&](uint32_t y, uint32_t x) { return doc.points[g.idx[size_t(y % g.rows) * g.cols + x % g.cols]]; };
+    double worst = 0.0;
+    for (uint32_t y = 0; y < g.rows; ++y)
+        for (uint32_t x = 3; x < g.cols || (g.closedU && x == g.cols); x += 3)
+            if (x + 1 < g.cols || g.closedU) worst = std::max(worst, glm::length(at(y, x) - 0.5 * (at(y, x - 1) + at(y, x + 1))));
+    for (uint32_t x = 0; x < g.cols; ++x)
+        for (uint32_t y = 3; y < g.rows || (g.closedV && y == g.rows); y += 3)
+            if (y + 1 < g.rows || g.closedV) worst = std::max(worst, glm::length(at(y, x) - 0.5 * (at(y - 1, x) + at(y + 1, x))));
+    if (!(worst <= tol)) {
+        char msg[160];
+        std::snprintf(msg, sizeof msg, "the patches are not C1 across their seams (off by up to %.3g × the model size)",
+                      worst / std::max(modelSize(doc), 1e-300));
+        throw EditError(msg);
+    }
+    Surface s;
+    s.rows = g.rows;
+    s.cols = g.cols;
+    s.basis = Basis::Bezier;
+    s.keepC1 = true;
+    s.closedU = g.closedU;
+    s.closedV = g.closedV;
+    s.name = "net";
+    s.idx = g.idx;
+    return replaceByNet(doc, g, std::move(s));
 }
 
 }  // namespace ops
