@@ -274,6 +274,10 @@ Handle(TDocStd_Document) partsDocument(const std::string& product, const std::ve
     return xdoc;
 }
 
+std::string productName(const Document& doc, const std::string& given) {
+    return !given.empty() ? given : doc.name.empty() ? "Patchwork" : doc.name;
+}
+
 }  // namespace
 
 std::string exportStepText(const Document& doc, const StepExportOptions& options, StepExportStats* stats) {
@@ -284,7 +288,7 @@ std::string exportStepText(const Document& doc, const StepExportOptions& options
         // document's unit, with no conversion. One product named after the document; when the
         // user named a part (a sewn piece whose items share a name), an assembly of one product per
         // piece under it, through an XCAF document as CAD tools expect (unnamed pieces numbered).
-        const std::string product = doc.name.empty() ? "Patchwork" : doc.name;
+        const std::string product = productName(doc, options.product);
         Interface_Static::SetCVal("write.step.schema", options.schema == StepSchema::AP242 ? "AP242DIS" : "AP214IS");
         Interface_Static::SetCVal("write.step.unit", occt::unitName(doc.unit));
         Interface_Static::SetIVal("write.step.assembly", 0);
@@ -332,7 +336,7 @@ std::string exportStepText(const Document& doc, const StepExportOptions& options
     }
 }
 
-std::string exportIgesText(const Document& doc, StepExportStats* stats) {
+std::string exportIgesText(const Document& doc, StepExportStats* stats, const std::string& product) {
     const auto held = occt::lock();
     try {
         CadShape cad = cadShape(doc, "IGES");
@@ -342,7 +346,7 @@ std::string exportIgesText(const Document& doc, StepExportStats* stats) {
         Interface_Static::SetIVal("write.iges.brep.mode", 1);
         occt::useLengthUnit(doc.unit);
         IGESControl_Writer writer(occt::unitName(doc.unit), 1);
-        writer.Model()->ChangeGlobalSection().SetSendName(new TCollection_HAsciiString(doc.name.empty() ? "Patchwork" : doc.name.c_str()));
+        writer.Model()->ChangeGlobalSection().SetSendName(new TCollection_HAsciiString(productName(doc, product).c_str()));
         if (!writer.AddShape(cad.shape)) throw std::runtime_error("OpenCASCADE could not transfer the shape to IGES");
         writer.ComputeModel();
         std::ostringstream text;
@@ -363,7 +367,9 @@ StepExportStats exportStep(const Document& doc, const std::filesystem::path& pat
     StepExportStats stats;
     std::string text;
     try {
-        text = iges ? exportIgesText(doc, &stats) : exportStepText(doc, options, &stats);
+        StepExportOptions named = options;
+        if (named.product.empty() && (doc.name.empty() || doc.name == "untitled")) named.product = path.stem().string();
+        text = iges ? exportIgesText(doc, &stats, named.product) : exportStepText(doc, named, &stats);
     } catch (const std::runtime_error& e) {
         throw OutputError(path.string(), e.what());
     }

@@ -25,6 +25,9 @@ enum class StepSchema { AP214, AP242 };
 
 struct StepExportOptions {
     StepSchema schema = StepSchema::AP214;
+    // The product's (and IGES sender's) name; empty: the document's, or "Patchwork". exportStep
+    // names an untitled document after the file ("ball.step": "ball").
+    std::string product;
 };
 
 struct StepExportStats {
@@ -41,7 +44,7 @@ struct StepExportStats {
 std::string exportStepText(const Document& doc, const StepExportOptions& options, StepExportStats* stats = nullptr);
 // The same shapes as IGES 5.3 (B-rep mode: B-spline surface faces, shells and solids), in the
 // document's unit, its name as the sender's; IGES has no place for the faces' names.
-std::string exportIgesText(const Document& doc, StepExportStats* stats = nullptr);
+std::string exportIgesText(const Document& doc, StepExportStats* stats = nullptr, const std::string& product = {});
 
 // Atomic write (.step or .stp; .iges or .igs as IGES). Throws OutputError naming the path.
 StepExportStats exportStep(const Document& doc, const std::filesystem::path& path, const StepExportOptions& options = {});
