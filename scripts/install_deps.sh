@@ -20,7 +20,10 @@ build_packages=(
   libcairo2-dev ffmpeg
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev libocct-ocaf-dev
 )
-test_packages=(vulkan-validationlayers vulkan-tools xvfb xdotool imagemagick openbox clang clang-format libclang-rt-dev desktop-file-utils assimp-utils librsvg2-bin libxml2-utils poppler-utils)
+# freecad, blender and python3-numpy (Blender 3.4's glTF importer): the readers of
+# tests/test_foreign_readers.cpp, which skips without them.
+test_packages=(vulkan-validationlayers vulkan-tools xvfb xdotool imagemagick openbox clang clang-format libclang-rt-dev desktop-file-utils assimp-utils librsvg2-bin libxml2-utils poppler-utils
+  freecad blender python3-numpy)
 
 wanted=("${build_packages[@]}")
 if [[ "${1:-}" == "--tests" ]]; then

@@ -1,0 +1,41 @@
+# Run by tests/test_foreign_readers.cpp through `freecadcmd` (FreeCAD 0.20, Debian's): reads every
+# STEP file in $PW_PROBE_DIR as a FreeCAD user's File > Import does (Import.insert; merge and link
+# groups off, since freecadcmd 0.20 crashes on assemblies with them on) and as Part.read, makes a
+# filleted box as a FreeCAD user would and writes it to $PW_PROBE_DIR/fillet_box.step, and writes
+# what it saw to $PW_PROBE_DIR/freecad.json.
+import json
+import os
+
+import FreeCAD
+import Import
+import Part
+
+folder = os.environ["PW_PROBE_DIR"]
+out = {}
+for name in sorted(os.listdir(folder)):
+    if not name.endswith(".step"):
+        continue
+    path = os.path.join(folder, name)
+    shape = Part.read(path)
+    bb = shape.BoundBox
+    doc = FreeCAD.newDocument(name.replace(".", "_"))
+    Import.insert(path, doc.Name, merge=False, useLinkGroup=False)
+    objects = [{"type": o.TypeId, "label": o.Label, "solids": len(o.Shape.Solids), "faces": len(o.Shape.Faces)}
+               for o in doc.Objects if o.TypeId in ("Part::Feature", "App::Part")]
+    out[name] = {
+        "valid": shape.isValid(),
+        "solids": len(shape.Solids),
+        "closed_solids": sum(1 for s in shape.Solids if s.isValid() and s.Volume > 0),
+        "faces": len(shape.Faces),
+        "bounds": [bb.XMin, bb.YMin, bb.ZMin, bb.XMax, bb.YMax, bb.ZMax],
+        "objects": objects,
+    }
+    FreeCAD.closeDocument(doc.Name)
+
+box = Part.makeBox(40, 30, 20)
+box = box.makeFillet(4, box.Edges)
+box.exportStep(os.path.join(folder, "fillet_box.step"))
+out["fillet_box"] = {"faces": len(box.Faces), "area": box.Area}
+
+with open(os.path.join(folder, "freecad.json"), "w") as f:
+    json.dump(out, f)

@@ -1,0 +1,143 @@
+// Every example in data/ read by FreeCAD and Blender, the readers a CAD or DCC user opens our
+// files in (issue 42; Debian's `freecad` and `blender`, each part skipped when it is not installed):
+// FreeCAD reads each STEP export as a valid shape with every face, the closed ones as solids of
+// positive volume, under a product named after the example, upright and at its size in
+// millimetres; Blender imports each glb upright at the same size in metres; and a filleted box made
+// in FreeCAD imports into Patchwork with every face. The probes are tests/readers/*.py.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/base/up_axis.hpp"
+#include "core/io/document_io.hpp"
+#include "core/io/step_export.hpp"
+#include "core/io/step_import.hpp"
+#include "core/mesh/mesh_tessellate.hpp"
+#include "support.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
+bool installed(const char* tool) { return pw::test::runCommand(std::string("command -v ") + tool + " >/dev/null 2>&1").exitCode == 0; }
+
+struct Example {
+    std::string name;
+    pw::Document doc;
+    std::array<double, 6> surfaceBox;  // the surface (level 8) turned +Z up, in millimetres
+};
+
+// Every data/ example, exported to `dir` as NAME.step and NAME.glb (level 8).
+std::vector<Example> exportExamples(const fs::path& dir) {
+    std::vector<Example> out;
+    for (const auto& entry : fs::directory_iterator(pw::test::dataDir())) {
+        const std::string ext = entry.path().extension().string();
+        if (ext != ".patchwork" && ext != ".bpt") continue;
+        Example e;
+        e.name = entry.path().stem().string();
+        e.doc = pw::loadDocument(entry.path());
+        const double mm = 1000.0 * pw::metresPer(e.doc.unit);
+        e.surfaceBox = {1e300, 1e300, 1e300, -1e300, -1e300, -1e300};
+        for (const auto& p : pw::tessellateDocument(e.doc, 8).positions) {
+            const pw::Vec3 v(p[0], p[1], p[2]);
+            const pw::Vec3 z = e.doc.camera.zUp ? v : pw::yUpToZUp(v);
+            for (int i = 0; i < 3; ++i) {
+                e.surfaceBox[size_t(i)] = std::min(e.surfaceBox[size_t(i)], z[i] * mm);
+                e.surfaceBox[size_t(i) + 3] = std::max(e.surfaceBox[size_t(i) + 3], z[i] * mm);
+            }
+        }
+        const std::string bin = q(pw::test::patchworkBinary());
+        for (const char* to : {".step", ".glb"}) {
+            const auto r = pw::test::runCommand(bin + " export " + q(entry.path()) + " -o " + q(dir / (e.name + to)) +
+                                                (std::string(to) == ".glb" ? " --tess 8" : ""));
+            EXPECT_EQ(r.exitCode, 0) << r.output;
+        }
+        out.push_back(std::move(e));
+    }
+    std::sort(out.begin(), out.end(), [](const Example& a, const Example& b) { return a.name < b.name; });
+    return out;
+}
+
+nlohmann::json readJson(const fs::path& file) {
+    std::ifstream in(file);
+    return in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
+}
+
+}  // namespace
+
+TEST(ForeignReaders, FreeCadAndBlenderReadEveryExampleUprightAtItsSize) {
+    const bool freecad = installed("freecadcmd"), blender = installed("blender");
+    if (!freecad && !blender) GTEST_SKIP() << "neither freecadcmd nor blender is installed";
+    const fs::path dir = pw::test::freshTempDir("foreign-readers");
+    const std::vector<Example> examples = exportExamples(dir);
+    ASSERT_GE(examples.size(), 10u);
+    const std::string env = "PW_PROBE_DIR=" + q(dir) + " ";
+    nlohmann::json fc, bl;
+    if (freecad) {
+        const auto r = pw::test::runCommand(env + "freecadcmd " + q(pw::test::testsDir() / "readers" / "freecad_probe.py") + " 2>&1");
+        fc = readJson(dir / "freecad.json");
+        ASSERT_TRUE(fc.is_object()) << r.output;
+    }
+    if (blender) {
+        const auto r = pw::test::runCommand(env + "blender -b --factory-startup --python-exit-code 1 --python " +
+                                            q(pw::test::testsDir() / "readers" / "blender_probe.py") + " 2>&1");
+        bl = readJson(dir / "blender.json");
+        ASSERT_TRUE(bl.is_object()) << r.output;
+    }
+    for (const Example& e : examples) {
+        SCOPED_TRACE(e.name);
+        const std::array<double, 6>& box = e.surfaceBox;
+        const double size = std::max({box[3] - box[0], box[4] - box[1], box[5] - box[2]});
+        const double tol = 1e-3 * size;
+        if (freecad) {
+            const nlohmann::json& f = fc.at(e.name + ".step");
+            EXPECT_TRUE(f.at("valid").get<bool>());
+            EXPECT_EQ(f.at("faces").get<size_t>(), e.doc.patches.size() + e.doc.surfaces.size() + e.doc.triangles.size());
+            pw::StepExportStats stats;
+            pw::exportStepText(e.doc, {}, &stats);
+            EXPECT_EQ(f.at("solids").get<size_t>(), stats.solids);
+            EXPECT_EQ(f.at("closed_solids").get<size_t>(), stats.solids);  // valid, volume > 0: faces outwards
+            // The product, named after the example (its document, or the file when untitled).
+            const std::string product = e.doc.name.empty() || e.doc.name == "untitled" ? e.name : e.doc.name;
+            bool named = false;
+            for (const auto& o : f.at("objects")) named = named || o.at("label").get<std::string>() == product;
+            EXPECT_TRUE(named) << f.at("objects").dump();
+            // Upright at its size in millimetres: FreeCAD's bounds (of the B-spline faces, so a
+            // little loose) hold the surface and are not much larger along any axis (a model
+            // lying on its side or in metres is). STEP carries no displacement.
+            const auto fcBox = f.at("bounds").get<std::array<double, 6>>();
+            for (int i = 0; i < 3; ++i) {
+                const size_t lo = size_t(i), hi = size_t(i) + 3;
+                EXPECT_LE(fcBox[lo], box[lo] + tol) << "axis " << i;
+                EXPECT_GE(fcBox[hi], box[hi] - tol) << "axis " << i;
+                EXPECT_LE(fcBox[hi] - fcBox[lo], 1.5 * (box[hi] - box[lo]) + 2 * tol) << "axis " << i;
+            }
+        }
+        if (blender) {
+            // Blender's metres, +Z up: the same surface at the same place (its tessellation; z
+            // displaced by the height map where the document has one).
+            const auto b = bl.at(e.name + ".glb").at("bounds").get<std::array<double, 6>>();
+            for (int i = 0; i < (e.doc.displacement.active() ? 2 : 3); ++i) {
+                EXPECT_NEAR(b[size_t(i)] * 1000.0, box[size_t(i)], tol) << "axis " << i;
+                EXPECT_NEAR(b[size_t(i) + 3] * 1000.0, box[size_t(i) + 3], tol) << "axis " << i;
+            }
+        }
+    }
+    if (freecad) {
+        // A filleted box as FreeCAD makes it: every face comes in.
+        pw::CadImportReport report;
+        const pw::Document box = pw::importCadSurfaces(dir / "fillet_box.step", &report);
+        EXPECT_EQ(report.faces, fc.at("fillet_box").at("faces").get<size_t>());
+        EXPECT_EQ(report.importedFaces, report.faces) << report.skippedSummary();
+        EXPECT_GE(box.patches.size(), report.faces);
+    }
+    fs::remove_all(dir);
+}
