@@ -32,12 +32,14 @@ int runConvert(const ConvertOptions& opt) {
     const Document doc = loadDocument(opt.input, &report);
     for (const std::string& note : report.notes) std::cerr << "patchwork convert: " << opt.input << ": " << note << "\n";
     (void)loadDocumentHeightMap(doc, opt.input);  // a height map that cannot be read is refused, whatever the output
-    const ExportOptions options = report.exportOptions.value_or(ExportOptions{});
+    ExportOptions options = report.exportOptions.value_or(ExportOptions{});
     std::optional<TriangleMesh> displayed;  // a glTF exported as displayed is written so again
     if ((options.asDisplayed || doc.displacement.active()) && isMeshFormat(opt.output)) {  // displaced: only the GPU displaces
         DisplayedMeshRequest request = displayedMeshRequest(options);
         request.map = loadDocumentHeightMap(doc, opt.input);
-        displayed = captureDisplayedMesh(doc, request).mesh;
+        render::CapturedSurface captured = captureDisplayedMesh(doc, request);
+        options.culledPatches = captured.culledPatches();
+        displayed = std::move(captured.mesh);
     }
     saveDocument(doc, opt.output, options, displayed ? &*displayed : nullptr);
     if (!opt.quiet)

@@ -74,6 +74,7 @@ std::optional<TriangleMesh> displayedMesh(const ExportArgs& args, const Document
     request.map = loadDocumentHeightMap(doc, args.input);
     std::string deviceName;
     render::CapturedSurface captured = captureDisplayedMesh(doc, request, &deviceName);
+    options.culledPatches = captured.culledPatches();  // said in the glTF's extras
     std::cout << describeCapture(captured, request, deviceName) << "\n";
     return std::move(captured.mesh);
 }

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/io/document_io.hpp"
+#include "core/io/export_options.hpp"
 #include "core/io/gltf_import.hpp"
 #include "support.hpp"
 
@@ -73,6 +74,33 @@ TEST(ExportDisplayed, WritesTheGpusTrianglesValidAndReproducible) {
     r = runCommand(bin() + " export " + q(glb) + " -o " + q(again) + " --no-as-displayed");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_EQ(r.output.find("as displayed"), std::string::npos) << r.output;
+}
+
+// What the view culled is said in the extras (and on stdout): the back faces of a culling teapot.
+TEST(ExportDisplayed, TheExtrasSayWhatTheViewCulled) {
+    const fs::path dir = freshTempDir("export-displayed-culled");
+    Document doc = loadDocument(dataDir() / "teapot.bpt");
+    doc.tess.cullBackfaces = true;
+    const fs::path in = dir / "culling.patchwork", glb = dir / "shown.glb", plain = dir / "plain.glb";
+    saveDocument(doc, in);
+    RunResult r = runCommand(bin() + " export " + q(in) + " -o " + q(glb) + " --as-displayed");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const size_t at = r.output.find(" patches culled as on screen");  // "..., N patches culled as on screen"
+    ASSERT_NE(at, std::string::npos) << r.output;
+    const size_t said = std::stoul(r.output.substr(r.output.rfind(", ", at) + 2));
+    EXPECT_GT(said, 0u) << r.output;
+    std::optional<ExportOptions> options;
+    (void)importPatchworkGltf(glb, &options);
+    ASSERT_TRUE(options);
+    EXPECT_EQ(options->culledPatches, int64_t(said));
+    // A fixed level culls nothing and says nothing of culling.
+    r = runCommand(bin() + " export " + q(in) + " -o " + q(plain) + " --tess 4");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    (void)importPatchworkGltf(plain, &options);
+    ASSERT_TRUE(options);
+    EXPECT_FALSE(options->asDisplayed);
+    EXPECT_EQ(options->culledPatches, -1);
+    EXPECT_EQ(trianglesSaid(r.output, "wrote " + plain.string() + ": "), 32u * 4 * 4 * 2 - 8 * 4);  // less the pole triangles
 }
 
 TEST(ExportDisplayed, ObjHoldsTheSameTriangles) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 
 #include "core/mesh/mesh_split.hpp"
 
@@ -18,6 +19,9 @@ struct ExportOptions {
     // render/surface_capture), passed in as `displayed`; `level` then only samples the curves.
     bool asDisplayed = false;
     std::array<int, 2> viewport{0, 0};  // as displayed: the view's size in pixels (screen-space levels)
+    // As displayed: the patches (windows and triangles) the view culled and the file therefore
+    // lacks (off screen, facing away), as the GPU counted them; -1 where the device cannot count.
+    int64_t culledPatches = -1;
     bool operator==(const ExportOptions&) const = default;
 };
 

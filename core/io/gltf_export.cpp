@@ -171,6 +171,7 @@ tinygltf::Value exportOptionsValue(const ExportOptions& o) {
     if (o.asDisplayed) {
         v.emplace("asDisplayed", tinygltf::Value(true));
         v.emplace("viewport", tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(o.viewport[0]), tinygltf::Value(o.viewport[1])}));
+        if (o.culledPatches >= 0) v.emplace("culledPatches", tinygltf::Value(int(o.culledPatches)));
     }
     return tinygltf::Value(std::move(v));
 }
@@ -198,6 +199,11 @@ std::optional<ExportOptions> exportOptionsFromJson(const nlohmann::json& j, cons
     if (const auto d = j.find("asDisplayed"); d != j.end()) {
         if (!d->is_boolean()) throw InputError(source, "must be true or false", 0, at + ".asDisplayed");
         o.asDisplayed = d->get<bool>();
+    }
+    if (const auto c = j.find("culledPatches"); c != j.end()) {
+        if (!c->is_number_integer() || c->get<int64_t>() < 0 || c->get<int64_t>() > int64_t(limits::kMaxPatches))
+            throw InputError(source, "must be an integer from 0 to " + std::to_string(limits::kMaxPatches), 0, at + ".culledPatches");
+        o.culledPatches = c->get<int64_t>();
     }
     if (const auto v = j.find("viewport"); v != j.end()) {
         const auto size = [](const nlohmann::json& e) {

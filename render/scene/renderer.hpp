@@ -73,6 +73,8 @@ struct CapturedSurface {
     uint64_t gpuTriangles = 0;   // triangles the tessellator emitted
     size_t degenerate = 0;       // of them, collapsed at poles and left out of the mesh
     uint32_t patchesCulled = 0;  // patches the control shader culled (culling on: facing away, off screen)
+    bool culledCounted = false;  // the device counted them (stores and atomics in the control shader)
+    int64_t culledPatches() const { return culledCounted ? int64_t(patchesCulled) : -1; }  // ExportOptions::culledPatches
 };
 
 class Renderer {

@@ -174,7 +174,10 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
         for (size_t t = 0; t + 2 < soup.size(); t += 3) std::swap(soup[t + 1], soup[t + 2]);
         CapturedSurface result;
         result.gpuTriangles = prims[0];
-        if (dev_.caps().storesAndAtomics) result.patchesCulled = static_cast<const uint32_t*>(m.counters.mapped)[0];
+        if (dev_.caps().storesAndAtomics) {
+            result.patchesCulled = static_cast<const uint32_t*>(m.counters.mapped)[0];
+            result.culledCounted = true;
+        }
         WeldStats ws;
         // Seams are bit-identical; poles and collapsed edges agree to float rounding of the model's size.
         // Poles are welded within the tolerance, other edges only where bit-identical (mesh_weld.hpp);

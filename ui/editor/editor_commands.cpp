@@ -46,6 +46,7 @@ std::optional<TriangleMesh> Editor::displayedMesh(Document& doc, ExportOptions& 
     render::CapturedSurface c = renderer_->captureSurface(viewOptions());
     const VkExtent2D e = window_.target().extent();
     options.viewport = {int(e.width), int(e.height)};
+    options.culledPatches = c.culledPatches();
     if (anyHidden(doc)) doc = visibleDocument(doc);
     status("As displayed: " + std::to_string(c.gpuTriangles) + " triangles from the tessellator" +
            (c.patchesCulled ? ", " + std::to_string(c.patchesCulled) + " patches culled as on screen" : std::string()));
