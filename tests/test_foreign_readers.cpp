@@ -10,6 +10,7 @@
 #include <array>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -35,7 +36,7 @@ struct Example {
     std::array<double, 6> surfaceBox;  // the surface (level 8) turned +Z up, in millimetres
 };
 
-// Every data/ example, exported to `dir` as NAME.step and NAME.glb (level 8).
+// Every data/ example, exported to `dir` as NAME.step, NAME.glb and NAME.obj (level 8).
 std::vector<Example> exportExamples(const fs::path& dir) {
     std::vector<Example> out;
     for (const auto& entry : fs::directory_iterator(pw::test::dataDir())) {
@@ -55,9 +56,9 @@ std::vector<Example> exportExamples(const fs::path& dir) {
             }
         }
         const std::string bin = q(pw::test::patchworkBinary());
-        for (const char* to : {".step", ".glb"}) {
+        for (const char* to : {".step", ".glb", ".obj"}) {
             const auto r = pw::test::runCommand(bin + " export " + q(entry.path()) + " -o " + q(dir / (e.name + to)) +
-                                                (std::string(to) == ".glb" ? " --tess 8" : ""));
+                                                (std::string(to) == ".step" ? "" : " --tess 8"));
             EXPECT_EQ(r.exitCode, 0) << r.output;
         }
         out.push_back(std::move(e));
@@ -138,6 +139,45 @@ TEST(ForeignReaders, FreeCadAndBlenderReadEveryExampleUprightAtItsSize) {
         EXPECT_EQ(report.faces, fc.at("fillet_box").at("faces").get<size_t>());
         EXPECT_EQ(report.importedFaces, report.faces) << report.skippedSummary();
         EXPECT_GE(box.patches.size(), report.faces);
+    }
+    fs::remove_all(dir);
+}
+
+// The readers every Debian machine has, on every example: the Khronos validator (no error, no
+// warning) and assimp (no warning) on its glb and OBJ, and OpenCASCADE (our import, in-process)
+// on its STEP, which gives back the same patches, nets and triangles in their places.
+TEST(ForeignReaders, TheValidatorAssimpAndOpenCascadeReadEveryExample) {
+    const fs::path dir = pw::test::freshTempDir("every-example");
+    const std::vector<Example> examples = exportExamples(dir);
+    std::vector<fs::path> glbs;
+    for (const Example& e : examples) glbs.push_back(dir / (e.name + ".glb"));
+    pw::test::expectValidGltf(glbs);
+    const bool assimp = installed("assimp");
+    for (const Example& e : examples) {
+        SCOPED_TRACE(e.name);
+        if (assimp)
+            for (const char* ext : {".glb", ".obj"}) {
+                const auto r = pw::test::runCommand("assimp info " + q(dir / (e.name + ext)) + " --show-log 2>&1");
+                EXPECT_EQ(r.exitCode, 0) << ext << "\n" << r.output;
+                // `assimp info` runs triangle-only post-processing on every mesh and says so of a
+                // curve's line mesh (valid glTF LINES and OBJ `l`); anything else is a finding.
+                std::istringstream log(r.output);
+                for (std::string line; std::getline(log, line);)
+                    if (line.rfind("Warn", 0) == 0 ||
+                        (line.rfind("Error", 0) == 0 &&
+                         !(line.find("works on triangle meshes only") != std::string::npos && !e.doc.curves.empty())))
+                        ADD_FAILURE() << ext << ": " << line;
+            }
+        const pw::Document back = pw::importCadSurfaces(dir / (e.name + ".step"));
+        EXPECT_EQ(back.patches.size(), e.doc.patches.size());
+        EXPECT_EQ(back.surfaces.size(), e.doc.surfaces.size());
+        EXPECT_EQ(back.triangles.size(), e.doc.triangles.size());
+        for (size_t p = 0; p < std::min(back.patches.size(), e.doc.patches.size()); ++p)
+            EXPECT_NEAR(
+                glm::length(back.points[back.patches[p].idx[5]] - (e.doc.camera.zUp ? e.doc.points[e.doc.patches[p].idx[5]]
+                                                                                    : pw::yUpToZUp(e.doc.points[e.doc.patches[p].idx[5]]))),
+                0.0, 1e-9 * std::max(1.0, pw::modelSize(e.doc)))
+                << "patch " << p;
     }
     fs::remove_all(dir);
 }

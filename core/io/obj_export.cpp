@@ -132,10 +132,14 @@ ObjFiles exportObjText(const Document& doc, int requestedLevel, const std::strin
         curveIds.push_back(std::move(ids));
     }
 
-    o += "usemtl patchwork_surface\n";
+    // Each material named after the first group it applies to: assimp reads a `usemtl` before any
+    // group or object as a mesh with nothing to attach to (an error in its log) when the MTL has
+    // more than one material.
+    bool surfaceMaterial = false;
     auto faces = [&](const MeshRange& r, const std::string& name) {
         if (r.indexCount == 0) return;
         o += "g " + name + "\n";
+        if (!surfaceMaterial) o += "usemtl patchwork_surface\n", surfaceMaterial = true;
         ++st.groups;
         for (uint32_t i = r.firstIndex; i < r.firstIndex + r.indexCount; i += 3) {
             o += 'f';
@@ -150,9 +154,8 @@ ObjFiles exportObjText(const Document& doc, int requestedLevel, const std::strin
     for (size_t w = 0; w < mesh.perWindow.size(); ++w) faces(mesh.perWindow[w], groupName(doc, windows[w]));
     for (size_t t = 0; t < mesh.perTriangle.size(); ++t)
         faces(mesh.perTriangle[t], doc.triangles[t].name.empty() ? "triangle_" + std::to_string(t) : doc.triangles[t].name);
-    if (!curveIds.empty()) o += "usemtl patchwork_curves\n";
     for (size_t c = 0; c < curveIds.size(); ++c) {
-        o += "g curve_" + std::to_string(c) + "\nl";
+        o += "g curve_" + std::to_string(c) + (c == 0 ? "\nusemtl patchwork_curves\nl" : "\nl");
         for (uint32_t id : curveIds[c]) putIds(o, {id}, ' ');
         o += '\n';
         st.lineSegments += curveIds[c].size() - 1;
