@@ -572,6 +572,7 @@ TEST(StepParts, NamedPartsAreProductsOfAnAssembly) {
         parts.push_back(nameOf(part));
     }
     EXPECT_EQ(parts, (std::vector<std::string>{"Utah teapot 1", "handle", "Utah teapot 3", "lid"}));
+    XCAFApp_Application::GetApplication()->Close(xdoc);  // the application keeps its documents open
 
     const pw::Document back = pw::importCadSurfaces(dir / "parts.step");
     ASSERT_EQ(back.patches.size(), doc.patches.size());

@@ -48,6 +48,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -295,15 +296,25 @@ std::string exportStepText(const Document& doc, const StepExportOptions& options
         const double unitInMm = occt::useLengthUnit(doc.unit);
         const bool parts =
             cad.pieces.size() > 1 && std::any_of(cad.pieces.begin(), cad.pieces.end(), [](const Piece& p) { return !p.name.empty(); });
-        STEPCAFControl_Writer cafWriter;
+        // The XCAF writer and document only for parts (made otherwise, they hold the shapes in the
+        // writer's session past the export); the document is closed again when done.
+        std::optional<STEPCAFControl_Writer> cafWriter;
         STEPControl_Writer plainWriter;
-        STEPControl_Writer& writer = parts ? cafWriter.ChangeWriter() : plainWriter;
+        if (parts) cafWriter.emplace();
+        STEPControl_Writer& writer = parts ? cafWriter->ChangeWriter() : plainWriter;
         writer.Model()->SetLocalLengthUnit(unitInMm);
         writer.Model()->SetWriteLengthUnit(unitInMm);
+        Handle(TDocStd_Document) xdoc;
+        struct CloseDocument {
+            Handle(TDocStd_Document) & doc;
+            ~CloseDocument() {
+                if (!doc.IsNull()) XCAFApp_Application::GetApplication()->Close(doc);
+            }
+        } closeDocument{xdoc};
         if (parts) {
             cad.stats.parts = cad.pieces.size();
-            if (!cafWriter.Transfer(partsDocument(product, cad.pieces), STEPControl_AsIs))
-                throw std::runtime_error("OpenCASCADE could not transfer the parts to STEP");
+            xdoc = partsDocument(product, cad.pieces);
+            if (!cafWriter->Transfer(xdoc, STEPControl_AsIs)) throw std::runtime_error("OpenCASCADE could not transfer the parts to STEP");
         } else {
             cad.stats.parts = 1;
             if (writer.Transfer(cad.shape, STEPControl_AsIs) != IFSelect_RetDone)
