@@ -586,3 +586,22 @@ TEST(StepParts, NamedPartsAreProductsOfAnAssembly) {
     EXPECT_EQ(stats.parts, 1u);
     fs::remove_all(dir);
 }
+
+// A stale automatic name ("patch 1" on patch 0, as add-patch left it after a delete) is not taken
+// for a place: the patches come back in their own places (the stale name dropped).
+TEST(StepRoundTrip, AStaleAutomaticNameIsNoPlace) {
+    const fs::path dir = pw::test::freshTempDir("step-stale-name");
+    pw::Document doc;
+    pw::addFlatPatch(doc, pw::Vec3(0.0), 1.0);
+    pw::addFlatPatch(doc, pw::Vec3(5.0, 0.0, 0.0), 1.0);
+    doc.patches[0].name = "patch 1";
+    doc.patches[1].name = "lid";  // read as an unplaced face, it would fill place 0
+    pw::exportStep(doc, dir / "stale.step");
+    const pw::Document back = pw::importCadSurfaces(dir / "stale.step");
+    ASSERT_EQ(back.patches.size(), 2u);
+    for (size_t p = 0; p < 2; ++p) {
+        EXPECT_EQ(back.patches[p].name, p == 0 ? "" : "lid") << p;
+        EXPECT_LT(worstPointDistance(doc, ids(doc.patches[p].idx), back, ids(back.patches[p].idx)), 1e-9) << p;
+    }
+    fs::remove_all(dir);
+}

@@ -284,6 +284,9 @@ void DragController::setSoftRadius(const Document& doc, double radius) {
     Document at = doc;
     at.points = start_;  // distances along the nets as they were at the start
     setUp(at);
+    if (slide_)  // the points the new radius takes in slide along their own directions too
+        for (uint32_t p : softPoints_.points)
+            if (p < slideDirs_.size() && !movedMask_[p]) slideDirs_[p] = slideDirection(at, p, *slide_).value_or(Vec3(0.0));
 }
 
 void DragController::setUp(const Document& doc) {

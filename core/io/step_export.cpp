@@ -217,8 +217,11 @@ CadShape cadShape(const Document& doc, const char* format) {
         if (!face.IsDone())
             throw std::runtime_error(what + ": OpenCASCADE could not make a face of it (error " + std::to_string(int(face.Error())) + ")");
         sewing.Add(face.Face());
-        made.emplace_back(face.Face(), cadFaceName(kind, index, name));
-        userNames.push_back(cadFaceLabelIndex(name, kind) == index ? std::string() : name);
+        // A name that reads as a place ("patch 5": what add-patch names the patch it makes, stale
+        // once an earlier item goes) is written as the item's own place, never as another's.
+        const bool placeLike = cadFaceLabelIndex(name, "patch") || cadFaceLabelIndex(name, "net") || cadFaceLabelIndex(name, "triangle");
+        made.emplace_back(face.Face(), cadFaceName(kind, index, placeLike ? std::string() : name));
+        userNames.push_back(placeLike ? std::string() : name);
     };
     for (size_t p = 0; p < src.patches.size(); ++p) {
         const std::optional<Weights16> w = gatherWeights(src, src.patches[p].idx);  // rational: exact, weights and all

@@ -58,6 +58,7 @@
 #include "core/model/camera_math.hpp"
 #include "core/model/join_detect.hpp"
 #include "core/ops/net_ops.hpp"
+#include "core/ops/patch_ops.hpp"
 
 namespace pw {
 inline namespace io {
@@ -228,24 +229,39 @@ struct NetFace {
 // put in their places.
 void rebuildNets(Document& doc, const std::vector<NetFace>& netFaces, std::vector<std::optional<size_t>>& patchPlaces) {
     std::vector<std::optional<size_t>> netPlaces;
+    std::vector<bool> converted(doc.patches.size(), false);
     for (auto f = netFaces.rbegin(); f != netFaces.rend(); ++f) {  // last first: earlier indices stay
         std::vector<uint32_t> patches(f->count);
         for (uint32_t k = 0; k < f->count; ++k) patches[k] = f->first + k;
         // 1e-8 × size: above the 1e-9 × size the export's knot removal may move a pole by.
         std::optional<uint32_t> net;
         try {
-            net = convertPatchesToNet(doc, patches, 1e-8);
+            net = convertPatchesToNet(doc, patches, 1e-8, /*keepPatches=*/true);
         } catch (const EditError&) {  // not a uniform C2 grid: a C1 one is a Bézier net keeping C1
             try {
-                net = convertPatchesToBezierNet(doc, patches, 1e-8);
+                net = convertPatchesToBezierNet(doc, patches, 1e-8, /*keepPatches=*/true);
             } catch (const EditError&) {  // G1 or C0 seams: the face stays patches, joined
             }
         }
         if (!net) continue;
         doc.surfaces[*net].name = f->name;
         netPlaces.push_back(f->place);
-        patchPlaces.erase(patchPlaces.begin() + f->first, patchPlaces.begin() + f->first + f->count);
+        for (uint32_t k = 0; k < f->count; ++k) converted[f->first + k] = true;
     }
+    // The converted patches go in one pass and the pool is compacted once (a conversion that
+    // removed its own patches would renumber the whole pool per patch: quadratic on big files).
+    size_t kept = 0;
+    for (size_t p = 0; p < doc.patches.size(); ++p)
+        if (!converted[p]) {
+            if (kept != p) {  // no self-move: it would empty the patch's name
+                doc.patches[kept] = std::move(doc.patches[p]);
+                patchPlaces[kept] = patchPlaces[p];
+            }
+            ++kept;
+        }
+    doc.patches.resize(kept);
+    patchPlaces.resize(kept);
+    compactPool(doc);
     std::reverse(doc.surfaces.begin(), doc.surfaces.end());
     std::reverse(netPlaces.begin(), netPlaces.end());
     placeByLabel(doc.surfaces, netPlaces);

@@ -421,7 +421,11 @@ PatchGrid patchGrid(const Document& doc, std::vector<uint32_t> patches, const ch
 }
 
 // Replaces the grid's patches by net `s` (made of existing or new points): one undoable whole.
-uint32_t replaceByNet(Document& doc, const PatchGrid& g, Surface s) {
+uint32_t replaceByNet(Document& doc, const PatchGrid& g, Surface s, bool keepPatches) {
+    if (keepPatches) {  // the caller removes them (many grids at once: one pool compaction)
+        doc.surfaces.push_back(std::move(s));
+        return uint32_t(doc.surfaces.size() - 1);
+    }
     Document d = doc;
     d.surfaces.push_back(std::move(s));
     for (auto it = g.patches.rbegin(); it != g.patches.rend(); ++it) deletePatch(d, *it);
@@ -431,7 +435,7 @@ uint32_t replaceByNet(Document& doc, const PatchGrid& g, Surface s) {
 
 }  // namespace
 
-uint32_t convertPatchesToNet(Document& doc, std::vector<uint32_t> patches, double tolerance) {
+uint32_t convertPatchesToNet(Document& doc, std::vector<uint32_t> patches, double tolerance, bool keepPatches) {
     const PatchGrid g = patchGrid(doc, std::move(patches), "converting patches to a net");
     const bool closedU = g.closedU, closedV = g.closedV;
     const uint32_t gc = g.cols, gr = g.rows;
@@ -480,10 +484,10 @@ uint32_t convertPatchesToNet(Document& doc, std::vector<uint32_t> patches, doubl
     }
 
     for (size_t k = 0; k < net.size(); ++k) s.idx[k] = appendPoint(doc, net[k]);
-    return replaceByNet(doc, g, std::move(s));
+    return replaceByNet(doc, g, std::move(s), keepPatches);
 }
 
-uint32_t convertPatchesToBezierNet(Document& doc, std::vector<uint32_t> patches, double tolerance) {
+uint32_t convertPatchesToBezierNet(Document& doc, std::vector<uint32_t> patches, double tolerance, bool keepPatches) {
     const PatchGrid g = patchGrid(doc, std::move(patches), "converting patches to a net");
     if ((g.closedU && g.cols < 6) || (g.closedV && g.rows < 6))
         throw EditError("a closed Bézier net needs at least 2 patches around each closed direction");
@@ -512,7 +516,7 @@ uint32_t convertPatchesToBezierNet(Document& doc, std::vector<uint32_t> patches,
     s.closedV = g.closedV;
     s.name = "net";
     s.idx = g.idx;
-    return replaceByNet(doc, g, std::move(s));
+    return replaceByNet(doc, g, std::move(s), keepPatches);
 }
 
 }  // namespace ops

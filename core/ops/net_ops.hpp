@@ -62,13 +62,14 @@ std::vector<uint32_t> convertNetToPatches(Document& doc, uint32_t s);
 // Replaces the Bézier patches `patches` (every patch when empty) by one uniform B-spline net when
 // they form a regular grid (neighbours share whole edges, same orientation; a direction may wrap)
 // that is C2 across every seam within `tolerance` × model size. Returns the new surface index.
-uint32_t convertPatchesToNet(Document& doc, std::vector<uint32_t> patches, double tolerance = 1e-9);
+// keepPatches: leave the patches (and the points only they use) for the caller to remove.
+uint32_t convertPatchesToNet(Document& doc, std::vector<uint32_t> patches, double tolerance = 1e-9, bool keepPatches = false);
 
 // The same grid of Bézier patches as one Bézier net that keeps C1 (Surface::keepC1) on their own
 // points, when every seam is C1 within `tolerance` × model size (each seam point the midpoint of
 // its neighbours across it: a Catmull-Rom net written to STEP comes back so). Returns the new
 // surface index; EditError otherwise.
-uint32_t convertPatchesToBezierNet(Document& doc, std::vector<uint32_t> patches, double tolerance = 1e-9);
+uint32_t convertPatchesToBezierNet(Document& doc, std::vector<uint32_t> patches, double tolerance = 1e-9, bool keepPatches = false);
 
 }  // namespace ops
 }  // namespace pw
