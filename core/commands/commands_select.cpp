@@ -140,8 +140,7 @@ void execSlide(CommandContext& ctx) {
     // Directions from the shape before the slide, so that every point moves by DIST.
     const Document& doc = ctx.session.doc;
     for (uint32_t p : ctx.session.selectedPoints())
-        if (!slideDirection(doc, p, axis))
-            throw EditError("point " + std::to_string(p) + " has no control polygon to slide along (a point of a patch or net slides)");
+        if (!slideDirection(doc, p, axis)) throw EditError(slideRefusal(p));
     std::vector<Vec3> cache(doc.points.size(), Vec3(std::nan("")));
     transformSelection(ctx, "Slide", [&](uint32_t p, const Vec3& at) {
         if (std::isnan(cache[p].x)) cache[p] = slideDirection(doc, p, axis).value_or(Vec3(0.0));

@@ -99,7 +99,7 @@ bool DragController::toggleSlide(const Document& doc, SlideAxis axis) {
     for (uint32_t p : moved_) {
         const std::optional<Vec3> d = slideDirection(at, p, axis);
         if (!d) {
-            refusal_ = "point " + std::to_string(p) + " has no control polygon to slide along (a point of a patch or net slides)";
+            refusal_ = slideRefusal(p);
             return false;
         }
         dirs[p] = *d;

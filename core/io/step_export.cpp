@@ -210,7 +210,6 @@ CadShape cadShape(const Document& doc, const char* format) {
     // Every face in the document's order, with its name or place (cad_labels.hpp).
     std::vector<std::pair<TopoDS_Face, std::string>> made;
     std::vector<std::string> userNames;  // the items' own names (empty where unnamed)
-    // A name that is the item's own place ("patch 5", what add-patch gives patch 5) is no name.
     auto addFace = [&](const Handle(Geom_Surface) & surface, const char* kind, size_t index, const std::string& name) {
         const std::string what = std::string(std::string_view(kind) == "net" ? "surface" : kind) + " " + std::to_string(index);
         BRepBuilderAPI_MakeFace face(surface, Precision::Confusion());

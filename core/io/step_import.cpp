@@ -16,7 +16,6 @@
 #include <IGESControl_Reader.hxx>
 #include <IGESData_GlobalSection.hxx>
 #include <IGESData_IGESModel.hxx>
-#include <NCollection_DataMap.hxx>
 #include <STEPControl_Reader.hxx>
 #include <Standard_Failure.hxx>
 #include <StepData_StepModel.hxx>
@@ -26,7 +25,6 @@
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
-#include <TopTools_ShapeMapHasher.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Wire.hxx>
@@ -230,7 +228,7 @@ struct NetFace {
 void rebuildNets(Document& doc, const std::vector<NetFace>& netFaces, std::vector<std::optional<size_t>>& patchPlaces) {
     std::vector<std::optional<size_t>> netPlaces;
     std::vector<bool> converted(doc.patches.size(), false);
-    for (auto f = netFaces.rbegin(); f != netFaces.rend(); ++f) {  // last first: earlier indices stay
+    for (auto f = netFaces.begin(); f != netFaces.end(); ++f) {
         std::vector<uint32_t> patches(f->count);
         for (uint32_t k = 0; k < f->count; ++k) patches[k] = f->first + k;
         // 1e-8 × size: above the 1e-9 × size the export's knot removal may move a pole by.
@@ -262,8 +260,6 @@ void rebuildNets(Document& doc, const std::vector<NetFace>& netFaces, std::vecto
     doc.patches.resize(kept);
     patchPlaces.resize(kept);
     compactPool(doc);
-    std::reverse(doc.surfaces.begin(), doc.surfaces.end());
-    std::reverse(netPlaces.begin(), netPlaces.end());
     placeByLabel(doc.surfaces, netPlaces);
 }
 
@@ -353,16 +349,16 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
                 z->Increase(3, 3);
                 // A Bézier triangle written as a collapsed quad (by Patchwork, or exactly one by
                 // another system) comes back a triangle.
+                Net16 poles;  // row-major like Patch::idx
+                double extent = 1.0;
+                for (int r = 0; r < 4; ++r)
+                    for (int c = 0; c < 4; ++c) {
+                        const gp_Pnt p = z->Pole(c + 1, r + 1);
+                        poles[size_t(r * 4 + c)] = Vec3(p.X(), p.Y(), p.Z());
+                        extent = std::max({extent, std::abs(p.X()), std::abs(p.Y()), std::abs(p.Z())});
+                    }
                 if (mayBeTriangle && !z->IsURational() && !z->IsVRational() && collapsedColumn(z)) {
-                    Net16 quad;
-                    double extent = 1.0;
-                    for (int r = 0; r < 4; ++r)
-                        for (int c = 0; c < 4; ++c) {
-                            const gp_Pnt p = z->Pole(c + 1, r + 1);
-                            quad[size_t(r * 4 + c)] = Vec3(p.X(), p.Y(), p.Z());
-                            extent = std::max({extent, std::abs(p.X()), std::abs(p.Y()), std::abs(p.Z())});
-                        }
-                    if (const std::optional<Net10> net = collapsedQuadAsTriangle(quad, 1e-9 * extent)) {
+                    if (const std::optional<Net10> net = collapsedQuadAsTriangle(poles, 1e-9 * extent)) {
                         TrianglePatch tri;
                         tri.name = name;
                         for (size_t c = 0; c < 10; ++c) {
@@ -379,9 +375,8 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
                 if (trianglePlace) patch.name = "triangle " + std::to_string(*trianglePlace);  // a quad after all: keep its label
                 for (int r = 0; r < 4; ++r)
                     for (int c = 0; c < 4; ++c) {
-                        const gp_Pnt p = z->Pole(c + 1, r + 1);
                         patch.idx[size_t(r * 4 + c)] = uint32_t(doc.points.size());
-                        doc.points.push_back(Vec3(p.X(), p.Y(), p.Z()));
+                        doc.points.push_back(poles[size_t(r * 4 + c)]);
                         if (z->IsURational() || z->IsVRational())
                             setPointWeight(doc, uint32_t(doc.points.size() - 1), z->Weight(c + 1, r + 1));
                     }

@@ -483,6 +483,8 @@ uint32_t convertPatchesToNet(Document& doc, std::vector<uint32_t> patches, doubl
         throw EditError(msg);
     }
 
+    // Refused before any point is added, so that a full pool leaves the document as it was.
+    if (doc.points.size() + net.size() > limits::kMaxPoints) throw EditError("the point pool is full");
     for (size_t k = 0; k < net.size(); ++k) s.idx[k] = appendPoint(doc, net[k]);
     return replaceByNet(doc, g, std::move(s), keepPatches);
 }

@@ -57,5 +57,9 @@ std::optional<Vec3> slideDirection(const Document& doc, uint32_t i, SlideAxis ax
     return d / len;
 }
 
+std::string slideRefusal(uint32_t i) {
+    return "point " + std::to_string(i) + " has no control polygon to slide along (a point of a patch or net slides)";
+}
+
 }  // namespace select
 }  // namespace pw

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "core/model/document.hpp"
@@ -20,6 +21,8 @@ std::optional<SlideAxis> parseSlideAxis(std::string_view word);  // "u", "v", "n
 // edge), and N = U × V turned to the patch's normal side. nullopt for a point no patch or net uses,
 // or where the polygon collapses there.
 std::optional<Vec3> slideDirection(const Document& doc, uint32_t i, SlideAxis axis);
+// Why point i cannot slide (slideDirection gave nullopt): the `slide` command's and the drag's words.
+std::string slideRefusal(uint32_t i);
 
 }  // namespace select
 }  // namespace pw
