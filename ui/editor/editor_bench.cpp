@@ -40,6 +40,9 @@ double median(std::vector<double> v) {
 
 int Editor::runBench(const EditorBenchOptions& opt) {
     if (opt.frames < 1 || opt.frames > 100000) throw InputError("bench", "--frames: must be from 1 to 100000");
+    // A benchmark measures the document it was given: another session's autosave is neither offered
+    // (its modal would take the keys) nor touched.
+    dialogs_.offerRecovery({});
     // Step 1: the document at the benchmark's level (or a file's own settings), and a bare renderer of
     // the same size and format.
     const bool uniform = opt.level.has_value() || opt.file.empty();
