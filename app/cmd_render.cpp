@@ -433,8 +433,9 @@ void addRenderOptions(CLI::App* cmd, RenderArgs& a) {
                     "auto | X,Y,Z: draw from another camera while levels and culling stay those of the view: culled patches "
                     "greyed in place, the view's frustum drawn");
     cmd->add_option("--merge-windows", a.mergeWindows,
-                    "auto (on CPU renderers) | never | always: draw windows of a net that get one power-of-two level "
-                    "several to a patch (the same vertices; lavapipe pays per patch)");
+                    "auto (on CPU renderers) | never | always: draw windows of a net that get the same levels "
+                    "several to a patch (the same vertices; levels other than powers of two on lavapipe only, whose placement is known; "
+                    "lavapipe pays per patch)");
     cmd->add_flag("--cull-far", a.cullFar, "Distance mode: cull patches centred at or beyond FAR (the notes' level 0) instead of level 1");
     cmd->add_option("--target-px", a.targetPx, "Screen-space adaptive: pixels per segment (default 8)");
     cmd->add_option("--max-level", a.maxLevel, "Adaptive: largest level, 1..64");

@@ -13,6 +13,9 @@
 #include "common.glsl"
 #include "core/gpu/curvature_math.h"
 #include "core/gpu/rational_math.h"
+#ifdef MERGED
+#include "core/gpu/tess_place.h"
+#endif
 #ifdef DISPLACE
 #include "displacement.glsl"
 #endif
@@ -26,7 +29,7 @@ layout(quads, SPACING, ccw) in;
 // @teach}
 
 #ifdef MERGED
-// The block (shaders/merged.tesc): its first window, windows per net row, Bu + 256 Bv, the windows' level.
+// The block (shaders/merged.tesc): its first window, windows per net row, Bu + 256 Bv, the windows' levels nu + 256 nv.
 layout(location = 4) patch in uvec4 blockPatch;
 layout(set = 0, binding = 4, std430) readonly buffer PoolPoints { vec4 poolPoints[]; };    // xyz, weight
 layout(set = 0, binding = 5, std430) readonly buffer WindowIndices { uint windowIndices[]; };  // 16 a window
@@ -172,16 +175,17 @@ void loadWindow(uint w) {
 
 void main() {
 #ifdef MERGED
-    // The block's domain is Bu x Bv windows: scaling by Bu and Bv (powers of two) and taking the
-    // window's corner off are exact, so each window gets the parameters its own patch at level n
-    // would get (powers of two: the tessellator's i / (B n) is exactly i' / n).
-    uint blockU = blockPatch.z & 255u, blockV = blockPatch.z >> 8u;
-    float bu = gl_TessCoord.x * float(blockU), bv = gl_TessCoord.y * float(blockV);
-    uint col = min(uint(bu), blockU - 1u), row = min(uint(bv), blockV - 1u);
+    // The block's domain is Bu x Bv windows at levels Bu nu and Bv nv: each vertex is snapped to its
+    // index k on the block's edge (the tessellator places it within 1/(2 B n) of k / (B n)), which
+    // names its window (k / n) and its index there (k mod n), placed as the window's own patch gets it
+    // (core/gpu/tess_place.h: exactly j / n for powers of two; lavapipe's 16.16 rounding otherwise).
+    uint blockU = blockPatch.z & 255u, blockV = blockPatch.z >> 8u, nu = blockPatch.w & 255u, nv = blockPatch.w >> 8u;
+    uint ku = uint(round(gl_TessCoord.x * float(blockU * nu))), kv = uint(round(gl_TessCoord.y * float(blockV * nv)));
+    uint col = min(ku / nu, blockU - 1u), row = min(kv / nv, blockV - 1u);
     uint window = blockPatch.x + row * blockPatch.y + col;
     loadWindow(window);
-    float u = bu - float(col), v = bv - float(row);
-    vec2 windowLevels = vec2(float(blockPatch.w));
+    float u = fixedTessPlace(ku - col * nu, nu), v = fixedTessPlace(kv - row * nv, nv);
+    vec2 windowLevels = vec2(float(nu), float(nv));
     uint patchId = window;
 #else
     float u = gl_TessCoord.x, v = gl_TessCoord.y;  // @teach= main: where the tessellator put this vertex

@@ -11,6 +11,7 @@
 #include <set>
 
 #include "core/construct/model_builders.hpp"
+#include "core/gpu/tess_place.h"
 #include "core/io/bpt_format.hpp"
 #include "core/io/document_io.hpp"
 #include "core/mesh/mesh_tessellate.hpp"
@@ -119,6 +120,27 @@ TEST_F(RenderCapture, TeapotAtAUniformLevelIsTheCpuExportsMesh) {
     EXPECT_EQ(cracks(c.mesh, open, tol), 0u);
     EXPECT_GT(windingAgreement(c.mesh), 0.99);  // counter-clockwise seen from the normal, like the CPU mesh
     EXPECT_GT(windingAgreement(cpu), 0.99);
+}
+
+// The tessellator's own coordinates (the captured UVs of one patch at level n, equal spacing) are
+// where core/gpu/tess_place.h says a fixed-point tessellator puts them: merged blocks place their
+// vertices by it (render/scene/merged_blocks.hpp), so a window in a block is where it would be alone.
+TEST_F(RenderCapture, TheFixedPointTessellatorPlacesPointsAsTessPlaceSays) {
+    if (!sharedDevice().caps().fixedPointTessellator) GTEST_SKIP() << "not Mesa's fixed-point tessellator";
+    const Document doc = makePatchGrid(1, 1);
+    Offscreen off(64, 64, false);
+    off.setDocument(doc);
+    for (uint32_t n = 1; n <= 64; n += (n < 16 ? 1 : 8)) {
+        const render::CapturedSurface c = off.capture(teapotOptions(doc, Spacing::Equal, AdaptiveMode::None, float(n)));
+        std::set<float> us, vs, want;
+        for (const auto& uv : c.mesh.uvs) us.insert(uv[0]), vs.insert(uv[1]);
+        for (uint32_t i = 0; i <= n; ++i) want.insert(gpu::fixedTessPlace(i, n));
+        EXPECT_EQ(us, want) << "level " << n;
+        EXPECT_EQ(vs, want) << "level " << n;
+        if (n == 3) {
+            EXPECT_EQ(want.count(1.0f / 3.0f), 0u);  // not i / n: 16.16 rounding
+        }
+    }
 }
 
 // Every partitioning and adaptive mode: the capture holds the triangles the frame's statistics

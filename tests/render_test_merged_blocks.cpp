@@ -1,5 +1,5 @@
-// Merged blocks (render/scene/merged_blocks.hpp): windows of a spline net that get one power-of-two
-// level are drawn several to a patch. The plan takes only what cannot change the picture, and the
+// Merged blocks (render/scene/merged_blocks.hpp): windows of a spline net that get one level (any
+// level on lavapipe, powers of two elsewhere) are drawn several to a patch. The plan takes only what cannot change the picture, and the
 // frames drawn that way have the same triangles and, but for the diagonals the tessellator picks
 // inside a block, the same pixels as one window a patch, with no hole anywhere.
 #include <gtest/gtest.h>
@@ -48,7 +48,7 @@ void expectBlocksCover(const render::SurfaceScene& s, const render::MergedBlocks
 
 class MergedBlocks : public RenderTest {};
 
-TEST_F(MergedBlocks, PlanTakesOnlyOnePowerOfTwoLevelOfSplineNetWindowsInView) {
+TEST_F(MergedBlocks, PlanTakesOnlyOneLevelOfSplineNetWindowsInView) {
     const Document doc = splineNet(11, NetShape::Flat);  // 8 x 8 windows
     const render::SurfaceScene s = render::uploadSurfaceScene(sharedDevice(), doc);
     ASSERT_EQ(s.windowCount, 64u);
@@ -58,59 +58,91 @@ TEST_F(MergedBlocks, PlanTakesOnlyOnePowerOfTwoLevelOfSplineNetWindowsInView) {
     TessSettings ts;
     const ViewMatrices vm = viewOf(doc);
 
-    std::vector<uint8_t> level(64, 2);
-    render::MergedBlocks m = render::planMergedBlocks(s, level, ts, vm, 64.0f);
+    const auto both = [](uint8_t n) { return render::DirectionLevels{n, n}; };
+    std::vector<render::DirectionLevels> level(64, both(2));
+    render::MergedBlocks m = render::planMergedBlocks(s, level, ts, vm, 64.0f, false);
     EXPECT_EQ(m.windows, 64u);
     EXPECT_EQ(m.blocks.size(), 4u);  // four tiles of 4 x 4
     expectBlocksCover(s, m);
 
     // One window that may not be merged (an uncertain level): its tile falls back to quarters,
     // and its quarter to the row of two that does not hold it.
-    level[0] = 0;
-    m = render::planMergedBlocks(s, level, ts, vm, 64.0f);
+    level[0] = {};
+    m = render::planMergedBlocks(s, level, ts, vm, 64.0f, false);
     EXPECT_EQ(m.windows, 62u);
     EXPECT_EQ(m.merged[0], 0);
     EXPECT_EQ(m.merged[1], 0);
     expectBlocksCover(s, m);
 
     // Level 1: no strips (one inner level 1 beside a larger one is rounded up to 2 by the spec).
-    std::fill(level.begin(), level.end(), uint8_t(1));
-    level[0] = 0;
-    m = render::planMergedBlocks(s, level, ts, vm, 64.0f);
+    std::fill(level.begin(), level.end(), both(1));
+    level[0] = {};
+    m = render::planMergedBlocks(s, level, ts, vm, 64.0f, false);
     EXPECT_EQ(m.windows, 60u);
     expectBlocksCover(s, m);
 
     // Levels that are not powers of two: the tessellator places i / (B n) otherwise than i' / n.
-    std::fill(level.begin(), level.end(), uint8_t(3));
-    EXPECT_EQ(render::planMergedBlocks(s, level, ts, vm, 64.0f).windows, 0u);
-    // 4 x 8 is more than a merged patch's largest level (16): 2 x 2 blocks only; 16 a window: none.
-    std::fill(level.begin(), level.end(), uint8_t(8));
-    m = render::planMergedBlocks(s, level, ts, vm, 64.0f);
+    // A fixed-point tessellator (lavapipe) is placed as core/gpu/tess_place.h says: those merge too,
+    // 4 x 4 at 3 (12), 2 x 2 at 5 (10) and 7 (14).
+    std::fill(level.begin(), level.end(), both(3));
+    EXPECT_EQ(render::planMergedBlocks(s, level, ts, vm, 64.0f, false).windows, 0u);
+    m = render::planMergedBlocks(s, level, ts, vm, 64.0f, true);
+    EXPECT_EQ(m.windows, 64u);
+    EXPECT_EQ(m.blocks.size(), 4u);
+    expectBlocksCover(s, m);
+    for (const uint8_t n : {uint8_t(5), uint8_t(7)}) {
+        std::fill(level.begin(), level.end(), both(n));
+        m = render::planMergedBlocks(s, level, ts, vm, 64.0f, true);
+        EXPECT_EQ(m.windows, 64u) << int(n);
+        EXPECT_EQ(m.blocks.size(), 16u) << int(n);
+    }
+    std::fill(level.begin(), level.end(), both(9));  // 2 x 9 is past 16
+    EXPECT_EQ(render::planMergedBlocks(s, level, ts, vm, 64.0f, true).windows, 0u);
+    // Levels that differ between the directions: 2 along u, 3 along v make blocks at 8 and 12.
+    std::fill(level.begin(), level.end(), render::DirectionLevels{2, 3});
+    m = render::planMergedBlocks(s, level, ts, vm, 64.0f, true);
+    EXPECT_EQ(m.windows, 64u);
+    EXPECT_EQ(m.blocks.size(), 4u);
+    EXPECT_EQ(m.blocks[0].w, 2u + 256u * 3u);
+    // 1 along one direction only: the spec rounds that inner level up to 2 for the window alone.
+    std::fill(level.begin(), level.end(), render::DirectionLevels{1, 2});
+    EXPECT_EQ(render::planMergedBlocks(s, level, ts, vm, 64.0f, false).windows, 0u);
+    // 4 along u, 8 along v: 4 x 4 is past 16 along v, 2 x 2 fits.
+    std::fill(level.begin(), level.end(), render::DirectionLevels{4, 8});
+    m = render::planMergedBlocks(s, level, ts, vm, 64.0f, false);
     EXPECT_EQ(m.windows, 64u);
     EXPECT_EQ(m.blocks.size(), 16u);
-    std::fill(level.begin(), level.end(), uint8_t(16));
-    EXPECT_EQ(render::planMergedBlocks(s, level, ts, vm, 64.0f).windows, 0u);
+    // 4 x 8 is more than a merged patch's largest level (16): 2 x 2 blocks only; 16 a window: none.
+    std::fill(level.begin(), level.end(), both(8));
+    m = render::planMergedBlocks(s, level, ts, vm, 64.0f, false);
+    EXPECT_EQ(m.windows, 64u);
+    EXPECT_EQ(m.blocks.size(), 16u);
+    std::fill(level.begin(), level.end(), both(16));
+    EXPECT_EQ(render::planMergedBlocks(s, level, ts, vm, 64.0f, false).windows, 0u);
     // Fractional spacing has no uniform grid; back-face culling is the control shader's.
-    std::fill(level.begin(), level.end(), uint8_t(2));
+    std::fill(level.begin(), level.end(), both(2));
     ts.spacing = Spacing::FractionalOdd;
-    EXPECT_EQ(render::planMergedBlocks(s, level, ts, vm, 64.0f).windows, 0u);
+    EXPECT_EQ(render::planMergedBlocks(s, level, ts, vm, 64.0f, false).windows, 0u);
     ts.spacing = Spacing::Pow2;
-    EXPECT_EQ(render::planMergedBlocks(s, level, ts, vm, 64.0f).windows, 64u);
+    EXPECT_EQ(render::planMergedBlocks(s, level, ts, vm, 64.0f, false).windows, 64u);
     ts.cullBackfaces = true;
-    EXPECT_EQ(render::planMergedBlocks(s, level, ts, vm, 64.0f).windows, 0u);
+    EXPECT_EQ(render::planMergedBlocks(s, level, ts, vm, 64.0f, false).windows, 0u);
     ts.cullBackfaces = false;
     // Looking away: every window would be culled off screen, so none is merged.
     Camera away = frameBounds(doc.camera, computeBounds(doc.points), double(W) / H);
     away.target = {1000.0, 1000.0, 1000.0};
     away.distance = 1.0;
-    EXPECT_EQ(render::planMergedBlocks(s, level, ts, viewMatrices(away, double(W) / H), 64.0f).windows, 0u);
+    EXPECT_EQ(render::planMergedBlocks(s, level, ts, viewMatrices(away, double(W) / H), 64.0f, false).windows, 0u);
     ts.cullOffscreen = false;
-    EXPECT_EQ(render::planMergedBlocks(s, level, ts, viewMatrices(away, double(W) / H), 64.0f).windows, 64u);
+    EXPECT_EQ(render::planMergedBlocks(s, level, ts, viewMatrices(away, double(W) / H), 64.0f, false).windows, 64u);
 
     // A Bézier net may have creases between its windows: never merged.
     const Document bez = splineNet(13, NetShape::Flat, Basis::Bezier);
     const render::SurfaceScene sb = render::uploadSurfaceScene(sharedDevice(), bez);
-    EXPECT_EQ(render::planMergedBlocks(sb, std::vector<uint8_t>(sb.windowCount, 2), TessSettings{}, viewOf(bez), 64.0f).windows, 0u);
+    EXPECT_EQ(render::planMergedBlocks(sb, std::vector<render::DirectionLevels>(sb.windowCount, {2, 2}), TessSettings{}, viewOf(bez), 64.0f,
+                                       false)
+                  .windows,
+              0u);
 }
 
 // Pixels of background colour whose four neighbours are all surface: a crack between patches.
@@ -133,8 +165,8 @@ TEST_F(MergedBlocks, DrawTheSameSurfaceAsOneWindowAPatch) {
     for (const NetShape shape : {NetShape::Flat, NetShape::Torus}) {
         const Document doc = splineNet(shape == NetShape::Torus ? 48 : 35, shape);
         off.setDocument(doc);
-        for (const float px : {0.0f, 24.0f, 12.0f}) {  // 0: uniform level 2, else screen-adaptive at px
-            render::RenderOptions o = plainOptions(doc, 2.0f, double(W) / H);
+        for (const float px : {0.0f, -3.0f, -5.0f, -6.0f, 24.0f, 12.0f}) {  // 0: uniform level 2, -n: uniform n, else screen-adaptive at px
+            render::RenderOptions o = plainOptions(doc, px < 0.0f ? -px : 2.0f, double(W) / H);
             if (px > 0.0f) {
                 o.tess.adaptive = AdaptiveMode::ScreenSpace;
                 o.tess.targetPixels = px;
@@ -159,7 +191,7 @@ TEST_F(MergedBlocks, DrawTheSameSurfaceAsOneWindowAPatch) {
             EXPECT_EQ(holes(merged.image, o.display.background), 0u) << what;
         }
     }
-    EXPECT_GE(mergedFrames, 4);
+    EXPECT_GE(mergedFrames, 10);
 
     // Uniform levels are not clamped by the max level (that is adaptive's): level 4 under a max of 2
     // merges at 4, as the windows alone are drawn.

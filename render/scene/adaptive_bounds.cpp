@@ -26,9 +26,9 @@ int certainSegments(float l, Spacing spacing, float maxLevel) {
 }  // namespace
 
 std::vector<uint8_t> adaptiveLevelBounds(const SurfaceScene& s, const TessSettings& tess, const ViewMatrices& vm, float viewportW,
-                                         float viewportH, float maxLevel, std::vector<uint8_t>* uniform) {
+                                         float viewportH, float maxLevel, std::vector<DirectionLevels>* uniform) {
     std::vector<uint8_t> out(s.windowCount, uint8_t(roundedSegments(maxLevel, tess.spacing)));
-    if (uniform) uniform->assign(s.windowCount, 0);
+    if (uniform) uniform->assign(s.windowCount, DirectionLevels{});
     if (tess.adaptive == AdaptiveMode::None) return out;
     std::vector<uint32_t> kind(s.windowCount, 0);
     for (const BasisRun& r : s.runs)
@@ -40,7 +40,7 @@ std::vector<uint8_t> adaptiveLevelBounds(const SurfaceScene& s, const TessSettin
         const uint32_t* idx = &s.cpuIndices[size_t(w) * 16];
         const int depth = kind[w] == gpu::kBasisBezier ? 0 : 1;  // as the control shader's edgeSlot
         float level = 1.0f;
-        int same = -1;  // the segments every edge certainly gets; 0 when they differ or are uncertain
+        int certain[4] = {0, 0, 0, 0};  // the segments each edge certainly gets; 0 when uncertain
         for (int e = 0; e < 4; ++e) {
             uint32_t pool[4];
             for (int k = 0; k < 4; ++k) pool[k] = idx[gpu::quadEdgeSlot(e, k, depth)];
@@ -51,10 +51,7 @@ std::vector<uint8_t> adaptiveLevelBounds(const SurfaceScene& s, const TessSettin
                 gpu::adaptiveEdgeLevel(p[0], p[1], p[2], p[3], uint32_t(tess.adaptive), maxLevel, vm.eye, tess.distanceNear,
                                        tess.distanceFar, uint32_t(tess.distanceCurve), exps, vm.viewProj, viewport, tess.targetPixels);
             level = std::max(level, std::clamp(l, 1.0f, maxLevel));
-            if (uniform) {
-                const int n = certainSegments(l, tess.spacing, maxLevel);
-                same = same < 0 || same == n ? n : 0;
-            }
+            if (uniform) certain[e] = certainSegments(l, tess.spacing, maxLevel);
         }
         if (fromCentre) {  // the control shader's netCentre: the mean of the 16 control points
             glm::vec3 c(0.0f);
@@ -62,12 +59,15 @@ std::vector<uint8_t> adaptiveLevelBounds(const SurfaceScene& s, const TessSettin
             const float l = gpu::distanceLevel(glm::distance(vm.eye, c / 16.0f), maxLevel, tess.distanceNear, tess.distanceFar,
                                                uint32_t(tess.distanceCurve), exps);
             level = std::max(level, std::clamp(l, 1.0f, maxLevel));
-            same = 0;  // the inner levels come from elsewhere than the edges
+            certain[0] = 0;  // the inner levels come from elsewhere than the edges
         }
         level = std::max(level, s.overrideLevel[w]);
         out[w] = uint8_t(std::min(64, roundedSegments(level, tess.spacing) + 1));
-        // Inner levels are the larger opposite edges': equal edges make one level throughout.
-        if (uniform && s.overrideLevel[w] == 0.0f && same > 0) (*uniform)[w] = uint8_t(same);
+        // Inner levels are the larger opposite edges': equal opposite edges make one level along
+        // each direction (edges 1 and 3 run along u, 0 and 2 along v).
+        if (uniform && s.overrideLevel[w] == 0.0f && certain[0] > 0 && certain[0] == certain[2] && certain[1] > 0 &&
+            certain[1] == certain[3])
+            (*uniform)[w] = DirectionLevels{uint8_t(certain[1]), uint8_t(certain[0])};
     }
     return out;
 }

@@ -13,11 +13,19 @@
 namespace pw::render {
 inline namespace scene {
 
+// A window's segments along u (its two edges v = 0 and v = 1, and so its first inner level) and along
+// v (edges u = 0 and u = 1, the second inner level), where each is certainly one number; 0 where not.
+struct DirectionLevels {
+    uint8_t u = 0, v = 0;
+    bool known() const { return u != 0 && v != 0; }
+    bool operator==(const DirectionLevels&) const = default;
+};
+
 // Per window: an upper bound of its outer and inner segments (1..64), +1 for float differences.
-// With `uniform`: per window, the segments of all six levels when they are certainly one number (the
-// control shader's float arithmetic cannot round any edge otherwise; no override), else 0.
+// With `uniform`: per window, the segments along u and along v where the control shader's float
+// arithmetic cannot round either direction's two edges otherwise (no override).
 std::vector<uint8_t> adaptiveLevelBounds(const SurfaceScene& s, const TessSettings& tess, const ViewMatrices& vm, float viewportW,
-                                         float viewportH, float maxLevel, std::vector<uint8_t>* uniform = nullptr);
+                                         float viewportH, float maxLevel, std::vector<DirectionLevels>* uniform = nullptr);
 
 }  // namespace scene
 }  // namespace pw::render

@@ -36,19 +36,23 @@ bool mayBeCulled(const SurfaceScene& s, uint32_t w, const TessSettings& tess, co
 
 }  // namespace
 
-std::vector<uint8_t> settingsWindowLevels(const SurfaceScene& s, const TessSettings& tess) {
+std::vector<DirectionLevels> settingsWindowLevels(const SurfaceScene& s, const TessSettings& tess) {
     // As the fixed-levels control shader: the settings rounded, with no max-level clamp (that is adaptive's).
-    int n = roundedSegments(tess.inner[0], tess.spacing);
-    for (float l : {tess.inner[1], tess.outer[0], tess.outer[1], tess.outer[2], tess.outer[3]})
-        if (roundedSegments(l, tess.spacing) != n) n = 0;
-    std::vector<uint8_t> out(s.windowCount, uint8_t(n));
+    const auto agreed = [&](float inner, float a, float b) {
+        const int n = roundedSegments(inner, tess.spacing);
+        return uint8_t(roundedSegments(a, tess.spacing) == n && roundedSegments(b, tess.spacing) == n ? n : 0);
+    };
+    // inner[0] subdivides along u, as the edges v0 and v1 (outer 1 and 3) do.
+    DirectionLevels d{agreed(tess.inner[0], tess.outer[1], tess.outer[3]), agreed(tess.inner[1], tess.outer[0], tess.outer[2])};
+    if (!d.known()) d = {};
+    std::vector<DirectionLevels> out(s.windowCount, d);
     for (uint32_t w = 0; w < s.windowCount; ++w)
-        if (s.overrideLevel[w] != 0.0f) out[w] = 0;  // the shared-edge rule may raise its edges
+        if (s.overrideLevel[w] != 0.0f) out[w] = {};  // the shared-edge rule may raise its edges
     return out;
 }
 
-MergedBlocks planMergedBlocks(const SurfaceScene& s, const std::vector<uint8_t>& uniform, const TessSettings& tess,
-                              const ViewMatrices& cullView, float deviceMax) {
+MergedBlocks planMergedBlocks(const SurfaceScene& s, const std::vector<DirectionLevels>& uniform, const TessSettings& tess,
+                              const ViewMatrices& cullView, float deviceMax, bool anyLevel) {
     MergedBlocks out;
     out.merged.assign(s.windowCount, 0);
     out.perRun.assign(s.runs.size(), {0u, 0u});
@@ -58,28 +62,33 @@ MergedBlocks planMergedBlocks(const SurfaceScene& s, const std::vector<uint8_t>&
     // Patches up to level 16: past that the per-patch cost is small beside the triangles', and
     // lavapipe's draw module slows down on very large patches.
     const uint32_t maxLevel = uint32_t(std::min(deviceMax, float(kMaxMergedLevel)));
-    // Per window, the level it may be merged at (0: not at all).
-    std::vector<uint8_t> level(s.windowCount, 0);
+    // Per window, the levels it may be merged at (0: not at all).
+    std::vector<DirectionLevels> level(s.windowCount);
+    const auto mergeable = [&](uint8_t n) { return anyLevel || powerOfTwo(n); };
     // Spline nets only: their windows meet with continuous normals (C2 B-splines, C1 Catmull-Rom),
     // so a seam vertex evaluated on either window shades alike; Bézier nets may have creases.
     for (const NetWindows& net : s.nets) {
         const BasisRun* run = windowRun(s, net.first);  // a net's windows share one basis
         if (!run || run->basisKind == gpu::kBasisBezier) continue;
-        for (uint32_t w = net.first; w < net.first + net.rows * net.cols; ++w)
-            if (powerOfTwo(uniform[w]) && !mayBeCulled(s, w, tess, cullView)) level[w] = uniform[w];
+        for (uint32_t w = net.first; w < net.first + net.rows * net.cols; ++w) {
+            const DirectionLevels d = uniform[w];
+            // A quad with one inner level 1 and the other above gets that level rounded up to 2 (the
+            // Vulkan spec's special case): such a window alone has vertices a block would not.
+            if (d.known() && mergeable(d.u) && mergeable(d.v) && (d.u == 1) == (d.v == 1) && !mayBeCulled(s, w, tess, cullView))
+                level[w] = d;
+        }
     }
     const auto tryBlock = [&](const NetWindows& net, uint32_t r0, uint32_t c0, uint32_t bu, uint32_t bv) {
         if (r0 + bv > net.rows || c0 + bu > net.cols) return false;
         const uint32_t first = net.first + r0 * net.cols + c0;
-        const uint32_t n = level[first];
-        if (n == 0 || std::max(bu, bv) * n > maxLevel) return false;
-        // A quad with one inner level 1 and the other above gets that level rounded up to 2 (the
-        // Vulkan spec's special case): a strip of level-1 windows would gain vertices inside.
-        if (n == 1 && bu != bv) return false;
+        const DirectionLevels n = level[first];
+        if (!n.known() || bu * n.u > maxLevel || bv * n.v > maxLevel) return false;
+        // The same special case for the block: a strip of level-1 windows would gain vertices inside.
+        if ((bu * n.u == 1) != (bv * n.v == 1)) return false;
         for (uint32_t r = 0; r < bv; ++r)
             for (uint32_t c = 0; c < bu; ++c)
-                if (level[first + r * net.cols + c] != n) return false;
-        out.blocks.push_back({first, net.cols, bu + 256u * bv, n});
+                if (!(level[first + r * net.cols + c] == n)) return false;
+        out.blocks.push_back({first, net.cols, bu + 256u * bv, n.u + 256u * n.v});
         for (uint32_t r = 0; r < bv; ++r)
             for (uint32_t c = 0; c < bu; ++c) out.merged[first + r * net.cols + c] = 1;
         out.windows += bu * bv;
@@ -124,7 +133,7 @@ uint32_t recordMergedBlocks(VkCommandBuffer cmd, VkPipelineLayout layout, const 
             uint32_t vertices = 0;
             for (n = 0; at + n < first + count; ++n) {
                 const glm::uvec4& b = m.blocks[at + n];
-                const uint32_t v = ((b.z & 255u) * b.w + 1) * ((b.z >> 8u) * b.w + 1);
+                const uint32_t v = ((b.z & 255u) * (b.w & 255u) + 1) * ((b.z >> 8u) * (b.w >> 8u) + 1);
                 if (n > 0 && vertexBudget != 0 && vertices + v > vertexBudget) break;
                 vertices += v;
             }

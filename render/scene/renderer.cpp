@@ -245,13 +245,13 @@ Renderer::FramePlan Renderer::prepareFrame(const RenderOptions& opt, VkRect2D ar
     plan.perDraw = patchesPerDraw(maxSegments(ts, m.scene.overrideMax, maxLevel), plan.budget);
     // (Displaced windows batch by the worst case: the map's detail may raise any edge to the maximum.)
     const bool merge = mergingWanted(opt);
-    std::vector<uint8_t> uniform;
+    std::vector<DirectionLevels> uniform;
     if (ts.adaptive != AdaptiveMode::None && !m.displaced)
         plan.levelBounds = adaptiveLevelBounds(m.scene, ts, lod, float(ext.width), float(ext.height), maxLevel, merge ? &uniform : nullptr);
     else if (merge)
         uniform = settingsWindowLevels(m.scene, ts);
     if (merge) {
-        plan.merged = planMergedBlocks(m.scene, uniform, ts, lod, float(dev_.caps().maxTessLevel));
+        plan.merged = planMergedBlocks(m.scene, uniform, ts, lod, float(dev_.caps().maxTessLevel), dev_.caps().fixedPointTessellator);
         if (!plan.merged.blocks.empty())
             std::memcpy(m.blocks.mapped, plan.merged.blocks.data(), sizeof(glm::uvec4) * plan.merged.blocks.size());
     }

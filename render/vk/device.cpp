@@ -237,6 +237,13 @@ Device::Device(const DeviceOptions& options) {
         caps_.tessGeomPointSize = f.shaderTessellationAndGeometryPointSize;
         caps_.timestampPeriodNs = props_.limits.timestampPeriod;
         caps_.maxTessLevel = props_.limits.maxTessellationGenerationLevel;
+        {
+            VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+            VkPhysicalDeviceProperties2 p2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+            p2.pNext = &driver;
+            vkGetPhysicalDeviceProperties2(physical_, &p2);
+            caps_.fixedPointTessellator = driver.driverID == VK_DRIVER_ID_MESA_LLVMPIPE;
+        }
         const VkSampleCountFlags both = props_.limits.framebufferColorSampleCounts & props_.limits.framebufferDepthSampleCounts;
         caps_.maxSamples = (both & VK_SAMPLE_COUNT_4_BIT)   ? VK_SAMPLE_COUNT_4_BIT
                            : (both & VK_SAMPLE_COUNT_2_BIT) ? VK_SAMPLE_COUNT_2_BIT

@@ -35,6 +35,7 @@ struct DeviceCaps {
     bool transformFeedback = false;  // VK_EXT_transform_feedback: export as displayed (render/surface_capture)
     float timestampPeriodNs = 1.0f;
     uint32_t maxTessLevel = 64;
+    bool fixedPointTessellator = false;                        // Mesa's llvmpipe: places tessellated vertices as core/gpu/tess_place.h
     VkSampleCountFlagBits maxSamples = VK_SAMPLE_COUNT_1_BIT;  // colour and depth, at most 4
 };
 
