@@ -45,21 +45,25 @@ size_t binChunkBytes(std::string_view rest, const std::string& name) {
     return length;
 }
 
-std::string joinGlb(std::string json, std::string_view rest) {
+std::string joinGlb(std::string json, std::string_view rest) { return joinGlb(std::move(json), std::vector<std::string_view>{rest}); }
+
+std::string joinGlb(std::string json, const std::vector<std::string_view>& rest) {
     while (!json.empty() && json.back() == ' ') json.pop_back();  // padding it came with
     while (json.size() % 4) json += ' ';
-    if (20.0 + double(json.size()) + double(rest.size()) > double(UINT32_MAX))
+    double restBytes = 0;
+    for (std::string_view r : rest) restBytes += double(r.size());
+    if (20.0 + double(json.size()) + restBytes > double(UINT32_MAX))
         throw std::length_error("the file would pass the 4 GiB a .glb can hold");
     std::string out;
-    out.reserve(20 + json.size() + rest.size());
+    out.reserve(20 + json.size() + size_t(restBytes));
     auto put = [&](uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); };
     out += "glTF";
     put(2);
-    put(uint32_t(20 + json.size() + rest.size()));
+    put(uint32_t(20 + json.size() + size_t(restBytes)));
     put(uint32_t(json.size()));
     put(kJsonChunk);
     out += json;
-    out.append(rest);
+    for (std::string_view r : rest) out.append(r);
     return out;
 }
 

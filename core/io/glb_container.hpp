@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace pw {
 inline namespace io {
@@ -26,6 +27,9 @@ size_t binChunkBytes(std::string_view rest, const std::string& sourceName);
 // `json` already has (a split chunk's padding) are dropped first, so the bytes depend on the JSON
 // alone. Throws std::length_error past the 4 GiB a GLB can describe.
 std::string joinGlb(std::string json, std::string_view rest);
+// The same with `rest` given in pieces, written one after another (an exporter's BIN chunk straight
+// from its arrays, with no copy of it first).
+std::string joinGlb(std::string json, const std::vector<std::string_view>& rest);
 
 }  // namespace io
 }  // namespace pw

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <deque>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <random>
@@ -41,33 +42,46 @@ std::string extrasMarker() {
     return "@patchwork-document-" + std::to_string(rd()) + "-" + std::to_string(rd()) + "@";
 }
 
-// Replaces the quoted marker in the JSON (of a .gltf, or the JSON chunk of a .glb, whose lengths
-// and padding are rebuilt) with `documentJson`.
-std::string spliceExtras(const std::string& file, bool binary, const std::string& marker, const std::string& documentJson) {
-    auto splice = [&](std::string_view json) {
-        const std::string quoted = "\"" + marker + "\"";
-        const size_t at = json.find(quoted);
-        if (at == std::string_view::npos) throw std::logic_error("glTF export: the extras marker is missing");
-        std::string out(json.substr(0, at));
-        out += documentJson;
-        out += json.substr(at + quoted.size());
-        return out;
-    };
-    if (!binary) return splice(file);
-    const GlbParts parts = splitGlb(file, "(glb)");
-    return joinGlb(splice(parts.json), parts.rest);  // padded anew: tinygltf's followed the random marker
+// Replaces the quoted marker in the JSON (of a .gltf, or of a .glb's JSON chunk) with `documentJson`.
+std::string spliceExtras(std::string_view json, const std::string& marker, const std::string& documentJson) {
+    const std::string quoted = "\"" + marker + "\"";
+    const size_t at = json.find(quoted);
+    if (at == std::string_view::npos) throw std::logic_error("glTF export: the extras marker is missing");
+    std::string out(json.substr(0, at));
+    out += documentJson;
+    out += json.substr(at + quoted.size());
+    return out;
 }
 
 size_t align4(size_t n) { return (n + 3) & ~size_t{3}; }
 
+// The buffer's blocks. A .gltf's are copied into the buffer (base64 in the JSON); a .glb's BIN chunk
+// is written straight from them (joinGlb's pieces): the large arrays are borrowed, kept alive until
+// then, and copied nowhere else (three copies of the mesh before: the buffer, tinygltf's chunk and
+// its stream cost a third of a glb export).
+struct BinBlocks {
+    bool deferred = false;                                    // a .glb
+    size_t size = 0;                                          // bytes so far (blocks at 4-byte offsets)
+    std::vector<std::pair<size_t, std::string_view>> blocks;  // deferred: offset, bytes
+    std::deque<std::string> owned;                            // deferred: copies of the small blocks
+};
+
 // Appends a block to the buffer (4-byte aligned) and a bufferView over it; returns the view index.
 // Vertex views give their stride (the validator wants it when several accessors share a view).
-int addView(tinygltf::Model& model, const void* data, size_t bytes, int target, int stride = 0) {
-    std::vector<unsigned char>& buf = model.buffers[0].data;
-    const size_t offset = align4(buf.size());
-    buf.resize(offset, 0);
-    const auto* bytesIn = static_cast<const unsigned char*>(data);
-    buf.insert(buf.end(), bytesIn, bytesIn + bytes);  // no zero-fill of the large blocks
+// `borrow`: a deferred block refers to `data`, which must outlive the serialisation.
+int addView(tinygltf::Model& model, BinBlocks& bin, const void* data, size_t bytes, int target, int stride = 0, bool borrow = false) {
+    const size_t offset = align4(bin.size);
+    if (bin.deferred) {
+        std::string_view block(static_cast<const char*>(data), bytes);
+        if (!borrow) block = bin.owned.emplace_back(block);
+        bin.blocks.emplace_back(offset, block);
+    } else {
+        std::vector<unsigned char>& buf = model.buffers[0].data;
+        buf.resize(offset, 0);
+        const auto* bytesIn = static_cast<const unsigned char*>(data);
+        buf.insert(buf.end(), bytesIn, bytesIn + bytes);  // no zero-fill of the large blocks
+    }
+    bin.size = offset + bytes;
     tinygltf::BufferView view;
     view.buffer = 0;
     view.byteOffset = offset;
@@ -103,17 +117,17 @@ void setMinMax(tinygltf::Accessor& acc, const std::array<float, 3>* positions, s
 
 // Index data as the smallest component type that holds every index (65535 is avoided: it is the
 // primitive-restart value).
-int addIndexView(tinygltf::Model& model, const std::vector<uint32_t>& indices, size_t vertexCount, int& componentType,
-                 size_t& componentSize) {
+int addIndexView(tinygltf::Model& model, BinBlocks& bin, const std::vector<uint32_t>& indices, size_t vertexCount, int& componentType,
+                 size_t& componentSize, bool borrow = false) {
     if (vertexCount <= 65535) {
         std::vector<uint16_t> small(indices.begin(), indices.end());
         componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
         componentSize = 2;
-        return addView(model, small.data(), small.size() * 2, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+        return addView(model, bin, small.data(), small.size() * 2, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
     }
     componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
     componentSize = 4;
-    return addView(model, indices.data(), indices.size() * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+    return addView(model, bin, indices.data(), indices.size() * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER, 0, borrow);
 }
 
 std::string documentName(const Document& doc) { return doc.name.empty() ? std::string("Patchwork") : doc.name; }
@@ -144,15 +158,15 @@ int addLineMaterial(tinygltf::Model& model, const std::string& name, std::vector
 }
 
 // A mesh of one LINES primitive over its own positions.
-tinygltf::Mesh linesMesh(tinygltf::Model& model, const std::vector<std::array<float, 3>>& positions, const std::vector<uint32_t>& indices,
-                         int material) {
+tinygltf::Mesh linesMesh(tinygltf::Model& model, BinBlocks& bin, const std::vector<std::array<float, 3>>& positions,
+                         const std::vector<uint32_t>& indices, int material) {
     const size_t nv = positions.size();
-    const int posView = addView(model, positions.data(), nv * 12, TINYGLTF_TARGET_ARRAY_BUFFER);
+    const int posView = addView(model, bin, positions.data(), nv * 12, TINYGLTF_TARGET_ARRAY_BUFFER);
     const int posAcc = addAccessor(model, posView, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, nv);
     setMinMax(model.accessors[posAcc], positions.data(), nv);
     int componentType = 0;
     size_t componentSize = 0;
-    const int idxView = addIndexView(model, indices, nv, componentType, componentSize);
+    const int idxView = addIndexView(model, bin, indices, nv, componentType, componentSize);
     tinygltf::Primitive prim;
     prim.attributes["POSITION"] = posAcc;
     prim.indices = addAccessor(model, idxView, 0, componentType, TINYGLTF_TYPE_SCALAR, indices.size());
@@ -267,6 +281,9 @@ std::string exportGltfBytes(const Document& doc, bool binary, const ExportOption
         model.asset.extras = tinygltf::Value(std::move(extras));
     }
     model.buffers.emplace_back();
+    BinBlocks bin;
+    bin.deferred = binary;
+    SplitMesh mesh;  // a .glb's BIN chunk is written from it (BinBlocks)
 
     tinygltf::Node root;
     root.name = documentName(doc);
@@ -300,7 +317,7 @@ std::string exportGltfBytes(const Document& doc, bool binary, const ExportOption
     // The surface: one primitive per group (connected surface, patch, or all), each with its own
     // vertices; open surfaces (a boundary edge anywhere) are double-sided.
     {
-        SplitMesh mesh = splitMesh(displayed ? std::move(*displayed) : tessellateDocument(doc, level), options.primitives);
+        mesh = splitMesh(displayed ? std::move(*displayed) : tessellateDocument(doc, level), options.primitives);
         turnAll(mesh.positions);
         turnAll(mesh.normals, false);
         st.triangles = mesh.indices.size() / 3;
@@ -308,15 +325,17 @@ std::string exportGltfBytes(const Document& doc, bool binary, const ExportOption
         st.primitives = mesh.groups.size();
         if (!mesh.indices.empty()) {
             const size_t nv = mesh.positions.size();
-            model.buffers[0].data.reserve(nv * 32 + mesh.indices.size() * 4 + cage.positions.size() * 12 + cage.indices.size() * 4 + 64);
-            const int posView = addView(model, mesh.positions.data(), nv * 12, TINYGLTF_TARGET_ARRAY_BUFFER, 12);
-            const int nrmView = addView(model, mesh.normals.data(), nv * 12, TINYGLTF_TARGET_ARRAY_BUFFER, 12);
-            const int uvView = addView(model, mesh.uvs.data(), nv * 8, TINYGLTF_TARGET_ARRAY_BUFFER, 8);
+            if (!binary)
+                model.buffers[0].data.reserve(nv * 32 + mesh.indices.size() * 4 + cage.positions.size() * 12 + cage.indices.size() * 4 +
+                                              64);
+            const int posView = addView(model, bin, mesh.positions.data(), nv * 12, TINYGLTF_TARGET_ARRAY_BUFFER, 12, true);
+            const int nrmView = addView(model, bin, mesh.normals.data(), nv * 12, TINYGLTF_TARGET_ARRAY_BUFFER, 12, true);
+            const int uvView = addView(model, bin, mesh.uvs.data(), nv * 8, TINYGLTF_TARGET_ARRAY_BUFFER, 8, true);
             uint32_t largest = 0;
             for (const MeshGroup& g : mesh.groups) largest = std::max(largest, g.vertexCount);
             int componentType = 0;
             size_t componentSize = 0;
-            const int idxView = addIndexView(model, mesh.indices, largest, componentType, componentSize);
+            const int idxView = addIndexView(model, bin, mesh.indices, largest, componentType, componentSize, true);
             int material[2] = {-1, -1};  // single-sided, double-sided
             tinygltf::Mesh gmesh;
             for (const MeshGroup& g : mesh.groups) {
@@ -338,15 +357,16 @@ std::string exportGltfBytes(const Document& doc, bool binary, const ExportOption
             }
             addMeshNode(std::move(gmesh), "surface");
         }
-    }  // the mesh's memory is released here, before serialising
+        if (!binary) mesh = SplitMesh{};  // copied into the buffer: released before serialising
+    }
 
     // The control cage: LINES with their own positions and an unlit material, in their own node.
     if (options.cage) {
         st.cageSegments = cage.indices.size() / 2;
         if (!cage.indices.empty())
-            addMeshNode(
-                linesMesh(model, cage.positions, cage.indices, addLineMaterial(model, "Patchwork control cage", {0.25, 0.35, 0.55, 1.0})),
-                "control cage");
+            addMeshNode(linesMesh(model, bin, cage.positions, cage.indices,
+                                  addLineMaterial(model, "Patchwork control cage", {0.25, 0.35, 0.55, 1.0})),
+                        "control cage");
     }
 
     // Bézier curves: `level` segments each, as LINES (pairs), unlit, in their own node.
@@ -362,13 +382,14 @@ std::string exportGltfBytes(const Document& doc, bool binary, const ExportOption
         }
         turnAll(positions);
         st.curveSegments = indices.size() / 2;
-        addMeshNode(linesMesh(model, positions, indices, addLineMaterial(model, "Patchwork curves", {0.85, 0.45, 0.1, 1.0})), "curves");
+        addMeshNode(linesMesh(model, bin, positions, indices, addLineMaterial(model, "Patchwork curves", {0.85, 0.45, 0.1, 1.0})),
+                    "curves");
     }
 
     // The buffer's length is a multiple of 4 (GLB chunk alignment); an empty buffer is left out.
-    std::vector<unsigned char>& buf = model.buffers[0].data;
-    buf.resize(align4(buf.size()), 0);
-    if (buf.empty()) model.buffers.clear();
+    const size_t bufferBytes = align4(bin.size);
+    if (!binary) model.buffers[0].data.resize(bufferBytes, 0);
+    if (bufferBytes == 0) model.buffers.clear();
 
     tinygltf::Scene scene;
     scene.name = documentName(doc);
@@ -376,18 +397,44 @@ std::string exportGltfBytes(const Document& doc, bool binary, const ExportOption
     model.scenes.push_back(std::move(scene));
     model.defaultScene = 0;
 
-    // Serialise into a string whose capacity is reserved up front (no repeated regrowth).
-    const size_t bufferBytes = model.buffers.empty() ? 0 : model.buffers[0].data.size();
     if (bufferBytes > (binary ? size_t{0xF0000000u} : size_t{0xB0000000u}))  // GLB lengths and tinygltf sizes are 32-bit
         throw std::length_error("the mesh would be " + std::to_string(bufferBytes >> 20) +
                                 " MiB, more than a glTF file can hold; use a lower level");
-    std::string initial;
-    initial.reserve((binary ? bufferBytes : bufferBytes / 3 * 4 + 8) + (1u << 20));
-    std::ostringstream out(std::move(initial), std::ios::out | std::ios::binary);
+    std::string bytes;
     tinygltf::TinyGLTF writer;
-    if (!writer.WriteGltfSceneToStream(&model, out, /*prettyPrint=*/!binary, /*writeBinary=*/binary) || !out)
-        throw OutputError(binary ? "(glb)" : "(gltf)", "tinygltf could not serialise the model");
-    std::string bytes = spliceExtras(std::move(out).str(), binary, marker, documentJson);
+    if (binary) {
+        // tinygltf writes the JSON (its buffer empty, so no BIN chunk and a byteLength of 0); the
+        // buffer's length is set, the document spliced in, and the chunk written from the blocks.
+        std::ostringstream out(std::ios::out | std::ios::binary);
+        if (!writer.WriteGltfSceneToStream(&model, out, /*prettyPrint=*/false, /*writeBinary=*/true) || !out)
+            throw OutputError("(glb)", "tinygltf could not serialise the model");
+        const std::string glb = std::move(out).str();
+        nlohmann::json json = nlohmann::json::parse(splitGlb(glb, "(glb)").json);
+        if (bufferBytes > 0) json.at("buffers").at(0)["byteLength"] = bufferBytes;
+        std::string chunk(8, '\0');
+        const auto put = [&](size_t at, uint32_t v) { std::memcpy(chunk.data() + at, &v, 4); };
+        put(0, uint32_t(bufferBytes));
+        put(4, 0x004E4942u);  // "BIN\0"
+        static const std::string zeros(4, '\0');
+        std::vector<std::string_view> rest;
+        if (bufferBytes > 0) rest.push_back(chunk);
+        size_t at = 0;
+        for (const auto& [offset, block] : bin.blocks) {
+            rest.emplace_back(zeros.data(), offset - at);
+            rest.push_back(block);
+            at = offset + block.size();
+        }
+        rest.emplace_back(zeros.data(), bufferBytes - at);
+        bytes = joinGlb(spliceExtras(json.dump(), marker, documentJson), rest);
+    } else {
+        // Serialise into a string whose capacity is reserved up front (no repeated regrowth).
+        std::string initial;
+        initial.reserve(bufferBytes / 3 * 4 + 8 + (1u << 20));
+        std::ostringstream out(std::move(initial), std::ios::out | std::ios::binary);
+        if (!writer.WriteGltfSceneToStream(&model, out, /*prettyPrint=*/true, /*writeBinary=*/false) || !out)
+            throw OutputError("(gltf)", "tinygltf could not serialise the model");
+        bytes = spliceExtras(std::move(out).str(), marker, documentJson);
+    }
     if (bytes.size() > limits::kMaxFileBytes)
         throw std::length_error("the file would be " + std::to_string(bytes.size() >> 20) + " MiB, more than the " +
                                 std::to_string(limits::kMaxFileBytes >> 20) + " MiB Patchwork reads back; use a lower level");
