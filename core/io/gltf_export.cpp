@@ -20,6 +20,7 @@
 
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
+#include "core/base/json_guard.hpp"
 #include "core/base/limits.hpp"
 #include "core/base/up_axis.hpp"
 #include "core/eval/bezier_curve.hpp"
@@ -409,7 +410,7 @@ std::string exportGltfBytes(const Document& doc, bool binary, const ExportOption
         if (!writer.WriteGltfSceneToStream(&model, out, /*prettyPrint=*/false, /*writeBinary=*/true) || !out)
             throw OutputError("(glb)", "tinygltf could not serialise the model");
         const std::string glb = std::move(out).str();
-        nlohmann::json json = nlohmann::json::parse(splitGlb(glb, "(glb)").json);
+        nlohmann::json json = parseJsonGuarded(splitGlb(glb, "(glb)").json, "(glb)");
         if (bufferBytes > 0) json.at("buffers").at(0)["byteLength"] = bufferBytes;
         std::string chunk(8, '\0');
         const auto put = [&](size_t at, uint32_t v) { std::memcpy(chunk.data() + at, &v, 4); };
