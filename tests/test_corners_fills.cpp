@@ -1,6 +1,6 @@
 // Issue 40's corners and fills (core/solve/sheared_joins, core/ops/corner_ops, core/ops/fill_hole):
 // three patches at a corner end G1 on every seam (the seams lean along their edges near it), a
-// 3-, 5- or 6-sided hole fills G1 to its surroundings, and both stay within 0.1° (and the solver's
+// 3-, 5- or 6-sided hole fills G1 to its surroundings (sides may be curves), and both stay within 0.1° (and the solver's
 // residual) while their points and neighbours are dragged.
 #include <gtest/gtest.h>
 
@@ -12,7 +12,9 @@
 #include <string>
 
 #include "core/commands/command_table.hpp"
+#include "core/construct/model_builders.hpp"
 #include "core/edit/edit_session.hpp"
+#include "core/eval/bezier_curve.hpp"
 #include "core/eval/fold_check.hpp"
 #include "core/io/bpt_format.hpp"
 #include "core/io/patchwork_format.hpp"
@@ -268,5 +270,139 @@ TEST(FillHole, BadHolesAreRefusedAndChangeNothing) {
         SCOPED_TRACE(bad);
         EXPECT_THROW(test::runEditScript(s, bad), std::exception);
         EXPECT_EQ(s.doc, before);
+    }
+}
+
+namespace {
+
+std::string xyz(const Vec3& p) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%.17g,%.17g,%.17g", p.x, p.y, p.z);
+    return buf;
+}
+
+// Every fill patch edge that lies on curve c (its points the curve's own, by index) is the curve.
+size_t fillEdgesOnCurve(const Document& d, uint32_t firstFill, uint32_t c) {
+    const BezierCurve& curve = d.curves[c];
+    size_t n = 0;
+    for (uint32_t p = firstFill; p < d.patches.size(); ++p)
+        for (Edge e : {Edge::U0, Edge::V0, Edge::U1, Edge::V1})
+            for (size_t s = 0; s < curveSegmentCount(curve); ++s) {
+                const auto seg = curveSegment(curve, s);
+                bool forward = true, backward = true;
+                for (int k = 0; k < 4; ++k) {
+                    const uint32_t q = d.patches[p].idx[size_t(edgeSlot(e, k))];
+                    forward = forward && q == seg[size_t(k)];
+                    backward = backward && q == seg[size_t(3 - k)];
+                }
+                n += forward || backward ? 1 : 0;
+            }
+    return n;
+}
+
+}  // namespace
+
+// Issue 40, item 2: a side may be a curve (cN). Four curves bound a hole: the fill is four patches
+// G1 to each other, whose outer edges are the curves' own points (each curve split at its middle),
+// so moving a curve point moves the fill's edge with it, and the seams hold.
+TEST(FillHole, FourCurvesBoundAFillThatSharesTheirPoints) {
+    EditSession s;
+    Recorder host;
+    runCommandLine(s, host, "curve-control 0,0,0 0.33,0,0.2 0.67,0,0.2 1,0,0");
+    runCommandLine(s, host, "curve-control 1,0,0 1,0.33,-0.1 1,0.67,-0.1 1,1,0");
+    runCommandLine(s, host, "curve-control 1,1,0 0.67,1,0.2 0.33,1,0.2 0,1,0");
+    runCommandLine(s, host, "curve-control 0,1,0 0,0.67,-0.1 0,0.33,-0.1 0,0,0");
+    const std::array<Vec3, 4> before{s.doc.points[s.doc.curves[0].idx[0]], s.doc.points[s.doc.curves[0].idx[1]],
+                                     s.doc.points[s.doc.curves[0].idx[2]], s.doc.points[s.doc.curves[0].idx[3]]};
+    runCommandLine(s, host, "fill-hole c0 c1 c2 c3");
+    EXPECT_NE(host.last.find("filled a 4-sided hole with 4 patches"), std::string::npos) << host.last;
+    EXPECT_NE(host.last.find("through the points of its 4 curves"), std::string::npos) << host.last;
+    ASSERT_EQ(s.doc.patches.size(), 4u);
+    expectG1(s.doc, "after filling");
+    for (uint32_t c = 0; c < 4; ++c) {
+        ASSERT_EQ(curveSegmentCount(s.doc.curves[c]), 2u) << c;
+        EXPECT_EQ(fillEdgesOnCurve(s.doc, 0, c), 2u) << "curve " << c;
+    }
+    // Split, not reshaped: the first curve's halves are its old segment's.
+    const BezierCurve& c0 = s.doc.curves[0];
+    for (double t : {0.1, 0.3, 0.45}) {
+        std::array<Vec3, 4> half;
+        for (int k = 0; k < 4; ++k) half[size_t(k)] = s.doc.points[c0.idx[size_t(k)]];
+        EXPECT_LT(glm::length(evaluateCurve(half, t) - evaluateCurve(before, t / 2)), 1e-12) << t;
+    }
+    // The curves meet in shared points now, so dragging a corner moves both curves and the fill.
+    EXPECT_EQ(s.doc.curves[0].idx.front(), s.doc.curves[3].idx.back());
+    const uint32_t corner = s.doc.curves[1].idx.front(), middle = s.doc.curves[2].idx[3], centre = s.doc.patches[0].idx[15];
+    for (const auto& [pt, move] : {std::pair{corner, "0.05 -0.05 0.1"}, {middle, "0 0.1 0.15"}, {centre, "0.02 0.03 0.05"}}) {
+        test::runEditScript(s, "select point " + std::to_string(pt) + "; move " + move);
+        expectG1(s.doc, "after moving point " + std::to_string(pt));
+        for (uint32_t c = 0; c < 4; ++c) EXPECT_EQ(fillEdgesOnCurve(s.doc, 0, c), 2u) << "curve " << c;
+    }
+}
+
+// A hole of one patch edge and three curves: G1 to the patch (its edge split through its ring),
+// through the curves' points elsewhere, and held while the patch is dragged.
+TEST(FillHole, APatchEdgeAndCurvesMakeOneFillG1ToThePatch) {
+    EditSession s;
+    s.doc = makePatchGrid(1, 1);
+    const Patch& P = s.doc.patches[0];
+    const Vec3 a = s.doc.points[P.idx[size_t(edgeSlot(Edge::V0, 0))]], b = s.doc.points[P.idx[size_t(edgeSlot(Edge::V0, 3))]];
+    const Vec3 out = a - s.doc.points[P.idx[size_t(edgeSlot(Edge::V0, 0, 1))]];
+    const Vec3 up = 0.5 * glm::length(out) * glm::normalize(glm::cross(b - a, out));
+    const Vec3 a2 = a + 3.0 * out + up, b2 = b + 3.0 * out + up;
+    Recorder host;
+    runCommandLine(s, host, "curve-control " + xyz(b) + " " + xyz(b + out) + " " + xyz(b2 - out) + " " + xyz(b2));
+    runCommandLine(
+        s, host, "curve-control " + xyz(b2) + " " + xyz(b2 + (a2 - b2) / 3.0 + up) + " " + xyz(a2 + (b2 - a2) / 3.0 + up) + " " + xyz(a2));
+    runCommandLine(s, host, "curve-control " + xyz(a2) + " " + xyz(a2 - out) + " " + xyz(a + out) + " " + xyz(a));
+    runCommandLine(s, host, "fill-hole 0:v0 c0 c1 c2");
+    EXPECT_NE(host.last.find("G1 to its 2 edges and through the points of its 3 curves"), std::string::npos) << host.last;
+    EXPECT_NE(host.last.find("split 1 patches"), std::string::npos) << host.last;
+    ASSERT_EQ(s.doc.patches.size(), 2u + 4u);
+    expectG1(s.doc, "after filling");
+    size_t toSurroundings = 0;
+    for (const Join& j : s.doc.joins) toSurroundings += (j.patchA < 2) != (j.patchB < 2) ? 1 : 0;
+    EXPECT_EQ(toSurroundings, 2u);
+    for (uint32_t c = 0; c < 3; ++c) EXPECT_EQ(fillEdgesOnCurve(s.doc, 2, c), 2u) << "curve " << c;
+    const uint32_t far = s.doc.patches[0].idx[15], inner = s.doc.patches[2].idx[5];
+    for (const auto& [pt, move] : {std::pair{far, "0 0 0.2"}, {inner, "0.02 0.01 -0.05"}}) {
+        test::runEditScript(s, "select point " + std::to_string(pt) + "; move " + move);
+        expectG1(s.doc, "after moving point " + std::to_string(pt));
+    }
+}
+
+// Curves round a regular polygon, bulging up and down in turn: 3, 5 and 6 of them fill G1 too (5 and
+// 6 split 2×2 at the centre, every seam out to the curves G1), and hold while the curves move.
+TEST(FillHole, ThreeFiveAndSixCurvesFillG1) {
+    for (int n : {3, 5, 6}) {
+        SCOPED_TRACE(n);
+        EditSession s;
+        Recorder host;
+        std::string cmd = "fill-hole";
+        const auto corner = [&](int k) {
+            const double a = 2 * std::numbers::pi * k / n;
+            return Vec3(std::cos(a), std::sin(a), 0.0);
+        };
+        for (int k = 0; k < n; ++k) {
+            const Vec3 a = corner(k), b = corner(k + 1), lift(0.0, 0.0, k % 2 ? -0.3 : 0.3);
+            runCommandLine(
+                s, host,
+                "curve-control " + xyz(a) + " " + xyz(a + (b - a) / 3.0 + lift) + " " + xyz(a + 2.0 * (b - a) / 3.0 + lift) + " " + xyz(b));
+            cmd += " c" + std::to_string(k);
+        }
+        runCommandLine(s, host, cmd);
+        EXPECT_NE(host.last.find("through the points of its " + std::to_string(n) + " curves"), std::string::npos) << host.last;
+        for (const Join& j : s.doc.joins) EXPECT_NE(j.continuity, Continuity::C0);
+        expectG1(s.doc, "after filling");
+        // Every segment of every curve is a fill edge (5 and 6: each half split again with the fill).
+        for (uint32_t c = 0; c < uint32_t(n); ++c) {
+            EXPECT_EQ(curveSegmentCount(s.doc.curves[c]), n == 3 ? 2u : 4u) << "curve " << c;
+            EXPECT_EQ(fillEdgesOnCurve(s.doc, 0, c), curveSegmentCount(s.doc.curves[c])) << "curve " << c;
+        }
+        const uint32_t middle = s.doc.curves[1].idx[3], end = s.doc.curves[0].idx[0];
+        for (const auto& [pt, move] : {std::pair{middle, "0 0 0.1"}, {end, "0.05 0.05 -0.1"}}) {
+            test::runEditScript(s, "select point " + std::to_string(pt) + "; move " + move);
+            expectG1(s.doc, "after moving point " + std::to_string(pt));
+        }
     }
 }

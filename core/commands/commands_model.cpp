@@ -226,10 +226,6 @@ void execFillHole(CommandContext& ctx) {
     std::vector<HoleSide> sides;
     for (const std::string& arg : args) {
         if (!arg.empty() && (arg[0] == 'c' || arg[0] == 'C')) {
-            if (!triangle)
-                throw EditError("fill-hole of patches takes patch edges (P:u0, or P:u0+Q:v1), not curves such as '" + arg +
-                                "': give three sides of one cubic each with `triangle`, or make a surface from the curve "
-                                "first (extrude, loft)");
             sides.push_back(HoleSide{{}, int32_t(commandIndex(arg.substr(1), ctx.session.doc.curves.size(), "curve"))});
             continue;
         }
@@ -357,12 +353,12 @@ void addModelCommands(CommandTable& t) {
            .menu = "Surface",
            // At least three words; the sides (3 to 6) are counted once a trailing `triangle` is taken off.
            .forms = {{word("SIDE"), word("SIDE"), shown(many(word("SIDE")), "SIDE [SIDE …] [triangle]")}},
-           .help = "Fill a hole bounded by 3 to 6 sides, each an open patch edge (P:u0 …) or two edges end to end (P:u0+Q:v1), in "
-                   "order round the hole: one patch per hole corner, meeting at a centre, G1 to every surrounding patch and to each "
-                   "other, held live like any join. A side of one edge is split at its middle first (through its ring; no join is "
-                   "dropped); a 5- or 6-sided fill is split 2×2 at its centre. With `triangle`, three sides of one cubic each are "
-                   "filled by one Bézier triangle instead, G1 to every side that is a patch edge; a side may then be a curve of "
-                   "one segment (cN), whose points the triangle shares",
+           .help = "Fill a hole bounded by 3 to 6 sides, each an open patch edge (P:u0 …), two edges end to end (P:u0+Q:v1) or a "
+                   "curve of one segment (cN), in order round the hole: one patch per hole corner, meeting at a centre, G1 to every "
+                   "surrounding patch and to each other, held live like any join. A side of one edge is split at its middle first "
+                   "(through its ring; no join is dropped), a curve too (the fill shares its points: move them and the fill's edge "
+                   "follows); a 5- or 6-sided fill is split 2×2 at its centre. With `triangle`, three sides of one cubic each "
+                   "(edges or curves) are filled by one Bézier triangle instead, G1 to every side that is a patch edge",
            .exec = execFillHole});
     t.add({.name = "tolerances",
            .label = "Continuity Tolerances",

@@ -8,6 +8,7 @@
 #include "core/base/errors.hpp"
 #include "core/eval/bezier_curve.hpp"
 #include "core/eval/bezier_triangle.hpp"
+#include "core/eval/fold_check.hpp"
 #include "core/eval/patch_eval.hpp"
 #include "core/model/topology.hpp"
 #include "core/ops/corner_ops.hpp"
@@ -15,22 +16,24 @@
 #include "core/ops/patch_ops.hpp"
 #include "core/ops/split_ops.hpp"
 #include "core/ops/triangle_joins.hpp"
+#include "core/solve/constraint_solver.hpp"
 
 namespace pw {
 inline namespace ops {
 
 namespace {
 
-// A patch edge walked from its point 0 (or from point 3 when `reversed`).
-// A triangle fill's side may instead be a curve of one segment (`curve` >= 0; depth 0 only).
+// A patch edge walked from its point 0 (or from point 3 when `reversed`), or segment `segment`
+// of a curve (`curve` >= 0; depth 0 only: a curve has no row beside it).
 struct Seg {
     uint32_t patch = 0;
     Edge edge = Edge::U0;
     bool reversed = false;
     int32_t curve = -1;
-    Seg flipped() const { return {patch, edge, !reversed, curve}; }
+    uint32_t segment = 0;
+    Seg flipped() const { return {patch, edge, !reversed, curve, segment}; }
     uint32_t idx(const Document& d, int k, int depth = 0) const {
-        if (curve >= 0) return d.curves[size_t(curve)].idx[size_t(reversed ? 3 - k : k)];
+        if (curve >= 0) return d.curves[size_t(curve)].idx[3 * size_t(segment) + size_t(reversed ? 3 - k : k)];
         return d.patches[patch].idx[size_t(edgeSlot(edge, reversed ? 3 - k : k, depth))];
     }
     Vec3 at(const Document& d, int k, int depth = 0) const { return d.points[idx(d, k, depth)]; }
@@ -55,8 +58,78 @@ std::optional<Seg> openEdgeBetween(const Document& d, const Vec3& a, const Vec3&
 struct SideGeo {
     Vec3 start{0.0}, mid{0.0}, end{0.0};
     bool single = true;
+    int32_t curve = -1;  // a side that is a curve of one segment
     void flip() { std::swap(start, end); }
 };
+
+// A curve of one polynomial cubic segment, not closed: a fill's side (or a triangle's).
+const BezierCurve& sideCurve(const Document& d, int32_t c, const std::string& side) {
+    const std::string name = "curve c" + std::to_string(c);
+    if (c < 0 || size_t(c) >= d.curves.size()) throw EditError("no " + name);
+    const BezierCurve& curve = d.curves[size_t(c)];
+    if (curveSegmentCount(curve) != 1 || curveClosed(curve))
+        throw EditError(name + " has " + std::to_string(curveSegmentCount(curve)) + " segments; " + side +
+                        " is one cubic (split the hole's side so each is one segment)");
+    for (uint32_t i : curve.idx)
+        if (pointWeight(d, i) != 1.0) throw EditError(name + " is rational; a fill's side takes no weights");
+    return curve;
+}
+
+// Splits curve c (one cubic) at its middle by de Casteljau, in place: two segments with new inner
+// points and a new middle point (the old inner points stay in the pool for whatever shares them).
+void splitCurveAtMiddle(Document& d, uint32_t c) {
+    const std::array<uint32_t, 4> q = curveSegment(d.curves[c], 0);
+    const Vec3 p0 = d.points[q[0]], p1 = d.points[q[1]], p2 = d.points[q[2]], p3 = d.points[q[3]];
+    const Vec3 a = 0.5 * (p0 + p1), b = 0.5 * (p1 + p2), e = 0.5 * (p2 + p3), ab = 0.5 * (a + b), be = 0.5 * (b + e), m = 0.5 * (ab + be);
+    const uint32_t ia = addPoint(d, a), iab = addPoint(d, ab), im = addPoint(d, m), ibe = addPoint(d, be), ie = addPoint(d, e);
+    d.curves[c].idx = {q[0], ia, iab, im, ibe, ie, q[3]};
+}
+
+// The points from `from` to `to` of an unjoined edge of a patch from `first` on, or none.
+std::optional<std::array<uint32_t, 4>> openEdgeIdx(const Document& d, uint32_t first, uint32_t from, uint32_t to) {
+    for (uint32_t p = first; p < d.patches.size(); ++p)
+        for (Edge e : {Edge::U0, Edge::V0, Edge::U1, Edge::V1}) {
+            const auto& I = d.patches[p].idx;
+            const uint32_t a = I[size_t(edgeSlot(e, 0))], b = I[size_t(edgeSlot(e, 3))];
+            if ((a != from || b != to) && (a != to || b != from)) continue;
+            if (findJoin(d, p, e) >= 0) continue;
+            std::array<uint32_t, 4> out;
+            for (int k = 0; k < 4; ++k) out[size_t(k)] = I[size_t(edgeSlot(e, a == from ? k : 3 - k))];
+            return out;
+        }
+    return std::nullopt;
+}
+
+// After the fill's patches were split (a 5- or 6-sided centre), each half of curve c runs along
+// two fill edges whose points are new (exactly on it): the curve takes them as its segments, so the
+// fill shares its points again (the shape is the same: the split was de Casteljau's).
+void curveOntoSplitFill(Document& d, uint32_t c, uint32_t first) {
+    const std::vector<uint32_t> old = d.curves[c].idx;
+    std::vector<uint32_t> idx{old.front()};
+    for (size_t s = 0; s + 1 < old.size(); s += 3) {
+        const uint32_t from = old[s], to = old[s + 3];
+        bool found = false;
+        if (const auto whole = openEdgeIdx(d, first, from, to); whole && (*whole)[1] == old[s + 1] && (*whole)[2] == old[s + 2]) {
+            idx.insert(idx.end(), {old[s + 1], old[s + 2], to});
+            continue;
+        }
+        for (uint32_t p = first; p < d.patches.size() && !found; ++p)
+            for (Edge e : {Edge::U0, Edge::V0, Edge::U1, Edge::V1}) {
+                const auto& I = d.patches[p].idx;
+                for (int end = 0; end < 2 && !found; ++end) {
+                    if (I[size_t(edgeSlot(e, end ? 3 : 0))] != from) continue;
+                    const uint32_t mid = I[size_t(edgeSlot(e, end ? 0 : 3))];
+                    const auto one = openEdgeIdx(d, first, from, mid), two = openEdgeIdx(d, first, mid, to);
+                    if (!one || !two || mid == to) continue;
+                    idx.insert(idx.end(), {(*one)[1], (*one)[2], mid, (*two)[1], (*two)[2], to});
+                    found = true;
+                }
+                if (found) break;
+            }
+        if (!found) throw std::logic_error("fill-hole: a curve's half is not two edges of the split fill");
+    }
+    d.curves[c].idx = std::move(idx);
+}
 
 }  // namespace
 
@@ -67,10 +140,13 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
     std::vector<SideGeo> geo(n);
     for (size_t k = 0; k < n; ++k) {
         const auto& edges = sides[k].edges;
-        if (sides[k].curve >= 0)
-            throw EditError("side " + std::to_string(k + 1) + " is curve c" + std::to_string(sides[k].curve) +
-                            ": a fill of patches needs patch edges (P:u0, or P:u0+Q:v1); with `triangle` three sides of one cubic "
-                            "each, edges or curves, make one Bézier triangle");
+        if (const int32_t c = sides[k].curve; c >= 0) {
+            const BezierCurve& curve = sideCurve(doc, c, "a fill's side");
+            std::array<Vec3, 4> pts;
+            for (int i = 0; i < 4; ++i) pts[size_t(i)] = doc.points[curve.idx[size_t(i)]];
+            geo[k] = {pts[0], evaluateCurve(pts, 0.5), pts[3], true, c};
+            continue;
+        }
         if (edges.empty() || edges.size() > 2) throw EditError("side " + std::to_string(k + 1) + " needs one edge or two (P:e+Q:f)");
         std::array<Seg, 2> seg;
         for (size_t i = 0; i < edges.size(); ++i) {
@@ -116,6 +192,10 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
     std::string note;
     size_t splitCount = 0;
     for (const SideGeo& g : geo) {
+        if (g.curve >= 0) {
+            splitCurveAtMiddle(doc, uint32_t(g.curve));
+            continue;
+        }
         if (!g.single) continue;
         const auto s = openEdgeBetween(doc, g.start, g.end, tol);
         if (!s) continue;  // cut already by an earlier side's ring
@@ -127,6 +207,12 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
     auto findHalves = [&]() {
         for (size_t k = 0; k < n; ++k)
             for (int half = 0; half < 2; ++half) {
+                if (const int32_t c = geo[k].curve; c >= 0) {  // its two segments, walked from the side's start
+                    const bool fromStart = glm::length(doc.points[doc.curves[size_t(c)].idx[0]] - geo[k].start) <= tol;
+                    const uint32_t segment = uint32_t(fromStart ? half : 1 - half);
+                    h[k][size_t(half)] = Seg{0, Edge::U0, !fromStart, c, segment};
+                    continue;
+                }
                 const auto s =
                     half == 0 ? openEdgeBetween(doc, geo[k].start, geo[k].mid, tol) : openEdgeBetween(doc, geo[k].mid, geo[k].end, tol);
                 if (!s) throw EditError("side " + std::to_string(k + 1) + ": no open patch edge runs from its end to its middle");
@@ -136,26 +222,52 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
     findHalves();
     // Each fill patch's normal must agree with its neighbours': du runs along h[k][0] and dv back
     // along h[k-1][1] from the hole corner, so the loop must turn the right way.
-    {
-        const Seg& s = h[0][0];
+    // (Judged at the first side that is a patch edge; a hole of curves keeps the order it was given in.)
+    for (size_t k0 = 0; k0 < n; ++k0) {
+        const Seg& s = h[k0][0];
+        if (s.curve >= 0) continue;
         const Patch& S = doc.patches[s.patch];
         const int slot = edgeSlot(s.edge, s.reversed ? 3 : 0, 0);
         const Vec3 nS = evaluateNet(gatherNet(doc, S.idx), Basis::Bezier, 0.5, (slot % 4) / 3, (slot / 4) / 3).n;
-        const Vec3 du = h[0][0].at(doc, 1) - h[0][0].at(doc, 0), dv = h[n - 1][1].at(doc, 2) - h[n - 1][1].at(doc, 3);
+        const Vec3 du = h[k0][0].at(doc, 1) - h[k0][0].at(doc, 0),
+                   dv = h[(k0 + n - 1) % n][1].at(doc, 2) - h[(k0 + n - 1) % n][1].at(doc, 3);
         if (glm::dot(glm::cross(du, dv), nS) < 0.0) {
             std::reverse(geo.begin(), geo.end());
             for (SideGeo& g : geo) g.flip();
             findHalves();
         }
+        break;
     }
     // Seam k runs from side k's middle to the centre: its first leg continues the surrounding's
     // cross tangent there (G1 with it), the centre estimated from the middles and those legs.
+    // The fill's rows beside a patch side mirror the surrounding's, scaled by the side's tangent
+    // ratio α. Where a curve meets the side at a hole corner, the fill's leg across the side there
+    // is the curve's own (half its first leg, once split), so α is that leg over the surrounding's
+    // there, and the rows along the side follow it: a G1 join holds one ratio along its edge
+    // (between two patch sides the ratio is the surroundings', 1 relative to their mirror).
+    std::vector<double> alpha(n, 1.0);
+    for (size_t k = 0; k < n; ++k) {
+        if (h[k][0].curve >= 0) continue;
+        const size_t km = (k + n - 1) % n, kp = (k + 1) % n;
+        double sum = 0.0;
+        int count = 0;
+        if (h[km][1].curve >= 0) {
+            const double across = glm::length(h[k][0].at(doc, 0) - h[k][0].at(doc, 0, 1));
+            if (across > 0.0) sum += glm::length(h[km][1].at(doc, 2) - h[km][1].at(doc, 3)) / across, ++count;
+        }
+        if (h[kp][0].curve >= 0) {
+            const double across = glm::length(h[k][1].at(doc, 3) - h[k][1].at(doc, 3, 1));
+            if (across > 0.0) sum += glm::length(h[kp][0].at(doc, 1) - h[kp][0].at(doc, 0)) / across, ++count;
+        }
+        if (count > 0) alpha[k] = sum / count;
+    }
+    // A curve side has no surrounding: its seam leaves the middle towards the centroid.
     std::vector<Vec3> c1(n);
     Vec3 centroid(0.0);
-    for (size_t k = 0; k < n; ++k) {
-        c1[k] = 2.0 * h[k][0].at(doc, 3) - h[k][0].at(doc, 3, 1);
-        centroid += geo[k].mid / double(n);
-    }
+    for (size_t k = 0; k < n; ++k) centroid += geo[k].mid / double(n);
+    for (size_t k = 0; k < n; ++k)
+        c1[k] = h[k][0].curve >= 0 ? geo[k].mid + (centroid - geo[k].mid) / 3.0
+                                   : h[k][0].at(doc, 3) + alpha[k] * (h[k][0].at(doc, 3) - h[k][0].at(doc, 3, 1));
     double reach = 0.0;
     for (size_t k = 0; k < n; ++k) reach += glm::length(geo[k].mid - centroid) / double(n);
     Vec3 ahead(0.0);
@@ -165,30 +277,56 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
     }
     const Vec3 centre = 0.5 * (centroid + ahead);
     const uint32_t ic = addPoint(doc, centre);
+    // The seams leave the centre by legs of one length: a seam's tangent ratio at the centre is then
+    // 1, as it is at a side's middle (split there, its two legs are equal), so the ratio a G1 join
+    // holds along it is the same at both ends (sides of unequal reach made the seams of a mixed
+    // hole, edges and curves, over-constrained).
+    double leg = 0.0;
+    for (size_t k = 0; k < n; ++k) leg += glm::length(geo[k].mid - centre) / (3.0 * double(n));
     std::vector<uint32_t> mid(n), s1(n), s2(n);
     for (size_t k = 0; k < n; ++k) {
         mid[k] = h[k][0].idx(doc, 3);  // the surroundings' own point: the fill shares their edges
         s1[k] = addPoint(doc, c1[k]);
-        s2[k] = addPoint(doc, centre + (geo[k].mid - centre) / 3.0);
+        const Vec3 towards = geo[k].mid - centre;
+        s2[k] = addPoint(doc, centre + (glm::length(towards) > 0.0 ? leg * glm::normalize(towards) : towards / 3.0));
     }
     // Fill patch k at hole corner k (the start of side k): u along h[k][0], v back along h[k-1][1].
     const uint32_t first = uint32_t(doc.patches.size());
     for (size_t k = 0; k < n; ++k) {
         const size_t km = (k + n - 1) % n;
         const Seg a = h[k][0], b = h[km][1].flipped();
-        auto mirror = [&](const Seg& s, int i) { return 2.0 * s.at(doc, i) - s.at(doc, i, 1); };
+        // The row beside an edge: the surrounding's mirrored (G1 with it), or beside a curve the
+        // blend of the legs at its two ends (from the hole corner along the other side, and the
+        // seam's first leg at the side's middle), as a Coons patch would lean.
+        auto mirror = [&](const Seg& s, int i) {
+            if (s.curve < 0) return s.at(doc, i) + alpha[&s == &a ? k : km] * (s.at(doc, i) - s.at(doc, i, 1));
+            const Seg& other = &s == &a ? b : a;
+            const Vec3 atCorner = other.at(doc, 1) - other.at(doc, 0), atMiddle = c1[&s == &a ? k : km] - s.at(doc, 3);
+            return s.at(doc, i) + (1.0 - i / 3.0) * atCorner + (i / 3.0) * atMiddle;
+        };
         Patch P;
         auto set = [&](int i, int j, uint32_t q) { P.idx[size_t(4 * j + i)] = q; };
-        // The hole's edges are the surroundings' own points (a corner the two sides do not share,
-        // a copy that the join merges).
-        set(0, 0, a.idx(doc, 0) == b.idx(doc, 0) ? a.idx(doc, 0) : addPoint(doc, a.at(doc, 0)));
+        // The hole's edges are the surroundings' own points (a corner the two sides do not share:
+        // a curve's end, which the other side's join then shares, or a copy that the join merges).
+        const uint32_t corner = a.idx(doc, 0) == b.idx(doc, 0) ? a.idx(doc, 0)
+                                : a.curve >= 0                 ? a.idx(doc, 0)
+                                : b.curve >= 0                 ? b.idx(doc, 0)
+                                                               : addPoint(doc, a.at(doc, 0));
+        if (b.curve >= 0 && b.idx(doc, 0) != corner)  // two curves meeting here share their end point from now on
+            doc.curves[size_t(b.curve)].idx[3 * size_t(b.segment) + (b.reversed ? 3 : 0)] = corner;
+        set(0, 0, corner);
         for (int i = 1; i < 3; ++i) set(i, 0, a.idx(doc, i));
         for (int j = 1; j < 3; ++j) set(0, j, b.idx(doc, j));
         set(3, 0, mid[k]);
         set(0, 3, mid[km]);
         set(3, 1, s1[k]), set(3, 2, s2[k]), set(3, 3, ic);
         set(1, 3, s1[km]), set(2, 3, s2[km]);
-        set(1, 1, addPoint(doc, 0.5 * (mirror(a, 1) + mirror(b, 1))));
+        // Beside the corner: between the two sides' rows, or the row of the side that is joined
+        // (a join fits its ratio along the whole edge: a point off its mirror would bend it).
+        const Vec3 twist = a.curve < 0 && b.curve >= 0   ? mirror(a, 1)
+                           : a.curve >= 0 && b.curve < 0 ? mirror(b, 1)
+                                                         : 0.5 * (mirror(a, 1) + mirror(b, 1));
+        set(1, 1, addPoint(doc, twist));
         set(2, 1, addPoint(doc, mirror(a, 2)));
         set(1, 2, addPoint(doc, mirror(b, 2)));
         set(2, 2, addPoint(doc, doc.points[s2[k]] + doc.points[s2[km]] - centre));
@@ -204,8 +342,8 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
     try {
         for (size_t k = 0; k < n; ++k) {
             const size_t km = (k + n - 1) % n;
-            joinNote(h[k][0].patch, h[k][0].edge, first + uint32_t(k), Edge::V0);
-            joinNote(h[km][1].patch, h[km][1].edge, first + uint32_t(k), Edge::U0);
+            if (h[k][0].curve < 0) joinNote(h[k][0].patch, h[k][0].edge, first + uint32_t(k), Edge::V0);
+            if (h[km][1].curve < 0) joinNote(h[km][1].patch, h[km][1].edge, first + uint32_t(k), Edge::U0);
         }
     } catch (const EditError& e) {
         // Each side's fill seams continue the surroundings' seams at the hole corners and at the
@@ -218,9 +356,44 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
     // corner construction makes them G1 together (one at a time, plain G1 rows would turn two
     // edges at the centre opposite and collapse the patch between them).
     for (size_t k = 0; k < n; ++k) joinEdges(doc, first + uint32_t(k), Edge::U1, first + uint32_t((k + 1) % n), Edge::V1, Continuity::C0);
-    corners += "; " + makeG1Corner(doc, first, 1, 1);
+    size_t curveSides = 0;
+    for (const SideGeo& g : geo) curveSides += g.curve >= 0 ? 1 : 0;
+    if (n == 4 && curveSides > 0) {
+        // Four seams at the centre hold plain G1 only when the ratios of opposite seams multiply to
+        // 1 (the legs there pair off opposite). Each seam's legs are equal at both its ends (the
+        // centre's legs are one length; a side split at its middle has equal halves), so its ratio
+        // is 1 — not the mean of its rows, which a fill with curve sides makes uneven.
+        const Document beforeSeams = doc;
+        for (size_t k = 0; k < n; ++k) {
+            Join& jn = doc.joins[size_t(findJoin(doc, first + uint32_t(k), Edge::U1))];
+            jn.continuity = Continuity::G1;
+            jn.alpha = 1.0;
+            jn.alphaEnd = 0.0;
+            jn.beta2 = 0.0;
+            jn.shear = {};
+        }
+        if (const Projection p = projectConstraints(doc, {}); !p.ok())
+            throw EditError("the fill's seams cannot hold G1 together: " + conflictMessage(p));
+        if (const std::string fold = foldMadeBy(beforeSeams, doc); !fold.empty())
+            throw EditError("refused: the fill's seams would hold G1 only by folding " + fold);
+        corners += "; its corner of 4 patches is regular: plain G1 joins hold it";
+    } else {
+        corners += "; " + makeG1Corner(doc, first, 1, 1);
+        // A 5- or 6-sided centre is split 2×2 and held by its leaning seams there; the rest of
+        // each seam, out to its side, is made G1 too.
+        for (size_t j = 0; j < doc.joins.size(); ++j)
+            if (doc.joins[j].continuity == Continuity::C0 && doc.joins[j].patchA >= first && doc.joins[j].patchB >= first)
+                setJoinContinuity(doc, j, Continuity::G1);
+        if (n >= 5)
+            for (const SideGeo& g : geo)
+                if (g.curve >= 0) curveOntoSplitFill(doc, uint32_t(g.curve), first);
+    }
     note = "filled a " + std::to_string(n) + "-sided hole with " + std::to_string(n) + " patches (" + std::to_string(first) + ".." +
-           std::to_string(first + n - 1) + "), G1 to its " + std::to_string(2 * n) + " edges";
+           std::to_string(first + n - 1) + ")";
+    if (curveSides < n) note += ", G1 to its " + std::to_string(2 * (n - curveSides)) + " edges";
+    if (curveSides > 0)
+        note += std::string(curveSides < n ? " and" : ",") + " through the points of its " + std::to_string(curveSides) + " curve" +
+                (curveSides == 1 ? "" : "s") + " (each split at its middle)";
     if (splitCount > 0) note += "; split " + std::to_string(splitCount) + " patches at the middle of its sides";
     return note + corners;
 }
@@ -232,14 +405,7 @@ std::string fillHoleWithTriangle(Document& doc, const std::vector<HoleSide>& sid
     std::array<Seg, 3> seg;
     for (size_t k = 0; k < 3; ++k) {
         if (const int32_t c = sides[k].curve; c >= 0) {
-            const std::string name = "curve c" + std::to_string(c);
-            if (size_t(c) >= doc.curves.size()) throw EditError("no " + name);
-            const BezierCurve& curve = doc.curves[size_t(c)];
-            if (curveSegmentCount(curve) != 1 || curveClosed(curve))
-                throw EditError(name + " has " + std::to_string(curveSegmentCount(curve)) +
-                                " segments; a triangle's side is one cubic (split the hole's side so each is one segment)");
-            for (uint32_t i : curve.idx)
-                if (pointWeight(doc, i) != 1.0) throw EditError(name + " is rational; Bézier triangles take no weights");
+            sideCurve(doc, c, "a triangle's side");
             seg[k] = Seg{0, Edge::U0, false, c};
             continue;
         }

@@ -1,11 +1,11 @@
 // Filling an n-sided hole (issue 40, item 2; Rhino's Patch and MultiSidedPatch, Alias's
-// Multi-Edge Blend, Plasticity's Patch — but held live): 3 to 6 sides, each one patch edge or two
-// edges end to end, closed into a loop. Each side is split at its middle (a side of one edge:
-// its patch is split there, the cut running on through its ring so no join is dropped), and one
-// bicubic patch per hole corner fills it, the n of them meeting at a centre: G1 to every
-// surrounding patch, and G1 to each other through the corner construction of core/ops/corner_ops
-// (leaning seams; a 5- or 6-sided fill is split 2×2 there). Everything stays joins the live solver
-// holds: drag the surroundings and the fill follows, within the solver's residual.
+// Multi-Edge Blend, Plasticity's Patch — but held live): 3 to 6 sides, each one patch edge, two
+// edges end to end, or a curve of one cubic segment, closed into a loop. A curve is split at its
+// middle and the fill shares its points (no join: the fill's edge is the curve; DESIGN §14). Each side is split at its middle (a side of
+// one edge: its patch is split there, the cut running on through its ring so no join is dropped), and one bicubic patch per hole corner
+// fills it, the n of them meeting at a centre: G1 to every surrounding patch, and G1 to each other through the corner construction of
+// core/ops/corner_ops (leaning seams; a 5- or 6-sided fill is split 2×2 there). Everything stays joins the live solver holds: drag the
+// surroundings and the fill follows, within the solver's residual.
 #pragma once
 
 #include <cstdint>
@@ -20,12 +20,13 @@ inline namespace ops {
 
 struct HoleSide {
     std::vector<std::pair<uint32_t, Edge>> edges;  // one edge, or two that meet end to end
-    int32_t curve = -1;                            // else a document curve of one segment (triangle fills only)
+    int32_t curve = -1;                            // else a document curve of one polynomial segment, not closed
 };
 
 // Fills the hole; returns the status line ("filled a 3-sided hole with 3 patches (18..20) …").
 // EditError, with the document unchanged by the caller's EditSession, when a side is not an open
-// edge of a Bézier patch, the sides do not close a loop, or the fill cannot hold.
+// edge of a Bézier patch or a curve of one segment, the sides do not close a loop, or the fill
+// cannot hold.
 std::string fillHole(Document& doc, const std::vector<HoleSide>& sides);
 
 // Fills a 3-sided hole of single edges with one cubic Bézier triangle sharing their points (the
