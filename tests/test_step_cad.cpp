@@ -538,6 +538,10 @@ TEST(StepParts, NamedPartsAreProductsOfAnAssembly) {
     EXPECT_EQ(pw::cadPartName({"rim front", "rim back"}), "rim");
     EXPECT_EQ(pw::cadPartName({"rim", "body"}), "");
     EXPECT_EQ(pw::cadPartName({"", ""}), "");
+    EXPECT_EQ(pw::cadPartName({"M8"}), "M8");  // digits of the name stay
+    EXPECT_EQ(pw::cadPartName({"bolt M8 0", "bolt M8 1"}), "bolt M8");
+    EXPECT_EQ(pw::cadPartName({"patch10", "patch11"}), "patch");
+    EXPECT_EQ(pw::cadPartName({"lid 0"}), "lid");
     const fs::path dir = pw::test::freshTempDir("step-parts");
     pw::Document doc = pw::loadBpt(pw::test::dataDir() / "teapot.bpt");
     doc.name = "Utah teapot";

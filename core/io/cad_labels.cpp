@@ -33,8 +33,18 @@ std::string cadPartName(const std::vector<std::string>& itemNames) {
         common->resize(n);
     }
     if (!common) return {};
-    while (!common->empty() && std::string_view(" _-.,:#0123456789").find(common->back()) != std::string_view::npos) common->pop_back();
-    return *common;
+    // Trailing digits go when they are a numbering ("lid 0") or the start of numbers that differ
+    // ("patch10", "patch11" → "patch1" in common); digits that belong to the name stay ("M8").
+    const auto separator = [](char c) { return std::string_view(" _-.,:#").find(c) != std::string_view::npos; };
+    const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+    std::string& s = *common;
+    size_t d = s.size();
+    while (d > 0 && digit(s[d - 1])) --d;
+    bool cutInside = false;
+    for (const std::string& name : itemNames) cutInside = cutInside || (name.size() > s.size() && digit(name[s.size()]));
+    if (d < s.size() && (cutInside || d == 0 || separator(s[d - 1]))) s.resize(d);
+    while (!s.empty() && separator(s.back())) s.pop_back();
+    return s;
 }
 
 }  // namespace io

@@ -21,8 +21,9 @@ std::string cadFaceName(std::string_view kind, size_t index, const std::string& 
 std::optional<size_t> cadFaceLabelIndex(std::string_view name, std::string_view kind);
 
 // The name of a part (a sewn shell or solid) from the names the user gave its items (empty ones
-// left out): what they have in common, without trailing numbers, spaces and separators ("lid 0",
-// "lid 1" → "lid"; "rim front", "rim back" → "rim"); empty when there is none.
+// left out): what they have in common, without a trailing numbering, spaces and separators ("lid 0",
+// "lid 1" → "lid"; "rim front", "rim back" → "rim"; "patch10", "patch11" → "patch"), keeping digits
+// that are part of the name ("M8", "bolt M8 0" and "bolt M8 1" → "bolt M8"); empty when there is none.
 std::string cadPartName(const std::vector<std::string>& itemNames);
 
 // Puts each item with a place at that place and the others, in their order, in the places left.
