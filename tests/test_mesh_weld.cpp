@@ -28,6 +28,25 @@ TEST(MeshWeld, SharedEdgesWeldWithinTheToleranceAndOnlyThere) {
     EXPECT_EQ(weldTriangleSoup(soup, 2, 0, 0.0).positions.size(), 6u);
 }
 
+// Within one window, vertices at other (u, v) weld only on a collapsed edge, and that holds for
+// every window in a cluster, not only the one that made it: across a seam, window 1's second
+// vertex near window 1's first may not merge because the cluster was started by window 0.
+TEST(MeshWeld, AWindowsOwnVerticesStayApartInAClusterAnotherWindowStarted) {
+    const float e = 1.2e-7f;
+    auto at = [](float x, float y, float u, float w, uint32_t item) { return SoupVertex{{x, y, 0}, {0, 0, 1}, {u, w}, item}; };
+    const std::vector<SoupVertex> soup = {
+        at(0, 0, 0, 0, 0), at(1, 0, 1, 0, 0), at(1, 1, 1, 1, 0), at(1 + e, 0, 0, 0, 1), at(1 + 2 * e, 0, 0, 1e-3f, 1), at(2, 1, 1, 1, 1)};
+    const std::vector<uint8_t> noneCollapsed(2, 0);
+    WeldStats st;
+    const TriangleMesh m = weldTriangleSoup(soup, 2, 0, 1e-6, &st, &noneCollapsed);
+    EXPECT_EQ(m.positions.size(), 5u);  // window 1's first vertex on window 0's; its second its own
+    EXPECT_EQ(st.degenerateTriangles, 0u);
+    // Marked collapsed (u = 0 of window 1), they do weld, and window 1's triangle collapses with them.
+    const std::vector<uint8_t> collapsed{0, 1};
+    EXPECT_EQ(weldTriangleSoup(soup, 2, 0, 1e-6, &st, &collapsed).positions.size(), 3u);
+    EXPECT_EQ(st.degenerateTriangles, 1u);
+}
+
 TEST(MeshWeld, CreasesKeepTheirNormalsAndSmoothSeamsAverageThem) {
     // A crease (normals 90 degrees apart) along x = 1 ...
     std::vector<SoupVertex> soup = {v(0, 0, 0, 0),          v(1, 0, 0, 0),           v(1, 1, 0, 0),

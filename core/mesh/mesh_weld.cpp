@@ -1,5 +1,6 @@
 #include "core/mesh/mesh_weld.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -107,13 +108,14 @@ TriangleMesh weldTriangleSoup(const std::vector<SoupVertex>& soup, size_t window
 
     TriangleMesh mesh;
     PositionClusters clusters(tolerance);
-    // Per cluster, the window vertex that made it (item, u, v): another vertex of the same window
-    // at other (u, v) joins it only bit-identical or with both on one collapsed edge.
+    // Per cluster, the window vertices in it (item, u, v), one per window and parameter: another
+    // vertex of one of those windows at other (u, v) joins it only bit-identical or with both on
+    // one collapsed edge (every member is checked: across a seam a cluster holds two windows).
     struct Origin {
         uint32_t item;
         float u, v;
     };
-    std::vector<Origin> origins;
+    std::vector<std::vector<Origin>> origins;
     auto onCollapsedEdge = [&](uint32_t item, float u, float v) -> uint8_t {
         const uint8_t bits = (*collapsedEdges)[item];
         return uint8_t(((bits & 1) && u == 0.0f ? 1 : 0) | ((bits & 2) && v == 0.0f ? 2 : 0) | ((bits & 4) && u == 1.0f ? 4 : 0) |
@@ -125,12 +127,17 @@ TriangleMesh weldTriangleSoup(const std::vector<SoupVertex>& soup, size_t window
     auto vertexOf = [&](const SoupVertex& v) -> uint32_t {
         const bool checked = collapsedEdges && v.item < windowCount && v.item < collapsedEdges->size();
         const uint32_t pc = clusters.find(v.position, [&](uint32_t id) {
-            const Origin& o = origins[id];
-            if (!checked || o.item != v.item || (o.u == v.uv[0] && o.v == v.uv[1])) return true;
-            if (clusters.position(id) == std::array<float, 3>{v.position[0], v.position[1], v.position[2]}) return true;
-            return (onCollapsedEdge(o.item, o.u, o.v) & onCollapsedEdge(v.item, v.uv[0], v.uv[1])) != 0;
+            if (!checked || clusters.position(id) == std::array<float, 3>{v.position[0], v.position[1], v.position[2]}) return true;
+            for (const Origin& o : origins[id])
+                if (o.item == v.item && (o.u != v.uv[0] || o.v != v.uv[1]) &&
+                    (onCollapsedEdge(o.item, o.u, o.v) & onCollapsedEdge(v.item, v.uv[0], v.uv[1])) == 0)
+                    return false;
+            return true;
         });
-        if (pc >= origins.size()) origins.push_back({v.item, v.uv[0], v.uv[1]});
+        if (pc >= origins.size()) origins.resize(pc + 1);
+        if (checked && std::none_of(origins[pc].begin(), origins[pc].end(),
+                                    [&](const Origin& o) { return o.item == v.item && o.u == v.uv[0] && o.v == v.uv[1]; }))
+            origins[pc].push_back({v.item, v.uv[0], v.uv[1]});
         if (pc >= atPosition.size()) atPosition.resize(pc + 1);
         for (auto& [id, n0] : atPosition[pc])
             if (double(n0[0]) * v.normal[0] + double(n0[1]) * v.normal[1] + double(n0[2]) * v.normal[2] > kWeldSmoothCos) {
