@@ -3,9 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
+#include <utility>
 
 namespace pw {
 inline namespace mesh {
@@ -15,14 +16,6 @@ namespace {
 // cos(2°): normals closer than this at one position are one smooth vertex.
 constexpr double kWeldSmoothCos = 0.99939082701909573;
 
-struct CellHash {
-    size_t operator()(const std::array<int64_t, 3>& c) const {
-        uint64_t h = 1469598103934665603ull;
-        for (int64_t v : c) h = (h ^ uint64_t(v)) * 1099511628211ull;
-        return size_t(h);
-    }
-};
-
 // Finds the position cluster of each point: a point seen before within `tol` (per coordinate) of it,
 // through a grid of cells 16 `tol` wide. A match lies in a cell that the box p ± tol touches: the
 // point's own cell, which is searched first (a surface's vertices are each met about six times, at
@@ -31,16 +24,25 @@ struct CellHash {
 // time here).
 class PositionClusters {
 public:
-    explicit PositionClusters(double tol) : tol_(tol), inv_(tol > 0.0 ? 1.0 / (16.0 * tol) : 0.0) {}
+    explicit PositionClusters(double tol, size_t expected) : tol_(tol), inv_(tol > 0.0 ? 1.0 / (16.0 * tol) : 0.0) {
+        size_t size = 16;
+        while (size < 2 * expected) size *= 2;
+        slots_.assign(size, Slot{});
+        reps_.reserve(expected);
+        nextInCell_.reserve(expected);
+    }
 
     // The cluster of p among those `accept` allows, or a new one.
     template <class Accept>
     uint32_t find(const float p[3], Accept&& accept) {
         const std::array<int64_t, 3> c = cell(p);
+        const auto scan = [&](uint32_t head, bool exact) {
+            for (uint32_t id = head; id != kNone; id = nextInCell_[id])
+                if ((exact ? reps_[id] == std::array<float, 3>{p[0], p[1], p[2]} : near(reps_[id], p)) && accept(id)) return id;
+            return kNone;
+        };
         if (tol_ > 0.0) {
-            if (auto it = cells_.find(c); it != cells_.end())
-                for (uint32_t id : it->second)
-                    if (near(reps_[id], p) && accept(id)) return id;
+            if (const uint32_t id = scan(head(c), false); id != kNone) return id;
             std::array<int64_t, 3> lo{}, hi{};
             for (int i = 0; i < 3; ++i) {
                 lo[size_t(i)] = int64_t(std::floor((double(p[i]) - tol_) * inv_));
@@ -50,24 +52,65 @@ public:
                 for (int64_t y = lo[1]; y <= hi[1]; ++y)
                     for (int64_t z = lo[2]; z <= hi[2]; ++z) {
                         if (std::array<int64_t, 3>{x, y, z} == c) continue;  // searched above
-                        auto it = cells_.find({x, y, z});
-                        if (it == cells_.end()) continue;
-                        for (uint32_t id : it->second)
-                            if (near(reps_[id], p) && accept(id)) return id;
+                        if (const uint32_t id = scan(head({x, y, z}), false); id != kNone) return id;
                     }
-        } else if (auto it = cells_.find(c); it != cells_.end()) {
-            for (uint32_t id : it->second)
-                if (reps_[id] == std::array<float, 3>{p[0], p[1], p[2]} && accept(id)) return id;
+        } else if (const uint32_t id = scan(head(c), true); id != kNone) {
+            return id;
         }
         const auto id = uint32_t(reps_.size());
         reps_.push_back({p[0], p[1], p[2]});
-        cells_[c].push_back(id);
+        auto [cellSlot, isNew] = slot(c);
+        nextInCell_.push_back(kNone);  // at the end of its cell's list: clusters are tried in the order they came
+        if (isNew)
+            cellSlot->head = id;
+        else
+            nextInCell_[cellSlot->tail] = id;
+        cellSlot->tail = id;
+        if (isNew && ++used_ * 2 > slots_.size()) grow();
         return id;
     }
     const std::array<float, 3>& position(uint32_t id) const { return reps_[id]; }
     size_t size() const { return reps_.size(); }
 
 private:
+    static constexpr uint32_t kNone = 0xffffffffu;
+    // An open-addressing table of the cells in use, each the ends of its clusters' list (nextInCell_):
+    // no allocation per cell or cluster (a map of vectors spent a fifth of the export in malloc).
+    struct Slot {
+        std::array<int64_t, 3> key{};
+        uint32_t head = kNone, tail = kNone;
+    };
+    size_t indexOf(const std::array<int64_t, 3>& c) const {
+        uint64_t h = 1469598103934665603ull;
+        for (int64_t v : c) h = (h ^ uint64_t(v)) * 1099511628211ull;
+        return size_t(h ^ (h >> 29)) & (slots_.size() - 1);
+    }
+    uint32_t head(const std::array<int64_t, 3>& c) const {
+        for (size_t i = indexOf(c);; i = (i + 1) & (slots_.size() - 1)) {
+            if (slots_[i].head == kNone) return kNone;
+            if (slots_[i].key == c) return slots_[i].head;
+        }
+    }
+    // The slot of cell c, and whether it is new (taken now).
+    std::pair<Slot*, bool> slot(const std::array<int64_t, 3>& c) {
+        for (size_t i = indexOf(c);; i = (i + 1) & (slots_.size() - 1)) {
+            if (slots_[i].head == kNone) {
+                slots_[i].key = c;
+                return {&slots_[i], true};
+            }
+            if (slots_[i].key == c) return {&slots_[i], false};
+        }
+    }
+    void grow() {
+        std::vector<Slot> old = std::move(slots_);
+        slots_.assign(old.size() * 2, Slot{});
+        for (const Slot& s : old)
+            if (s.head != kNone) {
+                size_t i = indexOf(s.key);
+                while (slots_[i].head != kNone) i = (i + 1) & (slots_.size() - 1);
+                slots_[i] = s;
+            }
+    }
     std::array<int64_t, 3> cell(const float p[3]) const {
         if (tol_ <= 0.0) {  // exact: hash the bits
             std::array<int64_t, 3> c{};
@@ -83,8 +126,10 @@ private:
         return true;
     }
     double tol_, inv_;
-    std::unordered_map<std::array<int64_t, 3>, std::vector<uint32_t>, CellHash> cells_;
+    std::vector<Slot> slots_;
+    size_t used_ = 0;  // slots holding a cell
     std::vector<std::array<float, 3>> reps_;
+    std::vector<uint32_t> nextInCell_;  // per cluster, the next of its cell
 };
 
 }  // namespace
@@ -107,49 +152,76 @@ TriangleMesh weldTriangleSoup(const std::vector<SoupVertex>& soup, size_t window
     for (size_t t = 0; t < tris; ++t) order[next[soup[3 * t].item]++] = uint32_t(t);
 
     TriangleMesh mesh;
-    PositionClusters clusters(tolerance);
+    PositionClusters clusters(tolerance, soup.size() / 4);
     // Per cluster, the window vertices in it (item, u, v), one per window and parameter: another
     // vertex of one of those windows at other (u, v) joins it only bit-identical or with both on
     // one collapsed edge (every member is checked: across a seam a cluster holds two windows).
+    // Lists threaded through flat arrays (no allocation per cluster).
+    constexpr uint32_t kNone = 0xffffffffu;
     struct Origin {
         uint32_t item;
         float u, v;
+        uint32_t next;  // the cluster's next origin
     };
-    std::vector<std::vector<Origin>> origins;
+    std::vector<Origin> origins;
+    std::vector<uint32_t> firstOrigin;  // per cluster
     auto onCollapsedEdge = [&](uint32_t item, float u, float v) -> uint8_t {
         const uint8_t bits = (*collapsedEdges)[item];
         return uint8_t(((bits & 1) && u == 0.0f ? 1 : 0) | ((bits & 2) && v == 0.0f ? 2 : 0) | ((bits & 4) && u == 1.0f ? 4 : 0) |
                        ((bits & 8) && v == 1.0f ? 8 : 0));
     };
-    // Per position cluster, its vertices so far: (vertex id, first normal); normals summed in `sums`.
-    std::vector<std::vector<std::pair<uint32_t, std::array<float, 3>>>> atPosition;
+    // Per position cluster, its vertices so far (firstVertex, then nextVertex), each with its
+    // first normal; normals summed in `sums`.
+    std::vector<uint32_t> firstVertex, nextVertex;
+    std::vector<std::array<float, 3>> firstNormal;
     std::vector<std::array<double, 3>> sums;
     auto vertexOf = [&](const SoupVertex& v) -> uint32_t {
         const bool checked = collapsedEdges && v.item < windowCount && v.item < collapsedEdges->size();
         const uint32_t pc = clusters.find(v.position, [&](uint32_t id) {
             if (!checked || clusters.position(id) == std::array<float, 3>{v.position[0], v.position[1], v.position[2]}) return true;
-            for (const Origin& o : origins[id])
+            for (uint32_t k = firstOrigin[id]; k != kNone; k = origins[k].next) {
+                const Origin& o = origins[k];
                 if (o.item == v.item && (o.u != v.uv[0] || o.v != v.uv[1]) &&
                     (onCollapsedEdge(o.item, o.u, o.v) & onCollapsedEdge(v.item, v.uv[0], v.uv[1])) == 0)
                     return false;
+            }
             return true;
         });
-        if (pc >= origins.size()) origins.resize(pc + 1);
-        if (checked && std::none_of(origins[pc].begin(), origins[pc].end(),
-                                    [&](const Origin& o) { return o.item == v.item && o.u == v.uv[0] && o.v == v.uv[1]; }))
-            origins[pc].push_back({v.item, v.uv[0], v.uv[1]});
-        if (pc >= atPosition.size()) atPosition.resize(pc + 1);
-        for (auto& [id, n0] : atPosition[pc])
+        if (pc >= firstOrigin.size()) {
+            firstOrigin.resize(pc + 1, kNone);
+            firstVertex.resize(pc + 1, kNone);
+        }
+        if (checked) {
+            bool known = false;
+            for (uint32_t k = firstOrigin[pc]; k != kNone && !known; k = origins[k].next)
+                known = origins[k].item == v.item && origins[k].u == v.uv[0] && origins[k].v == v.uv[1];
+            if (!known) {
+                origins.push_back({v.item, v.uv[0], v.uv[1], firstOrigin[pc]});
+                firstOrigin[pc] = uint32_t(origins.size() - 1);
+            }
+        }
+        for (uint32_t id = firstVertex[pc]; id != kNone; id = nextVertex[id]) {
+            const auto& n0 = firstNormal[id];
             if (double(n0[0]) * v.normal[0] + double(n0[1]) * v.normal[1] + double(n0[2]) * v.normal[2] > kWeldSmoothCos) {
                 for (int i = 0; i < 3; ++i) sums[id][i] += v.normal[i];
                 return id;
             }
+        }
         const auto id = uint32_t(mesh.positions.size());
         mesh.positions.push_back(clusters.position(pc));
         mesh.normals.push_back({v.normal[0], v.normal[1], v.normal[2]});
         mesh.uvs.push_back({v.uv[0], v.uv[1]});
         sums.push_back({v.normal[0], v.normal[1], v.normal[2]});
-        atPosition[pc].push_back({id, {v.normal[0], v.normal[1], v.normal[2]}});
+        firstNormal.push_back({v.normal[0], v.normal[1], v.normal[2]});
+        // Appended at the list's end: the vertices of a cluster are tried in the order they came.
+        nextVertex.push_back(kNone);
+        if (firstVertex[pc] == kNone) {
+            firstVertex[pc] = id;
+        } else {
+            uint32_t last = firstVertex[pc];
+            while (nextVertex[last] != kNone) last = nextVertex[last];
+            nextVertex[last] = id;
+        }
         return id;
     };
 
