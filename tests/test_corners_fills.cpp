@@ -406,3 +406,28 @@ TEST(FillHole, ThreeFiveAndSixCurvesFillG1) {
         }
     }
 }
+
+// A curve side is split by the fill: refused where that would cut it loose from what shares its
+// points, and a side given twice is refused; nothing changes either way.
+TEST(FillHole, CurveSidesThatCannotBeSplitAreRefused) {
+    EditSession s;
+    s.doc = makePatchGrid(1, 1);
+    Recorder host;
+    runCommandLine(s, host, "select patch 0");
+    runCommandLine(s, host, "curve-from-edge v0");  // c0 shares the patch's edge points
+    runCommandLine(s, host, "curve-control 0,0,0 0.3,0,0.2 0.6,0,0.2 1,0,0");
+    runCommandLine(s, host, "curve-control 1,0,0 1,0.3,-0.1 1,0.6,-0.1 1,1,0");
+    const Document before = s.doc;
+    for (const auto& [cmd, says] : {std::pair{"fill-hole c0 c1 c2", "shares its points with patch 0"},
+                                    {"fill-hole c1 c1 c2", "are the same curve"},
+                                    {"fill-hole 0:u0 c1 0:u0", "are the same edge"}}) {
+        SCOPED_TRACE(cmd);
+        try {
+            test::runEditScript(s, cmd);
+            ADD_FAILURE() << "accepted";
+        } catch (const std::exception& e) {
+            EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+        }
+        EXPECT_EQ(s.doc, before);
+    }
+}

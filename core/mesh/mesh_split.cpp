@@ -8,6 +8,7 @@
 #include <future>
 #include <memory>
 #include <numeric>
+#include <system_error>
 #include <tuple>
 #include <utility>
 
@@ -197,8 +198,13 @@ SplitMesh splitMesh(TriangleMesh&& mesh, MeshGrouping grouping) {
     const std::vector<uint32_t> group = groupTriangles(mesh, grouping, pid, items);
     // Which groups are closed, on a second thread while the groups are copied out (both only read
     // the mesh's indices, the groups and the position ids): a third of the split each.
-    std::future<std::vector<bool>> closedLater = std::async(
-        std::launch::async, [&] { return closedGroups(mesh.indices, group, pid, items.size(), grouping != MeshGrouping::Patches); });
+    const auto closedOf = [&] { return closedGroups(mesh.indices, group, pid, items.size(), grouping != MeshGrouping::Patches); };
+    std::future<std::vector<bool>> closedLater;
+    try {
+        closedLater = std::async(std::launch::async, closedOf);
+    } catch (const std::system_error&) {  // no thread to be had: on this one, after the copy
+        closedLater = std::async(std::launch::deferred, closedOf);
+    }
 
     // Triangles by group, stable (counting sort).
     const size_t G = items.size(), T = group.size();

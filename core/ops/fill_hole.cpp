@@ -10,6 +10,7 @@
 #include "core/eval/bezier_triangle.hpp"
 #include "core/eval/fold_check.hpp"
 #include "core/eval/patch_eval.hpp"
+#include "core/model/construction_refs.hpp"
 #include "core/model/topology.hpp"
 #include "core/ops/corner_ops.hpp"
 #include "core/ops/join_ops.hpp"
@@ -67,12 +68,38 @@ const BezierCurve& sideCurve(const Document& d, int32_t c, const std::string& si
     const std::string name = "curve c" + std::to_string(c);
     if (c < 0 || size_t(c) >= d.curves.size()) throw EditError("no " + name);
     const BezierCurve& curve = d.curves[size_t(c)];
-    if (curveSegmentCount(curve) != 1 || curveClosed(curve))
+    if (curveSegmentCount(curve) != 1 || curveClosed(curve) || curve.idx.front() == curve.idx.back())
         throw EditError(name + " has " + std::to_string(curveSegmentCount(curve)) + " segments; " + side +
                         " is one cubic (split the hole's side so each is one segment)");
     for (uint32_t i : curve.idx)
         if (pointWeight(d, i) != 1.0) throw EditError(name + " is rational; a fill's side takes no weights");
     return curve;
+}
+
+// A fill of patches splits a curve side at its middle: refused where that would cut the curve
+// loose from something else — a live construction made from it, or an item or another curve that
+// shares its inner points (a triangle filled through it, a curve made from an edge).
+void checkCurveSplittable(const Document& d, int32_t c) {
+    const std::string name = "curve c" + std::to_string(c);
+    for (size_t k = 0; k < d.constructions.size(); ++k)
+        for (const CurveInput& in : d.constructions[k].inputs)
+            if (in.curve == c)
+                throw EditError(name + " is an input of " + constructionLabel(d, k) +
+                                ", which the fill's split of it would break; bake that first, or give the hole a copy of the curve");
+    const auto& q = d.curves[size_t(c)].idx;
+    const auto inner = [&](uint32_t i) { return i == q[1] || i == q[2]; };
+    std::string user;
+    for (size_t p = 0; p < d.patches.size() && user.empty(); ++p)
+        if (std::any_of(d.patches[p].idx.begin(), d.patches[p].idx.end(), inner)) user = "patch " + std::to_string(p);
+    for (size_t t = 0; t < d.triangles.size() && user.empty(); ++t)
+        if (std::any_of(d.triangles[t].idx.begin(), d.triangles[t].idx.end(), inner)) user = "triangle " + std::to_string(t);
+    for (size_t n = 0; n < d.surfaces.size() && user.empty(); ++n)
+        if (std::any_of(d.surfaces[n].idx.begin(), d.surfaces[n].idx.end(), inner)) user = "net " + std::to_string(n);
+    for (size_t o = 0; o < d.curves.size() && user.empty(); ++o)
+        if (int32_t(o) != c && std::any_of(d.curves[o].idx.begin(), d.curves[o].idx.end(), inner)) user = "curve c" + std::to_string(o);
+    if (!user.empty())
+        throw EditError(name + " shares its points with " + user +
+                        ", which the fill's split of the curve would leave behind; give the hole a curve of its own");
 }
 
 // Splits curve c (one cubic) at its middle by de Casteljau, in place: two segments with new inner
@@ -137,11 +164,23 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
     const size_t n = sides.size();
     if (n < 3 || n > 6) throw EditError("fill-hole needs 3 to 6 sides, got " + std::to_string(n));
     const double tol = 1e-6 * std::max(modelSize(doc), 1e-300);
+    // A curve or an edge given twice would be split twice over.
+    for (size_t k = 0; k < n; ++k)
+        for (size_t m = 0; m < k; ++m) {
+            const bool sameCurve = sides[k].curve >= 0 && sides[k].curve == sides[m].curve;
+            bool sameEdge = false;
+            for (const auto& e : sides[k].edges)
+                sameEdge = sameEdge || std::find(sides[m].edges.begin(), sides[m].edges.end(), e) != sides[m].edges.end();
+            if (sameCurve || sameEdge)
+                throw EditError("sides " + std::to_string(m + 1) + " and " + std::to_string(k + 1) + " are the same " +
+                                (sameCurve ? "curve" : "edge") + ": each side of a hole is given once");
+        }
     std::vector<SideGeo> geo(n);
     for (size_t k = 0; k < n; ++k) {
         const auto& edges = sides[k].edges;
         if (const int32_t c = sides[k].curve; c >= 0) {
             const BezierCurve& curve = sideCurve(doc, c, "a fill's side");
+            checkCurveSplittable(doc, c);
             std::array<Vec3, 4> pts;
             for (int i = 0; i < 4; ++i) pts[size_t(i)] = doc.points[curve.idx[size_t(i)]];
             geo[k] = {pts[0], evaluateCurve(pts, 0.5), pts[3], true, c};
@@ -356,9 +395,10 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
     // corner construction makes them G1 together (one at a time, plain G1 rows would turn two
     // edges at the centre opposite and collapse the patch between them).
     for (size_t k = 0; k < n; ++k) joinEdges(doc, first + uint32_t(k), Edge::U1, first + uint32_t((k + 1) % n), Edge::V1, Continuity::C0);
-    size_t curveSides = 0;
-    for (const SideGeo& g : geo) curveSides += g.curve >= 0 ? 1 : 0;
-    if (n == 4 && curveSides > 0) {
+    size_t curveSides = 0, twoEdgeSides = 0;
+    for (const SideGeo& g : geo) curveSides += g.curve >= 0 ? 1 : 0, twoEdgeSides += g.single ? 0 : 1;
+    // (A side of two edges has no middle split: its seam's ratio there is the two edges' own.)
+    if (n == 4 && curveSides > 0 && twoEdgeSides == 0) {
         // Four seams at the centre hold plain G1 only when the ratios of opposite seams multiply to
         // 1 (the legs there pair off opposite). Each seam's legs are equal at both its ends (the
         // centre's legs are one length; a side split at its middle has equal halves), so its ratio
@@ -379,11 +419,14 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
         corners += "; its corner of 4 patches is regular: plain G1 joins hold it";
     } else {
         corners += "; " + makeG1Corner(doc, first, 1, 1);
-        // A 5- or 6-sided centre is split 2×2 and held by its leaning seams there; the rest of
-        // each seam, out to its side, is made G1 too.
-        for (size_t j = 0; j < doc.joins.size(); ++j)
-            if (doc.joins[j].continuity == Continuity::C0 && doc.joins[j].patchA >= first && doc.joins[j].patchB >= first)
-                setJoinContinuity(doc, j, Continuity::G1);
+        // A 5- or 6-sided centre is split 2×2 and held by its leaning seams there; with curves
+        // all round (no surroundings for the split to run into) every patch is the fill's, and the
+        // rest of each seam, out to its side, is made G1 too. (With patch sides the split runs on
+        // through the surroundings, whose own C0 creases must stay as they are.)
+        if (curveSides == n)
+            for (size_t j = 0; j < doc.joins.size(); ++j)
+                if (doc.joins[j].continuity == Continuity::C0 && doc.joins[j].patchA >= first && doc.joins[j].patchB >= first)
+                    setJoinContinuity(doc, j, Continuity::G1);
         if (n >= 5)
             for (const SideGeo& g : geo)
                 if (g.curve >= 0) curveOntoSplitFill(doc, uint32_t(g.curve), first);
