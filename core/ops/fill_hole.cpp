@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "core/base/errors.hpp"
+#include "core/construct/curve_edit.hpp"
 #include "core/eval/bezier_curve.hpp"
 #include "core/eval/bezier_triangle.hpp"
 #include "core/eval/fold_check.hpp"
@@ -68,9 +69,10 @@ const BezierCurve& sideCurve(const Document& d, int32_t c, const std::string& si
     const std::string name = "curve c" + std::to_string(c);
     if (c < 0 || size_t(c) >= d.curves.size()) throw EditError("no " + name);
     const BezierCurve& curve = d.curves[size_t(c)];
-    if (curveSegmentCount(curve) != 1 || curveClosed(curve) || curve.idx.front() == curve.idx.back())
+    if (curveSegmentCount(curve) != 1)
         throw EditError(name + " has " + std::to_string(curveSegmentCount(curve)) + " segments; " + side +
                         " is one cubic (split the hole's side so each is one segment)");
+    if (curve.idx.front() == curve.idx.back()) throw EditError(name + " is a loop; " + side + " runs between two corners");
     for (uint32_t i : curve.idx)
         if (pointWeight(d, i) != 1.0) throw EditError(name + " is rational; a fill's side takes no weights");
     return curve;
@@ -100,16 +102,6 @@ void checkCurveSplittable(const Document& d, int32_t c) {
     if (!user.empty())
         throw EditError(name + " shares its points with " + user +
                         ", which the fill's split of the curve would leave behind; give the hole a curve of its own");
-}
-
-// Splits curve c (one cubic) at its middle by de Casteljau, in place: two segments with new inner
-// points and a new middle point (the old inner points stay in the pool for whatever shares them).
-void splitCurveAtMiddle(Document& d, uint32_t c) {
-    const std::array<uint32_t, 4> q = curveSegment(d.curves[c], 0);
-    const Vec3 p0 = d.points[q[0]], p1 = d.points[q[1]], p2 = d.points[q[2]], p3 = d.points[q[3]];
-    const Vec3 a = 0.5 * (p0 + p1), b = 0.5 * (p1 + p2), e = 0.5 * (p2 + p3), ab = 0.5 * (a + b), be = 0.5 * (b + e), m = 0.5 * (ab + be);
-    const uint32_t ia = addPoint(d, a), iab = addPoint(d, ab), im = addPoint(d, m), ibe = addPoint(d, be), ie = addPoint(d, e);
-    d.curves[c].idx = {q[0], ia, iab, im, ibe, ie, q[3]};
 }
 
 // The points from `from` to `to` of an unjoined edge of a patch from `first` on, or none.
@@ -231,8 +223,8 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
     std::string note;
     size_t splitCount = 0;
     for (const SideGeo& g : geo) {
-        if (g.curve >= 0) {
-            splitCurveAtMiddle(doc, uint32_t(g.curve));
+        if (g.curve >= 0) {  // at its middle, in place (de Casteljau: the same curve, new inner points)
+            insertCurvePoint(doc, uint32_t(g.curve), 0.5);
             continue;
         }
         if (!g.single) continue;
