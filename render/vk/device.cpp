@@ -133,6 +133,15 @@ VkInstance createInstance(bool validation, const std::vector<const char*>& extra
     return inst;
 }
 
+// The driver's identity (VkPhysicalDeviceDriverProperties, Vulkan 1.2): its ID, name and version text.
+VkPhysicalDeviceDriverProperties driverProperties(VkPhysicalDevice physical) {
+    VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+    VkPhysicalDeviceProperties2 p2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+    p2.pNext = &driver;
+    vkGetPhysicalDeviceProperties2(physical, &p2);
+    return driver;
+}
+
 }  // namespace
 
 std::string missingRequiredFeatures(VkPhysicalDeviceFeatures f, const VkPhysicalDeviceVulkan13Features& f13,
@@ -237,13 +246,7 @@ Device::Device(const DeviceOptions& options) {
         caps_.tessGeomPointSize = f.shaderTessellationAndGeometryPointSize;
         caps_.timestampPeriodNs = props_.limits.timestampPeriod;
         caps_.maxTessLevel = props_.limits.maxTessellationGenerationLevel;
-        {
-            VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
-            VkPhysicalDeviceProperties2 p2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
-            p2.pNext = &driver;
-            vkGetPhysicalDeviceProperties2(physical_, &p2);
-            caps_.fixedPointTessellator = driver.driverID == VK_DRIVER_ID_MESA_LLVMPIPE;
-        }
+        caps_.fixedPointTessellator = driverProperties(physical_).driverID == VK_DRIVER_ID_MESA_LLVMPIPE;
         const VkSampleCountFlags both = props_.limits.framebufferColorSampleCounts & props_.limits.framebufferDepthSampleCounts;
         caps_.maxSamples = (both & VK_SAMPLE_COUNT_4_BIT)   ? VK_SAMPLE_COUNT_4_BIT
                            : (both & VK_SAMPLE_COUNT_2_BIT) ? VK_SAMPLE_COUNT_2_BIT
@@ -383,10 +386,7 @@ void Device::endOneTimeAndWait(VkCommandBuffer cmd) {
 }
 
 std::string Device::driverDescription() const {
-    VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
-    VkPhysicalDeviceProperties2 p2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
-    p2.pNext = &driver;
-    vkGetPhysicalDeviceProperties2(physical_, &p2);
+    const VkPhysicalDeviceDriverProperties driver = driverProperties(physical_);
     std::string s = driver.driverName;
     if (driver.driverInfo[0] != 0) s += std::string(s.empty() ? "" : " ") + driver.driverInfo;
     return s;
