@@ -70,6 +70,11 @@ TEST(ExportDisplayed, WritesTheGpusTrianglesValidAndReproducible) {
     r = runCommand(bin() + " convert " + q(glb) + " " + q(converted));
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_EQ(readBytes(converted), readBytes(glb));
+    // The same when the capture's first buffer is too small for all its pieces and it tries again.
+    r = runCommand("PATCHWORK_CAPTURE_FIRST_BYTES=100000 " + bin() + " export " + q(glb) + " -o " + q(again));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(r.output.find("validation"), std::string::npos) << r.output;
+    EXPECT_EQ(readBytes(again), readBytes(glb));
     // --tess or --no-as-displayed go back to the level.
     r = runCommand(bin() + " export " + q(glb) + " -o " + q(again) + " --no-as-displayed");
     ASSERT_EQ(r.exitCode, 0) << r.output;

@@ -95,5 +95,39 @@ TEST(MeshWeld, MalformedSoupsAreRefused) {
     EXPECT_THROW(weldTriangleSoup({v(0, 0, 0, 3), v(1, 0, 0, 3), v(0, 1, 0, 3)}, 1, 1, 1e-6), std::invalid_argument);
 }
 
+// The capture welds its pieces while the device makes the next: fed in pieces (item ranges in
+// order, empty items between and after them, triangles turned as read), the weld is the one of the
+// whole soup turned.
+TEST(MeshWeld, PiecesWeldAsTheWholeSoupDoes) {
+    std::vector<SoupVertex> soup;
+    for (uint32_t item : {0u, 0u, 2u, 3u, 3u, 5u}) {  // items 1, 4 and 6 make nothing
+        const float x = float(item), y = float(soup.size() % 2);
+        for (const SoupVertex& s : {v(x, y, 0, item), v(x + 1, y, 0, item), v(x, y + 1, 0, item, 0.01f, 0, 1)}) soup.push_back(s);
+    }
+    std::vector<SoupVertex> turned = soup;
+    for (size_t t = 0; t < turned.size(); t += 3) std::swap(turned[t + 1], turned[t + 2]);
+    WeldStats whole, pieces;
+    const TriangleMesh a = weldTriangleSoup(turned, 5, 2, 1e-6, &whole);
+    SoupWelder welder(5, 2, 1e-6, nullptr, soup.size());
+    welder.add(soup.data(), 6, SoupWinding::Turned);       // item 0
+    welder.add(soup.data() + 6, 9, SoupWinding::Turned);   // items 2 and 3
+    welder.add(soup.data() + 15, 3, SoupWinding::Turned);  // item 5, the first Bézier triangle
+    const TriangleMesh b = welder.finish(&pieces);
+    EXPECT_EQ(a.positions, b.positions);
+    EXPECT_EQ(a.normals, b.normals);
+    EXPECT_EQ(a.indices, b.indices);
+    ASSERT_EQ(b.perWindow.size(), 5u);
+    ASSERT_EQ(b.perTriangle.size(), 2u);
+    for (size_t i = 0; i < 5; ++i) EXPECT_EQ(a.perWindow[i].firstIndex, b.perWindow[i].firstIndex) << i;
+    EXPECT_EQ(b.perWindow[1].indexCount, 0u);
+    EXPECT_EQ(b.perTriangle[0].indexCount, 3u);
+    EXPECT_EQ(b.perTriangle[1].indexCount, 0u);
+    EXPECT_EQ(pieces.soupTriangles, whole.soupTriangles);
+    // A piece whose items go back is refused.
+    SoupWelder back(5, 2, 1e-6, nullptr, 0);
+    back.add(soup.data() + 6, 3);
+    EXPECT_THROW(back.add(soup.data(), 3), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace pw::test

@@ -134,30 +134,33 @@ private:
 
 }  // namespace
 
-TriangleMesh weldTriangleSoup(const std::vector<SoupVertex>& soup, size_t windowCount, size_t triangleCount, double tolerance,
-                              WeldStats* stats, const std::vector<uint8_t>* collapsedEdges) {
-    if (soup.size() % 3 != 0)
-        throw std::invalid_argument("the captured surface has " + std::to_string(soup.size()) + " vertices, not whole triangles");
-    const size_t items = windowCount + triangleCount, tris = soup.size() / 3;
-    // Triangles in item order (the GPU's order within an item), by counting sort.
-    std::vector<uint32_t> start(items + 1, 0);
-    for (size_t t = 0; t < tris; ++t) {
-        const uint32_t item = soup[3 * t].item;
-        if (item >= items)
-            throw std::invalid_argument("the captured surface names item " + std::to_string(item) + " of " + std::to_string(items));
-        ++start[item + 1];
+struct SoupWelder::State {
+    static constexpr uint32_t kNone = 0xffffffffu;
+    State(size_t windows, size_t triangles, double tolerance, const std::vector<uint8_t>* collapsed, size_t expected)
+        : windowCount(windows), items(windows + triangles), collapsedEdges(collapsed), clusters(tolerance, expected / 4) {
+        // A surface's vertex is met about six times in the soup.
+        for (auto* v : {&firstVertex, &nextVertex, &firstOrigin}) v->reserve(expected / 5);
+        mesh.positions.reserve(expected / 5);
+        mesh.normals.reserve(expected / 5);
+        mesh.uvs.reserve(expected / 5);
+        sums.reserve(expected / 5);
+        firstNormal.reserve(expected / 5);
+        mesh.indices.reserve(expected);
+        mesh.perWindow.reserve(windows);
+        mesh.perTriangle.reserve(triangles);
     }
-    for (size_t i = 0; i < items; ++i) start[i + 1] += start[i];
-    std::vector<uint32_t> order(tris), next(start.begin(), start.end() - 1);
-    for (size_t t = 0; t < tris; ++t) order[next[soup[3 * t].item]++] = uint32_t(t);
 
+    size_t windowCount, items;
+    const std::vector<uint8_t>* collapsedEdges;
+    PositionClusters clusters;
+    size_t nextItem = 0;  // items before it have their ranges
     TriangleMesh mesh;
-    PositionClusters clusters(tolerance, soup.size() / 4);
+    WeldStats st;
+    std::vector<uint32_t> start, order, next;  // a piece's counting sort, kept between pieces
     // Per cluster, the window vertices in it (item, u, v), one per window and parameter: another
     // vertex of one of those windows at other (u, v) joins it only bit-identical or with both on
     // one collapsed edge (every member is checked: across a seam a cluster holds two windows).
     // Lists threaded through flat arrays (no allocation per cluster).
-    constexpr uint32_t kNone = 0xffffffffu;
     struct Origin {
         uint32_t item;
         float u, v;
@@ -165,17 +168,19 @@ TriangleMesh weldTriangleSoup(const std::vector<SoupVertex>& soup, size_t window
     };
     std::vector<Origin> origins;
     std::vector<uint32_t> firstOrigin;  // per cluster
-    auto onCollapsedEdge = [&](uint32_t item, float u, float v) -> uint8_t {
-        const uint8_t bits = (*collapsedEdges)[item];
-        return uint8_t(((bits & 1) && u == 0.0f ? 1 : 0) | ((bits & 2) && v == 0.0f ? 2 : 0) | ((bits & 4) && u == 1.0f ? 4 : 0) |
-                       ((bits & 8) && v == 1.0f ? 8 : 0));
-    };
     // Per position cluster, its vertices so far (firstVertex, then nextVertex), each with its
     // first normal; normals summed in `sums`.
     std::vector<uint32_t> firstVertex, nextVertex;
     std::vector<std::array<float, 3>> firstNormal;
     std::vector<std::array<double, 3>> sums;
-    auto vertexOf = [&](const SoupVertex& v) -> uint32_t {
+
+    uint8_t onCollapsedEdge(uint32_t item, float u, float v) const {
+        const uint8_t bits = (*collapsedEdges)[item];
+        return uint8_t(((bits & 1) && u == 0.0f ? 1 : 0) | ((bits & 2) && v == 0.0f ? 2 : 0) | ((bits & 4) && u == 1.0f ? 4 : 0) |
+                       ((bits & 8) && v == 1.0f ? 8 : 0));
+    }
+
+    uint32_t vertexOf(const SoupVertex& v) {
         const bool checked = collapsedEdges && v.item < windowCount && v.item < collapsedEdges->size();
         const uint32_t pc = clusters.find(v.position, [&](uint32_t id) {
             if (!checked || clusters.position(id) == std::array<float, 3>{v.position[0], v.position[1], v.position[2]}) return true;
@@ -223,32 +228,81 @@ TriangleMesh weldTriangleSoup(const std::vector<SoupVertex>& soup, size_t window
             nextVertex[last] = id;
         }
         return id;
-    };
-
-    mesh.indices.reserve(soup.size());
-    WeldStats st;
-    st.soupTriangles = tris;
-    for (size_t item = 0; item < items; ++item) {
-        MeshRange r;
-        r.firstIndex = uint32_t(mesh.indices.size());
-        for (uint32_t k = start[item]; k < start[item + 1]; ++k) {
-            const size_t t = order[k];
-            const uint32_t a = vertexOf(soup[3 * t]), b = vertexOf(soup[3 * t + 1]), c = vertexOf(soup[3 * t + 2]);
-            const size_t before = mesh.indices.size();
-            mesh.addTriangle(a, b, c);
-            if (mesh.indices.size() == before) ++st.degenerateTriangles;
-        }
-        r.indexCount = uint32_t(mesh.indices.size()) - r.firstIndex;
-        (item < windowCount ? mesh.perWindow : mesh.perTriangle).push_back(r);
     }
+
+    // Ranges for the items from nextItem up to `end` (exclusive), whose triangles are those of
+    // `order` between `start` offsets (relative to item `base`), or none.
+    void closeItemsUpTo(size_t end, const SoupVertex* soup, size_t base, SoupWinding winding) {
+        const size_t second = winding == SoupWinding::Turned ? 2 : 1, third = 3 - second;
+        for (; nextItem < end; ++nextItem) {
+            MeshRange r;
+            r.firstIndex = uint32_t(mesh.indices.size());
+            if (soup && nextItem >= base)
+                for (uint32_t k = start[nextItem - base]; k < start[nextItem - base + 1]; ++k) {
+                    const size_t t = order[k];
+                    const uint32_t a = vertexOf(soup[3 * t]), b = vertexOf(soup[3 * t + second]), c = vertexOf(soup[3 * t + third]);
+                    const size_t before = mesh.indices.size();
+                    mesh.addTriangle(a, b, c);
+                    if (mesh.indices.size() == before) ++st.degenerateTriangles;
+                }
+            r.indexCount = uint32_t(mesh.indices.size()) - r.firstIndex;
+            (nextItem < windowCount ? mesh.perWindow : mesh.perTriangle).push_back(r);
+        }
+    }
+};
+
+SoupWelder::SoupWelder(size_t windowCount, size_t triangleCount, double tolerance, const std::vector<uint8_t>* collapsedEdges,
+                       size_t expectedVertices)
+    : s_(std::make_unique<State>(windowCount, triangleCount, tolerance, collapsedEdges, expectedVertices)) {}
+
+SoupWelder::~SoupWelder() = default;
+
+void SoupWelder::add(const SoupVertex* soup, size_t vertices, SoupWinding winding) {
+    State& s = *s_;
+    if (vertices % 3 != 0)
+        throw std::invalid_argument("the captured surface has " + std::to_string(vertices) + " vertices, not whole triangles");
+    const size_t tris = vertices / 3;
+    if (tris == 0) return;
+    // Triangles in item order (the GPU's order within an item), by counting sort over this piece's items.
+    size_t lo = s.items, hi = 0;
+    for (size_t t = 0; t < tris; ++t) {
+        const uint32_t item = soup[3 * t].item;
+        if (item >= s.items)
+            throw std::invalid_argument("the captured surface names item " + std::to_string(item) + " of " + std::to_string(s.items));
+        lo = std::min<size_t>(lo, item);
+        hi = std::max<size_t>(hi, item);
+    }
+    if (lo < s.nextItem)
+        throw std::invalid_argument("a piece of the captured surface names item " + std::to_string(lo) + ", welded before");
+    s.start.assign(hi - lo + 2, 0);
+    for (size_t t = 0; t < tris; ++t) ++s.start[soup[3 * t].item - lo + 1];
+    for (size_t i = 0; i + 1 < s.start.size(); ++i) s.start[i + 1] += s.start[i];
+    s.order.resize(tris);
+    s.next.assign(s.start.begin(), s.start.end() - 1);
+    for (size_t t = 0; t < tris; ++t) s.order[s.next[soup[3 * t].item - lo]++] = uint32_t(t);
+    s.st.soupTriangles += tris;
+    s.closeItemsUpTo(hi + 1, soup, lo, winding);
+}
+
+TriangleMesh SoupWelder::finish(WeldStats* stats) {
+    State& s = *s_;
+    s.closeItemsUpTo(s.items, nullptr, 0, SoupWinding::AsGiven);
+    TriangleMesh mesh = std::move(s.mesh);
     for (size_t v = 0; v < mesh.normals.size(); ++v) {
-        const auto& s = sums[v];
-        const double len = std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
-        if (len > 1e-12) mesh.normals[v] = {float(s[0] / len), float(s[1] / len), float(s[2] / len)};
+        const auto& n = s.sums[v];
+        const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        if (len > 1e-12) mesh.normals[v] = {float(n[0] / len), float(n[1] / len), float(n[2] / len)};
     }
     removeUnusedVertices(mesh);  // those only collapsed triangles used
-    if (stats) *stats = st;
+    if (stats) *stats = s.st;
     return mesh;
+}
+
+TriangleMesh weldTriangleSoup(const std::vector<SoupVertex>& soup, size_t windowCount, size_t triangleCount, double tolerance,
+                              WeldStats* stats, const std::vector<uint8_t>* collapsedEdges) {
+    SoupWelder welder(windowCount, triangleCount, tolerance, collapsedEdges, soup.size());
+    welder.add(soup.data(), soup.size());
+    return welder.finish(stats);
 }
 
 std::vector<uint8_t> collapsedWindowEdges(const std::vector<PatchInstance>& windows, const std::vector<Vec3>& points) {

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "core/mesh/mesh_tessellate.hpp"
@@ -42,6 +43,32 @@ struct WeldStats {
 // triangle folds onto its neighbour. Without the mask every window merges within tolerance.
 TriangleMesh weldTriangleSoup(const std::vector<SoupVertex>& soup, size_t windowCount, size_t triangleCount, double tolerance,
                               WeldStats* stats = nullptr, const std::vector<uint8_t>* collapsedEdges = nullptr);
+
+// How a soup's triangles wind: as given, or turned (each triangle's second and third vertices
+// swapped, read so without copying the soup).
+enum class SoupWinding { AsGiven, Turned };
+
+// The same weld fed in pieces, so that it can run while the GPU still makes the next piece (the
+// as-displayed capture): each add() holds whole triangles whose items all come after the items of
+// every earlier piece, and the result is the one weldTriangleSoup makes of all the pieces at once.
+// The soup is read during add() only. Throws std::invalid_argument as weldTriangleSoup does, and
+// on a piece whose items go back.
+class SoupWelder {
+public:
+    // expectedVertices: about how many soup vertices all pieces hold (sizes the tables; 0: grow).
+    SoupWelder(size_t windowCount, size_t triangleCount, double tolerance, const std::vector<uint8_t>* collapsedEdges,
+               size_t expectedVertices);
+    ~SoupWelder();
+    SoupWelder(const SoupWelder&) = delete;
+    SoupWelder& operator=(const SoupWelder&) = delete;
+
+    void add(const SoupVertex* soup, size_t vertices, SoupWinding winding = SoupWinding::AsGiven);
+    TriangleMesh finish(WeldStats* stats = nullptr);
+
+private:
+    struct State;
+    std::unique_ptr<State> s_;
+};
 
 // The collapsed-edge bits of every window (expandPatches order) at these points: a Bézier window's
 // edge whose four control points are one pool point or one position, as tessellateDocument shares them.

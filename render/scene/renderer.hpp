@@ -114,6 +114,10 @@ private:
     // Writes the frame uniforms for `opt` drawn into `area` and plans the draws.
     FramePlan prepareFrame(const RenderOptions& opt, VkRect2D area);
     bool mergingWanted(const RenderOptions& opt) const;  // the frame may merge windows (render/scene/merged_blocks.hpp)
+    // One piece of captureSurface's transform feedback (render/scene/surface_capture.cpp).
+    void recordCapturePiece(VkCommandBuffer cmd, uint32_t k, uint32_t pieces, const std::vector<uint8_t>* skip, VkBuffer out,
+                            VkDeviceSize capacity, VkBuffer counter, VkQueryPool query, VkPipeline windowsPipe, VkPipeline trianglesPipe,
+                            const FramePlan& plan, const VkRect2D& area);
     Device& dev_;
     RenderTarget& target_;
     PipelineSet pipes_;

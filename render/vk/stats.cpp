@@ -98,18 +98,18 @@ void FrameQueries::read(FrameStats& out) {
     }
 }
 
-OwnedQueryPool makeTransformFeedbackQuery(Device& dev) {
+OwnedQueryPool makeTransformFeedbackQuery(Device& dev, uint32_t count) {
     VkQueryPoolCreateInfo qci{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     qci.queryType = VK_QUERY_TYPE_TRANSFORM_FEEDBACK_STREAM_EXT;
-    qci.queryCount = 1;
+    qci.queryCount = count;
     OwnedQueryPool query;
     VK_CHECK(vkCreateQueryPool(dev.device(), &qci, nullptr, query.replace(dev.device())));
     return query;
 }
 
-std::array<uint64_t, 2> readTransformFeedbackQuery(Device& dev, VkQueryPool pool) {
+std::array<uint64_t, 2> readTransformFeedbackQuery(Device& dev, VkQueryPool pool, uint32_t index) {
     std::array<uint64_t, 2> prims{0, 0};
-    VK_CHECK(vkGetQueryPoolResults(dev.device(), pool, 0, 1, sizeof prims, prims.data(), sizeof prims,
+    VK_CHECK(vkGetQueryPoolResults(dev.device(), pool, index, 1, sizeof prims, prims.data(), sizeof prims,
                                    VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
     return prims;
 }

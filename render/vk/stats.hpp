@@ -61,10 +61,10 @@ private:
     OwnedQueryPool ts_, stats_;
 };
 
-// A transform-feedback stream query (the exports' and vector figures' captures): created, and
-// read as {primitives written, primitives the draw needed} (waits for the result).
-OwnedQueryPool makeTransformFeedbackQuery(Device& dev);
-std::array<uint64_t, 2> readTransformFeedbackQuery(Device& dev, VkQueryPool pool);
+// Transform-feedback stream queries (the exports' and vector figures' captures): `count` of them
+// created, and one read as {primitives written, primitives the draw needed} (waits for the result).
+OwnedQueryPool makeTransformFeedbackQuery(Device& dev, uint32_t count = 1);
+std::array<uint64_t, 2> readTransformFeedbackQuery(Device& dev, VkQueryPool pool, uint32_t index = 0);
 
 }  // namespace vk
 }  // namespace pw::render
