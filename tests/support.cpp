@@ -16,7 +16,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iostream>
+#include <mutex>
 #include <stdexcept>
+#include <vector>
 
 namespace pw::test {
 
@@ -77,12 +80,45 @@ std::filesystem::path dataDir() { return envPath("PATCHWORK_DATA_DIR"); }
 std::filesystem::path testsDir() { return envPath("PATCHWORK_TESTS_DIR"); }
 std::filesystem::path patchworkBinary() { return envPath("PATCHWORK_BIN"); }
 
+namespace {
+
+// The folders freshTempDir made in this process: removed when every test of the process passed,
+// kept (and named) for a look when one failed. Before, every run left its folders behind (8 000
+// of them in /tmp after a hundred suites).
+class TempDirs : public ::testing::Environment {
+public:
+    void add(const std::filesystem::path& dir) {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        dirs_.push_back(dir);
+    }
+    void TearDown() override {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        const bool keep = !::testing::UnitTest::GetInstance()->Passed() || std::getenv("PATCHWORK_KEEP_TEST_DIRS");
+        for (const std::filesystem::path& dir : dirs_) {
+            std::error_code ec;
+            if (keep)
+                std::cerr << "kept for a look: " << dir.string() << "\n";
+            else
+                std::filesystem::remove_all(dir, ec);
+        }
+        dirs_.clear();
+    }
+
+private:
+    std::mutex mutex_;
+    std::vector<std::filesystem::path> dirs_;
+};
+TempDirs* const tempDirs = static_cast<TempDirs*>(::testing::AddGlobalTestEnvironment(new TempDirs));
+
+}  // namespace
+
 std::filesystem::path freshTempDir(const std::string& tag) {
     static std::atomic<int> counter{0};
     auto dir = std::filesystem::temp_directory_path() /
                ("patchwork-test-" + tag + "-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
+    tempDirs->add(dir);
     return dir;
 }
 

@@ -14,7 +14,7 @@ namespace pw::test {
 std::filesystem::path dataDir();                             // the repository's data/ (tea set)
 std::filesystem::path testsDir();                            // the repository's tests/
 std::filesystem::path patchworkBinary();                     // the built `patchwork`
-std::filesystem::path freshTempDir(const std::string& tag);  // empty, unique per call
+std::filesystem::path freshTempDir(const std::string& tag);  // empty, unique per call; removed at the end when every test passed
 std::string readBytes(const std::filesystem::path& file);    // the whole file ("" when missing)
 size_t entryCount(const std::filesystem::path& dir);         // files, folders and links in dir
 
