@@ -122,6 +122,7 @@ TEST(MeshWeld, PiecesWeldAsTheWholeSoupDoes) {
     EXPECT_EQ(b.perWindow[1].indexCount, 0u);
     EXPECT_EQ(b.perTriangle[0].indexCount, 3u);
     EXPECT_EQ(b.perTriangle[1].indexCount, 0u);
+    for (size_t i = 0; i < 2; ++i) EXPECT_EQ(a.perTriangle[i].firstIndex, b.perTriangle[i].firstIndex) << i;
     EXPECT_EQ(pieces.soupTriangles, whole.soupTriangles);
     // A piece whose items go back is refused.
     SoupWelder back(5, 2, 1e-6, nullptr, 0);

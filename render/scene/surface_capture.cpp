@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -132,6 +133,15 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
 
     for (int attempt = 0;; ++attempt) {
         Buffer out = createBuffer(dev_, capacity, VK_BUFFER_USAGE_TRANSFORM_FEEDBACK_BUFFER_BIT_EXT, MemoryUse::Readback);
+        // Pieces already submitted may still be running when something throws (a submission, the
+        // weld): let the device finish before anything they use is released.
+        struct IdleOnThrow {
+            VkQueue queue;
+            int exceptions = std::uncaught_exceptions();
+            ~IdleOnThrow() {
+                if (std::uncaught_exceptions() > exceptions) vkQueueWaitIdle(queue);
+            }
+        } idleOnThrow{dev_.queue()};
         for (uint32_t k = 0; k < pieces; ++k) {
             VkCommandBuffer cmd = cmds[k];
             VK_CHECK(vkResetFences(dev_.device(), 1, fences[k].ptr()));  // signalled by the try before
@@ -145,11 +155,12 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
                 vkCmdFillBuffer(cmd, m.counters.buffer, 0, 16, 0);
                 vkCmdFillBuffer(cmd, counter.buffer, 0, VK_WHOLE_SIZE, 0);
                 mb.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-                mb.dstAccessMask =
-                    VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFORM_FEEDBACK_COUNTER_READ_BIT_EXT;
+                mb.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT |
+                                   VK_ACCESS_TRANSFORM_FEEDBACK_COUNTER_READ_BIT_EXT | VK_ACCESS_TRANSFORM_FEEDBACK_COUNTER_WRITE_BIT_EXT;
                 vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                                     VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT, 0, 1, &mb, 0,
-                                     nullptr, 0, nullptr);
+                                     VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT |
+                                         VK_PIPELINE_STAGE_TRANSFORM_FEEDBACK_BIT_EXT,
+                                     0, 1, &mb, 0, nullptr, 0, nullptr);
             } else {  // the piece before's end counter and culled count, written in an earlier submission
                 mb.srcAccessMask = VK_ACCESS_TRANSFORM_FEEDBACK_COUNTER_WRITE_BIT_EXT | VK_ACCESS_SHADER_WRITE_BIT;
                 mb.dstAccessMask =
@@ -173,17 +184,12 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
         // queue to read one).
         std::optional<SoupWelder> welder;
         uint64_t begin = 0;
-        // The device may still be writing later pieces: let it finish before anything is released.
-        struct IdleOnThrow {
-            VkQueue queue;
-            int exceptions = std::uncaught_exceptions();
-            ~IdleOnThrow() {
-                if (std::uncaught_exceptions() > exceptions) vkQueueWaitIdle(queue);
-            }
-        } idleOnThrow{dev_.queue()};
+        bool full = false;  // a counter past the buffer: what follows is not welded (the queries will ask for more)
         for (uint32_t k = 0; k < pieces; ++k) {
             VK_CHECK(vkWaitForFences(dev_.device(), 1, fences[k].ptr(), VK_TRUE, UINT64_MAX));
-            const uint32_t end = static_cast<const uint32_t*>(counter.mapped)[k];
+            const uint64_t end = static_cast<const uint32_t*>(counter.mapped)[k];
+            full = full || end > capacity;
+            if (full) continue;
             const uint64_t vertices = (end - std::min<uint64_t>(begin, end)) / (3 * kStride) * 3;
             if (!welder)
                 welder.emplace(windows, m.scene.triangleCount, tolerance, collapsed.empty() ? nullptr : &collapsed,
@@ -205,6 +211,9 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
                 throw OutputError("(capture)",
                                   "the GPU made " + std::to_string(needed) + " triangles but wrote only " + std::to_string(written));
             capacity = VkDeviceSize(needed) * 3 * kStride;
+            if (capacity > std::numeric_limits<uint32_t>::max())  // the counters are 32-bit byte offsets
+                throw OutputError("(capture)", "the surface as displayed has " + std::to_string(needed) +
+                                                   " triangles, more than one capture holds (4 GiB); lower the document's levels");
             continue;
         }
         CapturedSurface result;
