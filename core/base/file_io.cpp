@@ -98,7 +98,9 @@ OutputBatch::~OutputBatch() {
     for (const Staged& s : staged_) std::filesystem::remove(s.temp, ec);
 }
 
-void OutputBatch::stage(const std::filesystem::path& path, std::string_view data) {
+void OutputBatch::stage(const std::filesystem::path& path, std::string_view data) { stage(path, std::vector<std::string_view>{data}); }
+
+void OutputBatch::stage(const std::filesystem::path& path, const std::vector<std::string_view>& pieces) {
     const OutputTarget t = checkOutputPath(path);
     const std::string name = path.string();
     const std::filesystem::path dir = t.path.has_parent_path() ? t.path.parent_path() : std::filesystem::path(".");
@@ -114,7 +116,8 @@ void OutputBatch::stage(const std::filesystem::path& path, std::string_view data
         std::filesystem::remove(tmp, ec);
         throw OutputError(name, why);
     };
-    if (!writeAll(fd, data)) fail(errno ? std::strerror(errno) : "short write");
+    for (std::string_view data : pieces)
+        if (!writeAll(fd, data)) fail(errno ? std::strerror(errno) : "short write");
     if (t.exists) {
         // Keep the old file's permissions and, where allowed, its owner.
         if (::fchown(fd, t.uid, t.gid) != 0) { /* not ours to give away: keep ours */
@@ -151,8 +154,14 @@ void OutputBatch::commit() {
 
 void writeFileAtomic(const std::filesystem::path& path, std::string_view data,
                      const std::function<void(const std::filesystem::path& staged)>& readBack) {
+    writeFileAtomic(path, std::vector<std::string_view>{data}, readBack);
+}
+
+void writeFileAtomic(const std::filesystem::path& path, const std::vector<std::string_view>& pieces,
+                     const std::function<void(const std::filesystem::path& staged)>& readBack, const std::function<void()>& written) {
     OutputBatch batch;
-    batch.stage(path, data);
+    batch.stage(path, pieces);
+    if (written) written();
     if (readBack) {
         try {
             readBack(batch.lastStaged());

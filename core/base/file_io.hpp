@@ -40,6 +40,7 @@ public:
     OutputBatch& operator=(const OutputBatch&) = delete;
     ~OutputBatch();
     void stage(const std::filesystem::path& path, std::string_view data);
+    void stage(const std::filesystem::path& path, const std::vector<std::string_view>& pieces);  // written one after another
     // The temporary file the last stage() wrote (to read it back before commit()).
     const std::filesystem::path& lastStaged() const { return staged_.back().temp; }
     void commit();
@@ -59,6 +60,11 @@ private:
 // writes always reopens (issue 44).
 void writeFileAtomic(const std::filesystem::path& path, std::string_view data,
                      const std::function<void(const std::filesystem::path& staged)>& readBack = {});
+// The same with the data in pieces, written one after another (a large file with no copy of it in
+// one string). `written`, when given, is called once they are all in the staged file and before
+// the read-back, so that the caller can release what they point to first.
+void writeFileAtomic(const std::filesystem::path& path, const std::vector<std::string_view>& pieces,
+                     const std::function<void(const std::filesystem::path& staged)>& readBack, const std::function<void()>& written = {});
 
 // Lower-case extension with the dot, e.g. ".glb".
 std::string lowerExtension(const std::filesystem::path& path);

@@ -47,22 +47,28 @@ size_t binChunkBytes(std::string_view rest, const std::string& name) {
 
 std::string joinGlb(std::string json, std::string_view rest) { return joinGlb(std::move(json), std::vector<std::string_view>{rest}); }
 
-std::string joinGlb(std::string json, const std::vector<std::string_view>& rest) {
+std::string glbHead(std::string json, size_t restBytes) {
     while (!json.empty() && json.back() == ' ') json.pop_back();  // padding it came with
     while (json.size() % 4) json += ' ';
-    double restBytes = 0;
-    for (std::string_view r : rest) restBytes += double(r.size());
-    if (20.0 + double(json.size()) + restBytes > double(UINT32_MAX))
+    if (20.0 + double(json.size()) + double(restBytes) > double(UINT32_MAX))
         throw std::length_error("the file would pass the 4 GiB a .glb can hold");
     std::string out;
-    out.reserve(20 + json.size() + size_t(restBytes));
+    out.reserve(20 + json.size());
     auto put = [&](uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); };
     out += "glTF";
     put(2);
-    put(uint32_t(20 + json.size() + size_t(restBytes)));
+    put(uint32_t(20 + json.size() + restBytes));
     put(uint32_t(json.size()));
     put(kJsonChunk);
     out += json;
+    return out;
+}
+
+std::string joinGlb(std::string json, const std::vector<std::string_view>& rest) {
+    size_t restBytes = 0;
+    for (std::string_view r : rest) restBytes += r.size();
+    std::string out = glbHead(std::move(json), restBytes);
+    out.reserve(out.size() + restBytes);
     for (std::string_view r : rest) out.append(r);
     return out;
 }

@@ -30,6 +30,9 @@ std::string joinGlb(std::string json, std::string_view rest);
 // The same with `rest` given in pieces, written one after another (an exporter's BIN chunk straight
 // from its arrays, with no copy of it first).
 std::string joinGlb(std::string json, const std::vector<std::string_view>& rest);
+// The header and JSON chunk of that GLB alone, for `restBytes` bytes following it: what a writer
+// streams before the pieces (joinGlb is this and the pieces).
+std::string glbHead(std::string json, size_t restBytes);
 
 }  // namespace io
 }  // namespace pw

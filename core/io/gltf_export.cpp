@@ -14,6 +14,7 @@
 #include <deque>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <stdexcept>
@@ -242,8 +243,42 @@ int resolveExportLevel(const Document& doc, int requested) {
     return static_cast<int>(std::clamp(level, 1.0, static_cast<double>(limits::kMaxExportLevel)));
 }
 
-std::string exportGltfBytes(const Document& doc, bool binary, const ExportOptions& options, GltfExportStats* stats,
-                            TriangleMesh* displayed) {
+namespace {
+
+// A serialised glTF file in pieces: a .glb's header and JSON chunk, then its BIN chunk straight from
+// the arrays it was made of (no copy of the file in one string: the writer streams the pieces and
+// releases the arrays before reading the file back); a .gltf in one piece.
+struct GltfFile {
+    bool binary = false;
+    std::string head;        // .glb: the header and the JSON chunk; .gltf: the whole file
+    std::string chunk;       // .glb: the BIN chunk's header (empty without one)
+    size_t bufferBytes = 0;  // .glb: the BIN chunk's data
+    SplitMesh mesh;          // the surface arrays the blocks borrow
+    BinBlocks bin;
+
+    // Views into this object (made after any move of it).
+    std::vector<std::string_view> pieces() const {
+        std::vector<std::string_view> out{head};
+        if (!binary) return out;
+        static const std::string zeros(4, '\0');
+        if (bufferBytes > 0) out.push_back(chunk);
+        size_t at = 0;
+        for (const auto& [offset, block] : bin.blocks) {
+            out.emplace_back(zeros.data(), offset - at);
+            out.push_back(block);
+            at = offset + block.size();
+        }
+        out.emplace_back(zeros.data(), bufferBytes - at);
+        return out;
+    }
+    size_t size() const {
+        size_t n = 0;
+        for (std::string_view p : pieces()) n += p.size();
+        return n;
+    }
+};
+
+GltfFile buildGltf(const Document& doc, bool binary, const ExportOptions& options, GltfExportStats* stats, TriangleMesh* displayed) {
     if (options.asDisplayed != (displayed != nullptr))
         throw std::invalid_argument(displayed ? "a displayed mesh without asDisplayed" : "asDisplayed without the displayed mesh");
     const int level = resolveExportLevel(doc, options.level);
@@ -282,9 +317,11 @@ std::string exportGltfBytes(const Document& doc, bool binary, const ExportOption
         model.asset.extras = tinygltf::Value(std::move(extras));
     }
     model.buffers.emplace_back();
-    BinBlocks bin;
+    GltfFile file;
+    file.binary = binary;
+    BinBlocks& bin = file.bin;
     bin.deferred = binary;
-    SplitMesh mesh;  // a .glb's BIN chunk is written from it (BinBlocks)
+    SplitMesh& mesh = file.mesh;  // a .glb's BIN chunk is written from it (BinBlocks)
 
     tinygltf::Node root;
     root.name = documentName(doc);
@@ -401,32 +438,24 @@ std::string exportGltfBytes(const Document& doc, bool binary, const ExportOption
     if (bufferBytes > (binary ? size_t{0xF0000000u} : size_t{0xB0000000u}))  // GLB lengths and tinygltf sizes are 32-bit
         throw std::length_error("the mesh would be " + std::to_string(bufferBytes >> 20) +
                                 " MiB, more than a glTF file can hold; use a lower level");
-    std::string bytes;
     tinygltf::TinyGLTF writer;
     if (binary) {
         // tinygltf writes the JSON (its buffer empty, so no BIN chunk and a byteLength of 0); the
-        // buffer's length is set, the document spliced in, and the chunk written from the blocks.
+        // buffer's length is set, the document spliced in, and the chunk made of the blocks.
         std::ostringstream out(std::ios::out | std::ios::binary);
         if (!writer.WriteGltfSceneToStream(&model, out, /*prettyPrint=*/false, /*writeBinary=*/true) || !out)
             throw OutputError("(glb)", "tinygltf could not serialise the model");
         const std::string glb = std::move(out).str();
         nlohmann::json json = parseJsonGuarded(splitGlb(glb, "(glb)").json, "(glb)");
         if (bufferBytes > 0) json.at("buffers").at(0)["byteLength"] = bufferBytes;
-        std::string chunk(8, '\0');
-        const auto put = [&](size_t at, uint32_t v) { std::memcpy(chunk.data() + at, &v, 4); };
-        put(0, uint32_t(bufferBytes));
-        put(4, 0x004E4942u);  // "BIN\0"
-        static const std::string zeros(4, '\0');
-        std::vector<std::string_view> rest;
-        if (bufferBytes > 0) rest.push_back(chunk);
-        size_t at = 0;
-        for (const auto& [offset, block] : bin.blocks) {
-            rest.emplace_back(zeros.data(), offset - at);
-            rest.push_back(block);
-            at = offset + block.size();
+        file.bufferBytes = bufferBytes;
+        if (bufferBytes > 0) {
+            file.chunk.assign(8, '\0');
+            const auto put = [&](size_t at, uint32_t v) { std::memcpy(file.chunk.data() + at, &v, 4); };
+            put(0, uint32_t(bufferBytes));
+            put(4, 0x004E4942u);  // "BIN\0"
         }
-        rest.emplace_back(zeros.data(), bufferBytes - at);
-        bytes = joinGlb(spliceExtras(json.dump(), marker, documentJson), rest);
+        file.head = glbHead(spliceExtras(json.dump(), marker, documentJson), file.chunk.size() + bufferBytes);
     } else {
         // Serialise into a string whose capacity is reserved up front (no repeated regrowth).
         std::string initial;
@@ -434,13 +463,26 @@ std::string exportGltfBytes(const Document& doc, bool binary, const ExportOption
         std::ostringstream out(std::move(initial), std::ios::out | std::ios::binary);
         if (!writer.WriteGltfSceneToStream(&model, out, /*prettyPrint=*/true, /*writeBinary=*/false) || !out)
             throw OutputError("(gltf)", "tinygltf could not serialise the model");
-        bytes = spliceExtras(std::move(out).str(), marker, documentJson);
+        file.head = spliceExtras(std::move(out).str(), marker, documentJson);
     }
-    if (bytes.size() > limits::kMaxFileBytes)
-        throw std::length_error("the file would be " + std::to_string(bytes.size() >> 20) + " MiB, more than the " +
+    const size_t bytes = file.size();
+    if (bytes > limits::kMaxFileBytes)
+        throw std::length_error("the file would be " + std::to_string(bytes >> 20) + " MiB, more than the " +
                                 std::to_string(limits::kMaxFileBytes >> 20) + " MiB Patchwork reads back; use a lower level");
-    st.bytes = bytes.size();
+    st.bytes = bytes;
     if (stats) *stats = st;
+    return file;
+}
+
+}  // namespace
+
+std::string exportGltfBytes(const Document& doc, bool binary, const ExportOptions& options, GltfExportStats* stats,
+                            TriangleMesh* displayed) {
+    GltfFile file = buildGltf(doc, binary, options, stats, displayed);
+    if (!binary) return std::move(file.head);
+    std::string bytes;
+    bytes.reserve(file.size());
+    for (std::string_view piece : file.pieces()) bytes.append(piece);
     return bytes;
 }
 
@@ -453,9 +495,9 @@ GltfExportStats exportGltfWithStats(const Document& doc, const std::filesystem::
     const std::string ext = lowerExtension(path);
     if (ext != ".glb" && ext != ".gltf") throw OutputError(path.string(), "unknown glTF extension '" + ext + "' (use .gltf or .glb)");
     GltfExportStats stats;
-    std::string bytes;
+    std::optional<GltfFile> file;
     try {
-        bytes = exportGltfBytes(doc, ext == ".glb", options, &stats, displayed);
+        file.emplace(buildGltf(doc, ext == ".glb", options, &stats, displayed));
     } catch (const std::length_error& e) {
         throw OutputError(path.string(), e.what());
     } catch (const std::bad_alloc&) {
@@ -463,7 +505,8 @@ GltfExportStats exportGltfWithStats(const Document& doc, const std::filesystem::
                                              std::to_string(resolveExportLevel(doc, options.level)) + "; use a lower level");
     }
     // Read back through the glTF reader: the same patches, surfaces, triangles, curves and joins (a
-    // file beyond the read limit is an export for other programs only: not read back).
+    // file beyond the read limit is an export for other programs only: not read back). The mesh is
+    // released once the file is written, before it is read.
     auto readBack = [&](const std::filesystem::path& staged) {
         const Document back = parsePatchworkGltf(readFileLimited(staged), path.string());
         if (back.patches.size() != doc.patches.size() || back.surfaces.size() != doc.surfaces.size() ||
@@ -471,10 +514,9 @@ GltfExportStats exportGltfWithStats(const Document& doc, const std::filesystem::
             back.joins.size() != doc.joins.size())
             throw InputError(path.string(), "it reads back with different patches or joins");
     };
-    if (bytes.size() <= limits::kMaxFileBytes)
-        writeFileAtomic(path, bytes, readBack);
-    else
-        writeFileAtomic(path, bytes);
+    const std::vector<std::string_view> pieces = file->pieces();
+    writeFileAtomic(path, pieces, stats.bytes <= limits::kMaxFileBytes ? readBack : std::function<void(const std::filesystem::path&)>{},
+                    [&] { file.reset(); });
     return stats;
 }
 

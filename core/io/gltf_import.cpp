@@ -94,7 +94,9 @@ Document importPatchworkGltf(const std::filesystem::path& path, std::optional<Ex
     return parsePatchworkGltf(readFileLimited(path), path.string(), exportOptions);
 }
 
-Document parsePatchworkGltf(std::string_view data, const std::string& name, std::optional<ExportOptions>* exportOptions) {
+namespace {
+// `owned`: the string `data` views, released once the reader's input is made.
+Document parseGltf(std::string_view data, std::string* owned, const std::string& name, std::optional<ExportOptions>* exportOptions) {
     tinygltf::TinyGLTF loader;
     tinygltf::FsCallbacks fs{};
     fs.FileExists = fileNeverExists;
@@ -125,6 +127,10 @@ Document parsePatchworkGltf(std::string_view data, const std::string& name, std:
         *extras = nlohmann::json::object();
     }
     const std::string rest = binary ? joinGlb(gltf.dump(), glb.rest) : gltf.dump();
+    if (owned) {  // `data` and `glb` are not used again
+        owned->clear();
+        owned->shrink_to_fit();
+    }
     tinygltf::Model model;
     std::string err, warn;
     bool ok = false;
@@ -152,6 +158,16 @@ Document parsePatchworkGltf(std::string_view data, const std::string& name, std:
     Document doc = documentFromJson(json, name, field);
     if (exportOptions) *exportOptions = options;
     return doc;
+}
+}  // namespace
+
+Document parsePatchworkGltf(std::string_view data, const std::string& name, std::optional<ExportOptions>* exportOptions) {
+    return parseGltf(data, nullptr, name, exportOptions);
+}
+
+Document parsePatchworkGltf(std::string&& data, const std::string& name, std::optional<ExportOptions>* exportOptions) {
+    std::string owned = std::move(data);
+    return parseGltf(owned, &owned, name, exportOptions);
 }
 
 }  // namespace io

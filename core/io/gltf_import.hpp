@@ -20,6 +20,9 @@ Document importPatchworkGltf(const std::filesystem::path& path, std::optional<Ex
 // The same from the file's bytes (.glb when they start with "glTF", else JSON). Reads no other
 // file and decodes no image: a hostile glTF cannot make Patchwork open paths its URIs name.
 Document parsePatchworkGltf(std::string_view data, const std::string& sourceName, std::optional<ExportOptions>* exportOptions = nullptr);
+// The same, releasing `data` as soon as the glTF reader has its own copy of what it checks (a large
+// .glb then costs two copies of its size at once, not three).
+Document parsePatchworkGltf(std::string&& data, const std::string& sourceName, std::optional<ExportOptions>* exportOptions = nullptr);
 
 }  // namespace io
 }  // namespace pw
