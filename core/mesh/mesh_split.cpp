@@ -8,6 +8,7 @@
 #include <future>
 #include <memory>
 #include <numeric>
+#include <stdexcept>
 #include <system_error>
 #include <tuple>
 #include <utility>
@@ -192,10 +193,98 @@ std::vector<uint32_t> positionIds(const std::vector<std::array<float, 3>>& posit
     return id;
 }
 
-SplitMesh splitMesh(TriangleMesh&& mesh, MeshGrouping grouping) {
+namespace {
+
+// Moves element j of every array to position to[j] (a permutation), following its cycles in place.
+template <class... Arrays>
+void permuteInPlace(const std::vector<uint32_t>& to, Arrays&... arrays) {
+    std::vector<bool> done(to.size(), false);
+    for (size_t s = 0; s < to.size(); ++s) {
+        if (done[s]) continue;
+        auto carry = std::make_tuple(arrays[s]...);
+        for (size_t j = s;;) {
+            done[j] = true;
+            const size_t k = to[j];
+            if (k == s) {
+                std::tie(arrays[k]...) = carry;
+                break;
+            }
+            auto next = std::make_tuple(arrays[k]...);
+            std::tie(arrays[k]...) = carry;
+            carry = std::move(next);
+            j = k;
+        }
+    }
+}
+
+// The split of a large mesh grouped by surface or as one, where every vertex belongs to one group:
+// the triangles are put in group order and the vertices in first-use order within the mesh's own
+// arrays, so that no second copy of the mesh is ever held (the largest exports' peak memory was
+// the mesh and its copy). The same arrays as the copy makes.
+SplitMesh splitInPlace(TriangleMesh& mesh, const std::vector<uint32_t>& group, const std::vector<int>& items) {
+    const size_t G = items.size(), T = group.size(), V = mesh.positions.size();
+    std::vector<uint32_t> start(G + 1, 0);
+    for (uint32_t g : group) ++start[g + 1];
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    {
+        // Triangles by group, stable: triangle t goes to place `to[t]`.
+        std::vector<uint32_t> to(T), fill(start.begin(), start.end() - 1);
+        for (size_t t = 0; t < T; ++t) to[t] = fill[group[t]]++;
+        auto* tri = reinterpret_cast<std::array<uint32_t, 3>*>(mesh.indices.data());
+        struct View {
+            std::array<uint32_t, 3>* p;
+            std::array<uint32_t, 3>& operator[](size_t i) const { return p[i]; }
+        } triangles{tri};
+        permuteInPlace(to, triangles);
+    }
+    // Vertices in first use, group by group; indices relative to their group's first vertex.
+    SplitMesh out;
+    std::vector<uint32_t> newId(V, kNoVertex);
+    uint32_t next = 0;
+    for (size_t g = 0; g < G; ++g) {
+        MeshGroup mg;
+        mg.firstIndex = 3 * start[g];
+        mg.indexCount = 3 * (start[g + 1] - start[g]);
+        mg.firstVertex = next;
+        mg.item = items[g];
+        for (size_t i = mg.firstIndex; i < size_t(mg.firstIndex) + mg.indexCount; ++i) {
+            uint32_t& v = mesh.indices[i];
+            if (newId[v] == kNoVertex) newId[v] = next++;
+            if (newId[v] < mg.firstVertex) throw std::logic_error("splitMesh: a vertex in two groups cannot be split in place");
+            v = newId[v] - mg.firstVertex;
+        }
+        mg.vertexCount = next - mg.firstVertex;
+        out.groups.push_back(mg);
+    }
+    const uint32_t used = next;
+    for (uint32_t& id : newId)
+        if (id == kNoVertex) id = next++;  // unused: after the rest, then cut off
+    permuteInPlace(newId, mesh.positions, mesh.normals, mesh.uvs);
+    mesh.positions.resize(used);
+    mesh.normals.resize(used);
+    mesh.uvs.resize(used);
+    out.positions = std::move(mesh.positions);
+    out.normals = std::move(mesh.normals);
+    out.uvs = std::move(mesh.uvs);
+    out.indices = std::move(mesh.indices);
+    return out;
+}
+
+}  // namespace
+
+SplitMesh splitMesh(TriangleMesh&& mesh, MeshGrouping grouping, size_t inPlaceFrom) {
     const std::vector<uint32_t> pid = positionIds(mesh.positions);
     std::vector<int> items;
     const std::vector<uint32_t> group = groupTriangles(mesh, grouping, pid, items);
+    const size_t bytes = mesh.positions.size() * 32 + mesh.indices.size() * 4;
+    if (grouping != MeshGrouping::Patches && bytes >= inPlaceFrom) {
+        // Which groups are closed first (it reads the indices the split then rewrites).
+        const std::vector<bool> closed = closedGroups(mesh.indices, group, pid, items.size(), true);
+        SplitMesh out = splitInPlace(mesh, group, items);
+        for (size_t g = 0; g < out.groups.size(); ++g) out.groups[g].closed = closed[g];
+        mesh = TriangleMesh{};
+        return out;
+    }
     // Which groups are closed, on a second thread while the groups are copied out (both only read
     // the mesh's indices, the groups and the position ids): a third of the split each.
     const auto closedOf = [&] { return closedGroups(mesh.indices, group, pid, items.size(), grouping != MeshGrouping::Patches); };

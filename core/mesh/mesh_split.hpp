@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -35,9 +36,12 @@ struct SplitMesh {
     std::vector<MeshGroup> groups;  // in order of their first triangle in the mesh
 };
 
-// Consumes the mesh (its arrays are released as the split ones are built). Groups without
-// triangles are left out; a vertex no triangle uses is dropped.
-SplitMesh splitMesh(TriangleMesh&& mesh, MeshGrouping grouping);
+// Consumes the mesh. Groups without triangles are left out; a vertex no triangle uses is dropped.
+// A mesh of `inPlaceFrom` bytes or more (positions, normals, UVs and indices) grouped by surface or
+// as one is split within its own arrays: about half the memory, somewhat slower, the same result;
+// smaller ones, and Patches (whose groups share vertices), are copied out group by group.
+inline constexpr size_t kSplitInPlaceFrom = size_t(32) << 20;
+SplitMesh splitMesh(TriangleMesh&& mesh, MeshGrouping grouping, size_t inPlaceFrom = kSplitInPlaceFrom);
 
 // Vertices with bit-identical positions get one id (the smallest vertex index among them): the
 // welded mesh keeps separate vertices at C0 creases and unjoined seams, which are still one surface.
