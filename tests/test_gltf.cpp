@@ -302,6 +302,16 @@ TEST(Gltf, SingleFileValidationAndTheDocumentsLevel) {
     EXPECT_EQ(stats.level, 8);
     EXPECT_EQ(stats.triangles, static_cast<size_t>(32 * 2 * 8 * 8 - 8 * 8));
     EXPECT_EQ(stats.bytes, fs::file_size(out));
+    // The file is written in pieces from the mesh arrays: the same bytes as in one string, .glb
+    // (with the cage's and curves' blocks) and .gltf.
+    for (const bool binary : {true, false}) {
+        pw::Document withCurve = doc;
+        withCurve.curves.push_back(pw::BezierCurve{{0, 1, 2, 3}});
+        const pw::ExportOptions options{4, pw::MeshGrouping::Surfaces, true};
+        const fs::path file = dir / (binary ? "pieces.glb" : "pieces.gltf");
+        (void)pw::exportGltfWithStats(withCurve, file, options);
+        EXPECT_EQ(pw::test::readBytes(file), pw::exportGltfBytes(withCurve, binary, options)) << binary;
+    }
     const fs::path script = pw::test::gltfValidatorScript();
     if (!script.empty()) {
         const auto r = pw::test::runCommand("node " + quote(script) + " " + quote(out));

@@ -40,6 +40,10 @@ TEST(MeshSplit, InPlaceIsTheCopysSplit) {
         expectSameSplit(makePatchGrid(3, 4), 5, g);
         expectSameSplit(makeTriangleDome(), 6, g);
     }
+    // Nothing to split.
+    const SplitMesh empty = splitMesh(TriangleMesh{}, MeshGrouping::Surfaces, 0);
+    EXPECT_TRUE(empty.groups.empty());
+    EXPECT_TRUE(empty.positions.empty());
     // Patches share vertices between groups: always copied, whatever the size.
     const SplitMesh patches = splitMesh(tessellateDocument(makePatchGrid(2, 2), 4), MeshGrouping::Patches, 0);
     EXPECT_EQ(patches.groups.size(), 4u);

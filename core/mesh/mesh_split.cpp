@@ -220,22 +220,33 @@ void permuteInPlace(const std::vector<uint32_t>& to, Arrays&... arrays) {
 // The split of a large mesh grouped by surface or as one, where every vertex belongs to one group:
 // the triangles are put in group order and the vertices in first-use order within the mesh's own
 // arrays, so that no second copy of the mesh is ever held (the largest exports' peak memory was
-// the mesh and its copy). The same arrays as the copy makes.
+// the mesh and its copy). The same arrays as the copy makes. The mesh's arrays are rearranged as
+// it goes: on an exception they are left in no useful order (splitMesh consumes the mesh).
 SplitMesh splitInPlace(TriangleMesh& mesh, const std::vector<uint32_t>& group, const std::vector<int>& items) {
     const size_t G = items.size(), T = group.size(), V = mesh.positions.size();
     std::vector<uint32_t> start(G + 1, 0);
     for (uint32_t g : group) ++start[g + 1];
     std::partial_sum(start.begin(), start.end(), start.begin());
     {
-        // Triangles by group, stable: triangle t goes to place `to[t]`.
+        // Triangles by group, stable: triangle t goes to place `to[t]` (its three indices moved
+        // together, cycle by cycle).
         std::vector<uint32_t> to(T), fill(start.begin(), start.end() - 1);
         for (size_t t = 0; t < T; ++t) to[t] = fill[group[t]]++;
-        auto* tri = reinterpret_cast<std::array<uint32_t, 3>*>(mesh.indices.data());
-        struct View {
-            std::array<uint32_t, 3>* p;
-            std::array<uint32_t, 3>& operator[](size_t i) const { return p[i]; }
-        } triangles{tri};
-        permuteInPlace(to, triangles);
+        std::vector<bool> done(T, false);
+        uint32_t* I = mesh.indices.data();
+        for (size_t s = 0; s < T; ++s) {
+            if (done[s]) continue;
+            std::array<uint32_t, 3> carry{I[3 * s], I[3 * s + 1], I[3 * s + 2]};
+            for (size_t j = s;;) {
+                done[j] = true;
+                const size_t k = to[j];
+                const std::array<uint32_t, 3> next{I[3 * k], I[3 * k + 1], I[3 * k + 2]};
+                for (size_t c = 0; c < 3; ++c) I[3 * k + c] = carry[c];
+                if (k == s) break;
+                carry = next;
+                j = k;
+            }
+        }
     }
     // Vertices in first use, group by group; indices relative to their group's first vertex.
     SplitMesh out;
@@ -277,7 +288,8 @@ SplitMesh splitMesh(TriangleMesh&& mesh, MeshGrouping grouping, size_t inPlaceFr
     std::vector<int> items;
     const std::vector<uint32_t> group = groupTriangles(mesh, grouping, pid, items);
     const size_t bytes = mesh.positions.size() * 32 + mesh.indices.size() * 4;
-    if (grouping != MeshGrouping::Patches && bytes >= inPlaceFrom) {
+    const bool sameSizes = mesh.normals.size() == mesh.positions.size() && mesh.uvs.size() == mesh.positions.size();
+    if (grouping != MeshGrouping::Patches && bytes >= inPlaceFrom && sameSizes) {
         // Which groups are closed first (it reads the indices the split then rewrites).
         const std::vector<bool> closed = closedGroups(mesh.indices, group, pid, items.size(), true);
         SplitMesh out = splitInPlace(mesh, group, items);
