@@ -2,6 +2,8 @@
 
 #include <tiny_gltf.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -126,7 +128,26 @@ Document parseGltf(std::string_view data, std::string* owned, const std::string&
         json = std::move(*extras);
         *extras = nlohmann::json::object();
     }
-    const std::string rest = binary ? joinGlb(gltf.dump(), glb.rest) : gltf.dump();
+    // The glTF reader copies the BIN chunk into its buffer and reads nothing of it: the buffer's
+    // size and every view and accessor against it were checked above, and the document is in the
+    // extras. So it gets a stub of the chunk (its first 4 bytes, the buffer said to be that long):
+    // a large .glb is then held once while it is read, not three times.
+    std::string_view after = glb.rest;
+    std::string stub;
+    const auto buffers = gltf.find("buffers");
+    if (const size_t binBytes = binary ? binChunkBytes(glb.rest, name) : 0;
+        binBytes > 4 && buffers != gltf.end() && buffers->is_array() && !buffers->empty()) {
+        nlohmann::json& buffer = buffers->front();  // checked above: an object with an integer byteLength
+        if (!buffer.contains("uri")) {
+            buffer["byteLength"] = std::min<int64_t>(buffer.at("byteLength").get<int64_t>(), 4);
+            const uint32_t length = 4;
+            stub.append(reinterpret_cast<const char*>(&length), 4);
+            stub.append(glb.rest.substr(4, 4));  // the chunk type: BIN
+            stub.append(glb.rest.substr(8, 4));
+            after = glb.rest.substr(8 + binBytes);  // chunks after the BIN chunk, as stored
+        }
+    }
+    const std::string rest = binary ? joinGlb(gltf.dump(), std::vector<std::string_view>{stub, after}) : gltf.dump();
     if (owned) {  // `data` and `glb` are not used again
         owned->clear();
         owned->shrink_to_fit();
