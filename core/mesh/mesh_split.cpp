@@ -195,22 +195,20 @@ std::vector<uint32_t> positionIds(const std::vector<std::array<float, 3>>& posit
 
 namespace {
 
-// Moves element j of every array to position to[j] (a permutation), following its cycles in place.
-template <class... Arrays>
-void permuteInPlace(const std::vector<uint32_t>& to, Arrays&... arrays) {
+// Moves element j to position to[j] (a permutation), following its cycles in place: `load(i)`
+// reads element i, `store(i, value)` writes it.
+template <class Load, class Store>
+void permuteInPlace(const std::vector<uint32_t>& to, Load&& load, Store&& store) {
     std::vector<bool> done(to.size(), false);
     for (size_t s = 0; s < to.size(); ++s) {
         if (done[s]) continue;
-        auto carry = std::make_tuple(arrays[s]...);
+        auto carry = load(s);
         for (size_t j = s;;) {
             done[j] = true;
             const size_t k = to[j];
-            if (k == s) {
-                std::tie(arrays[k]...) = carry;
-                break;
-            }
-            auto next = std::make_tuple(arrays[k]...);
-            std::tie(arrays[k]...) = carry;
+            auto next = load(k);
+            store(k, carry);
+            if (k == s) break;
             carry = std::move(next);
             j = k;
         }
@@ -228,25 +226,16 @@ SplitMesh splitInPlace(TriangleMesh& mesh, const std::vector<uint32_t>& group, c
     for (uint32_t g : group) ++start[g + 1];
     std::partial_sum(start.begin(), start.end(), start.begin());
     {
-        // Triangles by group, stable: triangle t goes to place `to[t]` (its three indices moved
-        // together, cycle by cycle).
+        // Triangles by group, stable: triangle t goes to place `to[t]` (its three indices together).
         std::vector<uint32_t> to(T), fill(start.begin(), start.end() - 1);
         for (size_t t = 0; t < T; ++t) to[t] = fill[group[t]]++;
-        std::vector<bool> done(T, false);
         uint32_t* I = mesh.indices.data();
-        for (size_t s = 0; s < T; ++s) {
-            if (done[s]) continue;
-            std::array<uint32_t, 3> carry{I[3 * s], I[3 * s + 1], I[3 * s + 2]};
-            for (size_t j = s;;) {
-                done[j] = true;
-                const size_t k = to[j];
-                const std::array<uint32_t, 3> next{I[3 * k], I[3 * k + 1], I[3 * k + 2]};
-                for (size_t c = 0; c < 3; ++c) I[3 * k + c] = carry[c];
-                if (k == s) break;
-                carry = next;
-                j = k;
-            }
-        }
+        permuteInPlace(
+            to,
+            [&](size_t t) {
+                return std::array<uint32_t, 3>{I[3 * t], I[3 * t + 1], I[3 * t + 2]};
+            },
+            [&](size_t t, const std::array<uint32_t, 3>& tri) { std::copy(tri.begin(), tri.end(), I + 3 * t); });
     }
     // Vertices in first use, group by group; indices relative to their group's first vertex.
     SplitMesh out;
@@ -270,7 +259,9 @@ SplitMesh splitInPlace(TriangleMesh& mesh, const std::vector<uint32_t>& group, c
     const uint32_t used = next;
     for (uint32_t& id : newId)
         if (id == kNoVertex) id = next++;  // unused: after the rest, then cut off
-    permuteInPlace(newId, mesh.positions, mesh.normals, mesh.uvs);
+    permuteInPlace(
+        newId, [&](size_t v) { return std::make_tuple(mesh.positions[v], mesh.normals[v], mesh.uvs[v]); },
+        [&](size_t v, const auto& p) { std::tie(mesh.positions[v], mesh.normals[v], mesh.uvs[v]) = p; });
     mesh.positions.resize(used);
     mesh.normals.resize(used);
     mesh.uvs.resize(used);
