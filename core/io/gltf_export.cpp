@@ -504,9 +504,9 @@ GltfExportStats exportGltfWithStats(const Document& doc, const std::filesystem::
         throw OutputError(path.string(), "not enough memory for the mesh at level " +
                                              std::to_string(resolveExportLevel(doc, options.level)) + "; use a lower level");
     }
-    // Read back through the glTF reader: the same patches, surfaces, triangles, curves and joins (a
-    // file beyond the read limit is an export for other programs only: not read back). The mesh is
-    // released once the file is written, before it is read.
+    // Read back through the glTF reader: the same patches, surfaces, triangles, curves and joins
+    // (buildGltf refused a file beyond the read limit). The mesh is released once the file is
+    // written, before it is read.
     auto readBack = [&](const std::filesystem::path& staged) {
         const Document back = parsePatchworkGltf(readFileLimited(staged), path.string());
         if (back.patches.size() != doc.patches.size() || back.surfaces.size() != doc.surfaces.size() ||
@@ -515,8 +515,7 @@ GltfExportStats exportGltfWithStats(const Document& doc, const std::filesystem::
             throw InputError(path.string(), "it reads back with different patches or joins");
     };
     const std::vector<std::string_view> pieces = file->pieces();
-    writeFileAtomic(path, pieces, stats.bytes <= limits::kMaxFileBytes ? readBack : std::function<void(const std::filesystem::path&)>{},
-                    [&] { file.reset(); });
+    writeFileAtomic(path, pieces, readBack, [&] { file.reset(); });
     return stats;
 }
 
