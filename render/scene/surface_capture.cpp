@@ -6,7 +6,6 @@
 // ones the screen shows.
 #include <algorithm>
 #include <cstdlib>
-#include <cstring>
 #include <exception>
 #include <limits>
 #include <optional>
@@ -149,26 +148,6 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
             VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
             bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
             VK_CHECK(vkBeginCommandBuffer(cmd, &bi));
-            VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-            if (k == 0) {
-                vkCmdResetQueryPool(cmd, query, 0, pieces);
-                vkCmdFillBuffer(cmd, m.counters.buffer, 0, 16, 0);
-                vkCmdFillBuffer(cmd, counter.buffer, 0, VK_WHOLE_SIZE, 0);
-                mb.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-                mb.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT |
-                                   VK_ACCESS_TRANSFORM_FEEDBACK_COUNTER_READ_BIT_EXT | VK_ACCESS_TRANSFORM_FEEDBACK_COUNTER_WRITE_BIT_EXT;
-                vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                                     VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT |
-                                         VK_PIPELINE_STAGE_TRANSFORM_FEEDBACK_BIT_EXT,
-                                     0, 1, &mb, 0, nullptr, 0, nullptr);
-            } else {  // the piece before's end counter and culled count, written in an earlier submission
-                mb.srcAccessMask = VK_ACCESS_TRANSFORM_FEEDBACK_COUNTER_WRITE_BIT_EXT | VK_ACCESS_SHADER_WRITE_BIT;
-                mb.dstAccessMask =
-                    VK_ACCESS_TRANSFORM_FEEDBACK_COUNTER_READ_BIT_EXT | VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-                vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFORM_FEEDBACK_BIT_EXT | VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT,
-                                     VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT, 0, 1, &mb, 0,
-                                     nullptr, 0, nullptr);
-            }
             recordCapturePiece(cmd, k, pieces, skips.empty() ? nullptr : &skips[k], out.buffer, capacity, counter.buffer, query,
                                captureWindows[slot], captureTriangles[slot], plan, area);
             VK_CHECK(vkEndCommandBuffer(cmd));
@@ -231,13 +210,32 @@ CapturedSurface Renderer::captureSurface(const RenderOptions& optIn) {
 
 // Piece k of `pieces` of the capture (its windows: those `skip` leaves; all when null), into `out`
 // from where the piece before stopped (its counter), its end into counter k, counted by query k.
-// The last piece also captures the Bézier triangles.
+// The first piece clears the queries and counters; the last also captures the Bézier triangles.
 void Renderer::recordCapturePiece(VkCommandBuffer cmd, uint32_t k, uint32_t pieces, const std::vector<uint8_t>* skip, VkBuffer out,
                                   VkDeviceSize capacity, VkBuffer counter, VkQueryPool query, VkPipeline windowsPipe,
                                   VkPipeline trianglesPipe, const FramePlan& plan, const VkRect2D& area) {
     Impl& m = *impl_;
     const Device::TransformFeedbackFns& xfb = dev_.transformFeedback();
     const VkDeviceSize zero = 0, before = 4 * VkDeviceSize(k ? k - 1 : 0), mine = 4 * VkDeviceSize(k);
+    VkMemoryBarrier mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    if (k == 0) {
+        vkCmdResetQueryPool(cmd, query, 0, pieces);
+        vkCmdFillBuffer(cmd, m.counters.buffer, 0, 16, 0);
+        vkCmdFillBuffer(cmd, counter, 0, VK_WHOLE_SIZE, 0);
+        mb.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+        mb.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFORM_FEEDBACK_COUNTER_READ_BIT_EXT |
+                           VK_ACCESS_TRANSFORM_FEEDBACK_COUNTER_WRITE_BIT_EXT;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                             VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT |
+                                 VK_PIPELINE_STAGE_TRANSFORM_FEEDBACK_BIT_EXT,
+                             0, 1, &mb, 0, nullptr, 0, nullptr);
+    } else {  // the piece before's end counter and culled count, written in an earlier submission
+        mb.srcAccessMask = VK_ACCESS_TRANSFORM_FEEDBACK_COUNTER_WRITE_BIT_EXT | VK_ACCESS_SHADER_WRITE_BIT;
+        mb.dstAccessMask = VK_ACCESS_TRANSFORM_FEEDBACK_COUNTER_READ_BIT_EXT | VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFORM_FEEDBACK_BIT_EXT | VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT,
+                             VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT, 0, 1, &mb, 0, nullptr,
+                             0, nullptr);
+    }
     vkCmdBeginQuery(cmd, query, k, 0);  // outside rendering, like the statistics query
     VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
     ri.renderArea = area;
