@@ -12,8 +12,8 @@ void addDisplacementOptions(CLI::App* cmd, DisplacementArgs& a) {
     cmd->add_option("--displacement-mapping", a.mapping,
                     "Displacement UVs: planar (over the ground plane) | patch (each patch's parameters)");
     cmd->add_option("--height-detail", a.heightDetail,
-                    "on (default) | off: whether the height map's detail raises adaptive levels (off: the distance or screen formula "
-                    "alone, the map only moves the vertices)");
+                    "on (default) | off: whether the height map's detail, band-limited to what the view shows, raises adaptive "
+                    "levels (off: the distance or screen formula alone, the full map only moves the vertices)");
 }
 
 void applyDisplacementArgs(const std::string& command, const DisplacementArgs& a, Document& doc) {

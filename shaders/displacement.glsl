@@ -1,6 +1,8 @@
 // Displacement along the normal by the height map (DESIGN §11), for the -DDISPLACE evaluation
 // shaders (surface.tese, tri_surface.tese). Needs common.glsl first.
 //   height = scale * map(uv) + bias, the window's own scale and bias or the document's;
+//   map: sampled at the mip level the view shows there when band limiting is on (adaptive levels
+//       with tess.heightDetail), else its full resolution;
 //   uv: the window's parameters mapped into its rectangle of the map (a net's windows tile it), or
 //       the planar projection along the up axis, which depends on the position alone and so is the
 //       same on both sides of every seam (positions there are bit-identical, DESIGN §2);
@@ -9,7 +11,7 @@
 //   like the normal-map approach of the notes (the change of n itself is left out).
 layout(set = 0, binding = 3) uniform sampler2D heightMap;
 
-float mapHeight(vec2 uv) { return textureLod(heightMap, uv, 0.0).r; }
+float mapHeight(vec2 uv, float lod) { return textureLod(heightMap, uv, lod).r; }
 
 // Displaces p along n (unit) and turns n into the displaced surface's normal. param: the window's
 // (u, v); du, dv: the surface's derivatives along them.
@@ -28,10 +30,13 @@ void displaceSurface(inout vec3 p, inout vec3 n, vec3 du, vec3 dv, vec2 param, P
         uvDu = vec2(pd.uvRect.z - pd.uvRect.x, 0.0);
         uvDv = vec2(0.0, pd.uvRect.w - pd.uvRect.y);
     }
-    vec2 texel = 1.0 / vec2(textureSize(heightMap, 0));
-    float h = scale * mapHeight(uv) + bias;
-    vec2 grad = vec2(mapHeight(uv + vec2(texel.x, 0.0)) - mapHeight(uv - vec2(texel.x, 0.0)),
-                     mapHeight(uv + vec2(0.0, texel.y)) - mapHeight(uv - vec2(0.0, texel.y))) * scale / (2.0 * texel);
+    // Band-limited (core/gpu/patch_math.h heightMapLod): the mip level the view shows at the
+    // undisplaced point, the same on both sides of a seam; the gradient one texel of that level apart.
+    float lod = heightMapLod(frame.heightLod.x, pixelsPerUnit(frame.lodViewProj, p, frame.viewport.y), frame.heightLod.y);
+    vec2 texel = exp2(floor(lod)) / vec2(textureSize(heightMap, 0));
+    float h = scale * mapHeight(uv, lod) + bias;
+    vec2 grad = vec2(mapHeight(uv + vec2(texel.x, 0.0), lod) - mapHeight(uv - vec2(texel.x, 0.0), lod),
+                     mapHeight(uv + vec2(0.0, texel.y), lod) - mapHeight(uv - vec2(0.0, texel.y), lod)) * scale / (2.0 * texel);
     vec3 Du = du + dot(grad, uvDu) * n, Dv = dv + dot(grad, uvDv) * n;
     vec3 nd = cross(Du, Dv);
     float len2 = dot(nd, nd);

@@ -129,7 +129,7 @@ void main() {
             vec3 p[4];
             edgePoints(e, p);
             float level = centreLevels() ? centre : clamp(adaptiveEdgeLevel(p), 1.0, frame.inner.z);
-            o[e] = raiseForDisplacement(level, p, pd.detail[e], pd.texels[e], pd);
+            o[e] = raiseForDisplacement(level, p, e, pd);
         }
         if (centreInner()) centreInnerLevel = centre;
     }

@@ -37,18 +37,32 @@ float displacementMargin(PatchData pd) {
     return max(abs(sb.y), abs(sb.x + sb.y));
 }
 
-// Edge level `level` raised for the height map's detail along the edge (core/gpu/patch_math.h
+// The map's detail along edge e at mip level `lod` (0..8, fractional between levels): level 0's
+// `detail` times the stored fraction of each level (PatchData coarserDetail).
+float detailAtLevel(PatchData pd, int e, int level) {
+    if (level <= 0) return pd.detail[e];
+    level = min(level, kHeightDetailLevels);
+    vec2 pair = unpackHalf2x16(pd.coarserDetail[e][(level - 1) / 2]);
+    return pd.detail[e] * ((level & 1) == 1 ? pair.x : pair.y);
+}
+float detailAtLod(PatchData pd, int e, float lod) {
+    int level = int(floor(lod));
+    return mix(detailAtLevel(pd, e, level), detailAtLevel(pd, e, level + 1), lod - float(level));
+}
+
+// Edge level `level` raised for the height map's detail along edge e (core/gpu/patch_math.h
 // displacementEdgeLevel) at this distance: pixels per world unit across the view at the canonical
-// chord's midpoint, from the points alone, so both windows on the edge agree. The surface pass
-// counts the edges raised and the largest such level (the stats).
-float raiseForDisplacement(float level, vec3 p[4], float detail, float texels, PatchData pd) {
+// chord's midpoint, from the points alone, so both windows on the edge agree. Band-limited: the
+// detail and the texels crossed are those of the mip level the view shows there (heightMapLod), the
+// level the evaluation samples. The surface pass counts the edges raised and the largest such level (the stats).
+float raiseForDisplacement(float level, vec3 p[4], int e, PatchData pd) {
+    float detail = pd.detail[e];
     if (detail <= 0.0 || (frame.modes.z & kKeepHeightLevels) != 0u) return level;
-    mat4 m = frame.lodViewProj;
-    vec3 mid = 0.5 * (p[0] + p[3]);
-    float w = m[0][3] * mid.x + m[1][3] * mid.y + m[2][3] * mid.z + m[3][3];
-    if (w <= 1e-6) return level;
-    float pxPerUnit = 0.5 * frame.viewport.y * length(vec3(m[0][1], m[1][1], m[2][1])) / w;
-    float d = min(displacementEdgeLevel(detail * abs(displacementScaleBias(pd).x), texels, pxPerUnit, kDisplacementTolerancePx),
+    float pxPerUnit = pixelsPerUnit(frame.lodViewProj, 0.5 * (p[0] + p[3]), frame.viewport.y);
+    if (pxPerUnit <= 0.0) return level;
+    float lod = heightMapLod(frame.heightLod.x, pxPerUnit, frame.heightLod.y);
+    float d = min(displacementEdgeLevel(detailAtLod(pd, e, lod) * abs(displacementScaleBias(pd).x), pd.texels[e] * exp2(-lod),
+                                        pxPerUnit, kDisplacementTolerancePx),
                   frame.inner.z);
     if (d > level && draw.drawMode == kDrawShaded) {
         atomicAdd(counters.displacedEdges, 1u);

@@ -26,7 +26,7 @@ float adaptiveLevel(int e, PatchData pd, float centre) {
     bool rev = reversedEdge(triEdgeSlot(e, 0), triEdgeSlot(e, 1), triEdgeSlot(e, 2), triEdgeSlot(e, 3));
     for (int k = 0; k < 4; ++k) p[k] = cp(triEdgeSlot(e, rev ? 3 - k : k));
     float level = centre >= 0.0 ? centre : clamp(adaptiveEdgeLevel(p), 1.0, frame.inner.z);
-    return raiseForDisplacement(level, p, pd.detail[e], pd.texels[e], pd);
+    return raiseForDisplacement(level, p, e, pd);
 }
 
 // The centre of the control points (the patch's distance for the far cull).

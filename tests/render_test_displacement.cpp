@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "core/construct/terrain.hpp"
@@ -175,6 +176,49 @@ TEST_F(Displacement, TerrainHasFewerTrianglesFarThanNearAndCullingRemovesPatches
     EXPECT_GT(nearCull.stats.patchesCulled, 100u);
     EXPECT_LT(nearCull.stats.triangles(), nearAll.stats.triangles());
     EXPECT_LT(far.stats.triangles() * 4, nearAll.stats.triangles());
+}
+
+// Band-limited displacement (DESIGN §11): far away the evaluation samples the map's mip level the
+// view shows and the edges take that level's detail, so the far view has at least 10x fewer
+// triangles than the near one (issue 43; 6.1x when both sampled the full map), and the level, a
+// function of the undisplaced point alone, opens no crack: the captured surface's only open edges
+// are on the terrain's border.
+TEST_F(Displacement, FarTerrainSamplesTheMipLevelItShowsWithoutACrack) {
+    const Document doc = makeTerrainDocument();
+    Offscreen off(640, 360, false);
+    off.setDocument(doc, std::make_shared<const HeightMap>(makeTerrainHeightMap()));
+    render::RenderOptions o = render::optionsFromDocument(doc);
+    o.display.showGrid = false;
+    o.tess.cullOffscreen = false;
+    render::RenderOptions f = o;
+    f.camera.target = {0.0, 0.0, 0.0};
+    f.camera.distance = 420.0;
+    f.camera.pitchDeg = 50.0;
+    const Rendered nearAll = off.render(o), far = off.render(f);
+    EXPECT_GE(nearAll.stats.triangles(), 10 * far.stats.triangles()) << nearAll.stats.triangles() << " near, " << far.stats.triangles();
+    EXPECT_GT(far.stats.displacedEdges, 0u);  // the map still raises edges, at its coarser level
+    for (const bool isFar : {false, true}) {
+        const render::CapturedSurface c = off.capture(isFar ? f : o);
+        ASSERT_GT(c.mesh.indices.size(), 0u);
+        std::map<std::pair<uint32_t, uint32_t>, int> uses;  // undirected edge -> triangles on it
+        for (size_t t = 0; t < c.mesh.indices.size(); t += 3)
+            for (int k = 0; k < 3; ++k) {
+                const uint32_t a = c.mesh.indices[t + size_t(k)], b = c.mesh.indices[t + size_t((k + 1) % 3)];
+                ++uses[{std::min(a, b), std::max(a, b)}];
+            }
+        const auto onBorder = [&](uint32_t v) {  // the flat net displaces along z: x and y stay on the square
+            const auto& p = c.mesh.positions[v];
+            return std::max(std::abs(p[0]), std::abs(p[1])) > 64.0f - 1e-3f;
+        };
+        size_t open = 0, inside = 0;
+        for (const auto& [e, n] : uses)
+            if (n == 1) {
+                ++open;
+                if (!onBorder(e.first) || !onBorder(e.second)) ++inside;
+            }
+        EXPECT_GT(open, 0u);
+        EXPECT_EQ(inside, 0u) << "of " << open << " open edges, " << (isFar ? "far" : "near");
+    }
 }
 
 TEST_F(Displacement, CommandLineRendersAndExportsDisplacedAndRefusesBadMaps) {

@@ -1,6 +1,6 @@
 // Displacement on the CPU side (DESIGN §11): height maps read from 8- and 16-bit PNGs and sampled
 // like the GPU, the document's displacement settings in files and commands, the per-window data the
-// shaders get (map rectangles, shared-edge detail), and the terrain shipped in data/.
+// shaders get (map rectangles, shared-edge detail at every mip level), and the terrain shipped in data/.
 #include <gtest/gtest.h>
 
 #include <stb/stb_image_write.h>
@@ -129,6 +129,48 @@ TEST(DisplacementWindows, NetWindowsTileTheMapAndSharedEdgesGetOneDetail) {
     for (const WindowDisplacement& wd : windowDisplacements(doc, expandPatches(doc), &flat)) EXPECT_EQ(wd.detail, (std::array<float, 4>{}));
     for (const WindowDisplacement& wd : windowDisplacements(doc, expandPatches(doc), nullptr))
         EXPECT_EQ(wd.texels, (std::array<float, 4>{}));
+}
+
+// Band limiting (DESIGN §11): the mip chain halves each side down to 1 x 1, every texel the mean of
+// the four above it (one of them on a side of 1 texel); an edge's detail falls level by level on the
+// terrain's fractal noise, whose finest octaves the filter removes, but stays on a parabola, which
+// has the same second derivative at every resolution; the texels per unit are the map's over the
+// model.
+TEST(DisplacementWindows, MipLevelsAverageAndCarryTheirOwnDetail) {
+    const HeightMap odd = heightMapFromValues(5, 3, {0, 0.2, 0.4, 0.6, 0.8, 0.1, 0.3, 0.5, 0.7, 0.9, 1, 1, 1, 1, 1});
+    const std::vector<HeightMap> oddChain = heightMipChain(odd, 8);
+    ASSERT_EQ(oddChain.size(), 2u);
+    EXPECT_EQ(oddChain[0].width, 2u);
+    EXPECT_EQ(oddChain[0].height, 1u);
+    EXPECT_NEAR(oddChain[0].texel(1, 0), (0.4 + 0.6 + 0.5 + 0.7) / 4, 1e-4);
+    EXPECT_EQ(oddChain[1].width * oddChain[1].height, 1u);
+    EXPECT_NEAR(oddChain[1].texel(0, 0), (oddChain[0].texel(0, 0) + oddChain[0].texel(1, 0)) / 2, 1e-4);
+    EXPECT_EQ(heightMipChain(makeTerrainHeightMap(64, 3), 3).size(), 3u);  // at most the levels asked for
+
+    const HeightMap noise = makeTerrainHeightMap(256, 3);
+    std::vector<double> bowl(256 * 256);
+    for (size_t i = 0; i < bowl.size(); ++i) {
+        const double x = (double(i % 256) + 0.5) / 256.0 - 0.5;
+        bowl[i] = 2.0 * x * x;
+    }
+    const HeightMap parabola = heightMapFromValues(256, 256, bowl);
+    std::vector<std::array<double, 2>> row(257);  // across the middle half (clear of the clamped border), two samples a texel
+    for (size_t k = 0; k < row.size(); ++k) row[k] = {0.25 + double(k) / 512.0, 0.5};
+    const EdgeDetail n = edgeDetail(noise, heightMipChain(noise, 8), row);
+    EXPECT_NEAR(n.texels, 128.0, 1e-9);
+    EXPECT_LT(n.coarser[0], 0.8 * n.detail);
+    for (size_t l = 1; l < 6; ++l) EXPECT_LT(n.coarser[l], n.coarser[l - 1]) << l;
+    const EdgeDetail p = edgeDetail(parabola, heightMipChain(parabola, 8), row);
+    EXPECT_GT(p.detail, 0.9);  // h'' = 1 per unit parameter^2 (the linear filter's kinks measure up to twice that)
+    EXPECT_LT(p.detail, 2.1);
+    for (size_t l = 0; l < 4; ++l) EXPECT_NEAR(p.coarser[l], p.detail, 0.05 * p.detail) << l + 1;  // down to 16 x 16
+
+    Document doc = makeTerrainDocument({4, 8.0, 1.0f, "t.png"});
+    const std::vector<PatchInstance> w = expandPatches(doc);
+    EXPECT_DOUBLE_EQ(mapTexelsPerUnit(doc, w, &noise), 256.0 / 8.0);  // planar over the 8 x 8 square
+    doc.displacement.mapping = DisplacementMapping::Patch;
+    EXPECT_NEAR(mapTexelsPerUnit(doc, w, &noise), 256.0 / 8.0, 1e-6);  // the net tiles it evenly
+    EXPECT_EQ(mapTexelsPerUnit(doc, w, nullptr), 0.0);
 }
 
 TEST(DisplacementCommands, MapScaleBiasMappingAndOwnValuesAreUndoableSteps) {

@@ -6,6 +6,7 @@
 
 #include "core/eval/bezier_triangle.hpp"
 #include "core/eval/rational_eval.hpp"
+#include "core/gpu/patch_math.h"
 
 namespace pw {
 inline namespace eval {
@@ -47,6 +48,36 @@ EdgeDetail edgeDetail(const HeightMap& map, const std::vector<std::array<double,
 
 namespace {
 
+// `uvs` (equal parameter steps) at n + 1 equal steps, by linear interpolation between them.
+std::vector<std::array<double, 2>> resampled(const std::vector<std::array<double, 2>>& uvs, int n) {
+    std::vector<std::array<double, 2>> out(size_t(n) + 1);
+    const double last = double(uvs.size() - 1);
+    for (int k = 0; k <= n; ++k) {
+        const double x = last * k / n;
+        const size_t i = std::min(size_t(x), uvs.size() - 2);
+        const double f = x - double(i);
+        out[size_t(k)] = {uvs[i][0] * (1 - f) + uvs[i + 1][0] * f, uvs[i][1] * (1 - f) + uvs[i + 1][1] * f};
+    }
+    return out;
+}
+
+}  // namespace
+
+EdgeDetail edgeDetail(const HeightMap& map, const std::vector<HeightMap>& mips, const std::vector<std::array<double, 2>>& uvs) {
+    static_assert(std::tuple_size_v<decltype(EdgeDetail::coarser)> == size_t(gpu::kHeightDetailLevels));
+    EdgeDetail d = edgeDetail(map, uvs);
+    if (map.empty() || uvs.size() < 3) return d;
+    for (size_t l = 0; l < d.coarser.size(); ++l) {
+        const HeightMap& m = mips.empty() ? map : mips[std::min(l, mips.size() - 1)];
+        // Two samples per texel of that level, as sampleEdge takes them on level 0.
+        const double span = d.texels * double(m.width) / double(map.width);
+        d.coarser[l] = edgeDetail(m, resampled(uvs, std::clamp(int(std::ceil(2.0 * span)), 16, 1024))).detail;
+    }
+    return d;
+}
+
+namespace {
+
 // UV samples along an edge: `at(t)` for t in [0, 1], dense enough for every texel it crosses (two
 // samples per texel, at least 16, at most 1024).
 template <class At>
@@ -68,17 +99,69 @@ std::optional<DisplacementOverride> ownOf(const Document& doc, const PatchInstan
 
 }  // namespace
 
+double mapTexelsPerUnit(const Document& doc, const std::vector<PatchInstance>& windows, const HeightMap* map) {
+    if (!map || map->empty()) return 0.0;
+    if (doc.displacement.mapping == DisplacementMapping::Planar) {
+        const std::array<double, 4> rect = planarRect(doc);
+        return std::max(map->width / rect[2], map->height / rect[3]);
+    }
+    double most = 0.0;
+    // Texels `texels` over the length of the polyline through `at` at 9 parameters.
+    auto along = [&](double texels, auto&& at) {
+        double len = 0.0;
+        Vec3 prev = at(0.0);
+        for (int k = 1; k <= 8; ++k) {
+            const Vec3 q = at(k / 8.0);
+            len += length(q - prev);
+            prev = q;
+        }
+        if (len > 0.0) most = std::max(most, texels / len);
+    };
+    for (const PatchInstance& pi : windows) {
+        const WindowNet net = gatherWindow(doc, pi.idx);
+        const auto eval = [&](double u, double v) { return evaluateWindow(net, pi.basis, pi.tension, u, v).p; };
+        double cols = 1.0, rows = 1.0;  // the windows of a net tiling the map
+        if (pi.surface >= 0) {
+            const Surface& s = doc.surfaces[size_t(pi.surface)];
+            const uint32_t step = netStep(s.basis);
+            rows = double(netWindowCount(s.rows, s.closedV, step));
+            cols = double(netWindowCount(s.cols, s.closedU, step));
+        }
+        for (const double side : {0.0, 1.0}) {
+            along(map->height / rows, [&](double t) { return eval(side, t); });
+            along(map->width / cols, [&](double t) { return eval(t, side); });
+        }
+    }
+    for (const TrianglePatch& tri : doc.triangles)  // barycentric (u, v) over the map: edges cross the map's side or diagonal
+        for (int e = 0; e < 3; ++e) {
+            const std::array<uint32_t, 4> key = triEdgePool(tri.idx, e);
+            const double texels = e == 0 ? map->height : e == 1 ? map->width : std::hypot(map->width, map->height);
+            along(texels, [&](double s) {
+                const double a = 1 - s;
+                return a * a * a * doc.points[key[0]] + 3 * a * a * s * doc.points[key[1]] + 3 * a * s * s * doc.points[key[2]] +
+                       s * s * s * doc.points[key[3]];
+            });
+        }
+    return most;
+}
+
 std::vector<WindowDisplacement> windowDisplacements(const Document& doc, const std::vector<PatchInstance>& windows, const HeightMap* map) {
     std::vector<WindowDisplacement> out(windows.size() + doc.triangles.size());
     const bool planar = doc.displacement.mapping == DisplacementMapping::Planar;
     const std::array<double, 4> rect = planarRect(doc);
     const bool zUp = doc.camera.zUp;
     std::map<std::array<uint32_t, 4>, EdgeDetail> shared;  // canonical pool points of an edge -> its detail
+    const std::vector<HeightMap> mips = map ? heightMipChain(*map, gpu::kHeightDetailLevels) : std::vector<HeightMap>{};
     auto detailOf = [&](std::array<uint32_t, 4> key, auto&& at) {
         if (edgeReversed(key)) key = reversedEdgePool(key);
         auto it = shared.find(key);
-        if (it == shared.end()) it = shared.emplace(key, edgeDetail(*map, sampleEdge(*map, at))).first;
+        if (it == shared.end()) it = shared.emplace(key, edgeDetail(*map, mips, sampleEdge(*map, at))).first;
         return it->second;
+    };
+    auto store = [](WindowDisplacement& wd, int e, const EdgeDetail& d) {
+        wd.detail[size_t(e)] = float(d.detail);
+        wd.texels[size_t(e)] = float(d.texels);
+        for (size_t l = 0; l < d.coarser.size(); ++l) wd.coarser[size_t(e)][l] = float(d.coarser[l]);
     };
     for (size_t w = 0; w < windows.size(); ++w) {
         const PatchInstance& pi = windows[w];
@@ -107,8 +190,7 @@ std::vector<WindowDisplacement> windowDisplacements(const Document& doc, const s
                 if (planar) return planarUv(evaluateWindow(net, pi.basis, pi.tension, u, v).p, rect, zUp);
                 return std::array{r[0] * (1 - u) + r[2] * u, r[1] * (1 - v) + r[3] * v};
             });
-            wd.detail[size_t(e)] = float(d.detail);
-            wd.texels[size_t(e)] = float(d.texels);
+            store(wd, e, d);
         }
     }
     for (size_t t = 0; t < doc.triangles.size(); ++t) {
@@ -131,8 +213,7 @@ std::vector<WindowDisplacement> windowDisplacements(const Document& doc, const s
                 const auto& end = kEnds[size_t(e)];
                 return std::array{end[0] + (end[2] - end[0]) * s, end[1] + (end[3] - end[1]) * s};
             });
-            wd.detail[size_t(e)] = float(d.detail);
-            wd.texels[size_t(e)] = float(d.texels);
+            store(wd, e, d);
         }
     }
     return out;

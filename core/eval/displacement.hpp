@@ -31,14 +31,25 @@ std::array<double, 2> planarUv(const Vec3& p, const std::array<double, 4>& rect,
 struct EdgeDetail {
     double detail = 0.0;
     double texels = 0.0;
+    // The detail at the map's mip levels 1..8 (band-limited displacement, core/gpu/patch_math.h
+    // heightMapLod), measured like `detail` on each level; the coarsest level repeats past the chain's end.
+    std::array<double, 8> coarser{};
 };
 EdgeDetail edgeDetail(const HeightMap& map, const std::vector<std::array<double, 2>>& uvs);
+// The same with `coarser` filled from `mips` (heightMipChain(map, 8)).
+EdgeDetail edgeDetail(const HeightMap& map, const std::vector<HeightMap>& mips, const std::vector<std::array<double, 2>>& uvs);
+
+// The map's texels per world unit, the finest anywhere on the model: exact under the planar
+// mapping; under the patch mapping the largest over the windows' edges of the texels they cross
+// per unit of their length. 0 without a map.
+double mapTexelsPerUnit(const Document& doc, const std::vector<PatchInstance>& windows, const HeightMap* map);
 
 // What one window (or triangle) carries for displacement.
 struct WindowDisplacement {
     std::array<float, 4> uvRect{0.0f, 0.0f, 1.0f, 1.0f};  // patch mapping: (u, v) -> mix(xy, zw)
     std::optional<DisplacementOverride> own;
-    std::array<float, 4> detail{}, texels{};  // per edge (quads u0, v0, u1, v1; triangles 0, 1, 2)
+    std::array<float, 4> detail{}, texels{};        // per edge (quads u0, v0, u1, v1; triangles 0, 1, 2)
+    std::array<std::array<float, 8>, 4> coarser{};  // per edge, EdgeDetail::coarser
 };
 // Every window of expandPatches(doc) (`windows`), then every triangle. A shared edge gets the same
 // detail on both sides (computed once per edge, keyed by the pool points its levels come from), so

@@ -44,6 +44,9 @@ PW_BLOCK(layout(set = 0, binding = 0, std140) uniform Frame, FrameUniforms) {
     // draws the picture from elsewhere; then w is 1 and culled patches are drawn greyed instead of dropped.
     mat4 lodViewProj;
     vec4 lodEye;
+    // Band-limited displacement (core/gpu/patch_math.h heightMapLod): x the map's texels per world
+    // unit (0: the full-resolution map everywhere), y the coarsest mip level used.
+    vec4 heightLod;
 }
 PW_END_BLOCK(frame)
 
@@ -58,6 +61,9 @@ struct PatchData {
     vec4 disp PW_INIT(0.0f);
     vec4 detail PW_INIT(0.0f);
     vec4 texels PW_INIT(0.0f);
+    // Per edge, the detail at the map's mip levels 1..8 as fractions of `detail` (level 0), two
+    // half floats a word: x levels 1 and 2, y 3 and 4, z 5 and 6, w 7 and 8 (the lower half first).
+    uvec4 coarserDetail[4] PW_INIT(uvec4(0u));
 };
 
 // bindings 4-6, storage, read by the merged blocks of net windows only (shaders/merged.tesc,
@@ -86,8 +92,8 @@ PW_END_BLOCK(draw)
 PW_END_NAMESPACE
 
 #ifdef __cplusplus
-static_assert(sizeof(pw::gpu::FrameUniforms) == 3 * 64 + 18 * 16);
-static_assert(sizeof(pw::gpu::PatchData) == 96);
+static_assert(sizeof(pw::gpu::FrameUniforms) == 3 * 64 + 19 * 16);
+static_assert(sizeof(pw::gpu::PatchData) == 160);
 static_assert(sizeof(pw::gpu::GpuCounters) == 16);
 static_assert(sizeof(pw::gpu::DrawPush) == 96);
 #endif

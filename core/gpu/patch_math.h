@@ -220,6 +220,29 @@ PW_FN float displacementEdgeLevel(float detail, float texels, float pxPerUnit, f
 }
 PW_CONST float kDisplacementTolerancePx = 0.5f;
 
+// Pixels per world unit across the view at p under viewProj, a view `viewportHeight` pixels high
+// (0 at or behind the eye).
+PW_FN float pixelsPerUnit(mat4 viewProj, vec3 p, float viewportHeight) {
+    PW_PRECISE float w = viewProj[0][3] * p.x + viewProj[1][3] * p.y + viewProj[2][3] * p.z + viewProj[3][3];
+    if (w <= 1e-6f) return 0.0f;
+    PW_PRECISE float s = 0.5f * viewportHeight * length(vec3(viewProj[0][1], viewProj[1][1], viewProj[2][1])) / w;
+    return s;
+}
+
+// Band-limited displacement (DESIGN §11): the height map's mip level a view shows where it draws
+// `pxPerUnit` pixels per world unit, log2 of the map's texels per pixel there: 0 while a texel
+// covers a pixel or more, at most maxLod. 0 when texelsPerUnit is 0 (band limiting off). The
+// evaluation samples the map at this level of the undisplaced point, which both windows of a seam
+// evaluate bit-identically (DESIGN §2), so the level cannot open a crack; an edge's adaptive level
+// takes the map's detail at the level of its canonical midpoint.
+PW_FN float heightMapLod(float texelsPerUnit, float pxPerUnit, float maxLod) {
+    if (texelsPerUnit <= 0.0f || pxPerUnit <= 0.0f) return 0.0f;
+    PW_PRECISE float lod = log2(max(texelsPerUnit / pxPerUnit, 1.0f));
+    return min(lod, maxLod);
+}
+// Mip levels above 0 whose detail each window edge carries (PatchData coarserDetail): levels 1..8.
+PW_CONST int kHeightDetailLevels = 8;
+
 PW_END_NAMESPACE
 
 #endif  // PW_PATCH_MATH_H

@@ -75,5 +75,30 @@ HeightMap heightMapFromValues(uint32_t width, uint32_t height, const std::vector
     return m;
 }
 
+std::vector<HeightMap> heightMipChain(const HeightMap& map, int levels) {
+    std::vector<HeightMap> out;
+    out.reserve(size_t(std::max(levels, 0)));  // `prev` points into it
+    const HeightMap* prev = &map;
+    for (int l = 1; l <= levels && !prev->empty() && (prev->width > 1 || prev->height > 1); ++l) {
+        HeightMap m;
+        m.width = std::max(1u, prev->width / 2);
+        m.height = std::max(1u, prev->height / 2);
+        m.bits = 16;
+        m.source = map.source;
+        m.texels.resize(size_t(m.width) * m.height);
+        for (uint32_t y = 0; y < m.height; ++y)
+            for (uint32_t x = 0; x < m.width; ++x) {
+                // The 2 x 2 texels above (one of them where that side is 1 texel): a box filter.
+                const uint32_t x0 = std::min(2 * x, prev->width - 1), x1 = std::min(2 * x + 1, prev->width - 1);
+                const uint32_t y0 = std::min(2 * y, prev->height - 1), y1 = std::min(2 * y + 1, prev->height - 1);
+                const auto at = [&](uint32_t tx, uint32_t ty) { return uint32_t(prev->texels[size_t(ty) * prev->width + tx]); };
+                m.texels[size_t(y) * m.width + x] = uint16_t((at(x0, y0) + at(x1, y0) + at(x0, y1) + at(x1, y1) + 2) / 4);
+            }
+        out.push_back(std::move(m));
+        prev = &out.back();
+    }
+    return out;
+}
+
 }  // namespace model
 }  // namespace pw

@@ -31,5 +31,10 @@ HeightMap loadHeightMap(const std::filesystem::path& path);
 // An in-memory map (tests, generated terrain): width x height values in 0..1, row-major.
 HeightMap heightMapFromValues(uint32_t width, uint32_t height, const std::vector<double>& values, std::string source = "(generated)");
 
+// The map's mip levels 1, 2, … (each half the size of the one before, at least 1 texel, the mean of
+// the 2 x 2 texels above it), at most `levels` of them, stopping at 1 x 1. The GPU's texture holds
+// the same levels (render/scene/height_texture), so both sides band-limit the map alike.
+std::vector<HeightMap> heightMipChain(const HeightMap& map, int levels);
+
 }  // namespace model
 }  // namespace pw

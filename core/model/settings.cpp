@@ -146,8 +146,9 @@ std::vector<Setting> makeSettings() {
                   "Distance mode: cull patches centred at or beyond the far distance (the notes' level 0) instead of keeping level 1",
                   [](Document& d) -> bool& { return d.tess.cullFar; }));
     t.push_back(switchRow("tess.heightDetail", "Height map raises levels",
-                          "Adaptive modes with a height map: raise an edge's level where the map has more detail than it shows; off "
-                          "keeps the distance or screen formula's levels (the map only moves the vertices)",
+                          "Adaptive modes with a height map: raise an edge's level where the map has more detail than it shows, the "
+                          "map band-limited to what the view shows (its mip level per pixel); off keeps the distance or screen "
+                          "formula's levels (the full map only moves the vertices)",
                           [](Document& d) -> bool& { return d.tess.heightDetail; }));
     // Display (the Display panel, `display` in files).
     t.push_back(choiceRow<ShadingMode>(

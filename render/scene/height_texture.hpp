@@ -1,6 +1,7 @@
-// The height map on the GPU (DESIGN §11): one R16_UNORM image sampled with linear filtering and
-// clamp-to-edge (core/model/height_map.hpp samples the same way on the CPU), bound at binding 3. A 1 x 1
-// zero texture stands in when there is no map, so the descriptor is always valid.
+// The height map on the GPU (DESIGN §11): one R16_UNORM image with the CPU's mip levels
+// (core/model/height_map.hpp heightMipChain), sampled with linear filtering between texels and levels
+// and clamp-to-edge (core/model/height_map.hpp samples a level the same way on the CPU), bound at
+// binding 3. A 1 x 1 zero texture stands in when there is no map, so the descriptor is always valid.
 #pragma once
 
 #include "core/model/height_map.hpp"
@@ -13,6 +14,7 @@ struct HeightTexture {
     Image image;
     OwnedSampler sampler;
     uint32_t width = 0, height = 0;
+    uint32_t levels = 1;  // mip levels, down to 1 x 1
 };
 
 HeightTexture uploadHeightTexture(Device& dev, const HeightMap* map);

@@ -125,6 +125,8 @@ void Renderer::setDocument(const Document& doc, std::shared_ptr<const HeightMap>
     const std::array<double, 4> rect = planarRect(doc);
     m.displace = {0.0f, 0.0f, ds.mapping == DisplacementMapping::Planar ? 1.0f : 0.0f, doc.camera.zUp ? 1.0f : 0.0f};
     m.planar = {float(rect[0]), float(rect[1]), float(1.0 / rect[2]), float(1.0 / rect[3])};
+    m.heightLod = {float(mapTexelsPerUnit(doc, m.windows, m.map.get())),
+                   float(std::min<uint32_t>(m.height.levels - 1, uint32_t(gpu::kHeightDetailLevels))), 0.0f, 0.0f};
     if (m.displaced) ensureDisplacedPipelines(dev_, pipes_);
     // Merged blocks: at most one per 2 windows, written each frame that merges.
     m.blocks =
@@ -227,6 +229,9 @@ Renderer::FramePlan Renderer::prepareFrame(const RenderOptions& opt, VkRect2D ar
     fu.isoline = {ts.isolineLevels[0], ts.isolineLevels[1], 0.0f, 0.0f};
     fu.displace = {opt.displacementScale, opt.displacementBias, m.displace.z, m.displace.w};
     fu.planar = m.planar;
+    // Band-limited displacement with adaptive levels that follow the map's detail (DESIGN §11).
+    const bool bandLimit = m.displaced && ts.adaptive != AdaptiveMode::None && ts.heightDetail;
+    fu.heightLod = bandLimit ? m.heightLod : glm::vec4(0.0f);
     fu.comb = {float(combToothLength(ds, modelSize_)), float(std::clamp(ds.combDensity, 2, 21)), 5.0f, 0.0f};
     std::memcpy(m.frameUbo.mapped, &fu, sizeof(fu));
     plan.vm = vm;

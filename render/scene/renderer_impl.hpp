@@ -49,9 +49,10 @@ struct Renderer::Impl {
     HeightTexture height;
     bool displaced = false;
     glm::vec4 displace{0.0f}, planar{0.0f};
-    std::vector<Join> joins;  // the document's, for the curvature graph across a join (windows = patch indices)
-    Buffer blocks;            // this frame's merged blocks (render/scene/merged_blocks.hpp), HostWritten
-    Buffer placeholder;       // bound where the scene has no buffer yet (no windows)
+    glm::vec4 heightLod{0.0f};  // the frame's heightLod when band limiting is on (core/gpu/gpu_interface.h)
+    std::vector<Join> joins;    // the document's, for the curvature graph across a join (windows = patch indices)
+    Buffer blocks;              // this frame's merged blocks (render/scene/merged_blocks.hpp), HostWritten
+    Buffer placeholder;         // bound where the scene has no buffer yet (no windows)
     // Bindings 4..6: the pool and window indices as storage, the blocks.
     std::array<const Buffer*, 3> mergedBuffers() const {
         const auto or_ = [&](const Buffer& b) { return b.buffer ? &b : &placeholder; };

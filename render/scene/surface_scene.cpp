@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <glm/packing.hpp>
+
 #include "core/eval/displacement.hpp"
 #include "core/select/picking.hpp"
 #include "core/tess/edge_levels.hpp"
@@ -32,6 +34,14 @@ std::vector<gpu::PatchData> windowPatchData(const Document& doc, const std::vect
         pd[w].disp = {d.own ? d.own->scale : 0.0f, d.own ? d.own->bias : 0.0f, d.own ? 1.0f : 0.0f, 0.0f};
         pd[w].detail = {d.detail[0], d.detail[1], d.detail[2], d.detail[3]};
         pd[w].texels = {d.texels[0], d.texels[1], d.texels[2], d.texels[3]};
+        for (int e = 0; e < 4; ++e)  // the coarser levels' detail as fractions of level 0's, two halves a word
+            for (int k = 0; k < 4; ++k) {
+                const float d0 = d.detail[size_t(e)];
+                auto frac = [&](int l) {  // within a half's range
+                    return d0 > 0.0f ? std::min(d.coarser[size_t(e)][size_t(l)] / d0, 6e4f) : 0.0f;
+                };
+                pd[w].coarserDetail[e][k] = glm::packHalf2x16(glm::vec2(frac(2 * k), frac(2 * k + 1)));
+            }
     }
     for (size_t w = 0; w < levels.size(); ++w) {
         const WindowLevels& l = levels[w];

@@ -70,14 +70,14 @@ Buffer uploadStatic(Device& dev, const void* data, VkDeviceSize bytes, VkBufferU
 }
 
 Image createImage(Device& dev, VkExtent2D extent, VkFormat format, VkSampleCountFlagBits samples, VkImageUsageFlags usage,
-                  VkImageAspectFlags aspect) {
+                  VkImageAspectFlags aspect, uint32_t mipLevels) {
     Image img;
     img.format = format;
     VkImageCreateInfo ci{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
     ci.imageType = VK_IMAGE_TYPE_2D;
     ci.format = format;
     ci.extent = {extent.width, extent.height, 1};
-    ci.mipLevels = 1;
+    ci.mipLevels = mipLevels;
     ci.arrayLayers = 1;
     ci.samples = samples;
     ci.tiling = VK_IMAGE_TILING_OPTIMAL;
@@ -95,13 +95,14 @@ Image createImage(Device& dev, VkExtent2D extent, VkFormat format, VkSampleCount
     vi.image = img.image;
     vi.viewType = VK_IMAGE_VIEW_TYPE_2D;
     vi.format = format;
-    vi.subresourceRange = {aspect, 0, 1, 0, 1};
+    vi.subresourceRange = {aspect, 0, mipLevels, 0, 1};
     VK_CHECK(vkCreateImageView(dev.device(), &vi, nullptr, img.view.replace(dev.device())));
     return img;
 }
 
 void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
-                  VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
+                  VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess,
+                  uint32_t mipLevels) {
     const VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER,
                                  nullptr,
                                  srcAccess,
@@ -111,7 +112,7 @@ void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,
                                  VK_QUEUE_FAMILY_IGNORED,
                                  VK_QUEUE_FAMILY_IGNORED,
                                  image,
-                                 {aspect, 0, 1, 0, 1}};
+                                 {aspect, 0, mipLevels, 0, 1}};
     vkCmdPipelineBarrier(cmd, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &b);
 }
 

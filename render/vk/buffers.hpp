@@ -61,17 +61,19 @@ struct Image {
     void reset() { *this = Image{}; }
 };
 
+// A 2D image with `mipLevels` levels, its memory and a view of them all.
 Image createImage(Device& dev, VkExtent2D extent, VkFormat format, VkSampleCountFlagBits samples, VkImageUsageFlags usage,
-                  VkImageAspectFlags aspect);
+                  VkImageAspectFlags aspect, uint32_t mipLevels = 1);
 
-// Image layout transition with a full (conservative) barrier.
 // Records the copy of a colour attachment (COLOR_ATTACHMENT_OPTIMAL, left in TRANSFER_SRC_OPTIMAL)
 // into a host-visible buffer as tightly packed 4-byte pixels, with the barrier that makes the
 // bytes visible to the host after the submission completes.
 void copyColorAttachmentToHost(VkCommandBuffer cmd, VkImage image, VkExtent2D extent, VkBuffer dst);
 
+// Image layout transition of the first `mipLevels` levels with a full (conservative) barrier.
 void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
-                  VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess);
+                  VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess,
+                  uint32_t mipLevels = 1);
 
 }  // namespace vk
 }  // namespace pw::render
