@@ -1,6 +1,7 @@
 // Pipeline statistics of the surface pass: a single patch at uniform level n gives 2n² triangles;
 // per-edge levels give what the quad-domain rules predict (independent CPU formula below);
-// back-facing and off-screen patches are culled to 0 evaluations; batching bounds.
+// back-facing and off-screen patches are culled to 0 evaluations, a wholly visible model skips the
+// per-patch test; batching bounds.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -223,6 +224,33 @@ TEST_F(RenderStats, OffscreenPatchIsCulled) {
     EXPECT_EQ(r.stats.patchesCulled, 1u);
     o.tess.cullOffscreen = false;
     EXPECT_EQ(off.render(o).stats.triangles(), 128u);
+}
+
+// Uniform levels with off-screen culling: a model wholly inside the frustum can lose no patch, so
+// the frame skips the per-patch test (the control shader without it) and draws the same picture;
+// moved half out of view, the test runs and culls the patches outside.
+TEST_F(RenderStats, WhollyVisibleModelSkipsThePerPatchOffscreenTest) {
+    const Document doc = makePatchGrid(8, 8);
+    Offscreen off(W, H);
+    off.setDocument(doc);
+    render::RenderOptions o = plainOptions(doc, 4.0f, 1.0);
+    o.tess.cullOffscreen = true;
+    const Rendered framed = off.render(o);
+    EXPECT_TRUE(framed.stats.cullTestSkipped);
+    EXPECT_EQ(framed.stats.patchesCulled, 0u);
+    render::RenderOptions all = o;
+    all.tess.cullOffscreen = false;
+    const Rendered drawn = off.render(all);
+    EXPECT_FALSE(drawn.stats.cullTestSkipped);
+    EXPECT_EQ(framed.stats.triangles(), drawn.stats.triangles());
+    EXPECT_EQ(countDifferent(framed.image, drawn.image), 0u);
+    // The camera's target moved to the grid's corner: part of it off screen, tested patch by patch.
+    const Bounds b = computeBounds(doc.points);
+    o.camera.target = {b.max.x, b.max.y, b.max.z};
+    const Rendered corner = off.render(o);
+    EXPECT_FALSE(corner.stats.cullTestSkipped);
+    EXPECT_GT(corner.stats.patchesCulled, 0u);
+    EXPECT_LT(corner.stats.triangles(), framed.stats.triangles());
 }
 
 TEST(Batching, PatchesPerDrawKeepsEvaluationVerticesBounded) {

@@ -219,6 +219,7 @@ void FramePasses::surface(Frame& f) {
         return;
     }
     const MergedBlocks& merged = f.plan.merged;
+    f.stats.cullTestSkipped = f.plan.cullTestSkipped;
     vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, f.fam.surface[surfaceSlot(f)]);
     f.stats.draws = recordSurfaceDraws(f.cmd, f.pipes.layout, m.scene, f.plan.perDraw, f.push, f.plan.bounds(), f.plan.budget,
                                        merged.windows ? &merged.merged : nullptr);

@@ -75,6 +75,7 @@ struct Renderer::FramePlan {
     ViewMatrices vm;
     int variant = 0;  // spacing variant
     LevelsVariant levels = LevelsVariant::Fixed;
+    bool cullTestSkipped = false;  // FrameStats::cullTestSkipped
     float maxLevel = 64.0f;
     uint32_t budget = 0, perDraw = 1;   // evaluation vertices per draw (0: no limit), windows per draw
     std::vector<uint8_t> levelBounds;   // adaptive: batch by this frame's levels, not by the worst case

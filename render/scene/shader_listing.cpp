@@ -26,6 +26,8 @@ std::string describe(const TessSettings& t) {
         if (t.cullFar && t.adaptive == AdaptiveMode::Distance) on.push_back("culling beyond the far distance");
         for (size_t i = 0; i < on.size(); ++i) why += (i ? ", " : "") + on[i];
         why += ")";
+        if (on.size() == 1 && t.cullOffscreen)  // render/scene/renderer.cpp prepareFrame
+            why += "; frames whose whole model is in view use the fixed-level control shader instead (nothing to cull)";
     } else {
         why += "; control shader with fixed levels (uniform levels and per-patch overrides)";
     }

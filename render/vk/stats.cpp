@@ -28,6 +28,7 @@ nlohmann::json statsJson(const FrameStats& s) {
             {"pipeline_statistics", s.pipelineStatsValid},
             {"patches", s.patches},
             {"patches_culled", s.patchesCulled},
+            {"cull_test_skipped", s.cullTestSkipped},
             {"merged_windows", s.mergedWindows},
             {"merged_blocks", s.mergedBlocks},
             {"draws", s.draws},

@@ -34,6 +34,9 @@ struct FrameStats {
     uint32_t patches = 0;
     uint32_t mergedWindows = 0, mergedBlocks = 0;  // windows drawn B x B as one patch, and those patches
     uint32_t draws = 0;
+    // Off-screen culling was on but the whole scene lay inside the frustum, so no patch could be
+    // culled and the control shader without the per-patch test drew the frame.
+    bool cullTestSkipped = false;
     uint64_t triangles() const { return clippingInvocations; }
 };
 
