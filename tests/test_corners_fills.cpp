@@ -236,7 +236,7 @@ TEST(FillHole, ABoxCornerFillsG1AndHoldsWhileItsPointsAndNeighboursMove) {
 
 // A 5-sided hole in a flat ring whose seams' tangent ratios differ along each side (0.800 and 0.807
 // after the joins were measured one by one): the fill can only be held by folding a ring patch, so
-// it is refused with the reason, and nothing changes (DESIGN §14: what a fill needs).
+// it is refused with the reason, naming the sides whose ends disagree, and nothing changes (DESIGN §14: what a fill needs).
 TEST(FillHole, AHoleWhoseSidesRatiosDisagreeIsRefusedSayingWhatToMatch) {
     EditSession s;
     s.doc = planarRing(5);
@@ -256,7 +256,11 @@ TEST(FillHole, AHoleWhoseSidesRatiosDisagreeIsRefusedSayingWhatToMatch) {
         test::runEditScript(s, cmd);
         FAIL() << "a fill that needs a fold was accepted";
     } catch (const std::exception& e) {
-        EXPECT_NE(std::string(e.what()).find("same tangent ratio"), std::string::npos) << e.what();
+        const std::string why = e.what();
+        EXPECT_NE(why.find("same tangent ratio"), std::string::npos) << why;
+        // Which sides, numbered as given, and the ratios their two ends ask for.
+        EXPECT_NE(why.find("and here side "), std::string::npos) << why;
+        EXPECT_NE(why.find(" at its start and "), std::string::npos) << why;
     }
     EXPECT_EQ(s.doc, before);
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 
 #include "core/base/errors.hpp"
@@ -150,6 +151,40 @@ void curveOntoSplitFill(Document& d, uint32_t c, uint32_t first) {
     d.curves[c].idx = std::move(idx);
 }
 
+// Why the fill's G1 joins to its surroundings could not hold: a side's joins hold one tangent ratio
+// α along it (DESIGN §14), and at each hole corner that ratio is fixed by the surroundings, the
+// fill's leg there lying along the next side (B1 = B0 + α (A0 − A1) at the corner). The sides, as
+// numbered when given, whose two ends ask for different ratios; empty when none does.
+std::string ratioMismatch(const Document& doc, const std::vector<std::array<Seg, 2>>& h, const std::vector<size_t>& given,
+                          const std::vector<HoleSide>& sides) {
+    const size_t n = h.size();
+    // The ratio at s's point `end` (a hole corner) that makes the fill's leg from `along`'s point
+    // `from` (the same corner) to its point `next` continue s's cross leg.
+    auto ratio = [&](const Seg& s, int end, const Seg& along, int from, int next) -> std::optional<double> {
+        if (s.curve >= 0) return std::nullopt;
+        const Vec3 across = s.at(doc, end) - s.at(doc, end, 1);
+        const double a2 = glm::dot(across, across);
+        if (a2 <= 0.0) return std::nullopt;
+        return glm::dot(along.at(doc, next) - along.at(doc, from), across) / a2;
+    };
+    auto fmt = [](double x) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.4g", x);
+        return std::string(buf);
+    };
+    std::string out;
+    for (size_t k = 0; k < n; ++k) {
+        const size_t km = (k + n - 1) % n, kp = (k + 1) % n;
+        const auto a = ratio(h[k][0], 0, h[km][1], 3, 2), b = ratio(h[k][1], 3, h[kp][0], 0, 1);
+        if (!a || !b || std::abs(*a - *b) <= 1e-6 * std::max({1.0, std::abs(*a), std::abs(*b)})) continue;
+        std::string label;
+        for (const auto& [p, e] : sides[given[k]].edges) label += (label.empty() ? "" : "+") + edgeLabel(p, e);
+        out += std::string(out.empty() ? "" : "; ") + "side " + std::to_string(given[k] + 1) + " (" + label + ") needs α " + fmt(*a) +
+               " at its start and " + fmt(*b) + " at its end";
+    }
+    return out;
+}
+
 }  // namespace
 
 std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
@@ -251,6 +286,8 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
             }
     };
     findHalves();
+    std::vector<size_t> given(n);  // the side as numbered when given, of each side in the loop's order
+    for (size_t k = 0; k < n; ++k) given[k] = k;
     // Each fill patch's normal must agree with its neighbours': du runs along h[k][0] and dv back
     // along h[k-1][1] from the hole corner, so the loop must turn the right way.
     // (Judged at the first side that is a patch edge; a hole of curves keeps the order it was given in.)
@@ -264,6 +301,7 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
                    dv = h[(k0 + n - 1) % n][1].at(doc, 2) - h[(k0 + n - 1) % n][1].at(doc, 3);
         if (glm::dot(glm::cross(du, dv), nS) < 0.0) {
             std::reverse(geo.begin(), geo.end());
+            std::reverse(given.begin(), given.end());
             for (SideGeo& g : geo) g.flip();
             findHalves();
         }
@@ -379,9 +417,11 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
     } catch (const EditError& e) {
         // Each side's fill seams continue the surroundings' seams at the hole corners and at the
         // side's middle, where their ratios must agree (DESIGN §14, corners).
+        const std::string which = ratioMismatch(doc, h, given, sides);
         throw EditError(std::string(e.what()) +
                         "; a fill holds G1 when the seams meeting each side at its two ends have the same tangent ratio α (as on a "
-                        "box rounded by blends): make those seams match, or fill a smaller hole");
+                        "box rounded by blends)" +
+                        (which.empty() ? "" : ", and here " + which) + ": make those seams match, or fill a smaller hole");
     }
     // The seams between the fill's patches: C0 first, so that the centre's fan is whole when the
     // corner construction makes them G1 together (one at a time, plain G1 rows would turn two
