@@ -61,6 +61,7 @@ struct Scene {
     std::string comparedTo;  // adaptive: the uniform scene with the same view
     bool terrain = false;    // the terrain's own table (runTerrain), only when named
     std::string path;        // --file: a document measured with its own settings (levels, adaptivity, camera, display)
+    bool corner = false;     // the camera aimed at the model's corner: three quarters of it off screen (culling on the CPU)
 };
 
 std::vector<Scene> allScenes() {
@@ -71,6 +72,7 @@ std::vector<Scene> allScenes() {
         {"grid32-adaptive8px", [] { return makePatchGrid(32, 32); }, 16, true, false, false, "grid32"},
         {"grid64-adaptive8px", [] { return makePatchGrid(64, 64); }, 16, true, false, false, ""},
         {"grid128", [] { return makePatchGrid(128, 128); }, 16, false, false, true, ""},
+        {"grid64-corner", [] { return makePatchGrid(64, 64); }, 16, false, false, false, "", false, "", true},
         {"terrain", [] { return makeTerrainDocument(); }, 64, true, false, true, "", true},
     };
 }
@@ -269,7 +271,12 @@ int runBench(const BenchArgs& a) {
             o.tess.adaptive = sc.adaptive ? AdaptiveMode::ScreenSpace : AdaptiveMode::None;
             o.tess.targetPixels = 8.0f;
             o.tess.cullBackfaces = false;
-            o.camera = frameBounds(doc.camera, computeBounds(doc.points), double(W) / H);
+            const Bounds b = computeBounds(doc.points);
+            o.camera = frameBounds(doc.camera, b, double(W) / H);
+            if (sc.corner) {
+                o.camera.target = {b.max.x, b.max.y, b.max.z};
+                o.camera.distance *= 0.5;
+            }
         }
         std::vector<render::RenderOptions> variants{o};
         if (plain) {
@@ -399,7 +406,8 @@ void registerBenchCommand(CLI::App& app, Action& run) {
     cmd->add_option("--frames", a->frames, "Measured frames per scene (default 20)");
     cmd->add_option(
         "--scene", a->scenes,
-        "Scene(s) to run: teapot16, teapot64, grid32, grid32-adaptive8px, grid64-adaptive8px, grid128, terrain (only when named: "
+        "Scene(s) to run: teapot16, teapot64, grid32, grid32-adaptive8px, grid64-adaptive8px, grid128, grid64-corner (aimed at its corner: "
+        "three quarters off screen), terrain (only when named: "
         "near and far, culling off and on)");
     cmd->add_option("--json", a->json, "Write the results as JSON");
     cmd->add_option("--device", a->device, "Vulkan device: substring of its name");

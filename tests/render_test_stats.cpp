@@ -1,7 +1,7 @@
 // Pipeline statistics of the surface pass: a single patch at uniform level n gives 2n² triangles;
 // per-edge levels give what the quad-domain rules predict (independent CPU formula below);
-// back-facing and off-screen patches are culled to 0 evaluations, a wholly visible model skips the
-// per-patch test; batching bounds.
+// back-facing and off-screen patches are culled to 0 evaluations (whole windows on the CPU, a wholly
+// visible model without the per-patch test); batching bounds.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -226,10 +226,11 @@ TEST_F(RenderStats, OffscreenPatchIsCulled) {
     EXPECT_EQ(off.render(o).stats.triangles(), 128u);
 }
 
-// Uniform levels with off-screen culling: a model wholly inside the frustum can lose no patch, so
-// the frame skips the per-patch test (the control shader without it) and draws the same picture;
-// moved half out of view, the test runs and culls the patches outside.
-TEST_F(RenderStats, WhollyVisibleModelSkipsThePerPatchOffscreenTest) {
+// Off-screen culling decided on the CPU first (render/scene/view_culling.hpp): a model wholly inside
+// the frustum can lose no patch, so the frame skips the per-patch test (the control shader without
+// it) and draws the same picture; aimed at its corner, whole windows outside are culled before the
+// control shader, and a debug camera still sends every patch to it to be greyed.
+TEST_F(RenderStats, OffscreenCullingSkipsTheTestWhereNothingCanBeCulledAndCullsWholeWindowsOnTheCpu) {
     const Document doc = makePatchGrid(8, 8);
     Offscreen off(W, H);
     off.setDocument(doc);
@@ -244,13 +245,30 @@ TEST_F(RenderStats, WhollyVisibleModelSkipsThePerPatchOffscreenTest) {
     EXPECT_FALSE(drawn.stats.cullTestSkipped);
     EXPECT_EQ(framed.stats.triangles(), drawn.stats.triangles());
     EXPECT_EQ(countDifferent(framed.image, drawn.image), 0u);
-    // The camera's target moved to the grid's corner: part of it off screen, tested patch by patch.
+    // The camera's target moved to the grid's corner: part of it off screen. The windows wholly
+    // outside are culled before the control shader (counted as culled, never reaching it), those
+    // wholly inside drawn without the test, the rest tested patch by patch: the picture of drawing
+    // them all.
     const Bounds b = computeBounds(doc.points);
     o.camera.target = {b.max.x, b.max.y, b.max.z};
-    const Rendered corner = off.render(o);
+    all.camera = o.camera;
+    const Rendered corner = off.render(o), cornerAll = off.render(all);
     EXPECT_FALSE(corner.stats.cullTestSkipped);
     EXPECT_GT(corner.stats.patchesCulled, 0u);
     EXPECT_LT(corner.stats.triangles(), framed.stats.triangles());
+    EXPECT_EQ(countDifferent(corner.image, cornerAll.image), 0u);
+    if (corner.stats.pipelineStatsValid) {
+        EXPECT_EQ(corner.stats.tcsPatches + corner.stats.patchesCulled, 64u);
+    }
+    // A debug camera greys culled patches in place instead: every patch reaches the control shader.
+    render::RenderOptions debug = o;
+    debug.lodCamera = o.camera;
+    debug.camera.distance *= 3.0;
+    const Rendered greyed = off.render(debug);
+    if (greyed.stats.pipelineStatsValid) {
+        EXPECT_EQ(greyed.stats.tcsPatches, 64u);
+    }
+    EXPECT_EQ(greyed.stats.patchesCulled, corner.stats.patchesCulled);
 }
 
 TEST(Batching, PatchesPerDrawKeepsEvaluationVerticesBounded) {

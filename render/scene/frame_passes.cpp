@@ -21,12 +21,33 @@ constexpr VkDeviceSize kZero = 0;
 size_t surfaceSlot(const Frame& f) { return surfaceIndex(f.plan.variant, f.plan.levels, f.varyings); }
 size_t overlaySlot(const Frame& f) { return overlayIndex(f.plan.variant, f.plan.levels); }
 
+// The windows through `full` (the plan's control shader), but for windows culled on the CPU
+// (render/scene/view_culling.hpp): those wholly inside through `fixed`, the rest through `full`,
+// those outside not at all. `merged`: windows merged blocks draw instead (may be null).
+void recordWindows(Frame& f, VkPipeline full, VkPipeline fixed, gpu::DrawPush push, const std::vector<uint8_t>* merged) {
+    const auto& m = f.m;
+    if (f.plan.skipTested.empty()) {
+        vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, full);
+        f.stats.draws += recordSurfaceDraws(f.cmd, f.pipes.layout, m.scene, f.plan.perDraw, push, f.plan.bounds(), f.plan.budget, merged);
+        return;
+    }
+    if (f.plan.windowsInside > 0) {
+        vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fixed);
+        f.stats.draws +=
+            recordSurfaceDraws(f.cmd, f.pipes.layout, m.scene, f.plan.perDraw, push, f.plan.bounds(), f.plan.budget, &f.plan.skipInside);
+    }
+    vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, full);
+    f.stats.draws +=
+        recordSurfaceDraws(f.cmd, f.pipes.layout, m.scene, f.plan.perDraw, push, f.plan.bounds(), f.plan.budget, &f.plan.skipTested);
+}
+
 // Windows (and the Bézier triangles after them) through the family's pipelines at `slot`.
 void recordPatches(Frame& f, const std::array<LazyPipeline, kSpacingVariants * kLevelsVariants>& windows,
                    const std::array<LazyPipeline, kSpacingVariants * kLevelsVariants>& triangles, gpu::DrawPush push) {
     const auto& m = f.m;
-    vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, windows[overlaySlot(f)]);
-    f.stats.draws += recordSurfaceDraws(f.cmd, f.pipes.layout, m.scene, f.plan.perDraw, push, f.plan.bounds(), f.plan.budget);
+    const VkPipeline fixed =
+        f.plan.windowsInside > 0 ? VkPipeline(windows[overlayIndex(f.plan.variant, LevelsVariant::Fixed)]) : VK_NULL_HANDLE;
+    recordWindows(f, windows[overlaySlot(f)], fixed, push, nullptr);
     if (m.scene.triangleCount && triangles[overlaySlot(f)]) {
         vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, triangles[overlaySlot(f)]);
         f.stats.draws += recordTriangleDraws(f.cmd, f.pipes.layout, m.scene, f.plan.perDraw, push);
@@ -220,9 +241,11 @@ void FramePasses::surface(Frame& f) {
     }
     const MergedBlocks& merged = f.plan.merged;
     f.stats.cullTestSkipped = f.plan.cullTestSkipped;
-    vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, f.fam.surface[surfaceSlot(f)]);
-    f.stats.draws = recordSurfaceDraws(f.cmd, f.pipes.layout, m.scene, f.plan.perDraw, f.push, f.plan.bounds(), f.plan.budget,
-                                       merged.windows ? &merged.merged : nullptr);
+    const VkPipeline fixed = f.plan.windowsInside > 0
+                                 ? VkPipeline(f.fam.surface[surfaceIndex(f.plan.variant, LevelsVariant::Fixed, f.varyings)])
+                                 : VK_NULL_HANDLE;
+    f.stats.draws = 0;
+    recordWindows(f, f.fam.surface[surfaceSlot(f)], fixed, f.push, merged.windows ? &merged.merged : nullptr);
     f.stats.patches = m.scene.windowCount;
     if (merged.windows) {  // windows at one level, several to a patch
         vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, f.pipes.merged);

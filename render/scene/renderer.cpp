@@ -22,6 +22,7 @@
 #include "render/scene/shader_variants.hpp"
 #include "render/scene/surface_scene.hpp"
 #include "render/scene/triangle_draws.hpp"
+#include "render/scene/view_culling.hpp"
 #include "render/vk/buffers.hpp"
 #include "render/vk/vk_owned.hpp"
 
@@ -48,25 +49,6 @@ VkRect2D paneRect(const RenderOptions& opt, VkExtent2D extent) {
 }
 
 namespace {
-
-// Every point inside the frustum of viewProj (core/gpu/patch_math.h frustumPlane), with a little
-// room for the control shader's float rounding: the box of the points, its corner nearest each
-// plane's outside. True for no points.
-bool insideFrustum(const std::vector<glm::vec3>& points, const glm::mat4& viewProj) {
-    if (points.empty()) return true;
-    glm::vec3 lo = points[0], hi = points[0];
-    for (const glm::vec3& p : points) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
-    const float extent = glm::length(hi - lo) + glm::length(hi + lo);
-    for (int k = 0; k < 6; ++k) {
-        const glm::vec4 plane = gpu::frustumPlane(viewProj, k);
-        const glm::vec3 nearest(plane.x >= 0 ? lo.x : hi.x, plane.y >= 0 ? lo.y : hi.y, plane.z >= 0 ? lo.z : hi.z);
-        if (glm::dot(plane, glm::vec4(nearest, 1.0f)) < 1e-5f * glm::length(glm::vec3(plane)) * extent) return false;
-    }
-    return true;
-}
 
 void writeDescriptors(Device& dev, VkDescriptorSet set, const Buffer& ubo, const Buffer& patches, const Buffer& counters,
                       const HeightTexture& height, const std::array<const Buffer*, 3>& merged) {
@@ -267,8 +249,10 @@ Renderer::FramePlan Renderer::prepareFrame(const RenderOptions& opt, VkRect2D ar
     // Uniform levels whose only culling is off-screen, with every control point inside the deciding
     // camera's frustum: no patch can be culled, so the control shader without the per-patch test
     // draws the same frame (the framed model, the usual view; on an H200 the test cost grid128 ~5 %).
-    if (plan.levels == LevelsVariant::Full && ts.adaptive == AdaptiveMode::None && !ts.cullBackfaces && !m.displaced &&
-        insideFrustum(m.scene.cpuPoints, lod.viewProj)) {
+    const bool fixedAllowed = ts.adaptive == AdaptiveMode::None && !ts.cullBackfaces;
+    const bool cpuCulling = plan.levels == LevelsVariant::Full && ts.cullOffscreen && !m.displaced && !opt.lodCamera;
+    const bool wholeInside = cpuCulling && insideFrustum(m.scene.cpuPoints, lod.viewProj);
+    if (wholeInside && fixedAllowed) {
         plan.levels = LevelsVariant::Fixed;
         plan.cullTestSkipped = true;
     }
@@ -286,6 +270,17 @@ Renderer::FramePlan Renderer::prepareFrame(const RenderOptions& opt, VkRect2D ar
         plan.merged = planMergedBlocks(m.scene, uniform, ts, lod, float(dev_.caps().maxTessLevel), dev_.caps().fixedPointTessellator);
         if (!plan.merged.blocks.empty())
             std::memcpy(m.blocks.mapped, plan.merged.blocks.data(), sizeof(glm::uvec4) * plan.merged.blocks.size());
+    }
+    // The frustum cuts the scene: windows wholly outside are not drawn, wholly inside ones skip the
+    // per-patch test (uniform levels), only the rest run it (render/scene/view_culling.hpp).
+    if (cpuCulling && !wholeInside && m.scene.windowCount > 0) {
+        WindowCulling c = classifyWindows(m.scene, lod.viewProj, fixedAllowed, plan.merged.windows ? &plan.merged.merged : nullptr);
+        if (c.outside > 0 || c.inside > 0) {
+            plan.windowsCulled = c.outside;
+            plan.windowsInside = c.inside;
+            plan.skipTested = std::move(c.skipTested);
+            plan.skipInside = std::move(c.skipInside);
+        }
     }
     return plan;
 }
@@ -365,7 +360,7 @@ FrameStats Renderer::render(const RenderOptions& opt) {
     m.queries->read(stats);
     if (dev_.caps().storesAndAtomics) {
         const auto* c = static_cast<const uint32_t*>(m.counters.mapped);
-        stats.patchesCulled = c[0];
+        stats.patchesCulled = c[0] + plan.windowsCulled;
         stats.displacedEdges = c[1];
         stats.displacementLevel = c[2];
     }

@@ -76,6 +76,11 @@ struct Renderer::FramePlan {
     int variant = 0;  // spacing variant
     LevelsVariant levels = LevelsVariant::Fixed;
     bool cullTestSkipped = false;  // FrameStats::cullTestSkipped
+    // Windows culled on the CPU (render/scene/view_culling.hpp): when not empty, the windows go in
+    // two draws, the fixed-level control shader for those wholly inside (skipInside 0) and the full
+    // one for those near a plane (skipTested 0); windows wholly outside are in neither.
+    std::vector<uint8_t> skipTested, skipInside;
+    uint32_t windowsCulled = 0, windowsInside = 0;
     float maxLevel = 64.0f;
     uint32_t budget = 0, perDraw = 1;   // evaluation vertices per draw (0: no limit), windows per draw
     std::vector<uint8_t> levelBounds;   // adaptive: batch by this frame's levels, not by the worst case

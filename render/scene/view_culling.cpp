@@ -1,0 +1,62 @@
+#include "render/scene/view_culling.hpp"
+
+#include <glm/geometric.hpp>
+
+#include "core/gpu/patch_math.h"
+
+namespace pw::render {
+inline namespace scene {
+
+bool insideFrustum(const std::vector<glm::vec3>& points, const glm::mat4& viewProj) {
+    if (points.empty()) return true;
+    glm::vec3 lo = points[0], hi = points[0];
+    for (const glm::vec3& p : points) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    const float extent = glm::length(hi - lo) + glm::length(hi + lo);
+    for (int k = 0; k < 6; ++k) {
+        const glm::vec4 plane = gpu::frustumPlane(viewProj, k);
+        const glm::vec3 nearest(plane.x >= 0 ? lo.x : hi.x, plane.y >= 0 ? lo.y : hi.y, plane.z >= 0 ? lo.z : hi.z);
+        if (glm::dot(plane, glm::vec4(nearest, 1.0f)) < 1e-5f * glm::length(glm::vec3(plane)) * extent) return false;
+    }
+    return true;
+}
+
+WindowCulling classifyWindows(const SurfaceScene& s, const glm::mat4& viewProj, bool fixedAllowed, const std::vector<uint8_t>* merged) {
+    WindowCulling c;
+    c.skipTested.assign(s.windowCount, 1);
+    c.skipInside.assign(s.windowCount, 1);
+    glm::vec4 planes[6];
+    float pad[6];
+    for (int k = 0; k < 6; ++k) {
+        planes[k] = gpu::frustumPlane(viewProj, k);
+        pad[k] = 1e-4f * glm::length(glm::vec3(planes[k]));  // near a plane: the control shader decides
+    }
+    for (uint32_t w = 0; w < s.windowCount; ++w) {
+        if (merged && (*merged)[w]) continue;
+        const uint32_t* idx = &s.cpuIndices[size_t(w) * 16];
+        bool out = false, in = true;
+        for (int k = 0; k < 6 && !out; ++k) {
+            bool allOut = true;
+            for (int i = 0; i < 16; ++i) {
+                const float d = glm::dot(planes[k], glm::vec4(s.cpuPoints[idx[i]], 1.0f));
+                allOut = allOut && d < -pad[k];
+                in = in && d > pad[k];
+            }
+            out = allOut;
+        }
+        if (out) {
+            ++c.outside;  // every control point outside one plane: the control shader would cull it
+        } else if (in && fixedAllowed) {
+            ++c.inside;
+            c.skipInside[w] = 0;
+        } else {
+            c.skipTested[w] = 0;
+        }
+    }
+    return c;
+}
+
+}  // namespace scene
+}  // namespace pw::render
