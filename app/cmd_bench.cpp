@@ -61,7 +61,7 @@ struct Scene {
     std::string comparedTo;  // adaptive: the uniform scene with the same view
     bool terrain = false;    // the terrain's own table (runTerrain), only when named
     std::string path;        // --file: a document measured with its own settings (levels, adaptivity, camera, display)
-    bool corner = false;     // the camera aimed at the model's corner: three quarters of it off screen (culling on the CPU)
+    bool corner = false;     // the camera aimed at the model's corner: about half of it off screen (culling on the CPU)
 };
 
 std::vector<Scene> allScenes() {
@@ -407,7 +407,7 @@ void registerBenchCommand(CLI::App& app, Action& run) {
     cmd->add_option(
         "--scene", a->scenes,
         "Scene(s) to run: teapot16, teapot64, grid32, grid32-adaptive8px, grid64-adaptive8px, grid128, grid64-corner (aimed at its corner: "
-        "three quarters off screen), terrain (only when named: "
+        "about half off screen), terrain (only when named: "
         "near and far, culling off and on)");
     cmd->add_option("--json", a->json, "Write the results as JSON");
     cmd->add_option("--device", a->device, "Vulkan device: substring of its name");

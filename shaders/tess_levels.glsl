@@ -37,17 +37,21 @@ float displacementMargin(PatchData pd) {
     return max(abs(sb.y), abs(sb.x + sb.y));
 }
 
-// The map's detail along edge e at mip level `lod` (0..8, fractional between levels): level 0's
-// `detail` times the stored fraction of each level (PatchData coarserDetail).
+// The map's detail along edge e at mip level `level` (0..8): level 0's `detail` times the stored
+// fraction of that level (PatchData coarserDetail).
 float detailAtLevel(PatchData pd, int e, int level) {
     if (level <= 0) return pd.detail[e];
     level = min(level, kHeightDetailLevels);
     vec2 pair = unpackHalf2x16(pd.coarserDetail[e][(level - 1) / 2]);
     return pd.detail[e] * ((level & 1) == 1 ? pair.x : pair.y);
 }
+// ... and at a fractional level, between the two levels round it. Precise, like every step of an
+// edge's level: the quad and triangle control shaders are separate modules and must agree.
 float detailAtLod(PatchData pd, int e, float lod) {
     int level = int(floor(lod));
-    return mix(detailAtLevel(pd, e, level), detailAtLevel(pd, e, level + 1), lod - float(level));
+    precise float f = lod - float(level);
+    precise float d = mix(detailAtLevel(pd, e, level), detailAtLevel(pd, e, level + 1), f);
+    return d;
 }
 
 // Edge level `level` raised for the height map's detail along edge e (core/gpu/patch_math.h
@@ -61,9 +65,9 @@ float raiseForDisplacement(float level, vec3 p[4], int e, PatchData pd) {
     float pxPerUnit = pixelsPerUnit(frame.lodViewProj, 0.5 * (p[0] + p[3]), frame.viewport.y);
     if (pxPerUnit <= 0.0) return level;
     float lod = heightMapLod(frame.heightLod.x, pxPerUnit, frame.heightLod.y);
-    float d = min(displacementEdgeLevel(detailAtLod(pd, e, lod) * abs(displacementScaleBias(pd).x), pd.texels[e] * exp2(-lod),
-                                        pxPerUnit, kDisplacementTolerancePx),
-                  frame.inner.z);
+    precise float scaled = detailAtLod(pd, e, lod) * abs(displacementScaleBias(pd).x);
+    precise float texels = pd.texels[e] * exp2(-lod);
+    precise float d = min(displacementEdgeLevel(scaled, texels, pxPerUnit, kDisplacementTolerancePx), frame.inner.z);
     if (d > level && draw.drawMode == kDrawShaded) {
         atomicAdd(counters.displacedEdges, 1u);
         atomicMax(counters.displacementLevel, uint(ceil(d)));

@@ -257,6 +257,9 @@ TEST_F(RenderStats, OffscreenCullingSkipsTheTestWhereNothingCanBeCulledAndCullsW
     EXPECT_GT(corner.stats.patchesCulled, 0u);
     EXPECT_LT(corner.stats.triangles(), framed.stats.triangles());
     EXPECT_EQ(countDifferent(corner.image, cornerAll.image), 0u);
+    render::RenderOptions wired = o, wiredAll = all;  // the wire overlay: one draw in window order, culled windows left out
+    wired.display.showWireframe = wiredAll.display.showWireframe = true;
+    EXPECT_EQ(countDifferent(off.render(wired).image, off.render(wiredAll).image), 0u);
     if (corner.stats.pipelineStatsValid) {
         EXPECT_EQ(corner.stats.tcsPatches + corner.stats.patchesCulled, 64u);
     }

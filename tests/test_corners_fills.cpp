@@ -260,7 +260,7 @@ TEST(FillHole, AHoleWhoseSidesRatiosDisagreeIsRefusedSayingWhatToMatch) {
         EXPECT_NE(why.find("same tangent ratio"), std::string::npos) << why;
         // Which sides, numbered as given, and the ratios their two ends ask for.
         EXPECT_NE(why.find("and here side "), std::string::npos) << why;
-        EXPECT_NE(why.find(" at its start and "), std::string::npos) << why;
+        EXPECT_NE(why.find(" at its corner with side "), std::string::npos) << why;
     }
     EXPECT_EQ(s.doc, before);
 }

@@ -105,7 +105,7 @@ double mapTexelsPerUnit(const Document& doc, const std::vector<PatchInstance>& w
         const std::array<double, 4> rect = planarRect(doc);
         return std::max(map->width / rect[2], map->height / rect[3]);
     }
-    double most = 0.0;
+    double least = 0.0;  // 0: none yet
     // Texels `texels` over the length of the polyline through `at` at 9 parameters.
     auto along = [&](double texels, auto&& at) {
         double len = 0.0;
@@ -115,7 +115,7 @@ double mapTexelsPerUnit(const Document& doc, const std::vector<PatchInstance>& w
             len += length(q - prev);
             prev = q;
         }
-        if (len > 0.0) most = std::max(most, texels / len);
+        if (len > 0.0 && texels > 0.0) least = least > 0.0 ? std::min(least, texels / len) : texels / len;
     };
     for (const PatchInstance& pi : windows) {
         const WindowNet net = gatherWindow(doc, pi.idx);
@@ -142,7 +142,7 @@ double mapTexelsPerUnit(const Document& doc, const std::vector<PatchInstance>& w
                        s * s * s * doc.points[key[3]];
             });
         }
-    return most;
+    return least;
 }
 
 std::vector<WindowDisplacement> windowDisplacements(const Document& doc, const std::vector<PatchInstance>& windows, const HeightMap* map) {

@@ -39,9 +39,10 @@ EdgeDetail edgeDetail(const HeightMap& map, const std::vector<std::array<double,
 // The same with `coarser` filled from `mips` (heightMipChain(map, 8)).
 EdgeDetail edgeDetail(const HeightMap& map, const std::vector<HeightMap>& mips, const std::vector<std::array<double, 2>>& uvs);
 
-// The map's texels per world unit, the finest anywhere on the model: exact under the planar
-// mapping; under the patch mapping the largest over the windows' edges of the texels they cross
-// per unit of their length. 0 without a map.
+// The map's texels per world unit: exact under the planar mapping; under the patch mapping the
+// least over the windows' edges of the texels they cross per unit of their length, so that no
+// window samples a coarser level than its view shows (denser windows keep some detail finer than a
+// pixel). 0 without a map.
 double mapTexelsPerUnit(const Document& doc, const std::vector<PatchInstance>& windows, const HeightMap* map);
 
 // What one window (or triangle) carries for displacement.

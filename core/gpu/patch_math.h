@@ -215,7 +215,7 @@ PW_FN float wireOpacity(float px) { return clamp(px / 8.0f, 0.0f, 1.0f); }
 // n = sqrt(detail * pxPerUnit / (8 tolPx)); never more segments than the texels the edge crosses.
 // From the edge's canonical points and its stored detail only, so both windows on it agree.
 PW_FN float displacementEdgeLevel(float detail, float texels, float pxPerUnit, float tolPx) {
-    float n = sqrt(max(detail * pxPerUnit, 0.0f) / (8.0f * max(tolPx, 1e-3f)));
+    PW_PRECISE float n = sqrt(max(detail * pxPerUnit, 0.0f) / (8.0f * max(tolPx, 1e-3f)));
     return min(n, max(texels, 1.0f));
 }
 PW_CONST float kDisplacementTolerancePx = 0.5f;

@@ -180,7 +180,8 @@ std::string ratioMismatch(const Document& doc, const std::vector<std::array<Seg,
         std::string label;
         for (const auto& [p, e] : sides[given[k]].edges) label += (label.empty() ? "" : "+") + edgeLabel(p, e);
         out += std::string(out.empty() ? "" : "; ") + "side " + std::to_string(given[k] + 1) + " (" + label + ") needs α " + fmt(*a) +
-               " at its start and " + fmt(*b) + " at its end";
+               " at its corner with side " + std::to_string(given[km] + 1) + " and " + fmt(*b) + " at its corner with side " +
+               std::to_string(given[kp] + 1);
     }
     return out;
 }
@@ -408,6 +409,8 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
         joinEdges(doc, a, ea, b, eb, Continuity::G1, &c);
         if (!c.empty()) corners += "; " + c;
     };
+    // (Measured before the joins: they move points, and may split patches to close a corner.)
+    const std::string which = ratioMismatch(doc, h, given, sides);
     try {
         for (size_t k = 0; k < n; ++k) {
             const size_t km = (k + n - 1) % n;
@@ -417,7 +420,6 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
     } catch (const EditError& e) {
         // Each side's fill seams continue the surroundings' seams at the hole corners and at the
         // side's middle, where their ratios must agree (DESIGN §14, corners).
-        const std::string which = ratioMismatch(doc, h, given, sides);
         throw EditError(std::string(e.what()) +
                         "; a fill holds G1 when the seams meeting each side at its two ends have the same tangent ratio α (as on a "
                         "box rounded by blends)" +

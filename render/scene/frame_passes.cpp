@@ -22,13 +22,21 @@ size_t surfaceSlot(const Frame& f) { return surfaceIndex(f.plan.variant, f.plan.
 size_t overlaySlot(const Frame& f) { return overlayIndex(f.plan.variant, f.plan.levels); }
 
 // The windows through `full` (the plan's control shader), but for windows culled on the CPU
-// (render/scene/view_culling.hpp): those wholly inside through `fixed`, the rest through `full`,
-// those outside not at all. `merged`: windows merged blocks draw instead (may be null).
+// (render/scene/view_culling.hpp): those outside not at all, and with `fixed` those wholly inside
+// through it first, then the rest through `full`. (The shaded surface only: each of its pixels
+// belongs to one triangle, so the order of the two draws cannot show; a wire's shared edges are
+// drawn by both windows and keep the one order.) `merged`: windows merged blocks draw instead (may be null).
 void recordWindows(Frame& f, VkPipeline full, VkPipeline fixed, gpu::DrawPush push, const std::vector<uint8_t>* merged) {
     const auto& m = f.m;
     if (f.plan.skipTested.empty()) {
         vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, full);
         f.stats.draws += recordSurfaceDraws(f.cmd, f.pipes.layout, m.scene, f.plan.perDraw, push, f.plan.bounds(), f.plan.budget, merged);
+        return;
+    }
+    if (fixed == VK_NULL_HANDLE) {
+        vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, full);
+        f.stats.draws +=
+            recordSurfaceDraws(f.cmd, f.pipes.layout, m.scene, f.plan.perDraw, push, f.plan.bounds(), f.plan.budget, &f.plan.skipCulled);
         return;
     }
     if (f.plan.windowsInside > 0) {
@@ -45,9 +53,7 @@ void recordWindows(Frame& f, VkPipeline full, VkPipeline fixed, gpu::DrawPush pu
 void recordPatches(Frame& f, const std::array<LazyPipeline, kSpacingVariants * kLevelsVariants>& windows,
                    const std::array<LazyPipeline, kSpacingVariants * kLevelsVariants>& triangles, gpu::DrawPush push) {
     const auto& m = f.m;
-    const VkPipeline fixed =
-        f.plan.windowsInside > 0 ? VkPipeline(windows[overlayIndex(f.plan.variant, LevelsVariant::Fixed)]) : VK_NULL_HANDLE;
-    recordWindows(f, windows[overlaySlot(f)], fixed, push, nullptr);
+    recordWindows(f, windows[overlaySlot(f)], VK_NULL_HANDLE, push, nullptr);
     if (m.scene.triangleCount && triangles[overlaySlot(f)]) {
         vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, triangles[overlaySlot(f)]);
         f.stats.draws += recordTriangleDraws(f.cmd, f.pipes.layout, m.scene, f.plan.perDraw, push);

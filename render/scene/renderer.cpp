@@ -228,7 +228,9 @@ Renderer::FramePlan Renderer::prepareFrame(const RenderOptions& opt, VkRect2D ar
     fu.sel = {opt.hoveredPoint >= 0 ? uint32_t(opt.hoveredPoint) : gpu::kNoPoint,
               opt.selectedPoint >= 0 ? uint32_t(opt.selectedPoint) : gpu::kNoPoint, m.scene.pointCount, 0u};
     fu.isoline = {ts.isolineLevels[0], ts.isolineLevels[1], 0.0f, 0.0f};
-    fu.displace = {opt.displacementScale, opt.displacementBias, m.displace.z, m.displace.w};
+    // Without a map nothing is displaced: no scale or bias, so the culling margin is 0 (as on the CPU).
+    fu.displace = m.displaced ? glm::vec4(opt.displacementScale, opt.displacementBias, m.displace.z, m.displace.w)
+                              : glm::vec4(0.0f, 0.0f, m.displace.z, m.displace.w);
     fu.planar = m.planar;
     // Band-limited displacement with adaptive levels that follow the map's detail (DESIGN §11).
     const bool bandLimit = m.displaced && ts.adaptive != AdaptiveMode::None && ts.heightDetail;
@@ -250,7 +252,8 @@ Renderer::FramePlan Renderer::prepareFrame(const RenderOptions& opt, VkRect2D ar
     // camera's frustum: no patch can be culled, so the control shader without the per-patch test
     // draws the same frame (the framed model, the usual view; on an H200 the test cost grid128 ~5 %).
     const bool fixedAllowed = ts.adaptive == AdaptiveMode::None && !ts.cullBackfaces;
-    const bool cpuCulling = plan.levels == LevelsVariant::Full && ts.cullOffscreen && !m.displaced && !opt.lodCamera;
+    const bool cpuCulling =
+        plan.levels == LevelsVariant::Full && ts.cullOffscreen && !m.displaced && !opt.lodCamera && !opt.plainMesh && !opt.rawTessellator;
     const bool wholeInside = cpuCulling && insideFrustum(m.scene.cpuPoints, lod.viewProj);
     if (wholeInside && fixedAllowed) {
         plan.levels = LevelsVariant::Fixed;
@@ -278,6 +281,8 @@ Renderer::FramePlan Renderer::prepareFrame(const RenderOptions& opt, VkRect2D ar
         if (c.outside > 0 || c.inside > 0) {
             plan.windowsCulled = c.outside;
             plan.windowsInside = c.inside;
+            plan.skipCulled.resize(c.skipTested.size());
+            for (size_t w = 0; w < c.skipTested.size(); ++w) plan.skipCulled[w] = c.skipTested[w] && c.skipInside[w];
             plan.skipTested = std::move(c.skipTested);
             plan.skipInside = std::move(c.skipInside);
         }

@@ -80,6 +80,7 @@ struct Renderer::FramePlan {
     // two draws, the fixed-level control shader for those wholly inside (skipInside 0) and the full
     // one for those near a plane (skipTested 0); windows wholly outside are in neither.
     std::vector<uint8_t> skipTested, skipInside;
+    std::vector<uint8_t> skipCulled;  // the overlays' one draw in window order: the culled windows (and merged) left out
     uint32_t windowsCulled = 0, windowsInside = 0;
     float maxLevel = 64.0f;
     uint32_t budget = 0, perDraw = 1;   // evaluation vertices per draw (0: no limit), windows per draw

@@ -27,7 +27,9 @@ std::string describe(const TessSettings& t) {
         for (size_t i = 0; i < on.size(); ++i) why += (i ? ", " : "") + on[i];
         why += ")";
         if (on.size() == 1 && t.cullOffscreen)  // render/scene/renderer.cpp prepareFrame
-            why += "; frames whose whole model is in view use the fixed-level control shader instead (nothing to cull)";
+            why +=
+                "; frames whose whole model is in view use the fixed-level control shader instead (nothing to cull), and "
+                "otherwise windows wholly in view do, windows wholly out of it are culled on the CPU";
     } else {
         why += "; control shader with fixed levels (uniform levels and per-patch overrides)";
     }

@@ -31,7 +31,8 @@ std::vector<gpu::PatchData> windowPatchData(const Document& doc, const std::vect
     for (size_t w = 0; w < pd.size() && w < disp.size(); ++w) {
         const WindowDisplacement& d = disp[w];
         pd[w].uvRect = {d.uvRect[0], d.uvRect[1], d.uvRect[2], d.uvRect[3]};
-        pd[w].disp = {d.own ? d.own->scale : 0.0f, d.own ? d.own->bias : 0.0f, d.own ? 1.0f : 0.0f, 0.0f};
+        const bool own = d.own && map && !map->empty();  // without a map nothing is displaced (no culling margin either)
+        pd[w].disp = {own ? d.own->scale : 0.0f, own ? d.own->bias : 0.0f, own ? 1.0f : 0.0f, 0.0f};
         pd[w].detail = {d.detail[0], d.detail[1], d.detail[2], d.detail[3]};
         pd[w].texels = {d.texels[0], d.texels[1], d.texels[2], d.texels[3]};
         for (int e = 0; e < 4; ++e)  // the coarser levels' detail as fractions of level 0's, two halves a word

@@ -1,5 +1,7 @@
 #include "render/scene/view_culling.hpp"
 
+#include <cmath>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "core/gpu/patch_math.h"
@@ -27,11 +29,20 @@ WindowCulling classifyWindows(const SurfaceScene& s, const glm::mat4& viewProj, 
     WindowCulling c;
     c.skipTested.assign(s.windowCount, 1);
     c.skipInside.assign(s.windowCount, 1);
+    // Near a plane, within what float rounding of the plane test may move (relative to the scene's
+    // coordinates and the plane's offset), the control shader decides.
+    glm::vec3 lo(0.0f), hi(0.0f);
+    if (!s.cpuPoints.empty()) lo = hi = s.cpuPoints[0];
+    for (const glm::vec3& p : s.cpuPoints) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    const float reach = glm::length(hi - lo) + glm::length(hi + lo);
     glm::vec4 planes[6];
     float pad[6];
     for (int k = 0; k < 6; ++k) {
         planes[k] = gpu::frustumPlane(viewProj, k);
-        pad[k] = 1e-4f * glm::length(glm::vec3(planes[k]));  // near a plane: the control shader decides
+        pad[k] = 1e-5f * (glm::length(glm::vec3(planes[k])) * reach + std::abs(planes[k].w));
     }
     for (uint32_t w = 0; w < s.windowCount; ++w) {
         if (merged && (*merged)[w]) continue;
