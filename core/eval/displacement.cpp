@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "core/eval/bezier_curve.hpp"
 #include "core/eval/bezier_triangle.hpp"
 #include "core/eval/rational_eval.hpp"
 #include "core/gpu/patch_math.h"
@@ -135,27 +136,26 @@ double mapTexelsPerUnit(const Document& doc, const std::vector<PatchInstance>& w
     for (const TrianglePatch& tri : doc.triangles)  // barycentric (u, v) over the map: edges cross the map's side or diagonal
         for (int e = 0; e < 3; ++e) {
             const std::array<uint32_t, 4> key = triEdgePool(tri.idx, e);
+            const std::array<Vec3, 4> p{doc.points[key[0]], doc.points[key[1]], doc.points[key[2]], doc.points[key[3]]};
             const double texels = e == 0 ? map->height : e == 1 ? map->width : std::hypot(map->width, map->height);
-            along(texels, [&](double s) {
-                const double a = 1 - s;
-                return a * a * a * doc.points[key[0]] + 3 * a * a * s * doc.points[key[1]] + 3 * a * s * s * doc.points[key[2]] +
-                       s * s * s * doc.points[key[3]];
-            });
+            along(texels, [&](double s) { return evaluateCurve(p, s); });
         }
     return least;
 }
 
-std::vector<WindowDisplacement> windowDisplacements(const Document& doc, const std::vector<PatchInstance>& windows, const HeightMap* map) {
+std::vector<WindowDisplacement> windowDisplacements(const Document& doc, const std::vector<PatchInstance>& windows, const HeightMap* map,
+                                                    const std::vector<HeightMap>* mips) {
     std::vector<WindowDisplacement> out(windows.size() + doc.triangles.size());
     const bool planar = doc.displacement.mapping == DisplacementMapping::Planar;
     const std::array<double, 4> rect = planarRect(doc);
     const bool zUp = doc.camera.zUp;
     std::map<std::array<uint32_t, 4>, EdgeDetail> shared;  // canonical pool points of an edge -> its detail
-    const std::vector<HeightMap> mips = map ? heightMipChain(*map, gpu::kHeightDetailLevels) : std::vector<HeightMap>{};
+    const std::vector<HeightMap> made = map && !mips ? heightMipChain(*map, gpu::kHeightDetailLevels) : std::vector<HeightMap>{};
+    const std::vector<HeightMap>& levels = mips ? *mips : made;
     auto detailOf = [&](std::array<uint32_t, 4> key, auto&& at) {
         if (edgeReversed(key)) key = reversedEdgePool(key);
         auto it = shared.find(key);
-        if (it == shared.end()) it = shared.emplace(key, edgeDetail(*map, mips, sampleEdge(*map, at))).first;
+        if (it == shared.end()) it = shared.emplace(key, edgeDetail(*map, levels, sampleEdge(*map, at))).first;
         return it->second;
     };
     auto store = [](WindowDisplacement& wd, int e, const EdgeDetail& d) {

@@ -55,7 +55,10 @@ struct WindowDisplacement {
 // Every window of expandPatches(doc) (`windows`), then every triangle. A shared edge gets the same
 // detail on both sides (computed once per edge, keyed by the pool points its levels come from), so
 // displacement-adaptive levels never open a crack. Without a map the details are zero.
-std::vector<WindowDisplacement> windowDisplacements(const Document& doc, const std::vector<PatchInstance>& windows, const HeightMap* map);
+// `mips`: the map's heightMipChain when the caller holds it already (the renderer's texture has it),
+// else made here.
+std::vector<WindowDisplacement> windowDisplacements(const Document& doc, const std::vector<PatchInstance>& windows, const HeightMap* map,
+                                                    const std::vector<HeightMap>* mips = nullptr);
 
 }  // namespace eval
 }  // namespace pw

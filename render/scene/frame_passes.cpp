@@ -22,8 +22,8 @@ size_t surfaceSlot(const Frame& f) { return surfaceIndex(f.plan.variant, f.plan.
 size_t overlaySlot(const Frame& f) { return overlayIndex(f.plan.variant, f.plan.levels); }
 
 // The windows through `full` (the plan's control shader), but for windows culled on the CPU
-// (render/scene/view_culling.hpp): those outside not at all, and with `fixed` those wholly inside
-// through it first, then the rest through `full`. (The shaded surface only: each of its pixels
+// (render/scene/view_culling.hpp): those outside not at all, and with `fixed` (given when some
+// windows are wholly inside) those through it first, then the rest through `full`. (The shaded surface only: each of its pixels
 // belongs to one triangle, so the order of the two draws cannot show; a wire's shared edges are
 // drawn by both windows and keep the one order.) `merged`: windows merged blocks draw instead (may be null).
 void recordWindows(Frame& f, VkPipeline full, VkPipeline fixed, gpu::DrawPush push, const std::vector<uint8_t>* merged) {
@@ -39,11 +39,9 @@ void recordWindows(Frame& f, VkPipeline full, VkPipeline fixed, gpu::DrawPush pu
             recordSurfaceDraws(f.cmd, f.pipes.layout, m.scene, f.plan.perDraw, push, f.plan.bounds(), f.plan.budget, &f.plan.skipCulled);
         return;
     }
-    if (f.plan.windowsInside > 0) {
-        vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fixed);
-        f.stats.draws +=
-            recordSurfaceDraws(f.cmd, f.pipes.layout, m.scene, f.plan.perDraw, push, f.plan.bounds(), f.plan.budget, &f.plan.skipInside);
-    }
+    vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, fixed);
+    f.stats.draws +=
+        recordSurfaceDraws(f.cmd, f.pipes.layout, m.scene, f.plan.perDraw, push, f.plan.bounds(), f.plan.budget, &f.plan.skipInside);
     vkCmdBindPipeline(f.cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, full);
     f.stats.draws +=
         recordSurfaceDraws(f.cmd, f.pipes.layout, m.scene, f.plan.perDraw, push, f.plan.bounds(), f.plan.budget, &f.plan.skipTested);

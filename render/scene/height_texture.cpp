@@ -8,7 +8,7 @@
 namespace pw::render {
 inline namespace scene {
 
-HeightTexture uploadHeightTexture(Device& dev, const HeightMap* map) {
+HeightTexture uploadHeightTexture(Device& dev, const HeightMap* map, const std::vector<HeightMap>& mips) {
     HeightTexture t;
     const bool real = map && !map->empty();
     HeightMap zero;
@@ -19,9 +19,9 @@ HeightTexture uploadHeightTexture(Device& dev, const HeightMap* map) {
     t.height = base.height;
     // Level 0 and the CPU's own mip levels (core/model/height_map.hpp heightMipChain), all of them
     // down to 1 x 1, one after the other in the staging buffer.
-    const std::vector<HeightMap> mips = heightMipChain(base, 32);
     std::vector<const HeightMap*> levels{&base};
-    for (const HeightMap& m : mips) levels.push_back(&m);
+    if (real)
+        for (const HeightMap& m : mips) levels.push_back(&m);
     t.levels = uint32_t(levels.size());
     size_t bytes = 0;
     for (const HeightMap* m : levels) bytes += m->texels.size() * sizeof(uint16_t);

@@ -17,7 +17,8 @@ struct HeightTexture {
     uint32_t levels = 1;  // mip levels, down to 1 x 1
 };
 
-HeightTexture uploadHeightTexture(Device& dev, const HeightMap* map);
+// `mips`: heightMipChain(*map, …) down to 1 x 1 (empty without a map).
+HeightTexture uploadHeightTexture(Device& dev, const HeightMap* map, const std::vector<HeightMap>& mips);
 
 }  // namespace scene
 }  // namespace pw::render

@@ -82,7 +82,7 @@ Renderer::Renderer(Device& dev, RenderTarget& target) : dev_(dev), target_(targe
     std::memset(m.counters.mapped, 0, 16);
     m.scene.patchData = uploadStatic(dev, std::vector<gpu::PatchData>(1), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
 
-    m.height = uploadHeightTexture(dev, nullptr);
+    m.height = uploadHeightTexture(dev, nullptr, {});
     m.placeholder = uploadStatic(dev, std::vector<uint32_t>(4, 0u), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     VkDescriptorPoolSize sizes[3] = {
         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5}, {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
@@ -115,11 +115,12 @@ void Renderer::setDocument(const Document& doc, std::shared_ptr<const HeightMap>
     const DisplacementSettings& ds = doc.displacement;
     if (!ds.active() || (map && map->empty())) map.reset();
     if (map != m.map) {
-        m.height = uploadHeightTexture(dev_, map.get());
+        m.mips = map ? heightMipChain(*map, 32) : std::vector<HeightMap>{};  // the texture's levels and the edges' detail
+        m.height = uploadHeightTexture(dev_, map.get(), m.mips);
         m.map = map;
     }
     m.displaced = bool(m.map);
-    m.scene = uploadSurfaceScene(dev_, doc, m.map.get());
+    m.scene = uploadSurfaceScene(dev_, doc, m.map.get(), &m.mips);
     m.windows = expandPatches(doc);
     m.overlays = uploadOverlayScene(dev_, doc);
     m.joins = doc.joins;
@@ -170,7 +171,7 @@ void Renderer::updateLevels(const Document& doc) {
     const std::vector<PatchInstance> inst = expandPatches(doc);
     if (inst.size() != m.scene.windowCount || doc.triangles.size() != m.scene.triangleCount || doc.points.size() != m.scene.pointCount)
         return setDocument(doc, m.map);
-    const std::vector<gpu::PatchData> pd = windowPatchData(doc, inst, m.map.get(), m.scene);
+    const std::vector<gpu::PatchData> pd = windowPatchData(doc, inst, m.map.get(), &m.mips, m.scene);
     const VkDeviceSize bytes = sizeof(gpu::PatchData) * pd.size();
     if (m.scene.patchData.mapped && bytes > 0) {  // the previous frame has completed (render waits for it)
         std::memcpy(m.scene.patchData.mapped, pd.data(), bytes);
@@ -254,7 +255,8 @@ Renderer::FramePlan Renderer::prepareFrame(const RenderOptions& opt, VkRect2D ar
     const bool fixedAllowed = ts.adaptive == AdaptiveMode::None && !ts.cullBackfaces;
     const bool cpuCulling =
         plan.levels == LevelsVariant::Full && ts.cullOffscreen && !m.displaced && !opt.lodCamera && !opt.plainMesh && !opt.rawTessellator;
-    const bool wholeInside = cpuCulling && insideFrustum(m.scene.cpuPoints, lod.viewProj);
+    const PointsBox box = cpuCulling ? pointsBox(m.scene.cpuPoints) : PointsBox{};
+    const bool wholeInside = cpuCulling && insideFrustum(box, lod.viewProj);
     if (wholeInside && fixedAllowed) {
         plan.levels = LevelsVariant::Fixed;
         plan.cullTestSkipped = true;
@@ -277,14 +279,13 @@ Renderer::FramePlan Renderer::prepareFrame(const RenderOptions& opt, VkRect2D ar
     // The frustum cuts the scene: windows wholly outside are not drawn, wholly inside ones skip the
     // per-patch test (uniform levels), only the rest run it (render/scene/view_culling.hpp).
     if (cpuCulling && !wholeInside && m.scene.windowCount > 0) {
-        WindowCulling c = classifyWindows(m.scene, lod.viewProj, fixedAllowed, plan.merged.windows ? &plan.merged.merged : nullptr);
+        WindowCulling c = classifyWindows(m.scene, box, lod.viewProj, fixedAllowed, plan.merged.windows ? &plan.merged.merged : nullptr);
         if (c.outside > 0 || c.inside > 0) {
             plan.windowsCulled = c.outside;
             plan.windowsInside = c.inside;
-            plan.skipCulled.resize(c.skipTested.size());
-            for (size_t w = 0; w < c.skipTested.size(); ++w) plan.skipCulled[w] = c.skipTested[w] && c.skipInside[w];
             plan.skipTested = std::move(c.skipTested);
             plan.skipInside = std::move(c.skipInside);
+            plan.skipCulled = std::move(c.skipCulled);
         }
     }
     return plan;

@@ -47,6 +47,7 @@ struct Renderer::Impl {
     // frame uniforms' displace and planar vectors, all from the last setDocument.
     std::shared_ptr<const HeightMap> map;
     HeightTexture height;
+    std::vector<HeightMap> mips;  // the map's mip levels (core/model/height_map.hpp heightMipChain), made once per map
     bool displaced = false;
     glm::vec4 displace{0.0f}, planar{0.0f};
     glm::vec4 heightLod{0.0f};  // the frame's heightLod when band limiting is on (core/gpu/gpu_interface.h)

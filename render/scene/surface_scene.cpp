@@ -21,13 +21,13 @@ glm::mat4 basisPushMatrix(Basis basis, double tension) {
 }
 
 std::vector<gpu::PatchData> windowPatchData(const Document& doc, const std::vector<PatchInstance>& inst, const HeightMap* map,
-                                            SurfaceScene& s) {
+                                            const std::vector<HeightMap>* mips, SurfaceScene& s) {
     // Per window, then per triangle: the levels of the shared-edge rule (core/tess/edge_levels.hpp).
     const std::vector<WindowLevels> levels = resolveEdgeLevels(doc, inst);
     std::vector<gpu::PatchData> pd(levels.size());
     s.overrideLevel.assign(inst.size(), 0.0f);
     s.overrideMax = 0.0f;
-    const std::vector<WindowDisplacement> disp = windowDisplacements(doc, inst, map);
+    const std::vector<WindowDisplacement> disp = windowDisplacements(doc, inst, map, mips);
     for (size_t w = 0; w < pd.size() && w < disp.size(); ++w) {
         const WindowDisplacement& d = disp[w];
         pd[w].uvRect = {d.uvRect[0], d.uvRect[1], d.uvRect[2], d.uvRect[3]};
@@ -57,7 +57,7 @@ std::vector<gpu::PatchData> windowPatchData(const Document& doc, const std::vect
     return pd;
 }
 
-SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc, const HeightMap* map) {
+SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc, const HeightMap* map, const std::vector<HeightMap>* mips) {
     SurfaceScene s;
     std::vector<float> pts;
     pts.reserve(doc.points.size() * 4);
@@ -68,7 +68,7 @@ SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc, const HeightMa
     const std::vector<PatchInstance> inst = expandPatches(doc);
     std::vector<uint32_t> idx;
     idx.reserve(inst.size() * 16);
-    const std::vector<gpu::PatchData> pd = windowPatchData(doc, inst, map, s);
+    const std::vector<gpu::PatchData> pd = windowPatchData(doc, inst, map, mips, s);
     for (size_t w = 0; w < inst.size(); ++w) {
         const PatchInstance& pi = inst[w];
         idx.insert(idx.end(), pi.idx.begin(), pi.idx.end());

@@ -56,10 +56,12 @@ struct SurfaceScene {
 // (core/tess/edge_levels.hpp) and its displacement, as the control shaders read them; sets the
 // scene's overrideLevel and overrideMax. `inst`: expandPatches(doc).
 std::vector<gpu::PatchData> windowPatchData(const Document& doc, const std::vector<PatchInstance>& inst, const HeightMap* map,
-                                            SurfaceScene& s);
+                                            const std::vector<HeightMap>* mips, SurfaceScene& s);
 
 // `map`: the height map whose detail per edge goes into the patch data (displacement-adaptive levels).
-SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc, const HeightMap* map = nullptr);
+// `mips`: the map's heightMipChain when the caller holds it (else made for the map's detail).
+SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc, const HeightMap* map = nullptr,
+                                const std::vector<HeightMap>* mips = nullptr);
 
 // Binds pool + index buffers and issues the draws, at most `perDraw` windows per vkCmdDrawIndexed,
 // or, with `levels` (per-window segment bounds) and a non-zero `vertexBudget`, as many windows as

@@ -9,35 +9,40 @@
 namespace pw::render {
 inline namespace scene {
 
-bool insideFrustum(const std::vector<glm::vec3>& points, const glm::mat4& viewProj) {
-    if (points.empty()) return true;
-    glm::vec3 lo = points[0], hi = points[0];
+PointsBox pointsBox(const std::vector<glm::vec3>& points) {
+    PointsBox b;
+    if (points.empty()) return b;
+    b.lo = b.hi = points[0];
+    b.empty = false;
     for (const glm::vec3& p : points) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
+        b.lo = glm::min(b.lo, p);
+        b.hi = glm::max(b.hi, p);
     }
-    const float extent = glm::length(hi - lo) + glm::length(hi + lo);
+    return b;
+}
+
+float PointsBox::reach() const { return glm::length(hi - lo) + glm::length(hi + lo); }
+
+bool insideFrustum(const PointsBox& box, const glm::mat4& viewProj) {
+    if (box.empty) return true;
+    const float extent = box.reach();
     for (int k = 0; k < 6; ++k) {
         const glm::vec4 plane = gpu::frustumPlane(viewProj, k);
-        const glm::vec3 nearest(plane.x >= 0 ? lo.x : hi.x, plane.y >= 0 ? lo.y : hi.y, plane.z >= 0 ? lo.z : hi.z);
+        const glm::vec3 nearest(plane.x >= 0 ? box.lo.x : box.hi.x, plane.y >= 0 ? box.lo.y : box.hi.y, plane.z >= 0 ? box.lo.z : box.hi.z);
         if (glm::dot(plane, glm::vec4(nearest, 1.0f)) < 1e-5f * glm::length(glm::vec3(plane)) * extent) return false;
     }
     return true;
 }
 
-WindowCulling classifyWindows(const SurfaceScene& s, const glm::mat4& viewProj, bool fixedAllowed, const std::vector<uint8_t>* merged) {
+WindowCulling classifyWindows(const SurfaceScene& s, const PointsBox& box, const glm::mat4& viewProj, bool fixedAllowed,
+                              const std::vector<uint8_t>* merged) {
     WindowCulling c;
     c.skipTested.assign(s.windowCount, 1);
     c.skipInside.assign(s.windowCount, 1);
+    c.skipCulled.assign(s.windowCount, 1);
     // Near a plane, within what float rounding of the plane test may move (relative to the scene's
     // coordinates and the plane's offset), the control shader decides.
-    glm::vec3 lo(0.0f), hi(0.0f);
-    if (!s.cpuPoints.empty()) lo = hi = s.cpuPoints[0];
-    for (const glm::vec3& p : s.cpuPoints) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
-    const float reach = glm::length(hi - lo) + glm::length(hi + lo);
+    const float reach = box.reach();
     glm::vec4 planes[6];
     float pad[6];
     for (int k = 0; k < 6; ++k) {
@@ -61,9 +66,9 @@ WindowCulling classifyWindows(const SurfaceScene& s, const glm::mat4& viewProj, 
             ++c.outside;  // every control point outside one plane: the control shader would cull it
         } else if (in && fixedAllowed) {
             ++c.inside;
-            c.skipInside[w] = 0;
+            c.skipInside[w] = c.skipCulled[w] = 0;
         } else {
-            c.skipTested[w] = 0;
+            c.skipTested[w] = c.skipCulled[w] = 0;
         }
     }
     return c;

@@ -16,20 +16,30 @@
 namespace pw::render {
 inline namespace scene {
 
-// Every point inside the frustum of viewProj, with room for the control shader's float rounding:
-// the box of the points, its corner nearest each plane's outside. True for no points.
-bool insideFrustum(const std::vector<glm::vec3>& points, const glm::mat4& viewProj);
+// The box of a scene's points, computed once a frame for both tests below.
+struct PointsBox {
+    glm::vec3 lo{0.0f}, hi{0.0f};
+    bool empty = true;
+    float reach() const;  // how far from the origin its coordinates go (the scale of the plane tests' rounding)
+};
+PointsBox pointsBox(const std::vector<glm::vec3>& points);
 
-// The windows of s as the frustum of viewProj sees them, for the two draws of a frame: `tested`
-// marks (1) the windows the per-patch test need not draw, `inside` those the fixed-level draw need
-// not (all but the wholly inside ones; every window when `fixedAllowed` is false: levels or culling
-// other than uniform and off-screen need the full control shader). Windows already drawn by merged
-// blocks (`merged`, may be null) are in neither draw.
+// Every point of the box inside the frustum of viewProj, with room for the control shader's float
+// rounding: the box's corner nearest each plane's outside. True for an empty box.
+bool insideFrustum(const PointsBox& box, const glm::mat4& viewProj);
+
+// The windows of s (whose points' box is `box`) as the frustum of viewProj sees them, for the two
+// draws of a frame: `skipTested` marks (1) the windows the per-patch test need not draw,
+// `skipInside` those the fixed-level draw need not (all but the wholly inside ones; every window
+// when `fixedAllowed` is false: levels or culling other than uniform and off-screen need the full
+// control shader), `skipCulled` those one draw of every window need not (the culled ones). Windows
+// already drawn by merged blocks (`merged`, may be null) are in no draw.
 struct WindowCulling {
-    std::vector<uint8_t> skipTested, skipInside;
+    std::vector<uint8_t> skipTested, skipInside, skipCulled;
     uint32_t outside = 0, inside = 0;  // windows wholly outside (not drawn) and wholly inside
 };
-WindowCulling classifyWindows(const SurfaceScene& s, const glm::mat4& viewProj, bool fixedAllowed, const std::vector<uint8_t>* merged);
+WindowCulling classifyWindows(const SurfaceScene& s, const PointsBox& box, const glm::mat4& viewProj, bool fixedAllowed,
+                              const std::vector<uint8_t>* merged);
 
 }  // namespace scene
 }  // namespace pw::render
