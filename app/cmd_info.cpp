@@ -139,6 +139,7 @@ int runInfo(const InfoOptions& opt) {
                              {"beta2", jn.beta2},
                              {"shear", jn.shear},
                              {"alphaEnd", jn.alphaEnd},
+                             {"fitted", jn.fitted},
                              {"c0Gap", c.c0Gap},
                              {"c1Residual", c.c1Residual},
                              {"c2Residual", c.c2Residual},

@@ -13,11 +13,13 @@
 
 #include "core/commands/command_table.hpp"
 #include "core/construct/model_builders.hpp"
+#include "core/edit/drag_controller.hpp"
 #include "core/edit/edit_session.hpp"
 #include "core/eval/bezier_curve.hpp"
 #include "core/eval/fold_check.hpp"
 #include "core/io/bpt_format.hpp"
 #include "core/io/patchwork_format.hpp"
+#include "core/model/camera_math.hpp"
 #include "core/ops/fill_hole.hpp"
 #include "core/solve/constraint_solver.hpp"
 #include "core/solve/continuity_report.hpp"
@@ -70,21 +72,23 @@ Document fanDome(int n) {
 // fill) meet at each hole corner along two straight lines, as at a rounded box's face corner. The
 // ring is half a side wide, so that once the sides are split at their middle every tangent ratio
 // round a hole corner is 1 (fill-hole refuses surroundings whose ratios disagree there).
-Document planarRing(int n) {
+Document planarRing(int n, double bend = 0.0, double widen = 1.0) {
     std::string text = std::to_string(2 * n) + "\n";
     const double a = 2 * std::numbers::pi / n, d = std::sin(std::numbers::pi / n);
     auto V = [&](int k) { return Vec3(std::cos(((k + n) % n) * a), std::sin(((k + n) % n) * a), 0); };
-    auto away = [&](int k, int from) { return d * glm::normalize(V(k) - V(from)); };  // continuing edge from→k past k
+    auto away = [&](int k, int from) {
+        return d * (k % 2 ? widen : 1.0) * glm::normalize(V(k) - V(from));
+    };  // continuing edge from→k past k
     const Vec3 up(0, 0, 1);
     // Straight edges, and each inner point the parallelogram of its corner's two edge legs (so the
     // twists agree round each hole corner, as on any surface that was smooth there).
     auto quad = [&](const Vec3(&q)[4]) {
-        return [q](double u, double v) {
+        return [q, bend](double u, double v) {
             const int i = int(std::lround(3 * u)), j = int(std::lround(3 * v));
             const int ci = i < 2 ? 0 : 3, cj = j < 2 ? 0 : 3;
             auto edge = [&](int ii, int jj) { return bilinear(q, ii / 3.0, jj / 3.0); };
-            if (i == 0 || i == 3 || j == 0 || j == 3) return edge(i, j);
-            return edge(i, cj) + edge(ci, j) - edge(ci, cj);
+            const Vec3 p = i == 0 || i == 3 || j == 0 || j == 3 ? edge(i, j) : edge(i, cj) + edge(ci, j) - edge(ci, cj);
+            return p + Vec3(0, 0, bend * glm::dot(p, p));
         };
     };
     for (int k = 0; k < n; ++k) {
@@ -434,4 +438,83 @@ TEST(FillHole, CurveSidesThatCannotBeSplitAreRefused) {
         }
         EXPECT_EQ(s.doc, before);
     }
+}
+
+// The `fill-hole` arguments for planarRing(n): each side patch's edge whose ends are hole corners.
+std::string ringHoleSides(const Document& d, int n) {
+    std::string sides;
+    for (int k = 0; k < n; ++k) {
+        const Patch& P = d.patches[size_t(2 * k)];
+        for (Edge e : {Edge::U0, Edge::V0, Edge::U1, Edge::V1}) {
+            const Vec3 a = d.points[P.idx[size_t(edgeSlot(e, 0))]], b = d.points[P.idx[size_t(edgeSlot(e, 3))]];
+            auto r = [](const Vec3& x) { return std::hypot(x.x, x.y); };
+            if (std::abs(r(a) - 1.0) < 1e-9 && std::abs(r(b) - 1.0) < 1e-9)
+                sides += " " + std::to_string(2 * k) + ":" + std::string(edgeName(e));
+        }
+    }
+    return sides;
+}
+
+// A 4-sided hole in a bent ring of uneven widths, its seams made G1 one by one: each side's two
+// ends ask different tangent ratios. No bicubic fill meets that exactly (DESIGN §14), so the fill's
+// ratio runs along each side and its joins are fitted: held by the solver's rows and, beyond them,
+// within 0.1° by angle — while the fill, the ring and a hole corner are dragged; a drag that would
+// take a fitted seam past 0.1° is refused, naming it; a saved file keeps the joins fitted.
+TEST(FillHole, AFourSidedHoleWhoseRatiosDisagreeFillsWithFittedSidesWithinATenthOfADegree) {
+    EditSession s;
+    s.doc = planarRing(4, 0.3, 1.2);
+    joinAllG1(s);
+    const Document open = s.doc;
+    Recorder host;
+    runCommandLine(s, host, "fill-hole" + ringHoleSides(s.doc, 4));
+    EXPECT_NE(host.last.find("filled a 4-sided hole with 4 patches"), std::string::npos) << host.last;
+    size_t fitted = 0, varying = 0;
+    for (const Join& j : s.doc.joins)
+        if (j.fitted) ++fitted, varying += std::abs(endAlpha(j) - j.alpha) > 1e-3 ? 1 : 0;
+    EXPECT_EQ(fitted, 8u);
+    EXPECT_GE(varying, 4u) << "the ring's ratios should disagree along its sides";
+    expectG1(s.doc, "after filling");
+    // A fitted seam is not exact: its middle coefficient is let go, and the angle is measured.
+    double worstFitted = 0.0;
+    for (const JoinContinuity& c : continuityReport(s.doc, 32))
+        if (s.doc.joins[c.join].fitted) worstFitted = std::max(worstFitted, c.normalAngleDeg);
+    EXPECT_GT(worstFitted, 0.0);
+    std::printf("fitted seams' worst angle after filling: %.3g°\n", worstFitted);
+
+    const uint32_t first = uint32_t(open.patches.size());
+    const uint32_t centre = s.doc.patches[first].idx[15], inner = s.doc.patches[first + 1].idx[5];
+    const uint32_t holeCorner = s.doc.patches[first + 2].idx[0], ring = s.doc.patches[0].idx[5];
+    for (const auto& [pt, move] :
+         {std::pair{centre, "0.03 -0.02 0.04"}, {inner, "-0.02 0.02 0.03"}, {holeCorner, "0.01 0.02 0.02"}, {ring, "0 0.02 0.03"}}) {
+        test::runEditScript(s, "select point " + std::to_string(pt) + "; move " + move);
+        expectG1(s.doc, "after moving point " + std::to_string(pt));
+    }
+    // Reopened from its file, the joins are the same, fitted ones included.
+    EXPECT_EQ(parseDocument(serializeDocument(s.doc), "fill.patchwork").joins, s.doc.joins);
+    // Lifting a hole corner far: the rows would still hold, but a fitted seam would pass 0.1°.
+    const Document held = s.doc;
+    try {
+        test::runEditScript(s, "select point " + std::to_string(holeCorner) + "; move 0 0 0.6");
+        FAIL() << "a move that bends a fitted seam past 0.1° was accepted";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("fitted"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(s.doc, held);
+    // The same by mouse: the mode line names the seam while it is past 0.1°, and letting go there
+    // commits nothing.
+    DragView view;
+    view.camera.distance = 8.0;
+    view.width = 800;
+    view.height = 600;
+    s.sel.points = {holeCorner};
+    const auto at = projectToPixel(viewMatrices(view.camera, 800.0 / 600.0), s.doc.points[holeCorner], 800, 600);
+    ASSERT_TRUE(at.has_value());
+    DragController drag;
+    ASSERT_TRUE(drag.begin(s.doc, s.sel, view, at->x, at->y, false));
+    ASSERT_TRUE(drag.update(s.doc, view, at->x + 60.0, at->y - 90.0, false));
+    EXPECT_NE(drag.status().find("past the 0.1° a fitted seam keeps"), std::string::npos) << drag.status();
+    drag.finish(s);
+    EXPECT_EQ(s.doc, held);
+    test::runEditScript(s, "undo; undo; undo; undo; undo");
+    EXPECT_EQ(s.doc, open);
 }

@@ -14,6 +14,7 @@
 #include "core/construct/constructions.hpp"
 #include "core/edit/live_constructions.hpp"
 #include "core/model/camera_math.hpp"
+#include "core/ops/fitted_sides.hpp"
 #include "core/select/picking.hpp"
 
 namespace pw {
@@ -272,6 +273,9 @@ bool DragController::update(Document& doc, const DragView& view, double x, doubl
     applySymmetry(doc.points, pairs_, symmetry_);
     if (!doc.constructions.empty()) rerunConstructions(doc);  // the surfaces follow their inputs
     projection_ = solver_->project(doc.points);
+    fittedOut_.clear();
+    if (std::any_of(doc.joins.begin(), doc.joins.end(), [](const Join& j) { return j.fitted; }))
+        fittedOut_ = fittedJoinsOutOfTolerance(doc);
     takeChangedPoints(uploaded_, doc.points, changed_);
     lastMoved_ = 0;
     for (size_t i = 0; i < doc.points.size(); ++i) lastMoved_ += doc.points[i] != start_[i] ? 1 : 0;
@@ -352,13 +356,21 @@ std::string DragController::status() const {
     // How far the edit reached: the moved points, their soft share and what the joins forced.
     out += "  " + std::to_string(lastMoved_) + (lastMoved_ == 1 ? " point moved" : " points moved");
     if (!projection_.ok()) out += "\n" + conflictMessage(projection_);
+    if (!fittedOut_.empty()) out += "\n" + fittedOut_ + ": past the 0.1° a fitted seam keeps (released here, the move is undone)";
     return out;
 }
 
 void DragController::finish(EditSession& session) {
     const size_t n = moved_.size();
     const std::string kind = slide_ ? "Slide" : kindName(kind_);
+    const bool beyond = !fittedOut_.empty();
+    const std::vector<Vec3> start = beyond ? start_ : std::vector<Vec3>{};
     *this = DragController{};
+    if (beyond) {  // a fitted seam past its angle: nothing is committed
+        session.doc.points = start;
+        session.changed(false);
+        return;
+    }
     if (session.doc.points != session.committed().points)
         session.commit(n == 1 ? kind + " point" : kind + " " + std::to_string(n) + " points");
 }

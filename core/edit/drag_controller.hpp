@@ -138,6 +138,9 @@ private:
     size_t lastMoved_ = 0;
     std::unique_ptr<DragSolver> solver_;
     Projection projection_;
+    // The fill's fitted seams (core/ops/fitted_sides) the last update took past 0.1°: named in
+    // status(), and finish() then puts every point back instead of committing.
+    std::string fittedOut_;
     TransformKind kind_ = TransformKind::Move;
     Vec3 anchor_{0.0};
     Vec3 planeNormal_{0.0, 0.0, 1.0};

@@ -9,6 +9,7 @@
 #include "core/eval/fold_check.hpp"
 #include "core/model/join_detect.hpp"
 #include "core/model/topology.hpp"
+#include "core/ops/fitted_sides.hpp"
 #include "core/solve/constraint_solver.hpp"
 
 namespace pw {
@@ -20,6 +21,16 @@ std::string number(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.3g", v);
     return buf;
+}
+
+// A fitted join (a fill's side whose ratio runs along it) holds its rows and, beyond them, its
+// measured angle within kFittedJoinDegrees; an edit may not take it past that (unless it was
+// already past it before and gets no worse: a document read that way).
+void checkFittedAngles(const Document& before, const Document& after) {
+    const std::string out = fittedJoinsOutOfTolerance(after);
+    if (out.empty() || !fittedJoinsOutOfTolerance(before).empty()) return;
+    throw EditError("refused: it would leave " + out + ", beyond the " + number(kFittedJoinDegrees) +
+                    "° a fill's fitted seam keeps; move less, or unjoin that seam first");
 }
 
 void checkJoins(const Document& before, const Document& after, bool detected) {
@@ -82,6 +93,7 @@ std::string describeJoin(const Document& doc, size_t j) {
 
 void checkEditInvariants(const Document& before, const Document& after, bool detected) {
     checkJoins(before, after, detected);
+    checkFittedAngles(before, after);
     checkFolds(before, after);
 }
 

@@ -292,6 +292,7 @@ json documentToJson(const Document& doc) {
         if (jn.beta2 != 0.0) joins.back()["beta2"] = jn.beta2;
         if (jn.shear != std::array<double, 3>{}) joins.back()["shear"] = jn.shear;
         if (jn.alphaEnd != 0.0) joins.back()["alpha_end"] = jn.alphaEnd;
+        if (jn.fitted) joins.back()["fitted"] = true;
     }
     j["joins"] = std::move(joins);
 
@@ -470,12 +471,15 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
             });
             r.optional(o, path, "alpha_end",
                        [&](const json& x, const std::string& p) { jn.alphaEnd = r.numberInRange(x, p, 0, 1e6, true); });
+            r.optional(o, path, "fitted", [&](const json& x, const std::string& p) { jn.fitted = r.boolean(x, p); });
             if (joinHasTriangle(jn) && jn.continuity != Continuity::C0 && jn.continuity != Continuity::G1)
                 r.fail(at(path, "continuity"), "a join with a triangle's edge is C0 or G1");
             if (jn.shear != std::array<double, 3>{} && jn.continuity != Continuity::G1)
                 r.fail(at(path, "shear"), "only a G1 join leans along its seam");
             if (jn.alphaEnd != 0.0 && jn.continuity != Continuity::G1)
                 r.fail(at(path, "alpha_end"), "only a G1 join's ratio varies along its seam");
+            if (jn.fitted && (jn.continuity != Continuity::G1 || joinHasTriangle(jn)))
+                r.fail(at(path, "fitted"), "only a G1 join between patch edges is fitted");
             if (jn.patchA == jn.patchB && jn.edgeA == jn.edgeB) r.fail(path, "a join cannot connect an edge to itself");
         }
     }

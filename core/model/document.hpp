@@ -170,8 +170,14 @@ struct Join {
     double beta2 = 0.0;             // β2 (G2 only)
     std::array<double, 3> shear{};  // β(t) in Bernstein form (G1 only; non-zero at 3-, 5- and 6-patch corners)
     double alphaEnd = 0.0;          // α at A's point 3 when it differs from `alpha` there (G1 only; 0: constant α)
+    // G1 only, a fill's side whose two ends ask different ratios (core/ops/fill_hole): the rows let
+    // the identity's middle coefficient go, which no bicubic fill can meet (DESIGN §14), and the
+    // seam is held to kFittedJoinDegrees by its measured angle instead.
+    bool fitted = false;
     bool operator==(const Join&) const = default;
 };
+// The largest normal angle a fitted join may reach (the Class-A figure for bicubic surfaces).
+inline constexpr double kFittedJoinDegrees = 0.1;
 // True when a side of the join is a Bézier triangle's edge (C0 or G1 only; core/solve/triangle_seams.hpp).
 inline bool joinHasTriangle(const Join& j) { return isTriangleEdge(j.edgeA) || isTriangleEdge(j.edgeB); }
 // Joins between patch edges only: what the quad-only operations (corners, splits, mirror) act on.

@@ -15,6 +15,7 @@
 #include "core/model/construction_refs.hpp"
 #include "core/model/topology.hpp"
 #include "core/ops/corner_ops.hpp"
+#include "core/ops/fitted_sides.hpp"
 #include "core/ops/join_ops.hpp"
 #include "core/ops/patch_ops.hpp"
 #include "core/ops/split_ops.hpp"
@@ -151,15 +152,11 @@ void curveOntoSplitFill(Document& d, uint32_t c, uint32_t first) {
     d.curves[c].idx = std::move(idx);
 }
 
-// Why the fill's G1 joins to its surroundings could not hold: a side's joins hold one tangent ratio
-// α along it (DESIGN §14), and at each hole corner that ratio is fixed by the surroundings, the
-// fill's leg there lying along the next side (B1 = B0 + α (A0 − A1) at the corner). The sides, as
-// numbered when given, whose two ends ask for different ratios; empty when none does.
-std::string ratioMismatch(const Document& doc, const std::vector<std::array<Seg, 2>>& h, const std::vector<size_t>& given,
-                          const std::vector<HoleSide>& sides) {
+// The tangent ratio at each end of each side (at its start, at its end), in the loop's order: the
+// ratio at a hole corner makes the fill's leg there, which lies along the next side, continue the
+// side's surrounding's cross leg (B1 = B0 + α (A0 − A1) at the corner). None for a curve side.
+std::vector<std::optional<std::array<double, 2>>> sideRatios(const Document& doc, const std::vector<std::array<Seg, 2>>& h) {
     const size_t n = h.size();
-    // The ratio at s's point `end` (a hole corner) that makes the fill's leg from `along`'s point
-    // `from` (the same corner) to its point `next` continue s's cross leg.
     auto ratio = [&](const Seg& s, int end, const Seg& along, int from, int next) -> std::optional<double> {
         if (s.curve >= 0) return std::nullopt;
         const Vec3 across = s.at(doc, end) - s.at(doc, end, 1);
@@ -167,21 +164,11 @@ std::string ratioMismatch(const Document& doc, const std::vector<std::array<Seg,
         if (a2 <= 0.0) return std::nullopt;
         return glm::dot(along.at(doc, next) - along.at(doc, from), across) / a2;
     };
-    auto fmt = [](double x) {
-        char buf[32];
-        std::snprintf(buf, sizeof buf, "%.4g", x);
-        return std::string(buf);
-    };
-    std::string out;
+    std::vector<std::optional<std::array<double, 2>>> out(n);
     for (size_t k = 0; k < n; ++k) {
         const size_t km = (k + n - 1) % n, kp = (k + 1) % n;
         const auto a = ratio(h[k][0], 0, h[km][1], 3, 2), b = ratio(h[k][1], 3, h[kp][0], 0, 1);
-        if (!a || !b || std::abs(*a - *b) <= 1e-6 * std::max({1.0, std::abs(*a), std::abs(*b)})) continue;
-        std::string label;
-        for (const auto& [p, e] : sides[given[k]].edges) label += (label.empty() ? "" : "+") + edgeLabel(p, e);
-        out += std::string(out.empty() ? "" : "; ") + "side " + std::to_string(given[k] + 1) + " (" + label + ") needs α " + fmt(*a) +
-               " at its corner with side " + std::to_string(given[km] + 1) + " and " + fmt(*b) + " at its corner with side " +
-               std::to_string(given[kp] + 1);
+        if (a && b && *a > 0.0 && *b > 0.0) out[k] = std::array<double, 2>{*a, *b};
     }
     return out;
 }
@@ -316,6 +303,29 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
     // there, and the rows along the side follow it: a G1 join holds one ratio along its edge
     // (between two patch sides the ratio is the surroundings', 1 relative to their mirror).
     std::vector<double> alpha(n, 1.0);
+    size_t curveSides = 0, twoEdgeSides = 0;
+    for (const SideGeo& g : geo) curveSides += g.curve >= 0 ? 1 : 0, twoEdgeSides += g.single ? 0 : 1;
+    // A 4-sided hole of patch edges whose sides' two ends ask different ratios: α runs along each
+    // side and its joins are fitted (core/ops/fitted_sides). (With 3, 5 or 6 sides the centre's
+    // corner folds or, split 2×2, cannot hold the fitted rows: refused as before, DESIGN §14.)
+    const auto ratios = sideRatios(doc, h);
+    bool fitted = false;
+    std::vector<std::array<double, 2>> sideEnds;
+    if (n == 4 && curveSides == 0 && twoEdgeSides == 0 &&
+        std::all_of(ratios.begin(), ratios.end(), [](const auto& r) { return r.has_value(); }))
+        for (const auto& r : ratios) sideEnds.push_back(*r), fitted = fitted || ratiosDisagree(*r);
+    const std::vector<FittedSide> fit = fitted ? fitSides(sideEnds) : std::vector<FittedSide>{};
+    // The fill's rows beside half side `half` of side k, walked from its hole corner.
+    auto fittedRowOf = [&](size_t k, int half) {
+        const Seg s = half == 0 ? h[k][0] : h[k][1].flipped();
+        std::array<Vec3, 4> e, r;
+        for (int i = 0; i < 4; ++i) e[size_t(i)] = s.at(doc, i), r[size_t(i)] = s.at(doc, i, 1);
+        const std::array<Vec3, 4> f = half == 0 ? fittedRow(e, r, fit[k].start, fit[k].mid, fit[k].shearFirst)
+                                                : fittedRow(e, r, fit[k].end, fit[k].mid, fit[k].shearSecond);
+        std::array<Vec3, 4> out;
+        for (int i = 0; i < 4; ++i) out[size_t(i)] = e[size_t(i)] + f[size_t(i)];
+        return out;
+    };
     for (size_t k = 0; k < n; ++k) {
         if (h[k][0].curve >= 0) continue;
         const size_t km = (k + n - 1) % n, kp = (k + 1) % n;
@@ -336,8 +346,9 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
     Vec3 centroid(0.0);
     for (size_t k = 0; k < n; ++k) centroid += geo[k].mid / double(n);
     for (size_t k = 0; k < n; ++k)
-        c1[k] = h[k][0].curve >= 0 ? geo[k].mid + (centroid - geo[k].mid) / 3.0
-                                   : h[k][0].at(doc, 3) + alpha[k] * (h[k][0].at(doc, 3) - h[k][0].at(doc, 3, 1));
+        c1[k] = fitted               ? 0.5 * (fittedRowOf(k, 0)[3] + fittedRowOf(k, 1)[3])
+                : h[k][0].curve >= 0 ? geo[k].mid + (centroid - geo[k].mid) / 3.0
+                                     : h[k][0].at(doc, 3) + alpha[k] * (h[k][0].at(doc, 3) - h[k][0].at(doc, 3, 1));
     double reach = 0.0;
     for (size_t k = 0; k < n; ++k) reach += glm::length(geo[k].mid - centroid) / double(n);
     Vec3 ahead(0.0);
@@ -396,9 +407,16 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
         const Vec3 twist = a.curve < 0 && b.curve >= 0   ? mirror(a, 1)
                            : a.curve >= 0 && b.curve < 0 ? mirror(b, 1)
                                                          : 0.5 * (mirror(a, 1) + mirror(b, 1));
-        set(1, 1, addPoint(doc, twist));
-        set(2, 1, addPoint(doc, mirror(a, 2)));
-        set(1, 2, addPoint(doc, mirror(b, 2)));
+        if (fitted) {  // the rows the fitted joins hold; the twist is one point (the lean β′ = α′/α)
+            const auto ra = fittedRowOf(k, 0), rb = fittedRowOf(km, 1);
+            set(1, 1, addPoint(doc, 0.5 * (ra[1] + rb[1])));
+            set(2, 1, addPoint(doc, ra[2]));
+            set(1, 2, addPoint(doc, rb[2]));
+        } else {
+            set(1, 1, addPoint(doc, twist));
+            set(2, 1, addPoint(doc, mirror(a, 2)));
+            set(1, 2, addPoint(doc, mirror(b, 2)));
+        }
         set(2, 2, addPoint(doc, doc.points[s2[k]] + doc.points[s2[km]] - centre));
         doc.patches.push_back(P);
     }
@@ -410,9 +428,21 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
         if (!c.empty()) corners += "; " + c;
     };
     // (Measured before the joins: they move points, and may split patches to close a corner.)
-    const std::string which = ratioMismatch(doc, h, given, sides);
-    try {
+    const std::string which = ratioMismatch(ratios, given, sides);
+    if (fitted) {
         for (size_t k = 0; k < n; ++k) {
+            const size_t km = (k + n - 1) % n;
+            const Seg b = h[km][1].flipped();
+            doc.joins.push_back(fittedJoin(doc, h[k][0].patch, h[k][0].edge, h[k][0].reversed, first + uint32_t(k), Edge::V0, fit[k].start,
+                                           fit[k].mid, fit[k].shearFirst));
+            doc.joins.push_back(
+                fittedJoin(doc, b.patch, b.edge, b.reversed, first + uint32_t(k), Edge::U0, fit[km].end, fit[km].mid, fit[km].shearSecond));
+        }
+        if (const Projection p = projectConstraints(doc, {}); !p.ok())
+            throw EditError("the fill's sides cannot hold G1 with their ratios running along them: " + conflictMessage(p));
+    }
+    try {
+        for (size_t k = 0; k < n && !fitted; ++k) {
             const size_t km = (k + n - 1) % n;
             if (h[k][0].curve < 0) joinNote(h[k][0].patch, h[k][0].edge, first + uint32_t(k), Edge::V0);
             if (h[km][1].curve < 0) joinNote(h[km][1].patch, h[km][1].edge, first + uint32_t(k), Edge::U0);
@@ -429,8 +459,6 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
     // corner construction makes them G1 together (one at a time, plain G1 rows would turn two
     // edges at the centre opposite and collapse the patch between them).
     for (size_t k = 0; k < n; ++k) joinEdges(doc, first + uint32_t(k), Edge::U1, first + uint32_t((k + 1) % n), Edge::V1, Continuity::C0);
-    size_t curveSides = 0, twoEdgeSides = 0;
-    for (const SideGeo& g : geo) curveSides += g.curve >= 0 ? 1 : 0, twoEdgeSides += g.single ? 0 : 1;
     // (A side of two edges has no middle split: its seam's ratio there is the two edges' own.)
     if (n == 4 && curveSides > 0 && twoEdgeSides == 0) {
         // Four seams at the centre hold plain G1 only when the ratios of opposite seams multiply to
@@ -464,6 +492,17 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
         if (n >= 5)
             for (const SideGeo& g : geo)
                 if (g.curve >= 0) curveOntoSplitFill(doc, uint32_t(g.curve), first);
+    }
+    if (fitted) {
+        const Document beforeHeld = doc;
+        if (const Projection p = projectConstraints(doc, {}); !p.ok())
+            throw EditError("the fill's sides cannot hold G1 with their ratios running along them: " + conflictMessage(p));
+        if (const std::string fold = foldMadeBy(beforeHeld, doc); !fold.empty())
+            throw EditError("refused: the fill's sides, whose ratios run along them, would hold G1 only by folding " + fold);
+        if (const std::string out = fittedJoinsOutOfTolerance(doc); !out.empty())
+            throw EditError("refused: the fill's sides, whose two ends ask different tangent ratios (" + which +
+                            "), would hold G1 only within " + out +
+                            ", beyond the 0.1° a fitted seam keeps; make those seams match, or fill a smaller hole");
     }
     note = "filled a " + std::to_string(n) + "-sided hole with " + std::to_string(n) + " patches (" + std::to_string(first) + ".." +
            std::to_string(first + n - 1) + ")";

@@ -5,7 +5,9 @@
 // one edge: its patch is split there, the cut running on through its ring so no join is dropped), and one bicubic patch per hole corner
 // fills it, the n of them meeting at a centre: G1 to every surrounding patch, and G1 to each other through the corner construction of
 // core/ops/corner_ops (leaning seams; a 5- or 6-sided fill is split 2×2 there). Everything stays joins the live solver holds: drag the
-// surroundings and the fill follows, within the solver's residual.
+// surroundings and the fill follows, within the solver's residual. A 4-sided hole whose sides' two
+// ends ask different tangent ratios is filled with fitted joins (core/ops/fitted_sides): held
+// within 0.1°, as no bicubic fill can be exact there; with 3, 5 or 6 sides it is refused.
 #pragma once
 
 #include <cstdint>

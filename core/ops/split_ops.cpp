@@ -152,6 +152,10 @@ std::vector<std::pair<RingCut, uint32_t>> splitRing(Document& doc, uint32_t p, b
             // when the join pairs the points reversed; the cross-boundary rows split alike, so α and
             // β2 hold as they were.
             Join first = j, second = j;
+            if (j.fitted) {  // restricted exactly (its rows were never all met: a fit would change it)
+                const double t = ca->second.first.t;
+                first = restrictedJoin(j, 0.0, t), second = restrictedJoin(j, t, 1.0);
+            }
             second.patchA = ca->second.second;
             (j.reversed ? first : second).patchB = cb->second.second;
             across.push_back(first);
@@ -174,7 +178,7 @@ std::vector<std::pair<RingCut, uint32_t>> splitRing(Document& doc, uint32_t p, b
     std::vector<uint32_t> parent(doc.points.size());
     std::iota(parent.begin(), parent.end(), 0u);
     for (const Join& j : across) {
-        if (hasShear(j)) rescaled.push_back(joins.size());  // β(t) restricted to a half: fitted again
+        if (hasShear(j) && !j.fitted) rescaled.push_back(joins.size());  // β(t) restricted to a half: fitted again
         const Patch &A = doc.patches[j.patchA], &B = doc.patches[j.patchB];
         for (int k = 0; k < 4; ++k) {
             const uint32_t ia = rootOf(parent, A.idx[size_t(edgeSlot(j.edgeA, k, 0))]);

@@ -76,8 +76,10 @@ void appendTangentRows(const Join& join, const JoinPoints& jp, uint32_t ji, std:
         }
         return;
     }
-    // A sheared G1 join (core/solve/sheared_joins.hpp): the degree-4 identity's five coefficients.
+    // A sheared G1 join (core/solve/sheared_joins.hpp): the degree-4 identity's five coefficients
+    // (a fitted join's four: the middle one is let go).
     for (int l = 0; l <= 4; ++l) {
+        if (join.fitted && l == 2) continue;
         std::vector<std::pair<uint32_t, double>> terms;
         for (int k = 0; k < 4; ++k) {
             const double w = elevationWeight(l, k);

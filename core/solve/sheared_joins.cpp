@@ -23,6 +23,19 @@ double alphaWeight(int l, int k, int end) {
     return k == l - 1 ? l / 4.0 : 0.0;                              // t·B³_k = (k+1)/4 B⁴_(k+1)
 }
 
+Join restrictedJoin(const Join& join, double from, double to) {
+    Join out = join;
+    const double a0 = join.alpha, a1 = endAlpha(join);
+    out.alpha = a0 + from * (a1 - a0);
+    out.alphaEnd = a0 + to * (a1 - a0);
+    // The quadratic's Bernstein coefficients on [from, to] (blossoms), over the part's length.
+    const auto& s = join.shear;
+    auto blossom = [&](double x, double y) { return (1 - x) * (1 - y) * s[0] + ((1 - x) * y + x * (1 - y)) * s[1] + x * y * s[2]; };
+    const double len = to - from;
+    out.shear = {blossom(from, from) / len, blossom(from, to) / len, blossom(to, to) / len};
+    return out;
+}
+
 std::optional<ShearFit> fitShear(const Document& doc, const Join& join) {
     solver_detail::JoinPoints jp;
     if (!solver_detail::joinPoints(doc, join, jp) || !solver_detail::joinPointsInPool(jp, doc.points.size())) return std::nullopt;
@@ -35,6 +48,7 @@ std::optional<ShearFit> fitShear(const Document& doc, const Join& join) {
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(15);
     for (int l = 0; l <= 4; ++l)
         for (int c = 0; c < 3; ++c) {
+            if (join.fitted && l == 2) continue;  // a fitted join lets its middle coefficient go
             const int r = l * 3 + c;
             for (int k = 0; k < 4; ++k) {
                 const double w = elevationWeight(l, k);

@@ -33,6 +33,12 @@ double elevationWeight(int l, int k);
 // Weight of α0 (end 0) or α1 (end 1) times A's cross difference A0k − A1k in degree-4 row l.
 double alphaWeight(int l, int k, int end);
 
+// A leaning join restricted to the part [from, to] of its edge (A's parameter), exactly: α(t) is
+// linear and β(t) quadratic there too (β over the shorter edge's differences, so divided by its
+// length). What a split gives each half of a fitted join, whose rows the shape meets only in part
+// and which a fit from the shape would therefore change.
+Join restrictedJoin(const Join& join, double from, double to);
+
 // The join's α and shear measured from its rows by least squares (the five rows of the identity
 // above, x, y and z: fifteen equations, four unknowns). Exact after any operation that keeps the
 // surface (a split, a move of both sides): β restricted to part of the edge is still quadratic.
