@@ -518,3 +518,25 @@ TEST(FillHole, AFourSidedHoleWhoseRatiosDisagreeFillsWithFittedSidesWithinATenth
     test::runEditScript(s, "undo; undo; undo; undo; undo");
     EXPECT_EQ(s.doc, open);
 }
+
+// A 5-sided fill is split 2×2 at its centre; the rest of each of its inner seams, out to its
+// side, is G1 too (it was left C0), and where G1 there would conflict the status line says so.
+TEST(FillHole, AFiveSidedFillIsG1InsideOutToItsSidesOrSaysWhereItIsNot) {
+    EditSession s;
+    s.doc = planarRing(5, 0.3, 1.0);
+    const auto c0 = [](const Document& d) {
+        return std::count_if(d.joins.begin(), d.joins.end(), [](const Join& j) { return j.continuity == Continuity::C0; });
+    };
+    const auto creasesBefore = c0(s.doc);
+    Recorder host;
+    runCommandLine(s, host, "fill-hole" + ringHoleSides(s.doc, 5));
+    EXPECT_NE(host.last.find("filled a 5-sided hole"), std::string::npos) << host.last;
+    EXPECT_EQ(host.last.find("stay C0"), std::string::npos) << host.last;
+    EXPECT_EQ(c0(s.doc), creasesBefore);  // the ring's own C0 seams, and no C0 seam inside the fill
+    expectG1(s.doc, "after filling");
+    // Uneven widths: the outer halves' ratios cannot continue the centre's; said, not hidden.
+    EditSession uneven;
+    uneven.doc = planarRing(5, 0.3, 1.2);
+    runCommandLine(uneven, host, "fill-hole" + ringHoleSides(uneven.doc, 5));
+    EXPECT_NE(host.last.find("of the fill's inner seams stay C0"), std::string::npos) << host.last;
+}

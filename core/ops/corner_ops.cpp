@@ -118,7 +118,7 @@ std::optional<CornerCycle> cornerCycle(const Document& doc, uint32_t p, int cu, 
     return std::nullopt;
 }
 
-std::string makeG1Corner(Document& doc, uint32_t p, int cu, int cv, bool allSeams) {
+std::string makeG1Corner(Document& doc, uint32_t p, int cu, int cv, bool allSeams, std::vector<std::pair<uint32_t, uint32_t>>* splits) {
     checkBezier(doc, p, "corner");
     std::optional<CornerCycle> cyc = cornerCycle(doc, p, cu, cv);
     if (!cyc)
@@ -150,6 +150,7 @@ std::string makeG1Corner(Document& doc, uint32_t p, int cu, int cv, bool allSeam
             for (bool alongU : {true, false}) {
                 if (cut.count({q, alongU})) continue;
                 for (const auto& [rc, second] : splitRing(doc, q, alongU, 0.5)) {
+                    if (splits) splits->emplace_back(rc.patch, second);
                     cut.insert({rc.patch, rc.alongU});
                     cut.insert({second, rc.alongU});
                 }

@@ -15,6 +15,7 @@
 #include "core/model/construction_refs.hpp"
 #include "core/model/topology.hpp"
 #include "core/ops/corner_ops.hpp"
+#include "core/ops/fill_curves.hpp"
 #include "core/ops/fitted_sides.hpp"
 #include "core/ops/join_ops.hpp"
 #include "core/ops/patch_ops.hpp"
@@ -65,92 +66,6 @@ struct SideGeo {
     int32_t curve = -1;  // a side that is a curve of one segment
     void flip() { std::swap(start, end); }
 };
-
-// A curve of one polynomial cubic segment, not closed: a fill's side (or a triangle's).
-const BezierCurve& sideCurve(const Document& d, int32_t c, const std::string& side) {
-    const std::string name = "curve c" + std::to_string(c);
-    if (c < 0 || size_t(c) >= d.curves.size()) throw EditError("no " + name);
-    const BezierCurve& curve = d.curves[size_t(c)];
-    if (curveSegmentCount(curve) != 1)
-        throw EditError(name + " has " + std::to_string(curveSegmentCount(curve)) + " segments; " + side +
-                        " is one cubic (split the hole's side so each is one segment)");
-    if (curve.idx.front() == curve.idx.back()) throw EditError(name + " is a loop; " + side + " runs between two corners");
-    for (uint32_t i : curve.idx)
-        if (pointWeight(d, i) != 1.0) throw EditError(name + " is rational; a fill's side takes no weights");
-    return curve;
-}
-
-// A fill of patches splits a curve side at its middle: refused where that would cut the curve
-// loose from something else — a live construction made from it, or an item or another curve that
-// shares its inner points (a triangle filled through it, a curve made from an edge).
-void checkCurveSplittable(const Document& d, int32_t c) {
-    const std::string name = "curve c" + std::to_string(c);
-    for (size_t k = 0; k < d.constructions.size(); ++k)
-        for (const CurveInput& in : d.constructions[k].inputs)
-            if (in.curve == c)
-                throw EditError(name + " is an input of " + constructionLabel(d, k) +
-                                ", which the fill's split of it would break; bake that first, or give the hole a copy of the curve");
-    const auto& q = d.curves[size_t(c)].idx;
-    const auto inner = [&](uint32_t i) { return i == q[1] || i == q[2]; };
-    std::string user;
-    for (size_t p = 0; p < d.patches.size() && user.empty(); ++p)
-        if (std::any_of(d.patches[p].idx.begin(), d.patches[p].idx.end(), inner)) user = "patch " + std::to_string(p);
-    for (size_t t = 0; t < d.triangles.size() && user.empty(); ++t)
-        if (std::any_of(d.triangles[t].idx.begin(), d.triangles[t].idx.end(), inner)) user = "triangle " + std::to_string(t);
-    for (size_t n = 0; n < d.surfaces.size() && user.empty(); ++n)
-        if (std::any_of(d.surfaces[n].idx.begin(), d.surfaces[n].idx.end(), inner)) user = "net " + std::to_string(n);
-    for (size_t o = 0; o < d.curves.size() && user.empty(); ++o)
-        if (int32_t(o) != c && std::any_of(d.curves[o].idx.begin(), d.curves[o].idx.end(), inner)) user = "curve c" + std::to_string(o);
-    if (!user.empty())
-        throw EditError(name + " shares its points with " + user +
-                        ", which the fill's split of the curve would leave behind; give the hole a curve of its own");
-}
-
-// The points from `from` to `to` of an unjoined edge of a patch from `first` on, or none.
-std::optional<std::array<uint32_t, 4>> openEdgeIdx(const Document& d, uint32_t first, uint32_t from, uint32_t to) {
-    for (uint32_t p = first; p < d.patches.size(); ++p)
-        for (Edge e : {Edge::U0, Edge::V0, Edge::U1, Edge::V1}) {
-            const auto& I = d.patches[p].idx;
-            const uint32_t a = I[size_t(edgeSlot(e, 0))], b = I[size_t(edgeSlot(e, 3))];
-            if ((a != from || b != to) && (a != to || b != from)) continue;
-            if (findJoin(d, p, e) >= 0) continue;
-            std::array<uint32_t, 4> out;
-            for (int k = 0; k < 4; ++k) out[size_t(k)] = I[size_t(edgeSlot(e, a == from ? k : 3 - k))];
-            return out;
-        }
-    return std::nullopt;
-}
-
-// After the fill's patches were split (a 5- or 6-sided centre), each half of curve c runs along
-// two fill edges whose points are new (exactly on it): the curve takes them as its segments, so the
-// fill shares its points again (the shape is the same: the split was de Casteljau's).
-void curveOntoSplitFill(Document& d, uint32_t c, uint32_t first) {
-    const std::vector<uint32_t> old = d.curves[c].idx;
-    std::vector<uint32_t> idx{old.front()};
-    for (size_t s = 0; s + 1 < old.size(); s += 3) {
-        const uint32_t from = old[s], to = old[s + 3];
-        bool found = false;
-        if (const auto whole = openEdgeIdx(d, first, from, to); whole && (*whole)[1] == old[s + 1] && (*whole)[2] == old[s + 2]) {
-            idx.insert(idx.end(), {old[s + 1], old[s + 2], to});
-            continue;
-        }
-        for (uint32_t p = first; p < d.patches.size() && !found; ++p)
-            for (Edge e : {Edge::U0, Edge::V0, Edge::U1, Edge::V1}) {
-                const auto& I = d.patches[p].idx;
-                for (int end = 0; end < 2 && !found; ++end) {
-                    if (I[size_t(edgeSlot(e, end ? 3 : 0))] != from) continue;
-                    const uint32_t mid = I[size_t(edgeSlot(e, end ? 0 : 3))];
-                    const auto one = openEdgeIdx(d, first, from, mid), two = openEdgeIdx(d, first, mid, to);
-                    if (!one || !two || mid == to) continue;
-                    idx.insert(idx.end(), {(*one)[1], (*one)[2], mid, (*two)[1], (*two)[2], to});
-                    found = true;
-                }
-                if (found) break;
-            }
-        if (!found) throw std::logic_error("fill-hole: a curve's half is not two edges of the split fill");
-    }
-    d.curves[c].idx = std::move(idx);
-}
 
 // The tangent ratio at each end of each side (at its start, at its end), in the loop's order: the
 // ratio at a hole corner makes the fill's leg there, which lies along the next side, continue the
@@ -480,15 +395,35 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
             throw EditError("refused: the fill's seams would hold G1 only by folding " + fold);
         corners += "; its corner of 4 patches is regular: plain G1 joins hold it";
     } else {
-        corners += "; " + makeG1Corner(doc, first, 1, 1);
-        // A 5- or 6-sided centre is split 2×2 and held by its leaning seams there; with curves
-        // all round (no surroundings for the split to run into) every patch is the fill's, and the
-        // rest of each seam, out to its side, is made G1 too. (With patch sides the split runs on
-        // through the surroundings, whose own C0 creases must stay as they are.)
-        if (curveSides == n)
-            for (size_t j = 0; j < doc.joins.size(); ++j)
-                if (doc.joins[j].continuity == Continuity::C0 && doc.joins[j].patchA >= first && doc.joins[j].patchB >= first)
-                    setJoinContinuity(doc, j, Continuity::G1);
+        // A 5- or 6-sided centre needs its patches split 2×2 (core/ops/corner_ops). Split here, so
+        // that the rest of each seam between the fill's own pieces, out to its side, is made G1
+        // first and the centre's seams then continue it (with the ratio it has there); the split
+        // runs on through the surroundings, whose own C0 creases stay as they are.
+        std::vector<std::pair<uint32_t, uint32_t>> splits;
+        corners += "; " + makeG1Corner(doc, first, 1, 1, true, &splits);
+        // A 5- or 6-sided centre is split 2×2 and held by its leaning seams there. The rest of each
+        // seam between the fill's own pieces, out to its side, is made G1 too where it can hold
+        // (the split runs on through the surroundings, whose own C0 creases stay as they are).
+        std::vector<char> isFill(doc.patches.size(), 0);
+        for (uint32_t q = first; q < first + n; ++q) isFill[q] = 1;
+        for (const auto& [cutPatch, second] : splits)
+            if (isFill[cutPatch]) isFill[second] = 1;
+        for (size_t j = 0; j < doc.joins.size(); ++j) {
+            const Join& jn = doc.joins[j];
+            if (jn.continuity != Continuity::C0 || !quadJoin(jn) || !isFill[jn.patchA] || !isFill[jn.patchB]) continue;
+            Document tried = doc;
+            try {
+                setJoinContinuity(tried, j, Continuity::G1);
+                doc = std::move(tried);
+            } catch (const EditError&) {
+            }
+        }
+        const size_t creases = size_t(std::count_if(doc.joins.begin(), doc.joins.end(), [&](const Join& jn) {
+            return jn.continuity == Continuity::C0 && quadJoin(jn) && isFill[jn.patchA] && isFill[jn.patchB];
+        }));
+        if (creases > 0)
+            corners +=
+                "; " + std::to_string(creases) + " of the fill's inner seams stay C0 (G1 there would conflict with the centre's seams)";
         if (n >= 5)
             for (const SideGeo& g : geo)
                 if (g.curve >= 0) curveOntoSplitFill(doc, uint32_t(g.curve), first);

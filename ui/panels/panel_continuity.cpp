@@ -92,6 +92,10 @@ void ContinuityPanel::draw(PanelContext& ctx) {
                         ctx.runLine("join " + joinSideRef(jn, false) + " " + joinSideRef(jn, true) + " " + std::string(continuityName(k)));
                 ImGui::EndCombo();
             }
+            if (jn.fitted && ImGui::IsItemHovered())
+                ImGui::SetTooltip(
+                    "Fitted G1: a fill's side whose tangent ratio runs along it. No bicubic fill meets that exactly; "
+                    "its rows hold and its angle is kept within 0.1 degrees");
             ImGui::PopID();
             ImGui::TableNextColumn();
             cell("%.2g", c.c0Gap, f & kPositionOut);
