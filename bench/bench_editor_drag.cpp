@@ -131,3 +131,18 @@ void BM_EditorDragMove_RoundedBox_SoftCentre(benchmark::State& state) {
     runDragOn(state, doc, {cornerCentre(doc)}, pw::TransformKind::Move, pw::SoftSelection{true, 0.4, pw::Falloff::Smooth});
 }
 BENCHMARK(BM_EditorDragMove_RoundedBox_SoftCentre)->Unit(benchmark::kMicrosecond);
+
+// A 4-sided fill whose sides' tangent ratios disagree (issue 40): data/fitted_fill.patchwork, a
+// bent ring of uneven widths filled with fitted joins, which a drag measures by angle as well as
+// holding their rows. A hole corner (two fitted seams' patches move) and a ring point away from the
+// fill (none: nothing is measured).
+void BM_EditorDragMove_FittedFill_HoleCorner(benchmark::State& state) {
+    const pw::Document doc = pw::loadDocument(PATCHWORK_DATA_DIR "/fitted_fill.patchwork");
+    runDragOn(state, doc, {doc.patches[14].idx[0]}, pw::TransformKind::Move, {});
+}
+BENCHMARK(BM_EditorDragMove_FittedFill_HoleCorner)->Unit(benchmark::kMicrosecond);
+void BM_EditorDragMove_FittedFill_Centre(benchmark::State& state) {
+    const pw::Document doc = pw::loadDocument(PATCHWORK_DATA_DIR "/fitted_fill.patchwork");
+    runDragOn(state, doc, {doc.patches[12].idx[15]}, pw::TransformKind::Move, {});
+}
+BENCHMARK(BM_EditorDragMove_FittedFill_Centre)->Unit(benchmark::kMicrosecond);

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <functional>
 #include <numbers>
 #include <string>
@@ -480,6 +482,18 @@ TEST(FillHole, AFourSidedHoleWhoseRatiosDisagreeFillsWithFittedSidesWithinATenth
         if (s.doc.joins[c.join].fitted) worstFitted = std::max(worstFitted, c.normalAngleDeg);
     EXPECT_GT(worstFitted, 0.0);
     std::printf("fitted seams' worst angle after filling: %.3g°\n", worstFitted);
+    // data/fitted_fill.patchwork is this fill, the example the drag benchmark opens (rewritten
+    // when PATCHWORK_REGENERATE_DATA is set; compared within rounding, as compilers round apart).
+    const std::filesystem::path example = test::dataDir() / "fitted_fill.patchwork";
+    if (std::getenv("PATCHWORK_REGENERATE_DATA")) {
+        std::ofstream out(example, std::ios::binary);
+        out << serializeDocument(s.doc);
+    }
+    const Document stored = parseDocument(test::readBytes(example), example.string());
+    EXPECT_EQ(stored.joins.size(), s.doc.joins.size());
+    EXPECT_EQ(std::count_if(stored.joins.begin(), stored.joins.end(), [](const Join& j) { return j.fitted; }), 8);
+    ASSERT_EQ(stored.points.size(), s.doc.points.size());
+    for (size_t i = 0; i < stored.points.size(); ++i) EXPECT_LE(glm::length(stored.points[i] - s.doc.points[i]), 1e-9) << "point " << i;
 
     const uint32_t first = uint32_t(open.patches.size());
     const uint32_t centre = s.doc.patches[first].idx[15], inner = s.doc.patches[first + 1].idx[5];

@@ -294,6 +294,9 @@ void DragController::setSoftRadius(const Document& doc, double radius) {
 }
 
 void DragController::setUp(const Document& doc) {
+    fittedJoins_.clear();
+    for (size_t j = 0; j < doc.joins.size(); ++j)
+        if (doc.joins[j].fitted && quadJoin(doc.joins[j])) fittedJoins_.push_back(j);
     TransformSetup t = setUpTransform(doc, moved_, soft_, symmetry_);
     softPoints_ = std::move(t.soft);
     pairs_ = std::move(t.pairs);

@@ -141,6 +141,7 @@ private:
     // The fill's fitted seams (core/ops/fitted_sides) the last update took past 0.1°: named in
     // status(), and finish() then puts every point back instead of committing.
     std::string fittedOut_;
+    std::vector<size_t> fittedJoins_;  // the document's fitted joins, found at the start
     TransformKind kind_ = TransformKind::Move;
     Vec3 anchor_{0.0};
     Vec3 planeNormal_{0.0, 0.0, 1.0};

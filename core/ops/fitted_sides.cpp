@@ -94,10 +94,15 @@ Join fittedJoin(const Document& doc, uint32_t patch, Edge edge, bool walkedRever
     return jn;
 }
 
-std::string fittedJoinsOutOfTolerance(const Document& doc) {
+std::string fittedJoinsOutOfTolerance(const Document& doc, const std::vector<size_t>& only) {
     std::vector<size_t> fitted;
-    for (size_t j = 0; j < doc.joins.size(); ++j)
-        if (doc.joins[j].fitted) fitted.push_back(j);
+    if (only.empty()) {
+        for (size_t j = 0; j < doc.joins.size(); ++j)
+            if (doc.joins[j].fitted) fitted.push_back(j);
+    } else {
+        for (size_t j : only)
+            if (j < doc.joins.size() && doc.joins[j].fitted) fitted.push_back(j);
+    }
     if (fitted.empty()) return "";
     std::string out;
     for (const JoinContinuity& c : continuityReport(doc, 32, fitted)) {
