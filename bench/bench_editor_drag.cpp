@@ -134,8 +134,7 @@ BENCHMARK(BM_EditorDragMove_RoundedBox_SoftCentre)->Unit(benchmark::kMicrosecond
 
 // A 4-sided fill whose sides' tangent ratios disagree (issue 40): data/fitted_fill.patchwork, a
 // bent ring of uneven widths filled with fitted joins, which a drag measures by angle as well as
-// holding their rows. A hole corner (two fitted seams' patches move) and a ring point away from the
-// fill (none: nothing is measured).
+// holding their rows (only those whose patches the drag moved). A hole corner and the fill's centre.
 void BM_EditorDragMove_FittedFill_HoleCorner(benchmark::State& state) {
     const pw::Document doc = pw::loadDocument(PATCHWORK_DATA_DIR "/fitted_fill.patchwork");
     runDragOn(state, doc, {doc.patches[14].idx[0]}, pw::TransformKind::Move, {});

@@ -22,6 +22,7 @@
 #include "core/io/bpt_format.hpp"
 #include "core/io/patchwork_format.hpp"
 #include "core/model/camera_math.hpp"
+#include "core/model/topology.hpp"
 #include "core/ops/fill_hole.hpp"
 #include "core/solve/constraint_solver.hpp"
 #include "core/solve/continuity_report.hpp"
@@ -523,12 +524,36 @@ TEST(FillHole, AFourSidedHoleWhoseRatiosDisagreeFillsWithFittedSidesWithinATenth
     s.sel.points = {holeCorner};
     const auto at = projectToPixel(viewMatrices(view.camera, 800.0 / 600.0), s.doc.points[holeCorner], 800, 600);
     ASSERT_TRUE(at.has_value());
+    DragController nudge;  // a small move commits
+    ASSERT_TRUE(nudge.begin(s.doc, s.sel, view, at->x, at->y, false));
+    ASSERT_TRUE(nudge.update(s.doc, view, at->x + 2.0, at->y - 1.0, false));
+    EXPECT_EQ(nudge.status().find("fitted seam"), std::string::npos) << nudge.status();
+    nudge.finish(s);
+    EXPECT_NE(s.doc.points, held.points);
+    expectG1(s.doc, "after a small drag");
+    test::runEditScript(s, "undo");
+    EXPECT_EQ(s.doc, held);
     DragController drag;
     ASSERT_TRUE(drag.begin(s.doc, s.sel, view, at->x, at->y, false));
     ASSERT_TRUE(drag.update(s.doc, view, at->x + 60.0, at->y - 90.0, false));
     EXPECT_NE(drag.status().find("past the 0.1° a fitted seam keeps"), std::string::npos) << drag.status();
     drag.finish(s);
     EXPECT_EQ(s.doc, held);
+    // Made C0 by hand, a fitted side is an ordinary join again, and the file still reopens.
+    {
+        EditSession c;
+        c.doc = held;
+        const auto f = std::find_if(held.joins.begin(), held.joins.end(), [](const Join& j) { return j.fitted; });
+        ASSERT_NE(f, held.joins.end());
+        runCommandLine(c, host,
+                       "join " + std::to_string(f->patchA) + ":" + std::string(edgeName(f->edgeA)) + " " + std::to_string(f->patchB) + ":" +
+                           std::string(edgeName(f->edgeB)) + " C0");
+        const int j = findJoin(c.doc, f->patchA, f->edgeA);
+        ASSERT_GE(j, 0);
+        EXPECT_EQ(c.doc.joins[size_t(j)].continuity, Continuity::C0);
+        EXPECT_FALSE(c.doc.joins[size_t(j)].fitted);
+        EXPECT_NO_THROW(parseDocument(serializeDocument(c.doc), "c0.patchwork"));
+    }
     test::runEditScript(s, "undo; undo; undo; undo; undo");
     EXPECT_EQ(s.doc, open);
 }

@@ -273,13 +273,29 @@ bool DragController::update(Document& doc, const DragView& view, double x, doubl
     applySymmetry(doc.points, pairs_, symmetry_);
     if (!doc.constructions.empty()) rerunConstructions(doc);  // the surfaces follow their inputs
     projection_ = solver_->project(doc.points);
-    fittedOut_.clear();
-    if (std::any_of(doc.joins.begin(), doc.joins.end(), [](const Join& j) { return j.fitted; }))
-        fittedOut_ = fittedJoinsOutOfTolerance(doc);
+    fittedOut_ = fittedSeamsPast(doc);
     takeChangedPoints(uploaded_, doc.points, changed_);
     lastMoved_ = 0;
     for (size_t i = 0; i < doc.points.size(); ++i) lastMoved_ += doc.points[i] != start_[i] ? 1 : 0;
     return true;
+}
+
+std::string DragController::fittedSeamsPast(const Document& doc) const {
+    // Only the fitted seams whose patches this drag moved are measured again; a document whose
+    // fitted seams were past 0.1° when the drag began is held to getting no worse instead.
+    std::vector<size_t> touched;
+    for (size_t j : fittedJoins_) {
+        const Join& jn = doc.joins[j];
+        const auto moved = [&](uint32_t p) {
+            return std::any_of(doc.patches[p].idx.begin(), doc.patches[p].idx.end(),
+                               [&](uint32_t i) { return doc.points[i] != start_[i]; });
+        };
+        if (moved(jn.patchA) || moved(jn.patchB)) touched.push_back(j);
+    }
+    if (touched.empty()) return "";
+    if (fittedWorstAtStart_ > kFittedJoinDegrees)
+        return worstFittedAngle(doc, touched) > fittedWorstAtStart_ * (1.0 + 1e-9) ? fittedJoinsOutOfTolerance(doc, touched) : "";
+    return fittedJoinsOutOfTolerance(doc, touched);
 }
 
 void DragController::setSoftRadius(const Document& doc, double radius) {
@@ -297,6 +313,7 @@ void DragController::setUp(const Document& doc) {
     fittedJoins_.clear();
     for (size_t j = 0; j < doc.joins.size(); ++j)
         if (doc.joins[j].fitted && quadJoin(doc.joins[j])) fittedJoins_.push_back(j);
+    fittedWorstAtStart_ = fittedJoins_.empty() ? 0.0 : worstFittedAngle(doc, fittedJoins_);
     TransformSetup t = setUpTransform(doc, moved_, soft_, symmetry_);
     softPoints_ = std::move(t.soft);
     pairs_ = std::move(t.pairs);
@@ -409,7 +426,9 @@ std::string HeldPointEdit::set(EditSession& session, uint32_t point, const Vec3&
 }
 
 void HeldPointEdit::finish(EditSession& session) {
-    if (projection_.ok()) return session.commit("Edit point");
+    const bool fittedPast = std::any_of(session.doc.joins.begin(), session.doc.joins.end(), [](const Join& j) { return j.fitted; }) &&
+                            !fittedJoinsOutOfTolerance(session.doc).empty() && fittedJoinsOutOfTolerance(session.committed()).empty();
+    if (projection_.ok() && !fittedPast) return session.commit("Edit point");
     session.doc = session.committed();
     session.changed(false);
 }

@@ -142,6 +142,8 @@ private:
     // status(), and finish() then puts every point back instead of committing.
     std::string fittedOut_;
     std::vector<size_t> fittedJoins_;  // the document's fitted joins, found at the start
+    double fittedWorstAtStart_ = 0.0;  // their worst angle then
+    std::string fittedSeamsPast(const Document& doc) const;
     TransformKind kind_ = TransformKind::Move;
     Vec3 anchor_{0.0};
     Vec3 planeNormal_{0.0, 0.0, 1.0};

@@ -203,6 +203,7 @@ std::string makeG1Corner(Document& doc, uint32_t p, int cu, int cv, bool allSeam
                             " – patch " + std::to_string(jn.patchB) + " " + std::string(edgeName(jn.edgeB)) +
                             ") does not turn one way around the corner at " + fmt(at) + ": its two sides lie over each other there");
         jn.continuity = Continuity::G1;
+        jn.fitted = false;
         jn.alpha = alpha;
         jn.alphaEnd = 0.0;
         jn.beta2 = 0.0;

@@ -83,7 +83,7 @@ std::vector<std::optional<std::array<double, 2>>> sideRatios(const Document& doc
     for (size_t k = 0; k < n; ++k) {
         const size_t km = (k + n - 1) % n, kp = (k + 1) % n;
         const auto a = ratio(h[k][0], 0, h[km][1], 3, 2), b = ratio(h[k][1], 3, h[kp][0], 0, 1);
-        if (a && b && *a > 0.0 && *b > 0.0) out[k] = std::array<double, 2>{*a, *b};
+        if (a && b) out[k] = std::array<double, 2>{*a, *b};
     }
     return out;
 }
@@ -226,8 +226,13 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
     const auto ratios = sideRatios(doc, h);
     bool fitted = false;
     std::vector<std::array<double, 2>> sideEnds;
-    if (n == 4 && curveSides == 0 && twoEdgeSides == 0 &&
-        std::all_of(ratios.begin(), ratios.end(), [](const auto& r) { return r.has_value(); }))
+    // (Positive ratios, and hole corners the sides share: the fill's joins are made directly, not
+    // through joinEdges, which would merge a corner's copies.)
+    bool shared = true;
+    for (size_t k = 0; k < n && curveSides == 0 && twoEdgeSides == 0; ++k)
+        shared = shared && h[k][0].idx(doc, 0) == h[(k + n - 1) % n][1].idx(doc, 3);
+    if (n == 4 && curveSides == 0 && twoEdgeSides == 0 && shared &&
+        std::all_of(ratios.begin(), ratios.end(), [](const auto& r) { return r && (*r)[0] > 0.0 && (*r)[1] > 0.0; }))
         for (const auto& r : ratios) sideEnds.push_back(*r), fitted = fitted || ratiosDisagree(*r);
     const std::vector<FittedSide> fit = fitted ? fitSides(sideEnds) : std::vector<FittedSide>{};
     // The fill's rows beside half side `half` of side k, walked from its hole corner.

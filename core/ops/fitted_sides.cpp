@@ -94,7 +94,9 @@ Join fittedJoin(const Document& doc, uint32_t patch, Edge edge, bool walkedRever
     return jn;
 }
 
-std::string fittedJoinsOutOfTolerance(const Document& doc, const std::vector<size_t>& only) {
+namespace {
+
+std::vector<size_t> fittedOf(const Document& doc, const std::vector<size_t>& only) {
     std::vector<size_t> fitted;
     if (only.empty()) {
         for (size_t j = 0; j < doc.joins.size(); ++j)
@@ -103,6 +105,21 @@ std::string fittedJoinsOutOfTolerance(const Document& doc, const std::vector<siz
         for (size_t j : only)
             if (j < doc.joins.size() && doc.joins[j].fitted) fitted.push_back(j);
     }
+    return fitted;
+}
+
+}  // namespace
+
+double worstFittedAngle(const Document& doc, const std::vector<size_t>& only) {
+    const std::vector<size_t> fitted = fittedOf(doc, only);
+    double worst = 0.0;
+    if (!fitted.empty())
+        for (const JoinContinuity& c : continuityReport(doc, 32, fitted)) worst = std::max(worst, c.normalAngleDeg);
+    return worst;
+}
+
+std::string fittedJoinsOutOfTolerance(const Document& doc, const std::vector<size_t>& only) {
+    const std::vector<size_t> fitted = fittedOf(doc, only);
     if (fitted.empty()) return "";
     std::string out;
     for (const JoinContinuity& c : continuityReport(doc, 32, fitted)) {

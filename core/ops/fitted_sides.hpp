@@ -48,6 +48,9 @@ std::array<Vec3, 4> fittedRow(const std::array<Vec3, 4>& edge, const std::array<
 Join fittedJoin(const Document& doc, uint32_t patch, Edge edge, bool walkedReversed, uint32_t fill, Edge fillEdge, double a0, double a1,
                 const std::array<double, 3>& shear);
 
+// The largest measured normal angle of the fitted joins (of `only`, when given), 0 when none.
+double worstFittedAngle(const Document& doc, const std::vector<size_t>& only = {});
+
 // The fitted joins (of `only`, when given) whose measured normal angle exceeds kFittedJoinDegrees,
 // described with their angles ("join 12 (…) at 0.14°"); "" when none does.
 std::string fittedJoinsOutOfTolerance(const Document& doc, const std::vector<size_t>& only = {});
