@@ -292,10 +292,7 @@ std::string DragController::fittedSeamsPast(const Document& doc) const {
         };
         if (moved(jn.patchA) || moved(jn.patchB)) touched.push_back(j);
     }
-    if (touched.empty()) return "";
-    if (fittedWorstAtStart_ > kFittedJoinDegrees)
-        return worstFittedAngle(doc, touched) > fittedWorstAtStart_ * (1.0 + 1e-9) ? fittedJoinsOutOfTolerance(doc, touched) : "";
-    return fittedJoinsOutOfTolerance(doc, touched);
+    return touched.empty() ? "" : fittedJoinsWorsened(doc, doc, touched, fittedWorstAtStart_);
 }
 
 void DragController::setSoftRadius(const Document& doc, double radius) {
@@ -426,8 +423,7 @@ std::string HeldPointEdit::set(EditSession& session, uint32_t point, const Vec3&
 }
 
 void HeldPointEdit::finish(EditSession& session) {
-    const bool fittedPast = std::any_of(session.doc.joins.begin(), session.doc.joins.end(), [](const Join& j) { return j.fitted; }) &&
-                            !fittedJoinsOutOfTolerance(session.doc).empty() && fittedJoinsOutOfTolerance(session.committed()).empty();
+    const bool fittedPast = !fittedJoinsWorsened(session.committed(), session.doc).empty();  // as EditSession::apply holds them
     if (projection_.ok() && !fittedPast) return session.commit("Edit point");
     session.doc = session.committed();
     session.changed(false);

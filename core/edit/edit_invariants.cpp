@@ -27,10 +27,8 @@ std::string number(double v) {
 // measured angle within kFittedJoinDegrees; an edit may not take one past that (a document read
 // with one past it already may be edited as long as the worst gets no worse).
 void checkFittedAngles(const Document& before, const Document& after) {
-    const std::string out = fittedJoinsOutOfTolerance(after);
+    const std::string out = fittedJoinsWorsened(before, after);
     if (out.empty()) return;
-    const double was = worstFittedAngle(before);
-    if (was > kFittedJoinDegrees && worstFittedAngle(after) <= was * (1.0 + 1e-9)) return;
     throw EditError("refused: it would leave " + out + ", beyond the " + number(kFittedJoinDegrees) +
                     "° a fill's fitted seam keeps; move less, or unjoin that seam first");
 }

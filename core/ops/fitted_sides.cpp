@@ -133,5 +133,13 @@ std::string fittedJoinsOutOfTolerance(const Document& doc, const std::vector<siz
     return out;
 }
 
+std::string fittedJoinsWorsened(const Document& before, const Document& after, const std::vector<size_t>& only, double wasWorst) {
+    const std::string out = fittedJoinsOutOfTolerance(after, only);
+    if (out.empty()) return "";
+    const double was = wasWorst >= 0.0 ? wasWorst : worstFittedAngle(before, only);
+    if (was > kFittedJoinDegrees && worstFittedAngle(after, only) <= was * (1.0 + 1e-9)) return "";
+    return out;
+}
+
 }  // namespace ops
 }  // namespace pw

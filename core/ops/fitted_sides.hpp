@@ -55,5 +55,12 @@ double worstFittedAngle(const Document& doc, const std::vector<size_t>& only = {
 // described with their angles ("join 12 (…) at 0.14°"); "" when none does.
 std::string fittedJoinsOutOfTolerance(const Document& doc, const std::vector<size_t>& only = {});
 
+// What an edit from `before` to `after` may not do to the fitted joins (of `only`, when given):
+// take one past kFittedJoinDegrees, unless `wasWorst` (their worst angle before; measured from
+// `before` when negative) was past it already and the worst gets no worse. The joins it leaves
+// past, described as fittedJoinsOutOfTolerance does; "" when the edit may stand.
+std::string fittedJoinsWorsened(const Document& before, const Document& after, const std::vector<size_t>& only = {},
+                                double wasWorst = -1.0);
+
 }  // namespace ops
 }  // namespace pw
