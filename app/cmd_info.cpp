@@ -140,6 +140,7 @@ int runInfo(const InfoOptions& opt) {
                              {"shear", jn.shear},
                              {"alphaEnd", jn.alphaEnd},
                              {"fitted", jn.fitted},
+                             {"fittedSpan", jn.fittedSpan},
                              {"c0Gap", c.c0Gap},
                              {"c1Residual", c.c1Residual},
                              {"c2Residual", c.c2Residual},

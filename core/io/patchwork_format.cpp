@@ -293,6 +293,7 @@ json documentToJson(const Document& doc) {
         if (jn.shear != std::array<double, 3>{}) joins.back()["shear"] = jn.shear;
         if (jn.alphaEnd != 0.0) joins.back()["alpha_end"] = jn.alphaEnd;
         if (jn.fitted) joins.back()["fitted"] = true;
+        if (jn.fittedSpan != std::array<double, 2>{0.0, 1.0}) joins.back()["fitted_span"] = jn.fittedSpan;
     }
     j["joins"] = std::move(joins);
 
@@ -472,6 +473,12 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
             r.optional(o, path, "alpha_end",
                        [&](const json& x, const std::string& p) { jn.alphaEnd = r.numberInRange(x, p, 0, 1e6, true); });
             r.optional(o, path, "fitted", [&](const json& x, const std::string& p) { jn.fitted = r.boolean(x, p); });
+            r.optional(o, path, "fitted_span", [&](const json& x, const std::string& p) {
+                const json& a = r.array(x, p, 2, "the part's two ends");
+                if (a.size() != 2) r.fail(p, "expected the part's two ends [t0, t1], got " + std::to_string(a.size()) + " numbers");
+                for (size_t k = 0; k < 2; ++k) jn.fittedSpan[k] = r.numberInRange(a[k], at(p, k), 0, 1, false);
+                if (!(jn.fittedSpan[0] < jn.fittedSpan[1])) r.fail(p, "the part [t0, t1] needs t0 < t1");
+            });
             if (joinHasTriangle(jn) && jn.continuity != Continuity::C0 && jn.continuity != Continuity::G1)
                 r.fail(at(path, "continuity"), "a join with a triangle's edge is C0 or G1");
             if (jn.shear != std::array<double, 3>{} && jn.continuity != Continuity::G1)
@@ -480,6 +487,8 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
                 r.fail(at(path, "alpha_end"), "only a G1 join's ratio varies along its seam");
             if (jn.fitted && (jn.continuity != Continuity::G1 || joinHasTriangle(jn)))
                 r.fail(at(path, "fitted"), "only a G1 join between patch edges is fitted");
+            if (!jn.fitted && jn.fittedSpan != std::array<double, 2>{0.0, 1.0})
+                r.fail(at(path, "fitted_span"), "only a fitted join is restricted to a part of its first edge");
             if (jn.patchA == jn.patchB && jn.edgeA == jn.edgeB) r.fail(path, "a join cannot connect an edge to itself");
         }
     }

@@ -172,8 +172,11 @@ struct Join {
     double alphaEnd = 0.0;          // α at A's point 3 when it differs from `alpha` there (G1 only; 0: constant α)
     // G1 only, a fill's side whose two ends ask different ratios (core/ops/fill_hole): the rows let
     // the identity's middle coefficient go, which no bicubic fill can meet (DESIGN §14), and the
-    // seam is held to kFittedJoinDegrees by its measured angle instead.
+    // seam is held to kFittedJoinDegrees by its measured angle instead. A split restricts such a
+    // join to a part [t0, t1] of the edge it was made on (A's parameter): the let-go term is then
+    // that part of the first's, and the rows hold the identity's coefficients along it.
     bool fitted = false;
+    std::array<double, 2> fittedSpan{0.0, 1.0};
     bool operator==(const Join&) const = default;
 };
 // The largest normal angle a fitted join may reach (the Class-A figure for bicubic surfaces).

@@ -67,7 +67,7 @@ bool collapsed(const uint32_t (&e)[4]) { return e[0] == e[1] && e[1] == e[2] && 
 
 void appendTangentRows(const Join& join, const JoinPoints& jp, uint32_t ji, std::vector<ConstraintRow>& rows) {
     const double alpha = join.alpha;
-    if (!hasShear(join)) {
+    if (!hasShear(join) && !join.fitted) {
         for (int k = 0; k < 4; ++k) {
             const bool aFlat = jp.a1[k] == jp.a0[k], bFlat = jp.b1[k] == jp.b0[k];
             if (aFlat != bFlat) continue;  // one side's tangent collapsed onto the boundary point
@@ -77,10 +77,10 @@ void appendTangentRows(const Join& join, const JoinPoints& jp, uint32_t ji, std:
         return;
     }
     // A sheared G1 join (core/solve/sheared_joins.hpp): the degree-4 identity's five coefficients
-    // (a fitted join's four: the middle one is let go).
+    // (a fitted join's four, or a part's three: those orthogonal to what it lets go).
+    std::array<std::vector<std::pair<uint32_t, double>>, 5> coefficient;
     for (int l = 0; l <= 4; ++l) {
-        if (join.fitted && l == 2) continue;
-        std::vector<std::pair<uint32_t, double>> terms;
+        std::vector<std::pair<uint32_t, double>>& terms = coefficient[size_t(l)];
         for (int k = 0; k < 4; ++k) {
             const double w = elevationWeight(l, k);
             const double a = alpha * alphaWeight(l, k, 0) + endAlpha(join) * alphaWeight(l, k, 1);  // α(t)·(A0 − A1)
@@ -93,6 +93,12 @@ void appendTangentRows(const Join& join, const JoinPoints& jp, uint32_t ji, std:
             const double w = join.shear[size_t(i)] * shearWeight(i, j);
             terms.insert(terms.end(), {{jp.a0[j + 1], -w}, {jp.a0[j], w}});
         }
+    }
+    for (const std::array<double, 5>& held : heldCoefficients(join)) {
+        std::vector<std::pair<uint32_t, double>> terms;
+        for (size_t l = 0; l <= 4; ++l)
+            if (held[l] != 0.0)
+                for (const auto& [idx, c] : coefficient[l]) terms.emplace_back(idx, c * held[l]);
         ConstraintRow row = makeRow(std::move(terms), ji);
         if (!row.terms.empty()) rows.push_back(std::move(row));
     }

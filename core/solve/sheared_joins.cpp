@@ -1,5 +1,8 @@
 #include "core/solve/sheared_joins.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include <Eigen/Dense>
 
 #include "core/solve/solver_constraints.hpp"
@@ -23,8 +26,60 @@ double alphaWeight(int l, int k, int end) {
     return k == l - 1 ? l / 4.0 : 0.0;                              // t·B³_k = (k+1)/4 B⁴_(k+1)
 }
 
+std::array<double, 5> fittedWeights(const Join& join) {
+    // B⁴₂(t) = 6 t²(1−t)²: its blossom at (x1..x4) sums x_i x_j (1−x_k)(1−x_l) over the six ways
+    // of choosing i, j; coefficient l on [t0, t1] is the blossom at t0 (4 − l times) and t1 (l times).
+    const auto [t0, t1] = join.fittedSpan;
+    std::array<double, 5> w{};
+    for (int l = 0; l <= 4; ++l) {
+        double x[4];
+        for (int i = 0; i < 4; ++i) x[i] = i < 4 - l ? t0 : t1;
+        for (int i = 0; i < 4; ++i)
+            for (int j = i + 1; j < 4; ++j) {
+                double term = x[i] * x[j];
+                for (int k = 0; k < 4; ++k)
+                    if (k != i && k != j) term *= 1.0 - x[k];
+                w[size_t(l)] += term;
+            }
+    }
+    return w;
+}
+
+std::vector<std::array<double, 5>> heldCoefficients(const Join& join) {
+    std::vector<std::array<double, 5>> letGo, held;
+    if (join.fitted) letGo = {{0, 0, 1, 0, 0}, fittedWeights(join)};
+    auto dot = [](const std::array<double, 5>& a, const std::array<double, 5>& b) {
+        double d = 0.0;
+        for (size_t l = 0; l < 5; ++l) d += a[l] * b[l];
+        return d;
+    };
+    // Gram–Schmidt: what is let go first (an orthonormal basis of it), then the unit coefficients
+    // in order, each less its parts along everything before; those that remain are held.
+    std::vector<std::array<double, 5>> basis;
+    auto add = [&](std::array<double, 5> v) {
+        for (const auto& b : basis) {
+            const double d = dot(v, b);
+            for (size_t l = 0; l < 5; ++l) v[l] -= d * b[l];
+        }
+        const double norm = std::sqrt(dot(v, v));
+        if (norm < 1e-9) return false;
+        for (double& x : v) x /= norm;
+        basis.push_back(v);
+        return true;
+    };
+    for (const auto& v : letGo) add(v);
+    for (size_t l = 0; l < 5; ++l) {
+        std::array<double, 5> unit{};
+        unit[l] = 1.0;
+        if (add(unit)) held.push_back(basis.back());
+    }
+    return held;
+}
+
 Join restrictedJoin(const Join& join, double from, double to) {
     Join out = join;
+    const double s0 = join.fittedSpan[0], s1 = join.fittedSpan[1];
+    out.fittedSpan = {s0 + from * (s1 - s0), s0 + to * (s1 - s0)};
     const double a0 = join.alpha, a1 = endAlpha(join);
     out.alpha = a0 + from * (a1 - a0);
     out.alphaEnd = a0 + to * (a1 - a0);
@@ -48,7 +103,6 @@ std::optional<ShearFit> fitShear(const Document& doc, const Join& join) {
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(15);
     for (int l = 0; l <= 4; ++l)
         for (int c = 0; c < 3; ++c) {
-            if (join.fitted && l == 2) continue;  // a fitted join lets its middle coefficient go
             const int r = l * 3 + c;
             for (int k = 0; k < 4; ++k) {
                 const double w = elevationWeight(l, k);
@@ -68,6 +122,18 @@ std::optional<ShearFit> fitShear(const Document& doc, const Join& join) {
                 M(r, shearColumn + i) += shearWeight(i, j) * (P[jp.a0[j + 1]][c] - P[jp.a0[j]][c]);
             }
         }
+    if (join.fitted) {  // only the combinations the solver holds
+        const auto held = heldCoefficients(join);
+        Eigen::MatrixXd M2 = Eigen::MatrixXd::Zero(15, unknowns);
+        Eigen::VectorXd rhs2 = Eigen::VectorXd::Zero(15);
+        for (size_t h = 0; h < held.size(); ++h)
+            for (int l = 0; l <= 4; ++l)
+                for (int c = 0; c < 3; ++c) {
+                    M2.row(int(h) * 3 + c) += held[h][size_t(l)] * M.row(l * 3 + c);
+                    rhs2(int(h) * 3 + c) += held[h][size_t(l)] * rhs(l * 3 + c);
+                }
+        M = M2, rhs = rhs2;
+    }
     const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(M);
     if (qr.rank() < unknowns) return std::nullopt;
     const Eigen::VectorXd x = qr.solve(rhs);

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <optional>
+#include <vector>
 
 #include "core/model/document.hpp"
 
@@ -32,6 +33,18 @@ double elevationWeight(int l, int k);
 
 // Weight of α0 (end 0) or α1 (end 1) times A's cross difference A0k − A1k in degree-4 row l.
 double alphaWeight(int l, int k, int end);
+
+// The Bernstein coefficients, along the join, of the term a fitted join lets go: its rows hold the
+// identity's five coefficients only in proportion to these. (0, 0, 1, 0, 0) for a join as a fill
+// made it; a part [t0, t1] of it (Join::fittedSpan) has B⁴₂ restricted there (blossoms).
+std::array<double, 5> fittedWeights(const Join& join);
+
+// The combinations of the identity's five coefficients that a join's rows hold: the five
+// themselves, or for a fitted join those orthogonal to what it lets go — the middle coefficient
+// and, for a part a split cut (fittedSpan), that part of the term too (fittedWeights), which the
+// part's free middle cannot absorb once either side moves. Orthonormal, so the rows keep the
+// coefficients' scale.
+std::vector<std::array<double, 5>> heldCoefficients(const Join& join);
 
 // A leaning join restricted to the part [from, to] of its edge (A's parameter), exactly: α(t) is
 // linear and β(t) quadratic there too (β over the shorter edge's differences, so divided by its
