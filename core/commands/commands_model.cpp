@@ -357,7 +357,8 @@ void addModelCommands(CommandTable& t) {
                    "curve of one segment (cN), in order round the hole: one patch per hole corner, meeting at a centre, G1 to every "
                    "surrounding patch and to each other, held live like any join. A side of one edge is split at its middle first "
                    "(through its ring; no join is dropped), a curve too (the fill shares its points: move them and the fill's edge "
-                   "follows); a 5- or 6-sided fill is split 2×2 at its centre. With `triangle`, three sides of one cubic each "
+                   "follows). Where a side's two ends ask different tangent ratios, its joins are fitted: held within 0.1°. With "
+                   "`triangle`, three sides of one cubic each "
                    "(edges or curves) are filled by one Bézier triangle instead, G1 to every side that is a patch edge",
            .exec = execFillHole});
     t.add({.name = "tolerances",

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <set>
 #include <utility>
 
@@ -118,7 +119,7 @@ std::optional<CornerCycle> cornerCycle(const Document& doc, uint32_t p, int cu, 
     return std::nullopt;
 }
 
-std::string makeG1Corner(Document& doc, uint32_t p, int cu, int cv, bool allSeams, std::vector<std::pair<uint32_t, uint32_t>>* splits) {
+std::string makeG1Corner(Document& doc, uint32_t p, int cu, int cv, bool allSeams, bool split) {
     checkBezier(doc, p, "corner");
     std::optional<CornerCycle> cyc = cornerCycle(doc, p, cu, cv);
     if (!cyc)
@@ -140,7 +141,7 @@ std::string makeG1Corner(Document& doc, uint32_t p, int cu, int cv, bool allSeam
     std::string splitNote;
     bool leaning = false;  // split already: a seam leans here
     for (size_t j : cyc->joins) leaning = leaning || shearAt(doc, doc.joins[j], at, tol) != 0.0;
-    if (n >= 5 && !leaning) {
+    if (n >= 5 && !leaning && split) {
         // Five or six patches: the leaning seams need the freedom of a 2×2 split of each corner
         // patch (issue 40's prototype: one bicubic per face leaves 2 (n = 5) or 4 (n = 6)
         // boundary conditions unmet). Each cut runs through its ring, so no join is dropped.
@@ -150,7 +151,6 @@ std::string makeG1Corner(Document& doc, uint32_t p, int cu, int cv, bool allSeam
             for (bool alongU : {true, false}) {
                 if (cut.count({q, alongU})) continue;
                 for (const auto& [rc, second] : splitRing(doc, q, alongU, 0.5)) {
-                    if (splits) splits->emplace_back(rc.patch, second);
                     cut.insert({rc.patch, rc.alongU});
                     cut.insert({second, rc.alongU});
                 }
@@ -170,55 +170,124 @@ std::string makeG1Corner(Document& doc, uint32_t p, int cu, int cv, bool allSeam
     if (glm::length(normal) < 1e-6) throw EditError("the patches around the corner at " + fmt(at) + " do not face one way");
     normal = glm::normalize(normal);
     auto flat = [&](const Vec3& x) { return x - glm::dot(x, normal) * normal; };
-    size_t held = 0;
+    // Each seam's end at the corner (A's point 0 or 3), and its edge leg from the corner.
+    auto endOf = [&](const Join& jn) { return joinEndAt(doc, jn, at, tol) == 0 ? 0 : 3; };
+    auto legSlots = [&](const Join& jn) {
+        const int k = endOf(jn), kb = jn.reversed ? 3 - k : k;
+        return std::pair(size_t(edgeSlot(jn.edgeA, k == 0 ? 1 : 2, 0)), size_t(edgeSlot(jn.edgeB, kb == 0 ? 1 : 2, 0)));
+    };
+    // Where every seam continues one of ratio 1 through its far end (or none), the corner can
+    // also be held with every ratio 1: the seams' legs an affine image of a regular n-gon's spokes
+    // (l(i−1) + l(i+1) = 2 cos(2π/n)·l(i) round it), the one layout whose leans then close.
+    bool unitRatios = true;
     for (size_t j : cyc->joins) {
-        Join& jn = doc.joins[j];
-        if (!allSeams && !tangentOnly(jn.continuity)) continue;  // a C0 seam says nothing about tangents
-        ++held;
-        const Patch& A = doc.patches[jn.patchA];
-        const Patch& B = doc.patches[jn.patchB];
-        const int k = joinEndAt(doc, jn, at, tol) == 0 ? 0 : 3;
-        const int kb = jn.reversed ? 3 - k : k;
-        const Vec3 a0 = doc.points[A.idx[size_t(edgeSlot(jn.edgeA, k, 0))]];
-        const Vec3 aLeg = flat(doc.points[A.idx[size_t(edgeSlot(jn.edgeA, k, 1))]] - a0);
-        const Vec3 bLeg = flat(doc.points[B.idx[size_t(edgeSlot(jn.edgeB, kb, 1))]] - a0);
-        const Vec3 along = flat(k == 0 ? doc.points[A.idx[size_t(edgeSlot(jn.edgeA, 1, 0))]] - a0
-                                       : a0 - doc.points[A.idx[size_t(edgeSlot(jn.edgeA, 2, 0))]]);
-        // bLeg = −α·aLeg + s·along, in the tangent plane.
-        const double aa = glm::dot(aLeg, aLeg), ad = glm::dot(aLeg, along), dd = glm::dot(along, along);
-        const double det = aa * dd - ad * ad;
-        if (!(det > 1e-12 * aa * dd))
-            throw EditError("refused: at the corner at " + fmt(at) + " the edges beside join " + std::to_string(j) +
-                            " lie on one line (a patch there has lost its tangent plane), so the seams cannot turn round it G1");
-        // A seam that continues one through a regular corner at its far end keeps that seam's α
-        // (the rows there are singular unless it matches exactly) and only its lean β(0) is
-        // measured; else α and β(0) both, from the corner's edges in the plane.
         const auto ends = alphaAtEnds(doc, j);
-        const std::optional<double> far = k == 0 ? ends[1] : ends[0];
-        const double rb = -glm::dot(aLeg, bLeg), rd = glm::dot(along, bLeg);
-        const double alpha = far ? *far : (dd * rb + ad * rd) / det;
-        const double s = far ? glm::dot(bLeg + alpha * aLeg, along) / dd : (ad * rb + aa * rd) / det;
-        if (!(alpha > 0.02))
-            throw EditError("join " + std::to_string(j) + " (patch " + std::to_string(jn.patchA) + " " + std::string(edgeName(jn.edgeA)) +
-                            " – patch " + std::to_string(jn.patchB) + " " + std::string(edgeName(jn.edgeB)) +
-                            ") does not turn one way around the corner at " + fmt(at) + ": its two sides lie over each other there");
-        jn.continuity = Continuity::G1;
-        jn.fitted = false;
-        jn.alpha = alpha;
-        jn.alphaEnd = 0.0;
-        jn.beta2 = 0.0;
-        jn.shear[1] = 0.0;
-        jn.shear[k == 0 ? 0 : 2] = s;
+        const std::optional<double> far = endOf(doc.joins[j]) == 0 ? ends[1] : ends[0];
+        unitRatios = unitRatios && (!far || std::abs(*far - 1.0) < 1e-9);
     }
-    if (const Projection pr = projectConstraints(doc, {}); !pr.ok())
-        throw EditError("the corner of " + std::to_string(n) + " patches at " + fmt(at) + " cannot be held G1: " + conflictMessage(pr));
-    if (const std::string fold = foldMadeBy(base, doc); !fold.empty())
-        throw EditError("refused: the corner of " + std::to_string(n) + " patches at " + fmt(at) + " would hold G1 only by folding " +
-                        fold + "; round the corner first (fill-hole makes a rounded one)");
+    bool turnsBadly = false;  // the corner's edges lie on one line or over each other: no layout helps
+    auto badTurn = [&](const std::string& why) {
+        turnsBadly = true;
+        return EditError(why);
+    };
+    auto hold = [&](bool regular) {
+        if (regular) {
+            std::vector<Vec3> legs;
+            for (size_t j : cyc->joins) {
+                const Join& jn = doc.joins[j];
+                legs.push_back(flat(doc.points[doc.patches[jn.patchA].idx[legSlots(jn).first]] - at));
+            }
+            // P cos θi + Q sin θi, θi = ±2πi/n, fitted to the legs (least squares), the turn that fits better.
+            double best = -1.0;
+            std::vector<Vec3> laid;
+            for (double turn : {1.0, -1.0}) {
+                Vec3 P(0.0), Q(0.0);
+                for (size_t i = 0; i < n; ++i) {
+                    const double th = turn * 2.0 * std::numbers::pi * double(i) / double(n);
+                    P += legs[i] * (2.0 * std::cos(th) / double(n)), Q += legs[i] * (2.0 * std::sin(th) / double(n));
+                }
+                std::vector<Vec3> fit(n);
+                double err = 0.0;
+                for (size_t i = 0; i < n; ++i) {
+                    const double th = turn * 2.0 * std::numbers::pi * double(i) / double(n);
+                    fit[i] = P * std::cos(th) + Q * std::sin(th);
+                    err += glm::dot(fit[i] - legs[i], fit[i] - legs[i]);
+                }
+                if (best < 0.0 || err < best) best = err, laid = fit;
+            }
+            for (size_t i = 0; i < n; ++i) {
+                const Join& jn = doc.joins[cyc->joins[i]];
+                const auto [sa, sb] = legSlots(jn);
+                doc.points[doc.patches[jn.patchA].idx[sa]] = at + laid[i];
+                doc.points[doc.patches[jn.patchB].idx[sb]] = at + laid[i];
+            }
+        }
+        size_t held = 0;
+        for (size_t j : cyc->joins) {
+            Join& jn = doc.joins[j];
+            if (!allSeams && !tangentOnly(jn.continuity)) continue;  // a C0 seam says nothing about tangents
+            ++held;
+            const Patch& A = doc.patches[jn.patchA];
+            const Patch& B = doc.patches[jn.patchB];
+            const int k = joinEndAt(doc, jn, at, tol) == 0 ? 0 : 3;
+            const int kb = jn.reversed ? 3 - k : k;
+            const Vec3 a0 = doc.points[A.idx[size_t(edgeSlot(jn.edgeA, k, 0))]];
+            const Vec3 aLeg = flat(doc.points[A.idx[size_t(edgeSlot(jn.edgeA, k, 1))]] - a0);
+            const Vec3 bLeg = flat(doc.points[B.idx[size_t(edgeSlot(jn.edgeB, kb, 1))]] - a0);
+            const Vec3 along = flat(k == 0 ? doc.points[A.idx[size_t(edgeSlot(jn.edgeA, 1, 0))]] - a0
+                                           : a0 - doc.points[A.idx[size_t(edgeSlot(jn.edgeA, 2, 0))]]);
+            // bLeg = −α·aLeg + s·along, in the tangent plane.
+            const double aa = glm::dot(aLeg, aLeg), ad = glm::dot(aLeg, along), dd = glm::dot(along, along);
+            const double det = aa * dd - ad * ad;
+            if (!(det > 1e-12 * aa * dd))
+                throw badTurn("refused: at the corner at " + fmt(at) + " the edges beside join " + std::to_string(j) +
+                              " lie on one line (a patch there has lost its tangent plane), so the seams cannot turn round it G1");
+            // A seam that continues one through a regular corner at its far end keeps that seam's α
+            // (the rows there are singular unless it matches exactly) and only its lean β(0) is
+            // measured; else α and β(0) both, from the corner's edges in the plane.
+            const auto ends = alphaAtEnds(doc, j);
+            const std::optional<double> far = k == 0 ? ends[1] : ends[0];
+            const double rb = -glm::dot(aLeg, bLeg), rd = glm::dot(along, bLeg);
+            const double alpha = regular ? 1.0 : far ? *far : (dd * rb + ad * rd) / det;
+            const double s = regular || far ? glm::dot(bLeg + alpha * aLeg, along) / dd : (ad * rb + aa * rd) / det;
+            if (!(alpha > 0.02))
+                throw badTurn("join " + std::to_string(j) + " (patch " + std::to_string(jn.patchA) + " " + std::string(edgeName(jn.edgeA)) +
+                              " – patch " + std::to_string(jn.patchB) + " " + std::string(edgeName(jn.edgeB)) +
+                              ") does not turn one way around the corner at " + fmt(at) + ": its two sides lie over each other there");
+            jn.continuity = Continuity::G1;
+            jn.fitted = false;
+            jn.alpha = alpha;
+            jn.alphaEnd = 0.0;
+            jn.beta2 = 0.0;
+            jn.shear[1] = 0.0;
+            jn.shear[k == 0 ? 0 : 2] = s;
+        }
+        if (const Projection pr = projectConstraints(doc, {}); !pr.ok())
+            throw EditError("the corner of " + std::to_string(n) + " patches at " + fmt(at) + " cannot be held G1: " + conflictMessage(pr));
+        if (const std::string fold = foldMadeBy(base, doc); !fold.empty())
+            throw EditError("refused: the corner of " + std::to_string(n) + " patches at " + fmt(at) + " would hold G1 only by folding " +
+                            fold + "; round the corner first (fill-hole makes a rounded one)");
+        return held;
+    };
+    size_t held = 0;
+    std::string laidNote;
+    try {
+        held = hold(false);
+    } catch (const EditError&) {
+        if (!unitRatios || turnsBadly) throw;
+        doc = base;  // the measured leans do not close round it: every ratio 1, the legs laid regular
+        try {
+            held = hold(true);
+            laidNote = ", every ratio 1 and its edges there laid evenly round it";
+        } catch (const EditError&) {
+            doc = base;
+            held = hold(false);  // (throws its own reason)
+        }
+    }
     return "corner of " + std::to_string(n) + " patches at " + fmt(at) + ": " +
            (held == n ? "held G1, its " + std::to_string(n) + " seams"
                       : std::to_string(held) + " of its " + std::to_string(n) + " seams G1,") +
-           " leaning along their edges near it" + splitNote;
+           " leaning along their edges near it" + laidNote + splitNote;
 }
 
 std::array<std::optional<double>, 2> alphaAtEnds(const Document& doc, size_t j) {

@@ -39,10 +39,11 @@ std::optional<CornerCycle> cornerCycle(const Document& doc, uint32_t p, int cu, 
 // what it did for the status line ("corner of 3 patches at (0.58, 0.58, 0.58) held G1 …").
 // EditError, naming the cause, when the fan is open, has a G2 seam, a rational or spline patch, a
 // seam a construction makes, does not turn one way around the corner, or cannot hold (conflict,
-// fold). `splits`, when given, receives each patch the 2×2 split cut and the half it made, in the
-// order made (a half is cut after its whole).
-std::string makeG1Corner(Document& doc, uint32_t p, int cu, int cv, bool allSeams = true,
-                         std::vector<std::pair<uint32_t, uint32_t>>* splits = nullptr);
+// fold). Without `split`, five or six patches are held as they are (a fill's patches, free
+// inside, can be: core/ops/fill_hole). Where the leans measured from the corner's edges do not
+// close round it and every seam continues one of ratio 1 (or none), the corner is held with every
+// ratio 1 and its edges there laid evenly round it (an affine image of a regular n-gon's spokes).
+std::string makeG1Corner(Document& doc, uint32_t p, int cu, int cv, bool allSeams = true, bool split = true);
 
 // For a join just made or changed to C1/G1: at either end of its edge, a closed fan of 3, 5 or 6
 // patches with a C1/G1 seam that does not lean there yet has its C1/G1 seams made leaning G1 as

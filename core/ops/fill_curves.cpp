@@ -14,25 +14,6 @@
 namespace pw {
 inline namespace ops {
 
-namespace {
-
-// The points from `from` to `to` of an unjoined edge of a patch from `first` on, or none.
-std::optional<std::array<uint32_t, 4>> openEdgeIdx(const Document& d, uint32_t first, uint32_t from, uint32_t to) {
-    for (uint32_t p = first; p < d.patches.size(); ++p)
-        for (Edge e : {Edge::U0, Edge::V0, Edge::U1, Edge::V1}) {
-            const auto& I = d.patches[p].idx;
-            const uint32_t a = I[size_t(edgeSlot(e, 0))], b = I[size_t(edgeSlot(e, 3))];
-            if ((a != from || b != to) && (a != to || b != from)) continue;
-            if (findJoin(d, p, e) >= 0) continue;
-            std::array<uint32_t, 4> out;
-            for (int k = 0; k < 4; ++k) out[size_t(k)] = I[size_t(edgeSlot(e, a == from ? k : 3 - k))];
-            return out;
-        }
-    return std::nullopt;
-}
-
-}  // namespace
-
 // A curve of one polynomial cubic segment, not closed: a fill's side (or a triangle's).
 const BezierCurve& sideCurve(const Document& d, int32_t c, const std::string& side) {
     const std::string name = "curve c" + std::to_string(c);
@@ -71,37 +52,6 @@ void checkCurveSplittable(const Document& d, int32_t c) {
     if (!user.empty())
         throw EditError(name + " shares its points with " + user +
                         ", which the fill's split of the curve would leave behind; give the hole a curve of its own");
-}
-
-// After the fill's patches were split (a 5- or 6-sided centre), each half of curve c runs along
-// two fill edges whose points are new (exactly on it): the curve takes them as its segments, so the
-// fill shares its points again (the shape is the same: the split was de Casteljau's).
-void curveOntoSplitFill(Document& d, uint32_t c, uint32_t first) {
-    const std::vector<uint32_t> old = d.curves[c].idx;
-    std::vector<uint32_t> idx{old.front()};
-    for (size_t s = 0; s + 1 < old.size(); s += 3) {
-        const uint32_t from = old[s], to = old[s + 3];
-        bool found = false;
-        if (const auto whole = openEdgeIdx(d, first, from, to); whole && (*whole)[1] == old[s + 1] && (*whole)[2] == old[s + 2]) {
-            idx.insert(idx.end(), {old[s + 1], old[s + 2], to});
-            continue;
-        }
-        for (uint32_t p = first; p < d.patches.size() && !found; ++p)
-            for (Edge e : {Edge::U0, Edge::V0, Edge::U1, Edge::V1}) {
-                const auto& I = d.patches[p].idx;
-                for (int end = 0; end < 2 && !found; ++end) {
-                    if (I[size_t(edgeSlot(e, end ? 3 : 0))] != from) continue;
-                    const uint32_t mid = I[size_t(edgeSlot(e, end ? 0 : 3))];
-                    const auto one = openEdgeIdx(d, first, from, mid), two = openEdgeIdx(d, first, mid, to);
-                    if (!one || !two || mid == to) continue;
-                    idx.insert(idx.end(), {(*one)[1], (*one)[2], mid, (*two)[1], (*two)[2], to});
-                    found = true;
-                }
-                if (found) break;
-            }
-        if (!found) throw std::logic_error("fill-hole: a curve's half is not two edges of the split fill");
-    }
-    d.curves[c].idx = std::move(idx);
 }
 
 }  // namespace ops

@@ -88,9 +88,8 @@ std::vector<std::optional<std::array<double, 2>>> sideRatios(const Document& doc
     return out;
 }
 
-}  // namespace
-
-std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
+// The fill; its sides fitted where their ends' ratios disagree and `mayFit` (`fittedOut` says so).
+std::string fillHoleIn(Document& doc, const std::vector<HoleSide>& sides, bool mayFit, bool& fittedOut) {
     const size_t n = sides.size();
     if (n < 3 || n > 6) throw EditError("fill-hole needs 3 to 6 sides, got " + std::to_string(n));
     const double tol = 1e-6 * std::max(modelSize(doc), 1e-300);
@@ -220,9 +219,8 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
     std::vector<double> alpha(n, 1.0);
     size_t curveSides = 0, twoEdgeSides = 0;
     for (const SideGeo& g : geo) curveSides += g.curve >= 0 ? 1 : 0, twoEdgeSides += g.single ? 0 : 1;
-    // A 4-sided hole of patch edges whose sides' two ends ask different ratios: α runs along each
-    // side and its joins are fitted (core/ops/fitted_sides). (With 3, 5 or 6 sides the centre's
-    // corner folds or, split 2×2, cannot hold the fitted rows: refused as before, DESIGN §14.)
+    // A hole of patch edges whose sides' two ends ask different ratios: α runs along each side and
+    // its joins are fitted (core/ops/fitted_sides).
     const auto ratios = sideRatios(doc, h);
     bool fitted = false;
     std::vector<std::array<double, 2>> sideEnds;
@@ -231,9 +229,10 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
     bool shared = true;
     for (size_t k = 0; k < n && curveSides == 0 && twoEdgeSides == 0; ++k)
         shared = shared && h[k][0].idx(doc, 0) == h[(k + n - 1) % n][1].idx(doc, 3);
-    if (n == 4 && curveSides == 0 && twoEdgeSides == 0 && shared &&
+    if (mayFit && curveSides == 0 && twoEdgeSides == 0 && shared &&
         std::all_of(ratios.begin(), ratios.end(), [](const auto& r) { return r && (*r)[0] > 0.0 && (*r)[1] > 0.0; }))
         for (const auto& r : ratios) sideEnds.push_back(*r), fitted = fitted || ratiosDisagree(*r);
+    fittedOut = fitted;
     const std::vector<FittedSide> fit = fitted ? fitSides(sideEnds) : std::vector<FittedSide>{};
     // The fill's rows beside half side `half` of side k, walked from its hole corner.
     auto fittedRowOf = [&](size_t k, int half) {
@@ -400,38 +399,10 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
             throw EditError("refused: the fill's seams would hold G1 only by folding " + fold);
         corners += "; its corner of 4 patches is regular: plain G1 joins hold it";
     } else {
-        // A 5- or 6-sided centre needs its patches split 2×2 (core/ops/corner_ops). Split here, so
-        // that the rest of each seam between the fill's own pieces, out to its side, is made G1
-        // first and the centre's seams then continue it (with the ratio it has there); the split
-        // runs on through the surroundings, whose own C0 creases stay as they are.
-        std::vector<std::pair<uint32_t, uint32_t>> splits;
-        corners += "; " + makeG1Corner(doc, first, 1, 1, true, &splits);
-        // A 5- or 6-sided centre is split 2×2 and held by its leaning seams there. The rest of each
-        // seam between the fill's own pieces, out to its side, is made G1 too where it can hold
-        // (the split runs on through the surroundings, whose own C0 creases stay as they are).
-        std::vector<char> isFill(doc.patches.size(), 0);
-        for (uint32_t q = first; q < first + n; ++q) isFill[q] = 1;
-        for (const auto& [cutPatch, second] : splits)
-            if (isFill[cutPatch]) isFill[second] = 1;
-        for (size_t j = 0; j < doc.joins.size(); ++j) {
-            const Join& jn = doc.joins[j];
-            if (jn.continuity != Continuity::C0 || !quadJoin(jn) || !isFill[jn.patchA] || !isFill[jn.patchB]) continue;
-            Document tried = doc;
-            try {
-                setJoinContinuity(tried, j, Continuity::G1);
-                doc = std::move(tried);
-            } catch (const EditError&) {
-            }
-        }
-        const size_t creases = size_t(std::count_if(doc.joins.begin(), doc.joins.end(), [&](const Join& jn) {
-            return jn.continuity == Continuity::C0 && quadJoin(jn) && isFill[jn.patchA] && isFill[jn.patchB];
-        }));
-        if (creases > 0)
-            corners +=
-                "; " + std::to_string(creases) + " of the fill's inner seams stay C0 (G1 there would conflict with the centre's seams)";
-        if (n >= 5)
-            for (const SideGeo& g : geo)
-                if (g.curve >= 0) curveOntoSplitFill(doc, uint32_t(g.curve), first);
+        // A 3-, 5- or 6-sided centre is held by its leaning seams. The fill's patches are free
+        // inside, so five or six of them are held as they are, not split 2×2 as a corner of fixed
+        // patches is (core/ops/corner_ops): nothing round the hole is cut, and the fitted sides stay whole.
+        corners += "; " + makeG1Corner(doc, first, 1, 1, true, false);
     }
     if (fitted) {
         const Document beforeHeld = doc;
@@ -452,6 +423,31 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
                 (curveSides == 1 ? "" : "s") + " (each split at its middle)";
     if (splitCount > 0) note += "; split " + std::to_string(splitCount) + " patches at the middle of its sides";
     return note + corners;
+}
+
+}  // namespace
+
+std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
+    Document tried = doc;
+    bool fitted = false;
+    try {
+        std::string note = fillHoleIn(tried, sides, true, fitted);
+        doc = std::move(tried);
+        return note;
+    } catch (const EditError& e) {
+        if (!fitted) throw;
+        // Fitted sides past 0.1° (or folding): joins of one ratio each, where the surroundings can
+        // bend to meet them (they are not joined on); else the fitted reason, which names the sides.
+        tried = doc;
+        bool unused = false;
+        try {
+            std::string note = fillHoleIn(tried, sides, false, unused);
+            doc = std::move(tried);
+            return note;
+        } catch (const EditError&) {
+            throw e;
+        }
+    }
 }
 
 std::string fillHoleWithTriangle(Document& doc, const std::vector<HoleSide>& sides) {

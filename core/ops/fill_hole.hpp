@@ -4,10 +4,12 @@
 // middle and the fill shares its points (no join: the fill's edge is the curve; DESIGN §14). Each side is split at its middle (a side of
 // one edge: its patch is split there, the cut running on through its ring so no join is dropped), and one bicubic patch per hole corner
 // fills it, the n of them meeting at a centre: G1 to every surrounding patch, and G1 to each other through the corner construction of
-// core/ops/corner_ops (leaning seams; a 5- or 6-sided fill is split 2×2 there). Everything stays joins the live solver holds: drag the
-// surroundings and the fill follows, within the solver's residual. A 4-sided hole whose sides' two
-// ends ask different tangent ratios is filled with fitted joins (core/ops/fitted_sides): held
-// within 0.1°, as no bicubic fill can be exact there; with 3, 5 or 6 sides it is refused.
+// core/ops/corner_ops (leaning seams; the fill's patches, free inside, are not split there). Everything stays joins the live solver
+// holds: drag the surroundings and the fill follows, within the solver's residual. A hole whose
+// sides' two ends ask different tangent ratios is filled with fitted joins (core/ops/
+// fitted_sides): held within 0.1°, as no bicubic fill can be exact there; where that would take a
+// seam past 0.1°, the fill falls back to joins of one ratio each (where the surroundings can bend
+// to meet them), else it is refused naming the sides.
 #pragma once
 
 #include <cstdint>
