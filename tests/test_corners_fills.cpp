@@ -24,6 +24,7 @@
 #include "core/model/camera_math.hpp"
 #include "core/model/topology.hpp"
 #include "core/ops/fill_hole.hpp"
+#include "core/ops/patch_ops.hpp"
 #include "core/solve/constraint_solver.hpp"
 #include "core/solve/continuity_report.hpp"
 #include "core/solve/sheared_joins.hpp"
@@ -113,6 +114,17 @@ TEST(Corners, FiveAndSixPatchCornersAreSplitAndHeldG1) {
         expectG1(s.doc, "after moving the corner");
         test::runEditScript(s, "select point " + std::to_string(rim) + "; move 0 0 -0.1");
         expectG1(s.doc, "after moving a rim point");
+        // Flipping a patch whose edge a leaning seam runs along turns the seam's α and β round
+        // with it (β(t) → −β(1 − t)): no point moves, and the rows still hold.
+        size_t flips = 0;
+        for (const Join& j : s.doc.joins) {
+            if (!hasShear(j) || (j.edgeA != Edge::V0 && j.edgeA != Edge::V1)) continue;
+            Document flipped = s.doc;
+            flipPatch(flipped, j.patchA);
+            EXPECT_LE(maxConstraintResidual(flipped), 1e-9 * modelSize(s.doc)) << "patch " << j.patchA;
+            ++flips;
+        }
+        EXPECT_GT(flips, 0u);
     }
 }
 

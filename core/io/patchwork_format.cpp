@@ -293,7 +293,7 @@ json documentToJson(const Document& doc) {
         if (jn.shear != std::array<double, 3>{}) joins.back()["shear"] = jn.shear;
         if (jn.alphaEnd != 0.0) joins.back()["alpha_end"] = jn.alphaEnd;
         if (jn.fitted) joins.back()["fitted"] = true;
-        if (jn.fittedSpan != std::array<double, 2>{0.0, 1.0}) joins.back()["fitted_span"] = jn.fittedSpan;
+        if (jn.fitted && jn.fittedSpan != std::array<double, 2>{0.0, 1.0}) joins.back()["fitted_span"] = jn.fittedSpan;
     }
     j["joins"] = std::move(joins);
 
@@ -466,17 +466,13 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
             r.optional(o, path, "alpha", [&](const json& x, const std::string& p) { jn.alpha = r.numberInRange(x, p, 0, 1e6, true); });
             r.optional(o, path, "beta2", [&](const json& x, const std::string& p) { jn.beta2 = r.numberInRange(x, p, -1e6, 1e6, false); });
             r.optional(o, path, "shear", [&](const json& x, const std::string& p) {
-                const json& a = r.array(x, p, 3, "shear coefficients");
-                if (a.size() != 3) r.fail(p, "expected 3 shear coefficients, got " + std::to_string(a.size()));
-                for (size_t k = 0; k < 3; ++k) jn.shear[k] = r.numberInRange(a[k], at(p, k), -1e6, 1e6, false);
+                for (size_t k = 0; k < 3; ++k) jn.shear[k] = r.numberInRange(r.fixedArray(x, p, 3)[k], at(p, k), -1e6, 1e6, false);
             });
             r.optional(o, path, "alpha_end",
                        [&](const json& x, const std::string& p) { jn.alphaEnd = r.numberInRange(x, p, 0, 1e6, true); });
             r.optional(o, path, "fitted", [&](const json& x, const std::string& p) { jn.fitted = r.boolean(x, p); });
             r.optional(o, path, "fitted_span", [&](const json& x, const std::string& p) {
-                const json& a = r.array(x, p, 2, "the part's two ends");
-                if (a.size() != 2) r.fail(p, "expected the part's two ends [t0, t1], got " + std::to_string(a.size()) + " numbers");
-                for (size_t k = 0; k < 2; ++k) jn.fittedSpan[k] = r.numberInRange(a[k], at(p, k), 0, 1, false);
+                for (size_t k = 0; k < 2; ++k) jn.fittedSpan[k] = r.numberInRange(r.fixedArray(x, p, 2)[k], at(p, k), 0, 1, false);
                 if (!(jn.fittedSpan[0] < jn.fittedSpan[1])) r.fail(p, "the part [t0, t1] needs t0 < t1");
             });
             if (joinHasTriangle(jn) && jn.continuity != Continuity::C0 && jn.continuity != Continuity::G1)

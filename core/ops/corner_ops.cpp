@@ -176,9 +176,10 @@ std::string makeG1Corner(Document& doc, uint32_t p, int cu, int cv, bool allSeam
         const int k = endOf(jn), kb = jn.reversed ? 3 - k : k;
         return std::pair(size_t(edgeSlot(jn.edgeA, k == 0 ? 1 : 2, 0)), size_t(edgeSlot(jn.edgeB, kb == 0 ? 1 : 2, 0)));
     };
-    // Where every seam continues one of ratio 1 through its far end (or none), the corner can
+    // Where every seam continues one of ratio 1 through its far end (or none), a fill's centre can
     // also be held with every ratio 1: the seams' legs an affine image of a regular n-gon's spokes
-    // (l(i−1) + l(i+1) = 2 cos(2π/n)·l(i) round it), the one layout whose leans then close.
+    // (l(i−1) + l(i+1) = 2 cos(2π/n)·l(i) round it), the one layout whose leans then close. (Not a
+    // corner of the user's own patches: their legs are not the tool's to lay.)
     bool unitRatios = true;
     for (size_t j : cyc->joins) {
         const auto ends = alphaAtEnds(doc, j);
@@ -248,7 +249,7 @@ std::string makeG1Corner(Document& doc, uint32_t p, int cu, int cv, bool allSeam
             const auto ends = alphaAtEnds(doc, j);
             const std::optional<double> far = k == 0 ? ends[1] : ends[0];
             const double rb = -glm::dot(aLeg, bLeg), rd = glm::dot(along, bLeg);
-            const double alpha = regular ? 1.0 : far ? *far : (dd * rb + ad * rd) / det;
+            const double alpha = far ? *far : regular ? 1.0 : (dd * rb + ad * rd) / det;
             const double s = regular || far ? glm::dot(bLeg + alpha * aLeg, along) / dd : (ad * rb + aa * rd) / det;
             if (!(alpha > 0.02))
                 throw badTurn("join " + std::to_string(j) + " (patch " + std::to_string(jn.patchA) + " " + std::string(edgeName(jn.edgeA)) +
@@ -256,6 +257,7 @@ std::string makeG1Corner(Document& doc, uint32_t p, int cu, int cv, bool allSeam
                               ") does not turn one way around the corner at " + fmt(at) + ": its two sides lie over each other there");
             jn.continuity = Continuity::G1;
             jn.fitted = false;
+            jn.fittedSpan = {0.0, 1.0};
             jn.alpha = alpha;
             jn.alphaEnd = 0.0;
             jn.beta2 = 0.0;
@@ -274,8 +276,8 @@ std::string makeG1Corner(Document& doc, uint32_t p, int cu, int cv, bool allSeam
     try {
         held = hold(false);
     } catch (const EditError&) {
-        if (!unitRatios || turnsBadly) throw;
-        doc = base;  // the measured leans do not close round it: every ratio 1, the legs laid regular
+        if (split || !unitRatios || turnsBadly) throw;  // (a fill's centre only: its legs are the fill's own points)
+        doc = base;                                     // the measured leans do not close round it: every ratio 1, the legs laid regular
         try {
             held = hold(true);
             laidNote = ", every ratio 1 and its edges there laid evenly round it";

@@ -3,10 +3,9 @@
 // is impossible), so each seam through the corner leans along its edge near it (Join::shear, core/
 // solve/sheared_joins.hpp): β = s·(1−t)² from the corner, measured so that the corner's edges, laid
 // into one tangent plane, satisfy every seam's condition there. Three patches need nothing more;
-// five and six need the freedom of a 2×2 split of each corner patch (the cut runs on through the
-// joins it crosses, so no join is dropped). The joins stay linear rows: the live solver holds the
-// corner exactly while any point of it or its neighbours is dragged, and the patches stay plain
-// bicubic Bézier patches (exact in STEP).
+// five and six of fixed patches need the freedom of a 2×2 split of each corner patch (the cut runs
+// on through the joins it crosses, so no join is dropped); a fill's, free inside, do not. The joins stay linear rows: the live solver holds
+// the corner exactly while any point of it or its neighbours is dragged, and the patches stay plain bicubic Bézier patches (exact in STEP).
 #pragma once
 
 #include <array>
@@ -40,9 +39,9 @@ std::optional<CornerCycle> cornerCycle(const Document& doc, uint32_t p, int cu, 
 // EditError, naming the cause, when the fan is open, has a G2 seam, a rational or spline patch, a
 // seam a construction makes, does not turn one way around the corner, or cannot hold (conflict,
 // fold). Without `split`, five or six patches are held as they are (a fill's patches, free
-// inside, can be: core/ops/fill_hole). Where the leans measured from the corner's edges do not
-// close round it and every seam continues one of ratio 1 (or none), the corner is held with every
-// ratio 1 and its edges there laid evenly round it (an affine image of a regular n-gon's spokes).
+// inside, can be: core/ops/fill_hole); there, where the leans measured from the corner's edges do
+// not close round it and every seam continues one of ratio 1 (or none), the corner is held with
+// every ratio 1 and its edges there laid evenly round it (an affine image of a regular n-gon's spokes).
 std::string makeG1Corner(Document& doc, uint32_t p, int cu, int cv, bool allSeams = true, bool split = true);
 
 // For a join just made or changed to C1/G1: at either end of its edge, a closed fan of 3, 5 or 6

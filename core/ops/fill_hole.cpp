@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <optional>
 
 #include "core/base/errors.hpp"
@@ -434,18 +435,20 @@ std::string fillHole(Document& doc, const std::vector<HoleSide>& sides) {
         std::string note = fillHoleIn(tried, sides, true, fitted);
         doc = std::move(tried);
         return note;
-    } catch (const EditError& e) {
+    } catch (const EditError&) {
         if (!fitted) throw;
-        // Fitted sides past 0.1° (or folding): joins of one ratio each, where the surroundings can
-        // bend to meet them (they are not joined on); else the fitted reason, which names the sides.
+        // Fitted sides refused (past 0.1°, folding, or a centre that cannot hold): joins of one ratio
+        // each, where the surroundings can bend to meet them (they are not joined on); else the
+        // fitted reason, which names the sides.
+        const std::exception_ptr fittedWhy = std::current_exception();
         tried = doc;
         bool unused = false;
         try {
             std::string note = fillHoleIn(tried, sides, false, unused);
             doc = std::move(tried);
-            return note;
+            return note + "; its sides' two ends asked different ratios, so the patches round it were bent to one ratio per side";
         } catch (const EditError&) {
-            throw e;
+            std::rethrow_exception(fittedWhy);
         }
     }
 }

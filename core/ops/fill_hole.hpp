@@ -7,9 +7,9 @@
 // core/ops/corner_ops (leaning seams; the fill's patches, free inside, are not split there). Everything stays joins the live solver
 // holds: drag the surroundings and the fill follows, within the solver's residual. A hole whose
 // sides' two ends ask different tangent ratios is filled with fitted joins (core/ops/
-// fitted_sides): held within 0.1°, as no bicubic fill can be exact there; where that would take a
-// seam past 0.1°, the fill falls back to joins of one ratio each (where the surroundings can bend
-// to meet them), else it is refused naming the sides.
+// fitted_sides): held within 0.1°, as no bicubic fill can be exact there; where that is refused
+// (a seam past 0.1°, a fold), the fill falls back to joins of one ratio each where the surroundings
+// can bend to meet them (the status line says so), else it is refused naming the sides.
 #pragma once
 
 #include <cstdint>

@@ -247,6 +247,7 @@ void setJoinContinuity(Document& doc, size_t j, Continuity continuity, std::stri
     jn.shear = {};
     jn.alphaEnd = 0.0;
     jn.fitted = false;  // measured again as an exact join (a fill's fitted side made by hand)
+    jn.fittedSpan = {0.0, 1.0};
     if (continuity == Continuity::G1) takeContinuedAlpha(doc, j);
     // A change that closes a corner of 3, 5 or 6 C1/G1 seams makes it a G1 corner.
     if (const std::string corner = closeCornersOf(doc, j); !corner.empty()) {

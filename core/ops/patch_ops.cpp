@@ -9,6 +9,7 @@
 #include "core/eval/rational_eval.hpp"
 #include "core/model/construction_refs.hpp"
 #include "core/solve/constraint_solver.hpp"
+#include "core/solve/sheared_joins.hpp"
 
 namespace pw {
 inline namespace ops {
@@ -139,10 +140,12 @@ void flipPatch(Document& doc, uint32_t p) {
             const bool isA = side == 0;
             Edge& e = isA ? j.edgeA : j.edgeB;
             if ((isA ? j.patchA : j.patchB) != p || isTriangleEdge(e)) continue;
-            if (e == Edge::U0 || e == Edge::U1)
+            if (e == Edge::U0 || e == Edge::U1) {
                 e = oppositeEdge(e);
-            else
+            } else {
                 j.reversed = !j.reversed;
+                if (isA) j = reversedAlongEdge(j);  // α(t) and β(t) run along A's edge
+            }
         }
     }
 }

@@ -57,12 +57,13 @@ std::vector<std::array<double, 5>> heldCoefficients(const Join& join) {
     // in order, each less its parts along everything before; those that remain are held.
     std::vector<std::array<double, 5>> basis;
     auto add = [&](std::array<double, 5> v) {
+        const double size = std::sqrt(dot(v, v));  // (a short part's term is small: judged relative to it)
         for (const auto& b : basis) {
             const double d = dot(v, b);
             for (size_t l = 0; l < 5; ++l) v[l] -= d * b[l];
         }
         const double norm = std::sqrt(dot(v, v));
-        if (norm < 1e-9) return false;
+        if (norm <= 1e-9 * size) return false;
         for (double& x : v) x /= norm;
         basis.push_back(v);
         return true;
@@ -74,6 +75,15 @@ std::vector<std::array<double, 5>> heldCoefficients(const Join& join) {
         if (add(unit)) held.push_back(basis.back());
     }
     return held;
+}
+
+Join reversedAlongEdge(const Join& join) {
+    Join out = join;
+    if (join.alphaEnd != 0.0) out.alpha = join.alphaEnd, out.alphaEnd = join.alpha;
+    out.shear = {-join.shear[2], -join.shear[1], -join.shear[0]};
+    for (double& s : out.shear) s = s == 0.0 ? 0.0 : s;  // no −0 in files
+    out.fittedSpan = {1.0 - join.fittedSpan[1], 1.0 - join.fittedSpan[0]};
+    return out;
 }
 
 Join restrictedJoin(const Join& join, double from, double to) {

@@ -46,14 +46,18 @@ std::array<double, 5> fittedWeights(const Join& join);
 // coefficients' scale.
 std::vector<std::array<double, 5>> heldCoefficients(const Join& join);
 
+// The same join with A's parameter along the edge running the other way (its patch flipped): α's
+// ends swap, β(t) becomes −β(1 − t), and a fitted part's span is mirrored.
+Join reversedAlongEdge(const Join& join);
+
 // A leaning join restricted to the part [from, to] of its edge (A's parameter), exactly: α(t) is
 // linear and β(t) quadratic there too (β over the shorter edge's differences, so divided by its
 // length). What a split gives each half of a fitted join, whose rows the shape meets only in part
 // and which a fit from the shape would therefore change.
 Join restrictedJoin(const Join& join, double from, double to);
 
-// The join's α and shear measured from its rows by least squares (the five rows of the identity
-// above, x, y and z: fifteen equations, four unknowns). Exact after any operation that keeps the
+// The join's α and shear measured from its rows by least squares (the rows of the identity above
+// it holds, x, y and z: up to fifteen equations; four unknowns, five when α varies). Exact after any operation that keeps the
 // surface (a split, a move of both sides): β restricted to part of the edge is still quadratic.
 // nullopt when the join's patches do not exist or the fit is singular (a collapsed edge).
 struct ShearFit {
