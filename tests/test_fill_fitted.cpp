@@ -35,6 +35,19 @@ size_t c0Joins(const Document& d) {
     return size_t(std::count_if(d.joins.begin(), d.joins.end(), [](const Join& j) { return j.continuity == Continuity::C0; }));
 }
 
+// `script` would bend a fitted seam past 0.1°: refused with a reason that says `says`, and the
+// document is unchanged.
+void expectFittedRefusal(EditSession& s, const std::string& script, const std::string& says) {
+    const Document held = s.doc;
+    try {
+        test::runEditScript(s, script);
+        ADD_FAILURE() << "a move that bends a fitted seam past 0.1° was accepted: " << script;
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(s.doc, held);
+}
+
 }  // namespace
 
 // A 4-sided hole in a bent ring of uneven widths, its seams made G1 one by one: each side's two
@@ -87,13 +100,7 @@ TEST(FillHole, AFourSidedHoleWhoseRatiosDisagreeFillsWithFittedSidesWithinATenth
     EXPECT_EQ(parseDocument(serializeDocument(s.doc), "fill.patchwork").joins, s.doc.joins);
     // Lifting a hole corner far: the rows would still hold, but a fitted seam would pass 0.1°.
     const Document held = s.doc;
-    try {
-        test::runEditScript(s, "select point " + std::to_string(holeCorner) + "; move 0 0 0.6");
-        FAIL() << "a move that bends a fitted seam past 0.1° was accepted";
-    } catch (const std::exception& e) {
-        EXPECT_NE(std::string(e.what()).find("fitted"), std::string::npos) << e.what();
-    }
-    EXPECT_EQ(s.doc, held);
+    expectFittedRefusal(s, "select point " + std::to_string(holeCorner) + "; move 0 0 0.6", "fitted");
     // The same by mouse: the mode line names the seam while it is past 0.1°, and letting go there
     // commits nothing.
     DragView view;
@@ -224,14 +231,7 @@ TEST(FillHole, ThreeFiveAndSixSidedHolesWhoseRatiosDisagreeFillWithFittedSides) 
         }
         // A hole corner lifted by a tenth of the hole's radius: the seams would pass 0.1°, so the
         // move is refused naming them, and nothing changes.
-        const Document held = s.doc;
-        try {
-            test::runEditScript(s, "select point " + std::to_string(holeCorner) + "; move 0 0 0.1");
-            ADD_FAILURE() << "a move that bends a fitted seam past 0.1° was accepted";
-        } catch (const std::exception& e) {
-            EXPECT_NE(std::string(e.what()).find("fitted G1) at "), std::string::npos) << e.what();
-        }
-        EXPECT_EQ(s.doc, held);
+        expectFittedRefusal(s, "select point " + std::to_string(holeCorner) + "; move 0 0 0.1", "fitted G1) at ");
         test::runEditScript(s, "undo; undo; undo; undo");
         EXPECT_EQ(s.doc, open);
     }

@@ -180,11 +180,15 @@ std::string makeG1Corner(Document& doc, uint32_t p, int cu, int cv, bool allSeam
     // also be held with every ratio 1: the seams' legs an affine image of a regular n-gon's spokes
     // (l(i−1) + l(i+1) = 2 cos(2π/n)·l(i) round it), the one layout whose leans then close. (Not a
     // corner of the user's own patches: their legs are not the tool's to lay.)
+    // A seam that continues one through a regular corner at its far end keeps that seam's α (the
+    // rows there are singular unless it matches exactly): found once, from the corner as it is (the
+    // seams made here and the legs laid here are not what the far ends continue).
+    std::vector<std::optional<double>> farAlpha(n);
     bool unitRatios = true;
-    for (size_t j : cyc->joins) {
-        const auto ends = alphaAtEnds(doc, j);
-        const std::optional<double> far = endOf(doc.joins[j]) == 0 ? ends[1] : ends[0];
-        unitRatios = unitRatios && (!far || std::abs(*far - 1.0) < 1e-9);
+    for (size_t i = 0; i < n; ++i) {
+        const auto ends = alphaAtEnds(doc, cyc->joins[i]);
+        farAlpha[i] = endOf(doc.joins[cyc->joins[i]]) == 0 ? ends[1] : ends[0];
+        unitRatios = unitRatios && (!farAlpha[i] || std::abs(*farAlpha[i] - 1.0) < 1e-9);
     }
     bool turnsBadly = false;  // the corner's edges lie on one line or over each other: no layout helps
     auto badTurn = [&](const std::string& why) {
@@ -224,13 +228,14 @@ std::string makeG1Corner(Document& doc, uint32_t p, int cu, int cv, bool allSeam
             }
         }
         size_t held = 0;
-        for (size_t j : cyc->joins) {
+        for (size_t i = 0; i < n; ++i) {
+            const size_t j = cyc->joins[i];
             Join& jn = doc.joins[j];
             if (!allSeams && !tangentOnly(jn.continuity)) continue;  // a C0 seam says nothing about tangents
             ++held;
             const Patch& A = doc.patches[jn.patchA];
             const Patch& B = doc.patches[jn.patchB];
-            const int k = joinEndAt(doc, jn, at, tol) == 0 ? 0 : 3;
+            const int k = endOf(jn);
             const int kb = jn.reversed ? 3 - k : k;
             const Vec3 a0 = doc.points[A.idx[size_t(edgeSlot(jn.edgeA, k, 0))]];
             const Vec3 aLeg = flat(doc.points[A.idx[size_t(edgeSlot(jn.edgeA, k, 1))]] - a0);
@@ -243,11 +248,9 @@ std::string makeG1Corner(Document& doc, uint32_t p, int cu, int cv, bool allSeam
             if (!(det > 1e-12 * aa * dd))
                 throw badTurn("refused: at the corner at " + fmt(at) + " the edges beside join " + std::to_string(j) +
                               " lie on one line (a patch there has lost its tangent plane), so the seams cannot turn round it G1");
-            // A seam that continues one through a regular corner at its far end keeps that seam's α
-            // (the rows there are singular unless it matches exactly) and only its lean β(0) is
-            // measured; else α and β(0) both, from the corner's edges in the plane.
-            const auto ends = alphaAtEnds(doc, j);
-            const std::optional<double> far = k == 0 ? ends[1] : ends[0];
+            // With its far α kept, only its lean β(0) is measured; else α and β(0) both, from the
+            // corner's edges in the plane.
+            const std::optional<double>& far = farAlpha[i];
             const double rb = -glm::dot(aLeg, bLeg), rd = glm::dot(along, bLeg);
             const double alpha = far ? *far : regular ? 1.0 : (dd * rb + ad * rd) / det;
             const double s = regular || far ? glm::dot(bLeg + alpha * aLeg, along) / dd : (ad * rb + aa * rd) / det;

@@ -1,6 +1,5 @@
 #include "core/solve/sheared_joins.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Dense>
