@@ -14,12 +14,15 @@
 #include "app/displacement_args.hpp"
 #include "core/base/errors.hpp"
 #include "core/construct/constructions.hpp"
+#include "core/edit/live_trims.hpp"
 #include "core/io/document_io.hpp"
 #include "core/io/formats.hpp"
 #include "core/mesh/mesh_tessellate.hpp"
 #include "core/model/construction_refs.hpp"
 #include "core/solve/constraint_solver.hpp"
 #include "core/solve/continuity_report.hpp"
+#include "core/trim/surface_domain.hpp"
+#include "core/trim/trim_loops.hpp"
 
 namespace pw::app {
 
@@ -30,6 +33,7 @@ struct InfoOptions {
     bool json = false;
     bool noJoins = false;  // omit the per-join table
     int samples = 32;
+    bool partial = false;
 };
 
 std::string fmt(const char* format, double v) {
@@ -42,7 +46,7 @@ std::string vec(const Vec3& v) { return "(" + fmt("%.6g", v.x) + ", " + fmt("%.6
 
 int runInfo(const InfoOptions& opt) {
     LoadReport loadReport;
-    const Document doc = loadDocument(opt.file, &loadReport);
+    const Document doc = loadDocument(opt.file, &loadReport, opt.partial);
     for (const std::string& note : loadReport.notes) std::cerr << "patchwork info: " << opt.file << ": " << note << "\n";
     (void)loadDocumentHeightMap(doc, opt.file);  // the document's height map must read too (issue 44: not only on export)
     const std::vector<PatchInstance> windows = expandPatches(doc);
@@ -87,6 +91,30 @@ int runInfo(const InfoOptions& opt) {
     // (made again here, as the editor does on opening).
     Document live = doc;
     rerunConstructions(live);
+    // Trimmed surfaces (issue 64): each one's loops, whole and trimmed area, and the trim edges'
+    // gaps between two surfaces cut by one curve.
+    struct Trimmed {
+        SurfaceRef ref;
+        size_t loops = 0, holes = 0;
+        double area = 0.0, trimmedArea = 0.0;
+        std::string error;
+    };
+    std::vector<Trimmed> trimmed;
+    auto addTrimmed = [&](const SurfaceRef& ref, const std::vector<TrimLoop>& loops) {
+        if (loops.empty()) return;
+        Trimmed t{ref, loops.size(), 0, 0.0, 0.0, ""};
+        for (const TrimLoop& l : loops) {
+            t.holes += signedUvArea(l) < 0.0 ? 1 : 0;
+            if (!l.error.empty()) t.error = l.error;
+        }
+        const DomainSurface s(doc, ref);
+        t.area = s.area();
+        t.trimmedArea = trimmedArea(s, loops);
+        trimmed.push_back(t);
+    };
+    for (uint32_t p = 0; p < doc.patches.size(); ++p) addTrimmed(SurfaceRef{false, p}, doc.patches[p].trims);
+    for (uint32_t s = 0; s < doc.surfaces.size(); ++s) addTrimmed(SurfaceRef{true, s}, doc.surfaces[s].trims);
+    const std::vector<TrimEdgeGap> trimEdges = trimEdgeGaps(doc);
     const auto rational = [&](const BezierCurve& c) {
         return std::any_of(c.idx.begin(), c.idx.end(), [&](uint32_t i) { return pointWeight(doc, i) != 1.0; });
     };
@@ -158,7 +186,11 @@ int runInfo(const InfoOptions& opt) {
                               {"segments", curveSegmentCount(c)},
                               {"closed", curveClosed(c)},
                               {"rational", rational(c)},
-                              {"points", c.idx}});
+                              {"points", c.idx},
+                              {"live", !c.link                                    ? ""
+                                       : c.link->kind == CurveLinkKind::Intersect ? "intersect"
+                                                                                  : "project"},
+                              {"error", c.link ? c.link->error : ""}});
         }
         j["curveList"] = std::move(curves);
         json made = json::array();
@@ -174,6 +206,20 @@ int runInfo(const InfoOptions& opt) {
                             {"error", c.error}});
         }
         j["constructions"] = std::move(made);
+        json trims = json::array();
+        for (const Trimmed& t : trimmed)
+            trims.push_back({{"surface", surfaceRefName(t.ref)},
+                             {"loops", t.loops},
+                             {"holes", t.holes},
+                             {"area", t.area},
+                             {"trimmedArea", t.trimmedArea},
+                             {"error", t.error}});
+        j["trimmed"] = std::move(trims);
+        json edges = json::array();
+        for (const TrimEdgeGap& g : trimEdges)
+            edges.push_back(
+                {{"curve", "c" + std::to_string(g.curve)}, {"a", surfaceRefName(g.a)}, {"b", surfaceRefName(g.b)}, {"gap", g.gap}});
+        j["trimEdges"] = std::move(edges);
         std::cout << j.dump(2, ' ', false, json::error_handler_t::replace) << "\n";
         return 0;
     }
@@ -212,6 +258,14 @@ int runInfo(const InfoOptions& opt) {
         std::cout << "  curve c" << i << "  " << curveSegmentCount(c) << " segment" << (curveSegmentCount(c) == 1 ? "" : "s")
                   << (curveClosed(c) ? ", closed" : ", open") << (rational(c) ? ", rational" : "") << "  \"" << printable(c.name) << "\"\n";
     }
+    for (const Trimmed& t : trimmed)
+        std::cout << "  trimmed " << (t.ref.net ? "net " : "patch ") << t.ref.index << "  " << t.loops << " loop"
+                  << (t.loops == 1 ? "" : "s") << " (" << t.holes << " hole" << (t.holes == 1 ? "" : "s") << "), area "
+                  << fmt("%.9g", t.trimmedArea) << " of " << fmt("%.9g", t.area)
+                  << (t.error.empty() ? "" : ", trim kept its last shape: " + printable(t.error)) << "\n";
+    for (const TrimEdgeGap& g : trimEdges)
+        std::cout << "  trim edge c" << g.curve << " between " << surfaceRefName(g.a) << " and " << surfaceRefName(g.b) << ": gap "
+                  << fmt("%.3g", g.gap) << "\n";
     for (size_t k = 0; k < live.constructions.size(); ++k) {
         const Construction& c = live.constructions[k];
         std::cout << "  " << constructionLabel(live, k) << ": " << c.patches.size() << " patches, "
@@ -245,6 +299,9 @@ void registerInfoCommand(CLI::App& app, Action& run) {
     cmd->add_flag("--json", opt->json, "Machine-readable output (JSON)");
     cmd->add_option("--samples", opt->samples, "Samples per seam for the continuity report")->default_val(32)->check(CLI::Range(1, 4096));
     cmd->add_flag("--no-joins", opt->noJoins, "Omit the per-join table");
+    cmd->add_flag(
+        "--partial", opt->partial,
+        "Take a STEP/IGES file that comes in incomplete (faces skipped) as far as it comes; otherwise such a file is refused (exit 2)");
 }
 
 }  // namespace pw::app

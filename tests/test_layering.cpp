@@ -101,9 +101,10 @@ void checkIncludes(const fs::path& root, const LayerMap& layers, std::vector<std
     };
     // Libraries that belong to one layer: the folders that may include them.
     const std::vector<std::pair<std::regex, std::set<std::string>>> owned = {
-        {std::regex(R"(\.hxx$)"), {"core/io"}},  // OpenCASCADE
-        {std::regex(R"(^(Eigen/|unsupported/Eigen))"), {"core/solve"}},
+        {std::regex(R"(\.hxx$)"), {"core/io"}},                                       // OpenCASCADE
+        {std::regex(R"(^(Eigen/|unsupported/Eigen))"), {"core/solve", "core/trim"}},  // the solver; trim curves' least-squares fits
         {std::regex(R"(^tiny_gltf)"), {"core/io"}},
+        {std::regex(R"(^CGAL/)"), {"core/trim"}},  // constrained triangulation of trimmed windows
     };
     for (const auto& [dir, uses] : layers) {
         for (const auto& e : fs::directory_iterator(root / dir)) {

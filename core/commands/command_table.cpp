@@ -337,6 +337,7 @@ CommandTable makeCommandTable() {
     addItemCommands(t);
     addNetCommands(t);
     addTessCommands(t);
+    addTrimCommands(t);
     return t;
 }
 

@@ -231,6 +231,7 @@ void addDisplacementCommands(CommandTable& t);  // core/commands/commands_displa
 void addConstructCommands(CommandTable& t);     // core/commands/commands_construct.cpp: curves, revolve, loft, bake
 void addItemCommands(CommandTable& t);          // core/commands/commands_items.cpp: rename, point
 void addNetCommands(CommandTable& t);           // core/commands/commands_net.cpp: net basis, tension, closing, rows, conversions
+void addTrimCommands(CommandTable& t);          // core/commands/commands_trim.cpp: project, trim, intersect, split-by, untrim
 void addTessCommands(CommandTable& t);          // core/commands/commands_tess.cpp: items' own levels, kept levels, the notes' formulas
 // `extrude C DX DY DZ`: the curve or edge C extruded (the `extrude` command's second form).
 void runCurveExtrude(CommandContext& ctx);  // core/commands/commands_construct.cpp

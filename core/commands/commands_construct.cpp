@@ -250,6 +250,20 @@ void execBake(CommandContext& ctx) {
     if (!ctx.has(0)) {
         if (s.sel.patch >= 0) k = constructionOfPatch(s.doc, uint32_t(s.sel.patch));
         if (k < 0) throw EditError("select a patch of a surface made from curves, or name it (k0, k1, ...)");
+    } else if (const std::string& c = ctx.word(0); !c.empty() && (c[0] == 'c' || c[0] == 'C')) {
+        // A live curve (an intersection, a projection) and the trims made from it: fixed from now on.
+        const uint32_t ci = commandIndex(c.substr(1), s.doc.curves.size(), "curve");
+        s.apply("Bake", [ci](Document& d) {
+            d.curves[ci].link.reset();
+            auto detach = [ci](std::vector<TrimLoop>& loops) {
+                for (TrimLoop& l : loops)
+                    if (l.curve == int32_t(ci)) l.curve = -1, l.error.clear();
+            };
+            for (Patch& p : d.patches) detach(p.trims);
+            for (Surface& n : d.surfaces) detach(n.trims);
+        });
+        ctx.host.status("c" + std::to_string(ci) + " and its trims are fixed now");
+        return;
     } else {
         std::string w = ctx.word(0);
         if (!w.empty() && (w[0] == 'k' || w[0] == 'K')) w.erase(0, 1);
@@ -379,7 +393,8 @@ void addConstructCommands(CommandTable& t) {
            .menu = "Surface",
            .forms = {{opt(word("K"))}},
            .help = "Detach a surface made from curves from its inputs (kN or N; default: the one of the selected patch): its patches "
-                   "stay and become ordinary patches you can edit point by point; the curves stay too",
+                   "stay and become ordinary patches you can edit point by point; the curves stay too. `bake cN` fixes a live curve "
+                   "(an intersection or projection) and the trims made from it",
            .exec = execBake});
 }
 

@@ -13,9 +13,11 @@
 #include "core/base/point_upload.hpp"
 #include "core/construct/constructions.hpp"
 #include "core/edit/live_constructions.hpp"
+#include "core/edit/live_trims.hpp"
 #include "core/model/camera_math.hpp"
 #include "core/ops/fitted_sides.hpp"
 #include "core/select/picking.hpp"
+#include "core/trim/trim_edits.hpp"
 
 namespace pw {
 inline namespace edit {
@@ -273,6 +275,7 @@ bool DragController::update(Document& doc, const DragView& view, double x, doubl
     applySymmetry(doc.points, pairs_, symmetry_);
     if (!doc.constructions.empty()) rerunConstructions(doc);  // the surfaces follow their inputs
     projection_ = solver_->project(doc.points);
+    if (hasLiveTrims(doc)) refreshTrims(doc);  // intersections and trims follow the moved surfaces
     fittedOut_ = fittedSeamsPast(doc);
     takeChangedPoints(uploaded_, doc.points, changed_);
     lastMoved_ = 0;
@@ -419,6 +422,7 @@ std::string HeldPointEdit::set(EditSession& session, uint32_t point, const Vec3&
     session.doc.points = std::move(pts);
     if (!session.doc.constructions.empty()) rerunConstructions(session.doc);
     projection_ = solver_->project(session.doc.points);
+    if (hasLiveTrims(session.doc)) refreshTrims(session.doc);
     return "";
 }
 

@@ -60,15 +60,15 @@ void EditSession::newDocument() {
     reset(std::move(d), "");
 }
 
-std::vector<std::string> EditSession::open(const std::string& path) {
+std::vector<std::string> EditSession::open(const std::string& path, bool partial) {
     LoadReport report;  // a Patchwork glTF saves back with its own export options
-    reset(loadDocument(path, &report), path);
+    reset(loadDocument(path, &report, partial), path);
     if (report.exportOptions) exportOptions = *report.exportOptions;
     return std::move(report.notes);
 }
 
 MergedRange EditSession::import(const std::string& path) {
-    const Document from = loadDocument(path);
+    const Document from = loadDocument(path, nullptr, true);  // the editor shows what a CAD file left out when it opens
     MergedRange r;
     // Beside what is there, never inside it (the file's own coordinates where they are clear).
     apply(

@@ -66,8 +66,10 @@ public:
     // Replaces the document (new, open, recover): history cleared, saved state, camera from the
     // document, selection cleared.
     void reset(Document d, const std::string& path);
-    void newDocument();                                      // untitled, one flat patch (File > New)
-    std::vector<std::string> open(const std::string& path);  // returns what the load skipped and why (STEP/IGES faces)
+    void newDocument();  // untitled, one flat patch (File > New)
+    // Returns what the load skipped and why (STEP/IGES faces); a file that came in incomplete is
+    // refused unless `partial` (the editor opens it and shows what was left out).
+    std::vector<std::string> open(const std::string& path, bool partial = true);
     // Adds a file's content (every kind, with its joins) as one undo step and selects it.
     MergedRange import(const std::string& path);
 

@@ -4,6 +4,7 @@
 
 #include "core/base/errors.hpp"
 #include "core/construct/constructions.hpp"
+#include "core/edit/live_trims.hpp"
 #include "core/model/construction_refs.hpp"
 #include "core/solve/constraint_solver.hpp"
 
@@ -34,7 +35,7 @@ std::vector<uint32_t> constructionFixedPoints(const Document& doc) {
 }
 
 std::vector<std::string> refreshConstructions(Document& doc) {
-    if (doc.constructions.empty()) return {};
+    if (doc.constructions.empty()) return refreshTrims(doc);
     const RerunReport r = rerunConstructions(doc);
     std::vector<std::string> notes = r.failed;
     for (const std::string& b : r.baked) notes.push_back(b + ": baked, its patches were rebuilt by hand");
@@ -42,10 +43,21 @@ std::vector<std::string> refreshConstructions(Document& doc) {
         const Projection p = projectConstraints(doc, constructionFixedPoints(doc));
         if (!p.ok()) throw EditError("the surfaces made from curves break joins: " + conflictMessage(p));
     }
+    const std::vector<std::string> trimNotes = refreshTrims(doc);  // trims follow the surfaces they were made on
+    notes.insert(notes.end(), trimNotes.begin(), trimNotes.end());
     return notes;
 }
 
 std::string constructedPointsRefusal(const Document& doc, const std::vector<uint32_t>& points) {
+    for (size_t c = 0; c < doc.curves.size(); ++c) {  // live curves: made from their surfaces
+        const BezierCurve& k = doc.curves[c];
+        if (!k.link) continue;
+        for (uint32_t i : points)
+            if (std::find(k.idx.begin(), k.idx.end(), i) != k.idx.end())
+                return "point " + std::to_string(i) + " is made by " +
+                       (k.link->kind == CurveLinkKind::Intersect ? "an intersection" : "a projection") + " (curve c" + std::to_string(c) +
+                       "): move the surfaces, or `bake c" + std::to_string(c) + "` to edit its points";
+    }
     if (doc.constructions.empty()) return "";
     for (uint32_t i : points) {
         if (!constructedOnly(doc, i)) continue;

@@ -18,9 +18,9 @@ std::vector<uint32_t> constructionFixedPoints(const Document& doc);
 // `driven` (the points a transform moves) and those, sorted and unique: a drag's fixed points.
 std::vector<uint32_t> withConstructionPoints(const Document& doc, std::vector<uint32_t> driven);
 
-// Re-runs the constructions of `doc` and holds the joins. Throws EditError naming the joins when
-// they cannot hold with the new surfaces (the caller keeps its document). Returns notes for the
-// status line: constructions whose inputs no longer fit, constructions baked.
+// Re-runs the constructions of `doc` and holds the joins, then the live trims (core/edit/live_trims.hpp). Throws EditError naming the joins
+// when they cannot hold with the new surfaces (the caller keeps its document). Returns notes for the status line: constructions whose
+// inputs no longer fit, constructions baked.
 std::vector<std::string> refreshConstructions(Document& doc);
 
 // "" or why points may not be moved by hand: they are made by a live construction ("patch 3 is

@@ -14,6 +14,7 @@
 #include "core/base/json_reader.hpp"
 #include "core/base/limits.hpp"
 #include "core/io/construction_format.hpp"
+#include "core/io/trim_format.hpp"
 #include "core/model/settings.hpp"
 
 namespace pw {
@@ -260,6 +261,7 @@ json documentToJson(const Document& doc) {
         if (p.tessOverride) o["tess"] = floatArray(*p.tessOverride);
         if (p.hidden) o["hidden"] = true;
         putOverride(o, p.displacement);
+        if (!p.trims.empty()) o["trims"] = trimsJson(p.trims);
         patches.push_back(std::move(o));
     }
     j["patches"] = std::move(patches);
@@ -277,6 +279,7 @@ json documentToJson(const Document& doc) {
                                 {"name", s.name}});
         if (s.hidden) surfaces.back()["hidden"] = true;
         putOverride(surfaces.back(), s.displacement);
+        if (!s.trims.empty()) surfaces.back()["trims"] = trimsJson(s.trims);
     }
     j["surfaces"] = std::move(surfaces);
 
@@ -315,6 +318,7 @@ json documentToJson(const Document& doc) {
         for (const BezierCurve& c : doc.curves) {
             curves.push_back(json{{"idx", c.idx}, {"name", c.name}});
             if (c.hidden) curves.back()["hidden"] = true;
+            if (c.link) curves.back()["link"] = curveLinkJson(*c.link);
         }
         j["curves"] = std::move(curves);
     }
@@ -400,6 +404,7 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
             patch.tessOverride = levels;
         });
         readOverride(r, o, path, patch.displacement);
+        r.optional(o, path, "trims", [&](const json& x, const std::string& p) { readTrims(r, x, p, patch.trims); });
     }
 
     // Surfaces.
@@ -423,6 +428,7 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
             r.optional(o, path, "closedV", [&](const json& x, const std::string& p) { s.closedV = r.boolean(x, p); });
             r.optional(o, path, "name", [&](const json& x, const std::string& p) { s.name = r.string(x, p); });
             r.optional(o, path, "hidden", [&](const json& x, const std::string& p) { s.hidden = r.boolean(x, p); });
+            r.optional(o, path, "trims", [&](const json& x, const std::string& p) { readTrims(r, x, p, s.trims); });
             const size_t n = static_cast<size_t>(s.rows) * s.cols;
             const std::string ip = at(path, "idx");
             const json& idx = r.fixedArray(*r.member(o, path, "idx", true), ip, n);
@@ -528,8 +534,10 @@ Document documentFromJson(const json& j, const std::string& sourceName, const st
             for (size_t k = 0; k < idx.size(); ++k) c.idx[k] = static_cast<uint32_t>(r.index(idx[k], at(ip, k), nPoints, "point index"));
             r.optional(o, path, "name", [&](const json& x, const std::string& p) { c.name = r.string(x, p); });
             r.optional(o, path, "hidden", [&](const json& x, const std::string& p) { c.hidden = r.boolean(x, p); });
+            r.optional(o, path, "link", [&](const json& x, const std::string& p) { c.link = readCurveLink(r, x, p); });
         }
     }
+    checkTrimReferences(r, doc);
 
     if (const json* v = r.member(j, "", "constructions", false)) readConstructions(r, *v, doc);
     if (const json* v = r.member(j, "", "tess", false)) doc.tess = readTess(r, *v, "tess");

@@ -74,6 +74,25 @@ struct DisplacementSettings {
     bool operator==(const DisplacementSettings&) const = default;
 };
 
+// A trim loop (issue 64): a closed chain of cubic Bézier p-curves in the (u, v) domain of a patch
+// (its [0, 1]²) or of a net (all its windows as one [0, 1]²: window (r, c) of W x H covers
+// [c/W, (c+1)/W] x [r/H, (r+1)/H]). 3n + 1 points, the last equal to the first. A counter-clockwise
+// loop is an outer boundary (what is inside is kept); a clockwise loop is a hole. A surface with
+// holes only keeps its whole domain less the holes (core/trim/trim_loops.hpp). Loops live in
+// parameter space, so transforms of the surface leave them as they are.
+using UV = std::array<double, 2>;
+struct TrimLoop {
+    std::vector<UV> uv;
+    // Live (core/edit/live_trims.hpp): the loop is the document curve `curve` on the surface (closest
+    // point, or along `direction` when it is not zero), made again whenever the curve or the surface
+    // changes, until `bake` detaches it (-1). `hole`: the inside is removed (`trim … remove`).
+    int32_t curve = -1;
+    std::array<double, 3> direction{0, 0, 0};
+    bool hole = false;
+    std::string error;  // "" while live; else why the curve no longer fits (the last good loop stays)
+    bool operator==(const TrimLoop&) const = default;
+};
+
 // A bicubic patch: 16 indices into the pool, row-major (i = v row, j = u column).
 struct Patch {
     std::array<uint32_t, 16> idx{};
@@ -84,6 +103,7 @@ struct Patch {
     std::optional<std::array<float, 6>> tessOverride;
     bool hidden = false;                               // H: not drawn, not picked (saved with the document)
     std::optional<DisplacementOverride> displacement;  // own scale and bias (else the document's)
+    std::vector<TrimLoop> trims;                       // none: the whole domain (issue 64)
     bool operator==(const Patch&) const = default;
 };
 
@@ -110,10 +130,32 @@ struct TrianglePatch {
 // circles and arcs). Closed when the last index is the first (the chain's end point is its start).
 // Each segment is drawn through the GPU's isoline tessellator (DESIGN §3) with
 // TessSettings::isolineLevels[1] segments; exported as a glTF line strip.
+// A surface a command names: a patch "3" or a net "n2".
+struct SurfaceRef {
+    bool net = false;
+    uint32_t index = 0;
+    bool operator==(const SurfaceRef&) const = default;
+};
+// A curve made from other items and kept live (issue 64): the intersection of two surfaces (its
+// `branch`-th curve), or another curve projected onto a surface (closest point, or along
+// `direction` when it is not zero). Remade with the same number of segments whenever its inputs
+// change, until `bake` detaches it.
+enum class CurveLinkKind : uint8_t { Intersect, Project };
+struct CurveLink {
+    CurveLinkKind kind = CurveLinkKind::Intersect;
+    SurfaceRef a, b;      // intersect: both surfaces; project: the surface in a
+    int32_t source = -1;  // project: the curve projected
+    std::array<double, 3> direction{0, 0, 0};
+    uint32_t branch = 0;
+    std::string error;  // "" while live; else why the inputs no longer give the curve
+    bool operator==(const CurveLink&) const = default;
+};
+
 struct BezierCurve {
     std::vector<uint32_t> idx;  // 3n + 1 pool indices, n >= 1
     std::string name;
     bool hidden = false;
+    std::optional<CurveLink> link;  // a live curve (intersection, projection)
     bool operator==(const BezierCurve&) const = default;
 };
 inline size_t curveSegmentCount(const BezierCurve& c) { return c.idx.size() >= 4 ? (c.idx.size() - 1) / 3 : 0; }
@@ -139,6 +181,7 @@ struct Surface {
     std::string name;
     bool hidden = false;
     std::optional<DisplacementOverride> displacement;  // for every window of the net
+    std::vector<TrimLoop> trims;                       // in the whole net's [0, 1]² (issue 64)
     bool operator==(const Surface&) const = default;
 };
 

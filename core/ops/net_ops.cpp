@@ -10,11 +10,20 @@
 #include "core/base/limits.hpp"
 #include "core/model/basis.hpp"
 #include "core/ops/patch_ops.hpp"
+#include "core/trim/trim_edits.hpp"
 
 namespace pw {
 inline namespace ops {
 
 namespace {
+
+// Inserting or deleting rows and columns, closing or converting a net changes its domain, which
+// its trim loops live in: refused while it has any.
+void refuseTrimmedNet(const Document& doc, uint32_t s, const char* what) {
+    if (s < doc.surfaces.size() && !doc.surfaces[s].trims.empty())
+        throw EditError("net " + std::to_string(s) + " is trimmed: " + what + " would move its trims; `untrim n" + std::to_string(s) +
+                        "` first");
+}
 
 Surface& netAt(Document& doc, uint32_t s) {
     if (s >= doc.surfaces.size()) throw EditError("no net surface " + std::to_string(s));
@@ -143,11 +152,13 @@ uint32_t addNetSurface(Document& doc, uint32_t rows, uint32_t cols, NetShape sha
 
 void deleteNetSurface(Document& doc, uint32_t s) {
     netAt(doc, s);
+    dropSurfaceFromTrims(doc, SurfaceRef{true, s});
     doc.surfaces.erase(doc.surfaces.begin() + s);
     compactPool(doc);
 }
 
 void insertNetRow(Document& doc, uint32_t si, uint32_t at) {
+    refuseTrimmedNet(doc, si, "inserting a row");
     Surface s = netAt(doc, si);
     refuseWeights(doc, s.idx, "inserting a row or column");
     if (at > s.rows) throw EditError("row " + std::to_string(at) + " is outside the net (0.." + std::to_string(s.rows) + ")");
@@ -190,6 +201,7 @@ void transposeNet(Surface& s) {
 }  // namespace
 
 void insertNetColumn(Document& doc, uint32_t si, uint32_t at) {
+    refuseTrimmedNet(doc, si, "inserting a column");
     Document d = doc;
     transposeNet(netAt(d, si));
     insertNetRow(d, si, at);
@@ -198,6 +210,7 @@ void insertNetColumn(Document& doc, uint32_t si, uint32_t at) {
 }
 
 void deleteNetRow(Document& doc, uint32_t si, uint32_t row) {
+    refuseTrimmedNet(doc, si, "deleting a row");
     Surface& s = netAt(doc, si);
     if (row >= s.rows) throw EditError("row " + std::to_string(row) + " is outside the net");
     if (s.rows <= 4) throw EditError("a net keeps at least 4 rows");
@@ -208,6 +221,7 @@ void deleteNetRow(Document& doc, uint32_t si, uint32_t row) {
 }
 
 void deleteNetColumn(Document& doc, uint32_t si, uint32_t col) {
+    refuseTrimmedNet(doc, si, "deleting a column");
     Document d = doc;
     transposeNet(netAt(d, si));
     try {
@@ -222,6 +236,7 @@ void deleteNetColumn(Document& doc, uint32_t si, uint32_t col) {
 }
 
 void setNetClosed(Document& doc, uint32_t si, bool alongU, bool closed) {
+    refuseTrimmedNet(doc, si, "opening or closing it");
     Surface s = netAt(doc, si);
     (alongU ? s.closedU : s.closedV) = closed;
     if (s.basis == Basis::Bezier && closed) checkBezierSide(alongU ? s.cols : s.rows, true, alongU ? "columns" : "rows");
@@ -297,6 +312,7 @@ BezierGrid netToBezierGrid(const Document& doc, const Surface& s) {
 }
 
 std::vector<uint32_t> convertNetToPatches(Document& doc, uint32_t si) {
+    refuseTrimmedNet(doc, si, "converting it to patches");
     Document d = doc;
     const Surface s = netAt(d, si);
     refuseWeights(d, s.idx, "converting a net to patches");

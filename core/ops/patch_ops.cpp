@@ -1,5 +1,7 @@
 #include "core/ops/patch_ops.hpp"
 
+#include "core/trim/trim_edits.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -10,6 +12,7 @@
 #include "core/model/construction_refs.hpp"
 #include "core/solve/constraint_solver.hpp"
 #include "core/solve/sheared_joins.hpp"
+#include "core/trim/trim_edits.hpp"
 
 namespace pw {
 inline namespace ops {
@@ -112,13 +115,16 @@ uint32_t duplicateWithOwnPoints(Document& doc, std::vector<Item>& items, uint32_
 
 uint32_t duplicatePatch(Document& doc, uint32_t p, const Vec3& offset) {
     checkPatch(doc, p);
-    return duplicateWithOwnPoints(doc, doc.patches, p, offset, "patch");
+    const uint32_t copy = duplicateWithOwnPoints(doc, doc.patches, p, offset, "patch");
+    detachTrims(doc.patches[copy].trims);  // the live curve lies on the original
+    return copy;
 }
 
 void deletePatch(Document& doc, uint32_t p) {
     checkPatch(doc, p);
     dropItemFromJoins(doc, p, false);
     dropPatchFromConstructions(doc, p);
+    dropSurfaceFromTrims(doc, SurfaceRef{false, p});
     eraseItem(doc, doc.patches, p);
 }
 
@@ -134,6 +140,7 @@ void flipPatch(Document& doc, uint32_t p) {
         auto& o = *pt.tessOverride;
         std::swap(o[0], o[2]);  // outer u=0 <-> u=1
     }
+    flipTrimsU(pt.trims);
     // Edge U0 <-> U1 (k along v unchanged); on V0/V1 the parameter k runs the other way.
     for (Join& j : doc.joins) {
         for (int side = 0; side < 2; ++side) {
@@ -198,6 +205,7 @@ uint32_t curveFromEdge(Document& doc, uint32_t p, Edge e) {
 void deleteCurve(Document& doc, uint32_t c) {
     checkItem(doc.curves, c, "curve");
     dropCurveFromConstructions(doc, c);
+    dropCurveFromTrims(doc, c);
     eraseItem(doc, doc.curves, c);
 }
 

@@ -25,6 +25,9 @@ bool crossedBy(bool alongU, Edge e) { return alongU ? (e == Edge::V0 || e == Edg
 // Exact de Casteljau split of patch p (no joins touched): p becomes the first half, the second is
 // appended and its index returned.
 uint32_t splitGeometry(Document& doc, uint32_t p, bool alongU, double t) {
+    if (p < doc.patches.size() && !doc.patches[p].trims.empty())
+        throw EditError("patch " + std::to_string(p) + " is trimmed: a split would cut through its trims; `untrim " + std::to_string(p) +
+                        "` first, or cut it with `split-by`");
     const Patch src = doc.patches[p];
     // Rational patches split in homogeneous form: each half keeps the exact surface and gets weights.
     const WeightedSplit halves = splitWindowBezier(gatherWindow(doc, src.idx), alongU, t);

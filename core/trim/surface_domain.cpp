@@ -1,0 +1,212 @@
+#include "core/trim/surface_domain.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/base/errors.hpp"
+
+namespace pw {
+inline namespace trim {
+
+std::string surfaceRefName(const SurfaceRef& s) { return (s.net ? "n" : "") + std::to_string(s.index); }
+
+bool surfaceExists(const Document& doc, const SurfaceRef& s) {
+    return s.net ? s.index < doc.surfaces.size() : s.index < doc.patches.size();
+}
+
+SurfaceRef parseSurfaceRef(const Document& doc, std::string_view word) {
+    SurfaceRef s;
+    std::string_view digits = word;
+    if (!digits.empty() && (digits[0] == 'n' || digits[0] == 'N')) {
+        s.net = true;
+        digits.remove_prefix(1);
+    }
+    const bool ok =
+        !digits.empty() && digits.size() <= 9 && std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (!ok) throw EditError("'" + printable(word) + "' is not a surface: give a patch number (3) or a net as nN (n0)");
+    s.index = uint32_t(std::stoul(std::string(digits)));
+    if (!surfaceExists(doc, s))
+        throw EditError(std::string(s.net ? "net " : "patch ") + std::to_string(s.index) + " does not exist (the document has " +
+                        std::to_string(s.net ? doc.surfaces.size() : doc.patches.size()) + (s.net ? " nets)" : " patches)"));
+    return s;
+}
+
+std::vector<TrimLoop>& trimsOf(Document& doc, const SurfaceRef& s) {
+    return s.net ? doc.surfaces[s.index].trims : doc.patches[s.index].trims;
+}
+const std::vector<TrimLoop>& trimsOf(const Document& doc, const SurfaceRef& s) {
+    return s.net ? doc.surfaces[s.index].trims : doc.patches[s.index].trims;
+}
+
+DomainSurface::DomainSurface(const Document& doc, const SurfaceRef& ref) {
+    if (!surfaceExists(doc, ref)) throw EditError("surface " + surfaceRefName(ref) + " does not exist");
+    if (!ref.net) {
+        const Patch& p = doc.patches[ref.index];
+        windows_.push_back({gatherWindow(doc, p.idx), p.basis, p.tension});
+    } else {
+        const Surface& s = doc.surfaces[ref.index];
+        const uint32_t step = netStep(s.basis);
+        wu_ = uint32_t(netWindowCount(s.cols, s.closedU, step));
+        wv_ = uint32_t(netWindowCount(s.rows, s.closedV, step));
+        if (wu_ == 0 || wv_ == 0) throw EditError("net " + std::to_string(ref.index) + " has no windows");
+        closedU_ = s.closedU;
+        closedV_ = s.closedV;
+        for (uint32_t r = 0; r < wv_; ++r)
+            for (uint32_t c = 0; c < wu_; ++c) {
+                std::array<uint32_t, 16> idx{};
+                for (uint32_t i = 0; i < 4; ++i)
+                    for (uint32_t j = 0; j < 4; ++j) idx[i * 4 + j] = s.idx[((r * step + i) % s.rows) * s.cols + (c * step + j) % s.cols];
+                windows_.push_back({gatherWindow(doc, idx), s.basis, s.tension});
+            }
+    }
+    // A sample grid for closest-point starts: 8 x 8 per window (at most 64 x 64 in all).
+    const uint32_t nu = std::min<uint32_t>(64, 8 * wu_), nv = std::min<uint32_t>(64, 8 * wv_);
+    Bounds b;
+    for (uint32_t i = 0; i <= nv; ++i)
+        for (uint32_t j = 0; j <= nu; ++j) {
+            const UV uv{double(j) / nu, double(i) / nv};
+            const Vec3 p = evaluate(uv).p;
+            samples_.push_back({uv, p});
+            b.add(p);
+        }
+    size_ = std::max(b.diagonal(), 1e-12);
+}
+
+SurfacePoint DomainSurface::evaluate(UV uv) const {
+    const double U = std::clamp(uv[0], 0.0, 1.0) * wu_, V = std::clamp(uv[1], 0.0, 1.0) * wv_;
+    const uint32_t c = std::min<uint32_t>(uint32_t(U), wu_ - 1), r = std::min<uint32_t>(uint32_t(V), wv_ - 1);
+    const Window& w = windows_[size_t(r) * wu_ + c];
+    SurfacePoint sp = evaluateWindow(w.net, w.basis, w.tension, U - c, V - r);
+    sp.du *= double(wu_);
+    sp.dv *= double(wv_);
+    return sp;
+}
+
+UV DomainSurface::closest(const Vec3& p, std::optional<UV> guess) const {
+    UV best{0.5, 0.5};
+    double bestD = std::numeric_limits<double>::infinity();
+    if (guess) {
+        best = *guess;
+        bestD = glm::length(evaluate(best).p - p);
+    }
+    // The sample grid too, unless the guess is already close (a curve followed point by point).
+    if (!guess || bestD > 0.02 * size_) {
+        for (const auto& [uv, q] : samples_) {
+            const double d = glm::length(q - p);
+            if (d < bestD) {
+                bestD = d;
+                best = uv;
+            }
+        }
+    }
+    // Newton on the distance's gradient (Gauss-Newton with the second-derivative term dropped), clamped.
+    UV uv = best;
+    for (int it = 0; it < 30; ++it) {
+        const SurfacePoint s = evaluate(uv);
+        const Vec3 r = s.p - p;
+        const double a = glm::dot(s.du, s.du), b = glm::dot(s.du, s.dv), c = glm::dot(s.dv, s.dv);
+        const double gu = glm::dot(r, s.du), gv = glm::dot(r, s.dv);
+        const double det = a * c - b * b;
+        if (!(det > 1e-300)) break;
+        double du = -(c * gu - b * gv) / det, dv = -(a * gv - b * gu) / det;
+        // Keep steps modest: a quarter of a window at most.
+        const double lim = 0.25 / double(std::max(wu_, wv_));
+        const double m = std::max(std::abs(du), std::abs(dv));
+        if (m > lim) {
+            du *= lim / m;
+            dv *= lim / m;
+        }
+        UV next{uv[0] + du, uv[1] + dv};
+        if (closedU_)
+            next[0] -= std::floor(next[0]);
+        else
+            next[0] = std::clamp(next[0], 0.0, 1.0);
+        if (closedV_)
+            next[1] -= std::floor(next[1]);
+        else
+            next[1] = std::clamp(next[1], 0.0, 1.0);
+        const bool small = std::abs(next[0] - uv[0]) < 1e-14 && std::abs(next[1] - uv[1]) < 1e-14;
+        uv = next;
+        if (small) break;
+    }
+    return uv;
+}
+
+std::optional<UV> DomainSurface::alongDirection(const Vec3& p, const Vec3& dirIn, std::optional<UV> guess) const {
+    const Vec3 dir = glm::normalize(dirIn);
+    // Start from the sample nearest the line, then Newton on S(u, v) - p - t dir = 0 (3 unknowns).
+    UV uv = guess.value_or(UV{0.5, 0.5});
+    if (!guess) {
+        double best = std::numeric_limits<double>::infinity();
+        for (const auto& [s, q] : samples_) {
+            const Vec3 d = q - p;
+            const double off = glm::length(d - glm::dot(d, dir) * dir);
+            if (off < best) {
+                best = off;
+                uv = s;
+            }
+        }
+    }
+    double t = glm::dot(evaluate(uv).p - p, dir);
+    for (int it = 0; it < 40; ++it) {
+        const SurfacePoint s = evaluate(uv);
+        const Vec3 f = s.p - p - t * dir;
+        if (glm::length(f) < 1e-13 * size_) break;
+        // Solve [du dv -dir] x = -f.
+        const Vec3 c0 = s.du, c1 = s.dv, c2 = -dir;
+        const double det = glm::dot(c0, glm::cross(c1, c2));
+        if (std::abs(det) < 1e-300) return std::nullopt;
+        const Vec3 x = Vec3(glm::dot(-f, glm::cross(c1, c2)), glm::dot(c0, glm::cross(-f, c2)), glm::dot(c0, glm::cross(c1, -f))) / det;
+        UV next{uv[0] + x.x, uv[1] + x.y};
+        if (closedU_) next[0] -= std::floor(next[0]);
+        if (closedV_) next[1] -= std::floor(next[1]);
+        next[0] = std::clamp(next[0], 0.0, 1.0);
+        next[1] = std::clamp(next[1], 0.0, 1.0);
+        uv = next;
+        t += x.z;
+    }
+    const Vec3 f = evaluate(uv).p - p - t * dir;
+    if (glm::length(f) > 1e-7 * size_) return std::nullopt;
+    return uv;
+}
+
+namespace {
+// Gauss-Legendre nodes and weights on [0, 1], 8 points.
+constexpr double kGx[8] = {0.0198550717512319, 0.1016667612931866, 0.2372337950418355, 0.4082826787521751,
+                           0.5917173212478249, 0.7627662049581645, 0.8983332387068134, 0.9801449282487681};
+constexpr double kGw[8] = {0.0506142681451881, 0.1111905172266872, 0.1568533229389436, 0.1813418916891810,
+                           0.1813418916891810, 0.1568533229389436, 0.1111905172266872, 0.0506142681451881};
+double jacobian(const DomainSurface& s, UV uv) {
+    const SurfacePoint p = s.evaluate(uv);
+    return glm::length(glm::cross(p.du, p.dv));
+}
+}  // namespace
+
+double DomainSurface::area() const {
+    double a = 0.0;
+    const int sub = 4;  // 4 x 4 cells of 8 x 8 Gauss points per window
+    const double hu = 1.0 / (wu_ * sub), hv = 1.0 / (wv_ * sub);
+    for (uint32_t i = 0; i < wv_ * sub; ++i)
+        for (uint32_t j = 0; j < wu_ * sub; ++j)
+            for (int a1 = 0; a1 < 8; ++a1)
+                for (int b1 = 0; b1 < 8; ++b1) a += kGw[a1] * kGw[b1] * jacobian(*this, {(j + kGx[b1]) * hu, (i + kGx[a1]) * hv});
+    return a * hu * hv;
+}
+
+double DomainSurface::areaStrip(UV uv) const {
+    // ∫₀ᵘ J(s, v) ds in pieces that end at window boundaries (J is smooth inside a window), each
+    // piece in up to 4 parts of 8 Gauss points.
+    const double u = std::clamp(uv[0], 0.0, 1.0);
+    double sum = 0.0, s0 = 0.0;
+    const double step = 1.0 / (wu_ * 4.0);
+    while (s0 < u) {
+        const double s1 = std::min(u, (std::floor(s0 / step + 1e-9) + 1.0) * step);
+        for (int k = 0; k < 8; ++k) sum += kGw[k] * (s1 - s0) * jacobian(*this, {s0 + kGx[k] * (s1 - s0), uv[1]});
+        s0 = s1;
+    }
+    return sum;
+}
+
+}  // namespace trim
+}  // namespace pw
