@@ -27,6 +27,7 @@
 #include "core/io/document_io.hpp"
 #include "core/mesh/mesh_tessellate.hpp"
 #include "core/model/camera_math.hpp"
+#include "core/trim/trim_loops.hpp"
 #include "render/scene/renderer.hpp"
 #include "render/targets/offscreen_target.hpp"
 #include "render/vk/device.hpp"
@@ -62,7 +63,16 @@ struct Scene {
     bool terrain = false;    // the terrain's own table (runTerrain), only when named
     std::string path;        // --file: a document measured with its own settings (levels, adaptivity, camera, display)
     bool corner = false;     // the camera aimed at the model's corner: about half of it off screen (culling on the CPU)
+    bool trimmed = false;    // against the same document untrimmed, frame by frame (issue 64)
 };
+
+// The 32 x 32 grid with four round holes in every patch: 4 096 trim loops.
+Document trimmedGrid() {
+    Document d = makePatchGrid(32, 32);
+    for (Patch& p : d.patches)
+        for (const UV c : {UV{0.27, 0.27}, UV{0.73, 0.27}, UV{0.27, 0.73}, UV{0.73, 0.73}}) p.trims.push_back(circleLoop(c, 0.17, true));
+    return d;
+}
 
 std::vector<Scene> allScenes() {
     return {
@@ -74,6 +84,7 @@ std::vector<Scene> allScenes() {
         {"grid128", [] { return makePatchGrid(128, 128); }, 16, false, false, true, ""},
         {"grid64-corner", [] { return makePatchGrid(64, 64); }, 16, false, false, false, "", false, "", true},
         {"terrain", [] { return makeTerrainDocument(); }, 64, true, false, true, "", true},
+        {"grid32-trimmed", [] { return trimmedGrid(); }, 16, false, false, false, "grid32", false, "", false, true},
     };
 }
 
@@ -298,6 +309,34 @@ int runBench(const BenchArgs& a) {
             variants.push_back(o);
             variants.back().mergeWindows = render::MergeWindows::Never;
         }
+        if (sc.trimmed) {  // the trims' cost: the same grid untrimmed, document by document, frame by frame
+            Document bare = doc;
+            for (Patch& p : bare.patches) p.trims.clear();
+            std::vector<double> gpu[2], wall[2];
+            uint64_t tris[2] = {0, 0};
+            for (int i = 0; i < a.frames; ++i)
+                for (int k = 0; k < 2; ++k) {
+                    renderer.setDocument(k == 0 ? doc : bare, nullptr);
+                    renderer.render(o);  // the first frame after the upload
+                    const render::FrameStats s = renderer.render(o);
+                    gpu[k].push_back(s.gpuMs);
+                    wall[k].push_back(s.wallMs);
+                    tris[k] = s.triangles();
+                }
+            const double tg = median(gpu[0]), bg = median(gpu[1]), tw = median(wall[0]), bw = median(wall[1]);
+            std::printf("%-20s %9.2f %9s %9.2f %11llu %8s %7s | untrimmed %9.2f ms GPU (%9.2f wall): %.2fx the untrimmed frame\n",
+                        sc.name.c_str(), tw, "-", tg, (unsigned long long)tris[0], "-", "-", bg, bw, bg > 0 ? tg / bg : 0.0);
+            out.push_back({{"scene", sc.name},
+                           {"patches", doc.patches.size()},
+                           {"trim_loops", 4 * doc.patches.size()},
+                           {"gpu_ms", tg},
+                           {"wall_ms", tw},
+                           {"triangles", tris[0]},
+                           {"untrimmed", {{"gpu_ms", bg}, {"wall_ms", bw}, {"triangles", tris[1]}}},
+                           {"trimmed_over_untrimmed_gpu", bg > 0 ? tg / bg : 0.0},
+                           {"trimmed_over_untrimmed_wall", bw > 0 ? tw / bw : 0.0}});
+            continue;
+        }
         const std::vector<Measure> measured = measureInterleaved(renderer, variants, a.frames);
         const Measure& t = measured[0];
         trianglesByScene[sc.name] = t.triangles;
@@ -406,7 +445,8 @@ void registerBenchCommand(CLI::App& app, Action& run) {
     cmd->add_option("--frames", a->frames, "Measured frames per scene (default 20)");
     cmd->add_option(
         "--scene", a->scenes,
-        "Scene(s) to run: teapot16, teapot64, grid32, grid32-adaptive8px, grid64-adaptive8px, grid128, grid64-corner (aimed at its corner: "
+        "Scene(s) to run: teapot16, teapot64, grid32, grid32-adaptive8px, grid64-adaptive8px, grid128, grid32-trimmed (4 096 trim loops, "
+        "against the same grid untrimmed), grid64-corner (aimed at its corner: "
         "about half off screen), terrain (only when named: "
         "near and far, culling off and on)");
     cmd->add_option("--json", a->json, "Write the results as JSON");

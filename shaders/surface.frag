@@ -12,6 +12,22 @@ layout(location = 5) flat in float inCulled;  // a patch the deciding camera cul
 layout(location = 2) in vec2 inUV;
 layout(location = 3) flat in uint inPatch;
 layout(location = 4) in vec2 inCurv;
+#include "core/gpu/trim_math.h"
+// The trimmed windows' v-monotone segments, two vec4 each (b0 b1, b2 b3), in the window's (u, v).
+layout(set = 0, binding = 7, std430) readonly buffer TrimSegments { vec4 trimSegs[]; };
+// Direct trimming (core/gpu/trim_math.h): the ray from (u, v) towards +u against the window's
+// segments; an even count (with the base parity) is trimmed away. Exact per pixel at any zoom.
+bool trimmedAway(uint patchIndex, vec2 uv) {
+    uvec4 t = patches[patchIndex].trim;
+    if ((t.z & kTrimTest) == 0u) return false;
+    uint crossings = (t.z & kTrimBaseKept) != 0u ? 1u : 0u;
+    for (uint i = 0u; i < t.y; ++i) {
+        vec4 a = trimSegs[2u * (t.x + i)];
+        vec4 b = trimSegs[2u * (t.x + i) + 1u];
+        crossings += trimCrossing(uv, a.xy, a.zw, b.xy, b.zw);
+    }
+    return (crossings & 1u) == 0u;
+}
 #endif
 layout(location = 0) out vec4 outColor;
 
@@ -31,6 +47,9 @@ vec3 diverging(float x) {  // blue (negative) - white - red (positive)
 vec3 culledGrey() { return ((int(gl_FragCoord.x + gl_FragCoord.y) / 5) & 1) == 0 ? vec3(0.42) : vec3(0.58); }
 
 void main() {
+#ifdef FULL_VARYINGS
+    if (draw.drawMode != kDrawPlainMesh && trimmedAway(inPatch, inUV)) discard;
+#endif
     if (draw.drawMode == kDrawFlatColour) {
         outColor = inCulled > 0.5 ? vec4(mix(draw.color.rgb, vec3(0.5), 0.6), draw.color.a) : draw.color;
         outColor.a *= inWire;  // the wire pipelines blend

@@ -8,6 +8,7 @@
 // adaptive and culling code would otherwise cost ~25 ms a frame on 1 024 patches when switched off.
 #include "common.glsl"
 #include "core/gpu/rational_math.h"
+#include "core/gpu/trim_math.h"
 
 layout(vertices = 16) out;
 layout(location = 0) in int inIdx[];
@@ -153,6 +154,11 @@ void main() {
     for (int e = 0; e < 4; ++e) gl_TessLevelOuter[e] = roundLevel(o[e]);
     gl_TessLevelInner[0] = roundLevel(in0);
     gl_TessLevelInner[1] = roundLevel(in1);
+    if ((pd.trim.z & kTrimAllGone) != 0u) {  // wholly trimmed away (core/gpu/trim_math.h): not tessellated
+        for (int e = 0; e < 4; ++e) gl_TessLevelOuter[e] = 0.0;
+        gl_TessLevelInner[0] = 0.0;
+        gl_TessLevelInner[1] = 0.0;
+    }
 
 #ifdef ADAPTIVE_AND_CULLING
     float margin = displacementMargin(pd);

@@ -64,10 +64,14 @@ struct PatchData {
     // Per edge, the detail at the map's mip levels 1..8 as fractions of `detail` (level 0), two
     // half floats a word: x levels 1 and 2, y 3 and 4, z 5 and 6, w 7 and 8 (the lower half first).
     uvec4 coarserDetail[4] PW_INIT(uvec4(0u));
+    // Trimming (core/gpu/trim_math.h): x the first segment in binding 7, y their count, z flags.
+    uvec4 trim PW_INIT(uvec4(0u));
 };
 
 // bindings 4-6, storage, read by the merged blocks of net windows only (shaders/merged.tesc,
 // surface.tese -DMERGED): the pool (xyz, weight), the windows' 16 pool indices, this frame's blocks.
+// binding 7, storage, read by the fragment shader: the trimmed windows' v-monotone trim segments
+// (shaders/trim.glsl).
 
 // binding 2: statistics the shaders write (patches culled this frame).
 PW_BLOCK(layout(set = 0, binding = 2, std430) buffer Counters, GpuCounters) {
@@ -93,7 +97,7 @@ PW_END_NAMESPACE
 
 #ifdef __cplusplus
 static_assert(sizeof(pw::gpu::FrameUniforms) == 3 * 64 + 19 * 16);
-static_assert(sizeof(pw::gpu::PatchData) == 160);
+static_assert(sizeof(pw::gpu::PatchData) == 176);
 static_assert(sizeof(pw::gpu::GpuCounters) == 16);
 static_assert(sizeof(pw::gpu::DrawPush) == 96);
 #endif

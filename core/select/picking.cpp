@@ -9,7 +9,9 @@
 
 #include "core/eval/bezier_triangle.hpp"
 #include "core/eval/rational_eval.hpp"
+#include "core/gpu/trim_math.h"
 #include "core/select/selection.hpp"
+#include "core/trim/trim_loops.hpp"
 
 namespace pw {
 inline namespace select {
@@ -120,6 +122,23 @@ bool raySphereMayHit(const Ray& ray, It first, It last) {
 }
 }  // namespace
 
+namespace {
+// The trim of a window of a trimmed patch or net, in the window's own (u, v); none when untrimmed.
+std::optional<WindowTrim> pickTrim(const Document& doc, const PatchInstance& pi) {
+    if (pi.patch >= 0) {
+        const std::vector<TrimLoop>& loops = doc.patches[size_t(pi.patch)].trims;
+        if (loops.empty()) return std::nullopt;
+        return windowTrim(monotoneSegments(loops), hasOuterLoop(loops), 0, 0, 1, 1);
+    }
+    if (pi.surface < 0) return std::nullopt;
+    const Surface& net = doc.surfaces[size_t(pi.surface)];
+    if (net.trims.empty()) return std::nullopt;
+    const uint32_t step = netStep(net.basis);
+    return windowTrim(monotoneSegments(net.trims), hasOuterLoop(net.trims), pi.windowRow / step, pi.windowCol / step,
+                      uint32_t(netWindowCount(net.cols, net.closedU, step)), uint32_t(netWindowCount(net.rows, net.closedV, step)));
+}
+}  // namespace
+
 std::optional<SurfaceHit> pickSurface(const Document& doc, const Ray& ray, int level, const std::vector<bool>* skip) {
     const auto skipped = [&](const auto& idx) { return skip && usesAnyPoint(idx, *skip); };
     level = std::clamp(level, 1, 64);
@@ -136,6 +155,10 @@ std::optional<SurfaceHit> pickSurface(const Document& doc, const Ray& ray, int l
         if (weights.basis != pi.basis || weights.tension != pi.tension || weights.nu != level)
             weights = makeGridWeights(pi.basis, pi.tension, level, level);
         evaluateWindowGrid(net, pi.idx, weights, grid);
+        // A trimmed window: hits on trimmed-away parts go on to what lies behind (issue 64).
+        const std::optional<WindowTrim> trim = pickTrim(doc, pi);
+        if (trim && (trim->flags & gpu::kTrimAllGone)) continue;
+        const bool tested = trim && (trim->flags & gpu::kTrimTest);
         const int n1 = level + 1;
         for (int r = 0; r < level; ++r)
             for (int col = 0; col < level; ++col) {
@@ -145,6 +168,17 @@ std::optional<SurfaceHit> pickSurface(const Document& doc, const Ray& ray, int l
                 const glm::dvec3& p11 = grid[size_t((r + 1) * n1 + col + 1)].p;
                 for (int tri = 0; tri < 2; ++tri) {
                     const auto t = tri == 0 ? intersectTriangle(ray, p00, p01, p11) : intersectTriangle(ray, p00, p11, p10);
+                    if (t && tested) {  // the hit's (u, v) from its barycentric place in the grid triangle
+                        const glm::dvec3 a = p00, b = tri == 0 ? p01 : p11, c = tri == 0 ? p11 : p10;
+                        const glm::dvec3 h = ray.origin + *t * ray.dir;
+                        const glm::dvec3 n = glm::cross(b - a, c - a);
+                        const double nn = std::max(glm::dot(n, n), 1e-300);
+                        const double wb = glm::dot(glm::cross(h - a, c - a), n) / nn, wc = glm::dot(glm::cross(b - a, h - a), n) / nn;
+                        const glm::dvec2 ua(col, r), ub = tri == 0 ? glm::dvec2(col + 1, r) : glm::dvec2(col + 1, r + 1),
+                                                     uc = tri == 0 ? glm::dvec2(col + 1, r + 1) : glm::dvec2(col, r + 1);
+                        const glm::dvec2 uv = (ua + wb * (ub - ua) + wc * (uc - ua)) / double(level);
+                        if (!trimKeeps(trim->segments, (trim->flags & gpu::kTrimBaseKept) == 0, uv)) continue;
+                    }
                     if (t && (!best || *t < best->t)) {
                         best = SurfaceHit{int(w), pi.patch, pi.surface, -1, *t, (col + 0.5) / level, (r + 0.5) / level};
                     }

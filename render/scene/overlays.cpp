@@ -8,6 +8,9 @@
 
 #include "core/eval/bezier_triangle.hpp"
 #include "core/eval/rational_eval.hpp"
+#include "core/gpu/trim_math.h"
+#include "core/trim/surface_domain.hpp"
+#include "core/trim/trim_loops.hpp"
 
 namespace pw::render {
 inline namespace scene {
@@ -128,6 +131,21 @@ OverlayScene uploadOverlayScene(Device& dev, const Document& doc) {
     constexpr int kSeg = 16;
     for (const PatchInstance& pi : inst) {
         const WindowNet net = gatherWindow(doc, pi.idx);
+        // A trimmed window's edges only where the trims keep them (issue 64).
+        std::optional<WindowTrim> trim;
+        if (const std::vector<TrimLoop>* loops = pi.patch >= 0     ? &doc.patches[size_t(pi.patch)].trims
+                                                 : pi.surface >= 0 ? &doc.surfaces[size_t(pi.surface)].trims
+                                                                   : nullptr;
+            loops && !loops->empty()) {
+            uint32_t r = 0, c = 0, wu = 1, wv = 1;
+            if (pi.surface >= 0) {
+                const Surface& n = doc.surfaces[size_t(pi.surface)];
+                const uint32_t step = netStep(n.basis);
+                r = pi.windowRow / step, c = pi.windowCol / step;
+                wu = uint32_t(netWindowCount(n.cols, n.closedU, step)), wv = uint32_t(netWindowCount(n.rows, n.closedV, step));
+            }
+            trim = windowTrim(monotoneSegments(*loops), hasOuterLoop(*loops), r, c, wu, wv);
+        }
         for (int e = 0; e < 4; ++e) {
             const Edge edge = Edge(e);
             const Continuity* cont = nullptr;
@@ -148,9 +166,26 @@ OverlayScene uploadOverlayScene(Device& dev, const Document& doc) {
                 const double v = (edge == Edge::V0) ? 0.0 : (edge == Edge::V1) ? 1.0 : t;
                 return evaluateWindow(net, pi.basis, pi.tension, u, v).p;
             };
+            auto kept = [&](int k) {  // the middle of piece k-1..k
+                if (!trim) return true;
+                if (trim->flags & gpu::kTrimAllGone) return false;
+                if (!(trim->flags & gpu::kTrimTest)) return true;
+                const double t = (k - 0.5) / kSeg;
+                const glm::dvec2 uv((edge == Edge::U0)   ? 0.0
+                                    : (edge == Edge::U1) ? 1.0
+                                                         : t,
+                                    (edge == Edge::V0)   ? 0.0
+                                    : (edge == Edge::V1) ? 1.0
+                                                         : t);
+                return trimKeeps(trim->segments, (trim->flags & gpu::kTrimBaseKept) == 0, uv);
+            };
             Vec3 prev = at(0);
             for (int k = 1; k <= kSeg; ++k) {
                 const Vec3 cur = at(k);
+                if (!kept(k)) {
+                    prev = cur;
+                    continue;
+                }
                 for (const Vec3& p : {prev, cur}) {
                     verts.insert(verts.end(), {float(p.x), float(p.y), float(p.z)});
                     verts.insert(verts.end(), col.begin(), col.end());
@@ -159,6 +194,25 @@ OverlayScene uploadOverlayScene(Device& dev, const Document& doc) {
             }
         }
     }
+    // Trim edges: every loop on its surface, in the colour of an open boundary (C0 where two
+    // surfaces share the cut).
+    auto trimEdges = [&](const SurfaceRef& ref, const std::vector<TrimLoop>& loops) {
+        if (loops.empty()) return;
+        const DomainSurface surface(doc, ref);
+        const std::array<float, 4> col = continuityColor(nullptr);
+        for (const TrimLoop& l : loops) {
+            const std::vector<glm::dvec2> uv = loopPolyline(l, 12);
+            for (size_t k = 0; k < uv.size(); ++k) {
+                for (const glm::dvec2& q : {uv[k], uv[(k + 1) % uv.size()]}) {
+                    const Vec3 p = surface.evaluate({q.x, q.y}).p;
+                    verts.insert(verts.end(), {float(p.x), float(p.y), float(p.z)});
+                    verts.insert(verts.end(), col.begin(), col.end());
+                }
+            }
+        }
+    };
+    for (uint32_t p = 0; p < doc.patches.size(); ++p) trimEdges(SurfaceRef{false, p}, doc.patches[p].trims);
+    for (uint32_t n = 0; n < doc.surfaces.size(); ++n) trimEdges(SurfaceRef{true, n}, doc.surfaces[n].trims);
     s.boundaryVertexCount = uint32_t(verts.size() / 7);
     s.boundaryVerts = uploadStatic(dev, verts, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
     return s;

@@ -163,9 +163,9 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
     }
 
     // Descriptor set layout: 0 frame uniforms, 1 per-patch levels, 2 counters, 3 the height map; the
-    // merged blocks' 4 pool, 5 window indices, 6 blocks.
+    // merged blocks' 4 pool, 5 window indices, 6 blocks; 7 the trim segments.
     const VkShaderStageFlags all = VK_SHADER_STAGE_ALL_GRAPHICS;
-    VkDescriptorSetLayoutBinding b[7] = {
+    VkDescriptorSetLayoutBinding b[8] = {
         {0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, all, nullptr},
         {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr},
         {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, all, nullptr},
@@ -175,9 +175,10 @@ PipelineSet createPipelines(Device& dev, VkFormat color, VkFormat depth, VkSampl
         {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, nullptr},
         {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, nullptr},
         {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, nullptr},
+        {7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
     };
     VkDescriptorSetLayoutCreateInfo dl{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    dl.bindingCount = 7;
+    dl.bindingCount = 8;
     dl.pBindings = b;
     VK_CHECK(vkCreateDescriptorSetLayout(d, &dl, nullptr, &set.setLayout));
     VkPushConstantRange pr{all, 0, sizeof(gpu::DrawPush)};

@@ -51,12 +51,13 @@ VkRect2D paneRect(const RenderOptions& opt, VkExtent2D extent) {
 namespace {
 
 void writeDescriptors(Device& dev, VkDescriptorSet set, const Buffer& ubo, const Buffer& patches, const Buffer& counters,
-                      const HeightTexture& height, const std::array<const Buffer*, 3>& merged) {
-    // 0 frame uniforms, 1 patch data, 2 counters, 4..6 the merged blocks' pool, window indices and blocks.
-    const Buffer* storage[7] = {&ubo, &patches, &counters, nullptr, merged[0], merged[1], merged[2]};
-    VkDescriptorBufferInfo infos[7];
-    VkWriteDescriptorSet w[7];
-    for (uint32_t i = 0; i < 7; ++i) {
+                      const HeightTexture& height, const std::array<const Buffer*, 4>& merged) {
+    // 0 frame uniforms, 1 patch data, 2 counters, 4..6 the merged blocks' pool, window indices and
+    // blocks, 7 the trim segments.
+    const Buffer* storage[8] = {&ubo, &patches, &counters, nullptr, merged[0], merged[1], merged[2], merged[3]};
+    VkDescriptorBufferInfo infos[8];
+    VkWriteDescriptorSet w[8];
+    for (uint32_t i = 0; i < 8; ++i) {
         w[i] = VkWriteDescriptorSet{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         w[i].dstSet = set;
         w[i].dstBinding = i;
@@ -69,7 +70,7 @@ void writeDescriptors(Device& dev, VkDescriptorSet set, const Buffer& ubo, const
     const VkDescriptorImageInfo image{height.sampler, height.image.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     w[3].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     w[3].pImageInfo = &image;
-    vkUpdateDescriptorSets(dev.device(), 7, w, 0, nullptr);
+    vkUpdateDescriptorSets(dev.device(), 8, w, 0, nullptr);
 }
 
 }  // namespace
@@ -85,7 +86,7 @@ Renderer::Renderer(Device& dev, RenderTarget& target) : dev_(dev), target_(targe
     m.height = uploadHeightTexture(dev, nullptr, {});
     m.placeholder = uploadStatic(dev, std::vector<uint32_t>(4, 0u), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     VkDescriptorPoolSize sizes[3] = {
-        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5}, {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
+        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 6}, {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}};
     VkDescriptorPoolCreateInfo dp{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     dp.maxSets = 1;
     dp.poolSizeCount = 3;
@@ -162,14 +163,15 @@ bool Renderer::mergingWanted(const RenderOptions& opt) const {
     // A vertex on a seam inside a block is evaluated on one of its two windows, so only what is
     // continuous there may be drawn: position and normal (lean varyings), not UV, patch id or curvature.
     return device && !m.scene.nets.empty() && !m.displaced && !opt.plainMesh && !opt.rawTessellator && !opt.lodCamera &&
-           !ds.showWireframe && !ds.showNormals && varyingsVariant(ds.shading) == VaryingsVariant::Lean &&
+           !ds.showWireframe && !ds.showNormals && varyingsVariant(ds.shading) == VaryingsVariant::Lean && m.scene.trimmedWindows == 0 &&
            !(ts.adaptive == AdaptiveMode::Distance && ts.distanceFrom != DistanceFrom::Edges);
 }
 
 void Renderer::updateLevels(const Document& doc) {
     Impl& m = *impl_;
     const std::vector<PatchInstance> inst = expandPatches(doc);
-    if (inst.size() != m.scene.windowCount || doc.triangles.size() != m.scene.triangleCount || doc.points.size() != m.scene.pointCount)
+    if (inst.size() != m.scene.windowCount || doc.triangles.size() != m.scene.triangleCount || doc.points.size() != m.scene.pointCount ||
+        m.scene.trimmedWindows > 0)  // trims: their segments are uploaded with the scene
         return setDocument(doc, m.map);
     const std::vector<gpu::PatchData> pd = windowPatchData(doc, inst, m.map.get(), &m.mips, m.scene);
     const VkDeviceSize bytes = sizeof(gpu::PatchData) * pd.size();
@@ -335,7 +337,8 @@ FrameStats Renderer::render(const RenderOptions& opt) {
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipes_.layout, 0, 1, &m.set, 0, nullptr);
 
     // Step 3: the surface (statistics cover this pass only), then the overlays (FramePasses).
-    FramePasses::Frame frame{cmd, dev_, opt, plan, m, pipes_, pipes_.tess[m.displaced ? 1 : 0], varyingsVariant(ds.shading), stats};
+    FramePasses::Frame frame{
+        cmd, dev_, opt, plan, m, pipes_, pipes_.tess[m.displaced ? 1 : 0], varyingsVariant(ds.shading, m.scene.trimmedWindows > 0), stats};
     FramePasses::surface(frame);
     // Step 4: overlays, after the statistics query ends (outside rendering, see stats.hpp).
     bool anyOverlay = false;

@@ -54,10 +54,10 @@ struct Renderer::Impl {
     std::vector<Join> joins;    // the document's, for the curvature graph across a join (windows = patch indices)
     Buffer blocks;              // this frame's merged blocks (render/scene/merged_blocks.hpp), HostWritten
     Buffer placeholder;         // bound where the scene has no buffer yet (no windows)
-    // Bindings 4..6: the pool and window indices as storage, the blocks.
-    std::array<const Buffer*, 3> mergedBuffers() const {
+    // Bindings 4..7: the pool and window indices as storage, the blocks, the trim segments.
+    std::array<const Buffer*, 4> mergedBuffers() const {
         const auto or_ = [&](const Buffer& b) { return b.buffer ? &b : &placeholder; };
-        return {or_(scene.pool), or_(scene.indices), or_(blocks)};
+        return {or_(scene.pool), or_(scene.indices), or_(blocks), or_(scene.trimSegments)};
     }
 };
 

@@ -27,7 +27,10 @@ inline LevelsVariant levelsVariant(const TessSettings& ts) {
 }
 
 // Patch-id, UV and curvature shading need the full varying set; the others position and normal only.
-inline VaryingsVariant varyingsVariant(ShadingMode m) {
+// A scene with trimmed windows always takes the full set: the fragment shader tests (u, v) against
+// the trims (shaders/trim.glsl).
+inline VaryingsVariant varyingsVariant(ShadingMode m, bool trimmed = false) {
+    if (trimmed) return VaryingsVariant::Full;
     switch (m) {
         case ShadingMode::PatchId:
         case ShadingMode::UvChecker:

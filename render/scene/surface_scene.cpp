@@ -7,6 +7,7 @@
 #include "core/eval/displacement.hpp"
 #include "core/select/picking.hpp"
 #include "core/tess/edge_levels.hpp"
+#include "core/trim/trim_loops.hpp"
 
 namespace pw::render {
 inline namespace scene {
@@ -19,6 +20,46 @@ glm::mat4 basisPushMatrix(Basis basis, double tension) {
         for (int j = 0; j < 4; ++j) g[i][j] = float(m[i][j]);
     return g;
 }
+
+namespace {
+// Each trimmed window's segments in its own (u, v) and its PatchData::trim (core/trim/trim_loops.hpp windowTrim).
+void windowTrims(const Document& doc, const std::vector<PatchInstance>& inst, std::vector<gpu::PatchData>& pd, SurfaceScene& s) {
+    s.trimData.clear();
+    s.trimmedWindows = 0;
+    int32_t netSegsOf = -1;  // the net whose segments are in netSegs
+    std::vector<TrimSegment> netSegs;
+    bool netOuter = false;
+    for (size_t w = 0; w < inst.size() && w < pd.size(); ++w) {
+        const PatchInstance& pi = inst[w];
+        WindowTrim t;
+        if (pi.patch >= 0) {
+            const std::vector<TrimLoop>& loops = doc.patches[size_t(pi.patch)].trims;
+            if (loops.empty()) continue;
+            t = windowTrim(monotoneSegments(loops), hasOuterLoop(loops), 0, 0, 1, 1);
+        } else if (pi.surface >= 0) {
+            const Surface& net = doc.surfaces[size_t(pi.surface)];
+            if (net.trims.empty()) continue;
+            if (netSegsOf != pi.surface) {
+                netSegs = monotoneSegments(net.trims);
+                netOuter = hasOuterLoop(net.trims);
+                netSegsOf = pi.surface;
+            }
+            const uint32_t step = netStep(net.basis);
+            const uint32_t wu = uint32_t(netWindowCount(net.cols, net.closedU, step)),
+                           wv = uint32_t(netWindowCount(net.rows, net.closedV, step));
+            t = windowTrim(netSegs, netOuter, pi.windowRow / step, pi.windowCol / step, wu, wv);
+        } else {
+            continue;
+        }
+        ++s.trimmedWindows;
+        pd[w].trim = glm::uvec4(uint32_t(s.trimData.size() / 2), uint32_t(t.segments.size()), t.flags, 0u);
+        for (const TrimSegment& g : t.segments) {
+            s.trimData.emplace_back(float(g.b[0].x), float(g.b[0].y), float(g.b[1].x), float(g.b[1].y));
+            s.trimData.emplace_back(float(g.b[2].x), float(g.b[2].y), float(g.b[3].x), float(g.b[3].y));
+        }
+    }
+}
+}  // namespace
 
 std::vector<gpu::PatchData> windowPatchData(const Document& doc, const std::vector<PatchInstance>& inst, const HeightMap* map,
                                             const std::vector<HeightMap>* mips, SurfaceScene& s) {
@@ -44,6 +85,7 @@ std::vector<gpu::PatchData> windowPatchData(const Document& doc, const std::vect
                 pd[w].coarserDetail[e][k] = glm::packHalf2x16(glm::vec2(frac(2 * k), frac(2 * k + 1)));
             }
     }
+    windowTrims(doc, inst, pd, s);
     for (size_t w = 0; w < levels.size(); ++w) {
         const WindowLevels& l = levels[w];
         pd[w].outer = {l.outer[0], l.outer[1], l.outer[2], l.outer[3]};
@@ -112,6 +154,7 @@ SurfaceScene uploadSurfaceScene(Device& dev, const Document& doc, const HeightMa
     s.pool = uploadHostWritten(dev, pts, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     s.indices = uploadStatic(dev, idx, VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     s.patchData = uploadStatic(dev, pd, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    if (!s.trimData.empty()) s.trimSegments = uploadStatic(dev, s.trimData, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
     const std::vector<bool> used = usedPointMask(doc);
     std::vector<uint32_t> shown;
     for (uint32_t p = 0; p < used.size(); ++p)
