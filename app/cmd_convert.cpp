@@ -22,6 +22,7 @@ namespace {
 struct ConvertOptions {
     std::string input, output;
     bool quiet = false;
+    bool partial = false;
 };
 
 int runConvert(const ConvertOptions& opt) {
@@ -29,7 +30,7 @@ int runConvert(const ConvertOptions& opt) {
     if (!canSave(opt.output))
         throw OutputError(opt.output, "unknown file type '" + lowerExtension(opt.output) + "'; Patchwork writes " + savableExtensions());
     LoadReport report;
-    const Document doc = loadDocument(opt.input, &report);
+    const Document doc = loadDocument(opt.input, &report, opt.partial);
     for (const std::string& note : report.notes) std::cerr << "patchwork convert: " << opt.input << ": " << note << "\n";
     (void)loadDocumentHeightMap(doc, opt.input);  // a height map that cannot be read is refused, whatever the output
     ExportOptions options = report.exportOptions.value_or(ExportOptions{});
@@ -56,6 +57,9 @@ void registerConvertCommand(CLI::App& app, Action& run) {
     cmd->add_option("input", opt->input, "Input (" + formatList(FormatUse::Load, ", ") + ")")->required();
     cmd->add_option("output", opt->output, "Output (" + formatList(FormatUse::Save, ", ") + "); replaced atomically")->required();
     cmd->add_flag("-q,--quiet", opt->quiet, "Print nothing on success");
+    cmd->add_flag(
+        "--partial", opt->partial,
+        "Take a STEP/IGES file that comes in incomplete (faces skipped) as far as it comes; otherwise such a file is refused (exit 2)");
 }
 
 }  // namespace pw::app

@@ -22,6 +22,7 @@ namespace {
 struct EditOptions {
     std::string input, output, script, commands;
     bool quiet = false;
+    bool partial = false;
 };
 
 // Keeps the script's writes until it has run to its end.
@@ -39,7 +40,9 @@ int runEdit(const EditOptions& opt) {
         throw OutputError(opt.output,
                           "unknown file type '" + lowerExtension(opt.output) + "'; Patchwork writes " + formatList(FormatUse::Document));
     EditSession session;
-    if (!opt.input.empty()) session.open(opt.input);
+    if (!opt.input.empty())
+        for (const std::string& note : session.open(opt.input, opt.partial))
+            std::cerr << "patchwork edit: " << opt.input << ": " << note << "\n";
     const CommandTable table = makeCommandTable();
     ScriptHost host;
     if (!opt.script.empty()) table.runScript(session, host, readFileLimited(opt.script), opt.script);
@@ -65,6 +68,9 @@ void registerEditCommand(CLI::App& app, Action& run) {
     cmd->add_option("--run", opt->script, "Script file: one command per line or ';'-separated, '#' starts a comment");
     cmd->add_option("-c,--commands", opt->commands, "Commands, ';'-separated (run after --run)");
     cmd->add_flag("-q,--quiet", opt->quiet, "Print nothing on success");
+    cmd->add_flag(
+        "--partial", opt->partial,
+        "Take a STEP/IGES file that comes in incomplete (faces skipped) as far as it comes; otherwise such a file is refused (exit 2)");
 }
 
 }  // namespace pw::app

@@ -29,6 +29,7 @@ namespace {
 
 struct ExportArgs {
     std::string input;
+    bool partial = false;
     std::string output;
     int tess = 0;  // 0 = the document's level
     bool tessGiven = false;
@@ -83,7 +84,7 @@ std::optional<TriangleMesh> displayedMesh(const ExportArgs& args, const Document
 // skipped goes to stderr.
 Document loadForExport(const ExportArgs& args, LoadReport& report) {
     (void)checkOutputPath(args.output);
-    Document doc = loadDocument(args.input, &report);
+    Document doc = loadDocument(args.input, &report, args.partial);
     for (const std::string& note : report.notes) std::cerr << "patchwork export: " << args.input << ": " << note << "\n";
     applyDisplacementArgs("export", args.displacement, doc);
     (void)loadDocumentHeightMap(doc, args.input);  // an unreadable map is refused before any work
@@ -212,6 +213,9 @@ void registerExportCommand(CLI::App& app, Action& run) {
     cmd->add_option("--size", args->size, "With --as-displayed: the view's size WIDTHxHEIGHT (default 1280x720)");
     cmd->add_option("--device", args->device, "With --as-displayed: Vulkan device, substring of its name");
     addDisplacementOptions(cmd, args->displacement);
+    cmd->add_flag(
+        "--partial", args->partial,
+        "Take a STEP/IGES file that comes in incomplete (faces skipped) as far as it comes; otherwise such a file is refused (exit 2)");
     cmd->add_flag("--validation", args->validation, "With --as-displayed: Khronos validation layer; exit 1 on any message");
     cmd->parse_complete_callback([cmd = cmd, args = args] {
         args->tessGiven = cmd->count("--tess") > 0;

@@ -10,12 +10,20 @@
 namespace pw {
 inline namespace io {
 
-Document loadDocument(const std::filesystem::path& path, LoadReport* report) {
-    if (report) *report = LoadReport{};
+Document loadDocument(const std::filesystem::path& path, LoadReport* report, bool partial) {
+    LoadReport own;
+    if (!report) report = &own;
+    *report = LoadReport{};
     const FileFormat* f = formatOf(path);
     if (!f || !f->load)
         throw InputError(path.string(), "unknown file type '" + lowerExtension(path) + "'; Patchwork reads " + formatList(FormatUse::Load));
-    return f->load(path, report);
+    Document doc = f->load(path, report);
+    if (report->incomplete && !partial) {
+        std::string what;
+        for (const std::string& n : report->notes) what += (what.empty() ? "" : "; ") + n;
+        throw InputError(path.string(), what + " (--partial takes what came in)");
+    }
+    return doc;
 }
 
 void saveDocument(const Document& doc, const std::filesystem::path& path, const ExportOptions& options, TriangleMesh* displayed) {

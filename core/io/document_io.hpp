@@ -19,9 +19,12 @@ inline namespace io {
 struct LoadReport {
     std::optional<ExportOptions> exportOptions;  // a Patchwork glTF's own export options
     std::vector<std::string> notes;              // what was skipped (STEP/IGES faces) and why
+    bool incomplete = false;                     // something of the file was left out (faces skipped)
 };
 
-Document loadDocument(const std::filesystem::path& path, LoadReport* report = nullptr);
+// A file that comes in incomplete (STEP/IGES faces skipped) is refused with InputError naming what
+// was left out, unless `partial` (the command line's --partial, the editor's open with its notice).
+Document loadDocument(const std::filesystem::path& path, LoadReport* report = nullptr, bool partial = false);
 // A glTF or OBJ with gltf.asDisplayed writes `displayed` (the GPU's tessellation, captured by the
 // caller with render/; consumed); without it such a save is refused (OutputError naming the path).
 void saveDocument(const Document& doc, const std::filesystem::path& path, const ExportOptions& gltf = {},

@@ -21,6 +21,7 @@ Document loadCad(const std::filesystem::path& path, LoadReport* report) {
     Document doc = importCadSurfaces(path, &cad);
     if (report) {
         report->notes = std::move(cad.notes);
+        report->incomplete = cad.importedFaces < cad.faces;
         if (const std::string summary = cad.skippedSummary(); !summary.empty()) report->notes.push_back(summary);
     }
     return doc;

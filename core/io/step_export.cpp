@@ -57,6 +57,7 @@
 #include "core/base/up_axis.hpp"
 #include "core/eval/bezier_triangle.hpp"
 #include "core/io/cad_labels.hpp"
+#include "core/io/cad_trim_face.hpp"
 #include "core/io/occt_support.hpp"
 #include "core/ops/net_ops.hpp"
 
@@ -210,23 +211,27 @@ CadShape cadShape(const Document& doc, const char* format) {
     // Every face in the document's order, with its name or place (cad_labels.hpp).
     std::vector<std::pair<TopoDS_Face, std::string>> made;
     std::vector<std::string> userNames;  // the items' own names (empty where unnamed)
-    auto addFace = [&](const Handle(Geom_Surface) & surface, const char* kind, size_t index, const std::string& name) {
+    auto addFace = [&](const Handle(Geom_Surface) & surface, const char* kind, size_t index, const std::string& name,
+                       const std::vector<TrimLoop>& trims = {}) {
         const std::string what = std::string(std::string_view(kind) == "net" ? "surface" : kind) + " " + std::to_string(index);
-        BRepBuilderAPI_MakeFace face(surface, Precision::Confusion());
-        if (!face.IsDone())
-            throw std::runtime_error(what + ": OpenCASCADE could not make a face of it (error " + std::to_string(int(face.Error())) + ")");
-        sewing.Add(face.Face());
-        // A name that reads as a place ("patch 5": what add-patch names the patch it makes, stale
-        // once an earlier item goes) is written as the item's own place, never as another's.
-        const bool placeLike = cadFaceLabelIndex(name, "patch") || cadFaceLabelIndex(name, "net") || cadFaceLabelIndex(name, "triangle");
-        made.emplace_back(face.Face(), cadFaceName(kind, index, placeLike ? std::string() : name));
-        userNames.push_back(placeLike ? std::string() : name);
+        // A trimmed surface is a face per outer loop, with its holes (cad_trim_face.hpp).
+        for (const TopoDS_Face& face : trimmedFaces(surface, trims, tol, what)) {
+            sewing.Add(face);
+            // A name that reads as a place ("patch 5": what add-patch names the patch it makes, stale
+            // once an earlier item goes) is written as the item's own place, never as another's.
+            const bool placeLike =
+                cadFaceLabelIndex(name, "patch") || cadFaceLabelIndex(name, "net") || cadFaceLabelIndex(name, "triangle");
+            made.emplace_back(face, cadFaceName(kind, index, placeLike ? std::string() : name));
+            userNames.push_back(placeLike ? std::string() : name);
+        }
     };
     for (size_t p = 0; p < src.patches.size(); ++p) {
         const std::optional<Weights16> w = gatherWeights(src, src.patches[p].idx);  // rational: exact, weights and all
-        addFace(occt::bezierSurface(patchNet(src, src.patches[p].idx), w ? &*w : nullptr), "patch", p, src.patches[p].name);
+        addFace(occt::bezierSurface(patchNet(src, src.patches[p].idx), w ? &*w : nullptr), "patch", p, src.patches[p].name,
+                src.patches[p].trims);
     }
-    for (size_t s = 0; s < src.surfaces.size(); ++s) addFace(netSurface(src, src.surfaces[s], tol), "net", s, src.surfaces[s].name);
+    for (size_t s = 0; s < src.surfaces.size(); ++s)
+        addFace(netSurface(src, src.surfaces[s], tol), "net", s, src.surfaces[s].name, src.surfaces[s].trims);
     for (size_t t = 0; t < src.triangles.size(); ++t)
         addFace(occt::bezierSurface(triangleAsCollapsedQuad(gatherTriangleNet(src, src.triangles[t].idx))), "triangle", t,
                 src.triangles[t].name);

@@ -50,6 +50,7 @@
 #include "core/io/bounded_child.hpp"
 #include "core/io/cad_labels.hpp"
 #include "core/io/cad_plane_fan.hpp"
+#include "core/io/cad_trim_import.hpp"
 #include "core/io/cad_values.hpp"
 #include "core/io/occt_support.hpp"
 #include "core/io/patchwork_format.hpp"
@@ -66,7 +67,7 @@ namespace {
 // When the 2-D curve is a line of constant u or constant v (an edge of the parameter rectangle),
 // possibly trimmed, or a B-spline whose poles all share u or v: records that value in `us` or `vs`
 // and returns true.
-bool isoCurve(const Handle(Geom2d_Curve) & c, std::vector<double>& us, std::vector<double>& vs) {
+bool isoCurve(const Handle(Geom2d_Curve) & c, std::vector<double>& us, std::vector<double>& vs, double tol) {
     Handle(Geom2d_Curve) curve = c;
     if (auto t = Handle(Geom2d_TrimmedCurve)::DownCast(curve)) curve = t->BasisCurve();
     if (auto l = Handle(Geom2d_Line)::DownCast(curve)) {
@@ -83,8 +84,8 @@ bool isoCurve(const Handle(Geom2d_Curve) & c, std::vector<double>& us, std::vect
         bool sameU = true, sameV = true;
         const gp_Pnt2d p0 = b->Pole(1);
         for (int i = 2; i <= b->NbPoles(); ++i) {
-            sameU = sameU && std::abs(b->Pole(i).X() - p0.X()) < 1e-12;
-            sameV = sameV && std::abs(b->Pole(i).Y() - p0.Y()) < 1e-12;
+            sameU = sameU && std::abs(b->Pole(i).X() - p0.X()) < tol;
+            sameV = sameV && std::abs(b->Pole(i).Y() - p0.Y()) < tol;
         }
         if (sameU)
             us.push_back(p0.X());
@@ -95,40 +96,18 @@ bool isoCurve(const Handle(Geom2d_Curve) & c, std::vector<double>& us, std::vect
     return false;
 }
 
-std::string typeName(const Handle(Geom_Surface) & s) {
-    std::string n = s->DynamicType()->Name();
-    if (n.rfind("Geom_", 0) == 0) n = n.substr(5);
-    return n;
-}
-
 // The face's surface as a (possibly rational) B-spline of degree <= 3 over exactly the face's parameter
 // rectangle, oriented like the face; or the reason it cannot be. Planes, cylinders, cones, spheres,
 // tori, surfaces of revolution and extrusion and offsets are first converted by OpenCASCADE, face
 // and boundary curves together, to B-splines (exact for the analytic and swept surfaces: conics are
 // rational quadratics); `converted` names the surface the face had.
-std::variant<Handle(Geom_BSplineSurface), std::string> faceSurface(const TopoDS_Face& face, const std::string& converted = {}) {
-    Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
-    if (surface.IsNull()) return std::string("it has no surface");
-    if (auto t = Handle(Geom_RectangularTrimmedSurface)::DownCast(surface)) surface = t->BasisSurface();
-    Handle(Geom_BSplineSurface) bs;
-    if (auto b = Handle(Geom_BSplineSurface)::DownCast(surface)) {
-        bs = Handle(Geom_BSplineSurface)::DownCast(b->Copy());
-    } else if (auto z = Handle(Geom_BezierSurface)::DownCast(surface)) {
-        bs = GeomConvert::SurfaceToBSplineSurface(z);
-    } else if (converted.empty()) {
-        BRepBuilderAPI_NurbsConvert convert(face, true);
-        if (!convert.IsDone() || convert.Shape().ShapeType() != TopAbs_FACE)
-            return "a " + typeName(surface) + " surface OpenCASCADE could not convert to a B-spline";
-        return faceSurface(TopoDS::Face(convert.Shape()), typeName(surface));
-    } else {
-        return "a " + converted + " surface OpenCASCADE converted to a " + typeName(surface) + " (not a B-spline)";
-    }
-    const std::string what = converted.empty() ? std::string() : "a " + converted + " surface as a B-spline of ";
-    if (bs->UDegree() > 3 || bs->VDegree() > 3)
-        return what + "degree " + std::to_string(bs->UDegree()) + " x " + std::to_string(bs->VDegree()) + " (3 at most)";
-    // A periodic surface (a whole cylinder or sphere) is the same surface with clamped knots.
-    if (bs->IsUPeriodic()) bs->SetUNotPeriodic();
-    if (bs->IsVPeriodic()) bs->SetVNotPeriodic();
+// A face whose outline is not its rectangle says "trimmed: …" (cad_trim_import.hpp takes it then).
+std::variant<Handle(Geom_BSplineSurface), std::string> faceSurface(const FaceBSpline& fb) {
+    const TopoDS_Face& face = fb.face;
+    Handle(Geom_BSplineSurface) bs = Handle(Geom_BSplineSurface)::DownCast(fb.surface->Copy());
+    double su0, su1, sv0, sv1;
+    bs->Bounds(su0, su1, sv0, sv1);
+    const double isoTol = 1e-9 * std::max(su1 - su0, sv1 - sv0);  // p-curves written as iso lines to rounding
 
     int wires = 0;
     for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next()) ++wires;
@@ -140,14 +119,13 @@ std::variant<Handle(Geom_BSplineSurface), std::string> faceSurface(const TopoDS_
         const TopoDS_Edge& edge = TopoDS::Edge(e.Current());
         double f = 0, l = 0;
         const Handle(Geom2d_Curve) pc = BRep_Tool::CurveOnSurface(edge, face, f, l);
-        if (pc.IsNull() || !isoCurve(pc, us, vs)) {
+        if (pc.IsNull() || !isoCurve(pc, us, vs, isoTol)) {
             if (BRep_Tool::Degenerated(edge)) continue;
             return std::string("trimmed by a curve that is not a parameter line");
         }
     }
-    double u0, u1, v0, v1, su0, su1, sv0, sv1;
+    double u0, u1, v0, v1;
     BRepTools::UVBounds(face, u0, u1, v0, v1);
-    bs->Bounds(su0, su1, sv0, sv1);
     if (us.size() >= 2) {
         u0 = *std::min_element(us.begin(), us.end());
         u1 = *std::max_element(us.begin(), us.end());
@@ -158,6 +136,11 @@ std::variant<Handle(Geom_BSplineSurface), std::string> faceSurface(const TopoDS_
     }
     const double eu = 1e-9 * (su1 - su0), ev = 1e-9 * (sv1 - sv0);
     if (u0 < su0 - eu || u1 > su1 + eu || v0 < sv0 - ev || v1 > sv1 + ev) return std::string("its boundary leaves the surface");
+    // Every side on the rectangle's own sides: an L of iso lines is not its bounding rectangle.
+    for (double u : us)
+        if (std::min(std::abs(u - u0), std::abs(u - u1)) > eu) return std::string("trimmed: its outline is not its parameter rectangle");
+    for (double v : vs)
+        if (std::min(std::abs(v - v0), std::abs(v - v1)) > ev) return std::string("trimmed: its outline is not its parameter rectangle");
     if (u0 > su0 + eu || u1 < su1 - eu || v0 > sv0 + ev || v1 < sv1 - ev) bs->Segment(u0, u1, v0, v1);  // exact
     if (face.Orientation() == TopAbs_REVERSED) bs->UReverse();
     return bs;
@@ -218,6 +201,8 @@ struct NetFace {
     uint32_t first = 0, count = 0;
     std::string name;
     std::optional<size_t> place;  // "net N" (cad_labels.hpp)
+    std::vector<TrimLoop> trims;  // a trimmed face: its loops in the spans' grid, the net's domain
+    int face = 0;                 // its number in the file
 };
 
 // Each C2 face's patches (their shared points merged) as one uniform B-spline net, closed where
@@ -225,7 +210,10 @@ struct NetFace {
 // are not uniform (not C2 in the net's uniform parameters) keeps its patches.
 // `patchPlaces` (one per patch) loses the entries of the patches that became nets; the nets are
 // put in their places.
-void rebuildNets(Document& doc, const std::vector<NetFace>& netFaces, std::vector<std::optional<size_t>>& patchPlaces) {
+// A trimmed face whose patches make no net is dropped (its loops span them): its number goes into
+// `dropped` and a note into `notes`.
+void rebuildNets(Document& doc, const std::vector<NetFace>& netFaces, std::vector<std::optional<size_t>>& patchPlaces,
+                 std::vector<std::string>& notes, std::vector<int>& dropped) {
     std::vector<std::optional<size_t>> netPlaces;
     std::vector<bool> converted(doc.patches.size(), false);
     for (auto f = netFaces.begin(); f != netFaces.end(); ++f) {
@@ -241,8 +229,16 @@ void rebuildNets(Document& doc, const std::vector<NetFace>& netFaces, std::vecto
             } catch (const EditError&) {  // G1 or C0 seams: the face stays patches, joined
             }
         }
+        if (!net && !f->trims.empty()) {
+            notes.push_back("face " + std::to_string(f->face) + " skipped: trimmed across " + std::to_string(f->count) +
+                            " patches that make no net (their seams are not C1)");
+            dropped.push_back(f->face);
+            for (uint32_t k = 0; k < f->count; ++k) converted[f->first + k] = true;
+            continue;
+        }
         if (!net) continue;
         doc.surfaces[*net].name = f->name;
+        doc.surfaces[*net].trims = f->trims;
         netPlaces.push_back(f->place);
         for (uint32_t k = 0; k < f->count; ++k) converted[f->first + k] = true;
     }
@@ -267,6 +263,8 @@ void rebuildNets(Document& doc, const std::vector<NetFace>& netFaces, std::vecto
 Document importInProcess(const std::filesystem::path& path, bool step, const std::string& bytes, CadImportReport* report) {
     CadImportReport rep;
     Document doc;
+    TopTools_IndexedMapOfShape faces;                // the file's faces, numbered from 1
+    std::vector<int> skipped;                        // the faces left out
     std::vector<NetFace> netFaces;                   // faces that may come back as nets
     std::vector<std::optional<size_t>> patchPlaces;  // a patch's place when its face is labelled "patch N"
     std::vector<std::optional<size_t>> trianglePlaces;
@@ -307,26 +305,49 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
             if (reader.TransferRoots() == 0) throw InputError(path.string(), "the IGES file holds no shape");
             shape = reader.OneShape();
         }
-        TopTools_IndexedMapOfShape faces;
         TopExp::MapShapes(shape, TopAbs_FACE, faces);
         rep.faces = size_t(faces.Extent());
-        std::vector<int> skipped;
         for (int f = 1; f <= faces.Extent(); ++f) {
             // The face's Bézier patches: its B-spline cut at its knots, or a planar face trimmed
             // by curves as a fan from its centre; or the reason it has none.
             occt::BezierPatches patches;
             bool netCandidate = false;
-            auto result = faceSurface(TopoDS::Face(faces(f)));
+            std::vector<TrimLoop> trims;  // a trimmed face's loops in its spans' grid (cad_trim_import.hpp)
+            const auto fb = faceBSpline(TopoDS::Face(faces(f)));
+            std::variant<Handle(Geom_BSplineSurface), std::string> result =
+                std::holds_alternative<FaceBSpline>(fb) ? faceSurface(std::get<FaceBSpline>(fb)) : std::get<std::string>(fb);
+            // A face trimmed by its outline: a planar one fanned exactly where it can be, else its
+            // surface with trim loops.
+            std::variant<std::monostate, occt::BezierPatches, std::string> fan;
+            if (auto* why = std::get_if<std::string>(&result); why && why->rfind("trimmed", 0) == 0) {
+                fan = occt::planarFan(TopoDS::Face(faces(f)));
+                if (!std::holds_alternative<occt::BezierPatches>(fan)) {
+                    auto t = trimmedFace(std::get<FaceBSpline>(fb));
+                    if (auto* tf = std::get_if<TrimmedFace>(&t)) {
+                        result = tf->surface;
+                        trims = std::move(tf->loops);
+                        if (tf->deviation > 0.0)
+                            rep.notes.push_back("face " + std::to_string(f) + ": trim curves approximated by cubic segments within " +
+                                                std::to_string(tf->deviation) + " (parameter units)");
+                    } else {
+                        *why += "; " + std::get<std::string>(t);
+                    }
+                }
+            }
             if (auto* bs = std::get_if<Handle(Geom_BSplineSurface)>(&result)) {
                 netCandidate = mayBeNet(*bs);
                 GeomConvert_BSplineSurfaceToBezierSurface split(*bs);
                 for (int i = 1; i <= split.NbUPatches(); ++i)
                     for (int j = 1; j <= split.NbVPatches(); ++j) patches.push_back(split.Patch(i, j));
-            } else if (auto fan = occt::planarFan(TopoDS::Face(faces(f))); auto* fanned = std::get_if<occt::BezierPatches>(&fan)) {
+            } else if (std::holds_alternative<std::monostate>(fan)) {
+                fan = occt::planarFan(TopoDS::Face(faces(f)));  // not tried yet (a plane planarFan refuses says why)
+            }
+            if (auto* fanned = std::get_if<occt::BezierPatches>(&fan); fanned && patches.empty()) {
                 patches = std::move(*fanned);
-            } else {
-                // A plane's own reason, else why the surface itself could not be used.
-                const std::string* why = std::get_if<std::string>(&fan);
+            } else if (patches.empty()) {
+                // Why the trims could not be kept, else a plane's own reason, else why the surface itself could not be used.
+                const std::string* tried = std::get_if<std::string>(&result);
+                const std::string* why = tried && tried->rfind("trimmed", 0) == 0 ? tried : std::get_if<std::string>(&fan);
                 rep.notes.push_back("face " + std::to_string(f) + " skipped: " + (why ? *why : std::get<std::string>(result)));
                 skipped.push_back(f);
                 continue;
@@ -338,10 +359,17 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
             const std::optional<size_t> patchPlace = patches.size() == 1 ? cadFaceLabelIndex(name, "patch") : std::nullopt;
             const std::optional<size_t> netPlace = cadFaceLabelIndex(name, "net");
             const std::optional<size_t> trianglePlace = patches.size() == 1 ? cadFaceLabelIndex(name, "triangle") : std::nullopt;
-            const bool mayBeTriangle = patches.size() == 1 && !netPlace && !patchPlace;
+            const bool mayBeTriangle = patches.size() == 1 && !netPlace && !patchPlace && trims.empty();
+            if (!trims.empty() && patches.size() > 1 && !netCandidate) {  // its loops would span patches, not one net
+                rep.notes.push_back("face " + std::to_string(f) + " skipped: trimmed across " + std::to_string(patches.size()) +
+                                    " rational spans (a trimmed face comes in as one patch or one polynomial net)");
+                skipped.push_back(f);
+                continue;
+            }
             if (patchPlace || netPlace || trianglePlace) name.clear();
             if (netCandidate && (patches.size() > 1 || netPlace))
-                netFaces.push_back({uint32_t(doc.patches.size()), uint32_t(patches.size()), name, netPlace});
+                netFaces.push_back({uint32_t(doc.patches.size()), uint32_t(patches.size()), name, netPlace, trims, f});
+
             for (size_t k = 0; k < patches.size(); ++k) {
                 // Raised to bicubic per Bézier patch: BSplSLib's degree elevation of a whole
                 // rational B-spline fails in OCCT 7.6 (an out-of-range index on a converted sphere).
@@ -371,6 +399,7 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
                     }
                 }
                 Patch patch;
+                if (patches.size() == 1) patch.trims = trims;
                 if (!name.empty()) patch.name = patches.size() > 1 ? name + " " + std::to_string(k) : name;
                 if (trianglePlace) patch.name = "triangle " + std::to_string(*trianglePlace);  // a quad after all: keep its label
                 for (int r = 0; r < 4; ++r)
@@ -387,19 +416,12 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
             }
             ++rep.importedFaces;
         }
-        // The share of the area skipped: measured only when a face was (an integral per face).
-        if (!skipped.empty())
-            for (int f = 1; f <= faces.Extent(); ++f) {
-                GProp_GProps props;
-                BRepGProp::SurfaceProperties(faces(f), props);
-                rep.area += std::abs(props.Mass());
-                if (std::binary_search(skipped.begin(), skipped.end(), f)) rep.skippedArea += std::abs(props.Mass());
-            }
     } catch (const Standard_Failure& e) {
         throw InputError(path.string(), std::string("OpenCASCADE stopped reading it: ") + e.GetMessageString());
     }
+    const size_t skippedBeforeNets = skipped.size();
     if (doc.patches.empty()) {
-        std::string why = rep.faces == 0 ? "it has no faces" : rep.notes.front();
+        std::string why = rep.faces == 0 ? "it has no faces" : rep.notes.empty() ? "its faces are all triangles" : rep.notes.front();
         throw InputError(path.string(), "no surface Patchwork can edit (" + why + ")");
     }
     for (const Vec3& p : doc.points)
@@ -408,7 +430,24 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
             throw InputError(path.string(), "a control point is not finite or too large");
     const Bounds box = computeBounds(doc.points);
     mergeCoincidentPoints(doc, 1e-9 * modelSize(doc));
-    rebuildNets(doc, netFaces, patchPlaces);
+    rebuildNets(doc, netFaces, patchPlaces, rep.notes, skipped);
+    rep.importedFaces -= std::min(rep.importedFaces, skipped.size() - skippedBeforeNets);
+    if (doc.patches.empty() && doc.surfaces.empty() && doc.triangles.empty())
+        throw InputError(path.string(), "no surface Patchwork can edit (" + rep.notes.back() + ")");
+    // The share of the area skipped: measured only when a face was (an integral per face).
+    if (!skipped.empty()) {
+        std::sort(skipped.begin(), skipped.end());
+        try {
+            for (int f = 1; f <= faces.Extent(); ++f) {
+                GProp_GProps props;
+                BRepGProp::SurfaceProperties(faces(f), props);
+                rep.area += std::abs(props.Mass());
+                if (std::binary_search(skipped.begin(), skipped.end(), f)) rep.skippedArea += std::abs(props.Mass());
+            }
+        } catch (const Standard_Failure& e) {
+            throw InputError(path.string(), std::string("OpenCASCADE stopped measuring it: ") + e.GetMessageString());
+        }
+    }
     placeByLabel(doc.patches, patchPlaces);
     placeByLabel(doc.triangles, trianglePlaces);
     doc.joins = detectJoins(doc);

@@ -1,0 +1,171 @@
+// Trimmed surfaces through STEP and IGES (issue 64): a plate with a hole written as a trimmed face
+// whose area OpenCASCADE measures as the analytic one; our trimmed face read back trimmed, its loops
+// as they were; faces with holes and outlines made by OpenCASCADE read with their whole area; an L
+// of iso lines never grown into its rectangle.
+#include <gtest/gtest.h>
+
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
+#include <Geom_Circle.hxx>
+#include <Interface_Static.hxx>
+#include <STEPControl_Reader.hxx>
+#include <STEPControl_Writer.hxx>
+#include <StepData_StepModel.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Wire.hxx>
+#include <gp_Circ.hxx>
+#include <gp_Pln.hxx>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <sstream>
+
+#include "core/edit/edit_session.hpp"
+#include "core/io/occt_support.hpp"
+#include "core/io/step_export.hpp"
+#include "core/io/step_import.hpp"
+#include "core/trim/surface_domain.hpp"
+#include "core/trim/trim_loops.hpp"
+#include "support.hpp"
+
+namespace fs = std::filesystem;
+using namespace pw;
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+Document plate(double side) {
+    Document d;
+    d.name = "plate";
+    d.unit = LengthUnit::Millimetre;
+    Patch p;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) {
+            p.idx[size_t(i * 4 + j)] = uint32_t(d.points.size());
+            d.points.emplace_back(side * j / 3.0, side * i / 3.0, 0.0);
+        }
+    d.patches.push_back(p);
+    return d;
+}
+
+TopoDS_Shape readStep(const std::string& text) {
+    STEPControl_Reader reader;
+    std::istringstream in(text);
+    EXPECT_EQ(reader.ReadStream("doc.step", in), IFSelect_RetDone);
+    reader.StepModel()->SetLocalLengthUnit(occt::useLengthUnit(LengthUnit::Millimetre));
+    reader.TransferRoots();
+    return reader.OneShape();
+}
+
+double occtArea(const TopoDS_Shape& s) {
+    GProp_GProps props;
+    BRepGProp::SurfaceProperties(s, props, 1e-10);
+    return props.Mass();
+}
+
+void writeStep(const TopoDS_Shape& shape, const fs::path& path) {
+    STEPControl_Writer w;
+    Interface_Static::SetCVal("write.step.unit", "MM");
+    const double mm = occt::useLengthUnit(LengthUnit::Millimetre);
+    w.Model()->SetLocalLengthUnit(mm);
+    w.Model()->SetWriteLengthUnit(mm);
+    ASSERT_EQ(w.Transfer(shape, STEPControl_AsIs), IFSelect_RetDone);
+    ASSERT_EQ(w.Write(path.string().c_str()), IFSelect_RetDone);
+}
+
+double documentArea(const Document& d) {
+    double a = 0.0;
+    for (uint32_t p = 0; p < d.patches.size(); ++p) a += trimmedArea(DomainSurface(d, {false, p}), d.patches[p].trims);
+    for (uint32_t s = 0; s < d.surfaces.size(); ++s) a += trimmedArea(DomainSurface(d, {true, s}), d.surfaces[s].trims);
+    return a;
+}
+
+}  // namespace
+
+// A 20 mm plate with a 5 mm hole, made by `trim`: the STEP face is valid and OpenCASCADE measures
+// the analytic area to a millionth; read back, it is one patch with one hole, the same loop.
+TEST(TrimCad, APlateWithAHoleIsATrimmedFaceWithTheAnalyticArea) {
+    EditSession s;
+    s.reset(plate(20.0), "");
+    test::runEditScript(s, "cursor 10 10 0; add-circle 5; trim 0 c0 remove; bake c0");
+    const double ours = documentArea(s.doc);
+    const double analytic = 400.0 - kPi * 25.0;
+    EXPECT_NEAR(ours, analytic, 1e-6 * analytic);
+    const std::string text = exportStepText(s.doc, {});
+    const TopoDS_Shape shape = readStep(text);
+    EXPECT_TRUE(BRepCheck_Analyzer(shape).IsValid());
+    EXPECT_NEAR(occtArea(shape), analytic, 1e-6 * analytic);
+
+    const fs::path dir = test::freshTempDir("trim_cad");
+    const fs::path file = dir / "plate.step";
+    exportStep(s.doc, file);
+    CadImportReport rep;
+    const Document back = importCadSurfaces(file, &rep);
+    EXPECT_EQ(rep.importedFaces, rep.faces);
+    ASSERT_EQ(back.patches.size(), 1u);
+    ASSERT_EQ(back.patches[0].trims.size(), 1u);
+    EXPECT_NEAR(documentArea(back), analytic, 1e-6 * analytic);
+    // The loop is the one written, point for point (mirrored in u where the face came back turned).
+    const TrimLoop& a = s.doc.patches[0].trims[0];
+    const TrimLoop& b = back.patches[0].trims[0];
+    ASSERT_EQ(a.uv.size(), b.uv.size());
+    double worst = 1e300;
+    for (bool mirrored : {false, true})
+        for (size_t shift = 0; shift + 1 < a.uv.size(); shift += 3)
+            for (bool reversed : {false, true}) {
+                double d = 0.0;
+                for (size_t k = 0; k + 1 < a.uv.size(); ++k) {
+                    const size_t n = a.uv.size() - 1;
+                    const size_t j = reversed ? (shift + n - k) % n : (shift + k) % n;
+                    const double u = mirrored ? 1.0 - b.uv[j][0] : b.uv[j][0];
+                    d = std::max(d, std::hypot(a.uv[k][0] - u, a.uv[k][1] - b.uv[j][1]));
+                }
+                worst = std::min(worst, d);
+            }
+    EXPECT_LT(worst, 1e-9);
+}
+
+// Faces that OpenCASCADE makes with a circular hole and with an L outline come in whole: the hole
+// as a trim loop, the L never as its bounding rectangle.
+TEST(TrimCad, FacesWithHolesAndOutlinesComeInWithTheirArea) {
+    const fs::path dir = test::freshTempDir("trim_cad_in");
+    {
+        BRepBuilderAPI_MakePolygon outer(gp_Pnt(0, 0, 0), gp_Pnt(40, 0, 0), gp_Pnt(40, 30, 0), gp_Pnt(0, 30, 0), true);
+        BRepBuilderAPI_MakeFace face(gp_Pln(gp::XOY()), outer.Wire());
+        Handle(Geom_Circle) circle = new Geom_Circle(gp_Ax2(gp_Pnt(15, 12, 0), gp::DZ()), 6.0);
+        TopoDS_Wire hole = BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(circle)).Wire();
+        hole.Reverse();
+        face.Add(hole);
+        ASSERT_TRUE(face.IsDone());
+        const fs::path file = dir / "holed.step";
+        writeStep(face.Face(), file);
+        CadImportReport rep;
+        const Document d = importCadSurfaces(file, &rep);
+        EXPECT_EQ(rep.importedFaces, 1u) << (rep.notes.empty() ? "" : rep.notes.front());
+        EXPECT_NEAR(documentArea(d), 1200.0 - kPi * 36.0, 1e-3 * 1200.0);
+        EXPECT_NEAR(documentArea(d), occtArea(face.Face()), 1e-6 * 1200.0);
+    }
+    {
+        BRepBuilderAPI_MakePolygon l;
+        for (auto [x, y] : std::vector<std::pair<double, double>>{{0, 0}, {30, 0}, {30, 10}, {10, 10}, {10, 30}, {0, 30}})
+            l.Add(gp_Pnt(x, y, 0));
+        l.Close();
+        BRepBuilderAPI_MakeFace face(gp_Pln(gp::XOY()), l.Wire());
+        ASSERT_TRUE(face.IsDone());
+        const fs::path file = dir / "l.step";
+        writeStep(face.Face(), file);
+        CadImportReport rep;
+        const Document d = importCadSurfaces(file, &rep);
+        EXPECT_EQ(rep.importedFaces, 1u);
+        EXPECT_NEAR(documentArea(d), 500.0, 1e-6 * 500.0);  // 900 would be the rectangle
+    }
+}
