@@ -18,6 +18,7 @@ build_packages=(
   libgtest-dev libbenchmark-dev
   help2man
   libcairo2-dev ffmpeg
+  libcgal-dev
   libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev libocct-data-exchange-dev libocct-ocaf-dev
 )
 # freecad, blender and python3-numpy (Blender 3.4's glTF importer): the readers of

@@ -30,6 +30,7 @@
 #include "core/io/patchwork_format.hpp"
 #include "core/mesh/mesh_split.hpp"
 #include "core/mesh/mesh_tessellate.hpp"
+#include "core/trim/trim_mesh.hpp"
 
 namespace pw {
 inline namespace io {
@@ -355,7 +356,7 @@ GltfFile buildGltf(const Document& doc, bool binary, const ExportOptions& option
     // The surface: one primitive per group (connected surface, patch, or all), each with its own
     // vertices; open surfaces (a boundary edge anywhere) are double-sided.
     {
-        mesh = splitMesh(displayed ? std::move(*displayed) : tessellateDocument(doc, level), options.primitives);
+        mesh = splitMesh(displayed ? std::move(*displayed) : tessellateTrimmed(doc, level), options.primitives);
         turnAll(mesh.positions);
         turnAll(mesh.normals, false);
         st.triangles = mesh.indices.size() / 3;

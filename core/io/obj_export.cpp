@@ -14,6 +14,7 @@
 #include "core/eval/bezier_curve.hpp"
 #include "core/io/gltf_export.hpp"
 #include "core/mesh/mesh_tessellate.hpp"
+#include "core/trim/trim_mesh.hpp"
 
 namespace pw {
 inline namespace io {
@@ -98,7 +99,7 @@ ObjFiles exportObjText(const Document& doc, int requestedLevel, const std::strin
     const bool turn = doc.camera.zUp;
     auto up = [&](const std::array<float, 3>& p) { return turn ? zUpToYUp(p) : p; };
 
-    TriangleMesh mesh = displayed ? std::move(*displayed) : tessellateDocument(doc, level);
+    TriangleMesh mesh = displayed ? std::move(*displayed) : tessellateTrimmed(doc, level);
     for (auto& p : mesh.positions) p = up(p);
     for (auto& n : mesh.normals) n = up(n);
     std::vector<std::array<float, 3>> positions, normals;

@@ -315,6 +315,9 @@ void tessellateWindows(const Document& doc, const std::vector<PatchInstance>& wi
             }
         }
         range.indexCount = static_cast<uint32_t>(mesh.indices.size()) - range.firstIndex;
+        const bool trimmed = (inst.patch >= 0 && !doc.patches[size_t(inst.patch)].trims.empty()) ||
+                             (inst.surface >= 0 && !doc.surfaces[size_t(inst.surface)].trims.empty());
+        if (trimmed) mesh.trimmedGrids.push_back({uint32_t(w), L, ids});
     }
 
     // Shared boundary vertices: the average of the normals of every window that met there.
@@ -354,6 +357,8 @@ void removeUnusedVertices(TriangleMesh& mesh) {
         mesh.normals.resize(next);
         mesh.uvs.resize(next);
         for (uint32_t& i : mesh.indices) i = remap[i];
+        for (TrimmedGrid& g : mesh.trimmedGrids)
+            for (uint32_t& i : g.ids) i = i < remap.size() ? remap[i] : kNoVertex;
     }
 }
 

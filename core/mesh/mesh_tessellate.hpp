@@ -20,13 +20,22 @@ struct MeshRange {
     uint32_t firstIndex = 0, indexCount = 0;  // triangles of one window in `indices`
 };
 
+// The grid of a trimmed window as tessellateDocument made it: (level + 1)² vertex ids, row-major
+// (row = v), for core/trim/trim_mesh.hpp to cut along the trims.
+struct TrimmedGrid {
+    uint32_t window = 0;
+    int level = 0;
+    std::vector<uint32_t> ids;
+};
+
 struct TriangleMesh {
     std::vector<std::array<float, 3>> positions;
     std::vector<std::array<float, 3>> normals;
     std::vector<std::array<float, 2>> uvs;
-    std::vector<uint32_t> indices;       // triangles, counter-clockwise seen from the normal side
-    std::vector<MeshRange> perWindow;    // one per expandPatches() entry
-    std::vector<MeshRange> perTriangle;  // one per Document::triangles entry (after the windows)
+    std::vector<uint32_t> indices;          // triangles, counter-clockwise seen from the normal side
+    std::vector<MeshRange> perWindow;       // one per expandPatches() entry
+    std::vector<MeshRange> perTriangle;     // one per Document::triangles entry (after the windows)
+    std::vector<TrimmedGrid> trimmedGrids;  // the windows of trimmed patches and nets (issue 64), drawn whole until cut
 
     // Appends triangle (a, b, c) unless it is degenerate: a repeated index or two equal positions
     // (a collapsed edge, as at the teapot's poles).
