@@ -321,13 +321,15 @@ void Editor::drawUi() {
     teaching_.drawDomainWindow(*this);
     if (teaching_.presentation) teaching_.drawPresentationOverlay(*this);  // with this frame's domain counts
     shaders_.draw(*this, window_.device().caps().geometryShader, teaching_.shownTess(doc_.tess), teaching_.domainPanes);
-    dialogs_.drawFileBrowser(*this);
-    dialogs_.drawModals(*this, [this] { recoverAutosave(); });
     if (showHelp_) drawHelp(*this, showHelp_);
     if (palette_.open) palette_.draw(*this);
     drawJoinPanel();
     drawCurvePanel();
     updateConstructionPreview();
+    // The modals last, after every other window of the frame (ui/panels/dialogs.hpp): Dear ImGui
+    // 1.86 aborts when a window appears after a modal's first Begin in the same frame (issue 72:
+    // the palette's refused `net-basis` opened the error, C the Draw curve panel after it).
+    dialogs_.drawModals(*this, [this] { recoverAutosave(); });
     // Status line: the last message for 6 s, and a running export for as long as it runs.
     const ImGuiIO& io = ImGui::GetIO();
     std::string line = std::chrono::steady_clock::now() - statusTime_ < std::chrono::seconds(6) ? status_ : std::string();

@@ -1,5 +1,5 @@
 // The file browser (ui/panels/dialogs.hpp): Open, Import, Save As, Export (glTF, OBJ, STEP; with the export options)
-// and Save Screenshot; OK runs the matching command.
+// and Save Screenshot; OK runs the matching command. One of the modals drawModals owns (dialog_modals.cpp).
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
@@ -55,10 +55,10 @@ void Dialogs::openFileDialog(FileDialogKind kind, const std::string& documentNam
             std::snprintf(fileName_, sizeof fileName_, "sweep.gif");
             break;
     }
+    request(Modal::FileBrowser);
 }
 
 void Dialogs::drawFileBrowser(PanelContext& ctx) {
-    if (fileMode_ == FileDialogMode::None) return;
     static const std::string exportTitle = "Export (" + formatList(FormatUse::Export, ", ") + ")";  // the format table's
     const char* titles[] = {"",
                             "Open",
@@ -70,11 +70,15 @@ void Dialogs::drawFileBrowser(PanelContext& ctx) {
                             "Save Sweep Animation (.gif, .mp4, .webm)",
                             "Load Height Map (.png)"};
     const char* title = titles[int(fileMode_)];
-    ImGui::OpenPopup("File browser##file");
     const ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowSize(ImVec2(std::min(640.0f, io.DisplaySize.x - 40), std::min(480.0f, io.DisplaySize.y - 40)), ImGuiCond_Always);
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-    if (!widget::BeginPopupModal("File browser##file", nullptr, ImGuiWindowFlags_NoResize)) return;
+    if (!widget::BeginPopupModal(modalPopupName(Modal::FileBrowser), nullptr, ImGuiWindowFlags_NoResize)) return;
+    if (fileMode_ == FileDialogMode::None) {  // nothing to browse for
+        closeShown();
+        ImGui::EndPopup();
+        return;
+    }
     bool doubleClicked = false;
     ImGui::Text("%s: %s", title, browseDir_.string().c_str());
     if (ImGui::Button("Up")) browseDir_ = browseDir_.parent_path();
@@ -138,7 +142,7 @@ void Dialogs::drawFileBrowser(PanelContext& ctx) {
         if (p.is_relative()) p = browseDir_ / p;
         const FileDialogMode m = fileMode_;
         fileMode_ = FileDialogMode::None;
-        ImGui::CloseCurrentPopup();
+        closeShown();
         // The unsaved-changes prompt came before the Open dialog: the open itself is unguarded.
         if (m == FileDialogMode::Open)
             ctx.runCommand({"open", p.string()}, false);
@@ -164,7 +168,7 @@ void Dialogs::drawFileBrowser(PanelContext& ctx) {
         fileMode_ = FileDialogMode::None;
         runPendingAfterSave_ = false;
         pendingCommand_.clear();
-        ImGui::CloseCurrentPopup();
+        closeShown();
     }
     ImGui::EndPopup();
 }

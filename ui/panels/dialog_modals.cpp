@@ -1,8 +1,10 @@
 // The modal prompts (ui/panels/dialogs.hpp): an error message, the unsaved-changes prompt (Save, Discard or
-// Cancel; the first two go on with the command that asked), and the offer to recover an autosave.
+// Cancel; the first two go on with the command that asked), and the offer to recover an autosave; and
+// the one place that opens, shows and closes every modal, the file browser's too (issue 72).
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <utility>
 
 #include "core/io/document_io.hpp"
@@ -14,10 +16,9 @@ namespace pw::ui {
 inline namespace panels {
 namespace {
 
-// Opens the modal `name` when `openRequest` is set (and clears it), centred in the window; true
-// while it is shown (then the caller draws it and calls ImGui::EndPopup).
-bool beginCentredModal(const char* name, bool& openRequest) {
-    if (std::exchange(openRequest, false)) ImGui::OpenPopup(name);
+// Begins the prompt `name` centred in the window; true while it is shown (then the caller draws
+// it and calls ImGui::EndPopup). drawModals opened it.
+bool beginCentredModal(const char* name) {
     const ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
     return widget::BeginPopupModal(name, nullptr, ImGuiWindowFlags_AlwaysAutoResize);
@@ -25,92 +26,159 @@ bool beginCentredModal(const char* name, bool& openRequest) {
 
 }  // namespace
 
+const char* modalPopupName(Modal m) {
+    switch (m) {
+        case Modal::FileBrowser:
+            return "File browser##file";
+        case Modal::Error:
+            return "Error##error";
+        case Modal::Unsaved:
+            return "Unsaved changes##unsaved";
+        case Modal::Recover:
+            return "Recover autosave##recover";
+        case Modal::None:
+            break;
+    }
+    return "";
+}
+
+void Dialogs::request(Modal m) {
+    if (m == Modal::None || m == shown_ || std::find(waiting_.begin(), waiting_.end(), m) != waiting_.end()) return;
+    waiting_.push_back(m);
+}
+
+void Dialogs::withdraw(Modal m) { waiting_.erase(std::remove(waiting_.begin(), waiting_.end(), m), waiting_.end()); }
+
+void Dialogs::closeShown() {
+    ImGui::CloseCurrentPopup();
+    shown_ = Modal::None;
+}
+
 void Dialogs::askToDiscard(const std::vector<std::string>& words) {
     pendingCommand_ = words;
-    openUnsavedPrompt_ = true;
+    request(Modal::Unsaved);
 }
 
 void Dialogs::showError(const std::string& message) {
-    errorMessage_ = message;
-    openError_ = true;
+    errorMessage_ = message;  // one shown now or waiting shows the latest
+    request(Modal::Error);
 }
 
 void Dialogs::offerRecovery(std::vector<AutosaveEntry> entries) {
     recoverable = std::move(entries);
-    offerRecovery_ = !recoverable.empty();
+    if (recoverable.empty())
+        withdraw(Modal::Recover);
+    else
+        request(Modal::Recover);
 }
 
 void Dialogs::drawModals(PanelContext& ctx, const std::function<void()>& recoverFirst) {
-    if (beginCentredModal("Error##error", openError_)) {
-        ImGui::PushTextWrapPos(560.0f);
-        ImGui::TextUnformatted(errorMessage_.c_str());
-        ImGui::PopTextWrapPos();
-        const bool ok = widget::Button("OK##error.ok", ImVec2(120, 0));
-        // Enter closes it, but not the Enter that caused it (a numeric field submitted this frame).
-        if (ok || (ctx.keyPressed(GLFW_KEY_ENTER, 0) && !ImGui::IsWindowAppearing())) {
-            errorMessage_.clear();
-            ImGui::CloseCurrentPopup();
-        }
-        tip("Close this message");
-        ImGui::EndPopup();
+    if (shown_ == Modal::None) {
+        if (waiting_.empty()) return;
+        shown_ = waiting_.front();
+        waiting_.pop_front();
     }
+    // The one OpenPopup, beside the BeginPopupModal that follows (the same ID scope, the same level
+    // of the popup stack); again only if Dear ImGui closed it (a popup opened over it at its level),
+    // never every frame.
+    const char* name = modalPopupName(shown_);
+    if (!ImGui::IsPopupOpen(name)) ImGui::OpenPopup(name);
+    switch (shown_) {
+        case Modal::FileBrowser:
+            drawFileBrowser(ctx);
+            break;
+        case Modal::Error:
+            drawError(ctx);
+            break;
+        case Modal::Unsaved:
+            drawUnsaved(ctx);
+            break;
+        case Modal::Recover:
+            drawRecover(recoverFirst);
+            break;
+        case Modal::None:
+            break;
+    }
+    if (shown_ == Modal::None && !waiting_.empty()) ctx.wake();  // the next one at the next frame
+}
 
-    if (beginCentredModal("Unsaved changes##unsaved", openUnsavedPrompt_)) {
-        ImGui::Text("Save changes to %s?", ctx.session().path().empty() ? "the untitled document" : ctx.session().path().c_str());
-        const bool save = widget::Button("Save##unsaved.save", ImVec2(100, 0));
-        if (save) {
-            ImGui::CloseCurrentPopup();
-            if (!ctx.session().path().empty() && saveKeepsEverything(ctx.session().path())) {
-                ctx.runCommand(std::vector<std::string>{"save"});
-                if (!ctx.session().isModified()) ctx.runCommand(std::exchange(pendingCommand_, {}), false);
-            } else {
-                runPendingAfterSave_ = true;  // the Save As dialog goes on with the command once written
-                openFileDialog(FileDialogKind::SaveAs, ctx.session().doc.name);
-                ctx.wake();
-            }
-        }
-        tip("Save, then continue");
-        ImGui::SameLine();
-        const bool discard = widget::Button("Discard##unsaved.discard", ImVec2(100, 0));
-        if (discard) {
-            ImGui::CloseCurrentPopup();
-            ctx.runCommand(std::exchange(pendingCommand_, {}), false);
-        }
-        tip("Continue and lose the changes");
-        ImGui::SameLine();
-        if (ImGui::Button("Cancel", ImVec2(100, 0)) || ctx.keyPressed(GLFW_KEY_ESCAPE, 0)) {
-            pendingCommand_.clear();
-            ImGui::CloseCurrentPopup();
-        }
-        tip("Keep editing");
-        ImGui::EndPopup();
+void Dialogs::drawError(PanelContext& ctx) {
+    if (!beginCentredModal(modalPopupName(Modal::Error))) return;
+    ImGui::PushTextWrapPos(560.0f);
+    ImGui::TextUnformatted(errorMessage_.c_str());
+    ImGui::PopTextWrapPos();
+    const bool ok = widget::Button("OK##error.ok", ImVec2(120, 0));
+    // Enter closes it, but not the Enter that caused it (a numeric field or the palette submitted this frame).
+    if (ok || (ctx.keyPressed(GLFW_KEY_ENTER, 0) && !ImGui::IsWindowAppearing())) {
+        errorMessage_.clear();
+        closeShown();
     }
+    tip("Close this message");
+    ImGui::EndPopup();
+}
 
-    if (beginCentredModal("Recover autosave##recover", offerRecovery_)) {
-        if (!recoverable.empty()) {
-            const AutosaveEntry& e = recoverable.front();
-            ImGui::Text("Patchwork did not exit cleanly. An autosave of %s exists.",
-                        e.originalPath.empty() ? "an untitled document" : e.originalPath.c_str());
-            ImGui::TextDisabled("%s", e.document.string().c_str());
+void Dialogs::drawUnsaved(PanelContext& ctx) {
+    if (!beginCentredModal(modalPopupName(Modal::Unsaved))) return;
+    ImGui::Text("Save changes to %s?", ctx.session().path().empty() ? "the untitled document" : ctx.session().path().c_str());
+    const bool save = widget::Button("Save##unsaved.save", ImVec2(100, 0));
+    if (save) {
+        closeShown();
+        if (!ctx.session().path().empty() && saveKeepsEverything(ctx.session().path())) {
+            ctx.runCommand(std::vector<std::string>{"save"});
+            if (!ctx.session().isModified()) ctx.runCommand(std::exchange(pendingCommand_, {}), false);
+        } else {
+            runPendingAfterSave_ = true;  // the Save As dialog goes on with the command once written
+            openFileDialog(FileDialogKind::SaveAs, ctx.session().doc.name);
+            ctx.wake();
         }
-        const bool recover = widget::Button("Recover##recover", ImVec2(120, 0));
-        if (recover) {
-            ImGui::CloseCurrentPopup();
-            recoverFirst();
-        }
-        tip("Open the autosaved document (marked modified; save it to keep it)");
-        ImGui::SameLine();
-        if (ImGui::Button("Discard", ImVec2(120, 0))) {
-            for (const AutosaveEntry& e : recoverable) removeAutosave(e);
-            recoverable.clear();
-            ImGui::CloseCurrentPopup();
-        }
-        tip("Delete the autosave");
-        ImGui::SameLine();
-        if (ImGui::Button("Later", ImVec2(120, 0))) ImGui::CloseCurrentPopup();
-        tip("Keep the autosave for the next start");
-        ImGui::EndPopup();
     }
+    tip("Save, then continue");
+    ImGui::SameLine();
+    const bool discard = widget::Button("Discard##unsaved.discard", ImVec2(100, 0));
+    if (discard) {
+        closeShown();
+        ctx.runCommand(std::exchange(pendingCommand_, {}), false);
+    }
+    tip("Continue and lose the changes");
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel", ImVec2(100, 0)) || ctx.keyPressed(GLFW_KEY_ESCAPE, 0)) {
+        pendingCommand_.clear();
+        closeShown();
+    }
+    tip("Keep editing");
+    ImGui::EndPopup();
+}
+
+void Dialogs::drawRecover(const std::function<void()>& recoverFirst) {
+    if (!beginCentredModal(modalPopupName(Modal::Recover))) return;
+    if (recoverable.empty()) {  // the offer was withdrawn
+        closeShown();
+        ImGui::EndPopup();
+        return;
+    }
+    {
+        const AutosaveEntry& e = recoverable.front();
+        ImGui::Text("Patchwork did not exit cleanly. An autosave of %s exists.",
+                    e.originalPath.empty() ? "an untitled document" : e.originalPath.c_str());
+        ImGui::TextDisabled("%s", e.document.string().c_str());
+    }
+    const bool recover = widget::Button("Recover##recover", ImVec2(120, 0));
+    if (recover) {
+        closeShown();
+        recoverFirst();
+    }
+    tip("Open the autosaved document (marked modified; save it to keep it)");
+    ImGui::SameLine();
+    if (ImGui::Button("Discard", ImVec2(120, 0))) {
+        for (const AutosaveEntry& e : recoverable) removeAutosave(e);
+        recoverable.clear();
+        closeShown();
+    }
+    tip("Delete the autosave");
+    ImGui::SameLine();
+    if (ImGui::Button("Later", ImVec2(120, 0))) closeShown();
+    tip("Keep the autosave for the next start");
+    ImGui::EndPopup();
 }
 
 }  // namespace panels
