@@ -6,6 +6,9 @@
 #include <imgui.h>
 
 #include "core/select/edge_pick.hpp"
+#include "core/trim/curve_on_surface.hpp"
+#include "core/trim/surface_domain.hpp"
+#include "core/trim/trim_loops.hpp"
 #include "ui/editor/editor.hpp"
 
 namespace pw::ui {
@@ -52,6 +55,26 @@ void Editor::updateConstructionPreview() {
 void Editor::drawConstructionPreview(const std::function<void(const Vec3&, const Vec3&, unsigned, float)>& line) const {
     if (!preview_.doc) return;
     const Document& d = *preview_.doc;
+    // Trims (issue 64): every loop the command would make or change, on its surface; new curves (an intersection's).
+    auto loops = [&](const SurfaceRef& ref, const std::vector<TrimLoop>& now, const std::vector<TrimLoop>* was) {
+        if (now.empty() || (was && *was == now)) return;
+        const DomainSurface surface(d, ref);
+        for (const TrimLoop& l : now) {
+            const std::vector<glm::dvec2> uv = loopPolyline(l, 12);
+            for (size_t k = 0; k < uv.size(); ++k)
+                line(surface.evaluate({uv[k].x, uv[k].y}).p, surface.evaluate({uv[(k + 1) % uv.size()].x, uv[(k + 1) % uv.size()].y}).p,
+                     IM_COL32(255, 170, 60, 230), 2.0f);
+        }
+    };
+    for (uint32_t p = 0; p < d.patches.size(); ++p)
+        loops({false, p}, d.patches[p].trims, p < doc_.patches.size() ? &doc_.patches[p].trims : nullptr);
+    for (uint32_t n = 0; n < d.surfaces.size(); ++n)
+        loops({true, n}, d.surfaces[n].trims, n < doc_.surfaces.size() ? &doc_.surfaces[n].trims : nullptr);
+    for (size_t c = doc_.curves.size(); c < d.curves.size(); ++c) {
+        const std::vector<Vec3> pts = sampleCurve(d, d.curves[c]);
+        for (size_t k = 0; k + 1 < pts.size(); ++k) line(pts[k], pts[k + 1], IM_COL32(255, 220, 80, 230), 2.0f);
+        if (curveClosed(d.curves[c]) && pts.size() > 2) line(pts.back(), pts.front(), IM_COL32(255, 220, 80, 230), 2.0f);
+    }
     for (size_t p = preview_.firstPatch; p < d.patches.size(); ++p)
         for (Edge e : {Edge::U0, Edge::V0, Edge::U1, Edge::V1}) {
             const std::vector<Vec3> c = boundaryCurve(d, uint32_t(p), e, 12);

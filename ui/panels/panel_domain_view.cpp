@@ -7,6 +7,9 @@
 #include <cfloat>
 #include <cmath>
 
+#include "core/gpu/trim_math.h"
+#include "core/trim/surface_domain.hpp"
+#include "core/trim/trim_loops.hpp"
 #include "render/domain/domain_labels.hpp"
 #include "render/figures/domain_figure.hpp"
 #include "ui/panels/teaching.hpp"
@@ -16,6 +19,56 @@
 
 namespace pw::ui {
 inline namespace panels {
+
+namespace {
+// The selected patch's or net's trims over a quad pane (issue 64): its loops in the (u, v) square,
+// and for a net its windows, those the trims cull wholly (not tessellated) hatched and named.
+void drawTrimmedDomain(PanelContext& ctx, const render::DomainViewOptions& o, ImDrawList* dl) {
+    if (o.kind != DomainKind::Quad) return;
+    const EditSession& s = ctx.session();
+    const Document& doc = s.doc;
+    SurfaceRef ref;
+    if (s.sel.patch >= 0 && size_t(s.sel.patch) < doc.patches.size())
+        ref = {false, uint32_t(s.sel.patch)};
+    else if (s.sel.surface >= 0 && size_t(s.sel.surface) < doc.surfaces.size())
+        ref = {true, uint32_t(s.sel.surface)};
+    else
+        return;
+    const std::vector<TrimLoop>& loops = trimsOf(doc, ref);
+    if (loops.empty()) return;
+    const render::DomainPlacement at = render::placeDomain(o);
+    auto px = [&](double u, double v) {
+        const auto p = at.toPixels(float(u), float(v));
+        return ImVec2(p[0], p[1]);
+    };
+    if (ref.net) {  // the windows, and those wholly trimmed away
+        const Surface& n = doc.surfaces[ref.index];
+        const uint32_t step = netStep(n.basis);
+        const uint32_t wu = uint32_t(netWindowCount(n.cols, n.closedU, step)), wv = uint32_t(netWindowCount(n.rows, n.closedV, step));
+        const std::vector<TrimSegment> segs = monotoneSegments(loops);
+        const bool outer = hasOuterLoop(loops);
+        for (uint32_t r = 0; r < wv; ++r)
+            for (uint32_t c = 0; c < wu; ++c) {
+                const WindowTrim t = windowTrim(segs, outer, r, c, wu, wv);
+                const ImVec2 a = px(double(c) / wu, double(r) / wv), b = px(double(c + 1) / wu, double(r + 1) / wv);
+                const ImVec2 lo(std::min(a.x, b.x), std::min(a.y, b.y)), hi(std::max(a.x, b.x), std::max(a.y, b.y));
+                dl->AddRect(lo, hi, IM_COL32(90, 110, 140, 160));
+                if (t.flags & gpu::kTrimAllGone) dl->AddRectFilled(lo, hi, IM_COL32(120, 120, 120, 90));
+            }
+    }
+    for (const TrimLoop& l : loops) {
+        const std::vector<glm::dvec2> uv = loopPolyline(l, 24);
+        const ImU32 col = signedUvArea(l) < 0.0 ? IM_COL32(220, 90, 30, 255) : IM_COL32(30, 140, 60, 255);
+        for (size_t k = 0; k < uv.size(); ++k)
+            dl->AddLine(px(uv[k].x, uv[k].y), px(uv[(k + 1) % uv.size()].x, uv[(k + 1) % uv.size()].y), col, 2.5f * ctx.uiScale());
+    }
+    const ImVec2 corner = px(0.0, 1.0);
+    dl->AddText(ImVec2(corner.x + 4.0f, corner.y + 2.0f), IM_COL32(25, 30, 40, 255),
+                (std::string(ref.net ? "net " : "patch ") + std::to_string(ref.index) + ": green keeps, orange cuts" +
+                 (ref.net ? "; grey windows are not tessellated" : ""))
+                    .c_str());
+}
+}  // namespace
 
 void Teaching::drawDomainWindow(PanelContext& ctx) {
     domainPanes.clear();
@@ -101,6 +154,7 @@ void Teaching::drawDomainWindow(PanelContext& ctx) {
                 dl->AddText(font, size0 * fit, at, col, l.text.c_str());
                 labelBoxes.push_back({at.x, at.y, size.x, size.y});
             }
+            drawTrimmedDomain(ctx, o, dl);
             // In framebuffer pixels for the GPU pass.
             o.rect = {o.rect[0] * sx, o.rect[1] * sy, o.rect[2] * sx, o.rect[3] * sy};
             o.margin *= sx;

@@ -141,6 +141,7 @@ void SurfacesPanel::draw(PanelContext& ctx) {
         ImGui::SameLine();
         ImGui::TextWrapped("List:%s", list.c_str());
     }
+    drawTrims(ctx, button);
     // The selected patch's construction.
     const int k = s.sel.patch >= 0 ? constructionOfPatch(doc, uint32_t(s.sel.patch)) : -1;
     if (k < 0) return;
@@ -149,6 +150,77 @@ void SurfacesPanel::draw(PanelContext& ctx) {
     const std::string& error = doc.constructions[size_t(k)].error;
     if (!error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "Inputs do not fit: %s", error.c_str());
     commandButton(ctx, "Bake", "bake k" + std::to_string(k), "op.bake");
+}
+
+// Trims, holes and intersections (issue 64): the selected patch or net cut by the selected curve, and
+// the intersection of two listed surfaces. Each button previews what it would make while the mouse
+// is over it (the trim loops and new curves drawn over the view).
+void SurfacesPanel::drawTrims(PanelContext& ctx, const std::function<void(const char*, const std::string&, const char*)>& button) {
+    const EditSession& s = ctx.session();
+    const Document& doc = s.doc;
+    ImGui::Separator();
+    ImGui::TextUnformatted("Trims, holes and intersections");
+    std::string surface;  // "3" or "n0"
+    if (s.sel.patch >= 0 && size_t(s.sel.patch) < doc.patches.size())
+        surface = std::to_string(s.sel.patch);
+    else if (s.sel.surface >= 0 && size_t(s.sel.surface) < doc.surfaces.size())
+        surface = "n" + std::to_string(s.sel.surface);
+    const int curve = s.sel.curve >= 0 && size_t(s.sel.curve) < doc.curves.size() ? s.sel.curve : -1;
+    // The surface stays the one last selected, so a curve can be selected after it.
+    if (!surface.empty()) trimSurface_ = surface;
+    if (!trimSurface_.empty() && curve < 0 && surface.empty() && s.sel.empty()) trimSurface_.clear();
+    const std::string c = curve >= 0 ? "c" + std::to_string(curve) : "";
+    ImGui::TextDisabled("Surface %s, curve %s", trimSurface_.empty() ? "(select a patch or net)" : trimSurface_.c_str(),
+                        c.empty() ? "(select one)" : c.c_str());
+    const bool both = !trimSurface_.empty() && !c.empty();
+    ImGui::BeginDisabled(!both);
+    button("Trim", "trim " + trimSurface_ + " " + c + " keep", "op.trim");
+    tip("Keep what the closed curve encloses on the surface (the curve is laid on it by closest points); the trim follows the "
+        "curve and the surface live");
+    ImGui::SameLine();
+    button("Hole", "trim " + trimSurface_ + " " + c + " remove", "op.hole");
+    tip("Cut out what the closed curve encloses on the surface");
+    ImGui::SameLine();
+    button("Split", "split-by " + trimSurface_ + " " + c, "op.splitBy");
+    tip("Cut the surface in two along the closed curve: two trimmed surfaces that share the cut");
+    ImGui::SameLine();
+    button("Project", "project " + c + " " + trimSurface_, "op.project");
+    tip("Lay the curve on the surface (closest points) as a new curve that follows both");
+    ImGui::EndDisabled();
+    ImGui::BeginDisabled(trimSurface_.empty());
+    if (widget::Button("Add surface##surfaces.addSurface")) sections_.push_back(trimSurface_);
+    tip("Add the selected patch or net to the list; Intersect takes two");
+    ImGui::SameLine();
+    ImGui::EndDisabled();
+    const auto isSurface = [](const std::string& w) { return !w.empty() && w.find(':') == std::string::npos && w[0] != 'c' && w != "/"; };
+    const bool two = sections_.size() == 2 && isSurface(sections_[0]) && isSurface(sections_[1]) && sections_[0] != sections_[1];
+    ImGui::BeginDisabled(!two);
+    button("Intersect", two ? "intersect " + sections_[0] + " " + sections_[1] : "intersect", "op.intersect");
+    tip("The intersection curves of the two listed surfaces (OpenCASCADE), as new curves that follow both surfaces live; then "
+        "Hole and Trim cut each surface along them");
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    const bool trimmed = !trimSurface_.empty() && [&] {
+        try {
+            const bool net = trimSurface_[0] == 'n';
+            const size_t i = std::stoul(trimSurface_.substr(net ? 1 : 0));
+            return net ? i < doc.surfaces.size() && !doc.surfaces[i].trims.empty()
+                       : i < doc.patches.size() && !doc.patches[i].trims.empty();
+        } catch (const std::exception&) {
+            return false;
+        }
+    }();
+    ImGui::BeginDisabled(!trimmed);
+    button("Untrim", "untrim " + trimSurface_, "op.untrim");
+    tip("Remove every trim loop of the surface");
+    ImGui::EndDisabled();
+    if (!c.empty() && doc.curves[size_t(curve)].link) {
+        const CurveLink& l = *doc.curves[size_t(curve)].link;
+        if (!l.error.empty())
+            ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s keeps its last shape: %s", c.c_str(), l.error.c_str());
+        button("Bake curve", "bake " + c, "op.bakeCurve");
+        tip("Fix the live curve (and the trims made from it): it no longer follows the surfaces");
+    }
 }
 
 }  // namespace panels

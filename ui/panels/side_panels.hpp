@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -63,9 +64,11 @@ private:
     int axis_ = 2;
     float degrees_ = 360.0f, length_ = 1.0f;
     std::vector<std::string> sections_;  // the curves listed so far ("c0", ..., "/" in a network)
+    std::string trimSurface_;            // the patch or net the trim buttons cut ("3", "n0"): the last one selected
     bool loftClosed_ = false;
     int loftEnds_[2] = {0, 0};     // G0, G1, G2 at the loft's first and last section
     double sweepTolerance_ = 0.0;  // 0: sweep1's default
+    void drawTrims(PanelContext& ctx, const std::function<void(const char*, const std::string&, const char*)>& button);  // issue 64
 };
 
 class NetPanel {  // panel_net.cpp: net surfaces (create, rows/columns, closing, basis, conversion)
