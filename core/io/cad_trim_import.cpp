@@ -63,17 +63,6 @@ std::variant<std::vector<P2>, std::string> cubicChain(const Handle(Geom2d_Curve)
     return out;
 }
 
-P2 lerp(P2 a, P2 b, double t) { return a + (b - a) * t; }
-std::array<P2, 4> subSegment(const std::array<P2, 4>& c, double t0, double t1) {
-    auto split = [](const std::array<P2, 4>& s, double t, bool right) {
-        const P2 a1 = lerp(s[0], s[1], t), a2 = lerp(s[1], s[2], t), a3 = lerp(s[2], s[3], t);
-        const P2 b1 = lerp(a1, a2, t), b2 = lerp(a2, a3, t), m = lerp(b1, b2, t);
-        return right ? std::array<P2, 4>{m, b2, a3, s[3]} : std::array<P2, 4>{s[0], a1, b1, m};
-    };
-    std::array<P2, 4> r = t0 > 0.0 ? split(c, t0, true) : c;
-    if (t1 < 1.0) r = split(r, (t1 - t0) / (1.0 - t0), false);
-    return r;
-}
 double coord(const std::array<P2, 4>& b, int axis, double t) {
     const double s = 1.0 - t;
     return s * s * s * b[0][axis] + 3 * s * s * t * b[1][axis] + 3 * s * t * t * b[2][axis] + t * t * t * b[3][axis];
@@ -196,7 +185,7 @@ std::variant<TrimmedFace, std::string> trimmedFace(const FaceBSpline& f) {
             std::sort(ts.begin(), ts.end());
             for (size_t k = 0; k + 1 < ts.size(); ++k) {
                 if (ts[k + 1] - ts[k] < 1e-12) continue;
-                const std::array<P2, 4> piece = subSegment(b, ts[k], ts[k + 1]);
+                const std::array<P2, 4> piece = cubicPiece(b, ts[k], ts[k + 1]);
                 const double mt = 0.5 * (ts[k] + ts[k + 1]);
                 const size_t si = spanOf(coord(b, 0, mt), ku), sj = spanOf(coord(b, 1, mt), kv);
                 for (int q = loop.uv.empty() ? 0 : 1; q < 4; ++q) {

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/base/errors.hpp"
+#include "core/trim/gauss_legendre.hpp"
 
 namespace pw {
 inline namespace trim {
@@ -172,11 +173,7 @@ std::optional<UV> DomainSurface::alongDirection(const Vec3& p, const Vec3& dirIn
 }
 
 namespace {
-// Gauss-Legendre nodes and weights on [0, 1], 8 points.
-constexpr double kGx[8] = {0.0198550717512319, 0.1016667612931866, 0.2372337950418355, 0.4082826787521751,
-                           0.5917173212478249, 0.7627662049581645, 0.8983332387068134, 0.9801449282487681};
-constexpr double kGw[8] = {0.0506142681451881, 0.1111905172266872, 0.1568533229389436, 0.1813418916891810,
-                           0.1813418916891810, 0.1568533229389436, 0.1111905172266872, 0.0506142681451881};
+
 double jacobian(const DomainSurface& s, UV uv) {
     const SurfacePoint p = s.evaluate(uv);
     return glm::length(glm::cross(p.du, p.dv));
@@ -190,7 +187,8 @@ double DomainSurface::area() const {
     for (uint32_t i = 0; i < wv_ * sub; ++i)
         for (uint32_t j = 0; j < wu_ * sub; ++j)
             for (int a1 = 0; a1 < 8; ++a1)
-                for (int b1 = 0; b1 < 8; ++b1) a += kGw[a1] * kGw[b1] * jacobian(*this, {(j + kGx[b1]) * hu, (i + kGx[a1]) * hv});
+                for (int b1 = 0; b1 < 8; ++b1)
+                    a += kGaussW[a1] * kGaussW[b1] * jacobian(*this, {(j + kGaussX[b1]) * hu, (i + kGaussX[a1]) * hv});
     return a * hu * hv;
 }
 
@@ -202,7 +200,7 @@ double DomainSurface::areaStrip(UV uv) const {
     const double step = 1.0 / (wu_ * 4.0);
     while (s0 < u) {
         const double s1 = std::min(u, (std::floor(s0 / step + 1e-9) + 1.0) * step);
-        for (int k = 0; k < 8; ++k) sum += kGw[k] * (s1 - s0) * jacobian(*this, {s0 + kGx[k] * (s1 - s0), uv[1]});
+        for (int k = 0; k < 8; ++k) sum += kGaussW[k] * (s1 - s0) * jacobian(*this, {s0 + kGaussX[k] * (s1 - s0), uv[1]});
         s0 = s1;
     }
     return sum;

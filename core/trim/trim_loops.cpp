@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "core/gpu/trim_math.h"
+#include "core/trim/gauss_legendre.hpp"
 #include "core/trim/surface_domain.hpp"
 
 namespace pw {
@@ -71,29 +72,11 @@ std::optional<P2> firstCrossing(const std::vector<P2>& a, const std::vector<P2>&
     return std::nullopt;
 }
 
-P2 lerp(P2 a, P2 b, double t) { return a + (b - a) * t; }
-// de Casteljau: the part [t0, t1] of a cubic.
-std::array<P2, 4> subSegment(const std::array<P2, 4>& b, double t0, double t1) {
-    auto split = [](const std::array<P2, 4>& c, double t, bool right) {
-        const P2 a1 = lerp(c[0], c[1], t), a2 = lerp(c[1], c[2], t), a3 = lerp(c[2], c[3], t);
-        const P2 b1 = lerp(a1, a2, t), b2 = lerp(a2, a3, t), m = lerp(b1, b2, t);
-        return right ? std::array<P2, 4>{m, b2, a3, c[3]} : std::array<P2, 4>{c[0], a1, b1, m};
-    };
-    std::array<P2, 4> r = t0 > 0.0 ? split(b, t0, true) : b;
-    if (t1 < 1.0) r = split(r, (t1 - t0) / (1.0 - t0), false);
-    return r;
-}
-
 std::array<P2, 4> loopSegment(const TrimLoop& loop, size_t s) {
     return {P2(loop.uv[3 * s][0], loop.uv[3 * s][1]), P2(loop.uv[3 * s + 1][0], loop.uv[3 * s + 1][1]),
             P2(loop.uv[3 * s + 2][0], loop.uv[3 * s + 2][1]), P2(loop.uv[3 * s + 3][0], loop.uv[3 * s + 3][1])};
 }
 size_t segmentCount(const TrimLoop& loop) { return loop.uv.size() >= 4 ? (loop.uv.size() - 1) / 3 : 0; }
-
-constexpr double kGx[8] = {0.0198550717512319, 0.1016667612931866, 0.2372337950418355, 0.4082826787521751,
-                           0.5917173212478249, 0.7627662049581645, 0.8983332387068134, 0.9801449282487681};
-constexpr double kGw[8] = {0.0506142681451881, 0.1111905172266872, 0.1568533229389436, 0.1813418916891810,
-                           0.1813418916891810, 0.1568533229389436, 0.1111905172266872, 0.0506142681451881};
 
 P2 derivative(const std::array<P2, 4>& b, double t) {
     const double s = 1.0 - t;
@@ -123,6 +106,18 @@ TrimLoop circleLoop(UV centre, double r, bool hole) {
     return l;
 }
 
+std::array<glm::dvec2, 4> cubicPiece(const std::array<glm::dvec2, 4>& b, double t0, double t1) {
+    auto lerp = [](P2 a, P2 c, double t) { return a + (c - a) * t; };
+    auto split = [&](const std::array<P2, 4>& c, double t, bool right) {
+        const P2 a1 = lerp(c[0], c[1], t), a2 = lerp(c[1], c[2], t), a3 = lerp(c[2], c[3], t);
+        const P2 b1 = lerp(a1, a2, t), b2 = lerp(a2, a3, t), m = lerp(b1, b2, t);
+        return right ? std::array<P2, 4>{m, b2, a3, c[3]} : std::array<P2, 4>{c[0], a1, b1, m};
+    };
+    std::array<P2, 4> r = t0 > 0.0 ? split(b, t0, true) : b;
+    if (t1 < 1.0) r = split(r, (t1 - t0) / (1.0 - t0), false);
+    return r;
+}
+
 glm::dvec2 loopPoint(const TrimLoop& loop, size_t segment, double t) { return point(loopSegment(loop, segment), t); }
 
 std::vector<glm::dvec2> loopPolyline(const TrimLoop& loop, int perSegment) {
@@ -139,7 +134,7 @@ double signedUvArea(const TrimLoop& loop) {
     double a = 0.0;
     for (size_t s = 0; s < segmentCount(loop); ++s) {
         const auto b = loopSegment(loop, s);
-        for (int k = 0; k < 8; ++k) a += kGw[k] * point(b, kGx[k]).x * derivative(b, kGx[k]).y;
+        for (int k = 0; k < 8; ++k) a += kGaussW[k] * point(b, kGaussX[k]).x * derivative(b, kGaussX[k]).y;
     }
     return a;
 }
@@ -246,7 +241,7 @@ std::vector<TrimSegment> monotoneSegments(const std::vector<TrimLoop>& loops) {
             std::sort(ts.begin(), ts.end());
             ts.push_back(1.0);
             for (size_t k = 0; k + 1 < ts.size(); ++k) {
-                const auto piece = subSegment(b, ts[k], ts[k + 1]);
+                const auto piece = cubicPiece(b, ts[k], ts[k + 1]);
                 if (piece[0].y == piece[3].y) continue;  // flat in v: no ray crosses it
                 out.push_back({piece});
             }
@@ -270,11 +265,11 @@ double trimmedArea(const DomainSurface& surface, const std::vector<TrimLoop>& lo
             const int parts = 8;
             for (int p = 0; p < parts; ++p)
                 for (int k = 0; k < 8; ++k) {
-                    const double t = (p + kGx[k]) / parts;
+                    const double t = (p + kGaussX[k]) / parts;
                     const P2 q = point(b, t);
                     const double dv = derivative(b, t).y;
                     if (dv == 0.0) continue;
-                    a += kGw[k] / parts * surface.areaStrip({q.x, q.y}) * dv;
+                    a += kGaussW[k] / parts * surface.areaStrip({q.x, q.y}) * dv;
                 }
         }
     return a;

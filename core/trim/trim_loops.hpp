@@ -30,6 +30,9 @@ void orientLoop(TrimLoop& loop, bool hole);
 // True when some loop is counter-clockwise (an outer boundary): then only what loops enclose is kept.
 bool hasOuterLoop(const std::vector<TrimLoop>& loops);
 
+// The part [t0, t1] of a cubic Bézier in the plane (de Casteljau: the same curve).
+std::array<glm::dvec2, 4> cubicPiece(const std::array<glm::dvec2, 4>& b, double t0, double t1);
+
 // A cubic Bézier piece of a loop, monotone in v.
 struct TrimSegment {
     std::array<glm::dvec2, 4> b{};

@@ -165,6 +165,12 @@ void trimMesh(const Document& doc, TriangleMesh& mesh) {
         Bounds box;
         for (const Vec3& p : c.at) box.add(p);
         const double near = 1e-7 * std::max(box.diagonal(), 1e-300);
+        // Crossings of two surfaces' lines at one place (a seam in one plane with another's window
+        // line) are one point.
+        std::vector<double> crossings;
+        for (double x : c.params)
+            if (crossings.empty() || glm::length(lerpAt(c.at, x) - lerpAt(c.at, crossings.back())) >= near) crossings.push_back(x);
+        c.params = crossings;
         std::vector<double> all = c.params;
         size_t next = 0;
         for (size_t k = 0; k < c.at.size(); ++k) {
@@ -211,10 +217,11 @@ void trimMesh(const Document& doc, TriangleMesh& mesh) {
         }
         const bool outer = (wt.flags & gpu::kTrimBaseKept) == 0;
         auto toWindow = [&](glm::dvec2 d) {  // the domain point in the window's square, its edges exact
-            glm::dvec2 w(d.x * wu - c, d.y * wv - r);
+            // On a lattice of 2^-40: one point reached along two paths of rounding is one vertex.
+            glm::dvec2 w(std::round((d.x * wu - c) * 0x1p40) * 0x1p-40, std::round((d.y * wv - r) * 0x1p40) * 0x1p-40);
             for (int a = 0; a < 2; ++a) {
-                if (std::abs(w[a]) < 1e-9) w[a] = 0.0;
-                if (std::abs(w[a] - 1.0) < 1e-9) w[a] = 1.0;
+                if (std::abs(w[a]) < 1e-7) w[a] = 0.0;
+                if (std::abs(w[a] - 1.0) < 1e-7) w[a] = 1.0;
             }
             return w;
         };
@@ -249,18 +256,19 @@ void trimMesh(const Document& doc, TriangleMesh& mesh) {
                     for (double sv : shiftsV) {
                         const glm::dvec2 shift(su, sv);
                         const glm::dvec2 a = toWindow(lerpUv(use.uv, chain.params[k]) + shift);
-                        // The closing point is the first one a whole turn on: the same bits as the first, shifted.
-                        const glm::dvec2 b = k + 1 < n ? toWindow(lerpUv(use.uv, chain.params[k + 1]) + shift)
-                                                       : toWindow(use.uv.front() + (glm::round(use.uv.back() - use.uv.front()) + shift));
+                        // The closing point is the first chain point a whole turn on: the same bits as the first, shifted.
+                        const glm::dvec2 b =
+                            k + 1 < n ? toWindow(lerpUv(use.uv, chain.params[k + 1]) + shift)
+                                      : toWindow(lerpUv(use.uv, chain.params[0]) + (glm::round(use.uv.back() - use.uv.front()) + shift));
                         const auto part = clipToSquare(a, b);
                         if (!part) continue;
                         const glm::dvec2 pa = a + part->first * (b - a), pb = a + part->second * (b - a);
-                        if (glm::length(pb - pa) < 1e-12) continue;
+                        if (part->first == part->second) continue;  // only touches the square
                         auto va = cdt.insert(K::Point_2(pa.x, pa.y));
                         if (va->info().id == kNoVertex) va->info().id = part->first == 0.0 ? chainVertex(k, pa) : onSurface(pa);
                         auto vb = cdt.insert(K::Point_2(pb.x, pb.y));
                         if (vb->info().id == kNoVertex) vb->info().id = part->second == 1.0 ? chainVertex((k + 1) % n, pb) : onSurface(pb);
-                        cdt.insert_constraint(va, vb);
+                        if (va != vb) cdt.insert_constraint(va, vb);  // however short: a gap would let a region leak
                     }
         }
         // Vertices the triangulation made itself (constraints crossing): on the surface.

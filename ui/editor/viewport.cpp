@@ -17,6 +17,7 @@
 #include "core/ops/patch_ops.hpp"
 #include "core/select/picking.hpp"
 #include "core/select/snapping.hpp"
+#include "core/trim/trim_edits.hpp"
 #include "render/scene/renderer.hpp"
 #include "ui/editor/editor.hpp"
 #include "ui/platform/app_window.hpp"
@@ -314,7 +315,10 @@ void Editor::transformKeys(double mx, double my) {
 void Editor::updateDrag(double mx, double my) {
     const auto t0 = std::chrono::steady_clock::now();
     if (!drag_.update(doc_, dragView(), mx, my, ImGui::GetIO().KeyCtrl)) return;
-    renderer_->updatePoints(doc_.points, drag_.changed());  // partial upload: what moved since the last frame
+    if (hasLiveTrims(doc_))
+        documentChanged(false);  // intersections and trims followed the move: their loops go up with the scene
+    else
+        renderer_->updatePoints(doc_.points, drag_.changed());  // partial upload: what moved since the last frame
     dragMs_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     wake();
 }
