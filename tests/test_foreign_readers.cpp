@@ -21,6 +21,7 @@
 #include "core/io/step_export.hpp"
 #include "core/io/step_import.hpp"
 #include "core/mesh/mesh_tessellate.hpp"
+#include "core/trim/trim_mesh.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;
@@ -33,8 +34,21 @@ bool installed(const char* tool) { return pw::test::runCommand(std::string("comm
 struct Example {
     std::string name;
     pw::Document doc;
-    std::array<double, 6> surfaceBox;  // the surface (level 8) turned +Z up, in millimetres
+    std::array<double, 6> surfaceBox;  // the surface (level 8, trimmed) turned +Z up, in millimetres
+    bool step = true;                  // its STEP was written (a trim round a closed net's seam is refused, issue 64)
 };
+
+// Whether the document has a trim round a closed net's seam (the STEP export refuses those).
+bool trimRoundASeam(const pw::Document& d) {
+    for (const pw::Surface& n : d.surfaces)
+        for (const pw::TrimLoop& l : n.trims)
+            for (int axis = 0; axis < 2; ++axis) {
+                bool lo = false, hi = false;
+                for (const pw::UV& p : l.uv) lo = lo || p[size_t(axis)] <= 1e-12, hi = hi || p[size_t(axis)] >= 1.0 - 1e-12;
+                if (lo && hi && (axis == 0 ? n.closedU : n.closedV)) return true;
+            }
+    return false;
+}
 
 // Every data/ example, exported to `dir` as NAME.step, NAME.glb and NAME.obj (level 8).
 std::vector<Example> exportExamples(const fs::path& dir) {
@@ -47,7 +61,7 @@ std::vector<Example> exportExamples(const fs::path& dir) {
         e.doc = pw::loadDocument(entry.path());
         const double mm = 1000.0 * pw::metresPer(e.doc.unit);
         e.surfaceBox = {1e300, 1e300, 1e300, -1e300, -1e300, -1e300};
-        for (const auto& p : pw::tessellateDocument(e.doc, 8).positions) {
+        for (const auto& p : pw::tessellateTrimmed(e.doc, 8).positions) {
             const pw::Vec3 v(p[0], p[1], p[2]);
             const pw::Vec3 z = e.doc.camera.zUp ? v : pw::yUpToZUp(v);
             for (int i = 0; i < 3; ++i) {
@@ -56,9 +70,16 @@ std::vector<Example> exportExamples(const fs::path& dir) {
             }
         }
         const std::string bin = q(pw::test::patchworkBinary());
+        e.step = !trimRoundASeam(e.doc);
         for (const char* to : {".step", ".glb", ".obj"}) {
             const auto r = pw::test::runCommand(bin + " export " + q(entry.path()) + " -o " + q(dir / (e.name + to)) +
-                                                (std::string(to) == ".step" ? "" : " --tess 8"));
+                                                (std::string(to) == ".step" ? "" : " --tess 8") + " 2>&1");
+            if (std::string(to) == ".step" && !e.step) {  // refused, saying why, and nothing written
+                EXPECT_EQ(r.exitCode, 2) << r.output;
+                EXPECT_NE(r.output.find("seam"), std::string::npos) << r.output;
+                EXPECT_FALSE(fs::exists(dir / (e.name + to)));
+                continue;
+            }
             EXPECT_EQ(r.exitCode, 0) << r.output;
         }
         out.push_back(std::move(e));
@@ -98,7 +119,7 @@ TEST(ForeignReaders, FreeCadAndBlenderReadEveryExampleUprightAtItsSize) {
         const std::array<double, 6>& box = e.surfaceBox;
         const double size = std::max({box[3] - box[0], box[4] - box[1], box[5] - box[2]});
         const double tol = 1e-3 * size;
-        if (freecad) {
+        if (freecad && e.step) {
             const nlohmann::json& f = fc.at(e.name + ".step");
             EXPECT_TRUE(f.at("valid").get<bool>());
             EXPECT_EQ(f.at("faces").get<size_t>(), e.doc.patches.size() + e.doc.surfaces.size() + e.doc.triangles.size());
@@ -168,6 +189,7 @@ TEST(ForeignReaders, TheValidatorAssimpAndOpenCascadeReadEveryExample) {
                          !(line.find("works on triangle meshes only") != std::string::npos && !e.doc.curves.empty())))
                         ADD_FAILURE() << ext << ": " << line;
             }
+        if (!e.step) continue;
         const pw::Document back = pw::importCadSurfaces(dir / (e.name + ".step"));
         EXPECT_EQ(back.patches.size(), e.doc.patches.size());
         EXPECT_EQ(back.surfaces.size(), e.doc.surfaces.size());

@@ -27,10 +27,18 @@ TopoDS_Wire loopWire(const Handle(Geom_Surface) & surface, const TrimLoop& loop,
     surface->Bounds(u0, u1, v0, v1);
     auto param = [&](const UV& p) { return gp_Pnt2d(u0 + p[0] * (u1 - u0), v0 + p[1] * (v1 - v0)); };
     const size_t n = (loop.uv.size() - 1) / 3;
+    // One vertex per place: on a closed surface two corners of the domain can be one point (a
+    // tube's seam), and an edge round the seam then starts and ends on the same vertex.
     std::vector<TopoDS_Vertex> joints;
+    std::vector<gp_Pnt> at;
     for (size_t s = 0; s < n; ++s) {
         const gp_Pnt2d q = param(loop.uv[3 * s]);
-        joints.push_back(BRepBuilderAPI_MakeVertex(surface->Value(q.X(), q.Y())));
+        const gp_Pnt p = surface->Value(q.X(), q.Y());
+        size_t same = at.size();
+        for (size_t k = 0; k < at.size(); ++k)
+            if (at[k].Distance(p) <= tol) same = k;
+        joints.push_back(same < at.size() ? joints[same] : TopoDS_Vertex(BRepBuilderAPI_MakeVertex(p)));
+        at.push_back(p);
     }
     BRepBuilderAPI_MakeWire wire;
     for (size_t s = 0; s < n; ++s) {
@@ -44,7 +52,6 @@ TopoDS_Wire loopWire(const Handle(Geom_Surface) & surface, const TrimLoop& loop,
         wire.Add(edge.Edge());
     }
     if (!wire.IsDone()) throw std::runtime_error(what + ": OpenCASCADE could not join a trim loop's edges into a wire");
-    (void)tol;
     return wire.Wire();
 }
 

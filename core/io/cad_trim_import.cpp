@@ -13,7 +13,6 @@
 #include <GeomConvert.hxx>
 #include <Geom_BezierSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
-#include <ShapeAnalysis.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -139,13 +138,11 @@ std::variant<FaceBSpline, std::string> faceBSpline(const TopoDS_Face& face) {
 std::variant<TrimmedFace, std::string> trimmedFace(const FaceBSpline& f) {
     TrimmedFace out;
     out.surface = Handle(Geom_BSplineSurface)::DownCast(f.surface->Copy());
-    double u0, u1, v0, v1, su0, su1, sv0, sv1;
-    ShapeAnalysis::GetFaceUVBounds(f.face, u0, u1, v0, v1);  // exact (BRepTools::UVBounds grows the box by tolerances)
-    out.surface->Bounds(su0, su1, sv0, sv1);
-    u0 = std::max(u0, su0), u1 = std::min(u1, su1), v0 = std::max(v0, sv0), v1 = std::min(v1, sv1);
-    if (!(u1 > u0 && v1 > v0)) return std::string("its boundary lies outside its surface");
-    const double eu = 1e-9 * (su1 - su0), ev = 1e-9 * (sv1 - sv0);
-    if (u0 > su0 + eu || u1 < su1 - eu || v0 > sv0 + ev || v1 < sv1 - ev) out.surface->Segment(u0, u1, v0, v1);
+    // The whole surface, as the file has it, the loops inside it (a face written by Patchwork comes
+    // back with the same patch and the same loops); an analytic surface was converted over the face's box.
+    double u0, u1, v0, v1;
+    out.surface->Bounds(u0, u1, v0, v1);
+    if (!(u1 > u0 && v1 > v0)) return std::string("its surface has an empty parameter range");
     std::vector<double> ku, kv;
     for (int i = 1; i <= out.surface->NbUKnots(); ++i) ku.push_back(out.surface->UKnot(i));
     for (int i = 1; i <= out.surface->NbVKnots(); ++i) kv.push_back(out.surface->VKnot(i));

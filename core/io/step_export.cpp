@@ -193,6 +193,20 @@ CadShape cadShape(const Document& doc, const char* format) {
         throw std::runtime_error(std::string("the document has no surfaces to write as ") + format);
     for (size_t s = 0; s < doc.surfaces.size(); ++s)
         if (auto why = netLayoutProblem(doc.surfaces[s])) throw std::runtime_error("surface " + std::to_string(s) + ": " + *why);
+    // A trim round a closed net's seam (a tube cut across) needs one seam edge with two p-curves;
+    // written as two edges it would not be a valid face, so it is refused (issue 64, not done yet).
+    for (size_t s = 0; s < doc.surfaces.size(); ++s) {
+        const Surface& n = doc.surfaces[s];
+        for (const TrimLoop& l : n.trims)
+            for (int axis = 0; axis < 2; ++axis) {
+                if (!(axis == 0 ? n.closedU : n.closedV)) continue;
+                bool lo = false, hi = false;
+                for (const UV& p : l.uv) lo = lo || p[size_t(axis)] <= 1e-12, hi = hi || p[size_t(axis)] >= 1.0 - 1e-12;
+                if (lo && hi)
+                    throw std::runtime_error("surface " + std::to_string(s) + ": a trim runs round its closed net's seam, which " + format +
+                                             " faces cannot carry yet (bake and convert the net, or export glTF or OBJ)");
+            }
+    }
     for (size_t s = 0; s < doc.surfaces.size(); ++s)
         for (uint32_t i : doc.surfaces[s].idx)
             if (pointWeight(doc, i) != 1.0)
