@@ -13,17 +13,28 @@ layout(location = 2) in vec2 inUV;
 layout(location = 3) flat in uint inPatch;
 layout(location = 4) in vec2 inCurv;
 #include "core/gpu/trim_math.h"
-// The trimmed windows' v-monotone segments, two vec4 each (b0 b1, b2 b3), in the window's (u, v).
+// The trimmed windows' v-monotone segments in the window's (u, v), sorted by their lowest v, three
+// vec4 each: the box (umin, vmin, umax, vmax), b0 b1, b2 b3.
 layout(set = 0, binding = 7, std430) readonly buffer TrimSegments { vec4 trimSegs[]; };
 // Direct trimming (core/gpu/trim_math.h): the ray from (u, v) towards +u against the window's
-// segments; an even count (with the base parity) is trimmed away. Exact per pixel at any zoom.
+// segments; an even count (with the base parity) is trimmed away. Exact per pixel at any zoom. The
+// box alone settles most segments (above, below, wholly right or left of the point), and the
+// first segment starting above the point ends the loop.
 bool trimmedAway(uint patchIndex, vec2 uv) {
     uvec4 t = patches[patchIndex].trim;
     if ((t.z & kTrimTest) == 0u) return false;
     uint crossings = (t.z & kTrimBaseKept) != 0u ? 1u : 0u;
     for (uint i = 0u; i < t.y; ++i) {
-        vec4 a = trimSegs[2u * (t.x + i)];
-        vec4 b = trimSegs[2u * (t.x + i) + 1u];
+        uint at = 3u * (t.x + i);
+        vec4 box = trimSegs[at];
+        if (uv.y < box.y) break;
+        if (uv.y >= box.w || uv.x > box.z) continue;
+        if (uv.x < box.x) {
+            crossings += 1u;
+            continue;
+        }
+        vec4 a = trimSegs[at + 1u];
+        vec4 b = trimSegs[at + 2u];
         crossings += trimCrossing(uv, a.xy, a.zw, b.xy, b.zw);
     }
     return (crossings & 1u) == 0u;

@@ -296,6 +296,9 @@ WindowTrim windowTrim(const std::vector<TrimSegment>& netSegments, bool outer, u
         w.flags = kept ? 0u : gpu::kTrimAllGone;  // wholly kept: no test; wholly gone: not tessellated
         return w;
     }
+    // Sorted by their lowest v: a fragment stops at the first segment that starts above it.
+    std::sort(w.segments.begin(), w.segments.end(),
+              [](const TrimSegment& a, const TrimSegment& b) { return std::min(a.b[0].y, a.b[3].y) < std::min(b.b[0].y, b.b[3].y); });
     w.flags = gpu::kTrimTest | (outer ? 0u : gpu::kTrimBaseKept);
     return w;
 }

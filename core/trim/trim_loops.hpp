@@ -59,8 +59,8 @@ double trimmedArea(const DomainSurface& surface, const std::vector<TrimLoop>& lo
 
 // The loops of a surface seen in one window's own [0, 1]² (window (r, c) of W x H): an affine map
 // of every point, the segments that can affect the window's test (those reaching its v range and
-// not wholly left of it), and the flags of core/gpu/trim_math.h. A window no segment reaches is
-// wholly kept (no segments, flags 0) or wholly gone (kTrimAllGone).
+// not wholly left of it), sorted by their lowest v, and the flags of core/gpu/trim_math.h. A window
+// no segment reaches is wholly kept (no segments, flags 0) or wholly gone (kTrimAllGone).
 struct WindowTrim {
     std::vector<TrimSegment> segments;
     uint32_t flags = 0;

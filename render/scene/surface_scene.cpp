@@ -52,8 +52,11 @@ void windowTrims(const Document& doc, const std::vector<PatchInstance>& inst, st
             continue;
         }
         ++s.trimmedWindows;
-        pd[w].trim = glm::uvec4(uint32_t(s.trimData.size() / 2), uint32_t(t.segments.size()), t.flags, 0u);
-        for (const TrimSegment& g : t.segments) {
+        pd[w].trim = glm::uvec4(uint32_t(s.trimData.size() / 3), uint32_t(t.segments.size()), t.flags, 0u);
+        for (const TrimSegment& g : t.segments) {  // its box (umin, vmin, umax, vmax), then its four points
+            const float u0 = float(std::min({g.b[0].x, g.b[1].x, g.b[2].x, g.b[3].x})),
+                        u1 = float(std::max({g.b[0].x, g.b[1].x, g.b[2].x, g.b[3].x}));
+            s.trimData.emplace_back(u0, float(std::min(g.b[0].y, g.b[3].y)), u1, float(std::max(g.b[0].y, g.b[3].y)));
             s.trimData.emplace_back(float(g.b[0].x), float(g.b[0].y), float(g.b[1].x), float(g.b[1].y));
             s.trimData.emplace_back(float(g.b[2].x), float(g.b[2].y), float(g.b[3].x), float(g.b[3].y));
         }

@@ -50,8 +50,9 @@ struct SurfaceScene {
     // pool indices of those that do; otherwise empty and every point is drawn.
     Buffer shownPoints;
     uint32_t shownPointCount = 0;
-    // Trims (issue 64): every tested window's v-monotone segments in its own (u, v), two vec4 each
-    // (binding 7; PatchData::trim points into it), and how many windows are trimmed at all.
+    // Trims (issue 64): every tested window's v-monotone segments in its own (u, v), sorted by their
+    // lowest v, three vec4 each: the box (umin, vmin, umax, vmax), then b0 b1 and b2 b3 (binding 7;
+    // PatchData::trim points into it), and how many windows are trimmed at all.
     std::vector<glm::vec4> trimData;
     Buffer trimSegments;
     uint32_t trimmedWindows = 0;
