@@ -13,6 +13,7 @@
 
 #include "core/base/math_types.hpp"
 #include "core/model/document.hpp"
+#include "core/ops/net_ops.hpp"
 
 namespace pw {
 inline namespace io {
@@ -26,6 +27,11 @@ std::unique_lock<std::mutex> lock();
 // surface: poles(j + 1, i + 1), knots {0, 1} of multiplicity 4 both ways; rational (the same
 // weights at the same places) when `weights` is given.
 Handle(Geom_BSplineSurface) bezierSurface(const std::array<Vec3, 16>& net, const Weights16* weights = nullptr);
+
+// A net's Bézier grid (core/ops/net_ops.hpp) as one exact B-spline surface: its poles (a closed
+// direction repeating its first row or column), knots 0, 1, … one a window, inner ones of
+// multiplicity 3.
+Handle(Geom_BSplineSurface) netBezierSurface(const BezierGrid& g);
 
 // OpenCASCADE's name of a length unit (write.step.unit, xstep.cascade.unit): "MM", "CM", "M", "INCH".
 const char* unitName(LengthUnit u);

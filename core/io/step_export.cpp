@@ -71,26 +71,8 @@ namespace {
 // `tol`, but kept: a uniform B-spline net ends with simple knots (C2, as it was drawn), one knot
 // between each two windows even where the surface is flat, so that an import finds its windows.
 Handle(Geom_BSplineSurface) netSurface(const Document& doc, const Surface& s, double tol) {
-    const BezierGrid g = netToBezierGrid(doc, s);
-    const int cols = int(g.cols) + (g.closedU ? 1 : 0), rows = int(g.rows) + (g.closedV ? 1 : 0);
-    TColgp_Array2OfPnt poles(1, cols, 1, rows);
-    for (int i = 0; i < rows; ++i)
-        for (int j = 0; j < cols; ++j) {
-            const Vec3& p = g.points[size_t(i % int(g.rows)) * g.cols + size_t(j % int(g.cols))];
-            poles.SetValue(j + 1, i + 1, gp_Pnt(p.x, p.y, p.z));
-        }
-    auto knots = [](int spans, TColStd_Array1OfReal& k, TColStd_Array1OfInteger& m) {
-        for (int i = 0; i <= spans; ++i) {
-            k(i + 1) = i;
-            m(i + 1) = (i == 0 || i == spans) ? 4 : 3;
-        }
-    };
-    const int su = (cols - 1) / 3, sv = (rows - 1) / 3;
-    TColStd_Array1OfReal uk(1, su + 1), vk(1, sv + 1);
-    TColStd_Array1OfInteger um(1, su + 1), vm(1, sv + 1);
-    knots(su, uk, um);
-    knots(sv, vk, vm);
-    Handle(Geom_BSplineSurface) surface = new Geom_BSplineSurface(poles, uk, vk, um, vm, 3, 3);
+    Handle(Geom_BSplineSurface) surface = occt::netBezierSurface(netToBezierGrid(doc, s));
+    const int su = surface->NbUKnots() - 1, sv = surface->NbVKnots() - 1;
     for (int k = su; k >= 2; --k)
         for (int m = 1; m < 3; ++m)
             if (surface->RemoveUKnot(k, m, tol)) break;

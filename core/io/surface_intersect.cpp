@@ -40,27 +40,7 @@ Handle(Geom_BSplineSurface) exactSurface(const Document& doc, const SurfaceRef& 
         }
         return occt::bezierSurface(net, w ? &*w : nullptr);
     }
-    const Surface& s = doc.surfaces[r.index];
-    const BezierGrid g = netToBezierGrid(doc, s);
-    const int cols = int(g.cols) + (g.closedU ? 1 : 0), rows = int(g.rows) + (g.closedV ? 1 : 0);
-    TColgp_Array2OfPnt poles(1, cols, 1, rows);
-    for (int i = 0; i < rows; ++i)
-        for (int j = 0; j < cols; ++j) {
-            const Vec3& p = g.points[size_t(i % int(g.rows)) * g.cols + size_t(j % int(g.cols))];
-            poles.SetValue(j + 1, i + 1, gp_Pnt(p.x, p.y, p.z));
-        }
-    auto knots = [](int spans, TColStd_Array1OfReal& k, TColStd_Array1OfInteger& m) {
-        for (int i = 0; i <= spans; ++i) {
-            k(i + 1) = i;
-            m(i + 1) = (i == 0 || i == spans) ? 4 : 3;
-        }
-    };
-    const int su = (cols - 1) / 3, sv = (rows - 1) / 3;
-    TColStd_Array1OfReal uk(1, su + 1), vk(1, sv + 1);
-    TColStd_Array1OfInteger um(1, su + 1), vm(1, sv + 1);
-    knots(su, uk, um);
-    knots(sv, vk, vm);
-    return new Geom_BSplineSurface(poles, uk, vk, um, vm, 3, 3);
+    return occt::netBezierSurface(netToBezierGrid(doc, doc.surfaces[r.index]));
 }
 
 }  // namespace
