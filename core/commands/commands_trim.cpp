@@ -40,7 +40,7 @@ void addLoop(Document& d, const SurfaceRef& s, TrimLoop loop) {
     std::vector<TrimLoop>& loops = trimsOf(d, s);
     loops.push_back(std::move(loop));
     if (const std::string why = trimLoopsProblem(loops); !why.empty()) throw EditError("surface " + surfaceRefName(s) + ": " + why);
-    if (!DomainSurface(d, s).area() || trimmedArea(DomainSurface(d, s), loops) <= 0.0)
+    if (trimmedArea(DomainSurface(d, s), loops) <= 0.0)
         throw EditError("surface " + surfaceRefName(s) + ": the trim would leave nothing of it");
 }
 

@@ -122,28 +122,12 @@ bool raySphereMayHit(const Ray& ray, It first, It last) {
 }
 }  // namespace
 
-namespace {
-// The trim of a window of a trimmed patch or net, in the window's own (u, v); none when untrimmed.
-std::optional<WindowTrim> pickTrim(const Document& doc, const PatchInstance& pi) {
-    if (pi.patch >= 0) {
-        const std::vector<TrimLoop>& loops = doc.patches[size_t(pi.patch)].trims;
-        if (loops.empty()) return std::nullopt;
-        return windowTrim(monotoneSegments(loops), hasOuterLoop(loops), 0, 0, 1, 1);
-    }
-    if (pi.surface < 0) return std::nullopt;
-    const Surface& net = doc.surfaces[size_t(pi.surface)];
-    if (net.trims.empty()) return std::nullopt;
-    const uint32_t step = netStep(net.basis);
-    return windowTrim(monotoneSegments(net.trims), hasOuterLoop(net.trims), pi.windowRow / step, pi.windowCol / step,
-                      uint32_t(netWindowCount(net.cols, net.closedU, step)), uint32_t(netWindowCount(net.rows, net.closedV, step)));
-}
-}  // namespace
-
 std::optional<SurfaceHit> pickSurface(const Document& doc, const Ray& ray, int level, const std::vector<bool>* skip) {
     const auto skipped = [&](const auto& idx) { return skip && usesAnyPoint(idx, *skip); };
     level = std::clamp(level, 1, 64);
     const std::vector<PatchInstance> inst = expandPatches(doc);
     std::optional<SurfaceHit> best;
+    WindowTrims trims(doc);  // hits on trimmed-away parts go on to what lies behind (issue 64)
     std::vector<SurfacePoint> grid;
     GridWeights weights;
     for (size_t w = 0; w < inst.size(); ++w) {
@@ -155,8 +139,7 @@ std::optional<SurfaceHit> pickSurface(const Document& doc, const Ray& ray, int l
         if (weights.basis != pi.basis || weights.tension != pi.tension || weights.nu != level)
             weights = makeGridWeights(pi.basis, pi.tension, level, level);
         evaluateWindowGrid(net, pi.idx, weights, grid);
-        // A trimmed window: hits on trimmed-away parts go on to what lies behind (issue 64).
-        const std::optional<WindowTrim> trim = pickTrim(doc, pi);
+        const std::optional<WindowTrim> trim = trims.of(pi);
         if (trim && (trim->flags & gpu::kTrimAllGone)) continue;
         const bool tested = trim && (trim->flags & gpu::kTrimTest);
         const int n1 = level + 1;

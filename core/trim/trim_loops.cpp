@@ -303,5 +303,23 @@ WindowTrim windowTrim(const std::vector<TrimSegment>& netSegments, bool outer, u
     return w;
 }
 
+std::optional<WindowTrim> WindowTrims::of(const PatchInstance& w) {
+    if (w.patch >= 0) {
+        const std::vector<TrimLoop>& loops = doc_.patches[size_t(w.patch)].trims;
+        if (loops.empty()) return std::nullopt;
+        return windowTrim(monotoneSegments(loops), hasOuterLoop(loops), 0, 0, 1, 1);
+    }
+    if (w.surface < 0) return std::nullopt;
+    const Surface& n = doc_.surfaces[size_t(w.surface)];
+    if (n.trims.empty()) return std::nullopt;
+    if (net_ != w.surface) {  // a net's windows come one after another
+        split_ = {monotoneSegments(n.trims), hasOuterLoop(n.trims)};
+        net_ = w.surface;
+    }
+    const uint32_t step = netStep(n.basis);
+    return windowTrim(split_.segments, split_.outer, w.windowRow / step, w.windowCol / step,
+                      uint32_t(netWindowCount(n.cols, n.closedU, step)), uint32_t(netWindowCount(n.rows, n.closedV, step)));
+}
+
 }  // namespace trim
 }  // namespace pw

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,25 @@ struct WindowTrim {
     uint32_t flags = 0;
 };
 WindowTrim windowTrim(const std::vector<TrimSegment>& netSegments, bool outer, uint32_t r, uint32_t c, uint32_t wu, uint32_t wv);
+
+// Each window's share of its surface's trims (expandPatches order), the surface's loops split into
+// v-monotone pieces once, not once per window: what the renderer, picking, the overlays and the
+// trimmed mesh ask of every window.
+class WindowTrims {
+public:
+    explicit WindowTrims(const Document& doc) : doc_(doc) {}
+    // None for a window of an untrimmed patch or net (or a triangle).
+    std::optional<WindowTrim> of(const PatchInstance& w);
+
+private:
+    struct Split {
+        std::vector<TrimSegment> segments;
+        bool outer = false;
+    };
+    const Document& doc_;
+    int32_t net_ = -1;  // the net whose pieces `split_` holds
+    Split split_;
+};
 
 }  // namespace trim
 }  // namespace pw

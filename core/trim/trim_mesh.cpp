@@ -194,12 +194,12 @@ void trimMesh(const Document& doc, TriangleMesh& mesh) {
     };
 
     std::map<uint32_t, std::vector<uint32_t>> replaced;
+    WindowTrims windowTrims(doc);
     for (const TrimmedGrid& g : mesh.trimmedGrids) {
         const PatchInstance& pi = windows[g.window];
         const SurfaceRef ref = refOf(pi);
         const TrimmedSurface& ts = surfaces[{ref.net, ref.index}];
         const DomainSurface& surface = *ts.surface;
-        const std::vector<TrimLoop>& loops = trimsOf(doc, ref);
         uint32_t r = 0, c = 0;
         const uint32_t wu = surface.windowsU(), wv = surface.windowsV();
         if (ref.net) {
@@ -207,7 +207,7 @@ void trimMesh(const Document& doc, TriangleMesh& mesh) {
             r = pi.windowRow / step;
             c = pi.windowCol / step;
         }
-        const WindowTrim wt = windowTrim(monotoneSegments(loops), hasOuterLoop(loops), r, c, wu, wv);
+        const WindowTrim wt = *windowTrims.of(pi);  // a trimmed grid's window always has one
         std::vector<uint32_t>& tris = replaced[g.window];
         if (wt.flags & gpu::kTrimAllGone) continue;  // nothing of it is left
         const MeshRange range = mesh.perWindow[g.window];

@@ -129,23 +129,10 @@ OverlayScene uploadOverlayScene(Device& dev, const Document& doc) {
     std::vector<float> verts;
     const std::vector<PatchInstance> inst = expandPatches(doc);
     constexpr int kSeg = 16;
+    WindowTrims trims(doc);
     for (const PatchInstance& pi : inst) {
         const WindowNet net = gatherWindow(doc, pi.idx);
-        // A trimmed window's edges only where the trims keep them (issue 64).
-        std::optional<WindowTrim> trim;
-        if (const std::vector<TrimLoop>* loops = pi.patch >= 0     ? &doc.patches[size_t(pi.patch)].trims
-                                                 : pi.surface >= 0 ? &doc.surfaces[size_t(pi.surface)].trims
-                                                                   : nullptr;
-            loops && !loops->empty()) {
-            uint32_t r = 0, c = 0, wu = 1, wv = 1;
-            if (pi.surface >= 0) {
-                const Surface& n = doc.surfaces[size_t(pi.surface)];
-                const uint32_t step = netStep(n.basis);
-                r = pi.windowRow / step, c = pi.windowCol / step;
-                wu = uint32_t(netWindowCount(n.cols, n.closedU, step)), wv = uint32_t(netWindowCount(n.rows, n.closedV, step));
-            }
-            trim = windowTrim(monotoneSegments(*loops), hasOuterLoop(*loops), r, c, wu, wv);
-        }
+        const std::optional<WindowTrim> trim = trims.of(pi);  // its edges only where the trims keep them (issue 64)
         for (int e = 0; e < 4; ++e) {
             const Edge edge = Edge(e);
             const Continuity* cont = nullptr;

@@ -26,31 +26,11 @@ namespace {
 void windowTrims(const Document& doc, const std::vector<PatchInstance>& inst, std::vector<gpu::PatchData>& pd, SurfaceScene& s) {
     s.trimData.clear();
     s.trimmedWindows = 0;
-    int32_t netSegsOf = -1;  // the net whose segments are in netSegs
-    std::vector<TrimSegment> netSegs;
-    bool netOuter = false;
+    WindowTrims trims(doc);
     for (size_t w = 0; w < inst.size() && w < pd.size(); ++w) {
-        const PatchInstance& pi = inst[w];
-        WindowTrim t;
-        if (pi.patch >= 0) {
-            const std::vector<TrimLoop>& loops = doc.patches[size_t(pi.patch)].trims;
-            if (loops.empty()) continue;
-            t = windowTrim(monotoneSegments(loops), hasOuterLoop(loops), 0, 0, 1, 1);
-        } else if (pi.surface >= 0) {
-            const Surface& net = doc.surfaces[size_t(pi.surface)];
-            if (net.trims.empty()) continue;
-            if (netSegsOf != pi.surface) {
-                netSegs = monotoneSegments(net.trims);
-                netOuter = hasOuterLoop(net.trims);
-                netSegsOf = pi.surface;
-            }
-            const uint32_t step = netStep(net.basis);
-            const uint32_t wu = uint32_t(netWindowCount(net.cols, net.closedU, step)),
-                           wv = uint32_t(netWindowCount(net.rows, net.closedV, step));
-            t = windowTrim(netSegs, netOuter, pi.windowRow / step, pi.windowCol / step, wu, wv);
-        } else {
-            continue;
-        }
+        const std::optional<WindowTrim> found = trims.of(inst[w]);
+        if (!found) continue;
+        const WindowTrim& t = *found;
         ++s.trimmedWindows;
         pd[w].trim = glm::uvec4(uint32_t(s.trimData.size() / 3), uint32_t(t.segments.size()), t.flags, 0u);
         for (const TrimSegment& g : t.segments) {  // its box (umin, vmin, umax, vmax), then its four points
