@@ -35,6 +35,7 @@ public:
     // or discard(), so that a second crash in between does not lose the recovered work.
     void adopt(const AutosaveEntry& recovered);
     const std::filesystem::path& documentPath() const { return doc_; }
+    const std::filesystem::path& notePath() const { return note_; }
 
 private:
     std::filesystem::path dir_, doc_, note_;

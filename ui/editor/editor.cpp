@@ -74,6 +74,12 @@ Editor::Editor(AppWindow& window, const std::string& file) : window_(window) {
         window_.presentEmpty();
     }
     lastAutosave_ = std::chrono::steady_clock::now();
+    try {
+        ensurePrivateDirectory(autosaveDirectory());
+        emergency_ = std::make_unique<EmergencySave>(autosaver_.documentPath(), autosaver_.notePath());
+    } catch (const std::exception& e) {
+        autosaveError_ = std::string("No emergency save: ") + e.what();
+    }
 }
 
 Editor::~Editor() { vkDeviceWaitIdle(window_.device().device()); }
@@ -178,6 +184,8 @@ EditorSnapshot Editor::snapshot() const {
             .windowSize = window_.windowSize(),
             .framebufferSize = window_.framebufferSize(),
             .frame = frameCount_,
+            .generation = session_.generation() + 1,
+            .emergencyPublished = emergency_ ? emergency_->published() : 0,
             .mode = mode_,
             .hovered = hovered_,
             .softRadiusPixels = softRadiusPixels_,
@@ -237,7 +245,22 @@ void Editor::recoverAutosave() {
     }
 }
 
+// Each committed state (a commit, undo, redo, a new or opened document) goes to the emergency save
+// while the document is modified; the worker serialises it off the frame.
+void Editor::updateEmergencySave() {
+    if (!emergency_) return;
+    const bool modified = session_.isModified();
+    if (session_.generation() == emergencyGeneration_ && modified == emergencyModified_) return;
+    emergencyGeneration_ = session_.generation();
+    emergencyModified_ = modified;
+    if (modified)
+        emergency_->submit(session_.documentToSave(), session_.path(), emergencyGeneration_ + 1);
+    else
+        emergency_->clear(emergencyGeneration_ + 1);
+}
+
 void Editor::idleTick() {
+    updateEmergencySave();
     for (const BackgroundWriter::Result& r : exports_.takeFinished()) {
         if (r.error.empty())
             status("Exported " + r.path);

@@ -20,6 +20,7 @@
 #include "core/edit/background_writer.hpp"
 #include "core/edit/drag_controller.hpp"
 #include "core/edit/edit_session.hpp"
+#include "core/edit/emergency_save.hpp"
 #include "core/select/edge_pick.hpp"
 #include "core/tess/tess_levels.hpp"
 #include "ui/editor/test_trace.hpp"
@@ -88,6 +89,8 @@ struct EditorSnapshot {
     const std::vector<bool>& usedMask;  // pool points some shown item uses
     std::array<int, 2> windowSize, framebufferSize;
     uint64_t frame = 0;
+    uint64_t generation = 0;          // the session's committed state
+    uint64_t emergencyPublished = 0;  // the committed state a fatal signal would write (0: none)
     Interaction mode = Interaction::None;
     int hovered = -1;                          // the control point under the mouse
     float softRadiusPixels = 0.0f;             // the soft-selection circle during a transform (0: none)
@@ -270,7 +273,13 @@ private:
     std::string status_;
     std::chrono::steady_clock::time_point statusTime_;
     std::string autosaveError_;  // shown until an autosave succeeds
-    BackgroundWriter exports_;   // exports, written while the window goes on
+    // The last committed state, ready for a fatal signal (issue 72); null when the autosave
+    // folder cannot be made.
+    std::unique_ptr<EmergencySave> emergency_;
+    uint64_t emergencyGeneration_ = ~uint64_t(0);
+    bool emergencyModified_ = false;
+    void updateEmergencySave();
+    BackgroundWriter exports_;  // exports, written while the window goes on
 
     // The panels.
     TestTrace trace_;

@@ -40,6 +40,8 @@ void TestTrace::write(const EditorSnapshot& e) {
     const Teaching& teaching = e.teaching;
     const render::FrameStats& stats = e.report.stats;
     j["frame"] = e.frame;
+    j["generation"] = e.generation;
+    j["emergencyPublished"] = e.emergencyPublished;
     j["window"] = {ww, wh};
     j["framebuffer"] = {fw, fh};
     j["file"] = e.session.path();
