@@ -1,6 +1,7 @@
 // Modelling commands: add patches, triangles, curves and nets at the 3D cursor; delete, duplicate,
 // flip, extrude, split, join and unjoin.
 #include <algorithm>
+#include <vector>
 
 #include "core/commands/command_table.hpp"
 #include "core/model/placement.hpp"
@@ -17,7 +18,26 @@ inline namespace commands {
 
 namespace {
 
-double newItemSize(const Document& d) { return std::max(0.2 * modelSize(d), 1.0); }
+// The size of a new item: a fifth of the model's size (at least 1), but no larger than the median
+// item there (a patch, net or triangle, by its widest side): items added one after another then
+// keep one size, where a fifth of the model's size alone grew each new patch and its distance
+// ×1.2 (99 of them passed 1e9, issue 73).
+double newItemSize(const Document& d) {
+    const double fifth = std::max(0.2 * modelSize(d), 1.0);
+    std::vector<double> widths;
+    auto add = [&](const auto& idx) {
+        Bounds b;
+        for (uint32_t i : idx)
+            if (i < d.points.size()) b.add(d.points[i]);
+        if (!b.empty) widths.push_back(std::max({b.max.x - b.min.x, b.max.y - b.min.y, b.max.z - b.min.z}));
+    };
+    for (const Patch& p : d.patches) add(p.idx);
+    for (const Surface& s : d.surfaces) add(s.idx);
+    for (const TrianglePatch& t : d.triangles) add(t.idx);
+    if (widths.empty()) return fifth;
+    std::nth_element(widths.begin(), widths.begin() + std::ptrdiff_t(widths.size() / 2), widths.end());
+    return std::min(fifth, std::max(widths[widths.size() / 2], 1.0));
+}
 
 bool hasPatch(const EditSession& s) { return s.sel.patch >= 0 && size_t(s.sel.patch) < s.doc.patches.size(); }
 

@@ -1,6 +1,7 @@
 // Revolve, extrude, loft and edge surface nets (core/construct/construction_nets.hpp).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/base/errors.hpp"
 #include "core/construct/construction_nets.hpp"
@@ -11,6 +12,71 @@ inline namespace construct {
 
 namespace {
 Vec3 vec(const std::array<double, 3>& a) { return Vec3(a[0], a[1], a[2]); }
+}  // namespace
+
+namespace {
+
+// A revolve's profile may touch its axis (a closed bottom, a sphere's poles) but not cross it: the
+// surface would turn inside out where it passes, folding over itself (issue 73; CAD tools refuse
+// such a profile too). Sampled along the curve in the plane of the axis and the profile's farthest
+// point; throws naming the place it crosses.
+void refuseAxisCrossing(const CurveShape& profile, const Vec3& o, const Vec3& a, double size) {
+    const size_t n = profile.points.size();
+    if (n < 4) return;
+    Vec3 e(0.0);
+    double far = 0.0;
+    for (const HPoint& h : profile.points) {
+        const Vec3 p = euclidean(h) - o, r = p - glm::dot(p, a) * a;
+        if (glm::length(r) > far) far = glm::length(r), e = r / glm::length(r);
+    }
+    if (!(far > 0.0)) return;
+    const double eps = 1e-9 * (1.0 + size);
+    const size_t segments = profile.closed ? n / 3 : (n - 1) / 3;
+    constexpr int kSteps = 32;
+    int lastSign = 0;
+    Vec3 lastPoint(0.0);
+    double lastS = 0.0;
+    for (size_t sgm = 0; sgm < segments; ++sgm)
+        for (int k = 0; k <= kSteps; ++k) {
+            const double t = double(k) / kSteps, u = 1.0 - t;
+            const double b[4] = {u * u * u, 3 * u * u * t, 3 * u * t * t, t * t * t};
+            HPoint h(0.0);
+            for (int i = 0; i < 4; ++i) h += b[i] * profile.points[(3 * sgm + size_t(i)) % n];
+            const Vec3 p = euclidean(h), r = p - o - glm::dot(p - o, a) * a;
+            // Where the profile runs along its circle of revolution (its tangent has no part in the
+            // plane of the axis) the surface has no tangent plane: it folds onto itself there.
+            HPoint d(0.0);
+            const double db[4] = {-3 * u * u, 3 * u * u - 6 * u * t, 6 * u * t - 3 * t * t, 3 * t * t};
+            for (int i = 0; i < 4; ++i) d += db[i] * profile.points[(3 * sgm + size_t(i)) % n];
+            const Vec3 tangent = (Vec3(d) - double(d.w) * p) / double(h.w);
+            const double rl = glm::length(r);
+            if (rl > 1e-6 * (1.0 + size) && glm::length(tangent) > 0.0) {
+                const Vec3 round = glm::cross(a, r / rl);
+                const Vec3 meridian = tangent - glm::dot(tangent, round) * round;
+                if (glm::length(meridian) <= 1e-6 * glm::length(tangent)) {
+                    char where[160];
+                    std::snprintf(where, sizeof where, "(%.6g, %.6g, %.6g)", p.x, p.y, p.z);
+                    throw EditError(std::string("the profile runs round the axis at ") + where +
+                                    " (along the circle it would be turned on); its revolve would fold onto itself there");
+                }
+            }
+            const double s = glm::dot(r, e);
+            const int sign = s > eps ? 1 : s < -eps ? -1 : 0;
+            if (sign != 0 && lastSign != 0 && sign != lastSign) {
+                const Vec3 at = lastPoint + (p - lastPoint) * (lastS / (lastS - s));
+                const Vec3 off = at - o - glm::dot(at - o, a) * a;
+                if (glm::length(off) <= 0.01 * far + eps) {
+                    char where[160];
+                    std::snprintf(where, sizeof where, "(%.6g, %.6g, %.6g)", at.x, at.y, at.z);
+                    throw EditError(std::string("the profile crosses the axis at ") + where +
+                                    "; its revolve would turn inside out there. Keep the profile on one side of the axis "
+                                    "(it may end on it)");
+                }
+            }
+            if (sign != 0) lastSign = sign, lastS = s, lastPoint = p;
+        }
+}
+
 }  // namespace
 
 ConstructedNet revolveNet(const Document& doc, const Construction& c) {
@@ -43,6 +109,7 @@ ConstructedNet revolveNet(const Document& doc, const Construction& c) {
         }
     }
     if (!(farthest > 1e-12 * (1.0 + size))) throw EditError("the profile lies on the axis; there is nothing to revolve");
+    refuseAxisCrossing(profile, o, a, size);
     return net;
 }
 

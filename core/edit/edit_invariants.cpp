@@ -1,16 +1,19 @@
 #include "core/edit/edit_invariants.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <tuple>
 #include <vector>
 
 #include "core/base/errors.hpp"
+#include "core/base/limits.hpp"
 #include "core/eval/fold_check.hpp"
 #include "core/model/join_detect.hpp"
 #include "core/model/topology.hpp"
 #include "core/ops/fitted_sides.hpp"
 #include "core/solve/constraint_solver.hpp"
+#include "core/solve/continuity_report.hpp"
 
 namespace pw {
 inline namespace edit {
@@ -81,6 +84,99 @@ void checkFolds(const Document& before, const Document& after) {
         throw EditError("refused: its joins would hold only by folding " + fold + "; join C0 or reshape the patches first");
 }
 
+// No accepted edit leaves a coordinate the file reader would refuse (issue 73: the document could
+// then no longer be saved or autosaved).
+void checkCoordinates(const Document& after) {
+    for (size_t i = 0; i < after.points.size(); ++i)
+        for (int k = 0; k < 3; ++k)
+            if (!std::isfinite(after.points[i][k]) || std::abs(after.points[i][k]) > limits::kMaxCoordinate)
+                throw EditError("refused: it would move point " + std::to_string(i) + " to " + number(after.points[i][k]) + " in " +
+                                "xyz"[k] + ", beyond the ±" + number(limits::kMaxCoordinate) + " a document may hold");
+}
+
+// Patches of `after` whose control points (their indices or positions) differ from `before`'s; new
+// patches count as changed.
+std::vector<bool> changedPatches(const Document& before, const Document& after) {
+    std::vector<bool> changed(after.patches.size(), true);
+    const size_t common = std::min(before.patches.size(), after.patches.size());
+    for (size_t p = 0; p < common; ++p) {
+        const Patch &a = before.patches[p], &b = after.patches[p];
+        bool same = a.idx == b.idx;
+        for (size_t k = 0; same && k < b.idx.size(); ++k)
+            same = b.idx[k] < before.points.size() && b.idx[k] < after.points.size() && before.points[b.idx[k]] == after.points[b.idx[k]] &&
+                   pointWeight(before, b.idx[k]) == pointWeight(after, b.idx[k]);
+        changed[p] = !same;
+    }
+    return changed;
+}
+
+std::string measuredFailure(const JoinContinuity& m, uint8_t f, const ContinuityTolerances& tol) {
+    std::string out;
+    auto add = [&](const std::string& s) { out += (out.empty() ? "" : ", ") + s; };
+    if (f & kPositionOut) add("a gap of " + number(m.c0Gap) + " (tolerance " + number(tol.position) + ")");
+    if (f & kAngleOut) add(number(m.normalAngleDeg) + "° between the normals (tolerance " + number(tol.angleDeg) + "°)");
+    if (f & kCurvatureOut) add(number(m.curvatureDeviationPct) + " % curvature deviation (tolerance " + number(tol.curvaturePct) + " %)");
+    return out;
+}
+
+// What a user sees (issue 73): the control-point rows can hold while the surface does not (a G1
+// join of two collapsed pole edges measures 180°; a G2 join's curvature after a split). Every join
+// between patches the edit changed is measured as `info` and the Continuity panel measure it,
+// against the document's tolerances. One that was out the same way before and got no worse may
+// stay (a file read so); fitted joins are held by their own angle (checkFittedAngles).
+void checkMeasured(const Document& before, const Document& after) {
+    const std::vector<bool> changed = changedPatches(before, after);
+    std::vector<size_t> only;
+    const bool joinsSame = before.joins == after.joins;
+    for (size_t j = 0; j < after.joins.size(); ++j) {
+        const Join& jn = after.joins[j];
+        if (!quadJoin(jn) || jn.fitted || jn.patchA >= changed.size() || jn.patchB >= changed.size()) continue;
+        // A join the edit made or changed (a pole's join raised to G2 moves no point) or one beside a changed patch.
+        const bool madeOrChanged = !joinsSame && std::find(before.joins.begin(), before.joins.end(), jn) == before.joins.end();
+        if (changed[jn.patchA] || changed[jn.patchB] || madeOrChanged) only.push_back(j);
+    }
+    if (only.empty()) return;
+    const std::vector<JoinContinuity> measured = continuityReport(after, 32, only);
+    std::vector<size_t> failing;
+    for (const JoinContinuity& m : measured)
+        if (toleranceFailures(m, after.joins[m.join].continuity, after.tolerances)) failing.push_back(m.join);
+    if (failing.empty()) return;
+    // The same joins before the edit, where they were there (same sides, same continuity).
+    std::vector<size_t> earlier;
+    std::vector<int> earlierOf(after.joins.size(), -1);
+    for (size_t j : failing)
+        for (size_t i = 0; i < before.joins.size(); ++i) {
+            const Join &a = before.joins[i], &b = after.joins[j];
+            if (a.patchA == b.patchA && a.edgeA == b.edgeA && a.patchB == b.patchB && a.edgeB == b.edgeB && a.continuity == b.continuity) {
+                earlierOf[j] = int(earlier.size());
+                earlier.push_back(i);
+                break;
+            }
+        }
+    const std::vector<JoinContinuity> was = earlier.empty() ? std::vector<JoinContinuity>{} : continuityReport(before, 32, earlier);
+    std::string names;
+    int named = 0;
+    for (const JoinContinuity& m : measured) {
+        const uint8_t f = toleranceFailures(m, after.joins[m.join].continuity, after.tolerances);
+        if (!f) continue;
+        if (earlierOf[m.join] >= 0) {
+            const JoinContinuity& w = was[size_t(earlierOf[m.join])];
+            const double slack = 1e-9;
+            const bool noWorse =
+                (toleranceFailures(w, before.joins[earlier[size_t(earlierOf[m.join])]].continuity, before.tolerances) & f) == f &&
+                m.c0Gap <= std::max(w.c0Gap, after.tolerances.position) * (1 + slack) + 1e-12 &&
+                m.normalAngleDeg <= std::max(w.normalAngleDeg, after.tolerances.angleDeg) * (1 + slack) + 1e-9 &&
+                m.curvatureDeviationPct <= std::max(w.curvatureDeviationPct, after.tolerances.curvaturePct) * (1 + slack) + 1e-9;
+            if (noWorse) continue;
+        }
+        if (named++ < 3)
+            names += (names.empty() ? "" : "; ") + describeJoin(after, m.join) + " with " + measuredFailure(m, f, after.tolerances);
+    }
+    if (named == 0) return;
+    throw EditError("refused: it would leave " + names + (named > 3 ? " and " + std::to_string(named - 3) + " more" : std::string()) +
+                    ", measured along the seam; change or unjoin the conflicting join, or join with less continuity");
+}
+
 }  // namespace
 
 double joinTolerance(const Document& doc) { return 1e-6 * modelSize(doc) + 1e-12; }
@@ -92,8 +188,10 @@ std::string describeJoin(const Document& doc, size_t j) {
 }
 
 void checkEditInvariants(const Document& before, const Document& after, bool detected) {
+    checkCoordinates(after);
     checkJoins(before, after, detected);
     checkFittedAngles(before, after);
+    checkMeasured(before, after);
     checkFolds(before, after);
 }
 
