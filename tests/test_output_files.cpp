@@ -1,5 +1,6 @@
 // Outputs (issue 24): written through symlinks, refused onto anything but a regular writable file,
-// permissions and hard links kept, several outputs all or nothing, no temporary file left behind.
+// permissions kept, hard-linked targets replaced atomically, several outputs all or nothing, no
+// temporary file left behind; inputs that are not regular files refused before any read.
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
@@ -12,6 +13,7 @@
 
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
+#include "core/io/document_io.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;
@@ -86,14 +88,48 @@ TEST(OutputFiles, KeepsPermissions) {
     EXPECT_EQ(test::readBytes(dir / "secret.txt"), "b");
 }
 
-TEST(OutputFiles, KeepsHardLinks) {
+TEST(OutputFiles, AHardLinkedTargetIsReplacedAtomically) {
+    // Rewriting a multiply linked file in place kept its other names on it, but a kill in the
+    // middle left every name empty (issue 73): it is replaced like any other file, and the other
+    // names keep the old one.
     const fs::path dir = test::freshTempDir("out-hardlink");
     writeFileAtomic(dir / "a.txt", "old");
     fs::create_hard_link(dir / "a.txt", dir / "b.txt");
     writeFileAtomic(dir / "a.txt", "new and longer");
-    EXPECT_EQ(test::readBytes(dir / "b.txt"), "new and longer");
-    EXPECT_EQ(fs::hard_link_count(dir / "a.txt"), 2u);
+    EXPECT_EQ(test::readBytes(dir / "a.txt"), "new and longer");
+    EXPECT_EQ(test::readBytes(dir / "b.txt"), "old");
+    EXPECT_EQ(fs::hard_link_count(dir / "a.txt"), 1u);
     EXPECT_EQ(test::entryCount(dir), 2u);
+}
+
+TEST(InputFiles, FifosDevicesAndKernelFilesAreRefusedBeforeAnyRead) {
+    // A FIFO hung the .bpt reader (it peeked at the header first); /dev/zero read 2 GB; /proc files
+    // say they are empty. Each is refused at once, naming what it is.
+    const fs::path dir = test::freshTempDir("in-special");
+    const fs::path fifo = dir / "model.bpt";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    for (const fs::path& p : {fifo, fs::path(dir / "doc.patchwork")}) {
+        if (p != fifo) {
+            ASSERT_EQ(::mkfifo(p.c_str(), 0600), 0);
+        }
+        try {
+            (void)loadDocument(p);
+            ADD_FAILURE() << p << " was read";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("a FIFO"), std::string::npos) << e.what();
+        }
+    }
+    const fs::path zero = dir / "zero.patchwork";
+    fs::create_symlink("/dev/zero", zero);
+    EXPECT_THROW((void)readFileLimited(zero), InputError);
+    try {
+        (void)readFileLimited("/proc/self/status");
+        ADD_FAILURE() << "/proc/self/status was read";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("/proc or /sys"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(readFileHead("/proc/self/exe", 4).size(), 4u);  // a link to a regular file is read
+    EXPECT_THROW((void)readFileLimited(dir), InputError);
 }
 
 TEST(OutputFiles, ABatchIsAllOrNothing) {

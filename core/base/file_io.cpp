@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <sys/stat.h>
+#include <sys/vfs.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -16,20 +17,89 @@
 namespace pw {
 inline namespace base {
 
-std::string readFileLimited(const std::filesystem::path& path) {
+namespace {
+std::string fileKind(mode_t m);
+
+// Opens `path` for reading as a regular file on a real file system, without blocking (a FIFO would
+// wait for a writer) and checked on the opened descriptor (no swap between a check and the open):
+// a device, FIFO, socket or directory, or a file of /proc or /sys (whose sizes say 0 or 4096 and
+// whose reads never end, as /dev/zero's), is refused naming what it is.
+int openRegular(const std::filesystem::path& path, struct stat& st) {
     const std::string name = path.string();
-    std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) throw InputError(name, "no such file");
-    if (std::filesystem::is_directory(path, ec)) throw InputError(name, "is a directory, not a file");
-    const auto size = std::filesystem::file_size(path, ec);
-    if (ec) throw InputError(name, "cannot read: " + ec.message());
-    if (size > limits::kMaxFileBytes)
-        throw InputError(name, "file is " + std::to_string(size) + " bytes; the limit is " + std::to_string(limits::kMaxFileBytes));
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(name, std::string("cannot open: ") + std::strerror(errno));
-    std::string data(static_cast<size_t>(size), '\0');
-    in.read(data.data(), static_cast<std::streamsize>(size));
-    if (static_cast<size_t>(in.gcount()) != size) throw InputError(name, "cannot read the whole file");
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+    if (fd < 0) {
+        if (errno == ENOENT) throw InputError(name, "no such file");
+        if (errno == EISDIR) throw InputError(name, "is a directory, not a file");
+        throw InputError(name, std::string("cannot open: ") + std::strerror(errno));
+    }
+    struct statfs fs {};
+    if (::fstat(fd, &st) != 0) {
+        ::close(fd);
+        throw InputError(name, std::string("cannot read: ") + std::strerror(errno));
+    }
+    if (!S_ISREG(st.st_mode)) {
+        ::close(fd);
+        throw InputError(name, S_ISDIR(st.st_mode) ? "is a directory, not a file"
+                                                   : "is " + fileKind(st.st_mode) + "; Patchwork reads only regular files");
+    }
+    if (::fstatfs(fd, &fs) == 0 && (fs.f_type == 0x9fa0 /* proc */ || fs.f_type == 0x62656572 /* sysfs */)) {
+        ::close(fd);
+        throw InputError(name, "is a file of the kernel's /proc or /sys, not a document; Patchwork reads only regular files");
+    }
+    return fd;
+}
+
+// Reads up to `limit` bytes of an opened file.
+std::string readUpTo(int fd, size_t limit, const std::string& name) {
+    std::string data(limit, '\0');
+    size_t done = 0;
+    while (done < limit) {
+        const ssize_t n = ::read(fd, data.data() + done, limit - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) {
+            ::close(fd);
+            throw InputError(name, std::string("cannot read: ") + std::strerror(errno));
+        }
+        if (n == 0) break;
+        done += size_t(n);
+    }
+    data.resize(done);
+    return data;
+}
+}  // namespace
+
+std::string readFileLimited(const std::filesystem::path& path, size_t maxBytes) {
+    const std::string name = path.string();
+    struct stat st {};
+    const int fd = openRegular(path, st);
+    const auto size = static_cast<unsigned long long>(st.st_size);
+    if (size > maxBytes) {
+        ::close(fd);
+        throw InputError(name, "file is " + std::to_string(size) + " bytes; the limit is " + std::to_string(maxBytes));
+    }
+    std::string data = readUpTo(fd, size_t(size), name);
+    ::close(fd);
+    if (data.size() != size) throw InputError(name, "cannot read the whole file");
+    return data;
+}
+
+FileStamp fileStamp(const std::filesystem::path& path) {
+    struct stat st {};
+    FileStamp f;
+    if (::stat(path.c_str(), &st) != 0) return f;
+    f.exists = true;
+    f.mtimeNs = static_cast<long long>(st.st_mtim.tv_sec) * 1000000000LL + st.st_mtim.tv_nsec;
+    f.size = static_cast<long long>(st.st_size);
+    f.inode = static_cast<unsigned long long>(st.st_ino);
+    f.device = static_cast<unsigned long long>(st.st_dev);
+    return f;
+}
+
+std::string readFileHead(const std::filesystem::path& path, size_t bytes) {
+    struct stat st {};
+    const int fd = openRegular(path, st);
+    std::string data = readUpTo(fd, bytes, path.string());
+    ::close(fd);
     return data;
 }
 
@@ -135,18 +205,10 @@ void OutputBatch::stage(const std::filesystem::path& path, const std::vector<std
 void OutputBatch::commit() {
     std::error_code ec;
     for (const Staged& s : staged_) {
-        if (s.target.links > 1) {
-            // Other names share this file: replace its bytes in place so they keep seeing it. The
-            // complete copy already exists (staged), so a full disk was found before this point.
-            std::string data = readFileLimited(s.temp);
-            const int fd = ::open(s.target.path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
-            const bool ok = fd >= 0 && writeAll(fd, data) && ::fsync(fd) == 0;
-            if (fd >= 0) ::close(fd);
-            if (!ok) throw OutputError(s.target.requested.string(), std::strerror(errno));
-            std::filesystem::remove(s.temp, ec);
-        } else if (::rename(s.temp.c_str(), s.target.path.c_str()) != 0) {
-            throw OutputError(s.target.requested.string(), std::strerror(errno));
-        }
+        // A file with other hard links is replaced like any other: the other names keep the old
+        // file. Rewriting it in place would keep them on it, but a kill in the middle left every
+        // name empty (issue 73).
+        if (::rename(s.temp.c_str(), s.target.path.c_str()) != 0) throw OutputError(s.target.requested.string(), std::strerror(errno));
         syncDirectory(s.target.path.has_parent_path() ? s.target.path.parent_path() : std::filesystem::path("."));
     }
     staged_.clear();

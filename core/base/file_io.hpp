@@ -4,18 +4,25 @@
 // so that a failed or interrupted save never leaves a partial file or destroys the old one.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "core/base/limits.hpp"
+
 namespace pw {
 inline namespace base {
 
-// Reads the file; throws InputError naming it when it is missing, unreadable, a directory or
-// larger than limits::kMaxFileBytes.
-std::string readFileLimited(const std::filesystem::path& path);
+// Reads the file; throws InputError naming it when it is missing, unreadable, not a regular file (a
+// directory, device, FIFO or socket: refused before any read, so a FIFO cannot hang it), a file of
+// /proc or /sys, or larger than `maxBytes` (default limits::kMaxFileBytes).
+std::string readFileLimited(const std::filesystem::path& path, size_t maxBytes = limits::kMaxFileBytes);
+// The first `bytes` of a file (fewer when it is shorter), with the same checks: a header read before
+// the whole file.
+std::string readFileHead(const std::filesystem::path& path, size_t bytes);
 
 // Where an output really goes, checked before anything is written: through a symlink to the file
 // it names; refused (OutputError naming the path) onto a device, FIFO, socket or directory, onto a
@@ -31,8 +38,8 @@ OutputTarget checkOutputPath(const std::filesystem::path& path);
 // Outputs that appear together or not at all: stage() writes each one completely into a
 // temporary file beside its target (full disk, permissions found here); commit() moves them all
 // into place. A batch destroyed before commit() leaves every target as it was and no temporary
-// file. Existing files keep their permissions and owner; a file with other hard links is
-// rewritten in place, so the links keep seeing it.
+// file. Existing files keep their permissions and owner; a file with other hard links is replaced
+// like any other (the other names keep the old file: a rewrite in place could leave them all empty).
 class OutputBatch {
 public:
     OutputBatch() = default;
@@ -65,6 +72,17 @@ void writeFileAtomic(const std::filesystem::path& path, std::string_view data,
 // the read-back, so that the caller can release what they point to first.
 void writeFileAtomic(const std::filesystem::path& path, const std::vector<std::string_view>& pieces,
                      const std::function<void(const std::filesystem::path& staged)>& readBack, const std::function<void()>& written = {});
+
+// What identifies a file's contents on disk without reading them: its modification time, size and
+// inode. A document remembers its file's stamp when it is opened or saved; a different stamp at the
+// next save means another program (a second editor) wrote it in between (issue 73).
+struct FileStamp {
+    bool exists = false;
+    long long mtimeNs = 0, size = 0;
+    unsigned long long inode = 0, device = 0;
+    bool operator==(const FileStamp&) const = default;
+};
+FileStamp fileStamp(const std::filesystem::path& path);
 
 // Lower-case extension with the dot, e.g. ".glb".
 std::string lowerExtension(const std::filesystem::path& path);

@@ -242,14 +242,11 @@ Document parseBpt(std::string_view text, const std::string& sourceName, std::vec
 Document loadBpt(const std::filesystem::path& path, std::vector<std::string>* notes) {
     // The header first, from the file's first lines: a count beyond the limits is refused before
     // the whole file (up to limits::kMaxFileBytes) is read.
-    if (std::ifstream in{path, std::ios::binary}) {
-        std::string head(4096, '\0');
-        in.read(head.data(), std::streamsize(head.size()));
-        head.resize(size_t(in.gcount()));
-        if (const size_t lastLine = head.rfind('\n'); lastLine != std::string::npos) {
-            head.resize(lastLine + 1);
-            if (head.find_first_not_of(" \t\r\n") != std::string::npos) (void)BptParser(head, path.string(), nullptr).header();
-        }
+    // readFileHead refuses a FIFO, device or /proc file before reading anything (a FIFO hung here).
+    std::string head = readFileHead(path, 4096);
+    if (const size_t lastLine = head.rfind('\n'); lastLine != std::string::npos) {
+        head.resize(lastLine + 1);
+        if (head.find_first_not_of(" \t\r\n") != std::string::npos) (void)BptParser(head, path.string(), nullptr).header();
     }
     return parseBpt(readFileLimited(path), path.string(), notes);
 }

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <sstream>
 
 #include "core/eval/displacement.hpp"
 #include "core/model/camera_math.hpp"
@@ -53,11 +54,16 @@ Editor::Editor(AppWindow& window, const std::string& file) : window_(window) {
     bindShortcuts();
 
     // The document, recent files, crash recovery.
-    {
-        std::ifstream in(recentFile());
-        for (std::string line; std::getline(in, line);)
-            if (!line.empty()) recent_.push_back(line);
-    }
+    // A state file that is not a small regular file (a FIFO, a link to /dev/zero) is left alone:
+    // the editor starts without it and says so (issue 73).
+    std::string stateNote;
+    if (std::error_code ec; std::filesystem::exists(recentFile(), ec)) try {
+            std::istringstream in(readFileLimited(recentFile(), 1 << 20));
+            for (std::string line; std::getline(in, line);)
+                if (!line.empty()) recent_.push_back(line);
+        } catch (const InputError& e) {
+            stateNote = std::string("The recent files were not read: ") + e.what();
+        }
     dialogs_.offerRecovery(findRecoverableAutosaves());
     // A bad file on the command line throws InputError: reported with exit 2 like the other commands.
     if (file.empty())
@@ -67,6 +73,7 @@ Editor::Editor(AppWindow& window, const std::string& file) : window_(window) {
         documentReplaced();
         if (!notes.empty()) status(skippedSummary(notes));
     }
+    if (!stateNote.empty()) status(stateNote);
     // Warm the pipelines on the first acquired image (the first real frame then pays no JIT), and
     // present it through the normal path.
     if (window_.acquire()) {

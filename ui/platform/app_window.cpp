@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <thread>
 
 #include "core/base/errors.hpp"
@@ -73,7 +74,15 @@ const char* kNoDisplay =
 std::filesystem::path windowSizeFile() { return autosaveDirectory() / "window.txt"; }
 
 std::optional<std::array<int, 2>> rememberedWindowSize() {
-    std::ifstream in(windowSizeFile());
+    // Not a small regular file (a FIFO kept the editor from opening): the default size.
+    std::istringstream in;
+    try {
+        if (std::error_code ec; !std::filesystem::exists(windowSizeFile(), ec)) return std::nullopt;
+        in.str(readFileLimited(windowSizeFile(), 4096));
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "patchwork: the last window size was not read (%s); the default size is used\n", e.what());
+        return std::nullopt;
+    }
     int w = 0, h = 0;
     char x = 0;
     if (!(in >> w >> x >> h) || x != 'x' || w < 640 || h < 400 || w > 16384 || h > 16384) return std::nullopt;
