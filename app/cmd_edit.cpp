@@ -2,6 +2,7 @@
 // window (core/commands/command_table.hpp). IN defaults to an empty document; the script runs first, then
 // the -c commands. A bad line fails with SCRIPT:LINE: message and exit 2, and then nothing is
 // written: OUT and every file a `save` in the script named stay as they were.
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -49,6 +50,11 @@ int runEdit(const EditOptions& opt) {
     if (!opt.commands.empty()) table.runScript(session, host, opt.commands, "-c");
     for (const auto& [path, doc] : host.writes) saveDocument(doc, path, session.exportOptions);
     const Document out = session.documentToSave();
+    // Written in place of its own input while another program wrote that file (a second editor's
+    // save): refused, so that work is not discarded silently (issue 73).
+    std::error_code ec;
+    if (!opt.input.empty() && std::filesystem::equivalent(opt.input, opt.output, ec) && session.fileChangedOnDisk())
+        throw OutputError(opt.output, "was changed by another program while this edit ran; nothing was written (write to another file)");
     saveDocument(out, opt.output, session.exportOptions);
     if (!opt.quiet)
         std::cout << "wrote " << opt.output << " (" << out.patches.size() << " patches, " << out.surfaces.size() << " nets, "
@@ -68,6 +74,7 @@ void registerEditCommand(CLI::App& app, Action& run) {
     cmd->add_option("--run", opt->script, "Script file: one command per line or ';'-separated, '#' starts a comment");
     cmd->add_option("-c,--commands", opt->commands, "Commands, ';'-separated (run after --run)");
     cmd->add_flag("-q,--quiet", opt->quiet, "Print nothing on success");
+    addCadUnitOption(cmd);
     cmd->add_flag(
         "--partial", opt->partial,
         "Take a STEP/IGES file that comes in incomplete (faces skipped) as far as it comes; otherwise such a file is refused (exit 2)");

@@ -52,7 +52,17 @@ std::optional<std::string> outputArgument(CommandContext& ctx, FileDialogKind di
     throw EditError("'" + ctx.word(0) + "' is not a " + names + " file");
 }
 
-void save(CommandContext& ctx, const std::string& path) {
+// `overwrite`: the user chose to replace the file though another program wrote it since it was
+// opened or saved here (a second editor on the same file): without it that save is refused, naming
+// what to do, so that no one's work is discarded silently (issue 73).
+void save(CommandContext& ctx, const std::string& path, bool overwrite = false) {
+    std::error_code ec;
+    const bool same = path == ctx.session.path() || std::filesystem::equivalent(path, ctx.session.path(), ec);
+    if (same && !overwrite && ctx.session.fileChangedOnDisk())
+        throw EditError(path +
+                        " was changed by another program since it was opened or saved here; saving now would discard "
+                        "that work. Save under another name, open it again to see it, or replace it: `save " +
+                        path + " overwrite`");
     ctx.host.write(ctx.session.documentToSave(), path);
     ctx.session.savedTo(path);
     ctx.host.saved(path);
@@ -90,7 +100,7 @@ void execImport(CommandContext& ctx) {
 void execSave(CommandContext& ctx) {
     expectFileWithoutWindow(ctx);
     if (ctx.has(0))
-        save(ctx, ctx.word(0));
+        save(ctx, ctx.word(0), ctx.has(1));
     else if (!ctx.session.path().empty() && saveKeepsEverything(ctx.session.path()))
         save(ctx, ctx.session.path());
     else
@@ -171,8 +181,9 @@ void addFileCommands(CommandTable& t) {
     t.add({.name = "save",
            .label = "Save",
            .menu = "File",
-           .forms = {{}, {path()}},
-           .help = "Save to the document's file (atomic write); untitled or .bpt documents ask for a name",
+           .forms = {{}, {path()}, {path(), choice("MODE", {"overwrite"})}},
+           .help = "Save to the document's file (atomic write); untitled or .bpt documents ask for a name. A file another "
+                   "program wrote since it was opened here is not replaced unless `overwrite` follows its name",
            .bindings = {{"", "", {"Ctrl+S"}}},
            .exec = execSave});
     t.add({.name = "save-as",

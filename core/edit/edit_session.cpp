@@ -47,6 +47,7 @@ void EditSession::reset(Document d, const std::string& path) {
     history_.markSaved();
     forceModified_ = false;
     path_ = path;
+    diskStamp_ = path.empty() ? FileStamp{} : fileStamp(path);
     sel.clear();
     camera = doc.camera;
     ++serial_;
@@ -61,8 +62,10 @@ void EditSession::newDocument() {
 }
 
 std::vector<std::string> EditSession::open(const std::string& path, bool partial) {
-    LoadReport report;  // a Patchwork glTF saves back with its own export options
+    LoadReport report;                        // a Patchwork glTF saves back with its own export options
+    const FileStamp stamp = fileStamp(path);  // before the read: a write during it shows at the next save
     reset(loadDocument(path, &report, partial), path);
+    diskStamp_ = stamp;
     if (report.exportOptions) exportOptions = *report.exportOptions;
     return std::move(report.notes);
 }
@@ -133,9 +136,16 @@ Document EditSession::documentToSave() const {
     return out;
 }
 
+bool EditSession::fileChangedOnDisk() const {
+    if (path_.empty() || !diskStamp_.exists) return false;
+    const FileStamp now = fileStamp(path_);
+    return now.exists && now != diskStamp_;
+}
+
 void EditSession::savedTo(const std::string& path) {
     if (!saveKeepsEverything(path)) return;
     path_ = path;
+    diskStamp_ = fileStamp(path);
     history_.markSaved();
     forceModified_ = false;
 }

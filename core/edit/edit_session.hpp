@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/base/file_io.hpp"
 #include "core/io/gltf_export.hpp"
 #include "core/model/document.hpp"
 #include "core/model/document_merge.hpp"
@@ -101,6 +102,9 @@ public:
     std::vector<std::string> takeNotes() { return std::exchange(notes_, {}); }
 
     bool isModified() const { return history_.isModified() || forceModified_; }
+    // The document's file was written by another program since it was opened or saved here (its
+    // stamp differs; a file since deleted does not count): a save would discard that work.
+    bool fileChangedOnDisk() const;
     void setForceModified(bool on) { forceModified_ = on; }  // e.g. a recovered autosave
     const EditHistory& history() const { return history_; }
 
@@ -114,6 +118,7 @@ private:
     Document committed_;
     EditHistory history_;
     std::string path_;
+    FileStamp diskStamp_;  // of path_ when it was opened or saved here
     uint64_t generation_ = 0, version_ = 0, topologyVersion_ = 0, shapeVersion_ = 0, settingsVersion_ = 0, serial_ = 0;
     bool forceModified_ = false;
     std::vector<std::string> notes_;
