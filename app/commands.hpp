@@ -27,6 +27,10 @@ std::pair<CLI::App*, std::shared_ptr<Options>> addSubcommand(CLI::App& app, Acti
 // decimals only: CLI11 alone reads "0x20" as 32 and "0b11" as 3.
 void requirePlainDecimals(CLI::App& app);
 
+// `--unit mm|cm|m|in` on a command that reads documents: the unit of a STEP file that names no
+// valid length unit (app/cad_unit_option.cpp).
+void addCadUnitOption(CLI::App* cmd);
+
 void registerInfoCommand(CLI::App& app, Action& run);
 void registerExportCommand(CLI::App& app, Action& run);
 void registerConvertCommand(CLI::App& app, Action& run);

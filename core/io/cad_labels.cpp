@@ -20,6 +20,22 @@ std::optional<size_t> cadFaceLabelIndex(std::string_view name, std::string_view 
     return n;
 }
 
+std::string cadSafeName(std::string_view name, size_t maxBytes, bool asciiOnly) {
+    std::string out;
+    for (size_t i = 0; i < name.size();) {
+        const auto c = static_cast<unsigned char>(name[i]);
+        // The length of this UTF-8 character (a stray byte counts as one).
+        size_t len = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 1;
+        if (i + len > name.size()) len = 1;
+        std::string_view ch = name.substr(i, len);
+        std::string piece = c < 0x20 || c == 0x7f ? std::string(" ") : asciiOnly && c >= 0x80 ? std::string("_") : std::string(ch);
+        if (out.size() + piece.size() > maxBytes) break;
+        out += piece;
+        i += len;
+    }
+    return out;
+}
+
 std::string cadPartName(const std::vector<std::string>& itemNames) {
     std::optional<std::string> common;
     for (const std::string& name : itemNames) {

@@ -26,6 +26,13 @@ std::optional<size_t> cadFaceLabelIndex(std::string_view name, std::string_view 
 // that are part of the name ("M8", "bolt M8 0" and "bolt M8 1" → "bolt M8"); empty when there is none.
 std::string cadPartName(const std::vector<std::string>& itemNames);
 
+// A name as a CAD file can hold it (issue 73: a 1 300-character name smashed the stack of
+// OpenCASCADE's IGES writer; 30 000 characters, or 10 000 × "é", gave STEP files nothing could read):
+// control characters (a newline) become spaces; at most `maxBytes` bytes, cut between UTF-8
+// characters; with `asciiOnly` (IGES) every other character becomes '_'.
+inline constexpr size_t kMaxStepNameBytes = 200, kMaxIgesNameBytes = 64;
+std::string cadSafeName(std::string_view name, size_t maxBytes, bool asciiOnly);
+
 // Puts each item with a place at that place and the others, in their order, in the places left.
 // Leaves the order as it is when the places are not distinct and within the items.
 template <class T>

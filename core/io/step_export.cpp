@@ -10,6 +10,7 @@
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <IGESControl_Controller.hxx>
+#include <IGESControl_Reader.hxx>
 #include <IGESControl_Writer.hxx>
 #include <IGESData_GlobalSection.hxx>
 #include <IGESData_IGESModel.hxx>
@@ -18,6 +19,7 @@
 #include <Precision.hxx>
 #include <STEPCAFControl_Writer.hxx>
 #include <STEPConstruct.hxx>
+#include <STEPControl_Reader.hxx>
 #include <STEPControl_Writer.hxx>
 #include <Standard_Failure.hxx>
 #include <StepBasic_Product.hxx>
@@ -48,14 +50,18 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include "core/base/errors.hpp"
 #include "core/base/file_io.hpp"
+#include "core/base/limits.hpp"
 #include "core/base/up_axis.hpp"
 #include "core/eval/bezier_triangle.hpp"
+#include "core/io/bounded_child.hpp"
 #include "core/io/cad_labels.hpp"
 #include "core/io/cad_trim_face.hpp"
 #include "core/io/occt_support.hpp"
@@ -271,7 +277,7 @@ Handle(TDocStd_Document) partsDocument(const std::string& product, const std::ve
     for (size_t k = 0; k < pieces.size(); ++k) {
         const std::string name = pieces[k].name.empty() ? product + " " + std::to_string(k + 1) : pieces[k].name;
         const TDF_Label part = tool->AddShape(pieces[k].shape, false);
-        TDataStd_Name::Set(part, TCollection_ExtendedString(name.c_str(), true));
+        TDataStd_Name::Set(part, TCollection_ExtendedString(cadSafeName(name, kMaxStepNameBytes, false).c_str(), true));
         tool->AddComponent(root, part, TopLoc_Location());
     }
     tool->UpdateAssemblies();
@@ -284,15 +290,18 @@ std::string productName(const Document& doc, const std::string& given) {
 
 }  // namespace
 
-std::string exportStepText(const Document& doc, const StepExportOptions& options, StepExportStats* stats) {
-    const auto held = occt::lock();
+namespace {
+
+// The STEP text, with OCCT's lock held by the caller (in a child process of exportStep, or in
+// exportStepText).
+std::string stepTextHeld(const Document& doc, const StepExportOptions& options, StepExportStats* stats) {
     try {
         CadShape cad = cadShape(doc, "STEP");
         // The schema is read when the writer's model is made: set it first. Lengths are in the
         // document's unit, with no conversion. One product named after the document; when the
         // user named a part (a sewn piece whose items share a name), an assembly of one product per
         // piece under it, through an XCAF document as CAD tools expect (unnamed pieces numbered).
-        const std::string product = productName(doc, options.product);
+        const std::string product = cadSafeName(productName(doc, options.product), kMaxStepNameBytes, false);
         Interface_Static::SetCVal("write.step.schema", options.schema == StepSchema::AP242 ? "AP242DIS" : "AP214IS");
         Interface_Static::SetCVal("write.step.unit", occt::unitName(doc.unit));
         Interface_Static::SetIVal("write.step.assembly", 0);
@@ -332,7 +341,7 @@ std::string exportStepText(const Document& doc, const StepExportOptions& options
         const Handle(Transfer_FinderProcess) finder = writer.WS()->TransferWriter()->FinderProcess();
         for (const auto& [face, name] : cad.namedFaces)
             if (Handle(StepRepr_RepresentationItem) item = STEPConstruct::FindEntity(finder, face); !item.IsNull())
-                item->SetName(new TCollection_HAsciiString(name.c_str()));
+                item->SetName(new TCollection_HAsciiString(cadSafeName(name, kMaxStepNameBytes, false).c_str()));
         {
             APIHeaderSection_MakeHeader header(writer.Model());
             header.SetName(new TCollection_HAsciiString(product.c_str()));
@@ -350,8 +359,7 @@ std::string exportStepText(const Document& doc, const StepExportOptions& options
     }
 }
 
-std::string exportIgesText(const Document& doc, StepExportStats* stats, const std::string& product) {
-    const auto held = occt::lock();
+std::string igesTextHeld(const Document& doc, StepExportStats* stats, const std::string& product) {
     try {
         CadShape cad = cadShape(doc, "IGES");
         // Faces as B-spline surfaces in a manifold solid B-rep (IGES 5.3 BRep mode), in the
@@ -360,7 +368,8 @@ std::string exportIgesText(const Document& doc, StepExportStats* stats, const st
         Interface_Static::SetIVal("write.iges.brep.mode", 1);
         occt::useLengthUnit(doc.unit);
         IGESControl_Writer writer(occt::unitName(doc.unit), 1);
-        writer.Model()->ChangeGlobalSection().SetSendName(new TCollection_HAsciiString(productName(doc, product).c_str()));
+        writer.Model()->ChangeGlobalSection().SetSendName(
+            new TCollection_HAsciiString(cadSafeName(productName(doc, product), kMaxIgesNameBytes, true).c_str()));
         if (!writer.AddShape(cad.shape)) throw std::runtime_error("OpenCASCADE could not transfer the shape to IGES");
         writer.ComputeModel();
         std::ostringstream text;
@@ -373,21 +382,112 @@ std::string exportIgesText(const Document& doc, StepExportStats* stats, const st
     }
 }
 
+// How many faces the file at `path` holds as OpenCASCADE reads it (OCCT's lock held by the caller).
+std::string countFacesHeld(const std::filesystem::path& path, bool iges) {
+    try {
+        TopoDS_Shape shape;
+        if (iges) {
+            IGESControl_Reader reader;
+            if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) return "Eit is not a readable IGES file";
+            if (reader.TransferRoots() == 0) return "Ethe IGES file holds no shape";
+            shape = reader.OneShape();
+        } else {
+            STEPControl_Reader reader;
+            if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) return "Eit is not a readable STEP file";
+            if (reader.TransferRoots() == 0) return "Ethe STEP file holds no shape";
+            shape = reader.OneShape();
+        }
+        TopTools_IndexedMapOfShape faces;
+        TopExp::MapShapes(shape, TopAbs_FACE, faces);
+        return "F" + std::to_string(faces.Extent());
+    } catch (const Standard_Failure& e) {
+        return std::string("EOpenCASCADE failed reading it: ") + e.GetMessageString();
+    }
+}
+
+double cadSeconds(double fallback) {
+    if (const char* s = std::getenv("PATCHWORK_CAD_SECONDS"); s && *s) return std::max(0.001, std::atof(s));
+    return fallback;
+}
+
+// What a child that ended otherwise than with an answer did, in words.
+std::string childFailure(const BoundedResult& r, const char* what, double seconds) {
+    char text[200];
+    switch (r.kind) {
+        case BoundedResult::Kind::TimedOut:
+            std::snprintf(text, sizeof text, "OpenCASCADE did not finish %s within %g s (PATCHWORK_CAD_SECONDS sets the limit)", what,
+                          seconds);
+            return text;
+        case BoundedResult::Kind::OutOfMemory:
+            std::snprintf(text, sizeof text, "OpenCASCADE needed more than %zu MiB %s", limits::kMaxCadImportBytes >> 20, what);
+            return text;
+        case BoundedResult::Kind::Crashed:
+            std::snprintf(text, sizeof text, "OpenCASCADE crashed %s (signal %d); nothing was written", what, r.signal);
+            return text;
+        case BoundedResult::Kind::Done:
+            break;
+    }
+    return {};
+}
+
+}  // namespace
+
+std::string exportStepText(const Document& doc, const StepExportOptions& options, StepExportStats* stats) {
+    const auto held = occt::lock();
+    return stepTextHeld(doc, options, stats);
+}
+
+std::string exportIgesText(const Document& doc, StepExportStats* stats, const std::string& product) {
+    const auto held = occt::lock();
+    return igesTextHeld(doc, stats, product);
+}
+
+// OpenCASCADE's writer runs in a child process (a crash there, as its IGES writer's on a long name,
+// cannot take the program down), and the file it wrote is read back by OpenCASCADE's reader, in
+// another child, with every face, before it replaces anything (issue 73).
 StepExportStats exportStep(const Document& doc, const std::filesystem::path& path, const StepExportOptions& options) {
     const std::string ext = lowerExtension(path);
     const bool iges = ext == ".iges" || ext == ".igs";
     if (!iges && ext != ".step" && ext != ".stp")
         throw OutputError(path.string(), "unknown CAD extension '" + ext + "' (use .step, .stp, .iges or .igs)");
+    checkOutputPath(path);  // a path that cannot be written is refused before the work
+    StepExportOptions named = options;
+    if (named.product.empty() && (doc.name.empty() || doc.name == "untitled")) named.product = path.stem().string();
+    const double seconds = cadSeconds(120.0);
+    const auto held = occt::lock();
+    const BoundedResult written = runBounded(
+        [&]() -> std::string {
+            try {
+                StepExportStats st;
+                std::string text = iges ? igesTextHeld(doc, &st, named.product) : stepTextHeld(doc, named, &st);
+                char head[200];
+                std::snprintf(head, sizeof head, "T%zu %zu %zu %zu %zu %zu %zu %zu\n", st.faces, st.shells, st.solids, st.sharedEdges,
+                              st.freeEdges, st.degenerateEdges, st.bytes, st.parts);
+                return head + text;
+            } catch (const std::exception& e) {
+                return std::string("E") + e.what();
+            }
+        },
+        seconds, limits::kMaxCadImportBytes);
+    if (written.kind != BoundedResult::Kind::Done) throw OutputError(path.string(), childFailure(written, "writing it", seconds));
+    const std::string& out = written.output;
+    if (out.empty() || out[0] != 'T')
+        throw OutputError(path.string(), out.empty() ? std::string("OpenCASCADE wrote nothing") : out.substr(1));
     StepExportStats stats;
-    std::string text;
-    try {
-        StepExportOptions named = options;
-        if (named.product.empty() && (doc.name.empty() || doc.name == "untitled")) named.product = path.stem().string();
-        text = iges ? exportIgesText(doc, &stats, named.product) : exportStepText(doc, named, &stats);
-    } catch (const std::runtime_error& e) {
-        throw OutputError(path.string(), e.what());
-    }
-    writeFileAtomic(path, text);
+    const size_t eol = out.find('\n');
+    std::sscanf(out.c_str() + 1, "%zu %zu %zu %zu %zu %zu %zu %zu", &stats.faces, &stats.shells, &stats.solids, &stats.sharedEdges,
+                &stats.freeEdges, &stats.degenerateEdges, &stats.bytes, &stats.parts);
+    const std::string_view text = std::string_view(out).substr(eol == std::string::npos ? out.size() : eol + 1);
+    writeFileAtomic(path, text, [&](const std::filesystem::path& staged) {
+        const BoundedResult read = runBounded([&] { return countFacesHeld(staged, iges); }, seconds, limits::kMaxCadImportBytes);
+        if (read.kind != BoundedResult::Kind::Done) throw InputError(path.string(), childFailure(read, "reading it back", seconds));
+        if (read.output.empty() || read.output[0] != 'F')
+            throw InputError(path.string(), read.output.empty() ? "no answer" : read.output.substr(1));
+        const size_t faces = size_t(std::atoll(read.output.c_str() + 1));
+        if (faces != stats.faces)
+            throw InputError(path.string(),
+                             "OpenCASCADE reads " + std::to_string(faces) + " of its " + std::to_string(stats.faces) + " faces");
+    });
     return stats;
 }
 

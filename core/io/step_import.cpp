@@ -146,18 +146,39 @@ std::variant<Handle(Geom_BSplineSurface), std::string> faceSurface(const FaceBSp
     return bs;
 }
 
+std::optional<LengthUnit> g_assumedUnit;  // assumeCadUnit
+
 // The file's length unit where it is one of a document's (millimetre, centimetre, metre, inch);
-// metres otherwise (OpenCASCADE converts the coordinates).
-LengthUnit fileUnit(STEPControl_Reader& reader) {
+// otherwise the unit assumed by `--unit` (with a note), or refused naming what the file says.
+LengthUnit fileUnit(STEPControl_Reader& reader, const std::filesystem::path& path, std::string& note) {
     TColStd_SequenceOfAsciiString lengths, angles, solidAngles;
     reader.FileUnits(lengths, angles, solidAngles);
-    if (lengths.Length() != 1) return LengthUnit::Metre;  // none, or different units in different parts
-    TCollection_AsciiString name = lengths.First();
-    name.LowerCase();
-    if (name == "millimetre" || name == "millimeter") return LengthUnit::Millimetre;
-    if (name == "centimetre" || name == "centimeter") return LengthUnit::Centimetre;
-    if (name.Search("inch") == 1) return LengthUnit::Inch;
-    return LengthUnit::Metre;
+    std::string problem;
+    std::optional<LengthUnit> unit;
+    for (int i = 1; i <= lengths.Length(); ++i) {
+        TCollection_AsciiString name = lengths.Value(i);
+        name.LowerCase();
+        std::optional<LengthUnit> u;
+        if (name == "millimetre" || name == "millimeter") u = LengthUnit::Millimetre;
+        if (name == "centimetre" || name == "centimeter") u = LengthUnit::Centimetre;
+        if (name == "metre" || name == "meter") u = LengthUnit::Metre;
+        if (name.Search("inch") == 1) u = LengthUnit::Inch;
+        if (!u) {
+            problem = "its length unit '" + std::string(lengths.Value(i).ToCString()) + "' is not one Patchwork reads (mm, cm, m, in)";
+            break;
+        }
+        if (unit && *unit != *u) {
+            problem = "it names different length units in different parts";
+            break;
+        }
+        unit = u;
+    }
+    if (!unit && problem.empty()) problem = "it names no length unit";
+    if (problem.empty()) return *unit;
+    if (!g_assumedUnit)
+        throw InputError(path.string(), problem + ", so millimetres cannot be told from metres; give the unit with --unit mm|cm|m|in");
+    note = "read in " + std::string(lengthUnitName(*g_assumedUnit)) + " as --unit says: " + problem;
+    return *g_assumedUnit;
 }
 
 // The names of the file's faces (ADVANCED_FACE('lid', ...)), by the shape each became, whatever
@@ -268,6 +289,7 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
     std::vector<NetFace> netFaces;                   // faces that may come back as nets
     std::vector<std::optional<size_t>> patchPlaces;  // a patch's place when its face is labelled "patch N"
     std::vector<std::optional<size_t>> trianglePlaces;
+    std::string unitNote;  // the unit came from --unit
     try {
         TopoDS_Shape shape;
         FaceNames faceNames;
@@ -277,7 +299,7 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
             if (reader.ReadStream(path.filename().string().c_str(), in) != IFSelect_RetDone)
                 throw InputError(path.string(), "not a readable STEP file (OpenCASCADE could not parse it)");
             // Coordinates come in the file's own length unit, which becomes the document's.
-            doc.unit = fileUnit(reader);
+            doc.unit = fileUnit(reader, path, unitNote);
             reader.StepModel()->SetLocalLengthUnit(occt::useLengthUnit(doc.unit));
             if (reader.TransferRoots() == 0) throw InputError(path.string(), "the STEP file holds no shape");
             shape = reader.OneShape();
@@ -454,6 +476,7 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
     doc.name = path.stem().string();
     doc.camera.zUp = true;  // CAD systems are Z-up
     doc.camera = frameBounds(doc.camera, box, 1.0);
+    if (!unitNote.empty()) rep.notes.push_back(unitNote);
     if (report) *report = rep;
     return doc;
 }
@@ -478,6 +501,8 @@ std::string encodeResult(const std::filesystem::path& path, bool step, const std
 }
 
 }  // namespace
+
+void assumeCadUnit(std::optional<LengthUnit> unit) { g_assumedUnit = unit; }
 
 std::string CadImportReport::skippedSummary() const {
     if (importedFaces >= faces) return {};

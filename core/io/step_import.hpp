@@ -9,6 +9,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,12 @@ struct CadImportReport {
 };
 
 Document importCadSurfaces(const std::filesystem::path& path, CadImportReport* report = nullptr);
+
+// A STEP file that names no valid length unit (none, several different ones, or one Patchwork does
+// not know) is refused, since millimetres cannot be told from metres (issue 73: such files were
+// read as metres, an mm part 1 000× too large). With a unit assumed here (the commands' `--unit`)
+// it is read in that unit and a note says so. Process-wide; nullopt (the default) refuses.
+void assumeCadUnit(std::optional<LengthUnit> unit);
 
 }  // namespace io
 }  // namespace pw
