@@ -5,17 +5,20 @@
 # validation message, memory growth, or a broken invariant after the run (a join out of tolerance,
 # a saved file that does not reopen or changes when saved again). Each failure prints its seed and
 # the actions that led to it (a file that `monkey.py --replay` plays again).
-# Usage: editor_monkey_e2e.sh PATCHWORK_BINARY DATA_DIR WORK_DIR [SECONDS_PER_RUN] [SEEDS]
-#   SECONDS_PER_RUN: random input per example and seed (default 4: the ctest form, about 60 s of
-#   input over the examples); SEEDS: how many seeds per example (default 1), counted from
-#   MONKEY_SEED (default: the day of the year, printed, so that a failure names its seed).
+# Usage: editor_monkey_e2e.sh PATCHWORK_BINARY DATA_DIR WORK_DIR [SECONDS_PER_RUN] [SEEDS] [EXAMPLES]
+#   SECONDS_PER_RUN: random input per example and seed (default 12); SEEDS: how many seeds per
+#   example (default 1), counted from MONKEY_SEED (default: the day of the year, printed, so that a
+#   failure names its seed); EXAMPLES: how many of the examples each seed visits (default all),
+#   taken in turn from the seed on, so that the ctest form (5 examples × 12 s, about 60 s of input)
+#   covers every example within a few days.
 # scripts/monkey.sh MINUTES runs the long form.
 set -euo pipefail
 BIN=$(realpath "$1")
 DATA=$(realpath "$2")
 WORK=$3
-SECONDS_PER_RUN=${4:-4}
+SECONDS_PER_RUN=${4:-12}
 SEEDS=${5:-1}
+EXAMPLES=${6:-0}
 rm -rf "$WORK"
 mkdir -p "$WORK"
 WORK=$(realpath "$WORK")
@@ -29,7 +32,11 @@ for s in $(seq 0 $((SEEDS - 1))); do
     run="$WORK/seed-$seed"
     mkdir -p "$run/state"
     docs=()
-    for doc in "$DATA"/*.patchwork "$DATA"/teapot.bpt; do
+    all=("$DATA"/*.patchwork "$DATA"/teapot.bpt)
+    count=${#all[@]}
+    take=$([ "$EXAMPLES" -gt 0 ] && [ "$EXAMPLES" -lt "$count" ] && echo "$EXAMPLES" || echo "$count")
+    for k in $(seq 0 $((take - 1))); do
+        doc=${all[$(((seed * take + k) % count))]}
         cp "$doc" "$run/"
         docs+=("$run/$(basename "$doc")")
     done
@@ -41,4 +48,4 @@ for s in $(seq 0 $((SEEDS - 1))); do
     fi
 done
 [ "$FAILED" = 0 ] || fail "random input found faults with $FAILED of $SEEDS seeds (seeds and actions above)"
-say "PASS: ${#docs[@]} examples x $SEEDS seeds"
+say "PASS: ${#docs[@]} examples x $SEEDS seeds, $SECONDS_PER_RUN s each"

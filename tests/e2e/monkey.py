@@ -76,6 +76,13 @@ class Monkey:
     def start(self):
         if os.path.exists(self.trace_path):
             os.remove(self.trace_path)
+        # A start after a killed editor would offer its autosave for recovery (a modal): the
+        # harness removes it (recovery has its own tests).
+        state = os.path.join(os.environ.get("XDG_STATE_HOME", ""), "patchwork")
+        if os.path.isdir(state):
+            for f in os.listdir(state):
+                if f.startswith("autosave-"):
+                    os.remove(os.path.join(state, f))
         with open(self.err_path, "a") as err:
             self.proc = subprocess.Popen([self.a.bin, self.doc], cwd=self.a.work, stdout=subprocess.DEVNULL,
                                          stderr=err)
@@ -196,10 +203,20 @@ class Monkey:
             self.xdo("mousemove", "--sync", x, y)
             self.xdo("click", "--repeat", n, "--delay", 30, button)
         elif kind == "palette":
+            # Typing goes to the palette only once it is open: on a slow frame (a heavy document on
+            # lavapipe) keys sent earlier reach the view as shortcuts.
             self.xdo("key", "F3")
-            time.sleep(0.25)
-            self.xdo("type", "--delay", 15, args[0])
+            t0 = time.time()
+            while time.time() - t0 < 10:
+                t = self.trace() or {}
+                if t.get("palette") and t.get("modal") == "palette":
+                    break
+                time.sleep(0.05)
+            else:
+                return  # a modal or the lesson kept it closed: the action is a key press only
             time.sleep(0.1)
+            self.xdo("type", "--delay", 15, args[0])
+            time.sleep(0.2)
             self.xdo("key", "Return")
 
     def describe(self, i, pause, kind, args):
@@ -233,6 +250,9 @@ class Monkey:
         return failed
 
     def report(self, e):
+        shot = os.path.join(self.a.work, f"failure-{os.path.basename(self.doc)}-{self.a.seed}.png")
+        if shutil.which("import") and subprocess.run(["import", "-window", "root", shot], capture_output=True).returncode == 0:
+            print(f"monkey: screenshot {shot}")
         log = os.path.join(self.a.work, f"actions-{os.path.basename(self.doc)}-{self.a.seed}.jsonl")
         with open(log, "w") as f:
             for act in self.actions:
@@ -319,14 +339,16 @@ class Monkey:
         self.close_dialogs()
         self.play("palette", [f"save {out}"])
         t0 = time.time()
-        while not os.path.exists(out) and time.time() - t0 < 30:
+        while not os.path.exists(out) and time.time() - t0 < 60:
             self.check_alive("saving")
             t = self.trace() or {}
             if t.get("error"):
                 raise Fault(f"the document could not be saved: {t['error']}")
             time.sleep(0.2)
         if not os.path.exists(out):
-            raise Fault("the palette's save wrote nothing in 30 s")
+            t = self.trace() or {}
+            raise Fault(f"the palette's save wrote nothing in 60 s (modal {t.get('modal')!r}, palette {t.get('palette')!r}, "
+                        f"mode {t.get('mode')!r}, lesson {t.get('lesson')!r})")
         info = subprocess.run([self.a.bin, "info", out], capture_output=True, text=True)
         if info.returncode != 0:
             raise Fault(f"the saved document does not reopen:\n{info.stdout}{info.stderr}")
