@@ -140,6 +140,13 @@ class Monkey:
             raise Fault(f"memory grew from {self.baseline_rss:.0f} MB to {rss:.0f} MB")
 
     # --- actions ------------------------------------------------------------------------------
+    def move(self, x, y):
+        # `mousemove --sync` waits for the pointer to move: to where it already is, it waits ~15 s.
+        if (x, y) == getattr(self, "mouse", None):
+            return
+        self.mouse = (x, y)
+        self.xdo("mousemove", "--sync", x, y)
+
     def xdo(self, *args):
         subprocess.run(["xdotool", *map(str, args)], check=False, stdout=subprocess.DEVNULL,
                        stderr=subprocess.DEVNULL)
@@ -180,7 +187,7 @@ class Monkey:
             self.xdo("key", "--clearmodifiers", args[0])
         elif kind == "click":
             x, y, button, mods = args
-            self.xdo("mousemove", "--sync", x, y)
+            self.move(x, y)
             if mods:
                 self.xdo("keydown", mods)
             self.xdo("click", button)
@@ -188,26 +195,27 @@ class Monkey:
                 self.xdo("keyup", mods)
         elif kind == "drag":
             x0, y0, x1, y1, button, mods = args
-            self.xdo("mousemove", "--sync", x0, y0)
+            self.move(x0, y0)
             if mods:
                 self.xdo("keydown", mods)
             self.xdo("mousedown", button)
             for i in range(1, 9):
                 time.sleep(0.02)
                 self.xdo("mousemove", x0 + (x1 - x0) * i // 8, y0 + (y1 - y0) * i // 8)
+            self.mouse = (x1, y1)
             self.xdo("mouseup", button)
             if mods:
                 self.xdo("keyup", mods)
         elif kind == "wheel":
             x, y, button, n = args
-            self.xdo("mousemove", "--sync", x, y)
+            self.move(x, y)
             self.xdo("click", "--repeat", n, "--delay", 30, button)
         elif kind == "palette":
             # Typing goes to the palette only once it is open: on a slow frame (a heavy document on
             # lavapipe) keys sent earlier reach the view as shortcuts.
             self.xdo("key", "F3")
             t0 = time.time()
-            while time.time() - t0 < 10:
+            while time.time() - t0 < 3:
                 t = self.trace() or {}
                 if t.get("palette") and t.get("modal") == "palette":
                     break
@@ -300,13 +308,16 @@ class Monkey:
                 kind, args = self.random_action()
             self.actions.append((pause, kind, args))
             time.sleep(pause)
+            t_start = time.time()
             what = self.describe(i, pause, kind, args).strip()
             t0 = self.trace() or {}
             self.check_alive("before " + what)
             self.play(kind, args)
-            self.xdo("mousemove", "--sync", 2 + i % 3, 2)  # an event, so that a frame follows
+            self.move(2 + i % 3, 2)  # an event, so that a frame follows
             t = self.wait_frame(t0.get("frame", 0), what)
             self.check(t, what)
+            if os.environ.get("MONKEY_VERBOSE"):
+                print(f"  {time.time() - t_start:6.1f}s {what}", flush=True)
             i += 1
         self.finish()
 
