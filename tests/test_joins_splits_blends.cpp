@@ -261,7 +261,7 @@ TEST(Blends, BadBlendsAreRefusedAndChangeNothing) {
     test::runEditScript(s, "add-patch; cursor 3 0 1; add-patch; add-curve; select patch 0; extrude u0");
     const Document before = s.doc;
     for (const char* bad : {"blend 0:u1 1:u0 G3", "blend 0:u1 1:u0 C1", "blend 0:u1 0:u1 G1", "blend 0:u1 c0 G1", "blend 0:u1 9:u0 G1",
-                            "blend 0:u1", "blend 0:u0 1:u0 G1"}) {
+                            "blend 0:u1", "blend 0:u0 1:u0 G1", "blend 1:u1 1:v0 G1", "blend 1:v1 1:v1 G2"}) {
         EXPECT_TRUE(refused(s, bad)) << bad;
         EXPECT_EQ(s.doc, before) << bad;
     }

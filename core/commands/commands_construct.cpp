@@ -200,6 +200,14 @@ void execBlend(CommandContext& ctx) {
     for (const CurveInput& in : c.inputs)
         if (findJoin(ctx.session.doc, in.patch, in.edge) >= 0)
             throw EditError("edge " + curveInputName(in) + " is joined already; a blend bridges two open edges");
+    // Two edges of one patch that meet at its corner (u0 and v1, say): the bridge between them
+    // would fold over that corner (issue 73's random edits made one). An edge and itself likewise.
+    const CurveInput &a = c.inputs[0], &b = c.inputs[1];
+    const auto across = [](Edge e) { return (static_cast<int>(e) & 1) == 0; };  // u0 and u1 face each other, v0 and v1
+    if (a.patch == b.patch && (a.edge == b.edge || across(a.edge) != across(b.edge)))
+        throw EditError("edges " + curveInputName(a) + " and " + curveInputName(b) +
+                        (a.edge == b.edge ? " are the same edge" : " meet at a corner of their patch") +
+                        "; a blend between them would fold over itself. Blend edges of two patches, or opposite edges of one");
     chooseBlendAlphas(ctx.session.doc, c);
     construct(ctx, std::move(c), "Blend");
 }
