@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cmath>
@@ -19,6 +20,7 @@
 #include <iostream>
 #include <mutex>
 #include <stdexcept>
+#include <string_view>
 #include <vector>
 
 namespace pw::test {
@@ -148,6 +150,14 @@ RunResult runCommand(const std::string& shellCommand) {
 void runEditScript(EditSession& session, const std::string& script) {
     NoWritesHost host;
     makeCommandTable().runScript(session, host, script, "test");
+}
+
+void runCommands(const CommandTable& table, EditSession& session, CommandHost& host, const std::string& line) {
+    for (size_t start = 0; start < line.size();) {
+        const size_t end = std::min(line.find("; ", start), line.size());
+        table.run(session, host, std::string_view(line).substr(start, end - start));
+        start = end + 2;
+    }
 }
 
 namespace {

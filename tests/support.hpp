@@ -39,6 +39,10 @@ public:
 };
 // Runs `script` (';'-separated commands) on the session through the command table, as `patchwork edit` does.
 void runEditScript(EditSession& session, const std::string& script);
+// Runs "a; b; …" one command after another through `table` with `host`, letting each command's own
+// EditError out (runEditScript wraps failures in the script's InputError); the first refusal stops
+// the rest.
+void runCommands(const CommandTable& table, EditSession& session, CommandHost& host, const std::string& line);
 
 // The point of Bézier patch p at (u, v), and of curve c at parameter t of segment `seg`, both
 // rational where weighted (tests of surfaces built from curves compare the two).

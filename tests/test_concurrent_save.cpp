@@ -3,9 +3,6 @@
 // program wrote since is refused, naming what to do, and goes ahead with `overwrite`.
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <string_view>
-
 #include "core/base/errors.hpp"
 #include "core/commands/command_table.hpp"
 #include "core/construct/model_builders.hpp"
@@ -26,11 +23,7 @@ public:
 void run(EditSession& s, const std::string& line) {
     static const CommandTable table = makeCommandTable();
     WritingHost host;
-    for (size_t start = 0; start < line.size();) {  // "a; b": one command after another
-        const size_t end = std::min(line.find("; ", start), line.size());
-        table.run(s, host, std::string_view(line).substr(start, end - start));
-        start = end + 2;
-    }
+    test::runCommands(table, s, host, line);
 }
 
 }  // namespace

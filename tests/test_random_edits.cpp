@@ -157,18 +157,11 @@ void runRandomScripts(const std::string& example) {
             const std::string line = fill(kTemplates[rng() % std::size(kTemplates)], rng, s.doc);
             script.commands.push_back(line);
             const Document before = s.doc;
-            bool refused = false;
-            size_t start = 0;
-            while (!refused && start <= line.size()) {
-                const size_t end = std::min(line.find("; ", start), line.size());
-                try {
-                    table.run(s, host, std::string_view(line).substr(start, end - start));
-                } catch (const EditError&) {
-                    refused = true;  // a refusal is fine; anything else fails the test
-                }
-                start = end + 2;
+            try {
+                test::runCommands(table, s, host, line);
+            } catch (const EditError&) {
+                continue;  // a refusal is fine; anything else fails the test
             }
-            if (refused) continue;
             const std::string where = example + " seed " + std::to_string(seed) + ": patchwork edit data/" + example + " -c '" +
                                       script.text(script.commands.size() - 1) + "'";
             const std::vector<std::string> off = joinsOut(s.doc);

@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
-#include <fstream>
 #include <random>
 
 #include "core/base/errors.hpp"
@@ -157,7 +156,6 @@ OutputTarget checkOutputPath(const std::filesystem::path& path) {
         t.mode = st.st_mode & 07777;
         t.uid = st.st_uid;
         t.gid = st.st_gid;
-        t.links = st.st_nlink;
     }
     if (::access(dir.c_str(), W_OK | X_OK) != 0) throw OutputError(name, "cannot write in " + dir.string() + ": " + std::strerror(errno));
     return t;
@@ -203,7 +201,6 @@ void OutputBatch::stage(const std::filesystem::path& path, const std::vector<std
 }
 
 void OutputBatch::commit() {
-    std::error_code ec;
     for (const Staged& s : staged_) {
         // A file with other hard links is replaced like any other: the other names keep the old
         // file. Rewriting it in place would keep them on it, but a kill in the middle left every

@@ -31,7 +31,6 @@ struct OutputTarget {
     std::filesystem::path requested, path;  // as given; after symlinks
     bool exists = false;
     unsigned mode = 0, uid = 0, gid = 0;  // of the existing file, kept by the new one
-    unsigned long links = 1;              // hard links of the existing file
 };
 OutputTarget checkOutputPath(const std::filesystem::path& path);
 

@@ -5,6 +5,7 @@
 
 #include "core/base/errors.hpp"
 #include "core/construct/construction_nets.hpp"
+#include "core/model/basis.hpp"
 #include "core/model/construction_refs.hpp"
 
 namespace pw {
@@ -20,6 +21,12 @@ namespace {
 // surface would turn inside out where it passes, folding over itself (issue 73; CAD tools refuse
 // such a profile too). Sampled along the curve in the plane of the axis and the profile's farthest
 // point; throws naming the place it crosses.
+std::string pointText(const Vec3& p) {
+    char text[160];
+    std::snprintf(text, sizeof text, "(%.6g, %.6g, %.6g)", p.x, p.y, p.z);
+    return text;
+}
+
 void refuseAxisCrossing(const CurveShape& profile, const Vec3& o, const Vec3& a, double size) {
     const size_t n = profile.points.size();
     if (n < 4) return;
@@ -38,40 +45,33 @@ void refuseAxisCrossing(const CurveShape& profile, const Vec3& o, const Vec3& a,
     double lastS = 0.0;
     for (size_t sgm = 0; sgm < segments; ++sgm)
         for (int k = 0; k <= kSteps; ++k) {
-            const double t = double(k) / kSteps, u = 1.0 - t;
-            const double b[4] = {u * u * u, 3 * u * u * t, 3 * u * t * t, t * t * t};
-            HPoint h(0.0);
-            for (int i = 0; i < 4; ++i) h += b[i] * profile.points[(3 * sgm + size_t(i)) % n];
+            const BasisWeights b = bernsteinWeights(double(k) / kSteps, double(kSteps - k) / kSteps);
+            HPoint h(0.0), d(0.0);
+            for (int i = 0; i < 4; ++i) {
+                h += b.w[i] * profile.points[(3 * sgm + size_t(i)) % n];
+                d += b.dw[i] * profile.points[(3 * sgm + size_t(i)) % n];
+            }
             const Vec3 p = euclidean(h), r = p - o - glm::dot(p - o, a) * a;
             // Where the profile runs along its circle of revolution (its tangent has no part in the
             // plane of the axis) the surface has no tangent plane: it folds onto itself there.
-            HPoint d(0.0);
-            const double db[4] = {-3 * u * u, 3 * u * u - 6 * u * t, 6 * u * t - 3 * t * t, 3 * t * t};
-            for (int i = 0; i < 4; ++i) d += db[i] * profile.points[(3 * sgm + size_t(i)) % n];
             const Vec3 tangent = (Vec3(d) - double(d.w) * p) / double(h.w);
             const double rl = glm::length(r);
             if (rl > 1e-6 * (1.0 + size) && glm::length(tangent) > 0.0) {
                 const Vec3 round = glm::cross(a, r / rl);
                 const Vec3 meridian = tangent - glm::dot(tangent, round) * round;
-                if (glm::length(meridian) <= 1e-6 * glm::length(tangent)) {
-                    char where[160];
-                    std::snprintf(where, sizeof where, "(%.6g, %.6g, %.6g)", p.x, p.y, p.z);
-                    throw EditError(std::string("the profile runs round the axis at ") + where +
+                if (glm::length(meridian) <= 1e-6 * glm::length(tangent))
+                    throw EditError("the profile runs round the axis at " + pointText(p) +
                                     " (along the circle it would be turned on); its revolve would fold onto itself there");
-                }
             }
             const double s = glm::dot(r, e);
             const int sign = s > eps ? 1 : s < -eps ? -1 : 0;
             if (sign != 0 && lastSign != 0 && sign != lastSign) {
                 const Vec3 at = lastPoint + (p - lastPoint) * (lastS / (lastS - s));
                 const Vec3 off = at - o - glm::dot(at - o, a) * a;
-                if (glm::length(off) <= 0.01 * far + eps) {
-                    char where[160];
-                    std::snprintf(where, sizeof where, "(%.6g, %.6g, %.6g)", at.x, at.y, at.z);
-                    throw EditError(std::string("the profile crosses the axis at ") + where +
+                if (glm::length(off) <= 0.01 * far + eps)
+                    throw EditError("the profile crosses the axis at " + pointText(at) +
                                     "; its revolve would turn inside out there. Keep the profile on one side of the axis "
                                     "(it may end on it)");
-                }
             }
             if (sign != 0) lastSign = sign, lastS = s, lastPoint = p;
         }

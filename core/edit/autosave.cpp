@@ -47,6 +47,13 @@ bool isPrivateDirectory(const fs::path& dir) {
     return ::lstat(dir.c_str(), &st) == 0 && S_ISDIR(st.st_mode) && st.st_uid == ::geteuid() && (st.st_mode & 077) == 0;
 }
 
+std::string autosaveNote(const std::string& originalPath, int pid, const std::string& name, bool emergency) {
+    const long long now = std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+    nlohmann::json j{{"original", originalPath}, {"pid", pid}, {"savedAt", now}, {"name", name}};
+    if (emergency) j["emergency"] = true;
+    return j.dump(2);
+}
+
 Autosaver::Autosaver(fs::path dir, int pid) : dir_(std::move(dir)), pid_(pid ? pid : int(::getpid())) {
     doc_ = dir_ / ("autosave-" + std::to_string(pid_) + ".patchwork");
     note_ = dir_ / ("autosave-" + std::to_string(pid_) + ".json");
@@ -55,9 +62,7 @@ Autosaver::Autosaver(fs::path dir, int pid) : dir_(std::move(dir)), pid_(pid ? p
 void Autosaver::save(const Document& doc, const std::string& originalPath) {
     ensurePrivateDirectory(dir_);
     saveDocument(doc, doc_);
-    const long long now = std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count();
-    nlohmann::json j{{"original", originalPath}, {"pid", pid_}, {"savedAt", now}, {"name", doc.name}};
-    writeFileAtomic(note_, j.dump(2));
+    writeFileAtomic(note_, autosaveNote(originalPath, pid_, doc.name));
     // This autosave holds the adopted (recovered) work now.
     if (adopted_) removeAutosave(*adopted_);
     adopted_.reset();

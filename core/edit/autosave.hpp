@@ -43,6 +43,11 @@ private:
     std::optional<AutosaveEntry> adopted_;
 };
 
+// The JSON note beside an autosave, as findRecoverableAutosaves reads it: the file the user was
+// editing, the process, the time now and the document's name; `emergency` marks one written by
+// the emergency save (core/edit/emergency_save.hpp).
+std::string autosaveNote(const std::string& originalPath, int pid, const std::string& name, bool emergency = false);
+
 // Creates `dir` as a folder only this user can enter (0700), or checks an existing one: a real
 // folder owned by this user, made private if it is not. Throws OutputError naming it otherwise.
 void ensurePrivateDirectory(const std::filesystem::path& dir);

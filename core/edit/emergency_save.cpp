@@ -3,12 +3,11 @@
 #include <fcntl.h>
 #include <unistd.h>
 #include <atomic>
-#include <chrono>
 #include <csignal>
 #include <cstring>
-#include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "core/edit/autosave.hpp"
 #include "core/io/patchwork_format.hpp"
 
 namespace pw {
@@ -156,15 +155,7 @@ void EmergencySave::work() {
         if (job.doc) {
             try {
                 next.document = serializeDocument(*job.doc);
-                const long long now =
-                    std::chrono::duration_cast<std::chrono::seconds>(std::chrono::system_clock::now().time_since_epoch()).count();
-                next.note = nlohmann::json{
-                    {"original", job.original},
-                    {"pid", int(::getpid())},
-                    {"savedAt", now},
-                    {"name", job.doc->name},
-                    {"emergency",
-                     true}}.dump(2);
+                next.note = autosaveNote(job.original, int(::getpid()), job.doc->name, true);
                 next.empty = false;
             } catch (...) {
                 next.empty = true;  // not serialisable: the previous autosave stays the recovery

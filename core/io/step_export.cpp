@@ -65,6 +65,7 @@
 #include "core/io/cad_labels.hpp"
 #include "core/io/cad_trim_face.hpp"
 #include "core/io/occt_support.hpp"
+#include "core/io/step_import.hpp"
 #include "core/ops/net_ops.hpp"
 
 namespace pw {
@@ -405,11 +406,6 @@ std::string countFacesHeld(const std::filesystem::path& path, bool iges) {
     }
 }
 
-double cadSeconds(double fallback) {
-    if (const char* s = std::getenv("PATCHWORK_CAD_SECONDS"); s && *s) return std::max(0.001, std::atof(s));
-    return fallback;
-}
-
 // What a child that ended otherwise than with an answer did, in words.
 std::string childFailure(const BoundedResult& r, const char* what, double seconds) {
     char text[200];
@@ -453,7 +449,7 @@ StepExportStats exportStep(const Document& doc, const std::filesystem::path& pat
     checkOutputPath(path);  // a path that cannot be written is refused before the work
     StepExportOptions named = options;
     if (named.product.empty() && (doc.name.empty() || doc.name == "untitled")) named.product = path.stem().string();
-    const double seconds = cadSeconds(120.0);
+    const double seconds = cadSecondsLimit(120.0);
     const auto held = occt::lock();
     const BoundedResult written = runBounded(
         [&]() -> std::string {

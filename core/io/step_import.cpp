@@ -504,6 +504,11 @@ std::string encodeResult(const std::filesystem::path& path, bool step, const std
 
 void assumeCadUnit(std::optional<LengthUnit> unit) { g_assumedUnit = unit; }
 
+double cadSecondsLimit(double fallback) {
+    if (const char* s = std::getenv("PATCHWORK_CAD_SECONDS"); s && *s) return std::max(0.001, std::atof(s));
+    return fallback;
+}
+
 std::string CadImportReport::skippedSummary() const {
     if (importedFaces >= faces) return {};
     char share[64] = "";
@@ -517,8 +522,7 @@ Document importCadSurfaces(const std::filesystem::path& path, CadImportReport* r
     if (!step && ext != ".iges" && ext != ".igs") throw InputError(path.string(), "not a STEP (.step, .stp) or IGES (.iges, .igs) file");
     const std::string bytes = readFileLimited(path);  // size limit and a clear error for a missing file
     checkCadValues(path.string(), bytes, step);       // non-finite, huge and overlong values, before OpenCASCADE
-    double seconds = limits::kMaxCadImportSeconds;
-    if (const char* s = std::getenv("PATCHWORK_CAD_SECONDS")) seconds = std::max(0.001, std::atof(s));
+    const double seconds = cadSecondsLimit(limits::kMaxCadImportSeconds);
     const auto held = occt::lock();
     const BoundedResult r = runBounded([&] { return encodeResult(path, step, bytes); }, seconds, limits::kMaxCadImportBytes);
     char budget[64];

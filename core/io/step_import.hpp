@@ -30,6 +30,10 @@ struct CadImportReport {
 
 Document importCadSurfaces(const std::filesystem::path& path, CadImportReport* report = nullptr);
 
+// The wall time OpenCASCADE may take in a child process: PATCHWORK_CAD_SECONDS when set and not empty (at least
+// 1 ms), else `fallback` (imports: limits::kMaxCadImportSeconds; exports take longer).
+double cadSecondsLimit(double fallback);
+
 // A STEP file that names no valid length unit (none, several different ones, or one Patchwork does
 // not know) is refused, since millimetres cannot be told from metres (issue 73: such files were
 // read as metres, an mm part 1 000× too large). With a unit assumed here (the commands' `--unit`)
