@@ -25,9 +25,9 @@ endfunction()
 # headers most of their sources include, compiled once by the first library with sources
 # (core/base) and reused by every other one, as the tests reuse one for GoogleTest. On in the
 # sanitizer build (scripts/sanitize.sh: a unity build, which already hides a missing include),
-# off in the Release build, which compiles one file at a time so that every file must include
-# what it uses, and where GCC 12 raises its -Warray-bounds false positives in libstdc++ through
-# the precompiled header. docs/PERFORMANCE.md has the build times with and without.
+# off in the Release build, where GCC 12 raises its -Warray-bounds false positives in libstdc++
+# through the precompiled header (and a PATCHWORK_UNITY=OFF build, one file at a time, checks
+# that every file includes what it uses). docs/PERFORMANCE.md has the build times with and without.
 option(PATCHWORK_PCH "Precompiled headers for the product libraries" OFF)
 function(patchwork_precompiled_headers target)
   if(NOT PATCHWORK_PCH)

@@ -19,8 +19,8 @@ mkdir -p "$build"
 # -O1 -g1: fast to build, line numbers in every report. A unity build (each library's sources
 # compiled a few at a time as one file, CMAKE_UNITY_BUILD) parses the headers once per batch rather
 # than once per file: the sanitizer build is always a fresh build on CI; the product libraries
-# share one precompiled header too (PATCHWORK_PCH). The Release build stays one file at a time,
-# which also checks that every file includes what it uses.
+# share one precompiled header too (PATCHWORK_PCH). A fresh Release build is a unity build too
+# (scripts/build.sh); PATCHWORK_UNITY=OFF builds one file at a time, which checks every include.
 if [[ "${1:-}" != "--test-only" ]] && ! { CXX=clang++ cmake -S "$root" -B "$build" -DPATCHWORK_SANITIZE=ON -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -g1" \
          -DPATCHWORK_BUILD_BENCH=OFF -DCMAKE_UNITY_BUILD=ON -DPATCHWORK_PCH=ON && cmake --build "$build" -j "$jobs" $targets; } >"$log" 2>&1; then
   tail -n 60 "$log" >&2

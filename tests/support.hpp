@@ -11,6 +11,20 @@
 
 namespace pw::test {
 
+// True in the AddressSanitizer build (scripts/sanitize.sh). Sweeps whose time goes to lavapipe take
+// a sample there: the Release pass checks every value, the sanitizer pass looks for memory errors.
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr bool kSanitized = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+inline constexpr bool kSanitized = true;
+#else
+inline constexpr bool kSanitized = false;
+#endif
+#else
+inline constexpr bool kSanitized = false;
+#endif
+
 std::filesystem::path dataDir();                             // the repository's data/ (tea set)
 std::filesystem::path testsDir();                            // the repository's tests/
 std::filesystem::path patchworkBinary();                     // the built `patchwork`
