@@ -254,11 +254,11 @@ int runBench(const BenchArgs& a) {
         }
         const Document doc = sc.make();
         const std::shared_ptr<const HeightMap> map = sc.path.empty() ? nullptr : loadDocumentHeightMap(doc, sc.path);
-        renderer.setDocument(doc, map);
         if (!warmed) {  // every pipeline variant once, so no measured frame pays for shader JIT
             renderer.warmUp();
             warmed = true;
         }
+        renderer.setDocument(doc, map);
         render::RenderOptions o = render::optionsFromDocument(doc);
         const bool own = !sc.path.empty();  // --file: the document's own levels, adaptivity, culling, display and camera
         // The same triangles as a plain pre-tessellated mesh, measured frame by frame alongside: at

@@ -169,6 +169,10 @@ TEST(ContinuityWatch, LiveNextToTheDragAndFullWhenSettled) {
     EXPECT_EQ(watch.failures(broken), kCurvatureOut);
     watch.update(doc, 2, true, {p});  // a drag changes no version: measured again, same verdict
     EXPECT_EQ(watch.failures(broken), kCurvatureOut);
+    // Orbiting (interacting, no point moving) measures nothing and keeps the last verdicts.
+    watch.update(doc, 2, true, {});
+    EXPECT_TRUE(watch.lastMeasured().empty());
+    EXPECT_EQ(watch.failures(broken), kCurvatureOut);
     doc.tolerances.curvaturePct = 1e6;
     watch.update(doc, 2, false, {});  // the tolerances changed: everything again
     EXPECT_EQ(watch.lastMeasured().size(), doc.joins.size());

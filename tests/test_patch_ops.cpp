@@ -75,6 +75,19 @@ TEST(EditorPatchOps, FlipReversesNormalKeepsJoins) {
     expectJoinsHold(doc);
 }
 
+// flipPatches turns several patches in one pass over the joins, as flipPatch one after the other
+// would: the same nets, the same joins (a .bpt import flips every patch this way).
+TEST(EditorPatchOps, FlipPatchesIsFlipPatchOneByOne) {
+    Document batch = makePatchGrid(3, 3, Continuity::C1);
+    Document single = batch;
+    flipPatches(batch, {0, 4, 5, 8, 4});  // 4 twice: flipped once
+    for (uint32_t p : {0u, 4u, 5u, 8u}) flipPatch(single, p);
+    EXPECT_EQ(batch.patches, single.patches);
+    EXPECT_EQ(batch.joins, single.joins);
+    expectJoinsHold(batch);
+    EXPECT_THROW(flipPatches(batch, {9}), EditError);
+}
+
 TEST(EditorPatchOps, ExtrudeIsC1) {
     Document doc = makePatchGrid(1, 1);
     for (Edge e : {Edge::U0, Edge::U1, Edge::V0, Edge::V1}) {

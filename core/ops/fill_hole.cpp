@@ -52,10 +52,13 @@ std::optional<Seg> openEdgeBetween(const Document& d, const Vec3& a, const Vec3&
     for (uint32_t p = 0; p < d.patches.size(); ++p) {
         if (d.patches[p].basis != Basis::Bezier) continue;
         for (Edge e : {Edge::U0, Edge::V0, Edge::U1, Edge::V1}) {
-            if (findJoin(d, p, e) >= 0) continue;
+            // The ends first: findJoin scans the joins, so it is asked only of an edge that fits
+            // (per patch edge it made fill-hole beside a 4 096-patch grid take a second).
             const Seg s{p, e, false};
-            if (glm::length(s.at(d, 0) - a) <= tol && glm::length(s.at(d, 3) - b) <= tol) return s;
-            if (glm::length(s.at(d, 3) - a) <= tol && glm::length(s.at(d, 0) - b) <= tol) return s.flipped();
+            const bool forward = glm::length(s.at(d, 0) - a) <= tol && glm::length(s.at(d, 3) - b) <= tol;
+            const bool backward = !forward && glm::length(s.at(d, 3) - a) <= tol && glm::length(s.at(d, 0) - b) <= tol;
+            if ((!forward && !backward) || findJoin(d, p, e) >= 0) continue;
+            return forward ? s : s.flipped();
         }
     }
     return std::nullopt;

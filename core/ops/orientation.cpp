@@ -1,5 +1,7 @@
 #include "core/ops/orientation.hpp"
 
+#include <vector>
+
 #include "core/eval/rational_eval.hpp"
 #include "core/model/topology.hpp"
 #include "core/ops/patch_ops.hpp"
@@ -42,7 +44,9 @@ double openBoundaryShare(const Document& doc) {
 
 bool orientOutward(Document& doc) {
     if (doc.patches.empty() || openBoundaryShare(doc) > 0.25 || positionFlux(doc) >= 0.0) return false;
-    for (uint32_t p = 0; p < doc.patches.size(); ++p) flipPatch(doc, p);
+    std::vector<uint32_t> all(doc.patches.size());
+    for (uint32_t p = 0; p < all.size(); ++p) all[p] = p;
+    flipPatches(doc, all);
     return true;
 }
 

@@ -131,22 +131,29 @@ void deletePatch(Document& doc, uint32_t p) {
 // Where flipPatch moves net slot s (0..15, row-major): the same row, the column mirrored.
 int flippedSlot(int s) { return (s / 4) * 4 + 3 - s % 4; }
 
-void flipPatch(Document& doc, uint32_t p) {
-    checkPatch(doc, p);
-    Patch& pt = doc.patches[p];
-    for (int s = 0; s < 16; ++s)
-        if (s % 4 < 2) std::swap(pt.idx[size_t(s)], pt.idx[size_t(flippedSlot(s))]);
-    if (pt.tessOverride) {
-        auto& o = *pt.tessOverride;
-        std::swap(o[0], o[2]);  // outer u=0 <-> u=1
+void flipPatches(Document& doc, const std::vector<uint32_t>& patches) {
+    std::vector<char> flipped(doc.patches.size(), 0);
+    for (uint32_t p : patches) {
+        checkPatch(doc, p);
+        if (flipped[p]) continue;
+        flipped[p] = 1;
+        Patch& pt = doc.patches[p];
+        for (int s = 0; s < 16; ++s)
+            if (s % 4 < 2) std::swap(pt.idx[size_t(s)], pt.idx[size_t(flippedSlot(s))]);
+        if (pt.tessOverride) {
+            auto& o = *pt.tessOverride;
+            std::swap(o[0], o[2]);  // outer u=0 <-> u=1
+        }
+        flipTrimsU(pt.trims);
     }
-    flipTrimsU(pt.trims);
-    // Edge U0 <-> U1 (k along v unchanged); on V0/V1 the parameter k runs the other way.
+    // Edge U0 <-> U1 (k along v unchanged); on V0/V1 the parameter k runs the other way. One pass
+    // over the joins for all of them (a .bpt import flips every patch: O(patches × joins) before).
     for (Join& j : doc.joins) {
         for (int side = 0; side < 2; ++side) {
             const bool isA = side == 0;
             Edge& e = isA ? j.edgeA : j.edgeB;
-            if ((isA ? j.patchA : j.patchB) != p || isTriangleEdge(e)) continue;
+            const uint32_t item = isA ? j.patchA : j.patchB;
+            if (isTriangleEdge(e) || item >= flipped.size() || !flipped[item]) continue;
             if (e == Edge::U0 || e == Edge::U1) {
                 e = oppositeEdge(e);
             } else {
@@ -156,6 +163,8 @@ void flipPatch(Document& doc, uint32_t p) {
         }
     }
 }
+
+void flipPatch(Document& doc, uint32_t p) { flipPatches(doc, {p}); }
 
 uint32_t extrudeEdge(Document& doc, uint32_t p, Edge e) {
     checkBezier(doc, p, "extrude");

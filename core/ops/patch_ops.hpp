@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "core/base/errors.hpp"
 #include "core/model/document.hpp"
@@ -29,6 +30,8 @@ void deletePatch(Document& doc, uint32_t p);
 
 // Reverses the u direction (mirrors the columns), so the normal flips; joins are rewritten.
 void flipPatch(Document& doc, uint32_t p);
+// flipPatch for several patches at once, in one pass over the joins (each patch flipped once).
+void flipPatches(Document& doc, const std::vector<uint32_t>& patches);
 
 // A new Bézier patch continuing patch p across edge e with C1 continuity (the cross-boundary
 // tangent is repeated outward), sharing the edge's pool points; records the C1 join. Returns the

@@ -35,8 +35,8 @@ void renderSweep(Device& dev, const SweepSpec& s, const std::function<void(int, 
         view = std::make_unique<DomainView>(dev, target.colorFormat(), target.depthFormat(), target.samples());
     } else {
         renderer = std::make_unique<Renderer>(dev, target);
-        renderer->setDocument(*s.document, s.heightMap);
         renderer->warmUp();
+        renderer->setDocument(*s.document, s.heightMap);
     }
     RenderOptions opt = s.options;
     opt.tess.adaptive = AdaptiveMode::None;

@@ -9,6 +9,7 @@
 #include "core/eval/bezier_triangle.hpp"
 #include "core/eval/rational_eval.hpp"
 #include "core/gpu/trim_math.h"
+#include "core/model/topology.hpp"
 #include "core/trim/surface_domain.hpp"
 #include "core/trim/trim_loops.hpp"
 
@@ -130,6 +131,7 @@ OverlayScene uploadOverlayScene(Device& dev, const Document& doc) {
     const std::vector<PatchInstance> inst = expandPatches(doc);
     constexpr int kSeg = 16;
     WindowTrims trims(doc);
+    const EdgeJoinIndex joined(doc);  // each window edge's join in O(1), not a scan of the joins (O(patches × joins))
     for (const PatchInstance& pi : inst) {
         const WindowNet net = gatherWindow(doc, pi.idx);
         const std::optional<WindowTrim> trim = trims.of(pi);  // its edges only where the trims keep them (issue 64)
@@ -138,11 +140,7 @@ OverlayScene uploadOverlayScene(Device& dev, const Document& doc) {
             const Continuity* cont = nullptr;
             std::array<float, 4> col;
             if (pi.patch >= 0) {
-                for (const Join& j : doc.joins)
-                    if ((j.patchA == uint32_t(pi.patch) && j.edgeA == edge) || (j.patchB == uint32_t(pi.patch) && j.edgeB == edge)) {
-                        cont = &j.continuity;
-                        break;
-                    }
+                if (const int j = joined.at(uint32_t(pi.patch), edge); j >= 0) cont = &doc.joins[size_t(j)].continuity;
                 col = continuityColor(cont);
             } else {
                 col = {0.2f, 0.85f, 0.9f, 1.0f};

@@ -101,7 +101,8 @@ public:
     // coordinates (render/scene/surface_capture.cpp). InputError (exit 2) when the device has no
     // transform feedback (VK_EXT_transform_feedback).
     CapturedSurface captureSurface(const RenderOptions& opt);
-    // Draws one frame with every pipeline variant so the first real frame does not pay for shader JIT.
+    // Draws a one-patch scene with every pipeline variant so the first real frame does not pay for
+    // shader JIT. That scene is the renderer's document afterwards: set the real one after this.
     void warmUp();
 
     const PipelineSet& pipelines() const { return pipes_; }

@@ -27,8 +27,8 @@ assert j["frames"] == 12 and j["width"] == 960 and j["height"] == 600, j
 assert j["patches"] == 32 and j["triangles"] == 32 * 2 * 16 * 16, j  # the teapot at level 16
 assert j["moved"] > 0.01 * j["model_size"], j                        # the drag moved the point
 assert j["max_residual"] <= 1e-6 * j["model_size"], j                # every join held
-assert j["restored"] is True, j                                       # Esc put it back
-for k in ("frame_ms", "bare_render_ms", "view_ms", "present_ms", "ui_ms"):
+assert j["restored"] is True, j                                       # Esc put it back, and undo the kept drag
+for k in ("frame_ms", "bare_render_ms", "view_ms", "present_ms", "ui_ms", "grab_ms", "release_ms", "after_release_ms", "undo_ms"):
     assert j[k] > 0, (k, j)
 assert j["drag_ms"] > 0 and j["drag_ms"] < j["ui_ms"], j
 assert abs(j["overhead_ms"] - (j["frame_ms"] - j["bare_render_ms"])) < 1e-9, j

@@ -63,6 +63,13 @@ Editor::Editor(AppWindow& window, const std::string& file) : window_(window) {
         } catch (const InputError& e) {
             stateNote = std::string("The recent files were not read: ") + e.what();
         }
+    // Warm the pipelines on the first acquired image with a one-patch scene, before the document is
+    // uploaded (the first real frame then pays no JIT, and a big document is not drawn a dozen times
+    // to get there), and present it through the normal path.
+    if (window_.acquire()) {
+        renderer_->warmUp();
+        window_.presentEmpty();
+    }
     dialogs_.offerRecovery(findRecoverableAutosaves());
     // A bad file on the command line throws InputError: reported with exit 2 like the other commands.
     if (file.empty())
@@ -73,12 +80,6 @@ Editor::Editor(AppWindow& window, const std::string& file) : window_(window) {
         if (!notes.empty()) status(skippedSummary(notes));
     }
     if (!stateNote.empty()) status(stateNote);
-    // Warm the pipelines on the first acquired image (the first real frame then pays no JIT), and
-    // present it through the normal path.
-    if (window_.acquire()) {
-        renderer_->warmUp();
-        window_.presentEmpty();
-    }
     lastAutosave_ = std::chrono::steady_clock::now();
     try {
         ensurePrivateDirectory(autosaveDirectory());

@@ -5,6 +5,7 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -64,8 +65,8 @@ int Editor::runBench(const EditorBenchOptions& opt) {
     render::OffscreenTarget bareTarget(window_.device(), ext.width, ext.height, window_.target().samples() > VK_SAMPLE_COUNT_1_BIT);
     bareTarget.setReadback(false);
     render::Renderer bare(window_.device(), bareTarget);
-    bare.setDocument(doc_);
     bare.warmUp();
+    bare.setDocument(doc_);
 
     // Step 2: the point to drag: the used control point nearest the middle of the view.
     const auto [W, H] = viewSize();
@@ -88,8 +89,14 @@ int Editor::runBench(const EditorBenchOptions& opt) {
     sel_.points = {uint32_t(point)};
     window_.overrideMouse(std::array<double, 2>{at.x, at.y});
     for (int i = 0; i < 10; ++i) drawFrame();
+    // A frame timed as the user waits for it: input to presented.
+    const auto timedFrame = [this] {
+        const auto t0 = std::chrono::steady_clock::now();
+        drawFrame();
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    };
     window_.keyEvent(GLFW_KEY_G, 0);
-    drawFrame();
+    const double grabMs = timedFrame();  // the drag's start: the solver factorised for the grabbed point
     if (mode_ != Interaction::Grab) throw InputError("bench", "--editor: the G grab did not start (is the window focused?)");
 
     // Step 4: measured frames; the mouse moves 40 px around the point, one step a frame, and each
@@ -118,7 +125,22 @@ int Editor::runBench(const EditorBenchOptions& opt) {
     window_.keyEvent(GLFW_KEY_ESCAPE, 0);
     drawFrame();
     window_.overrideMouse(std::nullopt);
-    const bool restored = mode_ == Interaction::None && doc_.points[size_t(point)] == start;
+    bool restored = mode_ == Interaction::None && doc_.points[size_t(point)] == start;
+    // Step 5b: a drag that is kept: G, one step, Enter. The confirming frame commits the edit (and
+    // whatever the release re-uploads), then Ctrl+Z undoes it; both frames timed.
+    window_.keyEvent(GLFW_KEY_G, 0);
+    drawFrame();
+    window_.overrideMouse(std::array<double, 2>{at.x + 20.0, at.y});
+    glfwPollEvents();
+    drawFrame();
+    window_.keyEvent(GLFW_KEY_ENTER, 0);
+    const double releaseMs = timedFrame();
+    const bool kept = mode_ == Interaction::None && doc_.points[size_t(point)] != start;
+    const double afterReleaseMs = timedFrame();
+    window_.keyEvent(GLFW_KEY_Z, GLFW_MOD_CONTROL);
+    const double undoMs = timedFrame();
+    window_.overrideMouse(std::nullopt);
+    restored = restored && kept && doc_.points[size_t(point)] == start;
 
     // Step 6: report.
     const double frameMed = median(total), bareMed = median(bareMs);
@@ -131,8 +153,10 @@ int Editor::runBench(const EditorBenchOptions& opt) {
     std::printf("  bare render      %8.2f ms   (the same view offscreen: record, submit, wait)\n", bareMed);
     std::printf("  editor overhead  %8.2f ms   (frame - bare render); %llu triangles a frame\n", frameMed - bareMed,
                 (unsigned long long)stats.triangles());
-    std::printf("  point %d moved up to %.4g (model size %.4g), largest join residual %.3g, restored by Esc: %s\n", point, moved, size,
-                residual, restored ? "yes" : "no");
+    std::printf("  drag start %.2f ms, release %.2f ms (the next frame %.2f ms), undo %.2f ms\n", grabMs, releaseMs, afterReleaseMs,
+                undoMs);
+    std::printf("  point %d moved up to %.4g (model size %.4g), largest join residual %.3g, restored by Esc and by undo: %s\n", point,
+                moved, size, residual, restored ? "yes" : "no");
     if (!opt.json.empty()) {
         const nlohmann::json j{{"device", window_.device().name()},
                                {"width", ext.width},
@@ -150,6 +174,10 @@ int Editor::runBench(const EditorBenchOptions& opt) {
                                {"present_ms", median(present)},
                                {"bare_render_ms", bareMed},
                                {"overhead_ms", frameMed - bareMed},
+                               {"grab_ms", grabMs},
+                               {"release_ms", releaseMs},
+                               {"after_release_ms", afterReleaseMs},
+                               {"undo_ms", undoMs},
                                {"point", point},
                                {"moved", moved},
                                {"model_size", size},
@@ -158,7 +186,7 @@ int Editor::runBench(const EditorBenchOptions& opt) {
         writeFileAtomic(opt.json, j.dump(2) + "\n");
     }
     if (!restored) {
-        std::cerr << "patchwork bench: Esc did not restore the dragged point\n";
+        std::cerr << "patchwork bench: Esc, or Enter then undo, did not restore the dragged point\n";
         return 1;
     }
     if (window_.device().validationEnabled() && render::Device::validationMessageCount() > 0) {
