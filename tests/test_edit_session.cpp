@@ -189,6 +189,24 @@ TEST(Commands, DeleteRemovesWhatTheSelectedPointsCover) {
     EXPECT_TRUE(s.doc.curves.empty());
 }
 
+// flip turns the selected patch, or every patch whose points are all selected, as one undo step.
+TEST(Commands, FlipTurnsEveryWholeSelectedPatch) {
+    EditSession s;
+    s.reset(makePatchGrid(2, 2, Continuity::C1), "");
+    const Document before = s.doc;
+    run(s, "select patch 1; flip");
+    EXPECT_NE(s.doc.patches[1].idx, before.patches[1].idx);
+    EXPECT_EQ(s.doc.patches[0].idx, before.patches[0].idx);
+    run(s, "undo; select all; flip");
+    for (size_t p = 0; p < 4; ++p) EXPECT_NE(s.doc.patches[p].idx, before.patches[p].idx) << p;
+    EXPECT_LE(maxConstraintResidual(s.doc), 1e-9);
+    run(s, "undo");
+    EXPECT_EQ(s.doc.patches, before.patches);
+    EXPECT_EQ(s.doc.joins, before.joins);
+    s.sel.clear();
+    EXPECT_THROW(run(s, "flip"), InputError);  // "not available now", with the script line
+}
+
 TEST(Commands, BadLinesNameTheScriptAndLine) {
     EXPECT_EQ(scriptError("add-patch\n\nfrobnicate 3"),
               "s.txt:3: unknown command 'frobnicate' (the F1 help and the palette list every command)");

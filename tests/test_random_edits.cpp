@@ -38,7 +38,7 @@ const char* const kTemplates[] = {
     "split-ring {p} u {t}",
     "join {p}:{e} {q}:{f} {k}",
     "unjoin {p}:{e}",
-    "flip {p}",
+    "select patch {p}; flip",
     "mirror X",
     "select patch {p}; duplicate",
     "select patch {p}; delete",

@@ -185,9 +185,21 @@ void execMirror(CommandContext& ctx) {
     if (made.patches.size() == 1) s.sel.patch = int(made.patches[0]);
 }
 
+// Every visible patch whose 16 points are all selected (the selected patch among them): a whole
+// revolve that came out inside out is turned in one step, as mirror takes whole patches.
 void execFlip(CommandContext& ctx) {
-    const uint32_t p = uint32_t(ctx.session.sel.patch);
-    ctx.session.apply("Flip patch", [p](Document& d) { flipPatch(d, p); });
+    EditSession& s = ctx.session;
+    const std::vector<uint32_t> selected = s.selectedPoints();
+    std::vector<uint32_t> patches;
+    for (uint32_t i = 0; i < s.doc.patches.size(); ++i) {
+        const Patch& p = s.doc.patches[i];
+        if (!p.hidden &&
+            std::all_of(p.idx.begin(), p.idx.end(), [&](uint32_t q) { return std::binary_search(selected.begin(), selected.end(), q); }))
+            patches.push_back(i);
+    }
+    if (patches.empty()) throw EditError("flip: select a patch, or whole patches (all their points)");
+    const std::string label = patches.size() == 1 ? "Flip patch" : "Flip " + std::to_string(patches.size()) + " patches";
+    s.apply(label, [&](Document& d) { flipPatches(d, patches); });
 }
 
 // Form 0: an edge of the selected patch continued by a C1 patch; form 1 (C DX DY DZ): a curve
@@ -327,8 +339,9 @@ void addModelCommands(CommandTable& t) {
     t.add({.name = "flip",
            .label = "Flip",
            .menu = "Patch",
-           .help = "Reverse the selected patch's u direction so its normal points the other way",
-           .enabled = hasPatch,
+           .help = "Reverse the u direction of the selected patch, or of every patch whose points are all selected, so their normals "
+                   "point the other way",
+           .enabled = [](const EditSession& s) { return hasPatch(s) || !s.sel.points.empty(); },
            .exec = execFlip});
     // Two forms: an edge of the selected patch continued by a C1 patch, or a curve extruded (live).
     Command extrude = fromEdge("extrude", "Extrude Edge",

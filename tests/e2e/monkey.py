@@ -38,7 +38,7 @@ KEYS = (list("abcdefghijklmnopqrstuvwxyz0123456789") +
 COMMANDS = [
     "undo", "redo", "undo", "move 0 0 {x}", "move {x} 0 0", "rotate Z {a}", "scale {s}", "select patch {p}",
     "select all", "select none", "split u {t}", "split v {t}", "join {p}:{e} {q}:{f} {k}", "unjoin {p}:{e}",
-    "flip {p}", "mirror X", "mirror Z", "duplicate", "delete", "add-patch", "add-sphere", "add-curve",
+    "flip", "mirror X", "mirror Z", "duplicate", "delete", "add-patch", "add-sphere", "add-curve",
     "slide n {x}", "net-basis 0 bezier", "net-basis 0 bspline", "fill-hole {p}:{e} {q}:{f}",
     "blend {p}:{e} {q}:{f} {k}", "revolve {p}:{e} Z {a}", "extrude {p}:{e} {x}", "project c{c} {p}",
     "trim {p} c{c} keep", "trim {p} c{c} remove", "intersect {p} {q}", "untrim {p}", "bake c{c}",
