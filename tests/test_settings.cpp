@@ -84,6 +84,13 @@ TEST(Settings, SetIsOneUndoStepNamedByTheRow) {
     run(s, {"set", "tess.level", "7"});  // the linked level writes all six and links them
     EXPECT_EQ(s.doc.tess.inner, (std::array<float, 2>{7, 7}));
     EXPECT_TRUE(s.doc.tess.linked);
+    // "integer" is the notes' name for equal spacing, accepted wherever equal is.
+    run(s, {"set", "tess.spacing", "integer"});
+    EXPECT_EQ(s.doc.tess.spacing, Spacing::Equal);
+    run(s, {"set", "tess.spacing", "pow2"});
+    run(s, {"tess-fixed", "integer", "1", "2", "3", "4", "4", "4"});
+    EXPECT_EQ(s.doc.tess.spacing, Spacing::Equal);
+    EXPECT_EQ(s.doc.tess.outer, (std::array<float, 4>{1, 2, 3, 4}));
 }
 
 // A panel's slider: previews while it moves (no undo step), then the same command commits once.

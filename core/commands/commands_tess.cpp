@@ -96,8 +96,8 @@ void addTessCommands(CommandTable& t) {
            .exec = execTriangleLevels});
     t.add({.name = "tess-fixed",
            .label = "Keep Levels",
-           .forms = {{choice("SPACING", {"equal", "fractional_odd", "fractional_even", "pow2"}), number("O0"), number("O1"), number("O2"),
-                      number("O3"), number("I0"), number("I1")}},
+           .forms = {{choice("SPACING", {"equal", "fractional_odd", "fractional_even", "pow2", "integer"}), number("O0"), number("O1"),
+                      number("O2"), number("O3"), number("I0"), number("I1")}},
            .help = "Fix the document's tessellation: adaptivity off, this partitioning, these outer and inner levels (1 to 64), edges "
                    "unlinked (what a kept lesson or preset leaves)",
            .exec = execTessFixed});

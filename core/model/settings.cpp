@@ -97,10 +97,13 @@ std::vector<Setting> makeSettings() {
                           [](Document& d) -> std::array<float, 4>& { return d.tess.outer; }));
     t.push_back(numberRow("tess.inner", "Inner", "Inner levels along u and v", "", kLo, kHi, SettingWidget::Slider, "%.1f",
                           [](Document& d) -> std::array<float, 2>& { return d.tess.inner; }));
-    t.push_back(choiceRow<Spacing>(
-        "tess.spacing", "Partitioning", "Spacing of the tessellator: equal, fractional odd/even (smooth level changes), pow2 (rounded up)",
+    Setting spacing = choiceRow<Spacing>(
+        "tess.spacing", "Partitioning",
+        "Spacing of the tessellator: equal (also called integer), fractional odd/even (smooth level changes), pow2 (rounded up)",
         {"equal", "fractional_odd", "fractional_even", "pow2"}, {"equal", "fractional odd", "fractional even", "pow2"},
-        [](Document& d) -> Spacing& { return d.tess.spacing; }));
+        [](Document& d) -> Spacing& { return d.tess.spacing; });
+    spacing.choiceAliases = {{"integer", int(Spacing::Equal)}};
+    t.push_back(std::move(spacing));
     t.push_back(choiceRow<AdaptiveMode>("tess.adaptive", "Adaptive",
                                         "Per-edge levels from the distance to the eye, the projected edge length, or the silhouette",
                                         {"none", "distance", "screen", "orientation"}, {"none", "distance", "screen space", "orientation"},
@@ -280,6 +283,8 @@ std::vector<double> parseSettingValues(const Setting& s, const std::vector<std::
         } else if (s.kind == SettingKind::Choice) {
             size_t i = 0;
             while (i < s.choices.size() && s.choices[i] != w) ++i;
+            for (const auto& [alias, choice] : s.choiceAliases)
+                if (i == s.choices.size() && alias == w) i = size_t(choice);
             if (i == s.choices.size()) {
                 std::string names;
                 for (std::string_view c : s.choices) names += (names.empty() ? "" : ", ") + std::string(c);

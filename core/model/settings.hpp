@@ -11,6 +11,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/model/document.hpp"
@@ -40,6 +41,9 @@ struct Setting {
     std::string_view format = "%.1f";            // the panel's number format
     std::vector<std::string_view> choices;       // Choice: names in enum order (files, commands)
     std::vector<std::string_view> choiceLabels;  // Choice: what the panel shows
+    // Choice: other names a command or file may use, with the choice each means ("integer" is equal
+    // spacing, as the notes call it); never written.
+    std::vector<std::pair<std::string_view, int>> choiceAliases;
     std::function<std::vector<double>(const Document&)> get;
     std::function<void(Document&, const std::vector<double>&)> set;  // values already checked
 };
