@@ -14,7 +14,7 @@ build_packages=(
   cmake g++ make pkg-config
   libvulkan-dev mesa-vulkan-drivers glslc
   libglfw3-dev libx11-dev libxext-dev libxrandr-dev libimgui-dev libglm-dev libeigen3-dev libtinygltf-dev
-  nlohmann-json3-dev libstb-dev libcli11-dev fonts-dejavu-core
+  nlohmann-json3-dev libstb-dev libpng-dev libcli11-dev fonts-dejavu-core
   libgtest-dev libbenchmark-dev
   help2man
   libcairo2-dev ffmpeg

@@ -83,6 +83,62 @@ TEST(HeightMap, BadFilesAreRefusedNamingThem) {
     EXPECT_THROW((void)loadHeightMap(dir / "cut.png"), InputError);
 }
 
+namespace {
+
+uint32_t crc32Of(const std::string& bytes, size_t from, size_t n) {  // PNG's CRC-32 (ISO 3309)
+    uint32_t c = 0xffffffffu;
+    for (size_t i = from; i < from + n; ++i) {
+        c ^= uint8_t(bytes[i]);
+        for (int k = 0; k < 8; ++k) c = (c >> 1) ^ (0xedb88320u & (0u - (c & 1u)));
+    }
+    return ~c;
+}
+uint32_t be32(const std::string& b, size_t at) {
+    return uint32_t(uint8_t(b[at])) << 24 | uint32_t(uint8_t(b[at + 1])) << 16 | uint32_t(uint8_t(b[at + 2])) << 8 | uint8_t(b[at + 3]);
+}
+void putBe32(std::string& b, size_t at, uint32_t v) {
+    for (int k = 0; k < 4; ++k) b[at + size_t(k)] = char(uint8_t(v >> (24 - 8 * k)));
+}
+
+std::string loadRefusal(const std::filesystem::path& file) {
+    try {
+        (void)loadHeightMap(file);
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.file(), file.string());
+        return e.what();
+    }
+    return "(accepted)";
+}
+
+}  // namespace
+
+// A damaged PNG is refused, naming the chunk: a wrong CRC on IHDR or IDAT, a wrong Adler-32 at the
+// end of the image data (its chunk's CRC made right again), where stb_image took all three.
+TEST(HeightMap, DamagedPngsAreRefusedNamingTheChunk) {
+    const auto dir = freshTempDir("hmcrc");
+    const std::string good = readBytes(writeRamp8(dir, 64, 64));
+    const size_t idat = good.find("IDAT") - 4, idatLength = be32(good, idat);
+    ASSERT_EQ(good.substr(12, 4), "IHDR");
+    const auto write = [&](const std::string& name, const std::string& bytes) {
+        std::ofstream(dir / name, std::ios::binary) << bytes;
+        return dir / name;
+    };
+    std::string ihdr = good;
+    ihdr[8 + 8 + 13] ^= 0x01;  // IHDR's CRC
+    EXPECT_NE(loadRefusal(write("ihdr.png", ihdr)).find("PNG chunk IHDR fails its CRC check"), std::string::npos);
+    std::string crc = good;
+    crc[idat + 8 + idatLength] ^= 0x01;  // IDAT's CRC
+    EXPECT_NE(loadRefusal(write("idat.png", crc)).find("PNG chunk IDAT fails its CRC check"), std::string::npos);
+    std::string data = good;
+    data[idat + 8 + idatLength / 2] ^= 0x10;  // a byte of the image data: zlib finds it before the CRC is read
+    EXPECT_NE(loadRefusal(write("data.png", data)).find("IDAT"), std::string::npos);
+    std::string adler = good;
+    adler[idat + 8 + idatLength - 1] ^= 0x01;  // the zlib stream's Adler-32, then the chunk's CRC made right
+    putBe32(adler, idat + 8 + idatLength, crc32Of(adler, idat + 4, idatLength + 4));
+    EXPECT_NE(loadRefusal(write("adler.png", adler)).find("fails its Adler-32 check"), std::string::npos);
+    EXPECT_EQ(loadHeightMap(write("same.png", good)).texels, loadHeightMap(dir / "ramp8.png").texels);
+}
+
 TEST(DisplacementDocument, SettingsAndOwnValuesRoundTripAndBadFieldsAreNamed) {
     Document doc = makeTerrainDocument({4, 10.0, 2.0f, "maps/t.png"});
     doc.surfaces[0].displacement = DisplacementOverride{0.5f, -0.25f};
