@@ -23,7 +23,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Leftover temporary files of interrupted saves in dir (".<name>.tmp<n>").
+// Leftover temporary files of interrupted saves in dir (".<name>.tmp-<pid>-<n>").
 int temporaries(const fs::path& dir) {
     int n = 0;
     for (const auto& e : fs::directory_iterator(dir))
@@ -79,6 +79,24 @@ TEST(AtomicSave, KilledInTheMiddleOfASaveLeavesTheOldFileIntact) {
         if (now != oldData) pw::writeFileAtomic(target, oldData);
     }
     EXPECT_GT(interrupted, 0) << "no kill landed inside a save (one save takes " << saveUs << " µs)";
+    // A killed writer's temporary file is removed by the next write into the folder.
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        try {
+            pw::writeFileAtomic(target, newData);
+        } catch (...) {
+            _exit(3);
+        }
+        _exit(0);
+    }
+    for (int i = 0; i < 2000 && temporaries(dir) == 0; ++i) usleep(500);
+    kill(child, SIGKILL);
+    waitpid(child, nullptr, 0);
+    if (temporaries(dir) > 0) {
+        pw::writeFileAtomic(dir / "other.txt", "x");
+        EXPECT_EQ(temporaries(dir), 0) << "a dead writer's temporary file stayed";
+    }
     EXPECT_GT(intact, 0);
     std::printf("atomic save: %.0f ms per save; 16 kills: %d left the old file, %d the new one, %d interrupted a save\n", saveUs / 1000.0,
                 intact, replaced, interrupted);
@@ -106,6 +124,21 @@ TEST(AtomicSave, AWriteThatDoesNotReadBackReplacesNothing) {
     EXPECT_FALSE(seen.empty());
     EXPECT_EQ(pw::test::readBytes(target), "old");
     EXPECT_EQ(temporaries(dir), 0);
+
+    // Leftovers: a dead writer's is removed by the next write; a running writer's (this process)
+    // and files of other forms stay.
+    const pid_t dead = fork();
+    ASSERT_GE(dead, 0);
+    if (dead == 0) _exit(0);
+    waitpid(dead, nullptr, 0);
+    const std::string deadTemp = ".doc.patchwork.tmp-" + std::to_string(dead) + "-17",
+                      liveTemp = ".doc.patchwork.tmp-" + std::to_string(getpid()) + "-18";
+    for (const std::string& name : {deadTemp, liveTemp, std::string(".doc.patchwork.tmp-x-1"), std::string("notes.tmp-1-2")})
+        std::ofstream(dir / name) << "left";
+    pw::writeFileAtomic(dir / "another.patchwork", "x");
+    EXPECT_FALSE(fs::exists(dir / deadTemp));
+    for (const char* kept : {".doc.patchwork.tmp-x-1", "notes.tmp-1-2"}) EXPECT_TRUE(fs::exists(dir / kept)) << kept;
+    EXPECT_TRUE(fs::exists(dir / liveTemp));
 
     const pw::Document teapot = pw::builtinTeapot();
     for (const char* name : {"t.patchwork", "t.bpt", "t.glb", "t.gltf"}) {

@@ -1,6 +1,7 @@
 #include "core/base/file_io.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <sys/vfs.h>
 #include <unistd.h>
@@ -113,6 +114,35 @@ std::string fileKind(mode_t m) {
     return "not a regular file";
 }
 
+// A staged file is named ".<target>.tmp-<writer's pid>-<n>" beside its target. One whose writer is
+// no longer running (killed in the middle of a save) is removed by the next write into that folder
+// (issue 71): only regular files of ours with that exact form, whose pid no process has.
+std::string tempName(const std::filesystem::path& target, unsigned n) {
+    return "." + target.filename().string() + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(n);
+}
+
+void removeDeadWritersTemps(const std::filesystem::path& dir) {
+    std::error_code ec;
+    std::filesystem::directory_iterator it(dir, ec), end;
+    for (; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        const size_t at = name.rfind(".tmp-");
+        if (name.empty() || name[0] != '.' || at == std::string::npos || at == 0) continue;
+        const std::string tail = name.substr(at + 5);  // "<pid>-<n>"
+        const size_t dash = tail.find('-');
+        const auto digits = [](const std::string& d) {
+            return !d.empty() && d.size() < 11 && std::all_of(d.begin(), d.end(), [](char c) { return c >= '0' && c <= '9'; });
+        };
+        if (dash == std::string::npos || !digits(tail.substr(0, dash)) || !digits(tail.substr(dash + 1))) continue;
+        const long pid = std::stol(tail.substr(0, dash));
+        if (pid <= 0 || pid > 0x7fffffffL || (::kill(pid_t(pid), 0) == 0 || errno != ESRCH)) continue;  // running (or not ours to ask)
+        struct stat st {};
+        if (::lstat(it->path().c_str(), &st) != 0 || !S_ISREG(st.st_mode) || st.st_uid != ::getuid()) continue;
+        std::error_code rm;
+        std::filesystem::remove(it->path(), rm);
+    }
+}
+
 bool writeAll(int fd, std::string_view data) {
     size_t done = 0;
     while (done < data.size()) {
@@ -172,10 +202,9 @@ void OutputBatch::stage(const std::filesystem::path& path, const std::vector<std
     const OutputTarget t = checkOutputPath(path);
     const std::string name = path.string();
     const std::filesystem::path dir = t.path.has_parent_path() ? t.path.parent_path() : std::filesystem::path(".");
+    removeDeadWritersTemps(dir);
     std::random_device rd;
-    std::string tmpName(1, '.');
-    tmpName.append(t.path.filename().string()).append(".tmp").append(std::to_string(rd() % 1000000));
-    const std::filesystem::path tmp = dir / tmpName;
+    const std::filesystem::path tmp = dir / tempName(t.path, unsigned(rd() % 1000000));
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, t.exists ? 0600 : 0666);
     if (fd < 0) throw OutputError(name, std::strerror(errno));
     std::error_code ec;
