@@ -13,10 +13,12 @@
 #include <set>
 
 #include "core/commands/command_table.hpp"
+#include "core/construct/model_builders.hpp"
 #include "core/io/document_io.hpp"
 #include "core/solve/constraint_solver.hpp"
 #include "support.hpp"
 #include "ui/panels/command_panels.hpp"
+#include "ui/panels/dialogs.hpp"
 #include "ui/panels/join_tool.hpp"
 #include "ui/panels/side_panels.hpp"
 #include "ui/platform/item_trace.hpp"
@@ -36,18 +38,18 @@ class HeadlessContext final : public PanelContext {
 public:
     EditSession& session() override { return session_; }
     const CommandTable& commands() const override { return table_; }
-    CommandHost& host() override { return host_; }
+    CommandHost& host() override { return hostOverride ? *hostOverride : host_; }
     void runCommand(const std::vector<std::string>& words, bool guarded) override {
         ++commandsRun;
         try {
-            table_.run(session_, host_, words, guarded);
+            table_.run(session_, host(), words, guarded);
         } catch (const std::exception& e) {
             errors.push_back(e.what());
         }
     }
     void previewCommand(const std::vector<std::string>& words) override {
         ++previews;
-        table_.preview(session_, host_, words);
+        table_.preview(session_, host(), words);
     }
     void previewConstruction(const std::vector<std::string>& words) override { previewed = words; }
     void documentChanged(bool) override { ++version_; }
@@ -64,6 +66,7 @@ public:
     const FrameReport& frameReport() const override { return report_; }
     const ContinuityWatch& continuityWatch() const override { return watch_; }
 
+    CommandHost* hostOverride = nullptr;  // the editor's window, where a test needs one
     int commandsRun = 0, previews = 0;
     std::vector<std::string> errors;
     std::vector<std::string> previewed;  // the last construction the panel asked to preview
@@ -110,17 +113,26 @@ protected:
         ImGui::End();
         ImGui::Render();
     }
+    // One frame of `draw` at the top level, outside any window (the modals).
+    template <class F>
+    void topFrame(F&& draw) {
+        trace.clear();
+        ImGui::NewFrame();
+        draw();
+        ImGui::Render();
+    }
     // Move the mouse onto `item`, press and release it: one frame each, as a user's click.
     template <class F>
-    void click(F&& draw, const std::string& item) {
+    void click(F&& draw, const std::string& item, bool topLevel = false) {
         ImGuiIO& io = ImGui::GetIO();
-        frame(draw);
+        const auto once = [&] { topLevel ? topFrame(draw) : frame(draw); };
+        once();
         io.MousePos = centre(item);
-        frame(draw);
+        once();
         io.MouseDown[0] = true;
-        frame(draw);
+        once();
         io.MouseDown[0] = false;
-        frame(draw);
+        once();
     }
     ImVec2 centre(const std::string& item) const {
         const auto it = trace.items.find(item);
@@ -131,6 +143,65 @@ protected:
 };
 
 }  // namespace
+
+// A save over a file another program changed since it was opened asks (issue 73): Cancel writes
+// nothing, Overwrite replaces it, Save As opens the file browser. Without a window the same save is
+// refused, naming `save FILE overwrite` (test_concurrent_save.cpp).
+TEST_F(Ui, ASaveOverAFileChangedOnDiskAsksOverwriteSaveAsOrCancel) {
+    class WindowHost final : public CommandHost {
+    public:
+        explicit WindowHost(Dialogs& d) : dialogs_(d) {}
+        bool hasWindow() const override { return true; }
+        bool confirmOverwriteChanged(const std::string& path) override {
+            dialogs_.askOverwriteChanged(path);
+            return false;
+        }
+        void write(const Document& doc, const std::string& path) override { saveDocument(doc, path); }
+
+    private:
+        Dialogs& dialogs_;
+    };
+    const auto dir = test::freshTempDir("ui-changed");
+    const std::string file = (dir / "m.patchwork").string();
+    saveDocument(makePatchGrid(1, 1), file);
+    Dialogs dialogs;
+    WindowHost host(dialogs);
+    HeadlessContext ctx;
+    ctx.hostOverride = &host;
+    ctx.session().open(file);
+    ctx.runCommand({"select", "patch", "0"}, true);
+    ctx.runCommand({"move", "0", "0", "1"}, true);
+    saveDocument(makePatchGrid(2, 2), file);  // another program's work
+    const std::string theirs = test::readBytes(file);
+    const auto modals = [&] { dialogs.drawModals(ctx, [] {}); };
+
+    ctx.runCommand({"save"}, true);
+    EXPECT_TRUE(ctx.errors.empty()) << ctx.errors.front();
+    EXPECT_EQ(dialogs.changedFile(), file);
+    topFrame(modals);  // it appears (an auto-sized window takes its size in its first frame)
+    click(modals, "changed.cancel", true);
+    EXPECT_EQ(dialogs.shown(), Modal::None);
+    EXPECT_EQ(test::readBytes(file), theirs);
+    EXPECT_TRUE(ctx.session().isModified());
+
+    ctx.runCommand({"save"}, true);
+    topFrame(modals);
+    click(modals, "changed.saveas", true);
+    EXPECT_EQ(dialogs.shown(), Modal::None);  // closed; the file browser is asked for next
+    EXPECT_EQ(dialogs.waiting().front(), Modal::FileBrowser);
+    EXPECT_EQ(test::readBytes(file), theirs);
+
+    Dialogs fresh;  // the same question again, answered Overwrite
+    WindowHost again(fresh);
+    ctx.hostOverride = &again;
+    ctx.runCommand({"save"}, true);
+    const auto freshModals = [&] { fresh.drawModals(ctx, [] {}); };
+    topFrame(freshModals);
+    click(freshModals, "changed.overwrite", true);
+    EXPECT_TRUE(ctx.errors.empty());
+    EXPECT_EQ(loadDocument(file).points, ctx.session().doc.points);
+    EXPECT_FALSE(ctx.session().isModified());
+}
 
 TEST_F(Ui, ALevelTypedOutOfRangeIsClampedAndTheSavedFileReopens) {
     HeadlessContext ctx;

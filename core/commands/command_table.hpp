@@ -33,6 +33,14 @@ public:
         (void)words;
         return true;
     }
+    // Before `save` replaces its document's file, which another program changed since it was opened
+    // or saved here (a second editor): true to replace it now. A window asks (Overwrite, Save As,
+    // Cancel) and returns false; the answer saves again. Without a window the save is refused,
+    // naming `save FILE overwrite`.
+    virtual bool confirmOverwriteChanged(const std::string& path) {
+        (void)path;
+        return false;
+    }
     // Writes `doc` to `path` (by extension). A script host keeps every write until the script ended
     // well, so that a failing script leaves no file behind.
     virtual void write(const Document& doc, const std::string& path) = 0;

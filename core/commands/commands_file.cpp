@@ -58,11 +58,13 @@ std::optional<std::string> outputArgument(CommandContext& ctx, FileDialogKind di
 void save(CommandContext& ctx, const std::string& path, bool overwrite = false) {
     std::error_code ec;
     const bool same = path == ctx.session.path() || std::filesystem::equivalent(path, ctx.session.path(), ec);
-    if (same && !overwrite && ctx.session.fileChangedOnDisk())
+    if (same && !overwrite && ctx.session.fileChangedOnDisk() && !ctx.host.confirmOverwriteChanged(path)) {
+        if (ctx.host.hasWindow()) return;  // the window asks; its answer saves again (or not)
         throw EditError(path +
                         " was changed by another program since it was opened or saved here; saving now would discard "
                         "that work. Save under another name, open it again to see it, or replace it: `save " +
                         path + " overwrite`");
+    }
     ctx.host.write(ctx.session.documentToSave(), path);
     ctx.session.savedTo(path);
     ctx.host.saved(path);

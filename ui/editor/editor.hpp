@@ -157,6 +157,7 @@ private:
     // CommandHost (editor_commands.cpp): what the commands ask of the window.
     bool hasWindow() const override { return true; }
     bool confirmDiscard(const std::vector<std::string>& words) override;
+    bool confirmOverwriteChanged(const std::string& path) override;
     void write(const Document& doc, const std::string& path) override;
     void exportFile(const Document& doc, const std::string& path) override;
     // With options.asDisplayed and a tessellated format: the surface the 3D view draws (captured

@@ -40,6 +40,12 @@ bool Editor::confirmDiscard(const std::vector<std::string>& words) {
     return false;
 }
 
+bool Editor::confirmOverwriteChanged(const std::string& path) {
+    dialogs_.askOverwriteChanged(path);
+    wake();
+    return false;
+}
+
 std::optional<TriangleMesh> Editor::displayedMesh(Document& doc, ExportOptions& options, const std::string& path) {
     if (!options.asDisplayed || !isMeshFormat(path)) return std::nullopt;
     // What the 3D view draws now, from the GPU; hidden items are not drawn, so not exported.

@@ -113,6 +113,7 @@ void TestTrace::write(const EditorSnapshot& e) {
     j["palette"] = e.palette.open;
     j["help"] = e.help;
     j["error"] = e.dialogs.errorMessage();
+    j["changedFile"] = e.dialogs.changedFile();
     j["frameMs"] = e.report.frameMs;
     j["renderMs"] = stats.wallMs;
     j["gpuMs"] = stats.gpuMs;

@@ -1,5 +1,6 @@
 // The modal prompts (ui/panels/dialogs.hpp): an error message, the unsaved-changes prompt (Save, Discard or
-// Cancel; the first two go on with the command that asked), and the offer to recover an autosave; and
+// Cancel; the first two go on with the command that asked), the offer to recover an autosave, and the
+// question before a save replaces a file another program changed (Overwrite, Save As, Cancel); and
 // the one place that opens, shows and closes every modal, the file browser's too (issue 72).
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -36,6 +37,8 @@ const char* modalPopupName(Modal m) {
             return "Unsaved changes##unsaved";
         case Modal::Recover:
             return "Recover autosave##recover";
+        case Modal::Changed:
+            return "File changed on disk##changed";
         case Modal::None:
             break;
     }
@@ -62,6 +65,11 @@ void Dialogs::askToDiscard(const std::vector<std::string>& words) {
 void Dialogs::showError(const std::string& message) {
     errorMessage_ = message;  // one shown now or waiting shows the latest
     request(Modal::Error);
+}
+
+void Dialogs::askOverwriteChanged(const std::string& path) {
+    changedPath_ = path;
+    request(Modal::Changed);
 }
 
 void Dialogs::offerRecovery(std::vector<AutosaveEntry> entries) {
@@ -95,6 +103,9 @@ void Dialogs::drawModals(PanelContext& ctx, const std::function<void()>& recover
             break;
         case Modal::Recover:
             drawRecover(recoverFirst);
+            break;
+        case Modal::Changed:
+            drawChanged(ctx);
             break;
         case Modal::None:
             break;
@@ -146,6 +157,39 @@ void Dialogs::drawUnsaved(PanelContext& ctx) {
         closeShown();
     }
     tip("Keep editing");
+    ImGui::EndPopup();
+}
+
+void Dialogs::drawChanged(PanelContext& ctx) {
+    if (!beginCentredModal(modalPopupName(Modal::Changed))) return;
+    ImGui::PushTextWrapPos(560.0f);
+    ImGui::Text("%s was changed by another program since it was opened or saved here.", changedPath_.c_str());
+    ImGui::TextUnformatted("Overwrite replaces that program's work with this document; Save As keeps both.");
+    ImGui::PopTextWrapPos();
+    const std::string path = changedPath_;
+    if (widget::Button("Overwrite##changed.overwrite", ImVec2(120, 0))) {
+        changedPath_.clear();
+        closeShown();
+        ctx.runCommand(std::vector<std::string>{"save", path, "overwrite"});
+        if (!pendingCommand_.empty() && !ctx.session().isModified()) ctx.runCommand(std::exchange(pendingCommand_, {}), false);
+    }
+    tip("Replace the file with this document");
+    ImGui::SameLine();
+    if (widget::Button("Save As##changed.saveas", ImVec2(120, 0))) {
+        changedPath_.clear();
+        closeShown();
+        runPendingAfterSave_ = !pendingCommand_.empty();  // a New / Open / Quit that asked goes on once written
+        openFileDialog(FileDialogKind::SaveAs, ctx.session().doc.name);
+        ctx.wake();
+    }
+    tip("Save under another name; the changed file stays as it is");
+    ImGui::SameLine();
+    if (widget::Button("Cancel##changed.cancel", ImVec2(120, 0)) || ctx.keyPressed(GLFW_KEY_ESCAPE, 0)) {
+        changedPath_.clear();
+        pendingCommand_.clear();
+        closeShown();
+    }
+    tip("Keep editing; nothing is written");
     ImGui::EndPopup();
 }
 

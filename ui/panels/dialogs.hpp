@@ -1,6 +1,7 @@
 // The editor's dialogs: the file browser (dialog_file_browser.cpp: Open, Import, Save As, Export
 // glTF, Screenshot) and the modal prompts (dialog_modals.cpp: errors, the unsaved-changes prompt
-// whose answer runs the command that asked, autosave recovery).
+// whose answer runs the command that asked, autosave recovery, a save over a file another program
+// changed).
 //
 // Dialogs is the one owner of the editor's modal popups (issue 72). A request (a file dialog, an
 // error, the prompt, the recovery offer) may come at any point of a frame; it is queued, and
@@ -27,7 +28,7 @@ inline namespace panels {
 enum class FileDialogMode { None, Open, SaveAs, Import, ExportGltf, Screenshot, DomainFigure, SweepAnimation, HeightMap };
 
 // The modal popups the editor has; one is shown at a time.
-enum class Modal { None, FileBrowser, Error, Unsaved, Recover };
+enum class Modal { None, FileBrowser, Error, Unsaved, Recover, Changed };
 // Its Dear ImGui popup name ("Error##error": traced as `error`); "" for None.
 const char* modalPopupName(Modal m);
 
@@ -39,6 +40,10 @@ public:
     // The unsaved-changes prompt; Save or Discard then run `words` unguarded.
     void askToDiscard(const std::vector<std::string>& words);
     void showError(const std::string& message);
+    // `save` over `path`, which another program changed since it was opened or saved here: Overwrite
+    // (runs `save PATH overwrite`), Save As, or Cancel. A command waiting on the unsaved-changes
+    // prompt goes on once the document is saved either way.
+    void askOverwriteChanged(const std::string& path);
     // Offers the first of these at the next frame (found at start-up); none withdraws the offer.
     void offerRecovery(std::vector<AutosaveEntry> entries);
 
@@ -53,6 +58,7 @@ public:
     std::vector<AutosaveEntry> recoverable;  // autosaves of sessions that did not exit cleanly
     bool unsavedPromptOpen() const { return !pendingCommand_.empty(); }
     const std::string& errorMessage() const { return errorMessage_; }
+    const std::string& changedFile() const { return changedPath_; }  // the file askOverwriteChanged asks about ("" when none)
 
 private:
     void request(Modal m);   // queued unless shown or queued already
@@ -62,6 +68,7 @@ private:
     void drawError(PanelContext& ctx);
     void drawUnsaved(PanelContext& ctx);
     void drawRecover(const std::function<void()>& recoverFirst);
+    void drawChanged(PanelContext& ctx);
 
     Modal shown_ = Modal::None;
     std::deque<Modal> waiting_;
@@ -69,6 +76,7 @@ private:
     std::filesystem::path browseDir_;
     char fileName_[512] = {};
     std::string errorMessage_;
+    std::string changedPath_;
     std::vector<std::string> pendingCommand_;  // waits for the unsaved-changes prompt (empty = none)
     bool focusName_ = false;                   // the file dialog's name field takes the keyboard when it opens
     bool runPendingAfterSave_ = false;         // Save As from that prompt: run it once the file is written
