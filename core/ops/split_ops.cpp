@@ -203,6 +203,24 @@ std::vector<std::pair<RingCut, uint32_t>> splitRing(Document& doc, uint32_t p, b
     }
     doc.joins = std::move(joins);
     for (size_t j : rescaled) remeasureJoin(doc, j);
+    // A live blend's (or open loft's) end on a cut patch: its join was measured again above, and the
+    // construction makes its surface with that ratio from now on. It kept the ratio it was made with,
+    // so holding the join moved the input's rows again at every reopen (issue 73).
+    for (Construction& k : doc.constructions) {
+        if (!((k.kind == ConstructionKind::Loft && !k.closed) || k.kind == ConstructionKind::Blend) || k.inputs.empty()) continue;
+        for (size_t end = 0; end < 2; ++end) {
+            const CurveInput& in = end == 0 ? k.inputs.front() : k.inputs.back();
+            const bool cut = in.curve < 0 && std::any_of(made.begin(), made.end(),
+                                                         [&](const auto& m) { return m.first.patch == in.patch || m.second == in.patch; });
+            if (!cut) continue;
+            for (const Join& j : doc.joins)
+                if (j.patchA == in.patch && j.edgeA == in.edge &&
+                    std::find(k.patches.begin(), k.patches.end(), j.patchB) != k.patches.end()) {
+                    k.endAlpha[end] = j.alpha;
+                    break;
+                }
+        }
+    }
     compactPool(doc);
     return made;
 }
