@@ -336,3 +336,30 @@ TEST(Splits, ASplitBesideALiveBlendReopensToTheSameDocument) {
     EXPECT_EQ(serializeDocument(again.documentToSave()), saved);
     EXPECT_LE(maxConstraintResidual(s.doc), 1e-9 * modelSize(s.doc));
 }
+
+// Turning a live blend's input patch (issue 73): its u0 and u1 trade names with it, so the blend is
+// made from the same edges and the document reopens the same; a v edge would run backwards, so
+// turning its patch is refused until the blend is baked.
+TEST(Blends, FlippingAnInputPatchKeepsTheBlendOnItsEdges) {
+    EditSession s;
+    s.open((test::dataDir() / "trimmed_plate.patchwork").string());
+    test::runEditScript(s, "blend 0:u1 0:u0 G1");
+    const Document blended = s.doc;
+    test::runEditScript(s, "select patch 0; flip");
+    ASSERT_EQ(s.doc.constructions.size(), 1u);
+    EXPECT_EQ(s.doc.constructions[0].inputs[0].edge, Edge::U0);
+    EXPECT_EQ(s.doc.constructions[0].inputs[1].edge, Edge::U1);
+    const std::string saved = serializeDocument(s.documentToSave());
+    EditSession again;
+    again.reset(parseDocument(saved, "reopened.patchwork"), "");
+    EXPECT_EQ(serializeDocument(again.documentToSave()), saved);
+    EXPECT_LE(maxConstraintResidual(s.doc), 1e-9 * modelSize(s.doc));
+
+    EditSession v;
+    v.open((test::dataDir() / "trimmed_plate.patchwork").string());
+    test::runEditScript(v, "blend 0:v1 0:v0 G1");
+    const Document before = v.doc;
+    EXPECT_TRUE(refused(v, "select patch 0; flip", "bake that surface first (bake k0)"));
+    EXPECT_EQ(v.doc.patches, before.patches);
+    test::runEditScript(v, "bake k0; select patch 0; flip");
+}

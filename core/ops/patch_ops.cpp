@@ -135,6 +135,23 @@ void flipPatches(Document& doc, const std::vector<uint32_t>& patches) {
     std::vector<char> flipped(doc.patches.size(), 0);
     for (uint32_t p : patches) {
         checkPatch(doc, p);
+        flipped[p] = 1;
+    }
+    // A live surface's input edge on a turned patch: u0 and u1 trade names (the same points in the
+    // same order); a v edge would run backwards and change the surface, so that is refused. Checked
+    // before anything changes. (Its inputs used to keep their names: the surface was made from the
+    // other edge at the next reopen; issue 73.)
+    for (size_t k = 0; k < doc.constructions.size(); ++k)
+        for (const CurveInput& in : doc.constructions[k].inputs)
+            if (in.curve < 0 && in.patch < flipped.size() && flipped[in.patch] && (in.edge == Edge::V0 || in.edge == Edge::V1))
+                throw EditError("edge " + std::string(edgeName(in.edge)) + " of patch " + std::to_string(in.patch) +
+                                " is an input of live surface k" + std::to_string(k) +
+                                "; turning the patch would run it backwards: bake that surface first (bake k" + std::to_string(k) + ")");
+    for (Construction& c : doc.constructions)
+        for (CurveInput& in : c.inputs)
+            if (in.curve < 0 && in.patch < flipped.size() && flipped[in.patch]) in.edge = oppositeEdge(in.edge);
+    std::fill(flipped.begin(), flipped.end(), 0);
+    for (uint32_t p : patches) {
         if (flipped[p]) continue;
         flipped[p] = 1;
         Patch& pt = doc.patches[p];
