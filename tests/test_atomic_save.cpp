@@ -31,6 +31,21 @@ int temporaries(const fs::path& dir) {
     return n;
 }
 
+// A child process that saves `data` over `target` with writeFileAtomic and exits (3 when the save
+// throws); its pid, for the parent to kill in the middle.
+pid_t forkWriter(const fs::path& target, const std::string& data) {
+    const pid_t child = fork();
+    if (child == 0) {
+        try {
+            pw::writeFileAtomic(target, data);
+        } catch (...) {
+            _exit(3);
+        }
+        _exit(0);
+    }
+    return child;
+}
+
 }  // namespace
 
 TEST(AtomicSave, KilledInTheMiddleOfASaveLeavesTheOldFileIntact) {
@@ -52,16 +67,8 @@ TEST(AtomicSave, KilledInTheMiddleOfASaveLeavesTheOldFileIntact) {
     std::uniform_real_distribution<double> when(0.0, 1.2 * saveUs);
     int intact = 0, replaced = 0, interrupted = 0;
     for (int trial = 0; trial < 16; ++trial) {
-        const pid_t child = fork();
+        const pid_t child = forkWriter(target, newData);
         ASSERT_GE(child, 0);
-        if (child == 0) {
-            try {
-                pw::writeFileAtomic(target, newData);
-            } catch (...) {
-                _exit(3);
-            }
-            _exit(0);
-        }
         usleep(useconds_t(when(rng)));
         kill(child, SIGKILL);
         int status = 0;
@@ -80,16 +87,8 @@ TEST(AtomicSave, KilledInTheMiddleOfASaveLeavesTheOldFileIntact) {
     }
     EXPECT_GT(interrupted, 0) << "no kill landed inside a save (one save takes " << saveUs << " µs)";
     // A killed writer's temporary file is removed by the next write into the folder.
-    const pid_t child = fork();
+    const pid_t child = forkWriter(target, newData);
     ASSERT_GE(child, 0);
-    if (child == 0) {
-        try {
-            pw::writeFileAtomic(target, newData);
-        } catch (...) {
-            _exit(3);
-        }
-        _exit(0);
-    }
     for (int i = 0; i < 2000 && temporaries(dir) == 0; ++i) usleep(500);
     kill(child, SIGKILL);
     waitpid(child, nullptr, 0);

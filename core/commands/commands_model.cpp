@@ -189,14 +189,7 @@ void execMirror(CommandContext& ctx) {
 // revolve that came out inside out is turned in one step, as mirror takes whole patches.
 void execFlip(CommandContext& ctx) {
     EditSession& s = ctx.session;
-    const std::vector<uint32_t> selected = s.selectedPoints();
-    std::vector<uint32_t> patches;
-    for (uint32_t i = 0; i < s.doc.patches.size(); ++i) {
-        const Patch& p = s.doc.patches[i];
-        if (!p.hidden &&
-            std::all_of(p.idx.begin(), p.idx.end(), [&](uint32_t q) { return std::binary_search(selected.begin(), selected.end(), q); }))
-            patches.push_back(i);
-    }
+    const std::vector<uint32_t> patches = wholeItems(s.doc.patches, s.selectedPoints());
     if (patches.empty()) throw EditError("flip: select a patch, or whole patches (all their points)");
     const std::string label = patches.size() == 1 ? "Flip patch" : "Flip " + std::to_string(patches.size()) + " patches";
     s.apply(label, [&](Document& d) { flipPatches(d, patches); });

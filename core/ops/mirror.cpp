@@ -15,16 +15,8 @@ inline namespace ops {
 
 MirrorResult mirrorItems(Document& doc, const std::vector<uint32_t>& selected, int axis, double planeAt) {
     if (axis < 0 || axis > 2) throw EditError("mirror: the axis must be X, Y or Z");
-    const auto whole = [&](const auto& idx) {
-        return std::all_of(idx.begin(), idx.end(), [&](uint32_t p) { return std::binary_search(selected.begin(), selected.end(), p); });
-    };
-    std::vector<uint32_t> patches, triangles, curves;
-    for (uint32_t i = 0; i < doc.patches.size(); ++i)
-        if (!doc.patches[i].hidden && whole(doc.patches[i].idx)) patches.push_back(i);
-    for (uint32_t i = 0; i < doc.triangles.size(); ++i)
-        if (!doc.triangles[i].hidden && whole(doc.triangles[i].idx)) triangles.push_back(i);
-    for (uint32_t i = 0; i < doc.curves.size(); ++i)
-        if (!doc.curves[i].hidden && whole(doc.curves[i].idx)) curves.push_back(i);
+    const std::vector<uint32_t> patches = wholeItems(doc.patches, selected), triangles = wholeItems(doc.triangles, selected),
+                                curves = wholeItems(doc.curves, selected);
     if (patches.empty() && triangles.empty() && curves.empty())
         throw EditError("mirror: select whole patches, triangles or curves (nets are not mirrored)");
 

@@ -6,6 +6,7 @@
 // C1), else C0.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -19,6 +20,18 @@ struct MirrorResult {
     std::vector<uint32_t> points;                      // every point of the new items (sorted)
     size_t seamJoins = 0;                              // joins made on the plane
 };
+
+// The visible items of `items` (patches, triangles or curves) whose points are all in `selected`
+// (a sorted pool list): what mirror, and flip, take from a selection of points.
+template <class Item>
+std::vector<uint32_t> wholeItems(const std::vector<Item>& items, const std::vector<uint32_t>& selected) {
+    std::vector<uint32_t> out;
+    for (uint32_t i = 0; i < items.size(); ++i)
+        if (!items[i].hidden && std::all_of(items[i].idx.begin(), items[i].idx.end(),
+                                            [&](uint32_t p) { return std::binary_search(selected.begin(), selected.end(), p); }))
+            out.push_back(i);
+    return out;
+}
 
 // Mirrors the items whose points are all in `selected` (a sorted pool list). `axis` 0, 1, 2;
 // `planeAt` the plane's coordinate on that axis. Throws EditError when no whole item is selected.

@@ -132,28 +132,27 @@ void deletePatch(Document& doc, uint32_t p) {
 int flippedSlot(int s) { return (s / 4) * 4 + 3 - s % 4; }
 
 void flipPatches(Document& doc, const std::vector<uint32_t>& patches) {
-    std::vector<char> flipped(doc.patches.size(), 0);
+    std::vector<char> flipped(doc.patches.size(), 0);  // each patch once, however often it is named
     for (uint32_t p : patches) {
         checkPatch(doc, p);
         flipped[p] = 1;
     }
+    const auto turned = [&](uint32_t item) { return item < flipped.size() && flipped[item]; };
     // A live surface's input edge on a turned patch: u0 and u1 trade names (the same points in the
     // same order); a v edge would run backwards and change the surface, so that is refused. Checked
     // before anything changes. (Its inputs used to keep their names: the surface was made from the
     // other edge at the next reopen; issue 73.)
     for (size_t k = 0; k < doc.constructions.size(); ++k)
         for (const CurveInput& in : doc.constructions[k].inputs)
-            if (in.curve < 0 && in.patch < flipped.size() && flipped[in.patch] && (in.edge == Edge::V0 || in.edge == Edge::V1))
+            if (in.curve < 0 && turned(in.patch) && (in.edge == Edge::V0 || in.edge == Edge::V1))
                 throw EditError("edge " + std::string(edgeName(in.edge)) + " of patch " + std::to_string(in.patch) +
                                 " is an input of live surface k" + std::to_string(k) +
                                 "; turning the patch would run it backwards: bake that surface first (bake k" + std::to_string(k) + ")");
     for (Construction& c : doc.constructions)
         for (CurveInput& in : c.inputs)
-            if (in.curve < 0 && in.patch < flipped.size() && flipped[in.patch]) in.edge = oppositeEdge(in.edge);
-    std::fill(flipped.begin(), flipped.end(), 0);
-    for (uint32_t p : patches) {
-        if (flipped[p]) continue;
-        flipped[p] = 1;
+            if (in.curve < 0 && turned(in.patch)) in.edge = oppositeEdge(in.edge);
+    for (uint32_t p = 0; p < flipped.size(); ++p) {
+        if (!flipped[p]) continue;
         Patch& pt = doc.patches[p];
         for (int s = 0; s < 16; ++s)
             if (s % 4 < 2) std::swap(pt.idx[size_t(s)], pt.idx[size_t(flippedSlot(s))]);
@@ -170,7 +169,7 @@ void flipPatches(Document& doc, const std::vector<uint32_t>& patches) {
             const bool isA = side == 0;
             Edge& e = isA ? j.edgeA : j.edgeB;
             const uint32_t item = isA ? j.patchA : j.patchB;
-            if (isTriangleEdge(e) || item >= flipped.size() || !flipped[item]) continue;
+            if (isTriangleEdge(e) || !turned(item)) continue;
             if (e == Edge::U0 || e == Edge::U1) {
                 e = oppositeEdge(e);
             } else {
