@@ -36,11 +36,11 @@ TEST(ConcurrentSave, ASecondEditorsSaveIsNotDiscardedSilently) {
     EditSession first, second;
     first.open(file);
     second.open(file);
-    run(second, "select patch 0; move 0 0 1");
+    run(second, "select patch 0; move 0 0 0.2");
     run(second, "save " + file);  // the second editor saves first
     const Document secondsWork = loadDocument(file);
 
-    run(first, "select patch 1; move 0 0 -1");
+    run(first, "select patch 1; move 0 0 -0.2");
     try {
         run(first, "save " + file);
         FAIL() << "the first editor's save replaced the second's work";
@@ -54,7 +54,7 @@ TEST(ConcurrentSave, ASecondEditorsSaveIsNotDiscardedSilently) {
     // Asked for, it replaces the file; then its own later saves go ahead without asking.
     run(first, "save " + file + " overwrite");
     EXPECT_EQ(loadDocument(file).points, first.doc.points);
-    run(first, "select patch 2; move 1 0 0");
+    run(first, "select patch 2; move 0.2 0 0");
     run(first, "save " + file);
     EXPECT_EQ(loadDocument(file).points, first.doc.points);
     // Saving under another name is never refused.

@@ -326,8 +326,7 @@ TEST(Splits, ASplitThroughALiveSurfacesInputIsRefusedAndItsFarEdgeFollows) {
 // beside the input edge that the blend reads, so the surfaces are made again until they stay.
 TEST(Splits, ASplitBesideALiveBlendReopensToTheSameDocument) {
     EditSession s;
-    s.open((test::dataDir() / "bspline_tube.patchwork").string());
-    test::runEditScript(s, "add-patch; mirror Y; duplicate; split u 0.792; blend 2:v0 3:v1 G2; select patch 2; split v 0.609");
+    test::runEditScript(s, "add-patch; cursor 3 0 1; add-patch; blend 0:u1 1:u0 G2; select patch 0; split u 0.609");
     ASSERT_EQ(s.doc.constructions.size(), 1u);
     EXPECT_TRUE(s.doc.constructions[0].error.empty()) << s.doc.constructions[0].error;
     const std::string saved = serializeDocument(s.documentToSave());
@@ -341,14 +340,14 @@ TEST(Splits, ASplitBesideALiveBlendReopensToTheSameDocument) {
 // made from the same edges and the document reopens the same; a v edge would run backwards, so
 // turning its patch is refused until the blend is baked.
 TEST(Blends, FlippingAnInputPatchKeepsTheBlendOnItsEdges) {
+    // Two patches apart, a blend between their facing u edges; patch 0 turned: its u1 is now u0.
     EditSession s;
-    s.open((test::dataDir() / "trimmed_plate.patchwork").string());
-    test::runEditScript(s, "blend 0:u1 0:u0 G1");
+    test::runEditScript(s, "add-patch; cursor 3 0 1; add-patch; blend 0:u1 1:u0 G1");
     const Document blended = s.doc;
     test::runEditScript(s, "select patch 0; flip");
     ASSERT_EQ(s.doc.constructions.size(), 1u);
     EXPECT_EQ(s.doc.constructions[0].inputs[0].edge, Edge::U0);
-    EXPECT_EQ(s.doc.constructions[0].inputs[1].edge, Edge::U1);
+    EXPECT_EQ(s.doc.constructions[0].inputs[1].edge, Edge::U0);
     const std::string saved = serializeDocument(s.documentToSave());
     EditSession again;
     again.reset(parseDocument(saved, "reopened.patchwork"), "");
@@ -356,8 +355,7 @@ TEST(Blends, FlippingAnInputPatchKeepsTheBlendOnItsEdges) {
     EXPECT_LE(maxConstraintResidual(s.doc), 1e-9 * modelSize(s.doc));
 
     EditSession v;
-    v.open((test::dataDir() / "trimmed_plate.patchwork").string());
-    test::runEditScript(v, "blend 0:v1 0:v0 G1");
+    test::runEditScript(v, "add-patch; cursor 0 3 1; add-patch; blend 0:v1 1:v0 G1");
     const Document before = v.doc;
     EXPECT_TRUE(refused(v, "select patch 0; flip", "bake that surface first (bake k0)"));
     EXPECT_EQ(v.doc.patches, before.patches);

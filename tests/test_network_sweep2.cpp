@@ -134,7 +134,7 @@ TEST(Loft, G1EndsLeaveAPatchEdgeAlongItsTangent) {
     const Vec3 e0 = s.doc.points[s.doc.patches[0].idx[size_t(edgeSlot(Edge::V1, 0))]];
     const Vec3 e3 = s.doc.points[s.doc.patches[0].idx[size_t(edgeSlot(Edge::V1, 3))]];
     const auto pt = [](const Vec3& p) { return std::to_string(p.x) + "," + std::to_string(p.y) + "," + std::to_string(p.z); };
-    const Vec3 up(0, 0, 1), ahead = glm::normalize(glm::cross(e3 - e0, up));
+    const Vec3 up(0, 0, 1), ahead = glm::normalize(glm::cross(up, e3 - e0));  // outward, past the edge
     test::runEditScript(s, "curve-control " + pt(e0 + ahead + up) + " " + pt(glm::mix(e0, e3, 1 / 3.0) + ahead + 1.3 * up) + " " +
                                pt(glm::mix(e0, e3, 2 / 3.0) + ahead + 1.3 * up) + " " + pt(e3 + ahead + up));
     test::runEditScript(s, "loft 0:v1 c0 start=G1");

@@ -2,7 +2,8 @@
 // revolves, transforms, trims, undo/redo …) on every example, through the command table as
 // `patchwork edit` runs them. A refusal is fine; what is accepted must keep the invariants a user
 // sees: after every accepted command every join measures within the document's tolerances (as
-// `info` measures it) and no patch is turned over that was not; after each script the document,
+// `info` measures it), no patch is turned over that was not and no new one is turned over where the
+// model had no fold; after each script the document,
 // saved and reopened, saves to the same bytes.
 // PATCHWORK_RANDOM_EDIT_SCRIPTS sets the scripts per example (default 4: the ctest form);
 // scripts/random_edits.sh N runs the long form. A failure names the example, the seed and the
@@ -166,10 +167,27 @@ void runRandomScripts(const std::string& example) {
                                       script.text(script.commands.size() - 1) + "'";
             const std::vector<std::string> off = joinsOut(s.doc);
             ASSERT_LE(off.size(), offBefore) << where << "\n  leaves " << off.size() << " joins out of tolerance, first: " << off[0];
-            if (before.patches.size() == s.doc.patches.size() && before.joins != s.doc.joins) {
-                const std::string fold = foldMadeBy(before, s.doc);
-                ASSERT_TRUE(fold.empty()) << where << "\n  folded " << fold;
+            // No joined patch turned over further, whatever the edit; no join held by folding or
+            // collapsing; no new patch turned over where the model had no fold.
+            if (before.patches.size() == s.doc.patches.size()) {
+                if (before.joins != s.doc.joins) {
+                    const std::string fold = foldMadeBy(before, s.doc);
+                    ASSERT_TRUE(fold.empty()) << where << "\n  folded " << fold;
+                }
+                std::vector<bool> joined(s.doc.patches.size(), false);
+                for (const Join& j : s.doc.joins)
+                    if (quadJoin(j)) joined[j.patchA] = joined[j.patchB] = true;
+                for (uint32_t p = 0; p < joined.size(); ++p) {
+                    bool moved = before.patches[p].idx != s.doc.patches[p].idx;
+                    for (uint32_t i : s.doc.patches[p].idx) moved = moved || before.points[i] != s.doc.points[i];
+                    if (joined[p] && moved) {
+                        ASSERT_LE(patchShape(s.doc, p).invertedTriangles, patchShape(before, p).invertedTriangles)
+                            << where << "\n  turned joined patch " << p << " over";
+                    }
+                }
             }
+            const std::string made = newFoldIn(before, s.doc);
+            ASSERT_TRUE(made.empty()) << where << "\n  made " << made;
         }
         // Saved and reopened, it saves to the same bytes.
         const auto file = dir / ("script-" + std::to_string(seed) + ".patchwork");

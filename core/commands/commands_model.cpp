@@ -179,7 +179,7 @@ void execMirror(CommandContext& ctx) {
     MirrorResult made;
     s.apply(
         "Mirror " + std::string(1, char('X' + axis)), [&](Document& d) { made = mirrorItems(d, selected, axis, s.cursor[axis]); }, true,
-        true);
+        Brought::DetectedJoins);
     s.sel.clear();
     s.sel.points = made.points;
     if (made.patches.size() == 1) s.sel.patch = int(made.patches[0]);

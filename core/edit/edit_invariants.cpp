@@ -57,43 +57,6 @@ void checkJoins(const Document& before, const Document& after, bool detected) {
                     "); change or unjoin the conflicting join first");
 }
 
-// Whether `after` holds a join `before` did not (a new one, or one whose continuity changed). Most
-// edits leave the joins as they were (one comparison); otherwise n log n.
-bool joinsAddedOrChanged(const Document& before, const Document& after) {
-    if (before.joins == after.joins) return false;
-    using Key = std::tuple<uint32_t, Edge, uint32_t, Edge, Continuity>;
-    auto key = [](const Join& j) { return Key{j.patchA, j.edgeA, j.patchB, j.edgeB, j.continuity}; };
-    std::vector<Key> had;
-    had.reserve(before.joins.size());
-    for (const Join& j : before.joins) had.push_back(key(j));
-    std::sort(had.begin(), had.end());
-    return std::any_of(after.joins.begin(), after.joins.end(),
-                       [&](const Join& j) { return !std::binary_search(had.begin(), had.end(), key(j)); });
-}
-
-// A join is never "held" by folding: an edit that brings in or changes joins may not turn part of a
-// patch over or collapse a tangent plane that was not so before. Checked where every patch keeps
-// its place (joining, changing continuity, corners, any edit that reshapes without adding or
-// removing patches): a split or a fill makes new patches whose shapes have no "before" (a half of a
-// cap's patch at its pole samples differently from the whole), and they check their own. The
-// operations that join name the cause more precisely first (join_ops, corner_ops, triangle_joins).
-void checkFolds(const Document& before, const Document& after) {
-    if (after.patches.size() != before.patches.size() || after.triangles.size() != before.triangles.size()) return;
-    if (!joinsAddedOrChanged(before, after)) return;
-    if (const std::string fold = foldMadeBy(before, after); !fold.empty())
-        throw EditError("refused: its joins would hold only by folding " + fold + "; join C0 or reshape the patches first");
-}
-
-// No accepted edit leaves a coordinate the file reader would refuse (issue 73: the document could
-// then no longer be saved or autosaved).
-void checkCoordinates(const Document& after) {
-    for (size_t i = 0; i < after.points.size(); ++i)
-        for (int k = 0; k < 3; ++k)
-            if (!std::isfinite(after.points[i][k]) || std::abs(after.points[i][k]) > limits::kMaxCoordinate)
-                throw EditError("refused: it would move point " + std::to_string(i) + " to " + number(after.points[i][k]) + " in " +
-                                "xyz"[k] + ", beyond the ±" + number(limits::kMaxCoordinate) + " a document may hold");
-}
-
 // Patches of `after` whose control points (their indices or positions) differ from `before`'s; new
 // patches count as changed.
 std::vector<bool> changedPatches(const Document& before, const Document& after) {
@@ -110,6 +73,70 @@ std::vector<bool> changedPatches(const Document& before, const Document& after) 
     return changed;
 }
 
+// The joins on patch p, named (at most two), for a refusal: " at join 3 (…)" or "".
+std::string joinsOnPatch(const Document& doc, int p) {
+    std::string out;
+    int named = 0;
+    for (size_t j = 0; j < doc.joins.size() && named < 2; ++j)
+        if (quadJoin(doc.joins[j]) && (int(doc.joins[j].patchA) == p || int(doc.joins[j].patchB) == p))
+            out += std::string(named++ ? " and " : " at ") + describeJoin(doc, j);
+    return out;
+}
+
+// Whether `after` holds a join `before` did not (a new one, or one whose continuity changed). Most
+// edits leave the joins as they were (one comparison); otherwise n log n.
+bool joinsAddedOrChanged(const Document& before, const Document& after) {
+    if (before.joins == after.joins) return false;
+    using Key = std::tuple<uint32_t, Edge, uint32_t, Edge, Continuity>;
+    auto key = [](const Join& j) { return Key{j.patchA, j.edgeA, j.patchB, j.edgeB, j.continuity}; };
+    std::vector<Key> had;
+    had.reserve(before.joins.size());
+    for (const Join& j : before.joins) had.push_back(key(j));
+    std::sort(had.begin(), had.end());
+    return std::any_of(after.joins.begin(), after.joins.end(),
+                       [&](const Join& j) { return !std::binary_search(had.begin(), had.end(), key(j)); });
+}
+
+// A surface never satisfies a constraint by folding or collapsing. Patch p of `before` and of
+// `after` are compared where the edit kept every patch in its place; a patch that only moved
+// rigidly, was mirrored or scaled uniformly keeps its shape and is not measured.
+// - An edit that brings in or changes joins may not turn part of a reshaped patch over or collapse
+//   a tangent plane that was not so.
+// - Any other edit (a move, a rotation, a scale whose joins drag the neighbours) may not turn over
+//   part of a reshaped patch that has a join. A patch with no join has no constraint to satisfy: its
+//   shape, collapsed corners included (a pole), is the user's own.
+// New patches have no "before": they may not be turned over at all where the model had no fold
+// (newFoldIn), unless an import brought them (Brought::File: the shapes are the file's own). The
+// operations that join name the cause more precisely first (join_ops, corner_ops, triangle_joins).
+std::string foldRefusal(const Document& before, const Document& after, const std::vector<bool>& changed, Brought brought) {
+    if (const std::string fold = brought == Brought::File ? "" : newFoldIn(before, after); !fold.empty())
+        return "refused: it would make a folded surface, " + fold + "; change the edges or curves it is made from";
+    if (after.patches.size() != before.patches.size() || after.triangles.size() != before.triangles.size()) return "";
+    if (joinsAddedOrChanged(before, after)) {
+        const std::string fold = foldMadeBy(before, after);
+        return fold.empty() ? "" : "refused: its joins would hold only by folding " + fold + "; join C0 or reshape the patches first";
+    }
+    std::vector<bool> joined(after.patches.size(), false);
+    for (const Join& j : after.joins)
+        if (quadJoin(j) && j.patchA < joined.size() && j.patchB < joined.size()) joined[j.patchA] = joined[j.patchB] = true;
+    for (size_t p = 0; p < joined.size() && p < changed.size(); ++p) joined[p] = joined[p] && changed[p];
+    int patch = -1;
+    const std::string fold = foldMadeIn(before, after, joined, true, &patch);
+    if (fold.empty()) return "";
+    return "refused: holding its joins would fold " + fold + joinsOnPatch(after, patch) +
+           "; move less, unjoin that join, or join with less continuity";
+}
+
+// No accepted edit leaves a coordinate the file reader would refuse (issue 73: the document could
+// then no longer be saved or autosaved).
+void checkCoordinates(const Document& after) {
+    for (size_t i = 0; i < after.points.size(); ++i)
+        for (int k = 0; k < 3; ++k)
+            if (!std::isfinite(after.points[i][k]) || std::abs(after.points[i][k]) > limits::kMaxCoordinate)
+                throw EditError("refused: it would move point " + std::to_string(i) + " to " + number(after.points[i][k]) + " in " +
+                                "xyz"[k] + ", beyond the ±" + number(limits::kMaxCoordinate) + " a document may hold");
+}
+
 std::string measuredFailure(const JoinContinuity& m, uint8_t f, const ContinuityTolerances& tol) {
     std::string out;
     auto add = [&](const std::string& s) { out += (out.empty() ? "" : ", ") + s; };
@@ -124,8 +151,7 @@ std::string measuredFailure(const JoinContinuity& m, uint8_t f, const Continuity
 // between patches the edit changed is measured as `info` and the Continuity panel measure it,
 // against the document's tolerances. One that was out the same way before and got no worse may
 // stay (a file read so); fitted joins are held by their own angle (checkFittedAngles).
-void checkMeasured(const Document& before, const Document& after) {
-    const std::vector<bool> changed = changedPatches(before, after);
+void checkMeasured(const Document& before, const Document& after, const std::vector<bool>& changed) {
     std::vector<size_t> only;
     const bool joinsSame = before.joins == after.joins;
     for (size_t j = 0; j < after.joins.size(); ++j) {
@@ -179,6 +205,10 @@ void checkMeasured(const Document& before, const Document& after) {
 
 }  // namespace
 
+std::string foldRefusal(const Document& before, const Document& after) {
+    return foldRefusal(before, after, changedPatches(before, after), Brought::Nothing);
+}
+
 double joinTolerance(const Document& doc) { return 1e-6 * modelSize(doc) + 1e-12; }
 
 std::string describeJoin(const Document& doc, size_t j) {
@@ -187,12 +217,14 @@ std::string describeJoin(const Document& doc, size_t j) {
            std::string(continuityName(jn.continuity)) + ")";
 }
 
-void checkEditInvariants(const Document& before, const Document& after, bool detected) {
+void checkEditInvariants(const Document& before, const Document& after, Brought brought) {
+    const bool detected = brought != Brought::Nothing;
     checkCoordinates(after);
     checkJoins(before, after, detected);
     checkFittedAngles(before, after);
-    checkMeasured(before, after);
-    checkFolds(before, after);
+    const std::vector<bool> changed = changedPatches(before, after);
+    checkMeasured(before, after, changed);
+    if (std::string fold = foldRefusal(before, after, changed, brought); !fold.empty()) throw EditError(fold);
 }
 
 }  // namespace edit

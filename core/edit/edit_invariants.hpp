@@ -6,6 +6,7 @@
 // passes.)
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "core/model/document.hpp"
@@ -20,10 +21,19 @@ double joinTolerance(const Document& doc);
 std::string describeJoin(const Document& doc, size_t j);
 
 // Throws EditError when `after` leaves a join outside joinTolerance, unless the document before
-// was already that far off and the edit made it no worse; or when it adds or changes a join and
-// folds a patch or triangle (turned-over triangles or a collapsed corner it did not have). `detected`: the edit brought in joins
-// found by join detection (import, mirror), held to detection's own tolerance (1e-4 × model size).
-void checkEditInvariants(const Document& before, const Document& after, bool detected = false);
+// was already that far off and the edit made it no worse; when a join it measures along the seam
+// is out of the document's tolerances; or when it folds a patch or triangle it reshaped
+// (turned-over triangles or a collapsed corner it did not have) or makes a new one turned over.
+// What an edit brings in besides its own work: joins found by join detection (a mirror's, an
+// import's), held to detection's own tolerance (1e-4 × model size) like a file that is opened; and
+// for an import, surfaces whose shapes are the file's own (not checked for folds).
+enum class Brought : uint8_t { Nothing, DetectedJoins, File };
+
+void checkEditInvariants(const Document& before, const Document& after, Brought brought = Brought::Nothing);
+
+// The fold part of checkEditInvariants, for the editor's drags (which commit without apply): ""
+// when `after` folds nothing, else the refusal, naming the patch and the joins on it.
+std::string foldRefusal(const Document& before, const Document& after);
 
 }  // namespace edit
 }  // namespace pw

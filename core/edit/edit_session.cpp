@@ -80,7 +80,7 @@ MergedRange EditSession::import(const std::string& path) {
             r = mergeDocument(d, from);
             moveClearOfExisting(d, r.firstPoint);
         },
-        true, true);
+        true, Brought::File);
     // The imported content arrives selected: its points, and the patch when it is the only thing.
     sel.clear();
     for (uint32_t i = 0; i < r.pointCount; ++i) sel.points.push_back(r.firstPoint + i);
@@ -109,11 +109,23 @@ bool EditSession::step(bool forward) {
     return true;
 }
 
-void EditSession::apply(const std::string& label, const std::function<void(Document&)>& op, bool topology, bool detected) {
+void EditSession::apply(const std::string& label, const std::function<void(Document&)>& op, bool topology, Brought brought) {
     Document d = doc;
     op(d);
     std::vector<std::string> notes = refreshConstructions(d);
-    checkEditInvariants(doc, d, detected);
+    try {
+        checkEditInvariants(doc, d, brought);
+    } catch (const EditError& e) {
+        // A live surface whose inputs no longer fit keeps its last shape; when that is what broke
+        // an invariant (a loft's section moved onto the other: its boundary follows, its inside
+        // cannot), the refusal says why.
+        std::string why = e.what();
+        for (size_t i = 0; i < d.constructions.size(); ++i)
+            if (!d.constructions[i].error.empty() && (i >= doc.constructions.size() || doc.constructions[i].error.empty()))
+                why += "; the " + std::string(constructionKindName(d.constructions[i].kind)) +
+                       " could not follow its inputs: " + d.constructions[i].error;
+        throw EditError(why);
+    }
     notes_.insert(notes_.end(), notes.begin(), notes.end());
     doc = std::move(d);
     commit(label);

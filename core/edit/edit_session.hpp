@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/base/file_io.hpp"
+#include "core/edit/edit_invariants.hpp"
 #include "core/io/gltf_export.hpp"
 #include "core/model/document.hpp"
 #include "core/model/document_merge.hpp"
@@ -82,9 +83,10 @@ public:
     // from their inputs with the joins held (core/edit/live_constructions.hpp), the copy becomes the
     // document and one undo step. When either throws, the document is unchanged and the exception
     // goes on.
-    // `detected`: the edit brings in joins found by join detection (import, mirror), which may be
-    // off by detection's own tolerance (1e-4 × model size) like a file that is opened.
-    void apply(const std::string& label, const std::function<void(Document&)>& op, bool topology = true, bool detected = false);
+    // `brought`: what the edit brings in besides its own work (checkEditInvariants): joins found by
+    // detection (mirror), or a file's surfaces and joins (import).
+    void apply(const std::string& label, const std::function<void(Document&)>& op, bool topology = true,
+               Brought brought = Brought::Nothing);
     // The same for an edit of items' own tessellation levels only (changedLevels).
     void applyLevels(const std::string& label, const std::function<void(Document&)>& op) { applyKeepingShape(label, op, true); }
     // The same for an edit of what a renderer's scene does not hold: settings that travel in its

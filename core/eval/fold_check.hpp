@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "core/model/document.hpp"
 
@@ -37,6 +38,20 @@ inline bool foldedFurther(const PatchShape& before, const PatchShape& after) {
 // same patch (the operations that join keep the patches' order); of those whose shape changed, the
 // first that foldedFurther. "" when none, else "patch 3 (5 of its triangles turned over)".
 std::string foldMadeBy(const Document& before, const Document& after);
+
+// foldMadeBy over the patches `changed` marks (patch p of `before` and of `after` are the same
+// patch; Bézier triangles are not looked at), for an edit that already knows them; `turnedOnly`: only turned-over triangles count, not
+// collapsed corners; `foldedPatch`, when given, receives the patch named. Both leave out a patch
+// that only moved as a rigid body, was mirrored or scaled uniformly: its shape is the same.
+std::string foldMadeIn(const Document& before, const Document& after, const std::vector<bool>& changed, bool turnedOnly = false,
+                       int* foldedPatch = nullptr);
+
+// The first new patch (then Bézier triangle) of `after` (those past `before`'s count: a loft's, a
+// blend's, a fill's, a revolve's, a split's or a copy's) with a triangle turned over, where `before`
+// had none turned over anywhere: a model without folds may gain none. A model that already had
+// some may carry them into copies and pieces (mirror, duplicate, split of a folded import), so it
+// is not checked. "" when none, else as foldMadeBy.
+std::string newFoldIn(const Document& before, const Document& after);
 
 }  // namespace eval
 }  // namespace pw

@@ -325,8 +325,9 @@ void Editor::updateDrag(double mx, double my) {
 
 void Editor::finishDrag() {
     mode_ = Interaction::None;
-    drag_.finish(session_);
+    const std::string refused = drag_.finish(session_);
     documentChanged(false);
+    if (!refused.empty()) status(refused);
 }
 
 void Editor::cancelDrag() {
