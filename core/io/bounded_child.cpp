@@ -6,9 +6,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <new>
 #include <stdexcept>
 
@@ -50,7 +52,52 @@ bool writeAll(int fd, const std::string& s) {
     return true;
 }
 
+// The processor time a child has used so far, in seconds (/proc/PID/stat's utime + stime, all its
+// threads); -1 when it cannot be read.
+double cpuSecondsOf(pid_t pid) {
+    char path[64];
+    std::snprintf(path, sizeof path, "/proc/%d/stat", int(pid));
+    std::FILE* f = std::fopen(path, "r");
+    if (!f) return -1.0;
+    char line[1024];
+    const size_t n = std::fread(line, 1, sizeof line - 1, f);
+    std::fclose(f);
+    line[n] = 0;
+    const char* rest = std::strrchr(line, ')');  // the command name may hold spaces and parentheses
+    if (!rest) return -1.0;
+    unsigned long long ticks[2] = {0, 0};
+    // After ") ": state (field 3) … utime (field 14), stime (field 15).
+    if (std::sscanf(rest + 1, " %*c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u %llu %llu", &ticks[0], &ticks[1]) != 2) return -1.0;
+    return double(ticks[0] + ticks[1]) / double(::sysconf(_SC_CLK_TCK));
+}
+
 }  // namespace
+
+std::string cadChildFailure(const BoundedResult& r, const std::string& doing, double seconds, std::size_t memoryBytes) {
+    char text[300];
+    switch (r.kind) {
+        case BoundedResult::Kind::TimedOut:
+            std::snprintf(text, sizeof text,
+                          "OpenCASCADE did not finish %s within %g s of processor time (PATCHWORK_CAD_SECONDS sets the limit; a damaged "
+                          "file can make it loop)",
+                          doing.c_str(), seconds);
+            return text;
+        case BoundedResult::Kind::OutOfMemory:
+            std::snprintf(text, sizeof text, "OpenCASCADE needed more than %zu MiB %s (the limit for a STEP or IGES file)",
+                          memoryBytes >> 20, doing.c_str());
+            return text;
+        case BoundedResult::Kind::Crashed:
+            if (r.signal)
+                std::snprintf(text, sizeof text, "OpenCASCADE crashed %s (signal %d, %s)", doing.c_str(), r.signal,
+                              r.signal == SIGKILL || r.signal == SIGSEGV ? "perhaps its memory limit" : "a fault in it");
+            else
+                std::snprintf(text, sizeof text, "OpenCASCADE failed %s", doing.c_str());
+            return text;
+        case BoundedResult::Kind::Done:
+            break;
+    }
+    return {};
+}
 
 BoundedResult runBounded(const std::function<std::string()>& work, double seconds, std::size_t memoryBytes) {
     int fds[2];
@@ -81,17 +128,20 @@ BoundedResult runBounded(const std::function<std::string()>& work, double second
     ::close(fds[1]);
     BoundedResult result;
     std::string got;
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    // The budget is the child's processor time, read every 50 ms, so that a loaded machine does not
+    // refuse a file an idle one reads (issue 66); wall time past three budgets (a child that waits
+    // on nothing) ends it too.
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(3.0 * seconds);
     bool timedOut = false;
     char buf[65536];
     for (;;) {
         const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()).count();
-        if (left <= 0) {
+        if (left <= 0 || cpuSecondsOf(pid) >= seconds) {
             timedOut = true;
             break;
         }
         pollfd p{fds[0], POLLIN, 0};
-        const int r = ::poll(&p, 1, int(std::min<long long>(left, 1000)));
+        const int r = ::poll(&p, 1, int(std::clamp<long long>(left, 1, 50)));
         if (r < 0 && errno == EINTR) continue;
         if (r <= 0) continue;
         const ssize_t n = ::read(fds[0], buf, sizeof buf);

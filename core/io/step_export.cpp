@@ -406,26 +406,6 @@ std::string countFacesHeld(const std::filesystem::path& path, bool iges) {
     }
 }
 
-// What a child that ended otherwise than with an answer did, in words.
-std::string childFailure(const BoundedResult& r, const char* what, double seconds) {
-    char text[200];
-    switch (r.kind) {
-        case BoundedResult::Kind::TimedOut:
-            std::snprintf(text, sizeof text, "OpenCASCADE did not finish %s within %g s (PATCHWORK_CAD_SECONDS sets the limit)", what,
-                          seconds);
-            return text;
-        case BoundedResult::Kind::OutOfMemory:
-            std::snprintf(text, sizeof text, "OpenCASCADE needed more than %zu MiB %s", limits::kMaxCadImportBytes >> 20, what);
-            return text;
-        case BoundedResult::Kind::Crashed:
-            std::snprintf(text, sizeof text, "OpenCASCADE crashed %s (signal %d); nothing was written", what, r.signal);
-            return text;
-        case BoundedResult::Kind::Done:
-            break;
-    }
-    return {};
-}
-
 }  // namespace
 
 std::string exportStepText(const Document& doc, const StepExportOptions& options, StepExportStats* stats) {
@@ -465,7 +445,9 @@ StepExportStats exportStep(const Document& doc, const std::filesystem::path& pat
             }
         },
         seconds, limits::kMaxCadImportBytes);
-    if (written.kind != BoundedResult::Kind::Done) throw OutputError(path.string(), childFailure(written, "writing it", seconds));
+    if (written.kind != BoundedResult::Kind::Done)
+        throw OutputError(path.string(),
+                          cadChildFailure(written, "writing it", seconds, limits::kMaxCadImportBytes) + "; nothing was written");
     const std::string& out = written.output;
     if (out.empty() || out[0] != 'T')
         throw OutputError(path.string(), out.empty() ? std::string("OpenCASCADE wrote nothing") : out.substr(1));
@@ -476,7 +458,9 @@ StepExportStats exportStep(const Document& doc, const std::filesystem::path& pat
     const std::string_view text = std::string_view(out).substr(eol == std::string::npos ? out.size() : eol + 1);
     writeFileAtomic(path, text, [&](const std::filesystem::path& staged) {
         const BoundedResult read = runBounded([&] { return countFacesHeld(staged, iges); }, seconds, limits::kMaxCadImportBytes);
-        if (read.kind != BoundedResult::Kind::Done) throw InputError(path.string(), childFailure(read, "reading it back", seconds));
+        if (read.kind != BoundedResult::Kind::Done)
+            throw InputError(path.string(),
+                             cadChildFailure(read, "reading it back", seconds, limits::kMaxCadImportBytes) + "; nothing was written");
         if (read.output.empty() || read.output[0] != 'F')
             throw InputError(path.string(), read.output.empty() ? "no answer" : read.output.substr(1));
         const size_t faces = size_t(std::atoll(read.output.c_str() + 1));

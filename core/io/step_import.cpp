@@ -525,22 +525,8 @@ Document importCadSurfaces(const std::filesystem::path& path, CadImportReport* r
     const double seconds = cadSecondsLimit(limits::kMaxCadImportSeconds);
     const auto held = occt::lock();
     const BoundedResult r = runBounded([&] { return encodeResult(path, step, bytes); }, seconds, limits::kMaxCadImportBytes);
-    char budget[64];
-    std::snprintf(budget, sizeof budget, "%g s", seconds);
-    switch (r.kind) {
-        case BoundedResult::Kind::TimedOut:
-            throw InputError(path.string(), std::string("OpenCASCADE did not finish reading it within ") + budget +
-                                                " (the limit for a STEP or IGES import; a damaged file can make it loop)");
-        case BoundedResult::Kind::OutOfMemory:
-            throw InputError(path.string(), "reading it needs more than " + std::to_string(limits::kMaxCadImportBytes >> 20) +
-                                                " MiB (the limit for a STEP or IGES import)");
-        case BoundedResult::Kind::Crashed:
-            throw InputError(path.string(),
-                             "OpenCASCADE failed while reading it" +
-                                 (r.signal ? " (signal " + std::to_string(r.signal) + ", likely its memory limit)" : std::string()));
-        case BoundedResult::Kind::Done:
-            break;
-    }
+    if (r.kind != BoundedResult::Kind::Done)
+        throw InputError(path.string(), cadChildFailure(r, "reading it", seconds, limits::kMaxCadImportBytes));
     const std::string& out = r.output;
     if (!out.empty() && out[0] == 'E') throw InputError(path.string(), out.substr(1));
     std::istringstream in(out.substr(1));
