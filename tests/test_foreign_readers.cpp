@@ -2,8 +2,8 @@
 // files in (issue 42; Debian's `freecad` and `blender`, each part skipped when it is not installed):
 // FreeCAD reads each STEP export as a valid shape with every face, the closed ones as solids of
 // positive volume, under a product named after the example, upright and at its size in
-// millimetres; Blender imports each glb upright at the same size in metres; and a filleted box made
-// in FreeCAD imports into Patchwork with every face. The probes are tests/readers/*.py.
+// millimetres, and each IGES export with every face at its size; Blender imports each glb upright at the same size in metres; and a
+// filleted box made in FreeCAD imports into Patchwork with every face. The probes are tests/readers/*.py.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -71,10 +71,11 @@ std::vector<Example> exportExamples(const fs::path& dir) {
         }
         const std::string bin = q(pw::test::patchworkBinary());
         e.step = !trimRoundASeam(e.doc);
-        for (const char* to : {".step", ".glb", ".obj"}) {
+        for (const char* to : {".step", ".igs", ".glb", ".obj"}) {
+            const bool cad = std::string(to) == ".step" || std::string(to) == ".igs";
             const auto r = pw::test::runCommand(bin + " export " + q(entry.path()) + " -o " + q(dir / (e.name + to)) +
-                                                (std::string(to) == ".step" ? "" : " --tess 8") + " 2>&1");
-            if (std::string(to) == ".step" && !e.step) {  // refused, saying why, and nothing written
+                                                (cad ? "" : " --tess 8") + " 2>&1");
+            if (cad && !e.step) {  // refused, saying why, and nothing written
                 EXPECT_EQ(r.exitCode, 2) << r.output;
                 EXPECT_NE(r.output.find("seam"), std::string::npos) << r.output;
                 EXPECT_FALSE(fs::exists(dir / (e.name + to)));
@@ -142,6 +143,19 @@ TEST(ForeignReaders, FreeCadAndBlenderReadEveryExampleUprightAtItsSize) {
                 EXPECT_GE(fcBox[hi], box[hi] - tol) << "axis " << i;
                 EXPECT_LE(fcBox[hi] - fcBox[lo], 1.5 * (box[hi] - box[lo]) + 2 * tol) << "axis " << i;
             }
+        }
+        if (freecad && e.step) {
+            // IGES too, in FreeCAD's millimetres whatever the document's unit (issue 66: a metre
+            // document was written 1 000× too small). No up axis in IGES: the file's own axes.
+            const nlohmann::json& f = fc.at(e.name + ".igs");
+            EXPECT_EQ(f.at("faces").get<size_t>(), e.doc.patches.size() + e.doc.surfaces.size() + e.doc.triangles.size());
+            const auto fcBox = f.at("bounds").get<std::array<double, 6>>();
+            const double mm = 1000.0 * pw::metresPer(e.doc.unit);
+            double extent = 0.0, fcExtent = 0.0;
+            for (int i = 0; i < 3; ++i) extent = std::max(extent, box[size_t(i) + 3] - box[size_t(i)]);
+            for (int i = 0; i < 3; ++i) fcExtent = std::max(fcExtent, fcBox[size_t(i) + 3] - fcBox[size_t(i)]);
+            EXPECT_GE(fcExtent, extent - 2 * tol) << "mm per unit " << mm;
+            EXPECT_LE(fcExtent, 1.5 * extent + 2 * tol) << "mm per unit " << mm;
         }
         if (blender) {
             // Blender's metres, +Z up: the same surface at the same place (its tessellation; z

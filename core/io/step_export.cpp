@@ -367,8 +367,11 @@ std::string igesTextHeld(const Document& doc, StepExportStats* stats, const std:
         // document's unit with no conversion.
         IGESControl_Controller::Init();
         Interface_Static::SetIVal("write.iges.brep.mode", 1);
-        occt::useLengthUnit(doc.unit);
+        // OCCT 7.6 takes the shape's unit from the model's global section, not from the session's
+        // unit (issue 66: a metre document came out 1 000× too small): set it on the model.
+        const double unitInMm = occt::useLengthUnit(doc.unit);
         IGESControl_Writer writer(occt::unitName(doc.unit), 1);
+        writer.Model()->ChangeGlobalSection().SetCascadeUnit(unitInMm);
         writer.Model()->ChangeGlobalSection().SetSendName(
             new TCollection_HAsciiString(cadSafeName(productName(doc, product), kMaxIgesNameBytes, true).c_str()));
         if (!writer.AddShape(cad.shape)) throw std::runtime_error("OpenCASCADE could not transfer the shape to IGES");

@@ -323,7 +323,9 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
                     doc.unit = LengthUnit::Metre;
                     break;
             }
-            occt::useLengthUnit(doc.unit);
+            // As for STEP, the shape comes in the file's unit: OCCT 7.6 reads the target unit from
+            // the model's global section (issue 66: a metre file came in 1 000× too large).
+            reader.IGESModel()->ChangeGlobalSection().SetCascadeUnit(occt::useLengthUnit(doc.unit));
             if (reader.TransferRoots() == 0) throw InputError(path.string(), "the IGES file holds no shape");
             shape = reader.OneShape();
         }

@@ -1,8 +1,9 @@
 # Run by tests/test_foreign_readers.cpp through `freecadcmd` (FreeCAD 0.20, Debian's): reads every
 # STEP file in $PW_PROBE_DIR as a FreeCAD user's File > Import does (Import.insert; merge and link
 # groups off, since freecadcmd 0.20 crashes on assemblies with them on) and as Part.read, makes a
-# filleted box as a FreeCAD user would and writes it to $PW_PROBE_DIR/fillet_box.step, and writes
-# what it saw to $PW_PROBE_DIR/freecad.json.
+# filleted box as a FreeCAD user would and writes it to $PW_PROBE_DIR/fillet_box.step, reads every
+# IGES file there with Part.read (faces, bounds in millimetres), and writes what it saw to
+# $PW_PROBE_DIR/freecad.json.
 import json
 import os
 
@@ -13,6 +14,11 @@ import Part
 folder = os.environ["PW_PROBE_DIR"]
 out = {}
 for name in sorted(os.listdir(folder)):
+    if name.endswith(".igs"):  # IGES: Part.read, in FreeCAD's millimetres
+        shape = Part.read(os.path.join(folder, name))
+        bb = shape.BoundBox
+        out[name] = {"faces": len(shape.Faces), "bounds": [bb.XMin, bb.YMin, bb.ZMin, bb.XMax, bb.YMax, bb.ZMax]}
+        continue
     if not name.endswith(".step"):
         continue
     path = os.path.join(folder, name)
