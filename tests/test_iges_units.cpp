@@ -1,4 +1,5 @@
-// IGES at the right size in every unit, both ways (issue 66). OpenCASCADE 7.6 takes the shape's
+// IGES at the right size in every unit, both ways (issue 66); a unit Patchwork does not have (feet)
+// comes in converted to the nearest one it has, with a note. OpenCASCADE 7.6 takes the shape's
 // unit from the IGES model's global section, not from the session's unit: a metre document was
 // written 1 000× too small and a metre file read 1 000× too large, and Patchwork's own round trip
 // hid it (both directions off by the same factor). So each direction is checked against
@@ -65,13 +66,19 @@ TEST(IgesUnits, FilesInMetresAndInchesComeInAtTheirSize) {
         LengthUnit unit;
         double perMm;  // the file's unit per millimetre
     };
+    // Feet are not a unit Patchwork has: they come in as inches, at the same size, with a note.
     for (const Case& c :
-         {Case{"M", LengthUnit::Metre, 1e-3}, Case{"IN", LengthUnit::Inch, 1 / 25.4}, Case{"MM", LengthUnit::Millimetre, 1.0}}) {
+         {Case{"M", LengthUnit::Metre, 1e-3}, Case{"IN", LengthUnit::Inch, 1 / 25.4}, Case{"MM", LengthUnit::Millimetre, 1.0},
+          Case{"CM", LengthUnit::Centimetre, 0.1}, Case{"FT", LengthUnit::Inch, 1 / 25.4}}) {
         SCOPED_TRACE(c.flag);
         const fs::path file = dir / (std::string("box-") + c.flag + ".igs");
         writeBox(file, c.flag);
-        const Document d = importCadSurfaces(file);
+        CadImportReport report;
+        const Document d = importCadSurfaces(file, &report);
         EXPECT_EQ(d.unit, c.unit);
+        bool noted = false;  // feet come in as inches, at their size
+        for (const std::string& n : report.notes) noted = noted || n.find("not one Patchwork has; read in in") != std::string::npos;
+        EXPECT_EQ(noted, std::string(c.flag) == "FT");
         Vec3 lo(1e300), hi(-1e300);
         for (const Vec3& p : d.points) lo = glm::min(lo, p), hi = glm::max(hi, p);
         EXPECT_NEAR(hi.x - lo.x, 2000.0 * c.perMm, 1e-6 * 2000.0 * c.perMm);

@@ -12,7 +12,6 @@
 #include "core/base/limits.hpp"
 #include "core/base/point_upload.hpp"
 #include "core/construct/constructions.hpp"
-#include "core/edit/edit_invariants.hpp"
 #include "core/edit/live_constructions.hpp"
 #include "core/edit/live_trims.hpp"
 #include "core/model/camera_math.hpp"
@@ -381,24 +380,19 @@ std::string DragController::status() const {
     return out;
 }
 
-std::string DragController::finish(EditSession& session) {
+void DragController::finish(EditSession& session) {
     const size_t n = moved_.size();
     const std::string kind = slide_ ? "Slide" : kindName(kind_);
     const bool beyond = !fittedOut_.empty();
+    const std::vector<Vec3> start = beyond ? start_ : std::vector<Vec3>{};
     *this = DragController{};
     if (beyond) {  // a fitted seam past its angle: nothing is committed
-        session.doc = session.committed();
+        session.doc.points = start;
         session.changed(false);
-        return "";
+        return;
     }
-    if (session.doc.points == session.committed().points) return "";
-    if (std::string fold = foldRefusal(session.committed(), session.doc); !fold.empty()) {
-        session.doc = session.committed();
-        session.changed(false);
-        return kind + " undone on release: " + fold;
-    }
-    session.commit(n == 1 ? kind + " point" : kind + " " + std::to_string(n) + " points");
-    return "";
+    if (session.doc.points != session.committed().points)
+        session.commit(n == 1 ? kind + " point" : kind + " " + std::to_string(n) + " points");
 }
 
 void DragController::cancel(Document& doc) {
@@ -432,16 +426,11 @@ std::string HeldPointEdit::set(EditSession& session, uint32_t point, const Vec3&
     return "";
 }
 
-std::string HeldPointEdit::finish(EditSession& session) {
+void HeldPointEdit::finish(EditSession& session) {
     const bool fittedPast = !fittedJoinsWorsened(session.committed(), session.doc).empty();  // as EditSession::apply holds them
-    std::string fold = projection_.ok() && !fittedPast ? foldRefusal(session.committed(), session.doc) : "";
-    if (projection_.ok() && !fittedPast && fold.empty()) {
-        session.commit("Edit point");
-        return "";
-    }
+    if (projection_.ok() && !fittedPast) return session.commit("Edit point");
     session.doc = session.committed();
     session.changed(false);
-    return fold.empty() ? "" : "The point was put back: " + fold;
 }
 
 }  // namespace edit

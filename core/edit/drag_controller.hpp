@@ -105,9 +105,7 @@ public:
     const std::vector<uint32_t>& changed() const { return changed_; }
 
     // Ends the transform: one undo step ("Move point", "Rotate 16 points", ...) when any point moved.
-    // A transform released where holding the joins folds a patch is not committed: every point goes
-    // back, and the refusal (naming the patch and its joins) is returned; else "".
-    std::string finish(EditSession& session);
+    void finish(EditSession& session);
     // Ends the transform with every point where it was at begin().
     void cancel(Document& doc);
 
@@ -180,9 +178,8 @@ public:
     // not finite or beyond limits::kMaxCoordinate, the message (and changes nothing).
     std::string set(EditSession& session, uint32_t point, const Vec3& position);
     // The drag let go: what set() did is one undo step ("Edit point"), or, when the joins could
-    // not follow the last position or would hold only by folding a patch, nothing: the document
-    // goes back to its committed state, and the fold's refusal is returned (else "").
-    std::string finish(EditSession& session);
+    // not follow the last position, nothing: the document goes back to its committed state.
+    void finish(EditSession& session);
     void reset() { solver_.reset(); }                             // another document
     const Projection& projection() const { return projection_; }  // of the last set()
 

@@ -34,6 +34,7 @@
 #include <XSControl_WorkSession.hxx>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -181,6 +182,46 @@ LengthUnit fileUnit(STEPControl_Reader& reader, const std::filesystem::path& pat
     return *g_assumedUnit;
 }
 
+// The unit an IGES file's global section declares (its unit flag, or for flag 3 its unit name),
+// as the document's: the same where Patchwork has it (in, mm, m, cm); else, with a note, the one
+// nearest in size (microns come in as millimetres, kilometres as metres), inches for the imperial
+// ones (feet, miles, mils): OpenCASCADE converts the coordinates. A file without a usable unit is
+// refused.
+LengthUnit igesFileUnit(const IGESData_GlobalSection& g, const std::filesystem::path& path, std::string& note) {
+    // Metres per file unit, by the flag (IGES 5.3, global parameter 14), or for flag 3 by the name
+    // (parameter 15). OpenCASCADE's own UnitValue() answers 1 for feet.
+    static const std::pair<const char*, double> kIgesUnits[] = {{"IN", 0.0254},   {"MM", 0.001}, {"", 0.0},       {"FT", 0.3048},
+                                                                {"MI", 1609.344}, {"M", 1.0},    {"KM", 1000.0},  {"MIL", 2.54e-5},
+                                                                {"UM", 1e-6},     {"CM", 0.01},  {"UIN", 2.54e-8}};
+    const std::string name = g.UnitName().IsNull() ? std::string() : std::string(g.UnitName()->ToCString());
+    double metres = 0.0;
+    if (g.UnitFlag() >= 1 && g.UnitFlag() <= 11) metres = kIgesUnits[g.UnitFlag() - 1].second;
+    if (g.UnitFlag() == 3) {
+        std::string upper = name;
+        for (char& ch : upper) ch = char(std::toupper(static_cast<unsigned char>(ch)));
+        if (upper == "INCH") upper = "IN";
+        for (const auto& [n, m] : kIgesUnits)
+            if (*n && upper == n) metres = m;
+    }
+    if (!std::isfinite(metres) || !(metres > 0.0))
+        throw InputError(path.string(), "its global section declares no length unit Patchwork can read (unit flag " +
+                                            std::to_string(g.UnitFlag()) + (name.empty() ? "" : ", unit name '" + name + "'") + ")");
+    constexpr LengthUnit kUnits[] = {LengthUnit::Millimetre, LengthUnit::Centimetre, LengthUnit::Metre, LengthUnit::Inch};
+    LengthUnit best = LengthUnit::Millimetre;
+    for (LengthUnit u : kUnits) {
+        if (std::abs(metresPer(u) - metres) <= 1e-9 * metres) return u;
+        if (std::abs(std::log(metresPer(u) / metres)) < std::abs(std::log(metresPer(best) / metres))) best = u;
+    }
+    // Feet, miles, mils and microinches stay imperial.
+    const int flag = g.UnitFlag();
+    if (flag == 4 || flag == 5 || flag == 8 || flag == 11) best = LengthUnit::Inch;
+    char text[200];
+    std::snprintf(text, sizeof text, "its unit%s%s (%g m) is not one Patchwork has; read in %s, the nearest in size",
+                  name.empty() ? "" : " ", name.c_str(), metres, std::string(lengthUnitName(best)).c_str());
+    note = text;
+    return best;
+}
+
 // The names of the file's faces (ADVANCED_FACE('lid', ...)), by the shape each became, whatever
 // its placement (a part of an assembly comes back located); unnamed faces are left out.
 struct FaceNames {
@@ -289,7 +330,7 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
     std::vector<NetFace> netFaces;                   // faces that may come back as nets
     std::vector<std::optional<size_t>> patchPlaces;  // a patch's place when its face is labelled "patch N"
     std::vector<std::optional<size_t>> trianglePlaces;
-    std::string unitNote;  // the unit came from --unit
+    std::string unitNote;  // the unit came from --unit, or is the nearest to an IGES file's own
     try {
         TopoDS_Shape shape;
         FaceNames faceNames;
@@ -308,21 +349,7 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
             IGESControl_Reader reader;  // IGES reads only from a path in OCCT 7.6
             if (reader.ReadFile(path.string().c_str()) != IFSelect_RetDone)
                 throw InputError(path.string(), "not a readable IGES file (OpenCASCADE could not parse it)");
-            // The global section's unit flag: 1 inch, 2 mm, 6 m, 10 cm (others come in metres).
-            switch (reader.IGESModel()->GlobalSection().UnitFlag()) {
-                case 1:
-                    doc.unit = LengthUnit::Inch;
-                    break;
-                case 2:
-                    doc.unit = LengthUnit::Millimetre;
-                    break;
-                case 10:
-                    doc.unit = LengthUnit::Centimetre;
-                    break;
-                default:
-                    doc.unit = LengthUnit::Metre;
-                    break;
-            }
+            doc.unit = igesFileUnit(reader.IGESModel()->GlobalSection(), path, unitNote);
             // As for STEP, the shape comes in the file's unit: OCCT 7.6 reads the target unit from
             // the model's global section (issue 66: a metre file came in 1 000× too large).
             reader.IGESModel()->ChangeGlobalSection().SetCascadeUnit(occt::useLengthUnit(doc.unit));

@@ -21,7 +21,7 @@ inline namespace io {
 struct CadImportReport {
     size_t faces = 0;                  // faces in the file
     size_t importedFaces = 0;          // of them, turned into patches
-    std::vector<std::string> notes;    // one per skipped face: "face 3: trimmed by a curve (...)"
+    std::vector<std::string> notes;    // one per skipped face ("face 3: trimmed by a curve (...)"), and the unit's when not the file's own
     double area = 0, skippedArea = 0;  // of all faces and of the skipped ones, in the file's units (0 when none was skipped)
 
     // "skipped 2 of 26 faces, 3.1 % of the area" (empty when every face came in).
@@ -30,8 +30,8 @@ struct CadImportReport {
 
 Document importCadSurfaces(const std::filesystem::path& path, CadImportReport* report = nullptr);
 
-// The wall time OpenCASCADE may take in a child process: PATCHWORK_CAD_SECONDS when set and not empty (at least
-// 1 ms), else `fallback` (imports: limits::kMaxCadImportSeconds; exports take longer).
+// The processor time OpenCASCADE may take in a child process: PATCHWORK_CAD_SECONDS when set and not empty
+// (at least 1 ms), else `fallback` (imports: limits::kMaxCadImportSeconds; exports take longer).
 double cadSecondsLimit(double fallback);
 
 // A STEP file that names no valid length unit (none, several different ones, or one Patchwork does

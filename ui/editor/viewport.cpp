@@ -325,9 +325,8 @@ void Editor::updateDrag(double mx, double my) {
 
 void Editor::finishDrag() {
     mode_ = Interaction::None;
-    const std::string refused = drag_.finish(session_);
+    drag_.finish(session_);
     documentChanged(false);
-    if (!refused.empty()) status(refused);
 }
 
 void Editor::cancelDrag() {

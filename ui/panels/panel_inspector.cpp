@@ -154,9 +154,8 @@ void InspectorPanel::draw(PanelContext& ctx) {
             setPoint(ctx, p, Vec3(v[0], v[1], v[2]));
         }
         if (ImGui::IsItemDeactivatedAfterEdit()) {
-            const std::string refused = held_.finish(s);
+            held_.finish(s);
             ctx.documentChanged(false);
-            if (!refused.empty()) ctx.host().status(refused);
         }
         tip("Drag to change; joins are held (the solver moves the neighbours)");
         // Exact entry: applied when Enter is pressed.
