@@ -205,10 +205,6 @@ void checkMeasured(const Document& before, const Document& after, const std::vec
 
 }  // namespace
 
-std::string foldRefusal(const Document& before, const Document& after) {
-    return foldRefusal(before, after, changedPatches(before, after), Brought::Nothing);
-}
-
 double joinTolerance(const Document& doc) { return 1e-6 * modelSize(doc) + 1e-12; }
 
 std::string describeJoin(const Document& doc, size_t j) {

@@ -31,9 +31,5 @@ enum class Brought : uint8_t { Nothing, DetectedJoins, File };
 
 void checkEditInvariants(const Document& before, const Document& after, Brought brought = Brought::Nothing);
 
-// The fold part of checkEditInvariants, for the editor's drags (which commit without apply): ""
-// when `after` folds nothing, else the refusal, naming the patch and the joins on it.
-std::string foldRefusal(const Document& before, const Document& after);
-
 }  // namespace edit
 }  // namespace pw
