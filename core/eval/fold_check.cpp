@@ -104,10 +104,6 @@ uint64_t shapeKey(const Document& d, const Item& p) {
     return h;
 }
 
-}  // namespace
-
-namespace {
-
 // Whether the 16 control points of `a` map onto those of `b` by a similarity (a rigid motion or a
 // mirror, with a uniform scale): every inner product of the points' offsets from the first scales
 // by one factor. The surface's shape is then the same, so are its folds.
