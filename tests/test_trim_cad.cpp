@@ -1,7 +1,8 @@
 // Trimmed surfaces through STEP and IGES (issue 64): a plate with a hole written as a trimmed face
 // whose area OpenCASCADE measures as the analytic one; our trimmed face read back trimmed, its loops
 // as they were; faces with holes and outlines made by OpenCASCADE read with their whole area; an L
-// of iso lines never grown into its rectangle.
+// of iso lines never grown into its rectangle; the kettle, its tubes cut round their seams, one
+// valid shell open only at its rims, read back with every area.
 #include <gtest/gtest.h>
 
 #include <BRepBuilderAPI_MakeEdge.hxx>
@@ -10,11 +11,13 @@
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp.hxx>
+#include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
 #include <Geom_Circle.hxx>
 #include <Interface_Static.hxx>
 #include <STEPControl_Reader.hxx>
 #include <STEPControl_Writer.hxx>
+#include <ShapeAnalysis_FreeBounds.hxx>
 #include <StepData_StepModel.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
@@ -29,6 +32,7 @@
 #include <sstream>
 
 #include "core/edit/edit_session.hpp"
+#include "core/io/document_io.hpp"
 #include "core/io/occt_support.hpp"
 #include "core/io/step_export.hpp"
 #include "core/io/step_import.hpp"
@@ -168,4 +172,68 @@ TEST(TrimCad, FacesWithHolesAndOutlinesComeInWithTheirArea) {
         EXPECT_EQ(rep.importedFaces, 1u);
         EXPECT_NEAR(documentArea(d), 500.0, 1e-6 * 500.0);  // 900 would be the rectangle
     }
+}
+
+// The kettle's spout and handle are tubes whose ends are cut off round their seams: each face
+// carries one seam edge with two p-curves, and the three faces sew along the cuts into one valid
+// shell whose only free edges are the body's two rims and the spout's mouth. Read back, every
+// surface is trimmed with the area it had.
+TEST(TrimCad, TheKettleIsOneValidShellCutRoundItsSeams) {
+    const Document kettle = loadDocument(test::dataDir() / "kettle.patchwork");
+    const double area = documentArea(kettle);
+    StepExportStats stats;
+    const TopoDS_Shape shape = readStep(exportStepText(kettle, {}, &stats));
+    EXPECT_TRUE(BRepCheck_Analyzer(shape).IsValid());
+    int shells = 0, faces = 0, seams = 0;
+    for (TopExp_Explorer e(shape, TopAbs_SHELL); e.More(); e.Next()) ++shells;
+    for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) {
+        ++faces;
+        for (TopExp_Explorer e(f.Current(), TopAbs_EDGE); e.More(); e.Next())
+            seams += BRep_Tool::IsClosed(TopoDS::Edge(e.Current()), TopoDS::Face(f.Current())) ? 1 : 0;
+    }
+    EXPECT_EQ(shells, 1);
+    EXPECT_EQ(faces, 3);
+    EXPECT_EQ(seams, 6);  // each tube's seam, once each way
+    ShapeAnalysis_FreeBounds free(shape, 1e-6, false, false);
+    int rims = 0;
+    for (TopExp_Explorer w(free.GetClosedWires(), TopAbs_WIRE); w.More(); w.Next()) ++rims;
+    for (TopExp_Explorer w(free.GetOpenWires(), TopAbs_WIRE); w.More(); w.Next()) ADD_FAILURE() << "an open free wire";
+    EXPECT_EQ(rims, 3);
+    EXPECT_NEAR(occtArea(shape) * 1e-6, area, 1e-5 * area);  // the file is in millimetres, the kettle in metres
+
+    const fs::path file = test::freshTempDir("trim_cad_kettle") / "kettle.step";
+    exportStep(kettle, file);
+    CadImportReport rep;
+    const Document back = importCadSurfaces(file, &rep);
+    EXPECT_EQ(rep.importedFaces, 3u) << (rep.notes.empty() ? "" : rep.notes.front());
+    ASSERT_EQ(back.surfaces.size(), 3u);
+    for (const Surface& s : back.surfaces) EXPECT_FALSE(s.trims.empty());
+    EXPECT_NEAR(documentArea(back), area, 1e-6 * area);
+}
+
+// A tube with a band cut out of its middle, round the seam: two faces, each a band with its own
+// seam, whose areas add up to what the trim keeps.
+TEST(TrimCad, ATubeCutInTwoRoundItsSeamIsTwoFaces) {
+    EditSession s;
+    s.reset(Document{}, "");
+    test::runEditScript(s, "add-net 5 8 tube bspline");
+    TrimLoop band;  // clockwise: a hole from v = 0.4 to 0.6 all the way round, straight sides
+    const std::vector<UV> corners{{0.0, 0.4}, {0.0, 0.6}, {1.0, 0.6}, {1.0, 0.4}, {0.0, 0.4}};
+    band.uv.push_back(corners[0]);
+    for (size_t k = 1; k < corners.size(); ++k)
+        for (double t : {1.0 / 3.0, 2.0 / 3.0, 1.0})
+            band.uv.push_back({(1 - t) * corners[k - 1][0] + t * corners[k][0], (1 - t) * corners[k - 1][1] + t * corners[k][1]});
+    band.hole = true;
+    ASSERT_LT(signedUvArea(band), 0.0);
+    Document d = s.doc;
+    d.surfaces[0].trims = {band};
+    ASSERT_EQ(trimLoopsProblem(d.surfaces[0].trims), "");
+    const double area = documentArea(d);
+    const TopoDS_Shape shape = readStep(exportStepText(d, {}));
+    EXPECT_TRUE(BRepCheck_Analyzer(shape).IsValid());
+    int faces = 0;
+    for (TopExp_Explorer f(shape, TopAbs_FACE); f.More(); f.Next()) ++faces;
+    EXPECT_EQ(faces, 2);
+    const double mm2 = std::pow(metresPer(d.unit) * 1000.0, 2);
+    EXPECT_NEAR(occtArea(shape) / mm2, area, 1e-6 * area);
 }

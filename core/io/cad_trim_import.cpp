@@ -144,22 +144,30 @@ std::variant<TrimmedFace, std::string> trimmedFace(const FaceBSpline& f) {
     out.surface->Bounds(u0, u1, v0, v1);
     if (!(u1 > u0 && v1 > v0)) return std::string("its surface has an empty parameter range");
     std::vector<double> ku, kv;
-    for (int i = 1; i <= out.surface->NbUKnots(); ++i) ku.push_back(out.surface->UKnot(i));
-    for (int i = 1; i <= out.surface->NbVKnots(); ++i) kv.push_back(out.surface->VKnot(i));
+    // The knots of the surface's range only: an unclamped B-spline (a uniform net as one C2 surface)
+    // has knots beyond it, and its windows are the spans inside.
+    for (int i = out.surface->FirstUKnotIndex(); i <= out.surface->LastUKnotIndex(); ++i) ku.push_back(out.surface->UKnot(i));
+    for (int i = out.surface->FirstVKnotIndex(); i <= out.surface->LastVKnotIndex(); ++i) kv.push_back(out.surface->VKnot(i));
     const double tol2d = 1e-7 * std::max(u1 - u0, v1 - v0);
-    const TopoDS_Wire outer = BRepTools::OuterWire(f.face);
-    for (TopExp_Explorer w(f.face, TopAbs_WIRE); w.More(); w.Next()) {
+    // The loops as the surface's parameters run: read from the face turned forward (a reversed
+    // face turns its wires and edges too, and a seam edge's two p-curves with them), the face's
+    // own turn applied below.
+    const TopoDS_Face face = TopoDS::Face(f.face.Oriented(TopAbs_FORWARD));
+    const TopoDS_Wire outer = BRepTools::OuterWire(face);
+    for (TopExp_Explorer w(face, TopAbs_WIRE); w.More(); w.Next()) {
         const TopoDS_Wire& wire = TopoDS::Wire(w.Current());
         std::vector<P2> chain;  // the whole loop in the surface's parameters
-        for (BRepTools_WireExplorer e(wire, f.face); e.More(); e.Next()) {
+        for (BRepTools_WireExplorer e(wire, face); e.More(); e.Next()) {
             const TopoDS_Edge& edge = e.Current();
             double first = 0, last = 0;
-            const Handle(Geom2d_Curve) pc = BRep_Tool::CurveOnSurface(edge, f.face, first, last);
+            const Handle(Geom2d_Curve) pc = BRep_Tool::CurveOnSurface(edge, face, first, last);
             if (pc.IsNull()) return std::string("an edge of its boundary has no curve on the surface");
             auto made = cubicChain(pc, first, last, tol2d, out.deviation);
             if (auto* why = std::get_if<std::string>(&made)) return *why;
             std::vector<P2> pts = std::get<std::vector<P2>>(made);
-            if (e.Orientation() == TopAbs_REVERSED) std::reverse(pts.begin(), pts.end());
+            // The edge's own turn in the wire: the explorer's Orientation() reads it from the vertex it
+            // came in by, which a closed edge (a tube's rim) has at both ends.
+            if (edge.Orientation() == TopAbs_REVERSED) std::reverse(pts.begin(), pts.end());
             if (chain.empty()) {
                 chain = pts;
                 continue;

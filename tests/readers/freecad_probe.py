@@ -1,5 +1,5 @@
 # Run by tests/test_foreign_readers.cpp through `freecadcmd` (FreeCAD 0.20, Debian's): reads every
-# STEP file in $PW_PROBE_DIR as a FreeCAD user's File > Import does (Import.insert; merge and link
+# STEP file in $PW_PROBE_DIR (valid, solids, shells, free edges) as a FreeCAD user's File > Import does (Import.insert; merge and link
 # groups off, since freecadcmd 0.20 crashes on assemblies with them on) and as Part.read, makes a
 # filleted box as a FreeCAD user would and writes it to $PW_PROBE_DIR/fillet_box.step, reads every
 # IGES file there with Part.read (faces, bounds in millimetres), and writes what it saw to
@@ -10,6 +10,17 @@ import os
 import FreeCAD
 import Import
 import Part
+
+
+def free_edges(shape):
+    """Edges on one face only; a face's seam (on it twice) and a pole (no length) are not counted."""
+    uses = {}
+    for face in shape.Faces:
+        for edge in face.Edges:
+            if not edge.isSeam(face) and edge.Length > 1e-9:
+                uses[edge.hashCode()] = uses.get(edge.hashCode(), 0) + 1
+    return sum(1 for n in uses.values() if n == 1)
+
 
 folder = os.environ["PW_PROBE_DIR"]
 out = {}
@@ -33,6 +44,8 @@ for name in sorted(os.listdir(folder)):
         "solids": len(shape.Solids),
         "closed_solids": sum(1 for s in shape.Solids if s.isValid() and s.Volume > 0),
         "faces": len(shape.Faces),
+        "shells": len(shape.Shells),
+        "free_edges": free_edges(shape),
         "bounds": [bb.XMin, bb.YMin, bb.ZMin, bb.XMax, bb.YMax, bb.ZMax],
         "objects": objects,
     }
