@@ -57,7 +57,7 @@ void registerConvertCommand(CLI::App& app, Action& run) {
     cmd->add_option("input", opt->input, "Input (" + formatList(FormatUse::Load, ", ") + ")")->required();
     cmd->add_option("output", opt->output, "Output (" + formatList(FormatUse::Save, ", ") + "); replaced atomically")->required();
     cmd->add_flag("-q,--quiet", opt->quiet, "Print nothing on success");
-    addCadUnitOption(cmd);
+    addCadReadOptions(cmd);
     cmd->add_flag(
         "--partial", opt->partial,
         "Take a STEP/IGES file that comes in incomplete (faces skipped) as far as it comes; otherwise such a file is refused (exit 2)");

@@ -74,7 +74,7 @@ void registerEditCommand(CLI::App& app, Action& run) {
     cmd->add_option("--run", opt->script, "Script file: one command per line or ';'-separated, '#' starts a comment");
     cmd->add_option("-c,--commands", opt->commands, "Commands, ';'-separated (run after --run)");
     cmd->add_flag("-q,--quiet", opt->quiet, "Print nothing on success");
-    addCadUnitOption(cmd);
+    addCadReadOptions(cmd);
     cmd->add_flag(
         "--partial", opt->partial,
         "Take a STEP/IGES file that comes in incomplete (faces skipped) as far as it comes; otherwise such a file is refused (exit 2)");

@@ -213,7 +213,7 @@ void registerExportCommand(CLI::App& app, Action& run) {
     cmd->add_option("--size", args->size, "With --as-displayed: the view's size WIDTHxHEIGHT (default 1280x720)");
     cmd->add_option("--device", args->device, "With --as-displayed: Vulkan device, substring of its name");
     addDisplacementOptions(cmd, args->displacement);
-    addCadUnitOption(cmd);
+    addCadReadOptions(cmd);
     cmd->add_flag(
         "--partial", args->partial,
         "Take a STEP/IGES file that comes in incomplete (faces skipped) as far as it comes; otherwise such a file is refused (exit 2)");

@@ -299,7 +299,7 @@ void registerInfoCommand(CLI::App& app, Action& run) {
     cmd->add_flag("--json", opt->json, "Machine-readable output (JSON)");
     cmd->add_option("--samples", opt->samples, "Samples per seam for the continuity report")->default_val(32)->check(CLI::Range(1, 4096));
     cmd->add_flag("--no-joins", opt->noJoins, "Omit the per-join table");
-    addCadUnitOption(cmd);
+    addCadReadOptions(cmd);
     cmd->add_flag(
         "--partial", opt->partial,
         "Take a STEP/IGES file that comes in incomplete (faces skipped) as far as it comes; otherwise such a file is refused (exit 2)");

@@ -27,9 +27,10 @@ std::pair<CLI::App*, std::shared_ptr<Options>> addSubcommand(CLI::App& app, Acti
 // decimals only: CLI11 alone reads "0x20" as 32 and "0b11" as 3.
 void requirePlainDecimals(CLI::App& app);
 
-// `--unit mm|cm|m|in` on a command that reads documents: the unit of a STEP file that names no
-// valid length unit (app/cad_unit_option.cpp).
-void addCadUnitOption(CLI::App* cmd);
+// On a command that reads documents (app/cad_read_options.cpp): `--unit mm|cm|m|in`, the unit of a
+// STEP file that names no valid length unit; `--tolerance D`, how far a CAD face of degree above 3
+// may move when approximated by bicubic patches (default 1e-4 of the model's size).
+void addCadReadOptions(CLI::App* cmd);
 
 void registerInfoCommand(CLI::App& app, Action& run);
 void registerExportCommand(CLI::App& app, Action& run);

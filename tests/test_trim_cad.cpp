@@ -2,7 +2,8 @@
 // whose area OpenCASCADE measures as the analytic one; our trimmed face read back trimmed, its loops
 // as they were; faces with holes and outlines made by OpenCASCADE read with their whole area; an L
 // of iso lines never grown into its rectangle; the kettle, its tubes cut round their seams, one
-// valid shell open only at its rims, read back with every area.
+// valid shell open only at its rims, read back with every area; a face of degree 6 x 2
+// approximated within the tolerance.
 #include <gtest/gtest.h>
 
 #include <BRepBuilderAPI_MakeEdge.hxx>
@@ -13,12 +14,14 @@
 #include <BRepGProp.hxx>
 #include <BRep_Tool.hxx>
 #include <GProp_GProps.hxx>
+#include <Geom_BezierSurface.hxx>
 #include <Geom_Circle.hxx>
 #include <Interface_Static.hxx>
 #include <STEPControl_Reader.hxx>
 #include <STEPControl_Writer.hxx>
 #include <ShapeAnalysis_FreeBounds.hxx>
 #include <StepData_StepModel.hxx>
+#include <TColgp_Array2OfPnt.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Face.hxx>
@@ -236,4 +239,33 @@ TEST(TrimCad, ATubeCutInTwoRoundItsSeamIsTwoFaces) {
     EXPECT_EQ(faces, 2);
     const double mm2 = std::pow(metresPer(d.unit) * 1000.0, 2);
     EXPECT_NEAR(occtArea(shape) / mm2, area, 1e-6 * area);
+}
+
+// A face of degree 6 x 2 (as FreeCAD's lofts and other systems write) comes in approximated by
+// bicubic patches, with a note giving the measured deviation, and the area OpenCASCADE measures on
+// the original; asked for a closer fit than bicubic patches can give with `--tolerance`, it is
+// skipped saying so, and the file is refused as having nothing Patchwork can edit.
+TEST(TrimCad, FacesOfHighDegreeComeInApproximatedWithinTheTolerance) {
+    TColgp_Array2OfPnt poles(1, 7, 1, 3);
+    for (int i = 1; i <= 7; ++i)
+        for (int j = 1; j <= 3; ++j)
+            poles.SetValue(i, j, gp_Pnt(10.0 * i, 12.0 * j, 6.0 * std::sin(1.3 * i) * std::cos(0.7 * j) + (i == 4 ? 9.0 : 0.0)));
+    Handle(Geom_BezierSurface) bezier = new Geom_BezierSurface(poles);
+    const TopoDS_Face face = BRepBuilderAPI_MakeFace(bezier, 1e-7).Face();
+    const fs::path file = test::freshTempDir("trim_cad_degree") / "degree6.step";
+    writeStep(face, file);
+    CadImportReport rep;
+    const Document d = importCadSurfaces(file, &rep);
+    EXPECT_EQ(rep.importedFaces, 1u);
+    ASSERT_EQ(rep.notes.size(), 1u);
+    EXPECT_NE(rep.notes[0].find("a degree 6 x 2 surface approximated by bicubic patches within"), std::string::npos) << rep.notes[0];
+    EXPECT_NEAR(documentArea(d), occtArea(face), 1e-5 * occtArea(face));
+    setCadTolerance(1e-12);
+    try {
+        importCadSurfaces(file);
+        ADD_FAILURE() << "a face that cannot keep within 1e-12 came in";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("--tolerance"), std::string::npos) << e.what();
+    }
+    setCadTolerance(std::nullopt);
 }

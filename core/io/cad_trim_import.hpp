@@ -20,12 +20,18 @@ inline namespace io {
 // A face's surface as a B-spline of degree <= 3, not periodic (planes, cylinders, cones, spheres,
 // tori, revolved and extruded surfaces converted by OpenCASCADE, face and p-curves together), with
 // the face its p-curves belong to and the name of the surface it was converted from ("" when none).
+// A surface of higher degree (FreeCAD's lofts are 14 x 2, its sweeps 6 x 10) is approximated by a
+// bicubic B-spline over the same parameters (OpenCASCADE's GeomConvert_ApproxSurface, C1) when
+// `tolerance` > 0: `approximated` says from what ("degree 14 x 2") and `deviation` is the largest
+// distance between the two measured on a grid; one that cannot keep within `tolerance` is refused.
 struct FaceBSpline {
     Handle(Geom_BSplineSurface) surface;
     TopoDS_Face face;
     std::string converted;
+    std::string approximated;
+    double deviation = 0.0;
 };
-std::variant<FaceBSpline, std::string> faceBSpline(const TopoDS_Face& face);
+std::variant<FaceBSpline, std::string> faceBSpline(const TopoDS_Face& face, double tolerance = 0.0);
 
 struct TrimmedFace {
     Handle(Geom_BSplineSurface) surface;  // over the face's parameter box, oriented like the face

@@ -1,10 +1,12 @@
 // STEP/IGES surfaces to Bézier patches (step_import.hpp).
 #include "core/io/step_import.hpp"
 
+#include <BRepBndLib.hxx>
 #include <BRepBuilderAPI_NurbsConvert.hxx>
 #include <BRepGProp.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
 #include <Geom2d_BSplineCurve.hxx>
 #include <Geom2d_Line.hxx>
@@ -147,7 +149,15 @@ std::variant<Handle(Geom_BSplineSurface), std::string> faceSurface(const FaceBSp
     return bs;
 }
 
+// A length in a note: three significant digits ("2.5e-06", "0.000448").
+std::string threeDigits(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", x);
+    return text;
+}
+
 std::optional<LengthUnit> g_assumedUnit;  // assumeCadUnit
+std::optional<double> g_cadTolerance;     // setCadTolerance
 
 // The file's length unit where it is one of a document's (millimetre, centimetre, metre, inch);
 // otherwise the unit assumed by `--unit` (with a note), or refused naming what the file says.
@@ -358,13 +368,24 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
         }
         TopExp::MapShapes(shape, TopAbs_FACE, faces);
         rep.faces = size_t(faces.Extent());
+        // Surfaces of degree above 3 are approximated within --tolerance, by default 1e-4 of the model's size.
+        double tolerance = g_cadTolerance.value_or(0.0);
+        if (!g_cadTolerance) {
+            Bnd_Box box;
+            BRepBndLib::Add(shape, box);
+            if (!box.IsVoid()) tolerance = 1e-4 * std::sqrt(box.SquareExtent());
+        }
         for (int f = 1; f <= faces.Extent(); ++f) {
             // The face's Bézier patches: its B-spline cut at its knots, or a planar face trimmed
             // by curves as a fan from its centre; or the reason it has none.
             occt::BezierPatches patches;
             bool netCandidate = false;
             std::vector<TrimLoop> trims;  // a trimmed face's loops in its spans' grid (cad_trim_import.hpp)
-            const auto fb = faceBSpline(TopoDS::Face(faces(f)));
+            const auto fb = faceBSpline(TopoDS::Face(faces(f)), tolerance);
+            if (const auto* made = std::get_if<FaceBSpline>(&fb); made && !made->approximated.empty())
+                rep.notes.push_back("face " + std::to_string(f) + ": a " + made->approximated +
+                                    " surface approximated by bicubic patches within " + threeDigits(made->deviation) + " (--tolerance " +
+                                    threeDigits(tolerance) + ")");
             std::variant<Handle(Geom_BSplineSurface), std::string> result =
                 std::holds_alternative<FaceBSpline>(fb) ? faceSurface(std::get<FaceBSpline>(fb)) : std::get<std::string>(fb);
             // A face trimmed by its outline: a planar one fanned exactly where it can be, else its
@@ -468,7 +489,8 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
             ++rep.importedFaces;
         }
     } catch (const Standard_Failure& e) {
-        throw InputError(path.string(), std::string("OpenCASCADE stopped reading it: ") + e.GetMessageString());
+        const std::string why = *e.GetMessageString() ? e.GetMessageString() : e.DynamicType()->Name();  // some say nothing
+        throw InputError(path.string(), "OpenCASCADE stopped reading it: " + why);
     }
     const size_t skippedBeforeNets = skipped.size();
     if (doc.patches.empty()) {
@@ -532,6 +554,7 @@ std::string encodeResult(const std::filesystem::path& path, bool step, const std
 }  // namespace
 
 void assumeCadUnit(std::optional<LengthUnit> unit) { g_assumedUnit = unit; }
+void setCadTolerance(std::optional<double> tolerance) { g_cadTolerance = tolerance; }
 
 double cadSecondsLimit(double fallback) {
     if (const char* s = std::getenv("PATCHWORK_CAD_SECONDS"); s && *s) return std::max(0.001, std::atof(s));

@@ -39,6 +39,10 @@ double cadSecondsLimit(double fallback);
 // read as metres, an mm part 1 000× too large). With a unit assumed here (the commands' `--unit`)
 // it is read in that unit and a note says so. Process-wide; nullopt (the default) refuses.
 void assumeCadUnit(std::optional<LengthUnit> unit);
+// How far a face of degree above 3 may move when it is approximated by bicubic patches, in the
+// file's units (the commands' `--tolerance`); nullopt (the default): 1e-4 of the model's size.
+// Each approximated face gets a note with its measured deviation. Process-wide.
+void setCadTolerance(std::optional<double> tolerance);
 
 }  // namespace io
 }  // namespace pw

@@ -1,7 +1,8 @@
 # Run by tests/test_foreign_readers.cpp through `freecadcmd` (FreeCAD 0.20, Debian's): reads every
 # STEP file in $PW_PROBE_DIR (valid, solids, shells, free edges) as a FreeCAD user's File > Import does (Import.insert; merge and link
 # groups off, since freecadcmd 0.20 crashes on assemblies with them on) and as Part.read, makes a
-# filleted box as a FreeCAD user would and writes it to $PW_PROBE_DIR/fillet_box.step, reads every
+# filleted box, a plate with a hole, a loft and a sweep as a FreeCAD user would and writes them to
+# $PW_PROBE_DIR/NAME.step, reads every
 # IGES file there with Part.read (faces, bounds in millimetres), and writes what it saw to
 # $PW_PROBE_DIR/freecad.json.
 import json
@@ -51,10 +52,24 @@ for name in sorted(os.listdir(folder)):
     }
     FreeCAD.closeDocument(doc.Name)
 
+
+def part(name, shape):
+    """A part as a FreeCAD user makes it, written to NAME.step, with its faces and area."""
+    shape.exportStep(os.path.join(folder, name + ".step"))
+    out[name] = {"faces": len(shape.Faces), "area": shape.Area}
+
+
 box = Part.makeBox(40, 30, 20)
-box = box.makeFillet(4, box.Edges)
-box.exportStep(os.path.join(folder, "fillet_box.step"))
-out["fillet_box"] = {"faces": len(box.Faces), "area": box.Area}
+part("fillet_box", box.makeFillet(4, box.Edges))
+# A plate with a hole (a face with an inner wire), a lofted vase (degree 14 x 2 faces) and a
+# swept pipe (degree 6 x 11, rational), the latter two closed with their planar caps.
+part("holed_plate", Part.makeBox(40, 30, 3).cut(Part.makeCylinder(6, 3, FreeCAD.Vector(15, 12, 0))))
+rings = [Part.Wire(Part.makeCircle(r, FreeCAD.Vector(0, 0, z))) for r, z in ((10, 0), (6, 20), (12, 40))]
+part("loft", Part.makeLoft(rings, True, False))
+spine = Part.BSplineCurve()
+spine.interpolate([FreeCAD.Vector(0, 0, 0), FreeCAD.Vector(10, 0, 10), FreeCAD.Vector(20, 5, 20), FreeCAD.Vector(30, 0, 25)])
+ring = Part.Wire(Part.makeCircle(2, FreeCAD.Vector(0, 0, 0), FreeCAD.Vector(0, 0, 1)))
+part("sweep", Part.Wire(spine.toShape()).makePipeShell([ring], True, True))
 
 with open(os.path.join(folder, "freecad.json"), "w") as f:
     json.dump(out, f)
