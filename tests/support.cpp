@@ -2,6 +2,10 @@
 
 #include "core/eval/bezier_curve.hpp"
 #include "core/eval/rational_eval.hpp"
+#include "core/mesh/mesh_tessellate.hpp"
+#include "core/trim/surface_domain.hpp"
+#include "core/trim/trim_loops.hpp"
+#include "core/trim/trim_mesh.hpp"
 
 #include <gtest/gtest.h>
 
@@ -217,6 +221,27 @@ Png loadPng(const std::filesystem::path& file) {
         img.w = img.h = 0;
     stbi_image_free(data);
     return img;
+}
+
+double surfaceArea(const Document& doc) {
+    double a = 0.0;
+    for (uint32_t p = 0; p < doc.patches.size(); ++p) a += trimmedArea(DomainSurface(doc, {false, p}), doc.patches[p].trims);
+    for (uint32_t s = 0; s < doc.surfaces.size(); ++s) a += trimmedArea(DomainSurface(doc, {true, s}), doc.surfaces[s].trims);
+    if (!doc.triangles.empty()) {
+        Document triangles;
+        triangles.points = doc.points;
+        triangles.weights = doc.weights;
+        triangles.triangles = doc.triangles;
+        const TriangleMesh m = tessellateTrimmed(triangles, 64);
+        for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
+            const auto& p = m.positions[m.indices[t]];
+            const auto& q = m.positions[m.indices[t + 1]];
+            const auto& r = m.positions[m.indices[t + 2]];
+            const Vec3 a0(p[0], p[1], p[2]), a1(q[0], q[1], q[2]), a2(r[0], r[1], r[2]);
+            a += 0.5 * glm::length(glm::cross(a1 - a0, a2 - a0));
+        }
+    }
+    return a;
 }
 
 }  // namespace pw::test

@@ -40,6 +40,10 @@ struct Png {
 };
 Png loadPng(const std::filesystem::path& file);
 
+// The area of the document's surfaces as they are kept: each patch's and net's trimmed area
+// (Green's theorem over its loops, ~1e-9 relative), and its Bézier triangles' tessellated at level 64.
+double surfaceArea(const Document& doc);
+
 struct RunResult {
     int exitCode = -1;
     std::string output;  // stdout and stderr together

@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "core/trim/trim_loops.hpp"
 
@@ -182,6 +183,15 @@ std::variant<FaceBSpline, std::string> faceBSpline(const TopoDS_Face& face, doub
         out.surface = std::get<0>(std::get<std::pair<Handle(Geom_BSplineSurface), double>>(approx));
         out.approximated = degree;
     }
+    return out;
+}
+
+std::variant<FaceBSpline, std::string> polynomialFace(const FaceBSpline& face, double tolerance) {
+    auto approx = bicubicApproximation(face.surface, tolerance);
+    if (auto* why = std::get_if<std::string>(&approx)) return "a rational surface " + *why;
+    FaceBSpline out = face;
+    std::tie(out.surface, out.deviation) = std::get<std::pair<Handle(Geom_BSplineSurface), double>>(approx);
+    out.approximated = "rational";
     return out;
 }
 

@@ -32,6 +32,10 @@ struct FaceBSpline {
     double deviation = 0.0;
 };
 std::variant<FaceBSpline, std::string> faceBSpline(const TopoDS_Face& face, double tolerance = 0.0);
+// The face on a polynomial bicubic B-spline over the same parameters within `tolerance` of its
+// rational one (a trimmed cylinder or cone of several spans cannot be one net: Patchwork's nets
+// are polynomial); `approximated` says "rational", `deviation` as above. Else why not.
+std::variant<FaceBSpline, std::string> polynomialFace(const FaceBSpline& face, double tolerance);
 
 struct TrimmedFace {
     Handle(Geom_BSplineSurface) surface;  // over the face's parameter box, oriented like the face

@@ -260,6 +260,9 @@ FaceNames stepFaceNames(STEPControl_Reader& reader) {
 // Patchwork wrote comes back one); rebuildNets decides from the patches themselves, since
 // OpenCASCADE reads a closed face as periodic and its knots then run past the face.
 bool mayBeNet(const Handle(Geom_BSplineSurface) & bs) { return !bs->IsURational() && !bs->IsVRational(); }
+int spanCount(const Handle(Geom_BSplineSurface) & bs) {
+    return (bs->LastUKnotIndex() - bs->FirstUKnotIndex()) * (bs->LastVKnotIndex() - bs->FirstVKnotIndex());
+}
 
 // Whether the first column of poles (s = 0) is one point, as in a triangle's collapsed quad.
 bool collapsedColumn(const Handle(Geom_BezierSurface) & z) {
@@ -301,9 +304,15 @@ void rebuildNets(Document& doc, const std::vector<NetFace>& netFaces, std::vecto
             } catch (const EditError&) {  // G1 or C0 seams: the face stays patches, joined
             }
         }
+        // A trimmed face's loops span its patches, so it must be one net: where the seams are not
+        // C1 in the net's even windows (a fit's uneven knots), a Bézier net that keeps them as they are.
+        if (!net && !f->trims.empty()) try {
+                net = convertPatchesToBezierNet(doc, patches, 1e-8, /*keepPatches=*/true, /*keepC1=*/false);
+            } catch (const EditError&) {
+            }
         if (!net && !f->trims.empty()) {
             notes.push_back("face " + std::to_string(f->face) + " skipped: trimmed across " + std::to_string(f->count) +
-                            " patches that make no net (their seams are not C1)");
+                            " patches that make no net (they do not share whole edges)");
             dropped.push_back(f->face);
             for (uint32_t k = 0; k < f->count; ++k) converted[f->first + k] = true;
             continue;
@@ -395,6 +404,18 @@ Document importInProcess(const std::filesystem::path& path, bool step, const std
                 fan = occt::planarFan(TopoDS::Face(faces(f)));
                 if (!std::holds_alternative<occt::BezierPatches>(fan)) {
                     auto t = trimmedFace(std::get<FaceBSpline>(fb));
+                    // A rational surface of several spans (a whole cylinder or cone with a hole) makes no
+                    // net, which a trimmed face needs: its loops are read again on a polynomial fit.
+                    if (auto* tf = std::get_if<TrimmedFace>(&t); tf && !mayBeNet(tf->surface) && spanCount(tf->surface) > 1) {
+                        auto poly = polynomialFace(std::get<FaceBSpline>(fb), tolerance);
+                        if (auto* p = std::get_if<FaceBSpline>(&poly)) {
+                            rep.notes.push_back("face " + std::to_string(f) + ": a rational surface of " +
+                                                std::to_string(spanCount(tf->surface)) +
+                                                " spans approximated by polynomial bicubic patches within " + threeDigits(p->deviation) +
+                                                " (--tolerance " + threeDigits(tolerance) + ")");
+                            t = trimmedFace(*p);
+                        }
+                    }
                     if (auto* tf = std::get_if<TrimmedFace>(&t)) {
                         result = tf->surface;
                         trims = std::move(tf->loops);

@@ -505,7 +505,7 @@ uint32_t convertPatchesToNet(Document& doc, std::vector<uint32_t> patches, doubl
     return replaceByNet(doc, g, std::move(s), keepPatches);
 }
 
-uint32_t convertPatchesToBezierNet(Document& doc, std::vector<uint32_t> patches, double tolerance, bool keepPatches) {
+uint32_t convertPatchesToBezierNet(Document& doc, std::vector<uint32_t> patches, double tolerance, bool keepPatches, bool keepC1) {
     const PatchGrid g = patchGrid(doc, std::move(patches), "converting patches to a net");
     if ((g.closedU && g.cols < 6) || (g.closedV && g.rows < 6))
         throw EditError("a closed Bézier net needs at least 2 patches around each closed direction");
@@ -519,7 +519,7 @@ uint32_t convertPatchesToBezierNet(Document& doc, std::vector<uint32_t> patches,
     for (uint32_t x = 0; x < g.cols; ++x)
         for (uint32_t y = 3; y < g.rows || (g.closedV && y == g.rows); y += 3)
             if (y + 1 < g.rows || g.closedV) worst = std::max(worst, glm::length(at(y, x) - 0.5 * (at(y - 1, x) + at(y + 1, x))));
-    if (!(worst <= tol)) {
+    if (keepC1 && !(worst <= tol)) {
         char msg[160];
         std::snprintf(msg, sizeof msg, "the patches are not C1 across their seams (off by up to %.3g × the model size)",
                       worst / std::max(modelSize(doc), 1e-300));
@@ -529,7 +529,7 @@ uint32_t convertPatchesToBezierNet(Document& doc, std::vector<uint32_t> patches,
     s.rows = g.rows;
     s.cols = g.cols;
     s.basis = Basis::Bezier;
-    s.keepC1 = true;
+    s.keepC1 = keepC1;
     s.closedU = g.closedU;
     s.closedV = g.closedV;
     s.name = "net";

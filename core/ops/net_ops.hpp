@@ -68,8 +68,10 @@ uint32_t convertPatchesToNet(Document& doc, std::vector<uint32_t> patches, doubl
 // The same grid of Bézier patches as one Bézier net that keeps C1 (Surface::keepC1) on their own
 // points, when every seam is C1 within `tolerance` × model size (each seam point the midpoint of
 // its neighbours across it: a Catmull-Rom net written to STEP comes back so). Returns the new
-// surface index; EditError otherwise.
-uint32_t convertPatchesToBezierNet(Document& doc, std::vector<uint32_t> patches, double tolerance = 1e-9, bool keepPatches = false);
+// surface index; EditError otherwise. keepC1 false: any grid, a net whose seams stay as they are
+// (a trimmed CAD face fitted with uneven knots).
+uint32_t convertPatchesToBezierNet(Document& doc, std::vector<uint32_t> patches, double tolerance = 1e-9, bool keepPatches = false,
+                                   bool keepC1 = true);
 
 }  // namespace ops
 }  // namespace pw

@@ -192,18 +192,58 @@ double DomainSurface::area() const {
     return a * hu * hv;
 }
 
-double DomainSurface::areaStrip(UV uv) const {
-    // ∫₀ᵘ J(s, v) ds in pieces that end at window boundaries (J is smooth inside a window), each
-    // piece in up to 4 parts of 8 Gauss points.
-    const double u = std::clamp(uv[0], 0.0, 1.0);
-    double sum = 0.0, s0 = 0.0;
-    const double step = 1.0 / (wu_ * 4.0);
-    while (s0 < u) {
-        const double s1 = std::min(u, (std::floor(s0 / step + 1e-9) + 1.0) * step);
-        for (int k = 0; k < 8; ++k) sum += kGaussW[k] * (s1 - s0) * jacobian(*this, {s0 + kGaussX[k] * (s1 - s0), uv[1]});
-        s0 = s1;
+namespace {
+
+// ∫ J(s, v) ds from u0 to u1 in pieces that end at quarter-window boundaries (J is smooth inside a
+// window), each of 8 Gauss points.
+double stripPart(const DomainSurface& s, double u0, double u1, double v) {
+    double sum = 0.0;
+    const double step = 1.0 / (s.windowsU() * 4.0);
+    while (u0 < u1) {
+        const double next = std::min(u1, (std::floor(u0 / step + 1e-9) + 1.0) * step);
+        for (int k = 0; k < 8; ++k) sum += kGaussW[k] * (next - u0) * jacobian(s, {u0 + kGaussX[k] * (next - u0), v});
+        u0 = next;
     }
     return sum;
+}
+
+constexpr int kStripNodes = 16;
+double chebyshevNode(int n) { return std::cos((2.0 * n + 1.0) * 3.14159265358979323846 / (2.0 * kStripNodes)); }
+
+}  // namespace
+
+double AreaStrips::at(UV uv) {
+    const uint32_t wu = s_.windowsU(), wv = s_.windowsV();
+    const double u = std::clamp(uv[0], 0.0, 1.0), v = std::clamp(uv[1], 0.0, 1.0);
+    const uint32_t row = std::min(uint32_t(v * wv), wv - 1), whole = std::min(uint32_t(u * wu), wu - 1);
+    const double v0 = double(row) / wv, v1 = double(row + 1) / wv;
+    std::vector<double>& table = rows_[row];
+    if (table.empty()) {
+        table.assign(size_t(wu + 1) * kStripNodes, 0.0);
+        for (int n = 0; n < kStripNodes; ++n) {
+            const double vn = v0 + (v1 - v0) * 0.5 * (1.0 + chebyshevNode(n));
+            for (uint32_t k = 0; k < wu; ++k)
+                table[size_t(k + 1) * kStripNodes + size_t(n)] =
+                    table[size_t(k) * kStripNodes + size_t(n)] + stripPart(s_, double(k) / wu, double(k + 1) / wu, vn);
+        }
+    }
+    // Barycentric interpolation at Chebyshev points of the first kind.
+    const double x = 2.0 * (v - v0) / (v1 - v0) - 1.0;
+    const double* prefix = &table[size_t(whole) * kStripNodes];
+    double num = 0.0, den = 0.0, exact = 0.0;
+    bool onNode = false;
+    for (int n = 0; n < kStripNodes && !onNode; ++n) {
+        const double d = x - chebyshevNode(n);
+        if (d == 0.0) {
+            exact = prefix[n];
+            onNode = true;
+            continue;
+        }
+        const double w = ((n % 2) ? -1.0 : 1.0) * std::sin((2.0 * n + 1.0) * 3.14159265358979323846 / (2.0 * kStripNodes)) / d;
+        num += w * prefix[n];
+        den += w;
+    }
+    return (onNode ? exact : num / den) + stripPart(s_, double(whole) / wu, u, v);
 }
 
 }  // namespace trim

@@ -40,8 +40,6 @@ public:
     std::optional<UV> alongDirection(const Vec3& p, const Vec3& dir, std::optional<UV> guess = std::nullopt) const;
     // Area of the whole domain's surface (Gauss quadrature per window).
     double area() const;
-    // ∫₀ᵘ |S_u × S_v|(s, v) ds: the inner integral of Green's theorem for trimmed areas.
-    double areaStrip(UV uv) const;
     // Sample grid of the surface (n x n per window) and its bounding box diagonal.
     double size() const { return size_; }
 
@@ -56,6 +54,22 @@ private:
     bool closedU_ = false, closedV_ = false;
     double size_ = 1.0;
     std::vector<std::pair<UV, Vec3>> samples_;
+};
+
+// ∫₀ᵘ |S_u × S_v|(s, v) ds, the inner integral of Green's theorem for trimmed areas, at many
+// points (the Gauss points along trim loops, thousands on a CAD face): the
+// whole windows left of u from a table per window row, filled when the row is first asked for
+// (their strip integrals at 16 Chebyshev points of the row's v, summed along u, interpolated in
+// v), the last window's part by Gauss quadrature (8 points per quarter window). One loop point costs one window's
+// quadrature instead of a whole row's. Not thread-safe: one per computation.
+class AreaStrips {
+public:
+    explicit AreaStrips(const DomainSurface& surface) : s_(surface), rows_(surface.windowsV()) {}
+    double at(UV uv);
+
+private:
+    const DomainSurface& s_;
+    std::vector<std::vector<double>> rows_;  // per row: (windowsU + 1) prefixes x 16 nodes, empty until used
 };
 
 }  // namespace trim

@@ -258,18 +258,24 @@ bool trimKeeps(const std::vector<TrimSegment>& segments, bool outer, glm::dvec2 
 double trimmedArea(const DomainSurface& surface, const std::vector<TrimLoop>& loops) {
     if (loops.empty()) return surface.area();
     double a = hasOuterLoop(loops) ? 0.0 : surface.area();
+    AreaStrips strips(surface);
     // ∮ F dv with F(u, v) = ∫₀ᵘ J(s, v) ds: ∫∫ J over what each loop encloses, signed by its turn.
     for (const TrimLoop& loop : loops)
         for (size_t s = 0; s < segmentCount(loop); ++s) {
             const auto b = loopSegment(loop, s);
-            const int parts = 8;
+            // Up to 8 parts of 8 Gauss points, one per 1/16 of a window the segment spans: a long
+            // loop of short segments (a CAD face's outline, thousands of them) needs no more.
+            Box box;
+            for (const P2& p : b) box.add(p);
+            const double span = std::max((box.hi.x - box.lo.x) * surface.windowsU(), (box.hi.y - box.lo.y) * surface.windowsV());
+            const int parts = std::clamp(int(std::ceil(16.0 * span)), 1, 8);
             for (int p = 0; p < parts; ++p)
                 for (int k = 0; k < 8; ++k) {
                     const double t = (p + kGaussX[k]) / parts;
                     const P2 q = point(b, t);
                     const double dv = derivative(b, t).y;
                     if (dv == 0.0) continue;
-                    a += kGaussW[k] / parts * surface.areaStrip({q.x, q.y}) * dv;
+                    a += kGaussW[k] / parts * strips.at({q.x, q.y}) * dv;
                 }
         }
     return a;
