@@ -13,19 +13,23 @@ layout(location = 2) in vec2 inUV;
 layout(location = 3) flat in uint inPatch;
 layout(location = 4) in vec2 inCurv;
 #include "core/gpu/trim_math.h"
-// The trimmed windows' v-monotone segments in the window's (u, v), sorted by their lowest v, three
-// vec4 each: the box (umin, vmin, umax, vmax), b0 b1, b2 b3.
+// The trimmed windows' blocks (core/gpu/trim_math.h): per window one vec4 per cell (the first vec4
+// of its list, its count, its parity), then the cells' v-monotone segments in the window's (u, v),
+// sorted by their lowest v, three vec4 each: the box (umin, vmin, umax, vmax), b0 b1, b2 b3.
 layout(set = 0, binding = 7, std430) readonly buffer TrimSegments { vec4 trimSegs[]; };
-// Direct trimming (core/gpu/trim_math.h): the ray from (u, v) towards +u against the window's
-// segments; an even count (with the base parity) is trimmed away. Exact per pixel at any zoom. The
-// box alone settles most segments (above, below, wholly right or left of the point), and the
-// first segment starting above the point ends the loop.
+// Direct trimming (core/gpu/trim_math.h): the ray from (u, v) towards +u against the segments of
+// the point's cell; an even count (with the cell's parity) is trimmed away. Exact per pixel at any
+// zoom. Most cells list none; the box alone settles most segments (above, below, wholly right or
+// left of the point), and the first segment starting above the point ends the loop.
 bool trimmedAway(uint patchIndex, vec2 uv) {
     uvec4 t = patches[patchIndex].trim;
     if ((t.z & kTrimTest) == 0u) return false;
-    uint crossings = (t.z & kTrimBaseKept) != 0u ? 1u : 0u;
-    for (uint i = 0u; i < t.y; ++i) {
-        uint at = 3u * (t.x + i);
+    uvec2 c = min(uvec2(clamp(uv, 0.0, 1.0) * float(kTrimCells)), uvec2(kTrimCells - 1u));
+    vec4 cell = trimSegs[t.x + c.y * kTrimCells + c.x];
+    uint first = uint(cell.x), count = uint(cell.y);
+    uint crossings = uint(cell.z);
+    for (uint i = 0u; i < count; ++i) {
+        uint at = first + 3u * i;
         vec4 box = trimSegs[at];
         if (uv.y < box.y) break;
         if (uv.y >= box.w || uv.x > box.z) continue;

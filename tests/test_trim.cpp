@@ -10,9 +10,12 @@
 #include "core/commands/command_table.hpp"
 #include "core/edit/edit_session.hpp"
 #include "core/edit/live_trims.hpp"
+#include "core/gpu/trim_math.h"
+#include "core/io/document_io.hpp"
 #include "core/io/patchwork_format.hpp"
 #include "core/trim/curve_on_surface.hpp"
 #include "core/trim/surface_domain.hpp"
+#include "core/trim/trim_cells.hpp"
 #include "core/trim/trim_loops.hpp"
 #include "support.hpp"
 
@@ -217,4 +220,46 @@ TEST(Trim, LoopsNestAsHolesAndIslands) {
     EXPECT_TRUE(trimKeeps(s.doc.patches[0].trims, {0.5, 0.5}));    // the island
     EXPECT_FALSE(trimKeeps(s.doc.patches[0].trims, {0.5, 0.68}));  // the ring of the hole round it
     EXPECT_TRUE(trimKeeps(s.doc.patches[0].trims, {0.05, 0.05}));  // the plate
+}
+
+// The fragment shader's cells (core/trim/trim_cells.hpp) give every point of every tested window the
+// answer of the whole window's segments: the kettle's windows (holes through seams, cuts across
+// tubes), a plate with two holes and an island, on a 97 x 97 grid of points per window that lands
+// on cell edges and curves alike.
+TEST(Trim, CellsKeepWhatTheWholeWindowKeeps) {
+    std::vector<Document> docs{loadDocument(test::dataDir() / "kettle.patchwork"),
+                               loadDocument(test::dataDir() / "trimmed_plate.patchwork")};
+    {
+        EditSession s;
+        s.reset(Document{}, "");
+        test::runEditScript(s, "add-net 4 4");
+        Document d = s.doc;
+        d.surfaces[0].trims = {circleLoop({0.5, 0.5}, 0.4, false), circleLoop({0.5, 0.5}, 0.25, true), circleLoop({0.5, 0.5}, 0.1, false)};
+        docs.push_back(d);
+    }
+    size_t tested = 0, listed = 0, cellsWithNone = 0;
+    for (const Document& doc : docs) {
+        WindowTrims trims(doc);
+        for (const PatchInstance& w : expandPatches(doc)) {
+            const std::optional<WindowTrim> t = trims.of(w);
+            if (!t || !(t->flags & gpu::kTrimTest)) continue;
+            ++tested;
+            const std::vector<TrimCell> cells = trimCells(*t);
+            ASSERT_EQ(cells.size(), size_t(gpu::kTrimCells * gpu::kTrimCells));
+            for (const TrimCell& c : cells) {
+                listed += c.segments.size();
+                cellsWithNone += c.segments.empty() ? 1 : 0;
+            }
+            const std::vector<TrimSegment> all = t->segments;
+            const bool outer = !(t->flags & gpu::kTrimBaseKept);
+            for (int i = 0; i <= 96; ++i)
+                for (int j = 0; j <= 96; ++j) {
+                    const glm::dvec2 uv(j / 96.0, i / 96.0);
+                    ASSERT_EQ(cellKeeps(*t, cells, uv), trimKeeps(all, outer, uv)) << "at (" << uv.x << ", " << uv.y << ")";
+                }
+        }
+    }
+    EXPECT_GT(tested, 10u);
+    EXPECT_GT(cellsWithNone, tested * 16);  // most cells settle by their parity alone
+    EXPECT_GT(listed, 0u);
 }

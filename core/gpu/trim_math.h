@@ -47,11 +47,16 @@ PW_REAL_FN uint trimCrossing(PW_REAL_VEC2 p, PW_REAL_VEC2 b0, PW_REAL_VEC2 b1, P
     return p.x < trimBezier1(b0.x, b1.x, b2.x, b3.x, t) ? 1u : 0u;
 }
 
-// Per drawn window (PatchData::trim): x the first segment (binding 7, two vec4 a segment: b0 b1,
-// b2 b3), y the segment count, z flags. A window without kTrimTest is drawn whole.
+// Per drawn window (PatchData::trim): x the window's block in binding 7 (its cells, then their
+// segments, three vec4 each: the box, b0 b1, b2 b3), y the window's segment count, z flags. A window
+// without kTrimTest is drawn whole.
 PW_CONST uint kTrimBaseKept = 1u;  // the surface has no outer loop: the base parity is 1
 PW_CONST uint kTrimAllGone = 2u;   // no segment crosses the window and its centre is trimmed away: not tessellated
 PW_CONST uint kTrimTest = 4u;      // the window's fragments are tested against its segments
+// A tested window's square is cut into kTrimCells x kTrimCells cells, each listing only the segments
+// its rays may meet (core/trim/trim_cells.hpp); binding 7 starts the window's block with one vec4 per
+// cell (first vec4 of its list, its segment count, its parity: whole numbers as floats), row-major.
+PW_CONST uint kTrimCells = 8u;
 
 PW_END_NAMESPACE
 

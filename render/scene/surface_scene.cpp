@@ -7,6 +7,7 @@
 #include "core/eval/displacement.hpp"
 #include "core/select/picking.hpp"
 #include "core/tess/edge_levels.hpp"
+#include "core/trim/trim_cells.hpp"
 #include "core/trim/trim_loops.hpp"
 
 namespace pw::render {
@@ -22,7 +23,9 @@ glm::mat4 basisPushMatrix(Basis basis, double tension) {
 }
 
 namespace {
-// Each trimmed window's segments in its own (u, v) and its PatchData::trim (core/trim/trim_loops.hpp windowTrim).
+// Each trimmed window's block in binding 7 and its PatchData::trim (core/gpu/trim_math.h): one vec4
+// per cell (core/trim/trim_cells.hpp: the first vec4 of its list, its count, its parity), then the
+// cells' segments in the window's own (u, v), a segment listed once per cell that needs it.
 void windowTrims(const Document& doc, const std::vector<PatchInstance>& inst, std::vector<gpu::PatchData>& pd, SurfaceScene& s) {
     s.trimData.clear();
     s.trimmedWindows = 0;
@@ -32,13 +35,21 @@ void windowTrims(const Document& doc, const std::vector<PatchInstance>& inst, st
         if (!found) continue;
         const WindowTrim& t = *found;
         ++s.trimmedWindows;
-        pd[w].trim = glm::uvec4(uint32_t(s.trimData.size() / 3), uint32_t(t.segments.size()), t.flags, 0u);
-        for (const TrimSegment& g : t.segments) {  // its box (umin, vmin, umax, vmax), then its four points
-            const float u0 = float(std::min({g.b[0].x, g.b[1].x, g.b[2].x, g.b[3].x})),
-                        u1 = float(std::max({g.b[0].x, g.b[1].x, g.b[2].x, g.b[3].x}));
-            s.trimData.emplace_back(u0, float(std::min(g.b[0].y, g.b[3].y)), u1, float(std::max(g.b[0].y, g.b[3].y)));
-            s.trimData.emplace_back(float(g.b[0].x), float(g.b[0].y), float(g.b[1].x), float(g.b[1].y));
-            s.trimData.emplace_back(float(g.b[2].x), float(g.b[2].y), float(g.b[3].x), float(g.b[3].y));
+        const size_t block = s.trimData.size();
+        pd[w].trim = glm::uvec4(uint32_t(block), uint32_t(t.segments.size()), t.flags, 0u);
+        const std::vector<TrimCell> cells = trimCells(t);
+        s.trimData.resize(block + cells.size());
+        for (size_t c = 0; c < cells.size(); ++c) {
+            // Whole numbers as floats: exact below 2^24 vec4s (a 256 MiB buffer).
+            s.trimData[block + c] = glm::vec4(float(s.trimData.size()), float(cells[c].segments.size()), float(cells[c].parity), 0.0f);
+            for (uint32_t k : cells[c].segments) {  // its box (umin, vmin, umax, vmax), then its four points
+                const TrimSegment& g = t.segments[k];
+                const float u0 = float(std::min({g.b[0].x, g.b[1].x, g.b[2].x, g.b[3].x})),
+                            u1 = float(std::max({g.b[0].x, g.b[1].x, g.b[2].x, g.b[3].x}));
+                s.trimData.emplace_back(u0, float(std::min(g.b[0].y, g.b[3].y)), u1, float(std::max(g.b[0].y, g.b[3].y)));
+                s.trimData.emplace_back(float(g.b[0].x), float(g.b[0].y), float(g.b[1].x), float(g.b[1].y));
+                s.trimData.emplace_back(float(g.b[2].x), float(g.b[2].y), float(g.b[3].x), float(g.b[3].y));
+            }
         }
     }
 }
