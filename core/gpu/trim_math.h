@@ -56,7 +56,7 @@ PW_CONST uint kTrimTest = 4u;      // the window's fragments are tested against 
 // A tested window's square is cut into kTrimCells x kTrimCells cells, each listing only the segments
 // its rays may meet (core/trim/trim_cells.hpp); binding 7 starts the window's block with one vec4 per
 // cell (first vec4 of its list, its segment count, its parity: whole numbers as floats), row-major.
-PW_CONST uint kTrimCells = 8u;
+PW_CONST uint kTrimCells = 16u;
 
 PW_END_NAMESPACE
 
