@@ -4,7 +4,8 @@
 # and runs the whole test suite under them: any ASan, LSan or UBSan report fails its test.
 # Usage: scripts/sanitize.sh [--build-only | --test-only | --fuzz-only]   (--fuzz-only: build just the
 # fuzz targets). The tests labelled `nosan` (end-to-end scripts whose time goes to lavapipe and
-# Xvfb, not to our code) are left out here; they run in the Release pass.
+# Xvfb, not to our code) and the command-line rendering suites named below are left out here; they
+# run in the Release pass.
 # Mesa's lavapipe driver is preloaded so that it stays mapped after vkDestroyInstance and the memory
 # it (and LLVM, the loader, X11) keep for the process can be told apart from Patchwork's own
 # (tests/sanitizer/lsan.supp names only those libraries).
@@ -36,4 +37,10 @@ export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:detect_stack_use_after_retur
 export LSAN_OPTIONS="suppressions=$root/tests/sanitizer/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 cd "$build"
-ctest --output-on-failure -j "$jobs" --timeout 900 -LE nosan
+# The command-line suites that render through the binary (teaching figures, sweeps, device
+# comparisons, displayed exports, the CLI's render, displacement and glTF options) and the
+# killed-writer loop of AtomicSave run in the Release pass only: about 360 s of processor time
+# here, most of it lavapipe's and process start-up, for code the in-process tests run under the
+# sanitizers anyway (CI's 45-minute budget).
+cli_suites='^(TeachingCli|RenderCli|SweepAnimation|DistanceFigures|DeviceCompareCli|VectorFigureCli|GltfCli|ExportDisplayed)\.|^Displacement\.CommandLine|^AtomicSave\.KilledInTheMiddle'
+ctest --output-on-failure -j "$jobs" --timeout 900 -LE nosan -E "$cli_suites"
