@@ -89,11 +89,8 @@ Piece straight(glm::dvec2 a, glm::dvec2 c, int side) { return {{a, a + (c - a) /
 unsigned sidesTouched(const std::vector<TrimLoop>& loops) {
     unsigned mask = 0;
     for (const TrimLoop& l : loops)
-        for (size_t s = 0; s + 3 < l.uv.size(); s += 3) {
-            std::array<glm::dvec2, 4> b;
-            for (size_t k = 0; k < 4; ++k) b[k] = glm::dvec2(l.uv[s + k][0], l.uv[s + k][1]);
-            if (const int side = sideOf(b); side >= 0) mask |= 1u << side;
-        }
+        for (size_t s = 0; s < segmentCount(l); ++s)
+            if (const int side = sideOf(loopSegment(l, s)); side >= 0) mask |= 1u << side;
     return mask;
 }
 
@@ -106,10 +103,8 @@ std::vector<std::vector<Piece>> regionChains(const std::vector<TrimLoop>& loops,
     if (!outer) sides.fill({{0.0, 1.0}});
     std::vector<Piece> pieces;
     for (const TrimLoop& l : loops)
-        for (size_t s = 0; s + 3 < l.uv.size(); s += 3) {
-            Piece p;
-            for (size_t k = 0; k < 4; ++k) p.b[k] = glm::dvec2(l.uv[s + k][0], l.uv[s + k][1]);
-            p.side = sideOf(p.b);
+        for (size_t s = 0; s < segmentCount(l); ++s) {
+            const Piece p{loopSegment(l, s), sideOf(loopSegment(l, s))};
             if (outer || p.side < 0) {
                 pieces.push_back(p);
                 continue;

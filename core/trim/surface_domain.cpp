@@ -1,8 +1,10 @@
 #include "core/trim/surface_domain.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "core/base/errors.hpp"
 #include "core/trim/gauss_legendre.hpp"
@@ -207,8 +209,19 @@ double stripPart(const DomainSurface& s, double u0, double u1, double v) {
     return sum;
 }
 
+// Chebyshev points of the first kind on [-1, 1] and their barycentric weights, computed once.
 constexpr int kStripNodes = 16;
-double chebyshevNode(int n) { return std::cos((2.0 * n + 1.0) * 3.14159265358979323846 / (2.0 * kStripNodes)); }
+struct ChebyshevNodes {
+    std::array<double, kStripNodes> x{}, w{};
+    ChebyshevNodes() {
+        for (int n = 0; n < kStripNodes; ++n) {
+            const double angle = (2.0 * n + 1.0) * std::numbers::pi / (2.0 * kStripNodes);
+            x[size_t(n)] = std::cos(angle);
+            w[size_t(n)] = ((n % 2) ? -1.0 : 1.0) * std::sin(angle);
+        }
+    }
+};
+const ChebyshevNodes kChebyshev;
 
 }  // namespace
 
@@ -221,29 +234,23 @@ double AreaStrips::at(UV uv) {
     if (table.empty()) {
         table.assign(size_t(wu + 1) * kStripNodes, 0.0);
         for (int n = 0; n < kStripNodes; ++n) {
-            const double vn = v0 + (v1 - v0) * 0.5 * (1.0 + chebyshevNode(n));
+            const double vn = v0 + (v1 - v0) * 0.5 * (1.0 + kChebyshev.x[size_t(n)]);
             for (uint32_t k = 0; k < wu; ++k)
                 table[size_t(k + 1) * kStripNodes + size_t(n)] =
                     table[size_t(k) * kStripNodes + size_t(n)] + stripPart(s_, double(k) / wu, double(k + 1) / wu, vn);
         }
     }
-    // Barycentric interpolation at Chebyshev points of the first kind.
+    // Barycentric interpolation at the Chebyshev points (exact on a node).
     const double x = 2.0 * (v - v0) / (v1 - v0) - 1.0;
     const double* prefix = &table[size_t(whole) * kStripNodes];
-    double num = 0.0, den = 0.0, exact = 0.0;
-    bool onNode = false;
-    for (int n = 0; n < kStripNodes && !onNode; ++n) {
-        const double d = x - chebyshevNode(n);
-        if (d == 0.0) {
-            exact = prefix[n];
-            onNode = true;
-            continue;
-        }
-        const double w = ((n % 2) ? -1.0 : 1.0) * std::sin((2.0 * n + 1.0) * 3.14159265358979323846 / (2.0 * kStripNodes)) / d;
-        num += w * prefix[n];
-        den += w;
+    double num = 0.0, den = 0.0;
+    for (size_t n = 0; n < size_t(kStripNodes); ++n) {
+        const double d = x - kChebyshev.x[n];
+        if (d == 0.0) return prefix[n] + stripPart(s_, double(whole) / wu, u, v);
+        num += kChebyshev.w[n] / d * prefix[n];
+        den += kChebyshev.w[n] / d;
     }
-    return (onNode ? exact : num / den) + stripPart(s_, double(whole) / wu, u, v);
+    return num / den + stripPart(s_, double(whole) / wu, u, v);
 }
 
 }  // namespace trim

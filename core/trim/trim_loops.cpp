@@ -11,6 +11,13 @@
 namespace pw {
 inline namespace trim {
 
+std::array<glm::dvec2, 4> loopSegment(const TrimLoop& loop, size_t s) {
+    std::array<glm::dvec2, 4> b;
+    for (size_t k = 0; k < 4; ++k) b[k] = glm::dvec2(loop.uv[3 * s + k][0], loop.uv[3 * s + k][1]);
+    return b;
+}
+size_t segmentCount(const TrimLoop& loop) { return loop.uv.size() >= 4 ? (loop.uv.size() - 1) / 3 : 0; }
+
 namespace {
 
 using P2 = glm::dvec2;
@@ -71,12 +78,6 @@ std::optional<P2> firstCrossing(const std::vector<P2>& a, const std::vector<P2>&
         }
     return std::nullopt;
 }
-
-std::array<P2, 4> loopSegment(const TrimLoop& loop, size_t s) {
-    return {P2(loop.uv[3 * s][0], loop.uv[3 * s][1]), P2(loop.uv[3 * s + 1][0], loop.uv[3 * s + 1][1]),
-            P2(loop.uv[3 * s + 2][0], loop.uv[3 * s + 2][1]), P2(loop.uv[3 * s + 3][0], loop.uv[3 * s + 3][1])};
-}
-size_t segmentCount(const TrimLoop& loop) { return loop.uv.size() >= 4 ? (loop.uv.size() - 1) / 3 : 0; }
 
 P2 derivative(const std::array<P2, 4>& b, double t) {
     const double s = 1.0 - t;

@@ -49,6 +49,10 @@ inline bool trimKeeps(const std::vector<TrimLoop>& loops, glm::dvec2 uv) {
 // the circle), turned for `hole`: test patterns and the benchmark's holes.
 TrimLoop circleLoop(UV centre, double radius, bool hole);
 
+// The loop's cubic segments: how many, and segment s's four points (3s .. 3s + 3).
+size_t segmentCount(const TrimLoop& loop);
+std::array<glm::dvec2, 4> loopSegment(const TrimLoop& loop, size_t s);
+
 // Points along the loop, `perSegment` per cubic segment, the first not repeated at the end.
 std::vector<glm::dvec2> loopPolyline(const TrimLoop& loop, int perSegment);
 glm::dvec2 loopPoint(const TrimLoop& loop, size_t segment, double t);
